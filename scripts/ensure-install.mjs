@@ -1,0 +1,15 @@
+// `npm start` and `npm test` must work on a fresh clone: install dependencies when
+// node_modules is missing or older than the manifest, and do nothing otherwise.
+import { existsSync, statSync } from 'node:fs';
+import { execSync } from 'node:child_process';
+
+const marker = 'node_modules/.package-lock.json';
+const manifests = ['package.json', 'package-lock.json'].filter((f) => existsSync(f));
+const stale =
+  !existsSync(marker) || manifests.some((f) => statSync(f).mtimeMs > statSync(marker).mtimeMs);
+
+if (stale) {
+  const command = existsSync('package-lock.json') ? 'npm ci' : 'npm install';
+  console.log(`[oceano] dependencies missing or out of date: running ${command}`);
+  execSync(command, { stdio: 'inherit' });
+}

@@ -1,0 +1,62 @@
+// Water shading, above the surface: Fresnel-weighted mix of the reflected sky cube and
+// the water's own colour, a sun highlight, and haze towards the horizon.
+
+uniform samplerCube uSky;
+uniform sampler2D uFresnelTable;
+uniform bool uFresnelEnabled;
+uniform vec3 uDeepColor;
+uniform vec3 uFacingTint;
+uniform vec3 uSunDirection;
+uniform vec3 uSunColor;
+uniform float uHazeDensity;
+
+varying vec3 vWorldPosition;
+varying vec3 vNormal;
+
+// three.js stores cube maps mirrored in x (its flipEnvMap convention for CubeTexture).
+vec3 skyColor(vec3 direction) {
+  return textureCube(uSky, vec3(-direction.x, direction.y, direction.z)).rgb;
+}
+
+// Linear interpolation between table entries done by hand: float textures are not
+// filterable everywhere in WebGL2.
+float fresnelLookup(float cosIncidence) {
+  int size = textureSize(uFresnelTable, 0).x;
+  float x = clamp(cosIncidence, 0.0, 1.0) * float(size - 1);
+  int i = int(floor(x));
+  int j = min(i + 1, size - 1);
+  float a = texelFetch(uFresnelTable, ivec2(i, 0), 0).r;
+  float b = texelFetch(uFresnelTable, ivec2(j, 0), 0).r;
+  return mix(a, b, x - float(i));
+}
+
+void main() {
+  vec3 toEye = cameraPosition - vWorldPosition;
+  float distance = length(toEye);
+  vec3 v = toEye / distance;
+  vec3 n = normalize(vNormal);
+  float cosIncidence = max(dot(n, v), 0.0);
+
+  float reflectance = uFresnelEnabled ? fresnelLookup(cosIncidence) : 0.5;
+
+  vec3 r = reflect(-v, n);
+  // A reflected ray that points below the horizon would see the sea, not the sky.
+  r.y = max(r.y, 0.0);
+  vec3 sky = skyColor(normalize(r));
+
+  vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
+  vec3 color = mix(water, sky, reflectance);
+
+  vec3 halfway = normalize(uSunDirection + v);
+  float sunVisible = step(0.0, uSunDirection.y);
+  float specular = pow(max(dot(n, halfway), 0.0), 900.0) * 40.0;
+  color += uSunColor * specular * reflectance * sunVisible;
+
+  vec3 horizon = skyColor(normalize(vec3(-v.x, 0.0, -v.z)));
+  float haze = 1.0 - exp(-distance * uHazeDensity);
+  color = mix(color, horizon, haze);
+
+  gl_FragColor = vec4(color, 1.0);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+}

@@ -1,0 +1,5 @@
+varying vec4 vResult;
+
+void main() {
+  gl_FragColor = vResult;
+}

@@ -1,0 +1,57 @@
+import type { OceanApp, CameraPose, OceanStats } from './oceanApp';
+import type { OceanParams } from '../sim/params';
+import type { SurfaceSample } from '../sim/oceanSurface';
+
+/** `window.oceano`: how tests, course pages and the console drive the ocean. */
+export interface OceanoApi {
+  ready: Promise<void>;
+  setTime(seconds: number): void;
+  play(): void;
+  pause(): void;
+  renderFrame(): void;
+  getParams(): OceanParams;
+  setParams(partial: Partial<OceanParams>): OceanParams;
+  setCamera(pose: CameraPose): void;
+  getCamera(): CameraPose;
+  sampleSurface(x: number, z: number): SurfaceSample;
+  /** The same surface evaluated by the GPU shader and read back; `t` defaults to the current time. */
+  probeGpu(points: [number, number][], t?: number): Promise<SurfaceSample[]>;
+  stats(): OceanStats;
+  notices(): string[];
+  debug: {
+    fresnelTable(): Float32Array;
+    heightmaps(): { size: number; data: Float32Array }[];
+  };
+  readonly three: ReturnType<OceanApp['three']>;
+}
+
+declare global {
+  interface Window {
+    oceano: OceanoApi;
+  }
+}
+
+export function createAutomationApi(app: OceanApp, ready: Promise<void>): OceanoApi {
+  return {
+    ready,
+    setTime: (seconds) => app.setTime(seconds),
+    play: () => app.play(),
+    pause: () => app.pause(),
+    renderFrame: () => app.renderFrame(true),
+    getParams: () => app.getParams(),
+    setParams: (partial) => app.setParams(partial),
+    setCamera: (pose) => app.setCamera(pose),
+    getCamera: () => app.camera(),
+    sampleSurface: (x, z) => app.sampleSurface(x, z),
+    probeGpu: async (points, t) => app.probeGpu(points, t),
+    stats: () => app.stats(),
+    notices: () => app.notices.messages(),
+    debug: {
+      fresnelTable: () => app.fresnelTable(),
+      heightmaps: () => app.heightmaps(),
+    },
+    get three() {
+      return app.three();
+    },
+  };
+}

@@ -1,0 +1,30 @@
+/** Readable messages for the user, shown over the canvas: never only in the console. */
+export class Notices {
+  private readonly list: HTMLElement;
+
+  constructor(container: HTMLElement) {
+    this.list = document.createElement('div');
+    this.list.className = 'oceano-notices';
+    this.list.setAttribute('role', 'status');
+    this.list.setAttribute('aria-live', 'polite');
+    container.appendChild(this.list);
+  }
+
+  show(message: string, level: 'warning' | 'error' = 'warning'): void {
+    const item = document.createElement('div');
+    item.className = `oceano-notice oceano-notice-${level}`;
+    const text = document.createElement('span');
+    text.textContent = message;
+    const close = document.createElement('button');
+    close.type = 'button';
+    close.textContent = '×';
+    close.setAttribute('aria-label', 'Dismiss');
+    close.addEventListener('click', () => item.remove());
+    item.append(text, close);
+    this.list.appendChild(item);
+  }
+
+  messages(): string[] {
+    return Array.from(this.list.querySelectorAll('.oceano-notice span'), (el) => el.textContent ?? '');
+  }
+}

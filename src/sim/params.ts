@@ -1,0 +1,140 @@
+/**
+ * Every tunable of the ocean in one typed place: default, range and unit. The GUI, the
+ * URL and the automation API all read these definitions, so a value that passes here is
+ * safe to hand to a shader.
+ */
+interface NumberDef {
+  kind: 'number' | 'integer';
+  default: number;
+  min: number;
+  max: number;
+  step?: number;
+  unit: string;
+  label: string;
+}
+interface BooleanDef {
+  kind: 'boolean';
+  default: boolean;
+  label: string;
+}
+interface ColorDef {
+  kind: 'color';
+  default: string;
+  label: string;
+}
+export type ParamDef = NumberDef | BooleanDef | ColorDef;
+
+export const paramDefs = {
+  seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },
+  swellAmplitude: { kind: 'number', default: 1.4, min: 0, max: 4, step: 0.05, unit: 'm', label: 'Swell amplitude' },
+  swellFrequency: { kind: 'number', default: 0.05, min: 0.005, max: 0.2, step: 0.001, unit: 'rad/m', label: 'Swell frequency' },
+  rippleStrength: { kind: 'number', default: 0.6, min: 0, max: 2, step: 0.05, unit: 'm', label: 'Ripple strength' },
+  rippleBlendSpeed: { kind: 'number', default: 0.25, min: 0, max: 3, step: 0.01, unit: 'rad/s', label: 'Ripple blend speed' },
+  sunElevation: { kind: 'number', default: 18, min: -10, max: 90, step: 0.5, unit: '°', label: 'Sun elevation' },
+  sunAzimuth: { kind: 'number', default: 20, min: 0, max: 360, step: 1, unit: '°', label: 'Sun azimuth' },
+  waterColor: { kind: 'color', default: '#06283a', label: 'Deep water colour' },
+  fresnel: { kind: 'boolean', default: true, label: 'Fresnel' },
+  wireframe: { kind: 'boolean', default: false, label: 'Wireframe' },
+} as const satisfies Record<string, ParamDef>;
+
+export type ParamKey = keyof typeof paramDefs;
+type ValueOf<D> = D extends { kind: 'boolean' } ? boolean : D extends { kind: 'color' } ? string : number;
+export type OceanParams = { -readonly [K in ParamKey]: ValueOf<(typeof paramDefs)[K]> };
+
+export const paramKeys = Object.keys(paramDefs) as ParamKey[];
+
+export function defaultParams(): OceanParams {
+  const params = {} as Record<ParamKey, unknown>;
+  for (const key of paramKeys) params[key] = paramDefs[key].default;
+  return params as OceanParams;
+}
+
+export class ParamError extends Error {
+  constructor(
+    readonly key: string,
+    message: string,
+  ) {
+    super(message);
+    this.name = 'ParamError';
+  }
+}
+
+export function isParamKey(key: string): key is ParamKey {
+  return Object.prototype.hasOwnProperty.call(paramDefs, key);
+}
+
+const COLOR_PATTERN = /^#[0-9a-fA-F]{6}$/;
+
+/** Checks one value against its definition; throws a ParamError naming the key. */
+export function validateParam(key: string, value: unknown): OceanParams[ParamKey] {
+  if (!isParamKey(key)) {
+    throw new ParamError(key, `Unknown parameter "${key}". Known parameters: ${paramKeys.join(', ')}.`);
+  }
+  const def: ParamDef = paramDefs[key];
+  switch (def.kind) {
+    case 'boolean':
+      if (typeof value !== 'boolean') throw new ParamError(key, `"${key}" must be true or false, got ${describe(value)}.`);
+      return value;
+    case 'color':
+      if (typeof value !== 'string' || !COLOR_PATTERN.test(value)) {
+        throw new ParamError(key, `"${key}" must be a colour like #12ab9f, got ${describe(value)}.`);
+      }
+      return value.toLowerCase();
+    default: {
+      if (typeof value !== 'number' || !Number.isFinite(value)) {
+        throw new ParamError(key, `"${key}" must be a finite number, got ${describe(value)}.`);
+      }
+      if (def.kind === 'integer' && !Number.isInteger(value)) {
+        throw new ParamError(key, `"${key}" must be an integer, got ${value}.`);
+      }
+      if (value < def.min || value > def.max) {
+        throw new ParamError(key, `"${key}" must lie in [${def.min}, ${def.max}]${def.unit ? ' ' + def.unit : ''}, got ${value}.`);
+      }
+      return value;
+    }
+  }
+}
+
+/** Validates a whole partial update first, so a bad key never half-applies an update. */
+export function validateParams(partial: unknown): Partial<OceanParams> {
+  if (typeof partial !== 'object' || partial === null || Array.isArray(partial)) {
+    throw new ParamError('', `Parameters must be an object, got ${describe(partial)}.`);
+  }
+  const result: Record<string, unknown> = {};
+  for (const [key, value] of Object.entries(partial)) result[key] = validateParam(key, value);
+  return result as Partial<OceanParams>;
+}
+
+function describe(value: unknown): string {
+  if (typeof value === 'string') return JSON.stringify(value);
+  if (typeof value === 'number' || typeof value === 'boolean' || value === null || value === undefined) return String(value);
+  return typeof value;
+}
+
+/**
+ * Reads a parameter from URL text. A malformed value falls back to the default and an
+ * out-of-range number is clamped; either way a notice says what happened.
+ */
+export function parseParamText(key: ParamKey, text: string): { value: OceanParams[ParamKey]; notice?: string } {
+  const def: ParamDef = paramDefs[key];
+  if (def.kind === 'boolean') {
+    if (['1', 'true', 'on', 'yes'].includes(text)) return { value: true };
+    if (['0', 'false', 'off', 'no'].includes(text)) return { value: false };
+    return { value: def.default, notice: `"${key}=${text}" is not true/false; using ${def.default}.` };
+  }
+  if (def.kind === 'color') {
+    const hex = text.startsWith('#') ? text : `#${text}`;
+    if (COLOR_PATTERN.test(hex)) return { value: hex.toLowerCase() };
+    return { value: def.default, notice: `"${key}=${text}" is not a colour like 0a2e45; using ${def.default}.` };
+  }
+  const number = text.trim() === '' ? NaN : Number(text);
+  if (!Number.isFinite(number) || (def.kind === 'integer' && !Number.isInteger(number))) {
+    const expected = def.kind === 'integer' ? 'an integer' : 'a number';
+    return { value: def.default, notice: `"${key}=${text}" is not ${expected}; using the default ${def.default}.` };
+  }
+  if (number < def.min || number > def.max) {
+    const clamped = Math.min(def.max, Math.max(def.min, number));
+    return { value: clamped, notice: `"${key}=${text}" is outside [${def.min}, ${def.max}]${def.unit ? ' ' + def.unit : ''}; clamped to ${clamped}.` };
+  }
+  return { value: number };
+}

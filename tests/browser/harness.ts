@@ -1,0 +1,71 @@
+import puppeteer, { type Browser, type Page } from 'puppeteer';
+import { preview, type PreviewServer } from 'vite';
+import { findBrowser } from './findBrowser';
+
+/**
+ * Serves the built dist/ on loopback and drives headless Chromium against it. SwiftShader
+ * is used so that pictures are the same on every machine, GPU or not.
+ */
+export const BROWSER_ARGS = [
+  '--headless=new',
+  '--no-sandbox',
+  '--use-angle=swiftshader',
+  '--enable-unsafe-swiftshader',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+  '--disable-gpu-vsync',
+  '--hide-scrollbars',
+  '--force-color-profile=srgb',
+];
+
+export interface Harness {
+  browser: Browser;
+  baseUrl: string;
+  close(): Promise<void>;
+}
+
+export async function startHarness(args: string[] = BROWSER_ARGS): Promise<Harness> {
+  const server: PreviewServer = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'error' });
+  const address = server.httpServer.address();
+  if (!address || typeof address === 'string') throw new Error('The preview server has no TCP address.');
+  const baseUrl = `http://127.0.0.1:${address.port}/`;
+  const browser = await puppeteer.launch({ executablePath: await findBrowser(), args, headless: true });
+  return {
+    browser,
+    baseUrl,
+    async close() {
+      await browser.close();
+      await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
+    },
+  };
+}
+
+export interface OpenedPage {
+  page: Page;
+  consoleErrors: string[];
+}
+
+/** Opens the app with a query string at a size, waits for `oceano.ready`. */
+export async function openOcean(harness: Harness, query: string, width = 640, height = 360, path = ''): Promise<OpenedPage> {
+  const page = await harness.browser.newPage();
+  const consoleErrors: string[] = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error') consoleErrors.push(message.text());
+  });
+  page.on('pageerror', (error) => consoleErrors.push(String(error)));
+  await page.setViewport({ width, height, deviceScaleFactor: 1 });
+  await page.goto(`${harness.baseUrl}${path}${query ? `?${query}` : ''}`, { waitUntil: 'load' });
+  await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
+  await page.evaluate(() => window.oceano.ready);
+  return { page, consoleErrors };
+}
+
+/** A frame drawn now, then the canvas as PNG bytes (GUI and notices are not in it). */
+export async function canvasPng(page: Page): Promise<Buffer> {
+  await page.evaluate(() => window.oceano.renderFrame());
+  const canvas = await page.$('canvas');
+  if (!canvas) throw new Error('No canvas on the page.');
+  return Buffer.from(await canvas.screenshot({ type: 'png' }));
+}

@@ -1,0 +1,161 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { compareWithReference, diffPngs, REFERENCE_DIR, updatingReferences } from './imageCompare';
+import { fresnelTable } from '../../src/sim/fresnel';
+import { generateRippleHeightmaps } from '../../src/sim/perlinNoise';
+import { HEIGHTMAP_SIZE } from '../../src/sim/surface';
+
+/** Differing pixels allowed against a reference: SwiftShader is deterministic, this absorbs driver updates. */
+const REFERENCE_TOLERANCE = 0.005;
+
+let harness: Harness;
+beforeAll(async () => {
+  harness = await startHarness();
+});
+afterAll(async () => {
+  await harness?.close();
+});
+
+describe('the ocean page', () => {
+  it('loads with no console error and resolves oceano.ready after drawing', async () => {
+    const { page, consoleErrors } = await openOcean(harness, 'seed=1&t=10');
+    const stats = await page.evaluate(() => window.oceano.stats());
+    expect(stats.triangles).toBeGreaterThan(10_000);
+    expect(stats.drawCalls).toBeGreaterThanOrEqual(2);
+    expect(stats.frameMs).toBeGreaterThan(0);
+    expect(await page.evaluate(() => window.oceano.notices())).toEqual([]);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('draws the same picture on a second load, matching the committed reference', async () => {
+    const first = await openOcean(harness, 'seed=1&t=10');
+    const a = await canvasPng(first.page);
+    await first.page.close();
+    const second = await openOcean(harness, 'seed=1&t=10');
+    const b = await canvasPng(second.page);
+    await second.page.close();
+    expect(diffPngs(a, b, 0).differentPixels).toBe(0);
+    expect(compareWithReference('surface-seed1-t10', a).share).toBeLessThanOrEqual(REFERENCE_TOLERANCE);
+  });
+
+  it('changes the picture when t changes and when the seed changes', async () => {
+    const base = await canvasPng((await openOcean(harness, 'seed=1&t=10')).page);
+    const later = await canvasPng((await openOcean(harness, 'seed=1&t=20')).page);
+    const reseeded = await canvasPng((await openOcean(harness, 'seed=2&t=10')).page);
+    // The sky fills half the frame and does not move: the sea's half must change.
+    expect(diffPngs(base, later).share).toBeGreaterThan(0.03);
+    expect(diffPngs(base, reseeded).share).toBeGreaterThan(0.03);
+  });
+
+  it('makes the README screenshot at 1280×720 and records its frame time', async () => {
+    const { page } = await openOcean(harness, 'seed=1&t=10', 1280, 720);
+    const png = await canvasPng(page);
+    const frameMs = await page.evaluate(() => {
+      for (let i = 0; i < 8; i++) window.oceano.renderFrame();
+      return window.oceano.stats().frameMs;
+    });
+    console.log(`[oceano] default view 1280×720: frameMs = ${frameMs.toFixed(1)} ms`);
+    expect(compareWithReference('readme-default-1280x720', png).share).toBeLessThanOrEqual(REFERENCE_TOLERANCE);
+    if (updatingReferences) writeFileSync(join(REFERENCE_DIR, 'readme-default-1280x720.png'), png);
+    await page.close();
+  });
+});
+
+describe('bad input', () => {
+  it('shows a readable notice for each bad URL parameter and still draws the sea', async () => {
+    const { page, consoleErrors } = await openOcean(harness, 't=abc&seed=-1.5&swellAmplitude=1e9&nonsense=3');
+    const visible = await page.$$eval('.oceano-notice', (items) => items.map((el) => (el as HTMLElement).innerText));
+    expect(visible.join('\n')).toMatch(/t=abc/);
+    expect(visible.join('\n')).toMatch(/seed=-1\.5/);
+    expect(visible.join('\n')).toMatch(/swellAmplitude=1e9.*clamped to 4/);
+    expect(visible.join('\n')).toMatch(/nonsense/);
+    const params = await page.evaluate(() => window.oceano.getParams());
+    expect(params.seed).toBe(1);
+    expect(params.swellAmplitude).toBe(4);
+    // Not blank: the frame has both sky and sea colours in it.
+    const stats = await page.evaluate(() => window.oceano.stats());
+    expect(stats.triangles).toBeGreaterThan(0);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('rejects a bad setParams call, naming the key, and applies nothing of it', async () => {
+    const { page } = await openOcean(harness, 't=1');
+    const result = await page.evaluate(() => {
+      const before = window.oceano.getParams();
+      const messages: string[] = [];
+      for (const bad of [{ swellAmplitude: 1e9 }, { bogus: 1 }, { seed: 1.5 }, { swellAmplitude: 2, waterColor: 'red' }]) {
+        try {
+          window.oceano.setParams(bad as never);
+        } catch (error) {
+          messages.push((error as Error).message);
+        }
+      }
+      return { messages, unchanged: JSON.stringify(before) === JSON.stringify(window.oceano.getParams()) };
+    });
+    expect(result.messages).toHaveLength(4);
+    expect(result.messages[0]).toMatch(/swellAmplitude/);
+    expect(result.messages[1]).toMatch(/bogus/);
+    expect(result.messages[2]).toMatch(/seed/);
+    expect(result.messages[3]).toMatch(/waterColor/);
+    expect(result.unchanged).toBe(true);
+    await page.close();
+  });
+});
+
+describe('automation API', () => {
+  it('exposes the uploaded Fresnel table and heightmaps, equal to the CPU modules', async () => {
+    const { page } = await openOcean(harness, 'seed=3&t=0');
+    const data = await page.evaluate(() => ({
+      fresnel: Array.from(window.oceano.debug.fresnelTable()),
+      maps: window.oceano.debug.heightmaps().map((m) => ({ size: m.size, data: Array.from(m.data.slice(0, 64)) })),
+    }));
+    expect(data.fresnel).toEqual(Array.from(fresnelTable(256)));
+    const [a, b] = generateRippleHeightmaps(3, HEIGHTMAP_SIZE);
+    expect(data.maps[0].size).toBe(HEIGHTMAP_SIZE);
+    expect(data.maps[0].data).toEqual(Array.from(a.data.slice(0, 64)));
+    expect(data.maps[1].data).toEqual(Array.from(b.data.slice(0, 64)));
+    await page.close();
+  });
+
+  it('samples the CPU surface in agreement with the GPU shader (swell and ripples)', async () => {
+    const { page } = await openOcean(harness, 'seed=5&t=37');
+    const worst = await page.evaluate(async () => {
+      const points: [number, number][] = [];
+      for (let i = 0; i < 64; i++) points.push([Math.sin(i * 12.9898) * 300, Math.cos(i * 78.233) * 300]);
+      const gpu = await window.oceano.probeGpu(points);
+      let height = 0;
+      let normal = 0;
+      points.forEach(([x, z], i) => {
+        const cpu = window.oceano.sampleSurface(x, z);
+        height = Math.max(height, Math.abs(cpu.height - gpu[i].height));
+        for (let c = 0; c < 3; c++) normal = Math.max(normal, Math.abs(cpu.normal[c] - gpu[i].normal[c]));
+      });
+      return { height, normal };
+    });
+    expect(worst.height).toBeLessThan(1e-3);
+    expect(worst.normal).toBeLessThan(1e-3);
+    await page.close();
+  });
+
+  it('moves the camera with setCamera and changes the picture; pause and setTime freeze and move time', async () => {
+    const { page } = await openOcean(harness, 't=5');
+    const before = await canvasPng(page);
+    await page.evaluate(() => window.oceano.setCamera({ position: [30, 25, 30], target: [0, 0, -40] }));
+    const moved = await canvasPng(page);
+    expect(diffPngs(before, moved).share).toBeGreaterThan(0.05);
+    const camera = await page.evaluate(() => window.oceano.getCamera());
+    camera.position.forEach((c, i) => expect(c).toBeCloseTo([30, 25, 30][i], 9));
+    const h = await page.evaluate(() => {
+      window.oceano.pause();
+      window.oceano.setTime(100);
+      return window.oceano.sampleSurface(0, 0).height;
+    });
+    await new Promise((r) => setTimeout(r, 300));
+    expect(await page.evaluate(() => window.oceano.sampleSurface(0, 0).height)).toBe(h);
+    await page.close();
+  });
+});

@@ -1,0 +1,58 @@
+import { describe, expect, it } from 'vitest';
+import { criticalAngle, fresnelReflectance, fresnelTable, schlickReflectance, WATER_IOR } from '../../src/sim/fresnel';
+
+const deg = (d: number) => (d * Math.PI) / 180;
+
+describe('Fresnel reflectance, air to water', () => {
+  it('is ((n1 − n2)/(n1 + n2))² ≈ 0.0204 at normal incidence', () => {
+    expect(fresnelReflectance(1, 1, WATER_IOR)).toBeCloseTo(((1 - 1.333) / (1 + 1.333)) ** 2, 12);
+    expect(fresnelReflectance(1, 1, WATER_IOR)).toBeCloseTo(0.0204, 4);
+  });
+
+  it('matches the exact s/p equations at several angles', () => {
+    // Independent evaluation from the angles themselves (Fresnel's sine/tangent form).
+    for (const angle of [10, 30, 45, 60, 75, 85]) {
+      const i = deg(angle);
+      const t = Math.asin(Math.sin(i) / WATER_IOR);
+      const rs = (Math.sin(i - t) / Math.sin(i + t)) ** 2;
+      const rp = (Math.tan(i - t) / Math.tan(i + t)) ** 2;
+      expect(fresnelReflectance(Math.cos(i), 1, WATER_IOR)).toBeCloseTo((rs + rp) / 2, 10);
+    }
+  });
+
+  it('has known values: ≈ 0.0279 at 45°, ≈ 0.0597 at 60° and → 1 at grazing', () => {
+    expect(fresnelReflectance(Math.cos(deg(45)), 1, WATER_IOR)).toBeCloseTo(0.0279, 3);
+    expect(fresnelReflectance(Math.cos(deg(60)), 1, WATER_IOR)).toBeCloseTo(0.0597, 3);
+    expect(fresnelReflectance(Math.cos(deg(89.9)), 1, WATER_IOR)).toBeGreaterThan(0.98);
+    expect(fresnelReflectance(Math.cos(deg(89.99)), 1, WATER_IOR)).toBeGreaterThan(0.998);
+    expect(fresnelReflectance(0, 1, WATER_IOR)).toBe(1);
+  });
+
+  it('differs from Schlick in the middle but agrees at the ends', () => {
+    expect(schlickReflectance(1, 1, WATER_IOR)).toBeCloseTo(fresnelReflectance(1, 1, WATER_IOR), 12);
+    expect(schlickReflectance(0, 1, WATER_IOR)).toBeCloseTo(1, 12);
+    expect(Math.abs(schlickReflectance(Math.cos(deg(80)), 1, WATER_IOR) - fresnelReflectance(Math.cos(deg(80)), 1, WATER_IOR))).toBeGreaterThan(0.001);
+  });
+});
+
+describe('Fresnel reflectance, water to air', () => {
+  it('is total beyond the critical angle of about 48.6°', () => {
+    expect((criticalAngle(WATER_IOR, 1) * 180) / Math.PI).toBeCloseTo(48.61, 2);
+    expect(fresnelReflectance(Math.cos(deg(49)), WATER_IOR, 1)).toBe(1);
+    expect(fresnelReflectance(Math.cos(deg(48)), WATER_IOR, 1)).toBeLessThan(1);
+    expect(fresnelReflectance(1, WATER_IOR, 1)).toBeCloseTo(0.0204, 4);
+  });
+});
+
+describe('Fresnel table', () => {
+  const table = fresnelTable(256);
+  it('has 256 entries indexed by cos θ, grazing first', () => {
+    expect(table.length).toBe(256);
+    expect(table[0]).toBe(1);
+    expect(table[255]).toBeCloseTo(0.0204, 4);
+    expect(table[128]).toBeCloseTo(fresnelReflectance(128 / 255, 1, WATER_IOR), 6);
+  });
+  it('decreases monotonically from grazing to normal incidence', () => {
+    for (let i = 1; i < table.length; i++) expect(table[i]).toBeLessThanOrEqual(table[i - 1]);
+  });
+});

@@ -1,0 +1,113 @@
+import { describe, expect, it } from 'vitest';
+import { integerNoise } from '../../src/sim/integerHash';
+import { TilingPerlinNoise, cosineInterpolate, generateHeightmap, generateRippleHeightmaps, defaultNoiseSettings } from '../../src/sim/perlinNoise';
+
+describe('integer noise', () => {
+  it('returns the same value for the same input and seed', () => {
+    for (let i = -50; i < 50; i++) expect(integerNoise(i, i * 3, 9)).toBe(integerNoise(i, i * 3, 9));
+  });
+  it('is bounded in [-1, 1) and roughly zero-mean', () => {
+    let sum = 0;
+    for (let y = 0; y < 100; y++) {
+      for (let x = 0; x < 100; x++) {
+        const v = integerNoise(x, y, 3);
+        expect(v).toBeGreaterThanOrEqual(-1);
+        expect(v).toBeLessThan(1);
+        sum += v;
+      }
+    }
+    expect(Math.abs(sum / 10000)).toBeLessThan(0.03);
+  });
+  it('changes with the seed', () => {
+    let same = 0;
+    for (let x = 0; x < 200; x++) if (integerNoise(x, 1, 1) === integerNoise(x, 1, 2)) same++;
+    expect(same).toBe(0);
+  });
+});
+
+describe('cosine interpolation', () => {
+  it('hits both ends and the midpoint, with zero slope at the ends', () => {
+    expect(cosineInterpolate(2, 6, 0)).toBeCloseTo(2, 12);
+    expect(cosineInterpolate(2, 6, 1)).toBeCloseTo(6, 12);
+    expect(cosineInterpolate(2, 6, 0.5)).toBeCloseTo(4, 12);
+    expect(cosineInterpolate(2, 6, 1e-4) - 2).toBeLessThan(1e-6);
+  });
+});
+
+describe('tiling Perlin noise', () => {
+  const settings = { ...defaultNoiseSettings, seed: 42 };
+  const noise = new TilingPerlinNoise(settings);
+
+  it('is deterministic per seed: two fields built from one seed agree everywhere', () => {
+    const twin = new TilingPerlinNoise(settings);
+    for (let k = 0; k < 200; k++) expect(twin.sample(k * 0.013, k * 0.029)).toBe(noise.sample(k * 0.013, k * 0.029));
+  });
+
+  it('is bounded by 1 in magnitude', () => {
+    for (let k = 0; k < 5000; k++) expect(Math.abs(noise.sample(k * 0.0071, k * 0.0113))).toBeLessThanOrEqual(1);
+  });
+
+  it('tiles with period 1 in both directions', () => {
+    for (let k = 0; k < 200; k++) {
+      const u = k * 0.0173;
+      const v = k * 0.0311;
+      expect(noise.sample(u + 1, v)).toBeCloseTo(noise.sample(u, v), 10);
+      expect(noise.sample(u, v + 1)).toBeCloseTo(noise.sample(u, v), 10);
+      expect(noise.sample(u - 3, v + 2)).toBeCloseTo(noise.sample(u, v), 10);
+    }
+  });
+
+  it('is continuous: tiny steps give tiny changes, including across the tile edge', () => {
+    const h = 1e-6;
+    for (let k = 0; k < 500; k++) {
+      const u = k / 500;
+      expect(Math.abs(noise.sample(u + h, 0.37) - noise.sample(u, 0.37))).toBeLessThan(1e-3);
+    }
+    expect(Math.abs(noise.sample(1 - h, 0.5) - noise.sample(0, 0.5))).toBeLessThan(1e-3);
+  });
+
+  it('gains detail with octaves: more octaves add high-frequency energy', () => {
+    // Total variation along a line relative to the spread of values: larger when finer octaves are present.
+    const roughness = (octaves: number) => {
+      const field = new TilingPerlinNoise({ ...settings, octaves });
+      const values = Array.from({ length: 2001 }, (_, k) => field.sample(k / 2000, 0.3));
+      let variation = 0;
+      for (let k = 1; k < values.length; k++) variation += Math.abs(values[k] - values[k - 1]);
+      const mean = values.reduce((a, b) => a + b, 0) / values.length;
+      const std = Math.sqrt(values.reduce((a, b) => a + (b - mean) ** 2, 0) / values.length);
+      return variation / std;
+    };
+    expect(roughness(5)).toBeGreaterThan(roughness(1) * 1.5);
+  });
+});
+
+describe('heightmaps', () => {
+  it('are zero-mean with peak exactly 1, and tile without a seam', () => {
+    const map = generateHeightmap(64, { ...defaultNoiseSettings, seed: 5 });
+    let peak = 0;
+    let sum = 0;
+    for (const v of map.data) {
+      peak = Math.max(peak, Math.abs(v));
+      sum += v;
+    }
+    expect(peak).toBeCloseTo(1, 6);
+    expect(Math.abs(sum / map.data.length)).toBeLessThan(1e-6);
+    // The seam: the step from the last column to the first is no bigger than ordinary steps.
+    let worstInside = 0;
+    let worstSeam = 0;
+    for (let j = 0; j < 64; j++) {
+      for (let i = 0; i < 63; i++) worstInside = Math.max(worstInside, Math.abs(map.data[j * 64 + i + 1] - map.data[j * 64 + i]));
+      worstSeam = Math.max(worstSeam, Math.abs(map.data[j * 64] - map.data[j * 64 + 63]));
+    }
+    expect(worstSeam).toBeLessThanOrEqual(worstInside * 1.05);
+  });
+
+  it('are the same for the same seed and different for another', () => {
+    const [a0, a1] = generateRippleHeightmaps(7, 32);
+    const [b0] = generateRippleHeightmaps(7, 32);
+    const [c0] = generateRippleHeightmaps(8, 32);
+    expect(Array.from(a0.data)).toEqual(Array.from(b0.data));
+    expect(Array.from(a0.data)).not.toEqual(Array.from(a1.data));
+    expect(Array.from(a0.data)).not.toEqual(Array.from(c0.data));
+  });
+});
