@@ -9,6 +9,7 @@ uniform float uRippleStrength;
 uniform float uRippleBlend;
 uniform vec4 uRippleOffset;
 uniform float uTileSize;
+uniform float uHeightmapSize;
 uniform float uNormalDelta;
 uniform sampler2D uHeightmap0;
 uniform sampler2D uHeightmap1;
@@ -28,18 +29,14 @@ float swellHeight(vec2 p) {
 }
 
 // Bilinear with wrap by hand: texel (i, j) sits at world offset (i, j) * tile / size.
+// Each texel holds its own height and those of its +x, +z and diagonal neighbours
+// (wrapped), so one fetch gives the four corners and no modulo is needed.
 float sampleHeightmap(sampler2D map, vec2 p) {
-  int n = textureSize(map, 0).x;
-  vec2 st = fract(p / uTileSize) * float(n);
+  vec2 st = fract(p / uTileSize) * uHeightmapSize;
   vec2 cell = floor(st);
   vec2 f = st - cell;
-  ivec2 i0 = ivec2(cell) % n;
-  ivec2 i1 = (i0 + 1) % n;
-  float a = texelFetch(map, ivec2(i0.x, i0.y), 0).r;
-  float b = texelFetch(map, ivec2(i1.x, i0.y), 0).r;
-  float c = texelFetch(map, ivec2(i0.x, i1.y), 0).r;
-  float d = texelFetch(map, ivec2(i1.x, i1.y), 0).r;
-  return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+  vec4 corners = texelFetch(map, ivec2(cell), 0);
+  return mix(mix(corners.x, corners.y, f.x), mix(corners.z, corners.w, f.x), f.y);
 }
 
 float rippleHeight(vec2 p) {

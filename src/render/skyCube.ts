@@ -13,6 +13,8 @@ export function loadSkyCube(base: string): Promise<CubeTexture> {
       skyFaceUrls(base),
       (texture) => {
         texture.colorSpace = SRGBColorSpace;
+        texture.generateMipmaps = false;
+        texture.minFilter = LinearFilter;
         resolve(texture);
       },
       undefined,

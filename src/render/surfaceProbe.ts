@@ -35,7 +35,7 @@ export class SurfaceProbe {
     this.material = new ShaderMaterial({
       vertexShader,
       fragmentShader,
-      uniforms: { ...createSurfaceUniforms([null as unknown as Texture, null as unknown as Texture]), uTargetSize: { value: new Vector2() } },
+      uniforms: { ...createSurfaceUniforms(), uTargetSize: { value: new Vector2() } },
       depthTest: false,
       depthWrite: false,
     });

@@ -10,14 +10,15 @@ export type SurfaceUniforms = Record<
   | 'uRippleBlend'
   | 'uRippleOffset'
   | 'uTileSize'
+  | 'uHeightmapSize'
   | 'uNormalDelta'
   | 'uHeightmap0'
   | 'uHeightmap1',
   IUniform
 >;
 
-export function createSurfaceUniforms(heightmaps: [Texture, Texture]): SurfaceUniforms {
-  return {
+export function createSurfaceUniforms(heightmaps?: [Texture, Texture]): SurfaceUniforms {
+  const uniforms: SurfaceUniforms = {
     uSwellAmplitude: { value: 0 },
     uSwellFrequency: { value: 0 },
     uSwellPhase: { value: new Vector4() },
@@ -25,10 +26,13 @@ export function createSurfaceUniforms(heightmaps: [Texture, Texture]): SurfaceUn
     uRippleBlend: { value: 0 },
     uRippleOffset: { value: new Vector4() },
     uTileSize: { value: 1 },
+    uHeightmapSize: { value: 1 },
     uNormalDelta: { value: 1 },
-    uHeightmap0: { value: heightmaps[0] },
-    uHeightmap1: { value: heightmaps[1] },
+    uHeightmap0: { value: null },
+    uHeightmap1: { value: null },
   };
+  if (heightmaps) applyHeightmaps(uniforms, heightmaps);
+  return uniforms;
 }
 
 export function applySurfaceState(u: SurfaceUniforms, state: SurfaceState): void {
@@ -45,4 +49,5 @@ export function applySurfaceState(u: SurfaceUniforms, state: SurfaceState): void
 export function applyHeightmaps(u: SurfaceUniforms, heightmaps: [Texture, Texture]): void {
   u.uHeightmap0.value = heightmaps[0];
   u.uHeightmap1.value = heightmaps[1];
+  u.uHeightmapSize.value = (heightmaps[0].image as { width: number }).width;
 }
