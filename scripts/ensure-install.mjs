@@ -9,7 +9,9 @@ const stale =
   !existsSync(marker) || manifests.some((f) => statSync(f).mtimeMs > statSync(marker).mtimeMs);
 
 if (stale) {
-  const command = existsSync('package-lock.json') ? 'npm ci' : 'npm install';
+  // `npm install` rather than `npm ci`: the lock file written here may list only this
+  // platform's optional packages, which `npm ci` refuses on another machine.
+  const command = 'npm install --no-audit --no-fund';
   console.log(`[oceano] dependencies missing or out of date: running ${command}`);
   execSync(command, { stdio: 'inherit' });
 }
