@@ -9,6 +9,8 @@ uniform vec3 uFacingTint;
 uniform vec3 uSunDirection;
 uniform vec3 uSunColor;
 uniform float uHazeDensity;
+// Teaching view: the normal itself as a colour, (n + 1) / 2, written without tone mapping.
+uniform bool uShowNormals;
 
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
@@ -35,6 +37,10 @@ void main() {
   float distance = length(toEye);
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
+  if (uShowNormals) {
+    gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
+    return;
+  }
   float cosIncidence = max(dot(n, v), 0.0);
 
   float reflectance = uFresnelEnabled ? fresnelLookup(cosIncidence) : 0.5;

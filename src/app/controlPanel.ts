@@ -5,7 +5,7 @@ const FOLDERS: { title: string; keys: ParamKey[] }[] = [
   { title: 'Swell', keys: ['swellAmplitude', 'swellFrequency'] },
   { title: 'Ripples (Perlin)', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'Light & water', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
-  { title: 'View', keys: ['wireframe'] },
+  { title: 'View', keys: ['wireframe', 'shading', 'normals', 'view', 'fresnelPlot'] },
 ];
 
 export interface ControlPanelHooks {
@@ -39,9 +39,12 @@ export class ControlPanel {
     const emit = (value: OceanParams[ParamKey]) => hooks.onParam(key, value);
     if (def.kind === 'color') return group.addColor(this.model, key).name(def.label).onChange(emit);
     if (def.kind === 'boolean') return group.add(this.model, key).name(def.label).onChange(emit);
+    if (def.kind === 'choice') return group.add(this.model, key, [...def.options]).name(def.label).onChange(emit);
     const name = def.unit ? `${def.label} (${def.unit})` : def.label;
     const step = def.kind === 'integer' ? 1 : (def.step ?? (def.max - def.min) / 100);
-    const controller = group.add(this.model, key, def.min, def.max, step).name(name);
+    // A slider over the whole int32 range of the seed is useless: give it a number box.
+    const wideRange = def.max - def.min > 1e6;
+    const controller = (wideRange ? group.add(this.model, key).step(1) : group.add(this.model, key, def.min, def.max, step)).name(name);
     // A new seed regenerates both heightmaps: do it once when the user lets go, not per pixel dragged.
     return key === 'seed' ? controller.onFinishChange(emit) : controller.onChange(emit);
   }

@@ -21,7 +21,7 @@ function showFatal(container: HTMLElement, message: string): void {
 
 function boot(): void {
   const container = document.getElementById('oceano') as HTMLElement;
-  const canvas = container.querySelector('canvas') as HTMLCanvasElement;
+  const canvas = container.querySelector('canvas.oceano-canvas') as HTMLCanvasElement;
   if (!hasWebGL2()) {
     canvas.remove();
     showFatal(container, 'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.');

@@ -7,6 +7,7 @@ import { OceanView } from '../render/oceanView';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { ControlPanel } from './controlPanel';
 import { Notices } from './notices';
+import { FresnelPlot } from './fresnelPlot';
 import { SimulationClock } from './simulationClock';
 import type { UrlState } from './urlState';
 
@@ -37,6 +38,7 @@ export class OceanApp {
   private view!: OceanView;
   private controls!: OrbitControls;
   private panel?: ControlPanel;
+  private fresnelPlot?: FresnelPlot;
   private frameTimes: number[] = [];
   private frameCount = 0;
   private lastFrameTime: number | null = null;
@@ -66,6 +68,8 @@ export class OceanApp {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => (playing ? this.play() : this.pause()),
     });
+    this.fresnelPlot = new FresnelPlot(this.container, this.view.fresnelData);
+    this.fresnelPlot.setVisible(this.params.fresnelPlot);
     this.resize();
     new ResizeObserver(() => this.resize()).observe(this.canvas);
     this.renderFrame();
@@ -119,6 +123,7 @@ export class OceanApp {
     const valid = validateParams(partial);
     this.params = { ...this.params, ...valid };
     this.view.applyParams(this.params);
+    this.fresnelPlot?.setVisible(this.params.fresnelPlot);
     this.panel?.sync(this.params, this.clock.playing);
     return this.getParams();
   }
@@ -188,6 +193,7 @@ export class OceanApp {
     cancelAnimationFrame(this.animationHandle);
     this.controls.dispose();
     this.panel?.dispose();
+    this.fresnelPlot?.dispose();
     this.view.dispose();
   }
 }

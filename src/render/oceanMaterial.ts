@@ -24,6 +24,8 @@ export class OceanMaterial extends ShaderMaterial {
         uSunDirection: { value: new Vector3(0, 1, 0) },
         uSunColor: { value: new Color(1.0, 0.93, 0.8) },
         uHazeDensity: { value: 0.0012 },
+        uFlatNormals: { value: false },
+        uShowNormals: { value: false },
       },
     });
   }
@@ -47,6 +49,11 @@ export class OceanMaterial extends ShaderMaterial {
 
   setSunDirection(direction: readonly [number, number, number]): void {
     (this.uniforms.uSunDirection.value as Vector3).fromArray(direction).normalize();
+  }
+
+  setTeachingViews(flatNormals: boolean, showNormals: boolean): void {
+    this.uniforms.uFlatNormals.value = flatNormals;
+    this.uniforms.uShowNormals.value = showNormals;
   }
 
   setFresnelEnabled(enabled: boolean): void {

@@ -7,6 +7,7 @@ import { OceanMaterial } from './oceanMaterial';
 import { createGridGeometry } from './oceanGrid';
 import { fresnelTexture, heightmapTexture } from './dataTextures';
 import { SurfaceProbe } from './surfaceProbe';
+import { HeightmapView } from './heightmapView';
 import type { SurfaceSample } from '../sim/oceanSurface';
 
 /** Side of the displaced grid, metres, and its vertex spacing. */
@@ -35,6 +36,8 @@ export class OceanView {
   private readonly fresnelTexture: DataTexture;
   private lastStats: RenderStats = { drawCalls: 0, triangles: 0 };
   private probe?: SurfaceProbe;
+  private heightmapView?: HeightmapView;
+  private showHeightmaps = false;
 
   constructor(
     canvas: HTMLCanvasElement,
@@ -69,6 +72,8 @@ export class OceanView {
     this.material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
     this.material.setFresnelEnabled(params.fresnel);
     this.material.wireframe = params.wireframe;
+    this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
+    this.showHeightmaps = params.view === 'heightmap';
   }
 
   setSky(sky: CubeTexture): void {
@@ -88,6 +93,13 @@ export class OceanView {
   }
 
   render(time: number): void {
+    if (this.showHeightmaps) {
+      this.heightmapView ??= new HeightmapView();
+      this.heightmapView.render(this.renderer, this.heightmapTextures, this.camera.aspect);
+      const info = this.renderer.info.render;
+      this.lastStats = { drawCalls: info.calls, triangles: info.triangles };
+      return;
+    }
     this.material.setSurface(this.surface.stateAt(time));
     // Snapping to whole grid steps keeps every vertex on the same world lattice, so the
     // waves stay put under a moving camera instead of swimming.
@@ -115,6 +127,7 @@ export class OceanView {
     this.ocean.geometry.dispose();
     this.material.dispose();
     this.probe?.dispose();
+    this.heightmapView?.dispose();
     for (const texture of this.heightmapTextures) texture.dispose();
     this.fresnelTexture.dispose();
     this.sky.dispose();

@@ -22,7 +22,13 @@ interface ColorDef {
   default: string;
   label: string;
 }
-export type ParamDef = NumberDef | BooleanDef | ColorDef;
+interface ChoiceDef {
+  kind: 'choice';
+  default: string;
+  options: readonly string[];
+  label: string;
+}
+export type ParamDef = NumberDef | BooleanDef | ColorDef | ChoiceDef;
 
 export const paramDefs = {
   seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },
@@ -35,10 +41,21 @@ export const paramDefs = {
   waterColor: { kind: 'color', default: '#06283a', label: 'Deep water colour' },
   fresnel: { kind: 'boolean', default: true, label: 'Fresnel' },
   wireframe: { kind: 'boolean', default: false, label: 'Wireframe' },
+  // Teaching views of the seed's figures.
+  shading: { kind: 'choice', default: 'water', options: ['water', 'normals'], label: 'Shading' },
+  normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },
+  view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap'], label: 'View' },
+  fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
 } as const satisfies Record<string, ParamDef>;
 
 export type ParamKey = keyof typeof paramDefs;
-type ValueOf<D> = D extends { kind: 'boolean' } ? boolean : D extends { kind: 'color' } ? string : number;
+type ValueOf<D> = D extends { kind: 'boolean' }
+  ? boolean
+  : D extends { kind: 'choice'; options: readonly (infer O)[] }
+    ? O
+    : D extends { kind: 'color' }
+      ? string
+      : number;
 export type OceanParams = { -readonly [K in ParamKey]: ValueOf<(typeof paramDefs)[K]> };
 
 export const paramKeys = Object.keys(paramDefs) as ParamKey[];
@@ -75,6 +92,11 @@ export function validateParam(key: string, value: unknown): OceanParams[ParamKey
     case 'boolean':
       if (typeof value !== 'boolean') throw new ParamError(key, `"${key}" must be true or false, got ${describe(value)}.`);
       return value;
+    case 'choice':
+      if (typeof value !== 'string' || !def.options.includes(value)) {
+        throw new ParamError(key, `"${key}" must be one of ${def.options.join(', ')}, got ${describe(value)}.`);
+      }
+      return value as OceanParams[ParamKey];
     case 'color':
       if (typeof value !== 'string' || !COLOR_PATTERN.test(value)) {
         throw new ParamError(key, `"${key}" must be a colour like #12ab9f, got ${describe(value)}.`);
@@ -121,6 +143,10 @@ export function parseParamText(key: ParamKey, text: string): { value: OceanParam
     if (['1', 'true', 'on', 'yes'].includes(text)) return { value: true };
     if (['0', 'false', 'off', 'no'].includes(text)) return { value: false };
     return { value: def.default, notice: `"${key}=${text}" is not true/false; using ${def.default}.` };
+  }
+  if (def.kind === 'choice') {
+    if (def.options.includes(text)) return { value: text as OceanParams[ParamKey] };
+    return { value: def.default as OceanParams[ParamKey], notice: `"${key}=${text}" is not one of ${def.options.join(', ')}; using ${def.default}.` };
   }
   if (def.kind === 'color') {
     const hex = text.startsWith('#') ? text : `#${text}`;

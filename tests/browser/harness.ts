@@ -62,10 +62,16 @@ export async function openOcean(harness: Harness, query: string, width = 640, he
   return { page, consoleErrors };
 }
 
-/** A frame drawn now, then the canvas as PNG bytes (GUI and notices are not in it). */
+/**
+ * A frame drawn now, then the WebGL canvas's own pixels as PNG bytes (read from the
+ * canvas, so overlays such as the GUI and notices are never in the picture).
+ */
 export async function canvasPng(page: Page): Promise<Buffer> {
-  await page.evaluate(() => window.oceano.renderFrame());
-  const canvas = await page.$('canvas');
-  if (!canvas) throw new Error('No canvas on the page.');
-  return Buffer.from(await canvas.screenshot({ type: 'png' }));
+  const dataUrl = await page.evaluate(() => {
+    window.oceano.renderFrame();
+    const canvas = document.querySelector('canvas.oceano-canvas') as HTMLCanvasElement | null;
+    if (!canvas) throw new Error('No ocean canvas on the page.');
+    return canvas.toDataURL('image/png');
+  });
+  return Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64');
 }

@@ -93,3 +93,12 @@ describe('parseUrlState', () => {
     expect(parseUrlState('?sky=https://evil.example/x').sky).toBeNull();
   });
 });
+
+describe('choice parameters', () => {
+  it('accept only their options, from the API and from the URL', () => {
+    expect(validateParams({ shading: 'normals', view: 'heightmap', normals: 'flat' })).toEqual({ shading: 'normals', view: 'heightmap', normals: 'flat' });
+    expect(() => validateParams({ shading: 'toon' })).toThrow(/"shading" must be one of water, normals/);
+    expect(parseParamText('view', 'heightmap')).toEqual({ value: 'heightmap' });
+    expect(parseParamText('view', 'x-ray')).toMatchObject({ value: 'ocean', notice: expect.stringContaining('x-ray') });
+  });
+});
