@@ -73,6 +73,7 @@ export class OceanApp {
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
+  private pendingRender = 0;
   private looping = false;
   private started = false;
   private disposed = false;
@@ -120,6 +121,7 @@ export class OceanApp {
     this.controls.target.set(0, 0, -60);
     this.controls.maxPolarAngle = Math.PI * 0.495;
     this.controls.update();
+    this.controls.addEventListener('change', this.requestRender);
     if (this.options.state.camera) this.setCamera(this.options.state.camera);
     if (this.options.showPanel) {
       this.panel = new ControlPanel(
@@ -162,9 +164,13 @@ export class OceanApp {
     this.animationHandle = requestAnimationFrame(this.loop);
   };
 
-  /** Runs the loop exactly when the app is started, visible, on screen and has a GL context. */
+  /**
+   * Runs the loop exactly when the app is started, playing, visible, on screen and has a GL
+   * context. A paused view draws only when something changes (requestRender), so a page of
+   * frozen figures costs nothing between interactions.
+   */
   private updateLoop(): void {
-    const shouldRun = this.started && !this.disposed && !this.contextLost && this.suspended.size === 0;
+    const shouldRun = this.started && !this.disposed && !this.contextLost && this.suspended.size === 0 && this.clock.playing;
     if (shouldRun === this.looping) return;
     this.looping = shouldRun;
     if (shouldRun) {
@@ -175,6 +181,15 @@ export class OceanApp {
       cancelAnimationFrame(this.animationHandle);
     }
   }
+
+  /** One frame on the next animation frame, for a paused view whose camera, size or parameters changed. */
+  private readonly requestRender = (): void => {
+    if (this.looping || this.pendingRender !== 0 || !this.started || this.disposed) return;
+    this.pendingRender = requestAnimationFrame(() => {
+      this.pendingRender = 0;
+      this.renderFrame();
+    });
+  };
 
   /** Stops the frame loop while the tab is hidden or the view is scrolled away; a page of many views stays light. */
   setSuspended(reason: SuspendReason, suspended: boolean): void {
@@ -204,9 +219,11 @@ export class OceanApp {
     this.updateLoop();
   };
 
+  /** Resizing clears the canvas, so a paused view draws again. */
   private resize(): void {
     const rect = this.canvas.getBoundingClientRect();
     this.view.setSize(rect.width, rect.height, Math.min(window.devicePixelRatio, 2));
+    this.requestRender();
   }
 
   /**
@@ -235,24 +252,28 @@ export class OceanApp {
     this.params = { ...this.params, ...valid };
     this.view.applyParams(this.params);
     this.panel?.sync(this.params, this.clock.playing);
+    this.requestRender();
     return this.getParams();
   }
 
   setTime(seconds: number): void {
     if (typeof seconds !== 'number' || !Number.isFinite(seconds)) throw new TypeError(`setTime needs a finite number of seconds, got ${String(seconds)}.`);
     this.clock.setTime(seconds);
+    this.requestRender();
   }
 
   play(): void {
     this.clock.playing = true;
     this.panel?.sync(this.params, true);
     this.playButton.sync(true);
+    this.updateLoop();
   }
 
   pause(): void {
     this.clock.playing = false;
     this.panel?.sync(this.params, false);
     this.playButton.sync(false);
+    this.updateLoop();
   }
 
   setCamera(pose: CameraPose): void {
@@ -333,6 +354,7 @@ export class OceanApp {
     this.disposed = true;
     this.updateLoop();
     cancelAnimationFrame(this.animationHandle);
+    cancelAnimationFrame(this.pendingRender);
     this.resizeObserver?.disconnect();
     this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
     this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
@@ -340,6 +362,7 @@ export class OceanApp {
     this.playButton.dispose();
     this.notices.dispose();
     if (this.started) {
+      this.controls.removeEventListener('change', this.requestRender);
       this.controls.dispose();
       this.view.dispose();
       this.view.renderer.forceContextLoss();
