@@ -1,5 +1,5 @@
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { CubeTexture } from 'three';
+import { Vector3, type CubeTexture } from 'three';
 import { validateParams, type OceanParams } from '../sim/params';
 import { message, type Message } from '../sim/message';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
@@ -280,9 +280,18 @@ export class OceanApp {
     if (!isCameraPose(pose)) {
       throw new TypeError('setCamera needs { position: [x, y, z], target: [x, y, z] }: finite numbers within ±1e6 m, the target apart from the position.');
     }
-    this.view.camera.position.fromArray(pose.position);
+    const camera = this.view.camera;
+    camera.position.fromArray(pose.position);
     this.controls.target.fromArray(pose.target);
     this.controls.update();
+    // The controls rebuild target and position through a length clamp and spherical angles,
+    // which moves them by an ulp or so; put back the exact ones (unless the controls clamped
+    // the angle) so that a shared link reproduces the view bit for bit.
+    if (camera.position.distanceTo(new Vector3().fromArray(pose.position)) < 1e-6) {
+      this.controls.target.fromArray(pose.target);
+      camera.position.fromArray(pose.position);
+      camera.lookAt(this.controls.target);
+    }
   }
 
   camera(): CameraPose {
