@@ -4,6 +4,9 @@ export interface CameraPose {
   target: [number, number, number];
 }
 
+/** The view the page opens with: eye 9 m above the sea, looking out over it. */
+export const DEFAULT_CAMERA: CameraPose = { position: [0, 9, 40], target: [0, 0, -60] };
+
 /** Farther than this from the origin is no view of the sea, and a likely typo. */
 const CAMERA_LIMIT = 1e6;
 

@@ -198,6 +198,10 @@ export class OceanApp {
     this.updateLoop();
   }
 
+  isStarted(): boolean {
+    return this.started && !this.disposed;
+  }
+
   activity(): LoopActivity {
     return { looping: this.looping, framesDrawn: this.frameCount };
   }
@@ -280,6 +284,7 @@ export class OceanApp {
     if (!isCameraPose(pose)) {
       throw new TypeError('setCamera needs { position: [x, y, z], target: [x, y, z] }: finite numbers within ±1e6 m, the target apart from the position.');
     }
+    this.requestRender();
     const camera = this.view.camera;
     camera.position.fromArray(pose.position);
     this.controls.target.fromArray(pose.target);

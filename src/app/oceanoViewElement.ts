@@ -1,9 +1,10 @@
 import { message } from '../sim/message';
-import { paramKeys } from '../sim/params';
+import { isParamKey, paramKeys } from '../sim/params';
 import { createAutomationApi, type OceanoApi } from './automationApi';
 import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './bootSupport';
 import { preferredLanguage, Translator } from './i18n';
 import { OceanApp } from './oceanApp';
+import { DEFAULT_CAMERA } from './cameraPose';
 import { PAGE_KEYS, parseSettings } from './urlState';
 
 /** HTML lower-cases attribute names: map them back to the URL's names (swellamplitude → swellAmplitude). */
@@ -21,6 +22,11 @@ const HTML_ATTRIBUTES = new Set(['id', 'class', 'style', 'title', 'hidden', 'tab
 export class OceanoViewElement extends HTMLElement {
   /** The directory of dist/oceano.js: the built-in sky and the full page (for share links) sit beside it. */
   static assetBase = '';
+
+  /** Parameters, time and camera follow their attributes while the element lives; the rest is read once, when it is connected. */
+  static get observedAttributes(): string[] {
+    return [...paramKeys.map((key) => key.toLowerCase()), 't', 'cam'];
+  }
 
   oceano: OceanoApi | null = null;
   private app: OceanApp | null = null;
@@ -53,6 +59,24 @@ export class OceanoViewElement extends HTMLElement {
       () => this.dispatchEvent(new CustomEvent('ready')),
       () => undefined,
     );
+  }
+
+  attributeChangedCallback(name: string, _old: string | null, text: string | null): void {
+    const app = this.app;
+    if (!app || !app.isStarted() || text === null) return;
+    const key = SETTING_NAMES.get(name) ?? name;
+    // Validated exactly as at start-up, with the same notice and the same fallback.
+    const state = parseSettings([[key, text]]);
+    for (const notice of state.notices) app.notify(notice);
+    if (isParamKey(key)) {
+      app.setParams({ [key]: state.params[key] });
+    } else if (key === 't') {
+      app.setTime(state.time ?? 0);
+      if (state.time === null) app.play();
+      else app.pause();
+    } else if (key === 'cam') {
+      app.setCamera(state.camera ?? DEFAULT_CAMERA);
+    }
   }
 
   disconnectedCallback(): void {

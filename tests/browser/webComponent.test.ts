@@ -62,6 +62,30 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     await page.close();
   });
 
+  it('follows attribute changes, validated like the URL', async () => {
+    const { page } = await recordedPage(harness, 400, 500);
+    await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const result = await page.evaluate(() => {
+      const view = document.querySelector('#first') as ViewElement;
+      view.setAttribute('swellAmplitude', '3.5');
+      view.setAttribute('cam', '1,20,30,0,0,-50');
+      const camera = view.oceano!.getCamera();
+      view.setAttribute('seed', '7');
+      view.setAttribute('seed', 'x');
+      view.setAttribute('t', '-4');
+      return { params: view.oceano!.getParams(), camera, notices: view.oceano!.notices(), looping: view.oceano!.activity().looping };
+    });
+    expect(result.params).toMatchObject({ swellAmplitude: 3.5, seed: 1 });
+    expect(result.camera).toEqual({ position: [1, 20, 30], target: [0, 0, -50] });
+    expect(result.looping).toBe(true);
+    expect(result.notices).toEqual([
+      '"seed=x" is not an integer; using the default 1.',
+      '"t=-4" is not a time in seconds between 0 and 1e9; the animation runs from 0 instead.',
+    ]);
+    await page.close();
+  });
+
   it('pauses a figure scrolled out of view and resumes it when it comes back', async () => {
     const { page, consoleErrors } = await recordedPage(harness, 400, 400);
     await page.goto(`${harness.baseUrl}fixtures/far-apart.html`, { waitUntil: 'load' });
