@@ -28,7 +28,8 @@ function boot(): void {
     showPanel: !state.embed,
   });
   const ready = startApp(app, container, tr);
-  watchActivity(app);
+  // In an iframe the implicit root is the top page's viewport: an embed scrolled away stops drawing.
+  watchActivity(app, container);
   window.oceano = createAutomationApi(app, ready);
 }
 
