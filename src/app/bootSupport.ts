@@ -2,9 +2,15 @@ import { message } from '../sim/message';
 import type { OceanApp } from './oceanApp';
 import type { Translator } from './i18n';
 
+/**
+ * Asks for a throwaway WebGL2 context and gives it straight back: browsers keep only about
+ * sixteen alive, and a page of figures must not spend them on probes.
+ */
 export function hasWebGL2(): boolean {
   try {
-    return document.createElement('canvas').getContext('webgl2') !== null;
+    const gl = document.createElement('canvas').getContext('webgl2');
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
+    return gl !== null;
   } catch {
     return false;
   }
