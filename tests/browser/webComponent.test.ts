@@ -62,6 +62,24 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     await page.close();
   });
 
+  it('holds ten frozen figures on one page: every context alive, no frame loop running', async () => {
+    const { page, consoleErrors } = await recordedPage(harness, 800, 600);
+    await page.goto(`${harness.baseUrl}fixtures/ten-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const views = await page.evaluate(() =>
+      (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).map((view) => ({
+        lost: view.querySelector('canvas')!.getContext('webgl2')!.isContextLost(),
+        looping: view.oceano!.activity().looping,
+        seed: view.oceano!.getParams().seed,
+      })),
+    );
+    expect(views).toHaveLength(10);
+    expect(views.map((v) => v.seed)).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9, 10]);
+    expect(views.every((v) => !v.lost && !v.looping)).toBe(true);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
   it('follows attribute changes, validated like the URL', async () => {
     const { page } = await recordedPage(harness, 400, 500);
     await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
