@@ -127,7 +127,8 @@ describe('resizing', () => {
 describe('long runs', () => {
   const full = process.env.SOAK_FULL === '1';
   const SOAK_FRAMES = Number(process.env.SOAK_FRAMES ?? 60);
-  const FULL_SOAK_MS = 10 * 60 * 1000;
+  /** The full soak's length; SOAK_MINUTES shortens it to try the full path quickly. */
+  const FULL_SOAK_MS = Number(process.env.SOAK_MINUTES ?? 10) * 60 * 1000;
   const STEP = 1 / 60;
 
   async function heapAfterGc(page: Page): Promise<number> {
@@ -153,7 +154,7 @@ describe('long runs', () => {
     );
 
   it(
-    full ? 'soak: 10 minutes of frames keep GPU resources and the JS heap flat' : `soak (short, ${SOAK_FRAMES} frames; SOAK_FULL=1 for 10 minutes): GPU resources and the JS heap stay flat`,
+    full ? `soak: ${FULL_SOAK_MS / 60000} minutes of frames keep GPU resources and the JS heap flat` : `soak (short, ${SOAK_FRAMES} frames; SOAK_FULL=1 for 10 minutes): GPU resources and the JS heap stay flat`,
     async () => {
       const { page, consoleErrors } = await openOcean(harness, 't=0', 96, 54);
       await page.evaluate(() => window.oceano.pause());
