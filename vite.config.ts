@@ -1,8 +1,48 @@
+import { build, type Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
+
+/**
+ * The page's Content-Security-Policy: scripts only from this origin (no inline script, no
+ * eval), every fetch, image and connection to this origin. Styles allow 'unsafe-inline'
+ * because lil-gui injects its stylesheet as a <style> element (with its icon font as a
+ * data: URL, hence font-src data:). Only the build gets it: the
+ * dev server's hot reload needs more.
+ */
+export const CONTENT_SECURITY_POLICY = [
+  "default-src 'self'",
+  "script-src 'self'",
+  "style-src 'self' 'unsafe-inline'",
+  "img-src 'self' data: blob:",
+  "font-src 'self' data:",
+  "connect-src 'self'",
+  "object-src 'none'",
+  "base-uri 'self'",
+  "form-action 'none'",
+].join('; ');
+
+function contentSecurityPolicy(): Plugin {
+  return {
+    name: 'oceano-content-security-policy',
+    apply: 'build',
+    transformIndexHtml: () => [{ tag: 'meta', attrs: { 'http-equiv': 'Content-Security-Policy', content: CONTENT_SECURITY_POLICY }, injectTo: 'head-prepend' }],
+  };
+}
+
+/** `vite build` also writes dist/oceano.js (the <oceano-view> web component), so one command builds everything the tests serve. */
+function libraryBuild(): Plugin {
+  return {
+    name: 'oceano-library-build',
+    apply: 'build',
+    async closeBundle() {
+      await build({ configFile: 'vite.lib.config.ts', logLevel: 'warn' });
+    },
+  };
+}
 
 export default defineConfig({
   // Relative base: dist/ works when copied under any sub-path of a course site.
   base: './',
+  plugins: [contentSecurityPolicy(), libraryBuild()],
   build: { target: 'es2022', chunkSizeWarningLimit: 800 },
   server: { host: '127.0.0.1', port: 5173 },
   preview: { host: '127.0.0.1', port: 4173 },

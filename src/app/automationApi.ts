@@ -1,8 +1,11 @@
-import type { OceanApp, CameraPose, OceanStats } from './oceanApp';
+import type { OceanApp, CameraPose, LoopActivity, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
 import type { SurfaceSample } from '../sim/oceanSurface';
 
-/** `window.oceano`: how tests, course pages and the console drive the ocean. */
+/**
+ * `window.oceano` on the page, `element.oceano` on an <oceano-view>: how tests, course
+ * pages and the console drive one ocean.
+ */
 export interface OceanoApi {
   ready: Promise<void>;
   setTime(seconds: number): void;
@@ -18,6 +21,10 @@ export interface OceanoApi {
   probeGpu(points: [number, number][], t?: number): Promise<SurfaceSample[]>;
   stats(): OceanStats;
   notices(): string[];
+  /** The link that reopens this view exactly (what the share button copies). */
+  shareUrl(): string;
+  /** Whether the frame loop runs (it stops off screen and in hidden tabs) and frames drawn so far. */
+  activity(): LoopActivity;
   debug: {
     fresnelTable(): Float32Array;
     heightmaps(): { size: number; data: Float32Array }[];
@@ -46,6 +53,8 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     probeGpu: async (points, t) => app.probeGpu(points, t),
     stats: () => app.stats(),
     notices: () => app.notices.messages(),
+    shareUrl: () => app.shareUrl(),
+    activity: () => app.activity(),
     debug: {
       fresnelTable: () => app.fresnelTable(),
       heightmaps: () => app.heightmaps(),

@@ -1,16 +1,18 @@
 import GUI, { type Controller } from 'lil-gui';
 import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../sim/params';
+import type { Translator, UiTextId } from './i18n';
 
-const FOLDERS: { title: string; keys: ParamKey[] }[] = [
-  { title: 'Swell', keys: ['swellAmplitude', 'swellFrequency'] },
-  { title: 'Ripples (Perlin)', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
-  { title: 'Light & water', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
-  { title: 'View', keys: ['wireframe', 'shading', 'normals', 'view', 'fresnelPlot'] },
+const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
+  { title: 'folderSwell', keys: ['swellAmplitude', 'swellFrequency'] },
+  { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
+  { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
+  { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'view', 'fresnelPlot'] },
 ];
 
 export interface ControlPanelHooks {
   onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
   onPlayingChange(playing: boolean): void;
+  onShare(): void;
 }
 
 /**
@@ -22,25 +24,28 @@ export class ControlPanel {
   private readonly model: OceanParams & { playing: boolean };
   private readonly controllers: Controller[] = [];
 
-  constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks) {
-    this.gui = new GUI({ container, title: 'Oceano' });
+  constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
+    this.gui = new GUI({ container, title: tr.ui('panelTitle') });
     this.model = { ...params, playing };
     for (const folder of FOLDERS) {
-      const group = this.gui.addFolder(folder.title);
+      const group = this.gui.addFolder(tr.ui(folder.title));
       for (const key of folder.keys) this.controllers.push(this.addControl(group, key, hooks));
     }
     this.controllers.push(
-      this.gui.add(this.model, 'playing').name('Play').onChange((value: boolean) => hooks.onPlayingChange(value)),
+      this.gui.add(this.model, 'playing').name(tr.ui('playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
+    // lil-gui draws a function as a <button>: focusable and keyboard operable.
+    this.gui.add({ share: () => hooks.onShare() }, 'share').name(tr.ui('share'));
   }
 
   private addControl(group: GUI, key: ParamKey, hooks: ControlPanelHooks): Controller {
     const def: ParamDef = paramDefs[key];
+    const label = this.tr.paramLabel(key);
     const emit = (value: OceanParams[ParamKey]) => hooks.onParam(key, value);
-    if (def.kind === 'color') return group.addColor(this.model, key).name(def.label).onChange(emit);
-    if (def.kind === 'boolean') return group.add(this.model, key).name(def.label).onChange(emit);
-    if (def.kind === 'choice') return group.add(this.model, key, [...def.options]).name(def.label).onChange(emit);
-    const name = def.unit ? `${def.label} (${def.unit})` : def.label;
+    if (def.kind === 'color') return group.addColor(this.model, key).name(label).onChange(emit);
+    if (def.kind === 'boolean') return group.add(this.model, key).name(label).onChange(emit);
+    if (def.kind === 'choice') return group.add(this.model, key, [...def.options]).name(label).onChange(emit);
+    const name = def.unit ? `${label} (${def.unit})` : label;
     const step = def.kind === 'integer' ? 1 : (def.step ?? (def.max - def.min) / 100);
     // A slider over the whole int32 range of the seed is useless: give it a number box.
     const wideRange = def.max - def.min > 1e6;

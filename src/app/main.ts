@@ -1,37 +1,35 @@
 import './style.css';
+import './widgets.css';
+import { message } from '../sim/message';
 import { OceanApp } from './oceanApp';
 import { createAutomationApi } from './automationApi';
+import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './bootSupport';
+import { preferredLanguage, Translator } from './i18n';
 import { parseUrlState } from './urlState';
 
-function hasWebGL2(): boolean {
-  try {
-    return document.createElement('canvas').getContext('webgl2') !== null;
-  } catch {
-    return false;
-  }
-}
-
-function showFatal(container: HTMLElement, message: string): void {
-  const box = document.createElement('div');
-  box.className = 'oceano-fatal';
-  box.setAttribute('role', 'alert');
-  box.textContent = message;
-  container.appendChild(box);
-}
-
+/** The page bootstrap: reads the URL and the browser's preferences and hands them to one OceanApp. */
 function boot(): void {
   const container = document.getElementById('oceano') as HTMLElement;
-  const canvas = container.querySelector('canvas.oceano-canvas') as HTMLCanvasElement;
+  const state = parseUrlState(window.location.search);
+  const language = state.language ?? preferredLanguage(navigator.languages);
+  const tr = new Translator(language);
+  document.documentElement.lang = language;
   if (!hasWebGL2()) {
-    canvas.remove();
-    showFatal(container, 'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.');
+    showFatal(container, tr.message(message('webgl2Missing')));
     return;
   }
-  const app = new OceanApp(container, canvas, parseUrlState(window.location.search));
-  const ready = app.start().catch((error: unknown) => {
-    showFatal(container, `Oceano could not start: ${error instanceof Error ? error.message : String(error)}`);
-    throw error;
+  if (state.embed) document.documentElement.classList.add('oceano-embedded');
+  const app = new OceanApp(container, {
+    state,
+    language,
+    reducedMotion: prefersReducedMotion(),
+    skyBase: state.sky ?? 'sky',
+    shareBase: `${window.location.origin}${window.location.pathname}`,
+    showPanel: !state.embed,
   });
+  const ready = startApp(app, container, tr);
+  // In an iframe the implicit root is the top page's viewport: an embed scrolled away stops drawing.
+  watchActivity(app, container);
   window.oceano = createAutomationApi(app, ready);
 }
 

@@ -2,7 +2,10 @@
 export class Notices {
   private readonly list: HTMLElement;
 
-  constructor(container: HTMLElement) {
+  constructor(
+    container: HTMLElement,
+    private readonly dismissLabel: string,
+  ) {
     this.list = document.createElement('div');
     this.list.className = 'oceano-notices';
     this.list.setAttribute('role', 'status');
@@ -10,7 +13,8 @@ export class Notices {
     container.appendChild(this.list);
   }
 
-  show(message: string, level: 'warning' | 'error' = 'warning'): void {
+  /** Shows a message; the returned element can be passed to `remove` when the condition ends. */
+  show(message: string, level: 'warning' | 'error' = 'warning'): HTMLElement {
     const item = document.createElement('div');
     item.className = `oceano-notice oceano-notice-${level}`;
     const text = document.createElement('span');
@@ -18,13 +22,22 @@ export class Notices {
     const close = document.createElement('button');
     close.type = 'button';
     close.textContent = '×';
-    close.setAttribute('aria-label', 'Dismiss');
+    close.setAttribute('aria-label', this.dismissLabel);
     close.addEventListener('click', () => item.remove());
     item.append(text, close);
     this.list.appendChild(item);
+    return item;
+  }
+
+  remove(item: HTMLElement): void {
+    item.remove();
   }
 
   messages(): string[] {
     return Array.from(this.list.querySelectorAll('.oceano-notice span'), (el) => el.textContent ?? '');
+  }
+
+  dispose(): void {
+    this.list.remove();
   }
 }

@@ -1,24 +1,25 @@
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { CubeTexture } from 'three';
+import { Vector3, type CubeTexture } from 'three';
 import { validateParams, type OceanParams } from '../sim/params';
+import { message, type Message } from '../sim/message';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
 import { OceanView } from '../render/oceanView';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
+import { isCameraPose, type CameraPose } from './cameraPose';
 import { ControlPanel } from './controlPanel';
+import { Translator, type Language } from './i18n';
 import { Notices } from './notices';
 import { FresnelPlot } from './fresnelPlot';
+import { PlayButton } from './playButton';
 import { SimulationClock } from './simulationClock';
-import type { UrlState } from './urlState';
+import { formatUrlState, type UrlState } from './urlState';
+
+export type { CameraPose } from './cameraPose';
 
 /** How often a frame is followed by a GPU sync to measure its full cost (frames). */
 const SYNC_EVERY = 8;
 const FRAME_SAMPLES = 30;
-
-export interface CameraPose {
-  position: [number, number, number];
-  target: [number, number, number];
-}
 
 export interface OceanStats {
   frameMs: number;
@@ -26,62 +27,135 @@ export interface OceanStats {
   triangles: number;
 }
 
+/** Why the frame loop is stopped although the app is alive. */
+export type SuspendReason = 'hidden' | 'offscreen';
+
 /**
- * The page's ocean: owns the clock, the parameters, the view and the controls, and runs
- * the frame loop. The automation API is a thin layer over its public methods.
+ * Everything the app is told by its bootstrap (the page's main.ts or the <oceano-view>
+ * element): the app itself reads no URL, attribute or media query.
+ */
+export interface OceanAppOptions {
+  /** Validated settings from the URL or the element's attributes. */
+  state: UrlState;
+  language: Language;
+  /** prefers-reduced-motion: start paused, with the play button showing. */
+  reducedMotion: boolean;
+  /** Directory holding the six sky images, as a URL or a path relative to the document. */
+  skyBase: string;
+  /** The link a shared view starts with (page address without its query). */
+  shareBase: string;
+  /** The lil-gui panel; off when embedded. */
+  showPanel: boolean;
+}
+
+export interface LoopActivity {
+  looping: boolean;
+  framesDrawn: number;
+}
+
+/**
+ * One live ocean in a container element: owns its canvas, the clock, the parameters, the
+ * view and the controls, and runs the frame loop. The automation API is a thin layer over
+ * its public methods. Several can live on one page.
  */
 export class OceanApp {
   readonly notices: Notices;
   readonly clock: SimulationClock;
+  readonly canvas: HTMLCanvasElement;
+  readonly tr: Translator;
   private params: OceanParams;
   private surface: OceanSurface;
   private view!: OceanView;
   private controls!: OrbitControls;
   private panel?: ControlPanel;
   private fresnelPlot?: FresnelPlot;
+  private readonly playButton: PlayButton;
+  private resizeObserver?: ResizeObserver;
   private frameTimes: number[] = [];
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
+  private pendingRender = 0;
+  private looping = false;
+  private started = false;
+  private disposed = false;
+  private contextLost = false;
+  private contextLostNotice: HTMLElement | null = null;
+  private readonly suspended = new Set<SuspendReason>();
 
   constructor(
     private readonly container: HTMLElement,
-    private readonly canvas: HTMLCanvasElement,
-    private readonly url: UrlState,
+    private readonly options: OceanAppOptions,
   ) {
-    this.notices = new Notices(container);
-    for (const message of url.notices) this.notices.show(message);
-    this.params = url.params;
-    this.clock = new SimulationClock(url.time ?? 0, url.time === null);
+    const { state } = options;
+    this.tr = new Translator(options.language);
+    this.canvas = document.createElement('canvas');
+    this.canvas.className = 'oceano-canvas';
+    this.canvas.setAttribute('role', 'img');
+    this.canvas.setAttribute('aria-label', this.tr.ui('canvasLabel'));
+    container.appendChild(this.canvas);
+    this.notices = new Notices(container, this.tr.ui('dismiss'));
+    for (const notice of state.notices) this.notify(notice);
+    this.params = { ...state.params };
+    const running = state.time === null && !options.reducedMotion;
+    this.clock = new SimulationClock(state.time ?? 0, running);
     this.surface = new OceanSurface(this.params);
+    this.playButton = new PlayButton(container, { play: this.tr.ui('play'), pause: this.tr.ui('pause') }, () =>
+      this.clock.playing ? this.pause() : this.play(),
+    );
+    this.playButton.sync(this.clock.playing);
+  }
+
+  /** Shows a message in the app's language. */
+  notify(m: Message, level: 'warning' | 'error' = 'warning'): HTMLElement {
+    return this.notices.show(this.tr.message(m), level);
   }
 
   /** Builds the scene and draws the first frame; resolves once it is on screen. */
   async start(): Promise<void> {
     const sky = await this.loadSky();
+    if (this.disposed) {
+      sky.dispose();
+      return;
+    }
     this.view = new OceanView(this.canvas, this.surface, sky, this.params);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
     this.controls.target.set(0, 0, -60);
     this.controls.maxPolarAngle = Math.PI * 0.495;
     this.controls.update();
-    this.panel = new ControlPanel(this.container, this.params, this.clock.playing, {
-      onParam: (key, value) => this.setParams({ [key]: value }),
-      onPlayingChange: (playing) => (playing ? this.play() : this.pause()),
-    });
+    this.controls.addEventListener('change', this.requestRender);
+    if (this.options.state.camera) this.setCamera(this.options.state.camera);
+    if (this.options.showPanel) {
+      this.panel = new ControlPanel(
+        this.container,
+        this.params,
+        this.clock.playing,
+        {
+          onParam: (key, value) => this.setParams({ [key]: value }),
+          onPlayingChange: (playing) => (playing ? this.play() : this.pause()),
+          onShare: () => void this.share(),
+        },
+        this.tr,
+      );
+    }
+    this.canvas.addEventListener('webglcontextlost', this.onContextLost);
+    this.canvas.addEventListener('webglcontextrestored', this.onContextRestored);
     this.fresnelPlot = new FresnelPlot(this.container, this.view.fresnelData);
     this.fresnelPlot.setVisible(this.params.fresnelPlot);
     this.resize();
-    new ResizeObserver(() => this.resize()).observe(this.canvas);
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(this.canvas);
+    this.started = true;
     this.renderFrame();
-    this.animationHandle = requestAnimationFrame(this.loop);
+    this.updateLoop();
   }
 
   private async loadSky(): Promise<CubeTexture> {
-    const base = this.url.sky ?? 'sky';
+    const base = this.options.skyBase;
     try {
       return await loadSkyCube(base);
-    } catch (error) {
-      this.notices.show(`${(error as Error).message} Showing a painted sky instead.`);
+    } catch {
+      this.notify(message('skyLoadFailed', { base: this.options.state.sky ?? base }));
       return paintedSkyCube(sunDirection(this.params.sunElevation, this.params.sunAzimuth));
     }
   }
@@ -94,9 +168,70 @@ export class OceanApp {
     this.animationHandle = requestAnimationFrame(this.loop);
   };
 
+  /**
+   * Runs the loop exactly when the app is started, playing, visible, on screen and has a GL
+   * context. A paused view draws only when something changes (requestRender), so a page of
+   * frozen figures costs nothing between interactions.
+   */
+  private updateLoop(): void {
+    const shouldRun = this.started && !this.disposed && !this.contextLost && this.suspended.size === 0 && this.clock.playing;
+    if (shouldRun === this.looping) return;
+    this.looping = shouldRun;
+    if (shouldRun) {
+      // Time off screen is not simulated: the sea resumes where it stopped.
+      this.lastFrameTime = null;
+      this.animationHandle = requestAnimationFrame(this.loop);
+    } else {
+      cancelAnimationFrame(this.animationHandle);
+    }
+  }
+
+  /** One frame on the next animation frame, for a paused view whose camera, size or parameters changed. */
+  private readonly requestRender = (): void => {
+    if (this.looping || this.pendingRender !== 0 || !this.started || this.disposed) return;
+    this.pendingRender = requestAnimationFrame(() => {
+      this.pendingRender = 0;
+      this.renderFrame();
+    });
+  };
+
+  /** Stops the frame loop while the tab is hidden or the view is scrolled away; a page of many views stays light. */
+  setSuspended(reason: SuspendReason, suspended: boolean): void {
+    if (suspended) this.suspended.add(reason);
+    else this.suspended.delete(reason);
+    this.updateLoop();
+  }
+
+  isStarted(): boolean {
+    return this.started && !this.disposed;
+  }
+
+  activity(): LoopActivity {
+    return { looping: this.looping, framesDrawn: this.frameCount };
+  }
+
+  private readonly onContextLost = (): void => {
+    this.contextLost = true;
+    this.updateLoop();
+    this.contextLostNotice ??= this.notify(message('contextLost'), 'error');
+  };
+
+  /** three.js re-creates its GL state on restore and uploads every geometry, texture and program again on the next render. */
+  private readonly onContextRestored = (): void => {
+    this.contextLost = false;
+    if (this.contextLostNotice) this.notices.remove(this.contextLostNotice);
+    this.contextLostNotice = null;
+    this.view.applyParams(this.params);
+    this.resize();
+    this.renderFrame();
+    this.updateLoop();
+  };
+
+  /** Resizing clears the canvas, so a paused view draws again. */
   private resize(): void {
     const rect = this.canvas.getBoundingClientRect();
     this.view.setSize(rect.width, rect.height, Math.min(window.devicePixelRatio, 2));
+    this.requestRender();
   }
 
   /**
@@ -104,6 +239,7 @@ export class OceanApp {
    * from outside the loop, a one-pixel read waits for the GPU so frameMs counts GPU work.
    */
   renderFrame(sync = this.frameCount % SYNC_EVERY === 0): void {
+    if (this.contextLost) return;
     const start = performance.now();
     this.view.render(this.clock.time);
     this.frameCount++;
@@ -125,36 +261,78 @@ export class OceanApp {
     this.view.applyParams(this.params);
     this.fresnelPlot?.setVisible(this.params.fresnelPlot);
     this.panel?.sync(this.params, this.clock.playing);
+    this.requestRender();
     return this.getParams();
   }
 
   setTime(seconds: number): void {
     if (typeof seconds !== 'number' || !Number.isFinite(seconds)) throw new TypeError(`setTime needs a finite number of seconds, got ${String(seconds)}.`);
     this.clock.setTime(seconds);
+    this.requestRender();
   }
 
   play(): void {
     this.clock.playing = true;
     this.panel?.sync(this.params, true);
+    this.playButton.sync(true);
+    this.updateLoop();
   }
 
   pause(): void {
     this.clock.playing = false;
     this.panel?.sync(this.params, false);
+    this.playButton.sync(false);
+    this.updateLoop();
   }
 
   setCamera(pose: CameraPose): void {
-    const finite = (v: unknown): v is [number, number, number] => Array.isArray(v) && v.length === 3 && v.every((c) => typeof c === 'number' && Number.isFinite(c));
-    if (!finite(pose?.position) || !finite(pose?.target)) {
-      throw new TypeError('setCamera needs { position: [x, y, z], target: [x, y, z] } with finite numbers.');
+    if (!isCameraPose(pose)) {
+      throw new TypeError('setCamera needs { position: [x, y, z], target: [x, y, z] }: finite numbers within ±1e6 m, the target apart from the position.');
     }
-    this.view.camera.position.fromArray(pose.position);
+    this.requestRender();
+    const camera = this.view.camera;
+    camera.position.fromArray(pose.position);
     this.controls.target.fromArray(pose.target);
     this.controls.update();
+    // The controls rebuild target and position through a length clamp and spherical angles,
+    // which moves them by an ulp or so; put back the exact ones (unless the controls clamped
+    // the angle) so that a shared link reproduces the view bit for bit.
+    if (camera.position.distanceTo(new Vector3().fromArray(pose.position)) < 1e-6) {
+      this.controls.target.fromArray(pose.target);
+      camera.position.fromArray(pose.position);
+      camera.lookAt(this.controls.target);
+    }
   }
 
   camera(): CameraPose {
     return { position: this.view.camera.position.toArray(), target: this.controls.target.toArray() as [number, number, number] };
+  }
+
+  /** A link that reopens this exact view: parameters, camera, language and the current time (frozen). */
+  shareUrl(): string {
+    const { state } = this.options;
+    const query = formatUrlState({
+      params: this.params,
+      time: this.clock.time,
+      camera: this.camera(),
+      language: this.options.language,
+      sky: state.sky,
+      embed: state.embed,
+    });
+    return `${this.options.shareBase}?${query}`;
+  }
+
+  /** Copies the share link; where the clipboard is refused, shows the link for the user to copy. */
+  async share(): Promise<string> {
+    const url = this.shareUrl();
+    try {
+      if (!navigator.clipboard) throw new Error('no clipboard');
+      await navigator.clipboard.writeText(url);
+      this.notify(message('shareCopied'));
+    } catch {
+      this.notify(message('shareFallback', { url }));
+    }
+    return url;
   }
 
   sampleSurface(x: number, z: number): SurfaceSample {
@@ -189,11 +367,26 @@ export class OceanApp {
     return { renderer: this.view.renderer, scene: this.view.scene, camera: this.view.camera };
   }
 
+  /** Frees every GPU resource and gives the WebGL context back to the browser (which allows only a few at once). */
   dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.updateLoop();
     cancelAnimationFrame(this.animationHandle);
-    this.controls.dispose();
+    cancelAnimationFrame(this.pendingRender);
+    this.resizeObserver?.disconnect();
+    this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
+    this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
     this.panel?.dispose();
+    this.playButton.dispose();
     this.fresnelPlot?.dispose();
-    this.view.dispose();
+    this.notices.dispose();
+    if (this.started) {
+      this.controls.removeEventListener('change', this.requestRender);
+      this.controls.dispose();
+      this.view.dispose();
+      this.view.renderer.forceContextLoss();
+    }
+    this.canvas.remove();
   }
 }

@@ -1,15 +1,24 @@
-import { defaultParams, isParamKey, parseParamText, type OceanParams } from '../sim/params';
+import { defaultParams, isParamKey, paramDefs, paramKeys, parseParamText, type OceanParams } from '../sim/params';
+import { message, type Message } from '../sim/message';
+import { formatCameraText, parseCameraText, type CameraPose } from './cameraPose';
+import { isLanguage, type Language } from './i18n';
+import { findPreset, presetNames } from './presets';
 
-/** URL keys that are not ocean parameters but are understood by the page. */
-const PAGE_KEYS = ['t', 'sky'] as const;
+/** Settings that are not ocean parameters but are understood by the page and the web component. */
+export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset'] as const;
 
+/** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
   params: OceanParams;
   /** Frozen time in seconds when `t` is given, otherwise null (time runs). */
   time: number | null;
   /** Base path of the six sky images when the page names its own. */
   sky: string | null;
-  notices: string[];
+  camera: CameraPose | null;
+  /** null: follow the browser. */
+  language: Language | null;
+  embed: boolean;
+  notices: Message[];
 }
 
 /**
@@ -21,27 +30,84 @@ export function isSafeAssetPath(path: string): boolean {
 }
 
 export function parseUrlState(search: string): UrlState {
-  const query = new URLSearchParams(search);
-  const params = defaultParams();
-  const notices: string[] = [];
-  let time: number | null = null;
-  let sky: string | null = null;
+  return parseSettings(new URLSearchParams(search));
+}
 
-  for (const [key, text] of query) {
+/**
+ * Reads settings from name/value pairs: a URL's query or an element's attributes. A preset
+ * is applied first, whatever its position, so that explicit values override it.
+ */
+export function parseSettings(entries: Iterable<[string, string]>): UrlState {
+  const pairs = Array.from(entries);
+  const params = defaultParams();
+  const notices: Message[] = [];
+  const state: UrlState = { params, time: null, sky: null, camera: null, language: null, embed: false, notices };
+
+  for (const [key, text] of pairs) {
+    if (key !== 'preset') continue;
+    const preset = findPreset(text);
+    if (preset) {
+      Object.assign(params, preset.params);
+      state.camera = { position: [...preset.camera.position], target: [...preset.camera.target] };
+    } else {
+      notices.push(message('presetUnknown', { name: text, known: presetNames.join(', ') }));
+    }
+  }
+
+  for (const [key, text] of pairs) {
     if (key === 't') {
       const value = text.trim() === '' ? NaN : Number(text);
-      if (Number.isFinite(value) && value >= 0 && value <= 1e9) time = value;
-      else notices.push(`"t=${text}" is not a time in seconds between 0 and 1e9; the animation runs from 0 instead.`);
+      if (Number.isFinite(value) && value >= 0 && value <= 1e9) state.time = value;
+      else notices.push(message('timeInvalid', { text }));
     } else if (key === 'sky') {
-      if (isSafeAssetPath(text)) sky = text;
-      else notices.push(`"sky=${text}" is not a path on this site; using the built-in sky.`);
+      if (isSafeAssetPath(text)) state.sky = text;
+      else notices.push(message('skyInvalid', { text }));
+    } else if (key === 'cam') {
+      const camera = parseCameraText(text);
+      if (camera) state.camera = camera;
+      else notices.push(message('cameraInvalid', { text }));
+    } else if (key === 'lang') {
+      if (isLanguage(text)) state.language = text;
+      else notices.push(message('languageInvalid', { text }));
+    } else if (key === 'embed') {
+      if (text === '1' || text === '' || text === 'true') state.embed = true;
+      else if (text !== '0' && text !== 'false') notices.push(message('embedInvalid', { text }));
     } else if (isParamKey(key)) {
       const { value, notice } = parseParamText(key, text);
       (params as Record<string, unknown>)[key] = value;
       if (notice) notices.push(notice);
-    } else if (!(PAGE_KEYS as readonly string[]).includes(key)) {
-      notices.push(`Unknown URL parameter "${key}" was ignored.`);
+    } else if (key !== 'preset') {
+      notices.push(message('unknownUrlParam', { key }));
     }
   }
-  return { params, time, sky, notices };
+  return state;
+}
+
+/** What a shared link has to carry to reproduce a view. */
+export interface ShareableState {
+  params: OceanParams;
+  time: number;
+  camera: CameraPose;
+  language: Language;
+  sky: string | null;
+  embed: boolean;
+}
+
+/**
+ * The query string of a link that reproduces the view: every parameter, the camera and the
+ * time, numbers written with String() so they parse back to the same doubles.
+ */
+export function formatUrlState(state: ShareableState): string {
+  const query = new URLSearchParams();
+  for (const key of paramKeys) {
+    const value = state.params[key];
+    const kind = paramDefs[key].kind;
+    query.set(key, kind === 'boolean' ? (value ? '1' : '0') : kind === 'color' ? String(value).replace(/^#/, '') : String(value));
+  }
+  query.set('t', String(state.time));
+  query.set('cam', formatCameraText(state.camera));
+  query.set('lang', state.language);
+  if (state.sky !== null) query.set('sky', state.sky);
+  if (state.embed) query.set('embed', '1');
+  return query.toString();
 }

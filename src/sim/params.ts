@@ -1,3 +1,5 @@
+import { message, type Message } from './message';
+
 /**
  * Every tunable of the ocean in one typed place: default, range and unit. The GUI, the
  * URL and the automation API all read these definitions, so a value that passes here is
@@ -137,30 +139,30 @@ function describe(value: unknown): string {
  * Reads a parameter from URL text. A malformed value falls back to the default and an
  * out-of-range number is clamped; either way a notice says what happened.
  */
-export function parseParamText(key: ParamKey, text: string): { value: OceanParams[ParamKey]; notice?: string } {
+export function parseParamText(key: ParamKey, text: string): { value: OceanParams[ParamKey]; notice?: Message } {
   const def: ParamDef = paramDefs[key];
   if (def.kind === 'boolean') {
     if (['1', 'true', 'on', 'yes'].includes(text)) return { value: true };
     if (['0', 'false', 'off', 'no'].includes(text)) return { value: false };
-    return { value: def.default, notice: `"${key}=${text}" is not true/false; using ${def.default}.` };
+    return { value: def.default, notice: message('paramNotBoolean', { key, text, fallback: def.default }) };
   }
   if (def.kind === 'choice') {
     if (def.options.includes(text)) return { value: text as OceanParams[ParamKey] };
-    return { value: def.default as OceanParams[ParamKey], notice: `"${key}=${text}" is not one of ${def.options.join(', ')}; using ${def.default}.` };
+    return { value: def.default as OceanParams[ParamKey], notice: message('paramNotChoice', { key, text, options: def.options.join(', '), fallback: def.default }) };
   }
   if (def.kind === 'color') {
     const hex = text.startsWith('#') ? text : `#${text}`;
     if (COLOR_PATTERN.test(hex)) return { value: hex.toLowerCase() };
-    return { value: def.default, notice: `"${key}=${text}" is not a colour like 0a2e45; using ${def.default}.` };
+    return { value: def.default, notice: message('paramNotColour', { key, text, fallback: def.default }) };
   }
   const number = text.trim() === '' ? NaN : Number(text);
   if (!Number.isFinite(number) || (def.kind === 'integer' && !Number.isInteger(number))) {
-    const expected = def.kind === 'integer' ? 'an integer' : 'a number';
-    return { value: def.default, notice: `"${key}=${text}" is not ${expected}; using the default ${def.default}.` };
+    const id = def.kind === 'integer' ? 'paramNotInteger' : 'paramNotNumber';
+    return { value: def.default, notice: message(id, { key, text, fallback: def.default }) };
   }
   if (number < def.min || number > def.max) {
     const clamped = Math.min(def.max, Math.max(def.min, number));
-    return { value: clamped, notice: `"${key}=${text}" is outside [${def.min}, ${def.max}]${def.unit ? ' ' + def.unit : ''}; clamped to ${clamped}.` };
+    return { value: clamped, notice: message('paramClamped', { key, text, min: def.min, max: def.max, unit: def.unit, clamped }) };
   }
   return { value: number };
 }

@@ -62,16 +62,23 @@ export async function openOcean(harness: Harness, query: string, width = 640, he
   return { page, consoleErrors };
 }
 
-/**
- * A frame drawn now, then the WebGL canvas's own pixels as PNG bytes (read from the
- * canvas, so overlays such as the GUI and notices are never in the picture).
- */
+/** What is drawn over a canvas (control panel, notices, play button): hidden while a canvas is screenshot. */
+const OVERLAYS = '.lil-gui, .oceano-notices, .oceano-play, .oceano-fresnel-plot';
+
+/** Screenshots a canvas element with the overlays above it hidden, so only the ocean is in the picture. */
+export async function screenshotCanvas(page: Page, selector = 'canvas'): Promise<Buffer> {
+  const canvas = await page.$(selector);
+  if (!canvas) throw new Error(`No canvas ${selector} on the page.`);
+  await page.evaluate((s) => document.querySelectorAll<HTMLElement>(s).forEach((el) => (el.style.visibility = 'hidden')), OVERLAYS);
+  try {
+    return Buffer.from(await canvas.screenshot({ type: 'png' }));
+  } finally {
+    await page.evaluate((s) => document.querySelectorAll<HTMLElement>(s).forEach((el) => (el.style.visibility = '')), OVERLAYS);
+  }
+}
+
+/** A frame drawn now, then the canvas as PNG bytes (GUI and notices are not in it). */
 export async function canvasPng(page: Page): Promise<Buffer> {
-  const dataUrl = await page.evaluate(() => {
-    window.oceano.renderFrame();
-    const canvas = document.querySelector('canvas.oceano-canvas') as HTMLCanvasElement | null;
-    if (!canvas) throw new Error('No ocean canvas on the page.');
-    return canvas.toDataURL('image/png');
-  });
-  return Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64');
+  await page.evaluate(() => window.oceano.renderFrame());
+  return screenshotCanvas(page);
 }

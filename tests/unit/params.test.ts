@@ -1,6 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { defaultParams, paramDefs, paramKeys, ParamError, parseParamText, validateParam, validateParams } from '../../src/sim/params';
 import { isSafeAssetPath, parseUrlState } from '../../src/app/urlState';
+import { Translator } from '../../src/app/i18n';
+import type { Message } from '../../src/sim/message';
+
+const english = new Translator('en');
+const text = (notice: Message | undefined) => (notice ? english.message(notice) : '');
 
 describe('parameter definitions', () => {
   it('give every parameter a default that passes its own validation', () => {
@@ -54,10 +59,14 @@ describe('validateParams', () => {
 
 describe('URL text', () => {
   it('clamps out-of-range numbers with a notice', () => {
-    expect(parseParamText('swellAmplitude', '1e9')).toMatchObject({ value: paramDefs.swellAmplitude.max, notice: expect.stringContaining('clamped') });
+    const parsed = parseParamText('swellAmplitude', '1e9');
+    expect(parsed).toMatchObject({ value: paramDefs.swellAmplitude.max, notice: { id: 'paramClamped' } });
+    expect(text(parsed.notice)).toBe('"swellAmplitude=1e9" is outside [0, 4] m; clamped to 4.');
   });
   it('falls back to the default for malformed text', () => {
-    expect(parseParamText('seed', '-1.5')).toMatchObject({ value: paramDefs.seed.default, notice: expect.stringContaining('not an integer') });
+    const seed = parseParamText('seed', '-1.5');
+    expect(seed.value).toBe(paramDefs.seed.default);
+    expect(text(seed.notice)).toContain('not an integer');
     expect(parseParamText('swellFrequency', 'abc').value).toBe(paramDefs.swellFrequency.default);
     expect(parseParamText('fresnel', 'maybe').value).toBe(true);
   });
@@ -80,8 +89,9 @@ describe('parseUrlState', () => {
     expect(state.params.seed).toBe(paramDefs.seed.default);
     expect(state.params.swellAmplitude).toBe(paramDefs.swellAmplitude.max);
     expect(state.notices).toHaveLength(4);
-    expect(state.notices.join('\n')).toMatch(/t=abc/);
-    expect(state.notices.join('\n')).toMatch(/bogus/);
+    const shown = state.notices.map(text).join('\n');
+    expect(shown).toMatch(/t=abc/);
+    expect(shown).toMatch(/bogus/);
   });
   it('accepts only same-origin sky paths', () => {
     expect(isSafeAssetPath('course/sky')).toBe(true);
@@ -99,6 +109,6 @@ describe('choice parameters', () => {
     expect(validateParams({ shading: 'normals', view: 'heightmap', normals: 'flat' })).toEqual({ shading: 'normals', view: 'heightmap', normals: 'flat' });
     expect(() => validateParams({ shading: 'toon' })).toThrow(/"shading" must be one of water, normals/);
     expect(parseParamText('view', 'heightmap')).toEqual({ value: 'heightmap' });
-    expect(parseParamText('view', 'x-ray')).toMatchObject({ value: 'ocean', notice: expect.stringContaining('x-ray') });
+    expect(parseParamText('view', 'x-ray')).toMatchObject({ value: 'ocean', notice: { id: 'paramNotChoice', values: { text: 'x-ray' } } });
   });
 });

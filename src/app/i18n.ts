@@ -1,0 +1,148 @@
+import { paramDefs, type ParamKey } from '../sim/params';
+import type { Message, MessageId, MessageValues } from '../sim/message';
+
+export const LANGUAGES = ['en', 'es'] as const;
+export type Language = (typeof LANGUAGES)[number];
+
+export function isLanguage(text: string): text is Language {
+  return (LANGUAGES as readonly string[]).includes(text);
+}
+
+/** The first of the browser's preferred languages that we speak, else English. */
+export function preferredLanguage(browserLanguages: readonly string[]): Language {
+  for (const tag of browserLanguages) {
+    const primary = tag.toLowerCase().split('-')[0];
+    if (isLanguage(primary)) return primary;
+  }
+  return 'en';
+}
+
+type Render = (v: MessageValues) => string;
+const unit = (v: MessageValues) => (v.unit ? ` ${v.unit}` : '');
+
+const MESSAGES: Record<Language, Record<MessageId, Render>> = {
+  en: {
+    paramNotBoolean: (v) => `"${v.key}=${v.text}" is not true/false; using ${v.fallback}.`,
+    paramNotColour: (v) => `"${v.key}=${v.text}" is not a colour like 0a2e45; using ${v.fallback}.`,
+    paramNotChoice: (v) => `"${v.key}=${v.text}" is not one of ${v.options}; using ${v.fallback}.`,
+    paramNotInteger: (v) => `"${v.key}=${v.text}" is not an integer; using the default ${v.fallback}.`,
+    paramNotNumber: (v) => `"${v.key}=${v.text}" is not a number; using the default ${v.fallback}.`,
+    paramClamped: (v) => `"${v.key}=${v.text}" is outside [${v.min}, ${v.max}]${unit(v)}; clamped to ${v.clamped}.`,
+    timeInvalid: (v) => `"t=${v.text}" is not a time in seconds between 0 and 1e9; the animation runs from 0 instead.`,
+    skyInvalid: (v) => `"sky=${v.text}" is not a path on this site; using the built-in sky.`,
+    cameraInvalid: (v) => `"cam=${v.text}" is not six finite numbers x,y,z,tx,ty,tz (target apart from the position, each within ±1e6 m); using the default camera.`,
+    languageInvalid: (v) => `"lang=${v.text}" is not a language we speak (en, es); using the browser's language.`,
+    embedInvalid: (v) => `"embed=${v.text}" is not 1 or 0; showing the full page.`,
+    presetUnknown: (v) => `There is no preset "${v.name}"; showing the default view. Presets: ${v.known}.`,
+    unknownUrlParam: (v) => `Unknown URL parameter "${v.key}" was ignored.`,
+    skyLoadFailed: (v) => `The sky images under "${v.base}" could not be loaded. Showing a painted sky instead.`,
+    contextLost: () => 'The graphics context was lost (the GPU was reset or is busy). The ocean will come back by itself as soon as the browser restores it.',
+    shareCopied: () => 'Link to this view copied to the clipboard.',
+    shareFallback: (v) => `Copy this link to share the view: ${v.url}`,
+    webgl2Missing: () => 'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.',
+    startFailed: (v) => `Oceano could not start: ${v.error}`,
+  },
+  es: {
+    paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
+    paramNotColour: (v) => `"${v.key}=${v.text}" no es un color como 0a2e45; se usa ${v.fallback}.`,
+    paramNotChoice: (v) => `"${v.key}=${v.text}" no es ninguna de estas opciones: ${v.options}; se usa ${v.fallback}.`,
+    paramNotInteger: (v) => `"${v.key}=${v.text}" no es un número entero; se usa el valor por defecto ${v.fallback}.`,
+    paramNotNumber: (v) => `"${v.key}=${v.text}" no es un número; se usa el valor por defecto ${v.fallback}.`,
+    paramClamped: (v) => `"${v.key}=${v.text}" está fuera de [${v.min}, ${v.max}]${unit(v)}; se limita a ${v.clamped}.`,
+    timeInvalid: (v) => `"t=${v.text}" no es un tiempo en segundos entre 0 y 1e9; la animación corre desde 0.`,
+    skyInvalid: (v) => `"sky=${v.text}" no es una ruta de este sitio; se usa el cielo incluido.`,
+    cameraInvalid: (v) => `"cam=${v.text}" no son seis números finitos x,y,z,tx,ty,tz (objetivo distinto de la posición, cada uno dentro de ±1e6 m); se usa la cámara por defecto.`,
+    languageInvalid: (v) => `"lang=${v.text}" no es un idioma disponible (en, es); se usa el idioma del navegador.`,
+    embedInvalid: (v) => `"embed=${v.text}" no es 1 ni 0; se muestra la página completa.`,
+    presetUnknown: (v) => `No existe la vista predefinida "${v.name}"; se muestra la vista por defecto. Disponibles: ${v.known}.`,
+    unknownUrlParam: (v) => `Se ignoró el parámetro de URL desconocido "${v.key}".`,
+    skyLoadFailed: (v) => `No se pudieron cargar las imágenes del cielo en "${v.base}". Se muestra un cielo pintado en su lugar.`,
+    contextLost: () => 'Se perdió el contexto gráfico (la GPU se reinició o está ocupada). El océano volverá solo en cuanto el navegador lo restablezca.',
+    shareCopied: () => 'Enlace a esta vista copiado al portapapeles.',
+    shareFallback: (v) => `Copia este enlace para compartir la vista: ${v.url}`,
+    webgl2Missing: () => 'Oceano necesita WebGL2, que este navegador o dispositivo no ofrece. Prueba un Chrome, Firefox o Safari reciente, o activa la aceleración por hardware.',
+    startFailed: (v) => `Oceano no pudo arrancar: ${v.error}`,
+  },
+};
+
+/** Words of the interface that are not parameters or notices. */
+export type UiTextId =
+  | 'canvasLabel'
+  | 'panelTitle'
+  | 'folderSwell'
+  | 'folderRipples'
+  | 'folderLight'
+  | 'folderView'
+  | 'play'
+  | 'pause'
+  | 'playing'
+  | 'share'
+  | 'dismiss';
+
+const UI: Record<Language, Record<UiTextId, string>> = {
+  en: {
+    canvasLabel: 'Animated 3D ocean under a sky',
+    panelTitle: 'Oceano',
+    folderSwell: 'Swell',
+    folderRipples: 'Ripples (Perlin)',
+    folderLight: 'Light & water',
+    folderView: 'View',
+    play: 'Play',
+    pause: 'Pause',
+    playing: 'Play',
+    share: 'Share link',
+    dismiss: 'Dismiss',
+  },
+  es: {
+    canvasLabel: 'Océano 3D animado bajo un cielo',
+    panelTitle: 'Oceano',
+    folderSwell: 'Oleaje',
+    folderRipples: 'Ondas (Perlin)',
+    folderLight: 'Luz y agua',
+    folderView: 'Vista',
+    play: 'Reproducir',
+    pause: 'Pausar',
+    playing: 'Reproducir',
+    share: 'Compartir enlace',
+    dismiss: 'Cerrar',
+  },
+};
+
+/**
+ * Spanish labels of the parameters; English ones live next to each definition in
+ * params.ts. A unit test checks that every parameter has one.
+ */
+export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
+  seed: 'Semilla del ruido',
+  swellAmplitude: 'Amplitud del oleaje',
+  swellFrequency: 'Frecuencia del oleaje',
+  rippleStrength: 'Intensidad de las ondas',
+  rippleBlendSpeed: 'Velocidad de mezcla de las ondas',
+  sunElevation: 'Elevación del sol',
+  sunAzimuth: 'Acimut del sol',
+  waterColor: 'Color del agua profunda',
+  fresnel: 'Fresnel',
+  wireframe: 'Malla de alambre',
+  shading: 'Sombreado',
+  normals: 'Normales',
+  view: 'Vista',
+  fresnelPlot: 'Gráfico de Fresnel',
+};
+
+/** Everything the page says, in one language. */
+export class Translator {
+  constructor(readonly language: Language) {}
+
+  message(m: Message): string {
+    return MESSAGES[this.language][m.id](m.values);
+  }
+
+  ui(id: UiTextId): string {
+    return UI[this.language][id];
+  }
+
+  paramLabel(key: ParamKey): string {
+    const english: string = paramDefs[key].label;
+    return this.language === 'es' ? (SPANISH_PARAM_LABELS[key] ?? english) : english;
+  }
+}

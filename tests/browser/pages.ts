@@ -1,0 +1,68 @@
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import type { Page } from 'puppeteer';
+import { screenshotCanvas, type Harness } from './harness';
+
+const FIXTURE_DIR = join(import.meta.dirname, 'fixtures');
+
+export interface RecordedPage {
+  page: Page;
+  consoleErrors: string[];
+  /** Every URL the page asked for, data: URLs included. */
+  requests: string[];
+  /** Content-Security-Policy violations reported by the page, as "directive blockedURI". */
+  violations: string[];
+}
+
+/**
+ * A new page that records its requests, errors and CSP violations. `fixtures/NAME` paths
+ * are answered from tests/browser/fixtures (as if they were on the preview server, so the
+ * same origin as dist/), `block` paths fail like a missing file; the rest goes to the server.
+ */
+export async function recordedPage(harness: Harness, width: number, height: number, block: string[] = []): Promise<RecordedPage> {
+  const page = await harness.browser.newPage();
+  const consoleErrors: string[] = [];
+  const requests: string[] = [];
+  const violations: string[] = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error') consoleErrors.push(message.text());
+  });
+  page.on('pageerror', (error) => consoleErrors.push(String(error)));
+  await page.exposeFunction('__reportViolation', (text: string) => violations.push(text));
+  await page.evaluateOnNewDocument(() => {
+    document.addEventListener('securitypolicyviolation', (event) => {
+      (window as unknown as { __reportViolation(t: string): void }).__reportViolation(`${event.effectiveDirective} ${event.blockedURI}`);
+    });
+  });
+  await page.setRequestInterception(true);
+  page.on('request', (request) => {
+    const url = request.url();
+    requests.push(url);
+    const path = url.startsWith(harness.baseUrl) ? url.slice(harness.baseUrl.length).split('?')[0] : null;
+    if (path?.startsWith('fixtures/')) {
+      const contentType = path.endsWith('.css') ? 'text/css' : 'text/html';
+      void request.respond({ status: 200, contentType, body: readFileSync(join(FIXTURE_DIR, path.slice('fixtures/'.length))) });
+    } else if (path !== null && block.includes(path)) {
+      void request.respond({ status: 404, contentType: 'text/plain', body: 'missing on purpose' });
+    } else {
+      void request.continue();
+    }
+  });
+  await page.setViewport({ width, height, deviceScaleFactor: 1 });
+  return { page, consoleErrors, requests, violations };
+}
+
+/** Resolves once every <oceano-view> on the page has drawn its first frame. */
+export async function viewsReady(page: Page): Promise<void> {
+  await page.waitForFunction(() => customElements.get('oceano-view') !== undefined);
+  await page.evaluate(async () => {
+    const views = Array.from(document.querySelectorAll('oceano-view')) as (HTMLElement & { oceano: { ready: Promise<void> } })[];
+    await Promise.all(views.map((view) => view.oceano.ready));
+  });
+}
+
+/** One element's canvas as PNG, drawn now. */
+export async function elementCanvasPng(page: Page, selector: string): Promise<Buffer> {
+  await page.evaluate((s) => (document.querySelector(s) as HTMLElement & { oceano: { renderFrame(): void } }).oceano.renderFrame(), selector);
+  return screenshotCanvas(page, `${selector} canvas`);
+}

@@ -1,0 +1,258 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { PNG } from 'pngjs';
+import type { Page } from 'puppeteer';
+import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { diffPngs } from './imageCompare';
+import { recordedPage } from './pages';
+
+let harness: Harness;
+beforeAll(async () => {
+  harness = await startHarness();
+});
+afterAll(async () => {
+  await harness?.close();
+});
+
+/** Luminance statistics of the rows from `fromRow` (a share of the height) down: the sea. */
+function seaStatistics(png: Buffer, fromRow: number): { mean: number; std: number; detail: number } {
+  const image = PNG.sync.read(png);
+  const { width, height, data } = image;
+  const lum = (x: number, y: number) => {
+    const i = (y * width + x) * 4;
+    return 0.2126 * data[i] + 0.7152 * data[i + 1] + 0.0722 * data[i + 2];
+  };
+  let sum = 0;
+  let sumSq = 0;
+  let detail = 0;
+  let n = 0;
+  for (let y = Math.ceil(height * fromRow); y < height - 1; y++) {
+    for (let x = 1; x < width - 1; x++) {
+      const l = lum(x, y);
+      sum += l;
+      sumSq += l * l;
+      // High-frequency energy: how far a pixel stands from the mean of its four neighbours.
+      detail += Math.abs(l - (lum(x - 1, y) + lum(x + 1, y) + lum(x, y - 1) + lum(x, y + 1)) / 4);
+      n++;
+    }
+  }
+  const mean = sum / n;
+  return { mean, std: Math.sqrt(sumSq / n - mean * mean), detail: detail / n };
+}
+
+const relative = (a: number, b: number) => Math.abs(a - b) / Math.max(Math.abs(a), Math.abs(b));
+
+describe('WebGL context loss', () => {
+  it('shows a notice while lost, then rebuilds and draws the same picture with the same parameters', async () => {
+    const { page, consoleErrors } = await openOcean(harness, 't=10&seed=4&swellAmplitude=2', 320, 180);
+    const before = await canvasPng(page);
+    const paramsBefore = await page.evaluate(() => window.oceano.getParams());
+    await page.evaluate(() => {
+      const gl = window.oceano.three.renderer.getContext();
+      const extension = gl.getExtension('WEBGL_lose_context')!;
+      (window as unknown as { loseContext: WEBGL_lose_context }).loseContext = extension;
+      extension.loseContext();
+    });
+    await page.waitForFunction(() => window.oceano.notices().some((n) => n.includes('graphics context was lost')));
+    expect(await page.evaluate(() => window.oceano.activity().looping)).toBe(false);
+    // Drawing while lost is a no-op, not an exception.
+    await page.evaluate(() => window.oceano.renderFrame());
+
+    const framesBefore = await page.evaluate(() => window.oceano.activity().framesDrawn);
+    await page.evaluate(() => (window as unknown as { loseContext: WEBGL_lose_context }).loseContext.restoreContext());
+    await page.waitForFunction(() => window.oceano.notices().length === 0);
+    await page.waitForFunction((n) => window.oceano.activity().framesDrawn > n, {}, framesBefore);
+    expect(await page.evaluate(() => window.oceano.getParams())).toEqual(paramsBefore);
+    expect(diffPngs(before, await canvasPng(page), 0).differentPixels).toBe(0);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('keeps animating after a restore when it was running', async () => {
+    const { page } = await openOcean(harness, 'seed=2', 160, 90);
+    await page.evaluate(() => {
+      const extension = window.oceano.three.renderer.getContext().getExtension('WEBGL_lose_context')!;
+      extension.loseContext();
+      setTimeout(() => extension.restoreContext(), 300);
+    });
+    await page.waitForFunction(() => window.oceano.notices().length === 1);
+    await page.waitForFunction(() => window.oceano.notices().length === 0 && window.oceano.activity().looping);
+    const h = await page.evaluate(() => window.oceano.sampleSurface(1, 1).height);
+    await page.waitForFunction((h0) => window.oceano.sampleSurface(1, 1).height !== h0, {}, h);
+    await page.close();
+  });
+});
+
+describe('resizing', () => {
+  it('survives repeated resizes, including the container at 0×0, and ends at the right size', async () => {
+    const { page, consoleErrors } = await openOcean(harness, 't=5', 320, 180);
+    for (const [w, h] of [
+      [800, 200],
+      [1, 1],
+      [200, 700],
+      [33, 17],
+      [640, 360],
+    ]) {
+      await page.setViewport({ width: w, height: h, deviceScaleFactor: 1 });
+      await page.evaluate(() => window.oceano.renderFrame());
+    }
+    for (let i = 0; i < 4; i++) {
+      await page.evaluate((zero) => {
+        const container = document.getElementById('oceano')!;
+        container.style.width = zero ? '0px' : '';
+        container.style.height = zero ? '0px' : '';
+      }, i % 2 === 0);
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      await page.evaluate(() => window.oceano.renderFrame());
+    }
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    const size = await page.evaluate(() => {
+      const canvas = document.querySelector('canvas')!;
+      const camera = window.oceano.three.camera;
+      return { buffer: [canvas.width, canvas.height], aspect: camera.aspect };
+    });
+    expect(size.buffer).toEqual([640, 360]);
+    expect(size.aspect).toBeCloseTo(640 / 360, 12);
+    expect(consoleErrors).toEqual([]);
+    // The picture after all that equals a fresh load at the final size.
+    const after = await canvasPng(page);
+    await page.close();
+    const fresh = await openOcean(harness, 't=5', 640, 360);
+    expect(diffPngs(after, await canvasPng(fresh.page), 0).differentPixels).toBe(0);
+    await fresh.page.close();
+  });
+});
+
+describe('long runs', () => {
+  const full = process.env.SOAK_FULL === '1';
+  const SOAK_FRAMES = Number(process.env.SOAK_FRAMES ?? 60);
+  /** The full soak's length; SOAK_MINUTES shortens it to try the full path quickly. */
+  const FULL_SOAK_MS = Number(process.env.SOAK_MINUTES ?? 10) * 60 * 1000;
+  const STEP = 1 / 60;
+
+  async function heapAfterGc(page: Page): Promise<number> {
+    const session = await page.createCDPSession();
+    await session.send('HeapProfiler.collectGarbage');
+    await session.detach();
+    return (await page.metrics()).JSHeapUsedSize ?? NaN;
+  }
+
+  /** Frames at a fixed step from frame `first`, with a new seed (new heightmap textures) every 20 frames. */
+  const runFrames = (page: Page, first: number, count: number) =>
+    page.evaluate(
+      (from, n, step) => {
+        for (let i = from; i < from + n; i++) {
+          if (i % 20 === 0) window.oceano.setParams({ seed: 1 + ((i / 20) % 7) });
+          window.oceano.setTime(i * step);
+          window.oceano.renderFrame();
+        }
+      },
+      first,
+      count,
+      STEP,
+    );
+
+  it(
+    full ? `soak: ${FULL_SOAK_MS / 60000} minutes of frames keep GPU resources and the JS heap flat` : `soak (short, ${SOAK_FRAMES} frames; SOAK_FULL=1 for 10 minutes): GPU resources and the JS heap stay flat`,
+    async () => {
+      const { page, consoleErrors } = await openOcean(harness, 't=0', 96, 54);
+      await page.evaluate(() => window.oceano.pause());
+      await runFrames(page, 0, 20);
+      const memory = () => page.evaluate(() => ({ ...window.oceano.three.renderer.info.memory }));
+      const gpuBefore = await memory();
+      const heapBefore = await heapAfterGc(page);
+      let frames = 20;
+      const start = Date.now();
+      if (full) {
+        while (Date.now() - start < FULL_SOAK_MS) {
+          await runFrames(page, frames, 50);
+          frames += 50;
+        }
+      } else {
+        await runFrames(page, frames, SOAK_FRAMES);
+        frames += SOAK_FRAMES;
+      }
+      const gpuAfter = await memory();
+      const heapAfter = await heapAfterGc(page);
+      console.log(
+        `[oceano] soak: ${frames - 20} frames in ${((Date.now() - start) / 1000).toFixed(1)} s, t = ${(frames * STEP).toFixed(1)} s; ` +
+          `geometries ${gpuBefore.geometries}→${gpuAfter.geometries}, textures ${gpuBefore.textures}→${gpuAfter.textures}, ` +
+          `JS heap ${(heapBefore / 1e6).toFixed(2)}→${(heapAfter / 1e6).toFixed(2)} MB`,
+      );
+      expect(gpuAfter).toEqual(gpuBefore);
+      expect(Math.abs(heapAfter - heapBefore)).toBeLessThan(2e6);
+      expect(consoleErrors).toEqual([]);
+      await page.close();
+    },
+    full ? FULL_SOAK_MS + 120_000 : 120_000,
+  );
+
+  it('draws the sea at t = 1e6 s as detailed as at t = 10 s (phases kept in range)', async () => {
+    const { page } = await openOcean(harness, 'cam=0,30,60,0,0,-100&t=10', 480, 270);
+    // Single frames vary with the ripple layers' blend weight: average instants spread evenly
+    // over one blend period, so both times see the same mix of the two heightmaps.
+    const blendPeriod = (2 * Math.PI) / (await page.evaluate(() => window.oceano.getParams().rippleBlendSpeed));
+    const averaged = async (t0: number, samples = 8) => {
+      const all: ReturnType<typeof seaStatistics>[] = [];
+      for (let i = 0; i < samples; i++) {
+        await page.evaluate((t) => window.oceano.setTime(t), t0 + (i * blendPeriod) / samples);
+        all.push(seaStatistics(await canvasPng(page), 0.45));
+      }
+      const mean = (f: (s: ReturnType<typeof seaStatistics>) => number) => all.reduce((sum, s) => sum + f(s), 0) / all.length;
+      return { mean: mean((s) => s.mean), std: mean((s) => s.std), detail: mean((s) => s.detail) };
+    };
+    const early = await averaged(10);
+    const late = await averaged(1e6);
+    await page.evaluate(() => window.oceano.setParams({ rippleStrength: 0 }));
+    const smooth = await averaged(10, 2);
+    console.log(`[oceano] sea statistics t≈10: ${JSON.stringify(early)}, t≈1e6: ${JSON.stringify(late)}, no ripples: ${JSON.stringify(smooth)}`);
+    expect(relative(early.mean, late.mean)).toBeLessThan(0.03);
+    expect(relative(early.std, late.std)).toBeLessThan(0.05);
+    expect(relative(early.detail, late.detail)).toBeLessThan(0.05);
+    // The measure tells a degraded sea apart: without ripples the fine detail drops well past the tolerance.
+    expect(relative(early.detail, smooth.detail)).toBeGreaterThan(0.2);
+    await page.close();
+  });
+});
+
+describe('missing assets', () => {
+  it('a missing sky face gives a notice and a painted sky, and the sea is still drawn', async () => {
+    const { page, consoleErrors } = await recordedPage(harness, 320, 180, ['sky/nz.png']);
+    await page.goto(`${harness.baseUrl}?t=10`, { waitUntil: 'load' });
+    await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
+    await page.evaluate(() => window.oceano.ready);
+    expect(await page.evaluate(() => window.oceano.notices())).toEqual(['The sky images under "sky" could not be loaded. Showing a painted sky instead.']);
+    const png = await canvasPng(page);
+    const sky = seaStatistics(png, 0);
+    const sea = seaStatistics(png, 0.7);
+    expect(sky.std).toBeGreaterThan(5);
+    expect(sea.std).toBeGreaterThan(2);
+    expect(sea.detail).toBeGreaterThan(0.1);
+    expect(consoleErrors.filter((e) => !e.includes('404'))).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('security', () => {
+  it('the built page carries a strict CSP, has no inline script, and requests nothing from another origin', async () => {
+    const html = readFileSync(join(import.meta.dirname, '..', '..', 'dist', 'index.html'), 'utf8');
+    const csp = /<meta http-equiv="Content-Security-Policy" content="([^"]*)"/.exec(html)?.[1].replaceAll('&#39;', "'") ?? '';
+    expect(csp).toContain("script-src 'self'");
+    expect(csp).not.toMatch(/unsafe-eval|script-src[^;]*unsafe-inline/);
+    for (const script of html.match(/<script\b[^>]*>/g) ?? []) expect(script).toMatch(/\bsrc=/);
+
+    const { page, consoleErrors, requests, violations } = await recordedPage(harness, 640, 360);
+    await page.goto(`${harness.baseUrl}?t=1&seed=2`, { waitUntil: 'load' });
+    await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
+    await page.evaluate(() => window.oceano.ready);
+    await page.evaluate(() => window.oceano.renderFrame());
+    const origin = new URL(harness.baseUrl).origin;
+    const network = requests.filter((url) => !url.startsWith('data:'));
+    expect(network.length).toBeGreaterThan(6);
+    expect(network.filter((url) => new URL(url).origin !== origin)).toEqual([]);
+    expect(violations).toEqual([]);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+});

@@ -1,0 +1,184 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { diffPngs } from './imageCompare';
+import { elementCanvasPng, recordedPage, viewsReady } from './pages';
+
+let harness: Harness;
+beforeAll(async () => {
+  harness = await startHarness();
+});
+afterAll(async () => {
+  await harness?.close();
+});
+
+type ViewElement = HTMLElement & { oceano: (typeof window)['oceano'] | null };
+
+describe('<oceano-view> (dist/oceano.js)', () => {
+  it('puts two independent figures on one page under a strict CSP, each equal to the page app with the same settings', async () => {
+    const { page, consoleErrors, requests, violations } = await recordedPage(harness, 400, 500);
+    await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+
+    const facts = await page.evaluate(() => {
+      const [a, b] = Array.from(document.querySelectorAll('oceano-view')) as ViewElement[];
+      return {
+        separateApis: a.oceano !== b.oceano,
+        canvases: document.querySelectorAll('oceano-view canvas').length,
+        contexts: Array.from(document.querySelectorAll('canvas'), (c) => c.getContext('webgl2') !== null),
+        firstParams: a.oceano!.getParams(),
+        secondParams: b.oceano!.getParams(),
+        secondLabel: b.querySelector('canvas')!.getAttribute('aria-label'),
+        size: [a.clientWidth, a.clientHeight],
+        noGlobal: (window as { oceano?: unknown }).oceano === undefined,
+        inlineScriptRan: (window as { inlineScriptRan?: boolean }).inlineScriptRan === true,
+      };
+    });
+    expect(facts.separateApis).toBe(true);
+    expect(facts.canvases).toBe(2);
+    expect(facts.contexts).toEqual([true, true]);
+    expect(facts.firstParams.seed).toBe(1);
+    expect(facts.secondParams).toMatchObject({ seed: 2, swellAmplitude: 2.5 });
+    expect(facts.secondLabel).toBe('Océano 3D animado bajo un cielo');
+    expect(facts.size).toEqual([320, 180]);
+    expect(facts.noGlobal).toBe(true);
+    // The CSP is really enforced: the fixture's one inline script was blocked, and nothing else was.
+    expect(facts.inlineScriptRan).toBe(false);
+    expect(violations).toEqual(['script-src-elem inline']);
+    expect(consoleErrors.filter((e) => !e.includes('Content Security Policy'))).toEqual([]);
+    const origin = new URL(harness.baseUrl).origin;
+    expect(requests.filter((url) => !url.startsWith('data:')).every((url) => new URL(url).origin === origin)).toBe(true);
+
+    // Changing one figure leaves the other alone.
+    const first = await elementCanvasPng(page, '#first');
+    const second = await elementCanvasPng(page, '#second');
+    expect(diffPngs(first, second).share).toBeGreaterThan(0.03);
+    await page.evaluate(() => (document.querySelector('#second') as ViewElement).oceano!.setParams({ seed: 9 }));
+    expect(diffPngs(first, await elementCanvasPng(page, '#first'), 0).differentPixels).toBe(0);
+
+    // The same settings in the full page draw the same picture, pixel for pixel.
+    const app = await openOcean(harness, 'seed=1&t=10', 320, 180);
+    expect(diffPngs(first, await canvasPng(app.page), 0).differentPixels).toBe(0);
+    await app.page.close();
+    await page.close();
+  });
+
+  it('holds ten frozen figures on one page: every context alive, no frame loop running', async () => {
+    const { page, consoleErrors } = await recordedPage(harness, 800, 600);
+    await page.goto(`${harness.baseUrl}fixtures/ten-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const views = await page.evaluate(() =>
+      (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).map((view) => ({
+        lost: view.querySelector('canvas')!.getContext('webgl2')!.isContextLost(),
+        looping: view.oceano!.activity().looping,
+        seed: view.oceano!.getParams().seed,
+      })),
+    );
+    expect(views).toHaveLength(10);
+    expect(views.map((v) => v.seed)).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9, 10]);
+    expect(views.every((v) => !v.lost && !v.looping)).toBe(true);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('follows attribute changes, validated like the URL', async () => {
+    const { page } = await recordedPage(harness, 400, 500);
+    await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const result = await page.evaluate(() => {
+      const view = document.querySelector('#first') as ViewElement;
+      view.setAttribute('swellAmplitude', '3.5');
+      view.setAttribute('cam', '1,20,30,0,0,-50');
+      const camera = view.oceano!.getCamera();
+      view.setAttribute('seed', '7');
+      view.setAttribute('seed', 'x');
+      view.setAttribute('t', '-4');
+      return { params: view.oceano!.getParams(), camera, notices: view.oceano!.notices(), looping: view.oceano!.activity().looping };
+    });
+    expect(result.params).toMatchObject({ swellAmplitude: 3.5, seed: 1 });
+    expect(result.camera).toEqual({ position: [1, 20, 30], target: [0, 0, -50] });
+    expect(result.looping).toBe(true);
+    expect(result.notices).toEqual([
+      '"seed=x" is not an integer; using the default 1.',
+      '"t=-4" is not a time in seconds between 0 and 1e9; the animation runs from 0 instead.',
+    ]);
+    await page.close();
+  });
+
+  it('pauses a figure scrolled out of view and resumes it when it comes back', async () => {
+    const { page, consoleErrors } = await recordedPage(harness, 400, 400);
+    await page.goto(`${harness.baseUrl}fixtures/far-apart.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const activity = () =>
+      page.evaluate(() => ({
+        near: (document.querySelector('#near') as ViewElement).oceano!.activity(),
+        far: (document.querySelector('#far') as ViewElement).oceano!.activity(),
+      }));
+    await page.waitForFunction(() => !(document.querySelector('#far') as ViewElement).oceano!.activity().looping);
+    const before = await activity();
+    await new Promise((r) => setTimeout(r, 1500));
+    const after = await activity();
+    expect(after.near.looping).toBe(true);
+    expect(after.near.framesDrawn).toBeGreaterThan(before.near.framesDrawn);
+    expect(after.far.looping).toBe(false);
+    expect(after.far.framesDrawn).toBe(before.far.framesDrawn);
+
+    await page.evaluate(() => document.querySelector('#far')!.scrollIntoView());
+    await page.waitForFunction(() => (document.querySelector('#far') as ViewElement).oceano!.activity().looping);
+    const farFrames = (await activity()).far.framesDrawn;
+    await page.waitForFunction((n) => (document.querySelector('#far') as ViewElement).oceano!.activity().framesDrawn > n, {}, farFrames);
+    expect((await activity()).near.looping).toBe(false);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('runs no frame loop for a frozen figure (t given) until it is played', async () => {
+    const { page } = await recordedPage(harness, 400, 500);
+    await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const first = () => page.evaluate(() => (document.querySelector('#first') as ViewElement).oceano!.activity());
+    const before = await first();
+    await new Promise((r) => setTimeout(r, 800));
+    expect(await first()).toEqual(before);
+    expect(before.looping).toBe(false);
+    await page.click('#first .oceano-play');
+    await page.waitForFunction((n) => (document.querySelector('#first') as ViewElement).oceano!.activity().framesDrawn > n + 1, {}, before.framesDrawn);
+    expect((await first()).looping).toBe(true);
+    await page.close();
+  });
+
+  it('pauses every figure while the tab is hidden', async () => {
+    const { page } = await recordedPage(harness, 400, 400);
+    await page.goto(`${harness.baseUrl}fixtures/far-apart.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const looping = () => page.evaluate(() => (document.querySelector('#near') as ViewElement).oceano!.activity().looping);
+    expect(await looping()).toBe(true);
+    const setHidden = (hidden: boolean) =>
+      page.evaluate((h) => {
+        Object.defineProperty(document, 'visibilityState', { configurable: true, get: () => (h ? 'hidden' : 'visible') });
+        document.dispatchEvent(new Event('visibilitychange'));
+      }, hidden);
+    await setHidden(true);
+    expect(await looping()).toBe(false);
+    await setHidden(false);
+    expect(await looping()).toBe(true);
+    await page.close();
+  });
+
+  it('releases the WebGL context and its API when the element is removed', async () => {
+    const { page, consoleErrors } = await recordedPage(harness, 400, 500);
+    await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const result = await page.evaluate(() => {
+      const view = document.querySelector('#first') as ViewElement;
+      const gl = view.querySelector('canvas')!.getContext('webgl2')!;
+      view.remove();
+      return { lost: gl.isContextLost(), api: view.oceano, children: view.childElementCount };
+    });
+    expect(result).toEqual({ lost: true, api: null, children: 0 });
+    // The other figure still draws.
+    const png = await elementCanvasPng(page, '#second');
+    expect(png.length).toBeGreaterThan(1000);
+    expect(consoleErrors.filter((e) => !e.includes('Content Security Policy'))).toEqual([]);
+    await page.close();
+  });
+});
