@@ -3,6 +3,7 @@ import type { CubeTexture } from 'three';
 import { validateParams, type OceanParams } from '../sim/params';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
+import { median } from '../sim/sampleStatistics';
 import { OceanView } from '../render/oceanView';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { ControlPanel } from './controlPanel';
@@ -20,9 +21,14 @@ export interface CameraPose {
 }
 
 export interface OceanStats {
+  /** Median wall time of recent GPU-synced frames, update and draw together (ms). */
   frameMs: number;
+  /** Median JavaScript time of recent frames' update step, before any draw call (ms). */
+  cpuMs: number;
   drawCalls: number;
   triangles: number;
+  /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */
+  ttffMs: number | null;
 }
 
 /**
@@ -38,9 +44,12 @@ export class OceanApp {
   private controls!: OrbitControls;
   private panel?: ControlPanel;
   private frameTimes: number[] = [];
+  private updateTimes: number[] = [];
+  private firstFrameAt: number | null = null;
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
+  private readonly skyRequest: Promise<CubeTexture>;
 
   constructor(
     private readonly container: HTMLElement,
@@ -51,12 +60,14 @@ export class OceanApp {
     for (const message of url.notices) this.notices.show(message);
     this.params = url.params;
     this.clock = new SimulationClock(url.time ?? 0, url.time === null);
+    // Requested before the heightmaps are generated so the images download and decode meanwhile.
+    this.skyRequest = this.loadSky();
     this.surface = new OceanSurface(this.params);
   }
 
   /** Builds the scene and draws the first frame; resolves once it is on screen. */
   async start(): Promise<void> {
-    const sky = await this.loadSky();
+    const sky = await this.skyRequest;
     this.view = new OceanView(this.canvas, this.surface, sky, this.params);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
     this.controls.target.set(0, 0, -60);
@@ -68,7 +79,9 @@ export class OceanApp {
     });
     this.resize();
     new ResizeObserver(() => this.resize()).observe(this.canvas);
-    this.renderFrame();
+    this.renderFrame(true);
+    // performance.now() counts from the navigation start, so this is the time to first frame.
+    this.firstFrameAt = performance.now();
     this.animationHandle = requestAnimationFrame(this.loop);
   }
 
@@ -101,7 +114,10 @@ export class OceanApp {
    */
   renderFrame(sync = this.frameCount % SYNC_EVERY === 0): void {
     const start = performance.now();
-    this.view.render(this.clock.time);
+    this.view.update(this.clock.time);
+    this.updateTimes.push(performance.now() - start);
+    if (this.updateTimes.length > FRAME_SAMPLES) this.updateTimes.shift();
+    this.view.draw();
     this.frameCount++;
     if (!sync) return;
     const gl = this.view.renderer.getContext();
@@ -167,9 +183,12 @@ export class OceanApp {
   }
 
   stats(): OceanStats {
-    const sorted = [...this.frameTimes].sort((a, b) => a - b);
-    const frameMs = sorted.length ? sorted[Math.floor(sorted.length / 2)] : 0;
-    return { frameMs, ...this.view.stats() };
+    return {
+      frameMs: this.frameTimes.length ? median(this.frameTimes) : 0,
+      cpuMs: this.updateTimes.length ? median(this.updateTimes) : 0,
+      ...this.view.stats(),
+      ttffMs: this.firstFrameAt,
+    };
   }
 
   fresnelTable(): Float32Array {

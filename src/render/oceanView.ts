@@ -87,7 +87,11 @@ export class OceanView {
     this.camera.updateProjectionMatrix();
   }
 
-  render(time: number): void {
+  /**
+   * The CPU half of a frame: everything that must be decided before drawing (surface
+   * uniforms, grid placement). Kept apart from draw() so its cost can be measured alone.
+   */
+  update(time: number): void {
     this.material.setSurface(this.surface.stateAt(time));
     // Snapping to whole grid steps keeps every vertex on the same world lattice, so the
     // waves stay put under a moving camera instead of swimming.
@@ -96,6 +100,10 @@ export class OceanView {
       0,
       Math.round(this.camera.position.z / GRID_STEP) * GRID_STEP,
     );
+  }
+
+  /** Submits the frame prepared by update() to the GPU. */
+  draw(): void {
     this.renderer.render(this.scene, this.camera);
     const info = this.renderer.info.render;
     this.lastStats = { drawCalls: info.calls, triangles: info.triangles };
