@@ -49,7 +49,6 @@ export class OceanApp {
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
-  private readonly skyRequest: Promise<CubeTexture>;
 
   constructor(
     private readonly container: HTMLElement,
@@ -60,14 +59,12 @@ export class OceanApp {
     for (const message of url.notices) this.notices.show(message);
     this.params = url.params;
     this.clock = new SimulationClock(url.time ?? 0, url.time === null);
-    // Requested before the heightmaps are generated so the images download and decode meanwhile.
-    this.skyRequest = this.loadSky();
     this.surface = new OceanSurface(this.params);
   }
 
   /** Builds the scene and draws the first frame; resolves once it is on screen. */
   async start(): Promise<void> {
-    const sky = await this.skyRequest;
+    const sky = await this.loadSky();
     this.view = new OceanView(this.canvas, this.surface, sky, this.params);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
     this.controls.target.set(0, 0, -60);
