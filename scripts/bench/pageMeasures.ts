@@ -7,6 +7,7 @@
 
 export interface OceanFrames {
   frameTimes: number[];
+  /** From oceano.stats(): median update step of the app's last 30 frames, all of them timed ones. */
   cpuMs: number;
   drawCalls: number;
   triangles: number;

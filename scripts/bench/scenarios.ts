@@ -5,7 +5,8 @@ import type { Page } from 'puppeteer';
  * of its own. To add a row (brute-force grid against LOD, the underwater passes, the boat),
  * add one entry here: a URL query that fixes `t` so every run draws the same picture, and,
  * when the URL is not enough, a setup step run after `oceano.ready` and before the timing.
- * The first scenario is the headline: its figures are the top-level ones in the JSON.
+ * The first scenario is the headline: its figures are the top-level ones in the JSON, and
+ * its ttffMs is a cold start (fresh browser, empty caches); later rows load warm.
  */
 export interface BenchScenario {
   name: string;
