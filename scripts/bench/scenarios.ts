@@ -6,7 +6,7 @@ import type { Page } from 'puppeteer';
  * add one entry here: a URL query that fixes `t` so every run draws the same picture, and,
  * when the URL is not enough, a setup step run after `oceano.ready` and before the timing.
  * The first scenario is the headline: its figures are the top-level ones in the JSON, and
- * its ttffMs is a cold start (fresh browser, empty caches); later rows load warm.
+ * its ttffMs is the app's first load (empty caches); later rows load with warm caches.
  */
 export interface BenchScenario {
   name: string;
