@@ -4,6 +4,7 @@ import { validateParams, type OceanParams } from '../sim/params';
 import { message, type Message } from '../sim/message';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
+import { median } from '../sim/sampleStatistics';
 import { OceanView } from '../render/oceanView';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { isCameraPose, type CameraPose } from './cameraPose';
@@ -22,9 +23,14 @@ const SYNC_EVERY = 8;
 const FRAME_SAMPLES = 30;
 
 export interface OceanStats {
+  /** Median wall time of recent GPU-synced frames, update and draw together (ms). */
   frameMs: number;
+  /** Median JavaScript time of recent frames' update step, before any draw call (ms). */
+  cpuMs: number;
   drawCalls: number;
   triangles: number;
+  /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */
+  ttffMs: number | null;
 }
 
 /** Why the frame loop is stopped although the app is alive. */
@@ -72,6 +78,8 @@ export class OceanApp {
   private readonly playButton: PlayButton;
   private resizeObserver?: ResizeObserver;
   private frameTimes: number[] = [];
+  private updateTimes: number[] = [];
+  private firstFrameAt: number | null = null;
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
@@ -146,7 +154,9 @@ export class OceanApp {
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(this.canvas);
     this.started = true;
-    this.renderFrame();
+    this.renderFrame(true);
+    // performance.now() counts from the navigation start, so this is the time to first frame.
+    this.firstFrameAt = performance.now();
     this.updateLoop();
   }
 
@@ -241,7 +251,10 @@ export class OceanApp {
   renderFrame(sync = this.frameCount % SYNC_EVERY === 0): void {
     if (this.contextLost) return;
     const start = performance.now();
-    this.view.render(this.clock.time);
+    this.view.update(this.clock.time);
+    this.updateTimes.push(performance.now() - start);
+    if (this.updateTimes.length > FRAME_SAMPLES) this.updateTimes.shift();
+    this.view.draw();
     this.frameCount++;
     if (!sync) return;
     const gl = this.view.renderer.getContext();
@@ -350,9 +363,12 @@ export class OceanApp {
   }
 
   stats(): OceanStats {
-    const sorted = [...this.frameTimes].sort((a, b) => a - b);
-    const frameMs = sorted.length ? sorted[Math.floor(sorted.length / 2)] : 0;
-    return { frameMs, ...this.view.stats() };
+    return {
+      frameMs: this.frameTimes.length ? median(this.frameTimes) : 0,
+      cpuMs: this.updateTimes.length ? median(this.updateTimes) : 0,
+      ...this.view.stats(),
+      ttffMs: this.firstFrameAt,
+    };
   }
 
   fresnelTable(): Float32Array {

@@ -92,14 +92,11 @@ export class OceanView {
     this.camera.updateProjectionMatrix();
   }
 
-  render(time: number): void {
-    if (this.showHeightmaps) {
-      this.heightmapView ??= new HeightmapView();
-      this.heightmapView.render(this.renderer, this.heightmapTextures, this.camera.aspect);
-      const info = this.renderer.info.render;
-      this.lastStats = { drawCalls: info.calls, triangles: info.triangles };
-      return;
-    }
+  /**
+   * The CPU half of a frame: everything that must be decided before drawing (surface
+   * uniforms, grid placement). Kept apart from draw() so its cost can be measured alone.
+   */
+  update(time: number): void {
     this.material.setSurface(this.surface.stateAt(time));
     // Snapping to whole grid steps keeps every vertex on the same world lattice, so the
     // waves stay put under a moving camera instead of swimming.
@@ -108,7 +105,16 @@ export class OceanView {
       0,
       Math.round(this.camera.position.z / GRID_STEP) * GRID_STEP,
     );
-    this.renderer.render(this.scene, this.camera);
+  }
+
+  /** Submits the frame prepared by update() to the GPU. */
+  draw(): void {
+    if (this.showHeightmaps) {
+      this.heightmapView ??= new HeightmapView();
+      this.heightmapView.render(this.renderer, this.heightmapTextures, this.camera.aspect);
+    } else {
+      this.renderer.render(this.scene, this.camera);
+    }
     const info = this.renderer.info.render;
     this.lastStats = { drawCalls: info.calls, triangles: info.triangles };
   }

@@ -38,9 +38,14 @@ function smoothedLattice(cells: number, seed: number): Float64Array {
   return lattice;
 }
 
+/** The weight of the far end in cosine interpolation: 0 at t = 0, 1 at t = 1, flat at both. */
+function cosineWeight(t: number): number {
+  return (1 - Math.cos(t * Math.PI)) * 0.5;
+}
+
 /** Cosine interpolation, the seed's smooth curve between two lattice values. */
 export function cosineInterpolate(a: number, b: number, t: number): number {
-  const f = (1 - Math.cos(t * Math.PI)) * 0.5;
+  const f = cosineWeight(t);
   return a * (1 - f) + b * f;
 }
 
@@ -87,6 +92,49 @@ export class TilingPerlinNoise {
     }
     return total / this.amplitudeSum;
   }
+
+  /**
+   * The noise at every point (i / size, j / size) of one tile, row-major: exactly the
+   * values sample() gives there, bit for bit. On a grid, each octave's lattice cell and
+   * cosine weight depend on the column alone or the row alone, and the interpolation
+   * along a lattice row is shared by every grid row that reads it, so each is computed
+   * once rather than per sample; the arithmetic on them is the same as sample()'s.
+   * This is on the path to the first frame (two 128² maps at start-up).
+   */
+  sampleGrid(size: number): Float64Array {
+    const totals = new Float64Array(size * size);
+    const low = new Int32Array(size);
+    const high = new Int32Array(size);
+    const weight = new Float64Array(size);
+    for (const { cells, amplitude, lattice } of this.octaveLattices) {
+      // Columns and rows share coordinates (k / size), so one table serves both.
+      for (let k = 0; k < size; k++) {
+        const u = k / size;
+        const f = (u - Math.floor(u)) * cells;
+        low[k] = Math.floor(f) % cells;
+        high[k] = (low[k] + 1) % cells;
+        weight[k] = cosineWeight(f - Math.floor(f));
+      }
+      // alongRows[y * size + i]: lattice row y interpolated to column i.
+      const alongRows = new Float64Array(cells * size);
+      for (let y = 0; y < cells; y++) {
+        for (let i = 0; i < size; i++) {
+          const fx = weight[i];
+          alongRows[y * size + i] = lattice[y * cells + low[i]] * (1 - fx) + lattice[y * cells + high[i]] * fx;
+        }
+      }
+      for (let j = 0; j < size; j++) {
+        const top = low[j] * size;
+        const bottom = high[j] * size;
+        const fy = weight[j];
+        for (let i = 0; i < size; i++) {
+          totals[j * size + i] += amplitude * (alongRows[top + i] * (1 - fy) + alongRows[bottom + i] * fy);
+        }
+      }
+    }
+    for (let k = 0; k < totals.length; k++) totals[k] /= this.amplitudeSum;
+    return totals;
+  }
 }
 
 export interface Heightmap {
@@ -100,16 +148,9 @@ export interface Heightmap {
  * 1, so a ripple strength in metres is the ripples' true peak height.
  */
 export function generateHeightmap(size: number, settings: NoiseSettings): Heightmap {
-  const noise = new TilingPerlinNoise(settings);
-  const raw = new Float64Array(size * size);
+  const raw = new TilingPerlinNoise(settings).sampleGrid(size);
   let sum = 0;
-  for (let j = 0; j < size; j++) {
-    for (let i = 0; i < size; i++) {
-      const value = noise.sample(i / size, j / size);
-      raw[j * size + i] = value;
-      sum += value;
-    }
-  }
+  for (const value of raw) sum += value;
   const mean = sum / raw.length;
   let peak = 0;
   for (const value of raw) peak = Math.max(peak, Math.abs(value - mean));

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { integerNoise } from '../../src/sim/integerHash';
+import { integerNoise, seededRandom } from '../../src/sim/integerHash';
 import { TilingPerlinNoise, cosineInterpolate, generateHeightmap, generateRippleHeightmaps, defaultNoiseSettings } from '../../src/sim/perlinNoise';
 
 describe('integer noise', () => {
@@ -109,5 +109,45 @@ describe('heightmaps', () => {
     expect(Array.from(a0.data)).toEqual(Array.from(b0.data));
     expect(Array.from(a0.data)).not.toEqual(Array.from(a1.data));
     expect(Array.from(a0.data)).not.toEqual(Array.from(c0.data));
+  });
+});
+
+describe('grid sampling (the start-up fast path)', () => {
+  // Fast path against brute force: sampleGrid must equal sample() bit for bit, since the
+  // heightmaps (and so every reference picture) are built from it.
+  for (const caseSeed of [11, 29, 4243]) {
+    it(`equals sample() exactly at every grid point, seeded case ${caseSeed}`, () => {
+      const random = seededRandom(caseSeed);
+      for (let trial = 0; trial < 4; trial++) {
+        const settings = {
+          seed: Math.floor(random() * 2147483647),
+          baseCells: 1 + Math.floor(random() * 6),
+          octaves: 1 + Math.floor(random() * 6),
+          persistence: 0.3 + random() * 0.6,
+        };
+        const size = [8, 24, 64, 100][trial];
+        const noise = new TilingPerlinNoise(settings);
+        const grid = noise.sampleGrid(size);
+        for (let j = 0; j < size; j++) {
+          for (let i = 0; i < size; i++) {
+            if (!Object.is(grid[j * size + i], noise.sample(i / size, j / size))) {
+              throw new Error(`grid (${i}, ${j}) of size ${size} with ${JSON.stringify(settings)}: ${grid[j * size + i]} ≠ ${noise.sample(i / size, j / size)}`);
+            }
+          }
+        }
+      }
+    });
+  }
+
+  it('keeps the default ripple heightmaps of seed 1 exactly as they were first published', () => {
+    // Values of the original per-sample implementation; a change here changes every picture.
+    const [first, second] = generateRippleHeightmaps(1, 128);
+    expect(first.data[0]).toBe(-0.4126792848110199);
+    expect(first.data[1]).toBe(-0.5061705112457275);
+    expect(first.data[127]).toBe(-0.4128729999065399);
+    expect(first.data[128 * 64 + 64]).toBe(0.4785279929637909);
+    expect(first.data[16383]).toBe(-0.4435376524925232);
+    expect(second.data[0]).toBe(-0.43933647871017456);
+    expect(second.data[5000]).toBe(-0.24635933339595795);
   });
 });

@@ -1,0 +1,260 @@
+/**
+ * `npm run bench`: what the ocean costs, measured the same way every time. Serves the
+ * built dist/ on loopback, drives headless Chromium at 1280×720 and a device pixel ratio
+ * of 1, prints one JSON object and writes the same figures to bench/results.md.
+ * It prints figures and asserts nothing: machines are too noisy for timed thresholds.
+ *
+ * BENCH_GPU=1 insists on the GPU, BENCH_GPU=0 on SwiftShader; unset, the GPU is tried and
+ * SwiftShader used when it turns out to be software. The renderer string says which ran.
+ */
+import { mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { cpus, loadavg } from 'node:os';
+import { gzipSync } from 'node:zlib';
+import puppeteer, { type Browser } from 'puppeteer';
+import { preview, type PreviewServer } from 'vite';
+import { findBrowser } from '../tests/browser/findBrowser';
+import { openOcean, type Harness } from '../tests/browser/harness';
+import { median, percentile } from '../src/sim/sampleStatistics';
+import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
+import { pageEnvironment, timeFloorFrames, timeOceanFrames } from './bench/pageMeasures';
+import { SCENARIOS } from './bench/scenarios';
+import { formatFigure, markdownTable } from './bench/resultsTable';
+
+const WIDTH = 1280;
+const HEIGHT = 720;
+const FRAMES = 40;
+const WARMUP = 5;
+const RESULTS_FILE = 'bench/results.md';
+const TARGETS = { ratio: 10, cpuMs: 0.2, ttffMs: 1500, jsKB: 200 };
+
+interface Timing {
+  median: number;
+  p95: number;
+}
+
+interface ScenarioResult {
+  name: string;
+  query: string;
+  frameMs: Timing;
+  ratio: number;
+  triangles: number;
+  drawCalls: number;
+  cpuMs: number;
+  ttffMs: number | null;
+}
+
+const round = (value: number, decimals: number) => Number(value.toFixed(decimals));
+const timing = (samples: number[]): Timing => ({ median: round(median(samples), 3), p95: round(percentile(samples, 95), 3) });
+
+function javascriptFiles(dir: string): string[] {
+  return readdirSync(dir, { withFileTypes: true }).flatMap((entry) => {
+    const path = join(dir, entry.name);
+    if (entry.isDirectory()) return javascriptFiles(path);
+    return /\.m?js$/.test(entry.name) ? [path] : [];
+  });
+}
+
+/** Gzipped size of every script in dist/, each compressed alone as a web server would send it. */
+function gzippedJavaScriptKB(dist: string): number {
+  const files = javascriptFiles(dist);
+  if (files.length === 0) throw new Error(`No JavaScript in ${dist}: run vite build first.`);
+  return files.reduce((sum, file) => sum + gzipSync(readFileSync(file)).length, 0) / 1024;
+}
+
+/**
+ * Cross-origin isolation (COOP + COEP) makes Chromium's performance.now() fine-grained
+ * (microseconds instead of 0.1 ms), which a per-frame CPU time of a fraction of a
+ * millisecond needs.
+ */
+async function startServer(): Promise<{ server: PreviewServer; baseUrl: string }> {
+  const server = await preview({
+    preview: {
+      port: 0,
+      host: '127.0.0.1',
+      strictPort: false,
+      headers: { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' },
+    },
+    logLevel: 'error',
+  });
+  const address = server.httpServer.address();
+  if (!address || typeof address === 'string') throw new Error('The preview server has no TCP address.');
+  return { server, baseUrl: `http://127.0.0.1:${address.port}/` };
+}
+
+/**
+ * The browser's first WebGL2 context, made in a blank page: it starts Chromium's GPU
+ * process (and SwiftShader in it), a one-time cost of a fresh headless browser that a
+ * desktop browser, whose compositor already runs on the GPU, has paid before any page.
+ * Timed and reported apart, so that ttffMs is the app's own start-up.
+ */
+async function startGpuProcess(browser: Browser): Promise<{ renderer: string | null; ms: number }> {
+  const page = await browser.newPage();
+  const result = await page.evaluate(() => {
+    const start = performance.now();
+    const gl = document.createElement('canvas').getContext('webgl2');
+    const ms = performance.now() - start;
+    if (!gl) return { renderer: null, ms };
+    const debugInfo = gl.getExtension('WEBGL_debug_renderer_info');
+    return { renderer: String(gl.getParameter(debugInfo ? debugInfo.UNMASKED_RENDERER_WEBGL : gl.RENDERER)), ms };
+  });
+  await page.close();
+  return result;
+}
+
+/** Launches Chromium on the requested backend; in auto mode falls back to SwiftShader when the GPU path is software or absent. */
+async function launchBrowser(): Promise<{ browser: Browser; backend: Backend; gpuStartupMs: number }> {
+  const requested = requestedBackend(process.env.BENCH_GPU);
+  const executablePath = await findBrowser();
+  const launch = (backend: Backend) => puppeteer.launch({ executablePath, args: backendArgs(backend), headless: true });
+  if (requested !== 'swiftshader') {
+    const browser = await launch('gpu');
+    const { renderer, ms } = await startGpuProcess(browser);
+    if (renderer !== null && !isSoftwareRenderer(renderer)) return { browser, backend: 'gpu', gpuStartupMs: ms };
+    await browser.close();
+    if (requested === 'gpu') {
+      throw new Error(`BENCH_GPU=1 but Chromium's GPU path gave ${renderer === null ? 'no WebGL2' : `the software renderer "${renderer}"`}.`);
+    }
+  }
+  const browser = await launch('swiftshader');
+  const { renderer, ms } = await startGpuProcess(browser);
+  if (renderer === null) {
+    await browser.close();
+    throw new Error('Chromium with SwiftShader gave no WebGL2 context.');
+  }
+  return { browser, backend: 'swiftshader', gpuStartupMs: ms };
+}
+
+async function main(): Promise<void> {
+  const started = performance.now();
+  // Other work on the machine slows every figure; the load says how busy it was.
+  const loadAverage = round(loadavg()[0], 1);
+  const jsKB = gzippedJavaScriptKB('dist');
+  const { server, baseUrl } = await startServer();
+  const { browser, backend, gpuStartupMs } = await launchBrowser();
+  const harness: Harness = { browser, baseUrl, close: async () => undefined };
+  try {
+    const results: ScenarioResult[] = [];
+    let renderer = '';
+    let crossOriginIsolated = false;
+    let floorTimes: number[] = [];
+    for (const scenario of SCENARIOS) {
+      const { page, consoleErrors } = await openOcean(harness, scenario.query, WIDTH, HEIGHT);
+      await scenario.setup?.(page);
+      const environment = await page.evaluate(pageEnvironment);
+      const frames = await page.evaluate(timeOceanFrames, FRAMES, WARMUP);
+      if (frames.canvas[0] !== WIDTH || frames.canvas[1] !== HEIGHT) {
+        throw new Error(`Scenario "${scenario.name}": the canvas is ${frames.canvas.join('×')}, not ${WIDTH}×${HEIGHT}.`);
+      }
+      if (results.length === 0) {
+        // The floor is a property of the machine: measured once, in the first page, at the canvas's size.
+        const floor = await page.evaluate(timeFloorFrames, WIDTH, HEIGHT, FRAMES, WARMUP);
+        floorTimes = floor.frameTimes;
+        renderer = environment.renderer;
+        crossOriginIsolated = environment.crossOriginIsolated;
+      }
+      if (consoleErrors.length) throw new Error(`Scenario "${scenario.name}" logged errors: ${consoleErrors.join(' / ')}`);
+      await page.close();
+      results.push({
+        name: scenario.name,
+        query: scenario.query,
+        frameMs: timing(frames.frameTimes),
+        ratio: Number.NaN,
+        triangles: frames.triangles,
+        drawCalls: frames.drawCalls,
+        cpuMs: round(frames.cpuMs, 4),
+        ttffMs: frames.ttffMs === null ? null : round(frames.ttffMs, 1),
+      });
+    }
+    const floorMs = timing(floorTimes);
+    for (const result of results) result.ratio = round(result.frameMs.median / floorMs.median, 2);
+    const [headline] = results;
+    const report = {
+      renderer,
+      backend,
+      browser: await browser.version(),
+      machine: `${cpus().length} cores, ${cpus()[0]?.model.trim() ?? 'unknown CPU'}`,
+      loadAverage,
+      viewport: { width: WIDTH, height: HEIGHT, devicePixelRatio: 1 },
+      framesPerFigure: FRAMES,
+      fineTimers: crossOriginIsolated,
+      frameMs: headline.frameMs,
+      floorMs,
+      ratio: headline.ratio,
+      triangles: headline.triangles,
+      drawCalls: headline.drawCalls,
+      cpuMs: headline.cpuMs,
+      ttffMs: headline.ttffMs,
+      gpuStartupMs: round(gpuStartupMs, 1),
+      jsKB: round(jsKB, 1),
+      scenarios: results,
+      benchSeconds: round((performance.now() - started) / 1000, 1),
+    };
+    console.log(JSON.stringify(report, null, 2));
+    mkdirSync('bench', { recursive: true });
+    writeFileSync(RESULTS_FILE, resultsMarkdown(report, new Date()));
+    console.error(`[bench] figures written to ${RESULTS_FILE}`);
+  } finally {
+    await browser.close();
+    await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
+  }
+}
+
+interface Report {
+  renderer: string;
+  backend: Backend;
+  browser: string;
+  machine: string;
+  loadAverage: number;
+  framesPerFigure: number;
+  fineTimers: boolean;
+  floorMs: Timing;
+  ratio: number;
+  cpuMs: number;
+  ttffMs: number | null;
+  gpuStartupMs: number;
+  jsKB: number;
+  scenarios: ScenarioResult[];
+}
+
+function resultsMarkdown(report: Report, when: Date): string {
+  const rows = report.scenarios.map((s) => [
+    s.name,
+    `\`${s.query}\``,
+    formatFigure(s.frameMs.median, 1),
+    formatFigure(s.frameMs.p95, 1),
+    formatFigure(s.ratio, 1),
+    String(s.triangles),
+    String(s.drawCalls),
+    formatFigure(s.cpuMs, 3),
+    formatFigure(s.ttffMs, 0),
+  ]);
+  const targets = [
+    ['ratio (frame / floor)', formatFigure(report.ratio, 1), `≤ ${TARGETS.ratio}`],
+    ['cpuMs', formatFigure(report.cpuMs, 3), `≤ ${TARGETS.cpuMs}`],
+    ['ttffMs', formatFigure(report.ttffMs, 0), `≤ ${TARGETS.ttffMs}`],
+    ['jsKB (gzipped)', formatFigure(report.jsKB, 1), `≤ ${TARGETS.jsKB}`],
+  ];
+  return [
+    '# Oceano benchmark results',
+    '',
+    `Written by \`npm run bench\` on ${when.toISOString().slice(0, 16).replace('T', ' ')} UTC.`,
+    '',
+    `- Machine: ${report.machine}; load average ${report.loadAverage} when the bench started (anything above the core count slows every figure)`,
+    `- Renderer: ${report.renderer} (${report.backend === 'gpu' ? 'GPU' : 'SwiftShader, software'})`,
+    `- Browser: ${report.browser}, headless, 1280×720, device pixel ratio 1`,
+    `- Each frame figure: ${report.framesPerFigure} frames after untimed warm-up, each ended by a one-pixel readPixels (GPU sync); timers ${report.fineTimers ? 'fine-grained (cross-origin isolated)' : 'coarse (0.1 ms)'}`,
+    `- Floor (clear + full-screen quad, trivial shader, same size): median ${formatFigure(report.floorMs.median, 2)} ms, p95 ${formatFigure(report.floorMs.p95, 2)} ms`,
+    `- JavaScript in dist/, gzipped: ${formatFigure(report.jsKB, 1)} KB`,
+    `- ttffMs is the app's first load in a browser whose GPU process already runs; starting that process (the fresh headless browser's first WebGL context, timed in a blank page) took ${formatFigure(report.gpuStartupMs, 0)} ms and is not in it`,
+    '',
+    markdownTable(['scenario', 'query', 'frame median (ms)', 'frame p95 (ms)', 'ratio to floor', 'triangles', 'draw calls', 'cpuMs', 'ttffMs'], rows),
+    '',
+    `Headline (${report.scenarios[0].name}) against the targets, which are set for the 2-core SwiftShader machine:`,
+    '',
+    markdownTable(['figure', 'measured', 'target'], targets),
+    '',
+  ].join('\n');
+}
+
+await main();

@@ -1,0 +1,86 @@
+/**
+ * Measurements that run inside the page (passed to puppeteer's page.evaluate, so each is
+ * self-contained: no imports, and no named functions inside, which tsx's bundler would
+ * wrap in a `__name` helper that the page does not have). Every timed frame
+ * ends with a one-pixel readPixels, which waits for the GPU, so GPU work is counted.
+ */
+
+export interface OceanFrames {
+  frameTimes: number[];
+  /** From oceano.stats(): median update step of the app's last 30 frames, all of them timed ones. */
+  cpuMs: number;
+  drawCalls: number;
+  triangles: number;
+  ttffMs: number | null;
+  canvas: [number, number];
+}
+
+/** Times `frames` synced frames of the ocean, clock paused, after `warmup` untimed ones. */
+export function timeOceanFrames(frames: number, warmup: number): OceanFrames {
+  const oceano = window.oceano;
+  oceano.pause();
+  for (let i = 0; i < warmup; i++) oceano.renderFrame();
+  const frameTimes: number[] = [];
+  for (let i = 0; i < frames; i++) {
+    const start = performance.now();
+    oceano.renderFrame();
+    frameTimes.push(performance.now() - start);
+  }
+  const stats = oceano.stats();
+  const canvas = oceano.three.renderer.domElement;
+  return { frameTimes, cpuMs: stats.cpuMs, drawCalls: stats.drawCalls, triangles: stats.triangles, ttffMs: stats.ttffMs, canvas: [canvas.width, canvas.height] };
+}
+
+export interface FloorFrames {
+  frameTimes: number[];
+  renderer: string;
+}
+
+/**
+ * The cost floor of a frame on this machine: a clear and one full-screen quad with a
+ * constant-colour shader, in raw WebGL2 on a canvas of the ocean's size, synced the same way.
+ */
+export function timeFloorFrames(width: number, height: number, frames: number, warmup: number): FloorFrames {
+  const canvas = document.createElement('canvas');
+  canvas.width = width;
+  canvas.height = height;
+  const gl = canvas.getContext('webgl2', { antialias: false, preserveDrawingBuffer: true });
+  if (!gl) throw new Error('No WebGL2 context for the floor measurement.');
+  const program = gl.createProgram() as WebGLProgram;
+  // Four corners from gl_VertexID, drawn as a strip: no buffers, nothing but the quad.
+  const sources: [number, string][] = [
+    [gl.VERTEX_SHADER, '#version 300 es\nvoid main() { vec2 p = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0; gl_Position = vec4(p, 0.0, 1.0); }'],
+    [gl.FRAGMENT_SHADER, '#version 300 es\nprecision mediump float; out vec4 color; void main() { color = vec4(0.04, 0.18, 0.27, 1.0); }'],
+  ];
+  for (const [type, source] of sources) {
+    const shader = gl.createShader(type) as WebGLShader;
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`Floor shader: ${gl.getShaderInfoLog(shader)}`);
+    gl.attachShader(program, shader);
+  }
+  gl.linkProgram(program);
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`Floor program: ${gl.getProgramInfoLog(program)}`);
+  gl.useProgram(program);
+  gl.viewport(0, 0, width, height);
+  const pixel = new Uint8Array(4);
+  const frameTimes: number[] = [];
+  for (let i = 0; i < warmup + frames; i++) {
+    const start = performance.now();
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.drawArrays(gl.TRIANGLE_STRIP, 0, 4);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    if (i >= warmup) frameTimes.push(performance.now() - start);
+  }
+  const debugInfo = gl.getExtension('WEBGL_debug_renderer_info');
+  const renderer = String(gl.getParameter(debugInfo ? debugInfo.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return { frameTimes, renderer };
+}
+
+/** The WebGL renderer string and whether fine-grained timers are on (cross-origin isolation). */
+export function pageEnvironment(): { renderer: string; crossOriginIsolated: boolean } {
+  const gl = window.oceano.three.renderer.getContext();
+  const debugInfo = gl.getExtension('WEBGL_debug_renderer_info');
+  return { renderer: String(gl.getParameter(debugInfo ? debugInfo.UNMASKED_RENDERER_WEBGL : gl.RENDERER)), crossOriginIsolated: window.crossOriginIsolated };
+}
