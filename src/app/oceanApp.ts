@@ -148,8 +148,7 @@ export class OceanApp {
     }
     this.canvas.addEventListener('webglcontextlost', this.onContextLost);
     this.canvas.addEventListener('webglcontextrestored', this.onContextRestored);
-    this.fresnelPlot = new FresnelPlot(this.container, this.view.fresnelData);
-    this.fresnelPlot.setVisible(this.params.fresnelPlot);
+    this.showFresnelPlot(this.params.fresnelPlot);
     this.resize();
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(this.canvas);
@@ -263,6 +262,12 @@ export class OceanApp {
     if (this.frameTimes.length > FRAME_SAMPLES) this.frameTimes.shift();
   }
 
+  /** The plot is made the first time it is asked for: most figures never show it. */
+  private showFresnelPlot(visible: boolean): void {
+    if (visible) this.fresnelPlot ??= new FresnelPlot(this.container, this.view.fresnelData);
+    this.fresnelPlot?.setVisible(visible);
+  }
+
   getParams(): OceanParams {
     return { ...this.params };
   }
@@ -272,7 +277,7 @@ export class OceanApp {
     const valid = validateParams(partial);
     this.params = { ...this.params, ...valid };
     this.view.applyParams(this.params);
-    this.fresnelPlot?.setVisible(this.params.fresnelPlot);
+    this.showFresnelPlot(this.params.fresnelPlot);
     this.panel?.sync(this.params, this.clock.playing);
     this.requestRender();
     return this.getParams();
