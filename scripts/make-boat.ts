@@ -25,6 +25,7 @@ function section(s: (typeof STATIONS)[number]): Vec3[] {
   const { z, halfBeam: b, deck, keel } = s;
   const port: Vec3[] = [
     [-b, deck, z],
+    [-0.985 * b, 0.32, z],
     [-0.96 * b, 0.12, z],
     [-0.62 * b, 0.72 * keel, z],
   ];
@@ -38,10 +39,10 @@ const boot = boat.addMaterial({ name: 'Boot stripe', color: '#b8322a', metallic:
 const deck = boat.addMaterial({ name: 'Teak deck', color: '#a9784a', metallic: 0.0, roughness: 0.8 });
 const cabin = boat.addMaterial({ name: 'Cabin', color: '#eeece4', metallic: 0.0, roughness: 0.55 });
 const glass = boat.addMaterial({ name: 'Windows', color: '#1a2630', metallic: 0.3, roughness: 0.15 });
-const spar = boat.addMaterial({ name: 'Mast and boom', color: '#b9bec4', metallic: 0.8, roughness: 0.35 });
+const spar = boat.addMaterial({ name: 'Mast and boom', color: '#c4c8cc', metallic: 0.2, roughness: 0.4 });
 const sail = boat.addMaterial({ name: 'Sails', color: '#f4f1e8', metallic: 0.0, roughness: 0.9, doubleSided: true });
 
-// Hull skin between consecutive sections; the band just above the waterline is the boot stripe.
+// Hull skin between consecutive sections; the band just above the waterline (0.12 to 0.32 m) is the boot stripe.
 const sections = STATIONS.map(section);
 for (let k = 0; k + 1 < sections.length; k++) {
   const a = sections[k];

@@ -5,6 +5,7 @@ const FOLDERS: { title: string; keys: ParamKey[] }[] = [
   { title: 'Swell', keys: ['swellAmplitude', 'swellFrequency'] },
   { title: 'Ripples (Perlin)', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'Light & water', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
+  { title: 'Boat', keys: ['boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow'] },
   { title: 'View', keys: ['wireframe'] },
 ];
 

@@ -3,9 +3,15 @@ import type { CubeTexture } from 'three';
 import { validateParams, type OceanParams } from '../sim/params';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
+import { surfaceHeight } from '../sim/surface';
+import { BoatMotion, type BoatMotionState } from '../sim/boatMotion';
+import type { HullSize } from '../sim/boatPose';
 import { OceanView } from '../render/oceanView';
+import { BoatView } from '../render/boatView';
+import { loadBoatModel } from '../render/boatModel';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { ControlPanel } from './controlPanel';
+import { BoatSteering } from './boatSteering';
 import { Notices } from './notices';
 import { SimulationClock } from './simulationClock';
 import type { UrlState } from './urlState';
@@ -13,6 +19,11 @@ import type { UrlState } from './urlState';
 /** How often a frame is followed by a GPU sync to measure its full cost (frames). */
 const SYNC_EVERY = 8;
 const FRAME_SAMPLES = 30;
+/** The shipped model, relative to the page. */
+const DEFAULT_BOAT_MODEL = 'models/boat.glb';
+/** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
+const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
+const DEG = Math.PI / 180;
 
 export interface CameraPose {
   position: [number, number, number];
@@ -21,8 +32,22 @@ export interface CameraPose {
 
 export interface OceanStats {
   frameMs: number;
+  /** Median CPU time of the boat's update per frame (five surface samples, damping, pose), ms. */
+  boatMs: number;
   drawCalls: number;
   triangles: number;
+}
+
+export interface BoatInfo {
+  /** Centre of the hull at the waterline, metres. */
+  position: [number, number, number];
+  /** Radians; the conventions of src/sim/boatPose.ts: heading clockwise from −z, pitch > 0 bow up, roll > 0 starboard up. */
+  heading: number;
+  pitch: number;
+  roll: number;
+  /** The undamped pose on the surface at this instant (equal to the above when the clock stands still). */
+  target: { position: [number, number, number]; pitch: number; roll: number };
+  model: 'loading' | 'loaded' | 'failed';
 }
 
 /**
@@ -38,6 +63,13 @@ export class OceanApp {
   private controls!: OrbitControls;
   private panel?: ControlPanel;
   private frameTimes: number[] = [];
+  private boatTimes: number[] = [];
+  private readonly boatMotion = new BoatMotion();
+  private boatView!: BoatView;
+  private boatState!: BoatMotionState;
+  private hull: HullSize = NOMINAL_HULL;
+  private boatModel: BoatInfo['model'] = 'loading';
+  private steering?: BoatSteering;
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
@@ -54,10 +86,15 @@ export class OceanApp {
     this.surface = new OceanSurface(this.params);
   }
 
-  /** Builds the scene and draws the first frame; resolves once it is on screen. */
+  /**
+   * Builds the scene, draws the first frame and starts the loop; then loads the boat while
+   * the sea runs, and resolves once a frame with the boat in it (or a notice saying why it
+   * is missing) is on screen, so screenshots taken after `oceano.ready` always hold it.
+   */
   async start(): Promise<void> {
     const sky = await this.loadSky();
     this.view = new OceanView(this.canvas, this.surface, sky, this.params);
+    this.boatView = new BoatView(this.view.scene);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
     this.controls.target.set(0, 0, -60);
     this.controls.maxPolarAngle = Math.PI * 0.495;
@@ -66,10 +103,33 @@ export class OceanApp {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => (playing ? this.play() : this.pause()),
     });
+    this.steering = new BoatSteering(window, (change) => this.setParams(change), () => this.params);
     this.resize();
     new ResizeObserver(() => this.resize()).observe(this.canvas);
     this.renderFrame();
     this.animationHandle = requestAnimationFrame(this.loop);
+    await this.loadBoat();
+    this.renderFrame(true);
+  }
+
+  private async loadBoat(): Promise<void> {
+    const url = this.url.boat ?? DEFAULT_BOAT_MODEL;
+    const indicator = document.createElement('div');
+    indicator.className = 'oceano-loading';
+    indicator.setAttribute('role', 'status');
+    indicator.textContent = 'Loading the boat…';
+    this.container.appendChild(indicator);
+    try {
+      const model = await loadBoatModel(url);
+      this.hull = model.hull;
+      this.boatView.setModel(model.object);
+      this.boatModel = 'loaded';
+    } catch (error) {
+      this.boatModel = 'failed';
+      this.notices.show(`${(error as Error).message} The ocean runs without the boat.`);
+    } finally {
+      indicator.remove();
+    }
   }
 
   private async loadSky(): Promise<CubeTexture> {
@@ -85,6 +145,7 @@ export class OceanApp {
   private readonly loop = (now: number): void => {
     const seconds = this.lastFrameTime === null ? 0 : (now - this.lastFrameTime) / 1000;
     this.lastFrameTime = now;
+    this.steering?.apply(Math.min(seconds, SimulationClock.MAX_STEP));
     this.clock.advance(seconds);
     this.renderFrame();
     this.animationHandle = requestAnimationFrame(this.loop);
@@ -101,6 +162,9 @@ export class OceanApp {
    */
   renderFrame(sync = this.frameCount % SYNC_EVERY === 0): void {
     const start = performance.now();
+    this.updateBoat();
+    this.boatTimes.push(performance.now() - start);
+    if (this.boatTimes.length > FRAME_SAMPLES) this.boatTimes.shift();
     this.view.render(this.clock.time);
     this.frameCount++;
     if (!sync) return;
@@ -110,6 +174,44 @@ export class OceanApp {
     if (this.frameTimes.length > FRAME_SAMPLES) this.frameTimes.shift();
   }
 
+  /** Floats the boat at the clock's time; with the camera following, carries the camera along. */
+  private updateBoat(): void {
+    const time = this.clock.time;
+    const state = this.surface.stateAt(time);
+    const maps = this.surface.heightmaps;
+    const previous = this.boatState?.pose;
+    this.boatState = this.boatMotion.update(
+      time,
+      { heading: this.params.boatHeading * DEG, speed: this.params.boatSpeed, response: this.params.boatResponse },
+      this.hull,
+      (x, z) => surfaceHeight(state, maps, x, z),
+    );
+    const pose = this.boatState.pose;
+    this.boatView.setPose(pose);
+    if (this.params.boatFollow && previous) this.moveCamera(pose.x - previous.x, pose.z - previous.z);
+  }
+
+  private moveCamera(dx: number, dz: number): void {
+    if (dx === 0 && dz === 0) return;
+    this.view.camera.position.x += dx;
+    this.view.camera.position.z += dz;
+    this.controls.target.x += dx;
+    this.controls.target.z += dz;
+    this.controls.update();
+  }
+
+  boat(): BoatInfo {
+    const { pose, target } = this.boatState;
+    return {
+      position: [pose.x, pose.y, pose.z],
+      heading: pose.heading,
+      pitch: pose.pitch,
+      roll: pose.roll,
+      target: { position: [target.x, target.y, target.z], pitch: target.pitch, roll: target.roll },
+      model: this.boatModel,
+    };
+  }
+
   getParams(): OceanParams {
     return { ...this.params };
   }
@@ -117,7 +219,13 @@ export class OceanApp {
   /** Validates the whole update before applying any of it; throws a ParamError naming the bad key. */
   setParams(partial: unknown): OceanParams {
     const valid = validateParams(partial);
+    const startsFollowing = valid.boatFollow === true && !this.params.boatFollow;
     this.params = { ...this.params, ...valid };
+    // Following starts by looking at the boat from where the camera stands relative to its target.
+    if (startsFollowing && this.boatState) {
+      const { x, z } = this.boatState.pose;
+      this.moveCamera(x - this.controls.target.x, z - this.controls.target.z);
+    }
     this.view.applyParams(this.params);
     this.panel?.sync(this.params, this.clock.playing);
     return this.getParams();
@@ -169,7 +277,9 @@ export class OceanApp {
   stats(): OceanStats {
     const sorted = [...this.frameTimes].sort((a, b) => a - b);
     const frameMs = sorted.length ? sorted[Math.floor(sorted.length / 2)] : 0;
-    return { frameMs, ...this.view.stats() };
+    const boatSorted = [...this.boatTimes].sort((a, b) => a - b);
+    const boatMs = boatSorted.length ? boatSorted[Math.floor(boatSorted.length / 2)] : 0;
+    return { frameMs, boatMs, ...this.view.stats() };
   }
 
   fresnelTable(): Float32Array {
@@ -186,6 +296,7 @@ export class OceanApp {
 
   dispose(): void {
     cancelAnimationFrame(this.animationHandle);
+    this.steering?.dispose();
     this.controls.dispose();
     this.panel?.dispose();
     this.view.dispose();

@@ -1,7 +1,7 @@
 import { defaultParams, isParamKey, parseParamText, type OceanParams } from '../sim/params';
 
 /** URL keys that are not ocean parameters but are understood by the page. */
-const PAGE_KEYS = ['t', 'sky'] as const;
+const PAGE_KEYS = ['t', 'sky', 'boat'] as const;
 
 export interface UrlState {
   params: OceanParams;
@@ -9,11 +9,13 @@ export interface UrlState {
   time: number | null;
   /** Base path of the six sky images when the page names its own. */
   sky: string | null;
+  /** Path of the boat's glTF model when the page names its own. */
+  boat: string | null;
   notices: string[];
 }
 
 /**
- * A sky path must stay on this origin: a relative path or one starting with a single "/",
+ * A sky or model path must stay on this origin: a relative path or one starting with a single "/",
  * made of ordinary path characters, never climbing out with "..".
  */
 export function isSafeAssetPath(path: string): boolean {
@@ -26,6 +28,7 @@ export function parseUrlState(search: string): UrlState {
   const notices: string[] = [];
   let time: number | null = null;
   let sky: string | null = null;
+  let boat: string | null = null;
 
   for (const [key, text] of query) {
     if (key === 't') {
@@ -35,6 +38,9 @@ export function parseUrlState(search: string): UrlState {
     } else if (key === 'sky') {
       if (isSafeAssetPath(text)) sky = text;
       else notices.push(`"sky=${text}" is not a path on this site; using the built-in sky.`);
+    } else if (key === 'boat') {
+      if (isSafeAssetPath(text)) boat = text;
+      else notices.push(`"boat=${text}" is not a path on this site; using the built-in boat.`);
     } else if (isParamKey(key)) {
       const { value, notice } = parseParamText(key, text);
       (params as Record<string, unknown>)[key] = value;
@@ -43,5 +49,5 @@ export function parseUrlState(search: string): UrlState {
       notices.push(`Unknown URL parameter "${key}" was ignored.`);
     }
   }
-  return { params, time, sky, notices };
+  return { params, time, sky, boat, notices };
 }

@@ -7,6 +7,7 @@ import { OceanMaterial } from './oceanMaterial';
 import { createGridGeometry } from './oceanGrid';
 import { fresnelTexture, heightmapTexture } from './dataTextures';
 import { SurfaceProbe } from './surfaceProbe';
+import { SceneLights } from './sceneLights';
 import type { SurfaceSample } from '../sim/oceanSurface';
 
 /** Side of the displaced grid, metres, and its vertex spacing. */
@@ -35,6 +36,7 @@ export class OceanView {
   private readonly fresnelTexture: DataTexture;
   private lastStats: RenderStats = { drawCalls: 0, triangles: 0 };
   private probe?: SurfaceProbe;
+  private readonly lights: SceneLights;
 
   constructor(
     canvas: HTMLCanvasElement,
@@ -56,6 +58,7 @@ export class OceanView {
     // The grid follows the camera, so three's own bounds test would be against a stale box.
     this.ocean.frustumCulled = false;
     this.scene.add(this.ocean);
+    this.lights = new SceneLights(this.scene);
     this.applyParams(params);
   }
 
@@ -66,7 +69,9 @@ export class OceanView {
       this.material.setHeightmaps(this.heightmapTextures);
     }
     this.material.setWaterColor(params.waterColor);
-    this.material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
+    const sun = sunDirection(params.sunElevation, params.sunAzimuth);
+    this.material.setSunDirection(sun);
+    this.lights.update(sun, params.waterColor);
     this.material.setFresnelEnabled(params.fresnel);
     this.material.wireframe = params.wireframe;
   }

@@ -8,7 +8,7 @@ export const HEAVE_BAND = 0.2;
 /** Farthest the damped pitch and roll may stray from the surface's, radians (≈ 4.6°). */
 export const ANGLE_BAND = 0.08;
 /** Where the boat starts: in the default camera's view, right of centre. */
-export const BOAT_START: readonly [number, number] = [8, -20];
+export const BOAT_START: readonly [number, number] = [7, -5];
 
 export interface BoatControls {
   /** radians, see boatPose.ts for the convention */
