@@ -92,4 +92,11 @@ describe('parseUrlState', () => {
     expect(isSafeAssetPath('javascript:alert(1)')).toBe(false);
     expect(parseUrlState('?sky=https://evil.example/x').sky).toBeNull();
   });
+  it('reads a same-origin boat model path and refuses others with a notice', () => {
+    expect(parseUrlState('?boat=models/other.glb').boat).toBe('models/other.glb');
+    expect(parseUrlState('').boat).toBeNull();
+    const refused = parseUrlState('?boat=//evil.example/boat.glb');
+    expect(refused.boat).toBeNull();
+    expect(refused.notices.join('\n')).toMatch(/"boat=\/\/evil\.example\/boat\.glb" is not a path on this site/);
+  });
 });
