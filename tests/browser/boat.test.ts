@@ -66,11 +66,14 @@ describe('the boat', () => {
     const { page } = await openOcean(harness, 'seed=1&t=10');
     const start = await page.evaluate(() => {
       window.oceano.setParams({ boatHeading: 90, boatSpeed: 6, boatFollow: true });
+      // A frame with the clock standing still turns the boat to its new heading at once.
+      window.oceano.renderFrame();
       return { boat: window.oceano.boat(), camera: window.oceano.getCamera() };
     });
     // Following starts by aiming the camera at the boat.
     expect(start.camera.target[0]).toBeCloseTo(start.boat.position[0], 9);
     expect(start.camera.target[2]).toBeCloseTo(start.boat.position[2], 9);
+    expect(start.boat.heading).toBeCloseTo(Math.PI / 2, 12);
     await page.evaluate(() => window.oceano.play());
     await new Promise((r) => setTimeout(r, 1500));
     const sailed = await page.evaluate(() => ({ boat: window.oceano.boat(), camera: window.oceano.getCamera() }));

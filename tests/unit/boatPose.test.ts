@@ -127,6 +127,21 @@ describe('BoatMotion', () => {
     expect(state.pose.roll).toBeCloseTo(Math.atan(0.3), 6);
   });
 
+  it('swings to a new heading the short way round and settles on it', () => {
+    const deg = Math.PI / 180;
+    const motion = new BoatMotion([0, 0]);
+    motion.update(0, { ...still, heading: 350 * deg }, HULL, () => 0);
+    let heading = 0;
+    for (let i = 1; i <= 1500; i++) {
+      heading = motion.update(i * 0.02, { ...still, heading: 10 * deg }, HULL, () => 0).pose.heading;
+      expect(heading).toBeGreaterThanOrEqual(0);
+      expect(heading).toBeLessThan(2 * Math.PI);
+      // Through north (0), never round through south.
+      expect(heading < 10.0001 * deg || heading > 349.9999 * deg).toBe(true);
+    }
+    expect(heading).toBeCloseTo(10 * deg, 9);
+  });
+
   it('sails along its heading at its speed and stops at the edge of the ocean', () => {
     const motion = new BoatMotion([0, 0]);
     motion.update(0, { heading: Math.PI / 2, speed: 5, response: 0.25 }, HULL, () => 0);
