@@ -32,7 +32,11 @@ export interface CameraPose {
 
 export interface OceanStats {
   frameMs: number;
-  /** Median CPU time of the boat's update per frame (five surface samples, damping, pose), ms. */
+  /**
+   * Median CPU time of the boat's update per frame (five surface samples, damping, pose), ms.
+   * Browsers round performance.now() to 0.1 ms without cross-origin isolation, so a reading
+   * of 0.1 is an upper bound; `npx tsx scripts/bench-boat.ts` resolves it (a few µs).
+   */
   boatMs: number;
   drawCalls: number;
   triangles: number;
