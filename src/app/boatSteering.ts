@@ -18,6 +18,10 @@ const STARBOARD = new Set(['KeyD', 'ArrowRight']);
  */
 export class BoatSteering {
   private readonly held = new Set<string>();
+  /** Keys pressed since the last frame: a tap shorter than a frame still counts for one. */
+  private readonly unapplied = new Set<string>();
+  /** Keys let go of before a frame applied them, to drop after the next one does. */
+  private readonly released = new Set<string>();
 
   constructor(
     private readonly target: Window,
@@ -34,15 +38,21 @@ export class BoatSteering {
     if (element && ['INPUT', 'TEXTAREA', 'SELECT'].includes(element.tagName)) return;
     if (![AHEAD, ASTERN, PORT, STARBOARD].some((keys) => keys.has(event.code))) return;
     event.preventDefault();
+    if (!this.held.has(event.code)) this.unapplied.add(event.code);
     this.held.add(event.code);
+    this.released.delete(event.code);
   };
 
   private readonly onKeyUp = (event: KeyboardEvent): void => {
-    this.held.delete(event.code);
+    // Released before any frame applied it: let the next frame count it, then let go.
+    if (this.unapplied.has(event.code)) this.released.add(event.code);
+    else this.held.delete(event.code);
   };
 
   private readonly onBlur = (): void => {
     this.held.clear();
+    this.unapplied.clear();
+    this.released.clear();
   };
 
   private holding(keys: Set<string>): number {
@@ -51,9 +61,13 @@ export class BoatSteering {
 
   /** Applies the held keys over `seconds` of the frame loop's time. */
   apply(seconds: number): void {
+    if (seconds <= 0) return;
     const turn = this.holding(STARBOARD) - this.holding(PORT);
     const throttle = this.holding(AHEAD) - this.holding(ASTERN);
-    if ((turn === 0 && throttle === 0) || seconds <= 0) return;
+    for (const key of this.released) this.held.delete(key);
+    this.released.clear();
+    this.unapplied.clear();
+    if (turn === 0 && throttle === 0) return;
     const { boatHeading, boatSpeed } = this.params();
     const heading = (((boatHeading + turn * TURN_RATE * seconds) % 360) + 360) % 360;
     const { min, max } = paramDefs.boatSpeed;

@@ -87,15 +87,22 @@ describe('the boat', () => {
     expect(sailed.camera.target[0]).toBeCloseTo(sailed.boat.position[0], 9);
     expect(sailed.camera.position[0] - sailed.camera.target[0]).toBeCloseTo(start.camera.position[0] - start.camera.target[0], 9);
 
+    // Frames take a second or more on a busy software rasterizer: hold each key until a frame has applied it.
     await page.keyboard.down('KeyD');
-    await new Promise((r) => setTimeout(r, 800));
+    await page.waitForFunction(() => window.oceano.getParams().boatHeading > 90, { timeout: 30_000 });
     await page.keyboard.up('KeyD');
     await page.keyboard.down('ArrowDown');
-    await new Promise((r) => setTimeout(r, 800));
+    await page.waitForFunction(() => window.oceano.getParams().boatSpeed < 6, { timeout: 30_000 });
     await page.keyboard.up('ArrowDown');
     const steered = await page.evaluate(() => window.oceano.getParams());
-    expect(steered.boatHeading).toBeGreaterThan(91);
-    expect(steered.boatSpeed).toBeLessThan(5.9);
+    // Turning to starboard raises the heading; D did nothing to the speed, ↓ nothing to the heading.
+    expect(steered.boatHeading).toBeGreaterThan(90);
+    expect(steered.boatHeading).toBeLessThanOrEqual(90 + 45 * 0.1 * 40);
+    expect(steered.boatSpeed).toBeLessThan(6);
+    // A tap shorter than a frame still counts for one frame.
+    const before = await page.evaluate(() => window.oceano.getParams().boatHeading);
+    await page.keyboard.press('KeyA');
+    await page.waitForFunction((h) => window.oceano.getParams().boatHeading < h, { timeout: 30_000 }, before);
     await page.close();
   });
 
