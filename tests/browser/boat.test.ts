@@ -1,4 +1,5 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { readFileSync } from 'node:fs';
 import type { HTTPRequest } from 'puppeteer';
 import { canvasPng, openOcean, startHarness, type Harness } from './harness';
 import { diffPngs } from './imageCompare';
@@ -126,7 +127,7 @@ describe('bad boat models', () => {
   it('a missing model leaves the ocean running with a notice', async () => {
     const { page } = await openOcean(harness, 'seed=1&t=10&boat=models/missing.glb');
     const state = await page.evaluate(() => ({ notices: window.oceano.notices(), boat: window.oceano.boat(), stats: window.oceano.stats() }));
-    expect(state.notices.join('\n')).toMatch(/boat model "models\/missing\.glb" could not be loaded.*runs without the boat/);
+    expect(state.notices.join('\n')).toMatch(/boat model "models\/missing\.glb" (is missing|was not found).*runs without the boat/);
     expect(state.boat.model).toBe('failed');
     expect(state.stats.triangles).toBeGreaterThan(10_000);
     await page.close();
@@ -135,7 +136,7 @@ describe('bad boat models', () => {
   it('a file that is not a glTF leaves the ocean running with a notice', async () => {
     const { page } = await openOcean(harness, 'seed=1&t=10&boat=sky/px.png');
     const notices = await page.evaluate(() => window.oceano.notices());
-    expect(notices.join('\n')).toMatch(/boat model "sky\/px\.png" could not be loaded/);
+    expect(notices.join('\n')).toMatch(/boat model "sky\/px\.png" is not a valid glTF model.*runs without the boat/);
     await page.close();
   });
 
@@ -144,6 +145,25 @@ describe('bad boat models', () => {
     const state = await page.evaluate(() => ({ notices: window.oceano.notices(), boat: window.oceano.boat() }));
     expect(state.notices.join('\n')).toMatch(/"boat=https:\/\/example\.com\/boat\.glb" is not a path on this site/);
     expect(state.boat.model).toBe('loaded');
+    await page.close();
+  });
+
+  it('a truncated GLB leaves the ocean running with a notice', async () => {
+    const page = await harness.browser.newPage();
+    await page.setViewport({ width: 640, height: 360, deviceScaleFactor: 1 });
+    await page.setRequestInterception(true);
+    const truncated = readFileSync(new URL('../../public/models/boat.glb', import.meta.url)).subarray(0, 600);
+    page.on('request', (request) => {
+      if (request.url().endsWith('.glb')) void request.respond({ status: 200, contentType: 'model/gltf-binary', body: truncated });
+      else void request.continue();
+    });
+    await page.goto(`${harness.baseUrl}?seed=1&t=10`, { waitUntil: 'load' });
+    await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
+    await page.evaluate(() => window.oceano.ready);
+    const state = await page.evaluate(() => ({ notices: window.oceano.notices(), model: window.oceano.boat().model, triangles: window.oceano.stats().triangles }));
+    expect(state.model).toBe('failed');
+    expect(state.triangles).toBeGreaterThan(10_000);
+    expect(state.notices.join('\n')).toMatch(/boat model "models\/boat\.glb" is not a valid glTF model \(.+\)\. The ocean runs without the boat/);
     await page.close();
   });
 
@@ -165,7 +185,7 @@ describe('bad boat models', () => {
     const state = await page.evaluate(() => ({ notices: window.oceano.notices(), model: window.oceano.boat().model, indicator: document.querySelector('.oceano-loading') !== null }));
     expect(state.model).toBe('failed');
     expect(state.indicator).toBe(false);
-    expect(state.notices.join('\n')).toMatch(/could not be loaded/);
+    expect(state.notices.join('\n')).toMatch(/boat model "models\/boat\.glb" could not be fetched.*runs without the boat/);
     await page.close();
   });
 });
