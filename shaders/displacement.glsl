@@ -18,21 +18,55 @@ const float SECOND_SWELL_AMPLITUDE = 0.45;
 const float SECOND_SWELL_FREQUENCY = 1.73;
 const vec2 SECOND_SWELL_DIRECTION = vec2(0.8, 0.6);
 
+const float TWO_PI = 6.283185307179586;
+
+// The swell's angles are counted in turns and taken mod 1 before any trigonometry. The
+// argument k x reaches hundreds of radians far out, and GLSL's sin and cos only promise
+// about 2^-11 absolute accuracy (SwiftShader gives just that: 7e-4 m of swell), so sine is
+// evaluated here: fold the turn into [-1/4, 1/4] and use the Taylor series to x^11,
+// accurate to 6e-8 over [-π/2, π/2], which keeps float32 GPUs within 1e-5 m of the CPU.
+float swellTurns(float cyclesPerMetre, float x, float phase) {
+  return fract(cyclesPerMetre * x) + phase / TWO_PI;
+}
+
+float sinTurns(float turns) {
+  float s = fract(turns) - 0.5;
+  float folded = sign(s) * (0.25 - abs(abs(s) - 0.25));
+  float x = TWO_PI * folded;
+  float x2 = x * x;
+  float series = 1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0))));
+  // sin(2π turns) = −sin(2π s), and folding keeps the sine of s.
+  return -x * series;
+}
+
+float cosTurns(float turns) {
+  return sinTurns(turns + 0.25);
+}
+
 float swellHeight(vec2 p) {
-  float k = uSwellFrequency;
-  float first = sin(k * p.x + uSwellPhase.x) * cos(k * p.y + uSwellPhase.y);
-  float k2 = k * SECOND_SWELL_FREQUENCY;
+  float c1 = uSwellFrequency / TWO_PI;
+  float first = sinTurns(swellTurns(c1, p.x, uSwellPhase.x)) * cosTurns(swellTurns(c1, p.y, uSwellPhase.y));
+  float c2 = c1 * SECOND_SWELL_FREQUENCY;
   float u = SECOND_SWELL_DIRECTION.x * p.x + SECOND_SWELL_DIRECTION.y * p.y;
   float v = -SECOND_SWELL_DIRECTION.y * p.x + SECOND_SWELL_DIRECTION.x * p.y;
-  float second = sin(k2 * u + uSwellPhase.z) * cos(k2 * v + uSwellPhase.w);
+  float second = sinTurns(swellTurns(c2, u, uSwellPhase.z)) * cosTurns(swellTurns(c2, v, uSwellPhase.w));
   return uSwellAmplitude * (first + SECOND_SWELL_AMPLITUDE * second);
+}
+
+// p reduced to one tile without rounding: tile * floor(p / tile) is a multiple of the tile
+// that float32 holds exactly, and p minus it is exact too (the difference is smaller than p
+// and on p's own lattice). fract(p / tile) instead rounds p / tile to float32 first, which
+// far from the origin moves the sample by about |p| · 6e-8 m and shows in the heights.
+vec2 wrapToTile(vec2 p) {
+  return p - uTileSize * floor(p / uTileSize);
 }
 
 // Bilinear with wrap by hand: texel (i, j) sits at world offset (i, j) * tile / size.
 // Each texel holds its own height and those of its +x, +z and diagonal neighbours
-// (wrapped), so one fetch gives the four corners and no modulo is needed.
-float sampleHeightmap(sampler2D map, vec2 p) {
-  vec2 st = fract(p / uTileSize) * uHeightmapSize;
+// (wrapped), so one fetch gives the four corners and no modulo is needed. The offset is
+// added after the point is brought into its tile, where the sum rounds at small magnitude.
+float sampleHeightmap(sampler2D map, vec2 p, vec2 offset) {
+  vec2 st = fract((wrapToTile(p) + offset) / uTileSize) * uHeightmapSize;
   vec2 cell = floor(st);
   vec2 f = st - cell;
   vec4 corners = texelFetch(map, ivec2(cell), 0);
@@ -40,8 +74,8 @@ float sampleHeightmap(sampler2D map, vec2 p) {
 }
 
 float rippleHeight(vec2 p) {
-  float a = sampleHeightmap(uHeightmap0, p + uRippleOffset.xy);
-  float b = sampleHeightmap(uHeightmap1, p + uRippleOffset.zw);
+  float a = sampleHeightmap(uHeightmap0, p, uRippleOffset.xy);
+  float b = sampleHeightmap(uHeightmap1, p, uRippleOffset.zw);
   return uRippleStrength * mix(a, b, uRippleBlend);
 }
 

@@ -1,4 +1,4 @@
-import type { OceanApp, CameraPose, LoopActivity, OceanStats } from './oceanApp';
+import type { OceanApp, BoatInfo, CameraPose, LoopActivity, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
 import type { SurfaceSample } from '../sim/oceanSurface';
 
@@ -7,6 +7,7 @@ import type { SurfaceSample } from '../sim/oceanSurface';
  * pages and the console drive one ocean.
  */
 export interface OceanoApi {
+  /** Resolves once the first frame is drawn and the boat is in it (or a notice says why it is not). */
   ready: Promise<void>;
   setTime(seconds: number): void;
   play(): void;
@@ -19,6 +20,8 @@ export interface OceanoApi {
   sampleSurface(x: number, z: number): SurfaceSample;
   /** The same surface evaluated by the GPU shader and read back; `t` defaults to the current time. */
   probeGpu(points: [number, number][], t?: number): Promise<SurfaceSample[]>;
+  /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boatPose.ts). */
+  boat(): BoatInfo;
   stats(): OceanStats;
   notices(): string[];
   /** The link that reopens this view exactly (what the share button copies). */
@@ -51,6 +54,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     getCamera: () => app.camera(),
     sampleSurface: (x, z) => app.sampleSurface(x, z),
     probeGpu: async (points, t) => app.probeGpu(points, t),
+    boat: () => app.boat(),
     stats: () => app.stats(),
     notices: () => app.notices.messages(),
     shareUrl: () => app.shareUrl(),

@@ -41,6 +41,8 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     shareFallback: (v) => `Copy this link to share the view: ${v.url}`,
     webgl2Missing: () => 'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.',
     startFailed: (v) => `Oceano could not start: ${v.error}`,
+    boatPathInvalid: (v) => `"boat=${v.text}" is not a path on this site; using the built-in boat.`,
+    boatLoadFailed: (v) => `${v.reason} The ocean runs without the boat.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -62,6 +64,8 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     shareFallback: (v) => `Copia este enlace para compartir la vista: ${v.url}`,
     webgl2Missing: () => 'Oceano necesita WebGL2, que este navegador o dispositivo no ofrece. Prueba un Chrome, Firefox o Safari reciente, o activa la aceleración por hardware.',
     startFailed: (v) => `Oceano no pudo arrancar: ${v.error}`,
+    boatPathInvalid: (v) => `"boat=${v.text}" no es una ruta de este sitio; se usa el barco incluido.`,
+    boatLoadFailed: (v) => `No se pudo cargar el barco (${v.reason}). El océano sigue sin él.`,
   },
 };
 
@@ -73,6 +77,8 @@ export type UiTextId =
   | 'folderRipples'
   | 'folderLight'
   | 'folderView'
+  | 'folderBoat'
+  | 'boatLoading'
   | 'play'
   | 'pause'
   | 'playing'
@@ -87,6 +93,8 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderRipples: 'Ripples (Perlin)',
     folderLight: 'Light & water',
     folderView: 'View',
+    folderBoat: 'Boat',
+    boatLoading: 'Loading the boat…',
     play: 'Play',
     pause: 'Pause',
     playing: 'Play',
@@ -100,6 +108,8 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderRipples: 'Ondas (Perlin)',
     folderLight: 'Luz y agua',
     folderView: 'Vista',
+    folderBoat: 'Barco',
+    boatLoading: 'Cargando el barco…',
     play: 'Reproducir',
     pause: 'Pausar',
     playing: 'Reproducir',
@@ -127,6 +137,10 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   normals: 'Normales',
   view: 'Vista',
   fresnelPlot: 'Gráfico de Fresnel',
+  boatSpeed: 'Velocidad del barco',
+  boatHeading: 'Rumbo del barco',
+  boatResponse: 'Tiempo de respuesta de flotación',
+  boatFollow: 'La cámara sigue al barco',
 };
 
 /** Everything the page says, in one language. */

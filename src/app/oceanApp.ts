@@ -5,11 +5,17 @@ import { message, type Message } from '../sim/message';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
 import { median } from '../sim/sampleStatistics';
+import { surfaceHeight } from '../sim/surface';
+import { BoatMotion, type BoatMotionState } from '../sim/boatMotion';
+import type { HullSize } from '../sim/boatPose';
 import { OceanView } from '../render/oceanView';
+import { BoatView } from '../render/boatView';
+import { loadBoatModel } from '../render/boatModel';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { isCameraPose, type CameraPose } from './cameraPose';
 import { ControlPanel } from './controlPanel';
 import { Translator, type Language } from './i18n';
+import { BoatSteering } from './boatSteering';
 import { Notices } from './notices';
 import { FresnelPlot } from './fresnelPlot';
 import { PlayButton } from './playButton';
@@ -21,12 +27,19 @@ export type { CameraPose } from './cameraPose';
 /** How often a frame is followed by a GPU sync to measure its full cost (frames). */
 const SYNC_EVERY = 8;
 const FRAME_SAMPLES = 30;
+/** The shipped model, relative to the page. */
+const DEFAULT_BOAT_MODEL = 'models/boat.glb';
+/** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
+const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
+const DEG = Math.PI / 180;
 
 export interface OceanStats {
   /** Median wall time of recent GPU-synced frames, update and draw together (ms). */
   frameMs: number;
   /** Median JavaScript time of recent frames' update step, before any draw call (ms). */
   cpuMs: number;
+  /** Median CPU time of the boat's share of the update step (five surface samples, damping, pose), ms. */
+  boatMs: number;
   drawCalls: number;
   triangles: number;
   /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */
@@ -59,6 +72,18 @@ export interface LoopActivity {
   framesDrawn: number;
 }
 
+export interface BoatInfo {
+  /** Centre of the hull at the waterline, metres. */
+  position: [number, number, number];
+  /** Radians; the conventions of src/sim/boatPose.ts: heading clockwise from −z, pitch > 0 bow up, roll > 0 starboard up. */
+  heading: number;
+  pitch: number;
+  roll: number;
+  /** The undamped pose on the surface at this instant (equal to the above when the clock stands still). */
+  target: { position: [number, number, number]; pitch: number; roll: number };
+  model: 'loading' | 'loaded' | 'failed';
+}
+
 /**
  * One live ocean in a container element: owns its canvas, the clock, the parameters, the
  * view and the controls, and runs the frame loop. The automation API is a thin layer over
@@ -80,6 +105,13 @@ export class OceanApp {
   private frameTimes: number[] = [];
   private updateTimes: number[] = [];
   private firstFrameAt: number | null = null;
+  private boatTimes: number[] = [];
+  private readonly boatMotion = new BoatMotion();
+  private boatView!: BoatView;
+  private boatState!: BoatMotionState;
+  private hull: HullSize = NOMINAL_HULL;
+  private boatModel: BoatInfo['model'] = 'loading';
+  private steering?: BoatSteering;
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
@@ -119,7 +151,11 @@ export class OceanApp {
     return this.notices.show(this.tr.message(m), level);
   }
 
-  /** Builds the scene and draws the first frame; resolves once it is on screen. */
+  /**
+   * Builds the scene, draws the first frame and starts the loop; then loads the boat while
+   * the sea runs, and resolves once a frame with the boat in it (or a notice saying why it
+   * is missing) is on screen, so screenshots taken after `oceano.ready` always hold it.
+   */
   async start(): Promise<void> {
     const sky = await this.loadSky();
     if (this.disposed) {
@@ -127,6 +163,7 @@ export class OceanApp {
       return;
     }
     this.view = new OceanView(this.canvas, this.surface, sky, this.params);
+    this.boatView = new BoatView(this.view.scene);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
     this.controls.target.set(0, 0, -60);
     this.controls.maxPolarAngle = Math.PI * 0.495;
@@ -149,6 +186,9 @@ export class OceanApp {
     this.canvas.addEventListener('webglcontextlost', this.onContextLost);
     this.canvas.addEventListener('webglcontextrestored', this.onContextRestored);
     this.showFresnelPlot(this.params.fresnelPlot);
+    // The full page steers from anywhere; an embedded figure only when it has the focus.
+    const keyTarget: Window | HTMLElement = this.options.showPanel ? window : this.container;
+    this.steering = new BoatSteering(keyTarget, (change) => this.setParams(change), () => this.params);
     this.resize();
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(this.canvas);
@@ -157,6 +197,28 @@ export class OceanApp {
     // performance.now() counts from the navigation start, so this is the time to first frame.
     this.firstFrameAt = performance.now();
     this.updateLoop();
+    await this.loadBoat();
+    this.renderFrame(true);
+  }
+
+  private async loadBoat(): Promise<void> {
+    const url = this.options.state.boat ?? DEFAULT_BOAT_MODEL;
+    const indicator = document.createElement('div');
+    indicator.className = 'oceano-loading';
+    indicator.setAttribute('role', 'status');
+    indicator.textContent = this.tr.ui('boatLoading');
+    this.container.appendChild(indicator);
+    try {
+      const model = await loadBoatModel(url);
+      this.hull = model.hull;
+      this.boatView.setModel(model.object);
+      this.boatModel = 'loaded';
+    } catch (error) {
+      this.boatModel = 'failed';
+      this.notify(message('boatLoadFailed', { reason: (error as Error).message }));
+    } finally {
+      indicator.remove();
+    }
   }
 
   private async loadSky(): Promise<CubeTexture> {
@@ -172,6 +234,7 @@ export class OceanApp {
   private readonly loop = (now: number): void => {
     const seconds = this.lastFrameTime === null ? 0 : (now - this.lastFrameTime) / 1000;
     this.lastFrameTime = now;
+    this.steering?.apply(Math.min(seconds, SimulationClock.MAX_STEP));
     this.clock.advance(seconds);
     this.renderFrame();
     this.animationHandle = requestAnimationFrame(this.loop);
@@ -250,8 +313,13 @@ export class OceanApp {
   renderFrame(sync = this.frameCount % SYNC_EVERY === 0): void {
     if (this.contextLost) return;
     const start = performance.now();
+    this.updateBoat();
+    const boatEnd = performance.now();
     this.view.update(this.clock.time);
-    this.updateTimes.push(performance.now() - start);
+    const updateEnd = performance.now();
+    this.boatTimes.push(boatEnd - start);
+    this.updateTimes.push(updateEnd - start);
+    if (this.boatTimes.length > FRAME_SAMPLES) this.boatTimes.shift();
     if (this.updateTimes.length > FRAME_SAMPLES) this.updateTimes.shift();
     this.view.draw();
     this.frameCount++;
@@ -268,6 +336,44 @@ export class OceanApp {
     this.fresnelPlot?.setVisible(visible);
   }
 
+  /** Floats the boat at the clock's time; with the camera following, carries the camera along. */
+  private updateBoat(): void {
+    const time = this.clock.time;
+    const state = this.surface.stateAt(time);
+    const maps = this.surface.heightmaps;
+    const previous = this.boatState?.pose;
+    this.boatState = this.boatMotion.update(
+      time,
+      { heading: this.params.boatHeading * DEG, speed: this.params.boatSpeed, response: this.params.boatResponse },
+      this.hull,
+      (x, z) => surfaceHeight(state, maps, x, z),
+    );
+    const pose = this.boatState.pose;
+    this.boatView.setPose(pose);
+    if (this.params.boatFollow && previous) this.moveCamera(pose.x - previous.x, pose.z - previous.z);
+  }
+
+  private moveCamera(dx: number, dz: number): void {
+    if (dx === 0 && dz === 0) return;
+    this.view.camera.position.x += dx;
+    this.view.camera.position.z += dz;
+    this.controls.target.x += dx;
+    this.controls.target.z += dz;
+    this.controls.update();
+  }
+
+  boat(): BoatInfo {
+    const { pose, target } = this.boatState;
+    return {
+      position: [pose.x, pose.y, pose.z],
+      heading: pose.heading,
+      pitch: pose.pitch,
+      roll: pose.roll,
+      target: { position: [target.x, target.y, target.z], pitch: target.pitch, roll: target.roll },
+      model: this.boatModel,
+    };
+  }
+
   getParams(): OceanParams {
     return { ...this.params };
   }
@@ -275,7 +381,13 @@ export class OceanApp {
   /** Validates the whole update before applying any of it; throws a ParamError naming the bad key. */
   setParams(partial: unknown): OceanParams {
     const valid = validateParams(partial);
+    const startsFollowing = valid.boatFollow === true && !this.params.boatFollow;
     this.params = { ...this.params, ...valid };
+    // Following starts by looking at the boat from where the camera stands relative to its target.
+    if (startsFollowing && this.boatState) {
+      const { x, z } = this.boatState.pose;
+      this.moveCamera(x - this.controls.target.x, z - this.controls.target.z);
+    }
     this.view.applyParams(this.params);
     this.showFresnelPlot(this.params.fresnelPlot);
     this.panel?.sync(this.params, this.clock.playing);
@@ -335,6 +447,7 @@ export class OceanApp {
       camera: this.camera(),
       language: this.options.language,
       sky: state.sky,
+      boat: state.boat,
       embed: state.embed,
     });
     return `${this.options.shareBase}?${query}`;
@@ -371,6 +484,7 @@ export class OceanApp {
     return {
       frameMs: this.frameTimes.length ? median(this.frameTimes) : 0,
       cpuMs: this.updateTimes.length ? median(this.updateTimes) : 0,
+      boatMs: this.boatTimes.length ? median(this.boatTimes) : 0,
       ...this.view.stats(),
       ttffMs: this.firstFrameAt,
     };
@@ -398,6 +512,7 @@ export class OceanApp {
     this.resizeObserver?.disconnect();
     this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
     this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
+    this.steering?.dispose();
     this.panel?.dispose();
     this.playButton.dispose();
     this.fresnelPlot?.dispose();

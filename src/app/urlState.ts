@@ -5,7 +5,7 @@ import { isLanguage, type Language } from './i18n';
 import { findPreset, presetNames } from './presets';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
-export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset'] as const;
+export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'boat'] as const;
 
 /** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
@@ -19,10 +19,12 @@ export interface UrlState {
   language: Language | null;
   embed: boolean;
   notices: Message[];
+  /** Path of the boat's glTF model when the page names its own. */
+  boat: string | null;
 }
 
 /**
- * A sky path must stay on this origin: a relative path or one starting with a single "/",
+ * A sky or model path must stay on this origin: a relative path or one starting with a single "/",
  * made of ordinary path characters, never climbing out with "..".
  */
 export function isSafeAssetPath(path: string): boolean {
@@ -41,7 +43,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, camera: null, language: null, embed: false, notices };
+  const state: UrlState = { params, time: null, sky: null, boat: null, camera: null, language: null, embed: false, notices };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -62,6 +64,9 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
     } else if (key === 'sky') {
       if (isSafeAssetPath(text)) state.sky = text;
       else notices.push(message('skyInvalid', { text }));
+    } else if (key === 'boat') {
+      if (isSafeAssetPath(text)) state.boat = text;
+      else notices.push(message('boatPathInvalid', { text }));
     } else if (key === 'cam') {
       const camera = parseCameraText(text);
       if (camera) state.camera = camera;
@@ -90,6 +95,7 @@ export interface ShareableState {
   camera: CameraPose;
   language: Language;
   sky: string | null;
+  boat: string | null;
   embed: boolean;
 }
 
@@ -108,6 +114,7 @@ export function formatUrlState(state: ShareableState): string {
   query.set('cam', formatCameraText(state.camera));
   query.set('lang', state.language);
   if (state.sky !== null) query.set('sky', state.sky);
+  if (state.boat !== null) query.set('boat', state.boat);
   if (state.embed) query.set('embed', '1');
   return query.toString();
 }

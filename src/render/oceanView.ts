@@ -8,6 +8,7 @@ import { createGridGeometry } from './oceanGrid';
 import { fresnelTexture, heightmapTexture } from './dataTextures';
 import { SurfaceProbe } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
+import { SceneLights } from './sceneLights';
 import type { SurfaceSample } from '../sim/oceanSurface';
 
 /** Side of the displaced grid, metres, and its vertex spacing. */
@@ -38,6 +39,7 @@ export class OceanView {
   private probe?: SurfaceProbe;
   private heightmapView?: HeightmapView;
   private showHeightmaps = false;
+  private readonly lights: SceneLights;
 
   constructor(
     canvas: HTMLCanvasElement,
@@ -59,6 +61,7 @@ export class OceanView {
     // The grid follows the camera, so three's own bounds test would be against a stale box.
     this.ocean.frustumCulled = false;
     this.scene.add(this.ocean);
+    this.lights = new SceneLights(this.scene);
     this.applyParams(params);
   }
 
@@ -69,7 +72,9 @@ export class OceanView {
       this.material.setHeightmaps(this.heightmapTextures);
     }
     this.material.setWaterColor(params.waterColor);
-    this.material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
+    const sun = sunDirection(params.sunElevation, params.sunAzimuth);
+    this.material.setSunDirection(sun);
+    this.lights.update(sun, params.waterColor);
     this.material.setFresnelEnabled(params.fresnel);
     this.material.wireframe = params.wireframe;
     this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');

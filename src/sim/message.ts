@@ -21,7 +21,9 @@ export type MessageId =
   | 'shareCopied'
   | 'shareFallback'
   | 'webgl2Missing'
-  | 'startFailed';
+  | 'startFailed'
+  | 'boatPathInvalid'
+  | 'boatLoadFailed';
 
 export type MessageValues = Record<string, string | number | boolean>;
 

@@ -43,6 +43,10 @@ export const paramDefs = {
   waterColor: { kind: 'color', default: '#06283a', label: 'Deep water colour' },
   fresnel: { kind: 'boolean', default: true, label: 'Fresnel' },
   wireframe: { kind: 'boolean', default: false, label: 'Wireframe' },
+  boatSpeed: { kind: 'number', default: 0, min: -3, max: 12, step: 0.1, unit: 'm/s', label: 'Boat speed' },
+  boatHeading: { kind: 'number', default: 290, min: 0, max: 360, step: 1, unit: '°', label: 'Boat heading' },
+  boatResponse: { kind: 'number', default: 0.25, min: 0.02, max: 2, step: 0.01, unit: 's', label: 'Float response time' },
+  boatFollow: { kind: 'boolean', default: false, label: 'Camera follows boat' },
   // Teaching views of the seed's figures.
   shading: { kind: 'choice', default: 'water', options: ['water', 'normals'], label: 'Shading' },
   normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },

@@ -31,10 +31,10 @@ export function worldDirectionOfTexel(face: CubeFace, s: number, t: number): Vec
   return [-x / length, y / length, z / length];
 }
 
-const ZENITH: Rgb = [0.16, 0.36, 0.68];
-const HORIZON: Rgb = [0.74, 0.83, 0.9];
+export const ZENITH: Rgb = [0.16, 0.36, 0.68];
+export const HORIZON: Rgb = [0.74, 0.83, 0.9];
 const BELOW_HORIZON: Rgb = [0.2, 0.3, 0.36];
-const SUN: Rgb = [1.0, 0.96, 0.86];
+export const SUN: Rgb = [1.0, 0.96, 0.86];
 const CLOUD_LIT: Rgb = [1.0, 0.98, 0.95];
 const CLOUD_SHADE: Rgb = [0.66, 0.7, 0.76];
 

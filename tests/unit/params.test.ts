@@ -102,6 +102,14 @@ describe('parseUrlState', () => {
     expect(isSafeAssetPath('javascript:alert(1)')).toBe(false);
     expect(parseUrlState('?sky=https://evil.example/x').sky).toBeNull();
   });
+  it('reads a same-origin boat model path and refuses others with a notice', () => {
+    expect(parseUrlState('?boat=models/other.glb').boat).toBe('models/other.glb');
+    expect(parseUrlState('').boat).toBeNull();
+    const refused = parseUrlState('?boat=//evil.example/boat.glb');
+    expect(refused.boat).toBeNull();
+    expect(refused.notices).toEqual([{ id: 'boatPathInvalid', values: { text: '//evil.example/boat.glb' } }]);
+    expect(new Translator('en').message(refused.notices[0])).toMatch(/"boat=\/\/evil\.example\/boat\.glb" is not a path on this site/);
+  });
 });
 
 describe('choice parameters', () => {

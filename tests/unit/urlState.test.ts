@@ -22,7 +22,7 @@ function randomState(seed: number): ShareableState {
     else p[key] = def.min + random() * (def.max - def.min);
   }
   const v = (): [number, number, number] => [random() * 200 - 100, random() * 50 + 0.1, random() * 200 - 100];
-  return { params, time: random() * 1e5, camera: { position: v(), target: v() }, language: random() < 0.5 ? 'es' : 'en', sky: null, embed: false };
+  return { params, time: random() * 1e5, camera: { position: v(), target: v() }, language: random() < 0.5 ? 'es' : 'en', sky: null, boat: null, embed: false };
 }
 
 describe('URL state round trip', () => {

@@ -1,0 +1,85 @@
+import { paramDefs, type OceanParams } from '../sim/params';
+
+/** How fast a held key turns the boat, degrees per second. */
+const TURN_RATE = 45;
+/** How fast a held key changes the boat's speed, m/s per second. */
+const ACCELERATION = 2;
+
+const AHEAD = new Set(['KeyW', 'ArrowUp']);
+const ASTERN = new Set(['KeyS', 'ArrowDown']);
+const PORT = new Set(['KeyA', 'ArrowLeft']);
+const STARBOARD = new Set(['KeyD', 'ArrowRight']);
+
+/**
+ * Keyboard steering: W/↑ and S/↓ change the speed, A/← and D/→ turn to port and starboard,
+ * for as long as they are held. The keys change the same parameters as the GUI
+ * (boatSpeed, boatHeading), so the panel, the URL names and the API agree with them.
+ * Keys typed into a form field (the GUI's number boxes) are left alone.
+ */
+export class BoatSteering {
+  private readonly held = new Set<string>();
+  /** Keys pressed since the last frame: a tap shorter than a frame still counts for one. */
+  private readonly unapplied = new Set<string>();
+  /** Keys let go of before a frame applied them, to drop after the next one does. */
+  private readonly released = new Set<string>();
+
+  constructor(
+    private readonly target: Window | HTMLElement,
+    private readonly setParams: (change: Partial<OceanParams>) => void,
+    private readonly params: () => OceanParams,
+  ) {
+    target.addEventListener('keydown', this.onKeyDown);
+    target.addEventListener('keyup', this.onKeyUp);
+    target.addEventListener('blur', this.onBlur);
+  }
+
+  private readonly onKeyDown = (e: Event): void => {
+    const event = e as KeyboardEvent;
+    const element = event.target as HTMLElement | null;
+    if (element && ['INPUT', 'TEXTAREA', 'SELECT'].includes(element.tagName)) return;
+    if (![AHEAD, ASTERN, PORT, STARBOARD].some((keys) => keys.has(event.code))) return;
+    event.preventDefault();
+    if (!this.held.has(event.code)) this.unapplied.add(event.code);
+    this.held.add(event.code);
+    this.released.delete(event.code);
+  };
+
+  private readonly onKeyUp = (e: Event): void => {
+    const event = e as KeyboardEvent;
+    // Released before any frame applied it: let the next frame count it, then let go.
+    if (this.unapplied.has(event.code)) this.released.add(event.code);
+    else this.held.delete(event.code);
+  };
+
+  private readonly onBlur = (): void => {
+    this.held.clear();
+    this.unapplied.clear();
+    this.released.clear();
+  };
+
+  private holding(keys: Set<string>): number {
+    return [...keys].some((key) => this.held.has(key)) ? 1 : 0;
+  }
+
+  /** Applies the held keys over `seconds` of the frame loop's time. */
+  apply(seconds: number): void {
+    if (seconds <= 0) return;
+    const turn = this.holding(STARBOARD) - this.holding(PORT);
+    const throttle = this.holding(AHEAD) - this.holding(ASTERN);
+    for (const key of this.released) this.held.delete(key);
+    this.released.clear();
+    this.unapplied.clear();
+    if (turn === 0 && throttle === 0) return;
+    const { boatHeading, boatSpeed } = this.params();
+    const heading = (((boatHeading + turn * TURN_RATE * seconds) % 360) + 360) % 360;
+    const { min, max } = paramDefs.boatSpeed;
+    const speed = Math.min(max, Math.max(min, boatSpeed + throttle * ACCELERATION * seconds));
+    this.setParams({ boatHeading: heading, boatSpeed: speed });
+  }
+
+  dispose(): void {
+    this.target.removeEventListener('keydown', this.onKeyDown);
+    this.target.removeEventListener('keyup', this.onKeyUp);
+    this.target.removeEventListener('blur', this.onBlur);
+  }
+}

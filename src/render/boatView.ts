@@ -1,0 +1,25 @@
+import { Group, type Object3D, type Scene } from 'three';
+import type { BoatPose } from '../sim/boatPose';
+
+/** The boat in the scene: a group that carries the pose, holding the model once it is loaded. */
+export class BoatView {
+  private readonly group = new Group();
+
+  constructor(scene: Scene) {
+    this.group.name = 'Boat';
+    // Yaw, then pitch about the beam, then roll about the keel: the order of boatPose.ts.
+    this.group.rotation.order = 'YXZ';
+    this.group.visible = false;
+    scene.add(this.group);
+  }
+
+  setModel(model: Object3D): void {
+    this.group.add(model);
+    this.group.visible = true;
+  }
+
+  setPose(pose: BoatPose): void {
+    this.group.position.set(pose.x, pose.y, pose.z);
+    this.group.rotation.set(pose.pitch, -pose.heading, pose.roll);
+  }
+}

@@ -1,0 +1,154 @@
+import { describe, expect, it } from 'vitest';
+import { forwardOf, poseAxes, starboardOf, targetPose, type HullSize } from '../../src/sim/boatPose';
+import { followStep, type FollowerState } from '../../src/sim/dampedFollower';
+import { ANGLE_BAND, BOAT_EXTENT, BoatMotion, HEAVE_BAND } from '../../src/sim/boatMotion';
+import { seededRandom } from '../../src/sim/integerHash';
+
+const HULL: HullSize = { length: 8, beam: 2.6 };
+const dot = (a: number[], b: number[]) => a.reduce((s, v, i) => s + v * b[i], 0);
+
+describe('targetPose', () => {
+  it('lies level at the water height on a flat sea, whatever the heading', () => {
+    for (const heading of [0, 0.7, Math.PI, -2.1]) {
+      const pose = targetPose(() => 0.35, 12, -40, heading, HULL);
+      expect(pose).toEqual({ x: 12, y: 0.35, z: -40, heading, pitch: 0, roll: 0 });
+    }
+  });
+
+  it('follows the sign conventions: bow up on a slope rising ahead, starboard up on a slope rising to the right', () => {
+    // Heading 0 sails towards −z; the sea rising towards −z lifts the bow.
+    expect(targetPose((_x, z) => -0.1 * z, 0, 0, 0, HULL).pitch).toBeCloseTo(Math.atan(0.1), 12);
+    // Starboard is +x at heading 0: rising towards +x lifts starboard.
+    expect(targetPose((x) => 0.1 * x, 0, 0, 0, HULL).roll).toBeCloseTo(Math.atan(0.1), 12);
+    // Heading π/2 sails towards +x: the same sea now lifts the bow, and starboard (+z) is level.
+    const east = targetPose((x) => 0.1 * x, 0, 0, Math.PI / 2, HULL);
+    expect(east.pitch).toBeCloseTo(Math.atan(0.1), 12);
+    expect(east.roll).toBeCloseTo(0, 12);
+    expect(forwardOf(Math.PI / 2)[0]).toBeCloseTo(1, 12);
+    expect(starboardOf(0)).toEqual([1, 0]);
+  });
+
+  it('heaves by the height at the centre, not at the ends', () => {
+    const pose = targetPose((x, z) => (Math.abs(x) < 0.5 && Math.abs(z) < 0.5 ? 2 : 0), 0, 0, 0.3, HULL);
+    expect(pose.y).toBe(2);
+    expect(pose.pitch).toBe(0);
+    expect(pose.roll).toBe(0);
+  });
+
+  it('on random planes (seed 515) puts the up axis on the plane normal and the keel in the plane', () => {
+    const random = seededRandom(515);
+    for (let i = 0; i < 200; i++) {
+      const a = (random() * 2 - 1) * 0.6;
+      const b = (random() * 2 - 1) * 0.6;
+      const c = random() * 3;
+      const heading = random() * Math.PI * 2;
+      const x = (random() * 2 - 1) * 500;
+      const z = (random() * 2 - 1) * 500;
+      const pose = targetPose((px, pz) => a * px + b * pz + c, x, z, heading, HULL);
+      expect(pose.y).toBeCloseTo(a * x + b * z + c, 9);
+      const n = [-a, 1, -b].map((v) => v / Math.hypot(a, 1, b));
+      const axes = poseAxes(pose);
+      axes.up.forEach((v, k) => expect(v).toBeCloseTo(n[k], 12));
+      expect(dot(axes.forward, n)).toBeCloseTo(0, 12);
+      expect(dot(axes.starboard, n)).toBeCloseTo(0, 12);
+      // The keel still points along the heading seen from above.
+      const [fx, fz] = forwardOf(heading);
+      expect(Math.atan2(axes.forward[0], -axes.forward[2])).toBeCloseTo(Math.atan2(fx, -fz), 12);
+    }
+  });
+});
+
+describe('followStep', () => {
+  it('converges on a fixed target without overshoot, the same for any split of the time', () => {
+    let coarse: FollowerState = { value: 1, velocity: 0 };
+    let fine: FollowerState = { value: 1, velocity: 0 };
+    for (let i = 0; i < 50; i++) coarse = followStep(coarse, 0, 0.1, 4, 10);
+    for (let i = 0; i < 500; i++) {
+      fine = followStep(fine, 0, 0.01, 4, 10);
+      expect(fine.value).toBeGreaterThanOrEqual(0);
+    }
+    expect(coarse.value).toBeCloseTo(fine.value, 12);
+    expect(Math.abs(coarse.value)).toBeLessThan(1e-6);
+  });
+
+  it('holds the value within the band of a target that jumps', () => {
+    let state: FollowerState = { value: 0, velocity: 0 };
+    state = followStep(state, 5, 0.016, 4, 0.2);
+    expect(state.value).toBeCloseTo(4.8, 12);
+    state = followStep(state, -5, 0.016, 4, 0.2);
+    expect(state.value).toBeCloseTo(-4.8, 12);
+    // Held at the upper edge of the band, it may only move on towards the target.
+    expect(state.velocity).toBeLessThanOrEqual(0);
+  });
+});
+
+describe('BoatMotion', () => {
+  const still = { heading: 0, speed: 0, response: 0.25 };
+  const wave = (t: number) => (x: number, z: number) => 1.4 * Math.sin(0.05 * x + 0.7 * t) * Math.cos(0.05 * z) + 0.3 * Math.sin(1.3 * x - 2 * t);
+
+  it('sits exactly on the surface at the first frame and whenever the clock stands still', () => {
+    const motion = new BoatMotion([3, -7]);
+    const first = motion.update(10, still, HULL, wave(10));
+    expect(first.pose).toEqual(first.target);
+    motion.update(10.016, still, HULL, wave(10.016));
+    const frozen = motion.update(10.016, still, HULL, wave(10.016));
+    expect(frozen.pose).toEqual(frozen.target);
+  });
+
+  it('is deterministic for a sequence of times and stays in its band on a moving sea', () => {
+    const run = () => {
+      const motion = new BoatMotion();
+      const random = seededRandom(77);
+      const poses = [];
+      let t = 0;
+      for (let i = 0; i < 600; i++) {
+        t += 0.005 + random() * 0.05;
+        const { pose, target } = motion.update(t, { heading: 0.4, speed: 2, response: 0.25 }, HULL, wave(t));
+        expect(Math.abs(pose.y - target.y)).toBeLessThanOrEqual(HEAVE_BAND + 1e-12);
+        expect(Math.abs(pose.pitch - target.pitch)).toBeLessThanOrEqual(ANGLE_BAND + 1e-12);
+        expect(Math.abs(pose.roll - target.roll)).toBeLessThanOrEqual(ANGLE_BAND + 1e-12);
+        poses.push(pose);
+      }
+      return poses;
+    };
+    expect(run()).toEqual(run());
+  });
+
+  it('settles on the target of a still sea after an abrupt change, and never leaves the band meanwhile', () => {
+    const motion = new BoatMotion([0, 0]);
+    motion.update(0, still, HULL, () => 0);
+    let state = motion.update(0.016, still, HULL, (x) => 3 + 0.3 * x);
+    expect(state.pose.y).toBeCloseTo(3 - HEAVE_BAND, 12);
+    for (let t = 0.032; t < 5; t += 0.016) {
+      state = motion.update(t, still, HULL, (x) => 3 + 0.3 * x);
+      expect(Math.abs(state.pose.roll - state.target.roll)).toBeLessThanOrEqual(ANGLE_BAND + 1e-12);
+    }
+    expect(state.pose.y).toBeCloseTo(3, 6);
+    expect(state.pose.roll).toBeCloseTo(Math.atan(0.3), 6);
+  });
+
+  it('swings to a new heading the short way round and settles on it', () => {
+    const deg = Math.PI / 180;
+    const motion = new BoatMotion([0, 0]);
+    motion.update(0, { ...still, heading: 350 * deg }, HULL, () => 0);
+    let heading = 0;
+    for (let i = 1; i <= 1500; i++) {
+      heading = motion.update(i * 0.02, { ...still, heading: 10 * deg }, HULL, () => 0).pose.heading;
+      expect(heading).toBeGreaterThanOrEqual(0);
+      expect(heading).toBeLessThan(2 * Math.PI);
+      // Through north (0), never round through south.
+      expect(heading < 10.0001 * deg || heading > 349.9999 * deg).toBe(true);
+    }
+    expect(heading).toBeCloseTo(10 * deg, 9);
+  });
+
+  it('sails along its heading at its speed and stops at the edge of the ocean', () => {
+    const motion = new BoatMotion([0, 0]);
+    motion.update(0, { heading: Math.PI / 2, speed: 5, response: 0.25 }, HULL, () => 0);
+    let state = motion.update(0.1, { heading: Math.PI / 2, speed: 5, response: 0.25 }, HULL, () => 0);
+    expect(state.pose.x).toBeCloseTo(0.5, 12);
+    expect(state.pose.z).toBeCloseTo(0, 12);
+    for (let i = 2; i < 5000; i++) state = motion.update(i * 0.1, { heading: Math.PI / 2, speed: 10, response: 0.25 }, HULL, () => 0);
+    expect(state.pose.x).toBe(BOAT_EXTENT);
+  });
+});
