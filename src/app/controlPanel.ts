@@ -5,8 +5,18 @@ const FOLDERS: { title: string; keys: ParamKey[] }[] = [
   { title: 'Swell', keys: ['swellAmplitude', 'swellFrequency'] },
   { title: 'Ripples (Perlin)', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'Light & water', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
+  { title: 'LOD & culling', keys: ['lodDistance', 'lodBands', 'lodColors', 'freezeCulling', 'lodBruteForce'] },
   { title: 'View', keys: ['wireframe'] },
 ];
+
+/** What the LOD debugger's read-only counters show. */
+export interface LiveCounts {
+  chunksVisible: number;
+  chunksTotal: number;
+  triangles: number;
+  drawCalls: number;
+  lodCounts: number[];
+}
 
 export interface ControlPanelHooks {
   onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
@@ -21,6 +31,8 @@ export class ControlPanel {
   readonly gui: GUI;
   private readonly model: OceanParams & { playing: boolean };
   private readonly controllers: Controller[] = [];
+  private readonly counts = { chunks: '', triangles: '', drawCalls: '', perBand: '' };
+  private readonly countControllers: Controller[] = [];
 
   constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks) {
     this.gui = new GUI({ container, title: 'Oceano' });
@@ -29,6 +41,14 @@ export class ControlPanel {
       const group = this.gui.addFolder(folder.title);
       for (const key of folder.keys) this.controllers.push(this.addControl(group, key, hooks));
     }
+    const live = this.gui.addFolder('LOD counts (live)');
+    const labels: [keyof typeof this.counts, string][] = [
+      ['chunks', 'Chunks visible / total'],
+      ['triangles', 'Triangles'],
+      ['drawCalls', 'Draw calls'],
+      ['perBand', 'Chunks per band'],
+    ];
+    for (const [key, label] of labels) this.countControllers.push(live.add(this.counts, key).name(label).disable());
     this.controllers.push(
       this.gui.add(this.model, 'playing').name('Play').onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
@@ -50,6 +70,14 @@ export class ControlPanel {
   sync(params: OceanParams, playing: boolean): void {
     Object.assign(this.model, params, { playing });
     for (const controller of this.controllers) controller.updateDisplay();
+  }
+
+  showCounts(counts: LiveCounts): void {
+    this.counts.chunks = `${counts.chunksVisible} / ${counts.chunksTotal}`;
+    this.counts.triangles = counts.triangles.toLocaleString('en-US');
+    this.counts.drawCalls = String(counts.drawCalls);
+    this.counts.perBand = counts.lodCounts.join(' · ');
+    for (const controller of this.countControllers) controller.updateDisplay();
   }
 
   dispose(): void {

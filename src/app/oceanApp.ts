@@ -13,6 +13,8 @@ import type { UrlState } from './urlState';
 /** How often a frame is followed by a GPU sync to measure its full cost (frames). */
 const SYNC_EVERY = 8;
 const FRAME_SAMPLES = 30;
+/** How often the GUI's live LOD counts are refreshed (frames). */
+const COUNTS_EVERY = 10;
 
 export interface CameraPose {
   position: [number, number, number];
@@ -23,6 +25,10 @@ export interface OceanStats {
   frameMs: number;
   drawCalls: number;
   triangles: number;
+  chunksTotal: number;
+  chunksVisible: number;
+  /** Visible chunks per LOD band, nearest band first. */
+  lodCounts: number[];
 }
 
 /**
@@ -102,6 +108,7 @@ export class OceanApp {
   renderFrame(sync = this.frameCount % SYNC_EVERY === 0): void {
     const start = performance.now();
     this.view.render(this.clock.time);
+    if (this.frameCount % COUNTS_EVERY === 0) this.panel?.showCounts(this.view.stats());
     this.frameCount++;
     if (!sync) return;
     const gl = this.view.renderer.getContext();

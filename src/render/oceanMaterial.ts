@@ -2,6 +2,7 @@ import { Color, ShaderMaterial, Vector3, type CubeTexture, type Texture } from '
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import type { SurfaceState } from '../sim/surface';
+import { BASE_STEP, CHUNK_QUADS } from '../sim/lodBands';
 import { registerShaderChunks } from './shaderChunks';
 import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './surfaceUniforms';
 
@@ -24,6 +25,9 @@ export class OceanMaterial extends ShaderMaterial {
         uSunDirection: { value: new Vector3(0, 1, 0) },
         uSunColor: { value: new Color(1.0, 0.93, 0.8) },
         uHazeDensity: { value: 0.0012 },
+        uBaseStep: { value: BASE_STEP },
+        uChunkQuads: { value: CHUNK_QUADS },
+        uLodColors: { value: false },
       },
     });
   }
@@ -51,5 +55,10 @@ export class OceanMaterial extends ShaderMaterial {
 
   setFresnelEnabled(enabled: boolean): void {
     this.uniforms.uFresnelEnabled.value = enabled;
+  }
+
+  /** The LOD debugger's view: each chunk tinted by its band. */
+  setLodColors(enabled: boolean): void {
+    this.uniforms.uLodColors.value = enabled;
   }
 }

@@ -35,6 +35,11 @@ export const paramDefs = {
   waterColor: { kind: 'color', default: '#06283a', label: 'Deep water colour' },
   fresnel: { kind: 'boolean', default: true, label: 'Fresnel' },
   wireframe: { kind: 'boolean', default: false, label: 'Wireframe' },
+  lodDistance: { kind: 'number', default: 100, min: 10, max: 1000, step: 5, unit: 'm', label: 'LOD distance L' },
+  lodBands: { kind: 'integer', default: 6, min: 1, max: 6, unit: '', label: 'LOD bands' },
+  lodColors: { kind: 'boolean', default: false, label: 'Colour chunks by band' },
+  freezeCulling: { kind: 'boolean', default: false, label: 'Freeze culling' },
+  lodBruteForce: { kind: 'boolean', default: false, label: 'Brute force (full grid, no culling)' },
 } as const satisfies Record<string, ParamDef>;
 
 export type ParamKey = keyof typeof paramDefs;

@@ -1,0 +1,198 @@
+import {
+  BufferAttribute,
+  CameraHelper,
+  DynamicDrawUsage,
+  Frustum,
+  Group,
+  InstancedBufferAttribute,
+  InstancedBufferGeometry,
+  Matrix4,
+  Mesh,
+  Vector3,
+  type PerspectiveCamera,
+} from 'three';
+import { ChunkSelector, OCEAN_EXTENT, oceanOrigin } from '../sim/chunkSelection';
+import type { Plane } from '../sim/frustumMath';
+import { BAND_STEPS, bandQuads, CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
+import type { OceanMaterial } from './oceanMaterial';
+
+export interface LodSettings {
+  lodDistance: number;
+  lodBands: number;
+  lodBruteForce: boolean;
+  freezeCulling: boolean;
+}
+
+export interface ChunkStats {
+  chunksTotal: number;
+  chunksVisible: number;
+  /** Visible chunks per band, nearest band first. */
+  lodCounts: number[];
+}
+
+/**
+ * One band's shared grid: vertices every `step` full-resolution quads, in integer grid
+ * units (the shader scales them), counter-clockwise seen from above.
+ */
+function bandGeometry(band: number, capacity: number): InstancedBufferGeometry {
+  const step = BAND_STEPS[band];
+  const quads = bandQuads(band);
+  const perSide = quads + 1;
+  const positions = new Float32Array(perSide * perSide * 3);
+  for (let j = 0; j < perSide; j++) {
+    for (let i = 0; i < perSide; i++) {
+      const o = (j * perSide + i) * 3;
+      positions[o] = i * step;
+      positions[o + 2] = j * step;
+    }
+  }
+  const indices = new Uint16Array(quads * quads * 6);
+  let k = 0;
+  for (let j = 0; j < quads; j++) {
+    for (let i = 0; i < quads; i++) {
+      const a = j * perSide + i;
+      const b = a + 1;
+      const c = a + perSide;
+      const d = c + 1;
+      indices.set([a, c, b, b, c, d], k);
+      k += 6;
+    }
+  }
+  const geometry = new InstancedBufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(positions, 3));
+  geometry.setIndex(new BufferAttribute(indices, 1));
+  geometry.setAttribute('aChunk', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
+  geometry.setAttribute('aEdgeSteps', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
+  geometry.instanceCount = 0;
+  return geometry;
+}
+
+/**
+ * The ocean as chunks: each frame the quadtree picks the chunks in view, each gets its
+ * band, and every band is drawn as one instanced mesh of its shared grid (one draw call
+ * per band in use). Nothing is allocated per frame.
+ */
+export class OceanChunks {
+  readonly group = new Group();
+  private readonly selector = new ChunkSelector();
+  private readonly meshes: Mesh<InstancedBufferGeometry, OceanMaterial>[] = [];
+  private readonly frustum = new Frustum();
+  private readonly viewProjection = new Matrix4();
+  private readonly planes: Plane[] = Array.from({ length: 6 }, () => ({ nx: 0, ny: 0, nz: 1, d: 0 }));
+  private readonly cameraPosition = new Vector3();
+  private readonly cullCamera: [number, number, number] = [0, 0, 0];
+  private bandsInUse = 1;
+  private cullOrigin: [number, number] = [0, 0];
+  private frozenHelper: CameraHelper | null = null;
+  private readonly fill = new Array<number>(MAX_LOD_BANDS).fill(0);
+
+  constructor(material: OceanMaterial) {
+    const capacity = this.selector.total;
+    for (let band = 0; band < MAX_LOD_BANDS; band++) {
+      const mesh = new Mesh(bandGeometry(band, capacity), material);
+      // The quadtree has already culled; three's test would use a stale, origin-sized sphere.
+      mesh.frustumCulled = false;
+      this.meshes.push(mesh);
+      this.group.add(mesh);
+    }
+  }
+
+  /** Chooses and uploads this frame's chunks for `camera` (or the frozen one). */
+  update(camera: PerspectiveCamera, settings: LodSettings, maxDisplacement: number): void {
+    this.setFrozen(settings.freezeCulling, camera);
+    if (!this.frozenHelper) this.captureCullingView(camera);
+    this.bandsInUse = settings.lodBruteForce ? 1 : settings.lodBands;
+    const selector = this.selector;
+    selector.select({
+      planes: this.planes,
+      camera: this.cullCamera,
+      originX: this.cullOrigin[0],
+      originZ: this.cullOrigin[1],
+      maxDisplacement,
+      lodDistance: settings.lodDistance,
+      lodBands: settings.lodBands,
+      bruteForce: settings.lodBruteForce,
+    });
+    this.fill.fill(0);
+    for (let n = 0; n < selector.count; n++) {
+      const band = selector.bands[n];
+      const geometry = this.meshes[band].geometry;
+      const chunk = geometry.getAttribute('aChunk') as InstancedBufferAttribute;
+      const edges = geometry.getAttribute('aEdgeSteps') as InstancedBufferAttribute;
+      const leaf = selector.leaves[n];
+      const i = leaf % selector.side;
+      const j = (leaf - i) / selector.side;
+      const o = this.fill[band]++ * 4;
+      const c = chunk.array as Float32Array;
+      c[o] = this.cullOrigin[0] + i * CHUNK_SIZE;
+      c[o + 1] = this.cullOrigin[1] + j * CHUNK_SIZE;
+      c[o + 2] = band;
+      const e = edges.array as Float32Array;
+      for (let s = 0; s < 4; s++) e[o + s] = selector.edgeSteps[n * 4 + s];
+    }
+    for (let band = 0; band < MAX_LOD_BANDS; band++) {
+      const mesh = this.meshes[band];
+      const count = this.fill[band];
+      mesh.geometry.instanceCount = count;
+      mesh.visible = count > 0;
+      if (count === 0) continue;
+      for (const name of ['aChunk', 'aEdgeSteps']) {
+        const attribute = mesh.geometry.getAttribute(name) as InstancedBufferAttribute;
+        attribute.clearUpdateRanges();
+        attribute.addUpdateRange(0, count * 4);
+        attribute.needsUpdate = true;
+      }
+    }
+  }
+
+  private captureCullingView(camera: PerspectiveCamera): void {
+    camera.updateMatrixWorld();
+    this.viewProjection.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
+    this.frustum.setFromProjectionMatrix(this.viewProjection);
+    this.frustum.planes.forEach((plane, k) => {
+      const target = this.planes[k];
+      target.nx = plane.normal.x;
+      target.ny = plane.normal.y;
+      target.nz = plane.normal.z;
+      target.d = plane.constant;
+    });
+    camera.getWorldPosition(this.cameraPosition).toArray(this.cullCamera);
+    this.cullOrigin = oceanOrigin(this.cullCamera[0], this.cullCamera[2]);
+  }
+
+  /**
+   * "Freeze culling": keeps the frustum, position and origin of the moment it was switched
+   * on, and draws that frustum as lines (out to the ocean's edge), so orbiting away shows
+   * from outside which chunks were chosen.
+   */
+  private setFrozen(frozen: boolean, camera: PerspectiveCamera): void {
+    if (frozen === (this.frozenHelper !== null)) return;
+    if (frozen) {
+      this.captureCullingView(camera);
+      const snapshot = camera.clone();
+      snapshot.far = OCEAN_EXTENT / 2;
+      snapshot.updateProjectionMatrix();
+      snapshot.updateMatrixWorld();
+      this.frozenHelper = new CameraHelper(snapshot);
+      this.frozenHelper.update();
+      this.group.add(this.frozenHelper);
+    } else if (this.frozenHelper) {
+      this.group.remove(this.frozenHelper);
+      this.frozenHelper.dispose();
+      this.frozenHelper = null;
+    }
+  }
+
+  stats(): ChunkStats {
+    return {
+      chunksTotal: this.selector.total,
+      chunksVisible: this.selector.count,
+      lodCounts: this.selector.lodCounts.slice(0, this.bandsInUse),
+    };
+  }
+
+  dispose(): void {
+    for (const mesh of this.meshes) mesh.geometry.dispose();
+    this.frozenHelper?.dispose();
+  }
+}
