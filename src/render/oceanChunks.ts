@@ -13,7 +13,8 @@ import {
 } from 'three';
 import { ChunkSelector, OCEAN_EXTENT, oceanOrigin } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
-import { BAND_STEPS, bandQuads, CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
+import { CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
+import { chunkGrid } from '../sim/chunkGrid';
 import type { OceanMaterial } from './oceanMaterial';
 
 export interface LodSettings {
@@ -30,34 +31,9 @@ export interface ChunkStats {
   lodCounts: number[];
 }
 
-/**
- * One band's shared grid: vertices every `step` full-resolution quads, in integer grid
- * units (the shader scales them), counter-clockwise seen from above.
- */
+/** A band's shared grid with room for `capacity` chunk instances. */
 function bandGeometry(band: number, capacity: number): InstancedBufferGeometry {
-  const step = BAND_STEPS[band];
-  const quads = bandQuads(band);
-  const perSide = quads + 1;
-  const positions = new Float32Array(perSide * perSide * 3);
-  for (let j = 0; j < perSide; j++) {
-    for (let i = 0; i < perSide; i++) {
-      const o = (j * perSide + i) * 3;
-      positions[o] = i * step;
-      positions[o + 2] = j * step;
-    }
-  }
-  const indices = new Uint16Array(quads * quads * 6);
-  let k = 0;
-  for (let j = 0; j < quads; j++) {
-    for (let i = 0; i < quads; i++) {
-      const a = j * perSide + i;
-      const b = a + 1;
-      const c = a + perSide;
-      const d = c + 1;
-      indices.set([a, c, b, b, c, d], k);
-      k += 6;
-    }
-  }
+  const { positions, indices } = chunkGrid(band);
   const geometry = new InstancedBufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(positions, 3));
   geometry.setIndex(new BufferAttribute(indices, 1));

@@ -9,7 +9,7 @@
  * still cut corners. After the move every segment of the fine edge is either degenerate or
  * exactly one coarse segment, with bit-identical endpoints: watertight by construction.
  *
- * shaders/oceanChunk.vert does the same with GLSL integers; keep the two in step.
+ * shaders/ocean.vert does the same with GLSL integers; keep the two in step.
  */
 export function snapEdgeCoordinate(k: number, edgeStep: number): number {
   return Math.floor((k + Math.floor(edgeStep / 2)) / edgeStep) * edgeStep;
@@ -27,4 +27,18 @@ export function snappedEdge(quads: number, ownStep: number, edgeStep: number): n
     if (out.length === 0 || out[out.length - 1] !== s) out.push(s);
   }
   return out;
+}
+
+/**
+ * Where the vertex shader puts grid vertex (i, j) of a chunk `quads` long whose sides −x,
+ * +x, −z, +z share the steps `edgeSteps` with their neighbours (the twin of shaders/ocean.vert).
+ */
+export function snapGridVertex(i: number, j: number, quads: number, edgeSteps: readonly number[]): [number, number] {
+  let si = i;
+  let sj = j;
+  if (i === 0) sj = snapEdgeCoordinate(j, edgeSteps[0]);
+  else if (i === quads) sj = snapEdgeCoordinate(j, edgeSteps[1]);
+  if (j === 0) si = snapEdgeCoordinate(i, edgeSteps[2]);
+  else if (j === quads) si = snapEdgeCoordinate(i, edgeSteps[3]);
+  return [si, sj];
 }
