@@ -1,6 +1,6 @@
 import { ChunkQuadtree } from './chunkQuadtree';
-import { distanceToBox, type Plane } from './frustumMath';
-import { bandForDistance, bandStep, CHUNK_SIZE, MAX_LOD_BANDS } from './lodBands';
+import type { Plane } from './frustumMath';
+import { BAND_STEPS, bandStart, bandStep, CHUNK_SIZE, MAX_LOD_BANDS } from './lodBands';
 
 /** Chunks along each side of the ocean: 84 × 48 m = 4032 m. */
 export const OCEAN_CHUNKS_PER_SIDE = 84;
@@ -51,6 +51,8 @@ export class ChunkSelector {
     this.leaves = new Uint32Array(side * side);
     this.bands = new Uint8Array(side * side);
     this.edgeSteps = new Uint8Array(side * side * 4);
+    this.bandCache = new Uint8Array(side * side);
+    this.bandFrame = new Uint32Array(side * side);
   }
 
   get total(): number {
@@ -63,38 +65,86 @@ export class ChunkSelector {
     if (input.bruteForce) {
       for (let k = 0; k < this.total; k++) this.leaves[k] = k;
       this.count = this.total;
-    } else {
-      this.count = this.quadtree.select(input.planes, originX, originZ, CHUNK_SIZE, -h, h, this.leaves);
+      this.bands.fill(0, 0, this.total);
+      this.edgeSteps.fill(bandStep(0), 0, this.total * 4);
+      this.lodCounts.fill(0);
+      this.lodCounts[0] = this.total;
+      return this.count;
     }
+    this.count = this.quadtree.select(input.planes, originX, originZ, CHUNK_SIZE, -h, h, this.leaves);
+    this.prepareBands(input);
     this.lodCounts.fill(0);
     for (let n = 0; n < this.count; n++) {
       const leaf = this.leaves[n];
       const i = leaf % side;
       const j = (leaf - i) / side;
-      const band = input.bruteForce ? 0 : this.bandOf(input, i, j);
+      const band = this.cachedBand(i, j);
       this.bands[n] = band;
       this.lodCounts[band]++;
-      const own = bandStep(band);
+      const own = BAND_STEPS[band];
       const o = n * 4;
-      if (input.bruteForce) {
-        this.edgeSteps.fill(own, o, o + 4);
-        continue;
-      }
-      this.edgeSteps[o] = i > 0 ? Math.max(own, bandStep(this.bandOf(input, i - 1, j))) : own;
-      this.edgeSteps[o + 1] = i < side - 1 ? Math.max(own, bandStep(this.bandOf(input, i + 1, j))) : own;
-      this.edgeSteps[o + 2] = j > 0 ? Math.max(own, bandStep(this.bandOf(input, i, j - 1))) : own;
-      this.edgeSteps[o + 3] = j < side - 1 ? Math.max(own, bandStep(this.bandOf(input, i, j + 1))) : own;
+      this.edgeSteps[o] = i > 0 ? Math.max(own, BAND_STEPS[this.cachedBand(i - 1, j)]) : own;
+      this.edgeSteps[o + 1] = i < side - 1 ? Math.max(own, BAND_STEPS[this.cachedBand(i + 1, j)]) : own;
+      this.edgeSteps[o + 2] = j > 0 ? Math.max(own, BAND_STEPS[this.cachedBand(i, j - 1)]) : own;
+      this.edgeSteps[o + 3] = j < side - 1 ? Math.max(own, BAND_STEPS[this.cachedBand(i, j + 1)]) : own;
     }
     return this.count;
   }
 
   /** The band of chunk (i, j), whether or not it is in view (neighbours need it too). */
   bandOf(input: SelectionInput, i: number, j: number): number {
-    const [cx, cy, cz] = input.camera;
-    const x0 = input.originX + i * CHUNK_SIZE;
-    const z0 = input.originZ + j * CHUNK_SIZE;
-    const h = input.maxDisplacement;
-    const distance = distanceToBox(cx, cy, cz, x0, -h, z0, x0 + CHUNK_SIZE, h, z0 + CHUNK_SIZE);
-    return bandForDistance(distance, input.lodDistance, input.lodBands);
+    this.prepareBands(input);
+    return this.computeBand(i, j);
+  }
+
+  // Per-frame state of the band computation: bands are compared as squared distances
+  // against squared band starts (no square root, no power), and each chunk's band is
+  // computed once per frame although up to five chunks ask for it.
+  private readonly startSquared = new Float64Array(MAX_LOD_BANDS);
+  private readonly bandCache: Uint8Array;
+  private readonly bandFrame: Uint32Array;
+  private frame = 0;
+  private bandCount = 1;
+  private camX = 0;
+  private camY = 0;
+  private camZ = 0;
+  private cellX = 0;
+  private cellZ = 0;
+  private boundsHeight = 0;
+
+  private prepareBands(input: SelectionInput): void {
+    this.frame = (this.frame + 1) >>> 0 || 1;
+    this.bandCount = Math.max(1, Math.min(MAX_LOD_BANDS, Math.floor(input.lodBands)));
+    for (let b = 1; b < this.bandCount; b++) this.startSquared[b] = bandStart(b, input.lodDistance) ** 2;
+    [this.camX, this.camY, this.camZ] = input.camera;
+    this.cellX = input.originX;
+    this.cellZ = input.originZ;
+    this.boundsHeight = input.maxDisplacement;
+  }
+
+  private cachedBand(i: number, j: number): number {
+    const leaf = j * this.side + i;
+    if (this.bandFrame[leaf] === this.frame) return this.bandCache[leaf];
+    const band = this.computeBand(i, j);
+    this.bandCache[leaf] = band;
+    this.bandFrame[leaf] = this.frame;
+    return band;
+  }
+
+  /** Band from the squared distance between the camera and the chunk's box. */
+  private computeBand(i: number, j: number): number {
+    const x0 = this.cellX + i * CHUNK_SIZE;
+    const z0 = this.cellZ + j * CHUNK_SIZE;
+    const x = this.camX;
+    const z = this.camZ;
+    const y = this.camY;
+    const h = this.boundsHeight;
+    const dx = x < x0 ? x0 - x : x > x0 + CHUNK_SIZE ? x - x0 - CHUNK_SIZE : 0;
+    const dy = y > h ? y - h : y < -h ? -h - y : 0;
+    const dz = z < z0 ? z0 - z : z > z0 + CHUNK_SIZE ? z - z0 - CHUNK_SIZE : 0;
+    const d2 = dx * dx + dy * dy + dz * dz;
+    let band = 0;
+    while (band + 1 < this.bandCount && d2 >= this.startSquared[band + 1]) band++;
+    return band;
   }
 }

@@ -208,7 +208,7 @@ function drawnPair(bandA: number, bandB: number, alongX: boolean): [number, numb
       if (area !== 0) triangles.push(corners);
     }
   };
-  const own = (band: number) => [1, 2, 3, 4].map(() => BAND_STEPS[band]);
+  const own = (band: number): number[] => [1, 2, 3, 4].map(() => BAND_STEPS[band]);
   const a = own(bandA);
   const b = own(bandB);
   if (alongX) {
