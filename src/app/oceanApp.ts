@@ -179,6 +179,13 @@ export class OceanApp {
     return { frameMs, ...this.view.stats() };
   }
 
+  lodUpdateMs(batches?: number): number {
+    if (batches !== undefined && !(Number.isInteger(batches) && batches >= 1 && batches <= 1000)) {
+      throw new TypeError(`lodUpdateMs needs a whole number of batches between 1 and 1000, got ${String(batches)}.`);
+    }
+    return this.view.timeLodUpdate(batches);
+  }
+
   fresnelTable(): Float32Array {
     return this.view.fresnelData.slice();
   }

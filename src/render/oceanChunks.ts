@@ -61,6 +61,10 @@ export class OceanChunks {
   private cullOrigin: [number, number] = [0, 0];
   private frozenHelper: CameraHelper | null = null;
   private readonly fill = new Array<number>(MAX_LOD_BANDS).fill(0);
+  /** Per band: the instance attributes and their arrays, looked up once. */
+  private readonly instanceAttributes: InstancedBufferAttribute[][] = [];
+  private readonly chunkData: Float32Array[] = [];
+  private readonly edgeData: Float32Array[] = [];
 
   constructor(material: OceanMaterial) {
     const capacity = this.selector.total;
@@ -70,6 +74,11 @@ export class OceanChunks {
       mesh.frustumCulled = false;
       this.meshes.push(mesh);
       this.group.add(mesh);
+      const chunk = mesh.geometry.getAttribute('aChunk') as InstancedBufferAttribute;
+      const edges = mesh.geometry.getAttribute('aEdgeSteps') as InstancedBufferAttribute;
+      this.instanceAttributes.push([chunk, edges]);
+      this.chunkData.push(chunk.array as Float32Array);
+      this.edgeData.push(edges.array as Float32Array);
     }
   }
 
@@ -90,30 +99,31 @@ export class OceanChunks {
       bruteForce: settings.lodBruteForce,
     });
     this.fill.fill(0);
+    const side = selector.side;
+    const [originX, originZ] = this.cullOrigin;
     for (let n = 0; n < selector.count; n++) {
       const band = selector.bands[n];
-      const geometry = this.meshes[band].geometry;
-      const chunk = geometry.getAttribute('aChunk') as InstancedBufferAttribute;
-      const edges = geometry.getAttribute('aEdgeSteps') as InstancedBufferAttribute;
       const leaf = selector.leaves[n];
-      const i = leaf % selector.side;
-      const j = (leaf - i) / selector.side;
+      const i = leaf % side;
+      const j = (leaf - i) / side;
       const o = this.fill[band]++ * 4;
-      const c = chunk.array as Float32Array;
-      c[o] = this.cullOrigin[0] + i * CHUNK_SIZE;
-      c[o + 1] = this.cullOrigin[1] + j * CHUNK_SIZE;
-      c[o + 2] = band;
-      const e = edges.array as Float32Array;
-      for (let s = 0; s < 4; s++) e[o + s] = selector.edgeSteps[n * 4 + s];
+      const chunk = this.chunkData[band];
+      chunk[o] = originX + i * CHUNK_SIZE;
+      chunk[o + 1] = originZ + j * CHUNK_SIZE;
+      chunk[o + 2] = band;
+      const edges = this.edgeData[band];
+      const e = n * 4;
+      edges[o] = selector.edgeSteps[e];
+      edges[o + 1] = selector.edgeSteps[e + 1];
+      edges[o + 2] = selector.edgeSteps[e + 2];
+      edges[o + 3] = selector.edgeSteps[e + 3];
     }
     for (let band = 0; band < MAX_LOD_BANDS; band++) {
-      const mesh = this.meshes[band];
       const count = this.fill[band];
-      mesh.geometry.instanceCount = count;
-      mesh.visible = count > 0;
+      this.meshes[band].geometry.instanceCount = count;
+      this.meshes[band].visible = count > 0;
       if (count === 0) continue;
-      for (const name of ['aChunk', 'aEdgeSteps']) {
-        const attribute = mesh.geometry.getAttribute(name) as InstancedBufferAttribute;
+      for (const attribute of this.instanceAttributes[band]) {
         attribute.clearUpdateRanges();
         attribute.addUpdateRange(0, count * 4);
         attribute.needsUpdate = true;
