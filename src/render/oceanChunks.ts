@@ -11,7 +11,7 @@ import {
   Vector3,
   type PerspectiveCamera,
 } from 'three';
-import { ChunkSelector, OCEAN_EXTENT, oceanOrigin } from '../sim/chunkSelection';
+import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
 import { CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
 import { chunkGrid } from '../sim/chunkGrid';
@@ -58,7 +58,17 @@ export class OceanChunks {
   private readonly cameraPosition = new Vector3();
   private readonly cullCamera: [number, number, number] = [0, 0, 0];
   private bandsInUse = 1;
-  private cullOrigin: [number, number] = [0, 0];
+  /** Reused every frame; its planes, camera and origin are those culling uses. */
+  private readonly selectionInput: SelectionInput = {
+    planes: this.planes,
+    camera: this.cullCamera,
+    originX: 0,
+    originZ: 0,
+    maxDisplacement: 0,
+    lodDistance: 1,
+    lodBands: 1,
+    bruteForce: false,
+  };
   private frozenHelper: CameraHelper | null = null;
   private readonly fill = new Array<number>(MAX_LOD_BANDS).fill(0);
   /** Per band: the instance attributes and their arrays, looked up once. */
@@ -88,19 +98,15 @@ export class OceanChunks {
     if (!this.frozenHelper) this.captureCullingView(camera);
     this.bandsInUse = settings.lodBruteForce ? 1 : settings.lodBands;
     const selector = this.selector;
-    selector.select({
-      planes: this.planes,
-      camera: this.cullCamera,
-      originX: this.cullOrigin[0],
-      originZ: this.cullOrigin[1],
-      maxDisplacement,
-      lodDistance: settings.lodDistance,
-      lodBands: settings.lodBands,
-      bruteForce: settings.lodBruteForce,
-    });
+    const input = this.selectionInput;
+    input.maxDisplacement = maxDisplacement;
+    input.lodDistance = settings.lodDistance;
+    input.lodBands = settings.lodBands;
+    input.bruteForce = settings.lodBruteForce;
+    selector.select(input);
     this.fill.fill(0);
     const side = selector.side;
-    const [originX, originZ] = this.cullOrigin;
+    const { originX, originZ } = input;
     for (let n = 0; n < selector.count; n++) {
       const band = selector.bands[n];
       const leaf = selector.leaves[n];
@@ -143,7 +149,7 @@ export class OceanChunks {
       target.d = plane.constant;
     });
     camera.getWorldPosition(this.cameraPosition).toArray(this.cullCamera);
-    this.cullOrigin = oceanOrigin(this.cullCamera[0], this.cullCamera[2]);
+    [this.selectionInput.originX, this.selectionInput.originZ] = oceanOrigin(this.cullCamera[0], this.cullCamera[2]);
   }
 
   /**

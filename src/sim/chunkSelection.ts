@@ -91,12 +91,6 @@ export class ChunkSelector {
     return this.count;
   }
 
-  /** The band of chunk (i, j), whether or not it is in view (neighbours need it too). */
-  bandOf(input: SelectionInput, i: number, j: number): number {
-    this.prepareBands(input);
-    return this.computeBand(i, j);
-  }
-
   // Per-frame state of the band computation: bands are compared as squared distances
   // against squared band starts (no square root, no power), and each chunk's band is
   // computed once per frame although up to five chunks ask for it.
@@ -116,7 +110,9 @@ export class ChunkSelector {
     this.frame = (this.frame + 1) >>> 0 || 1;
     this.bandCount = Math.max(1, Math.min(MAX_LOD_BANDS, Math.floor(input.lodBands)));
     for (let b = 1; b < this.bandCount; b++) this.startSquared[b] = bandStart(b, input.lodDistance) ** 2;
-    [this.camX, this.camY, this.camZ] = input.camera;
+    this.camX = input.camera[0];
+    this.camY = input.camera[1];
+    this.camZ = input.camera[2];
     this.cellX = input.originX;
     this.cellZ = input.originZ;
     this.boundsHeight = input.maxDisplacement;
