@@ -76,7 +76,7 @@ export class ControlPanel {
     this.counts.chunks = `${counts.chunksVisible} / ${counts.chunksTotal}`;
     this.counts.triangles = counts.triangles.toLocaleString('en-US');
     this.counts.drawCalls = String(counts.drawCalls);
-    this.counts.perBand = counts.lodCounts.join(' · ');
+    this.counts.perBand = counts.lodCounts.join(' ');
     for (const controller of this.countControllers) controller.updateDisplay();
   }
 
