@@ -46,7 +46,8 @@ function bandGeometry(band: number, capacity: number): InstancedBufferGeometry {
 /**
  * The ocean as chunks: each frame the quadtree picks the chunks in view, each gets its
  * band, and every band is drawn as one instanced mesh of its shared grid (one draw call
- * per band in use). Nothing is allocated per frame.
+ * per band in use). No mesh, geometry or buffer is created per frame: the instance buffers
+ * are sized for every chunk once and only their used part is uploaded.
  */
 export class OceanChunks {
   readonly group = new Group();
