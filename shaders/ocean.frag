@@ -11,9 +11,17 @@ uniform vec3 uSunColor;
 uniform float uHazeDensity;
 // Teaching view: the normal itself as a colour, (n + 1) / 2, written without tone mapping.
 uniform bool uShowNormals;
+uniform bool uLodColors;
 
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
+varying float vBand;
+
+// The LOD debugger's band colours, near to far.
+const vec3 BAND_COLORS[6] = vec3[6](
+  vec3(0.95, 0.2, 0.15), vec3(0.95, 0.6, 0.1), vec3(0.9, 0.9, 0.15),
+  vec3(0.2, 0.8, 0.25), vec3(0.15, 0.75, 0.9), vec3(0.5, 0.3, 0.95)
+);
 
 // three.js stores cube maps mirrored in x (its flipEnvMap convention for CubeTexture).
 vec3 skyColor(vec3 direction) {
@@ -61,6 +69,8 @@ void main() {
   vec3 horizon = skyColor(normalize(vec3(-v.x, 0.0, -v.z)));
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
+
+  if (uLodColors) color = mix(color, BAND_COLORS[int(vBand + 0.5)], 0.7);
 
   gl_FragColor = vec4(color, 1.0);
   #include <tonemapping_fragment>

@@ -1,16 +1,40 @@
+// One ocean chunk instance: a band's shared grid (integer grid coordinates in
+// position.xz), placed at its world corner, with edge vertices snapped onto a coarser
+// neighbour's edge (the GLSL twin of src/sim/edgeSnap.ts), then displaced.
 #include <oceano_displacement>
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
+uniform float uBaseStep;
+uniform int uChunkQuads;
+
+attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, unused
+attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
 
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
+varying float vBand;
+
+// Integers, so the snapped vertex lands exactly on the neighbour's vertex.
+int snapEdge(int k, int step) {
+  return ((k + step / 2) / step) * step;
+}
 
 void main() {
-  vec4 world = modelMatrix * vec4(position, 1.0);
+  ivec2 grid = ivec2(position.xz + 0.5);
+  ivec2 snapped = grid;
+  if (grid.x == 0) snapped.y = snapEdge(grid.y, int(aEdgeSteps.x));
+  else if (grid.x == uChunkQuads) snapped.y = snapEdge(grid.y, int(aEdgeSteps.y));
+  if (grid.y == 0) snapped.x = snapEdge(grid.x, int(aEdgeSteps.z));
+  else if (grid.y == uChunkQuads) snapped.x = snapEdge(grid.x, int(aEdgeSteps.w));
+
+  // Corner and step are whole multiples of the base step: the sum is exact in float32, so
+  // two chunks compute bit-identical positions (and heights) for a shared vertex.
+  vec3 world = vec3(aChunk.x + float(snapped.x) * uBaseStep, 0.0, aChunk.y + float(snapped.y) * uBaseStep);
   float height = oceanHeight(world.xz);
   vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : oceanNormal(world.xz, height);
   world.y += height;
-  vWorldPosition = world.xyz;
-  gl_Position = projectionMatrix * viewMatrix * world;
+  vWorldPosition = world;
+  vBand = aChunk.z;
+  gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);
 }

@@ -31,6 +31,8 @@ export interface OceanoApi {
   debug: {
     fresnelTable(): Float32Array;
     heightmaps(): { size: number; data: Float32Array }[];
+    /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
+    lodUpdateMs(batches?: number): number;
   };
   readonly three: ReturnType<OceanApp['three']>;
 }
@@ -62,6 +64,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     debug: {
       fresnelTable: () => app.fresnelTable(),
       heightmaps: () => app.heightmaps(),
+      lodUpdateMs: (batches) => app.lodUpdateMs(batches),
     },
     get three() {
       return app.three();

@@ -7,8 +7,18 @@ const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow'] },
+  { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'freezeCulling', 'lodBruteForce'] },
   { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'view', 'fresnelPlot'] },
 ];
+
+/** What the LOD debugger's read-only counters show. */
+export interface LiveCounts {
+  chunksVisible: number;
+  chunksTotal: number;
+  triangles: number;
+  drawCalls: number;
+  lodCounts: number[];
+}
 
 export interface ControlPanelHooks {
   onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
@@ -24,6 +34,8 @@ export class ControlPanel {
   readonly gui: GUI;
   private readonly model: OceanParams & { playing: boolean };
   private readonly controllers: Controller[] = [];
+  private readonly counts = { chunks: '', triangles: '', drawCalls: '', perBand: '' };
+  private readonly countControllers: Controller[] = [];
 
   constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
     this.gui = new GUI({ container, title: tr.ui('panelTitle') });
@@ -32,6 +44,14 @@ export class ControlPanel {
       const group = this.gui.addFolder(tr.ui(folder.title));
       for (const key of folder.keys) this.controllers.push(this.addControl(group, key, hooks));
     }
+    const live = this.gui.addFolder(tr.ui('folderLiveCounts'));
+    const labels: [keyof typeof this.counts, UiTextId][] = [
+      ['chunks', 'countChunks'],
+      ['triangles', 'countTriangles'],
+      ['drawCalls', 'countDrawCalls'],
+      ['perBand', 'countPerBand'],
+    ];
+    for (const [key, label] of labels) this.countControllers.push(live.add(this.counts, key).name(tr.ui(label)).disable());
     this.controllers.push(
       this.gui.add(this.model, 'playing').name(tr.ui('playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
@@ -59,6 +79,14 @@ export class ControlPanel {
   sync(params: OceanParams, playing: boolean): void {
     Object.assign(this.model, params, { playing });
     for (const controller of this.controllers) controller.updateDisplay();
+  }
+
+  showCounts(counts: LiveCounts): void {
+    this.counts.chunks = `${counts.chunksVisible} / ${counts.chunksTotal}`;
+    this.counts.triangles = counts.triangles.toLocaleString('en-US');
+    this.counts.drawCalls = String(counts.drawCalls);
+    this.counts.perBand = counts.lodCounts.join(' ');
+    for (const controller of this.countControllers) controller.updateDisplay();
   }
 
   dispose(): void {

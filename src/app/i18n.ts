@@ -78,6 +78,12 @@ export type UiTextId =
   | 'folderLight'
   | 'folderView'
   | 'folderBoat'
+  | 'folderLod'
+  | 'folderLiveCounts'
+  | 'countChunks'
+  | 'countTriangles'
+  | 'countDrawCalls'
+  | 'countPerBand'
   | 'boatLoading'
   | 'play'
   | 'pause'
@@ -94,6 +100,12 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderLight: 'Light & water',
     folderView: 'View',
     folderBoat: 'Boat',
+    folderLod: 'LOD & culling',
+    folderLiveCounts: 'LOD counts (live)',
+    countChunks: 'Chunks visible / total',
+    countTriangles: 'Triangles',
+    countDrawCalls: 'Draw calls',
+    countPerBand: 'Chunks per band',
     boatLoading: 'Loading the boat…',
     play: 'Play',
     pause: 'Pause',
@@ -109,6 +121,12 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderLight: 'Luz y agua',
     folderView: 'Vista',
     folderBoat: 'Barco',
+    folderLod: 'LOD y recorte',
+    folderLiveCounts: 'Contadores de LOD (en vivo)',
+    countChunks: 'Parcelas visibles / total',
+    countTriangles: 'Triángulos',
+    countDrawCalls: 'Llamadas de dibujo',
+    countPerBand: 'Parcelas por banda',
     boatLoading: 'Cargando el barco…',
     play: 'Reproducir',
     pause: 'Pausar',
@@ -141,6 +159,11 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   boatHeading: 'Rumbo del barco',
   boatResponse: 'Tiempo de respuesta de flotación',
   boatFollow: 'La cámara sigue al barco',
+  lodDistance: 'Distancia de LOD L',
+  lodBands: 'Bandas de LOD',
+  lodColors: 'Colorear parcelas por banda',
+  freezeCulling: 'Congelar el recorte',
+  lodBruteForce: 'Fuerza bruta (malla completa, sin recorte)',
 };
 
 /** Everything the page says, in one language. */

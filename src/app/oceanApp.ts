@@ -32,6 +32,8 @@ const DEFAULT_BOAT_MODEL = 'models/boat.glb';
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
 const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
 const DEG = Math.PI / 180;
+/** How often the GUI's live LOD counts are refreshed (frames). */
+const COUNTS_EVERY = 10;
 
 export interface OceanStats {
   /** Median wall time of recent GPU-synced frames, update and draw together (ms). */
@@ -42,6 +44,10 @@ export interface OceanStats {
   boatMs: number;
   drawCalls: number;
   triangles: number;
+  chunksTotal: number;
+  chunksVisible: number;
+  /** Visible chunks per LOD band, nearest band first. */
+  lodCounts: number[];
   /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */
   ttffMs: number | null;
 }
@@ -322,6 +328,7 @@ export class OceanApp {
     if (this.boatTimes.length > FRAME_SAMPLES) this.boatTimes.shift();
     if (this.updateTimes.length > FRAME_SAMPLES) this.updateTimes.shift();
     this.view.draw();
+    if (this.frameCount % COUNTS_EVERY === 0) this.panel?.showCounts(this.view.stats());
     this.frameCount++;
     if (!sync) return;
     const gl = this.view.renderer.getContext();
@@ -488,6 +495,13 @@ export class OceanApp {
       ...this.view.stats(),
       ttffMs: this.firstFrameAt,
     };
+  }
+
+  lodUpdateMs(batches?: number): number {
+    if (batches !== undefined && !(Number.isInteger(batches) && batches >= 1 && batches <= 1000)) {
+      throw new TypeError(`lodUpdateMs needs a whole number of batches between 1 and 1000, got ${String(batches)}.`);
+    }
+    return this.view.timeLodUpdate(batches);
   }
 
   fresnelTable(): Float32Array {

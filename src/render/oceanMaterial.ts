@@ -2,6 +2,7 @@ import { Color, ShaderMaterial, Vector3, type CubeTexture, type Texture } from '
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import type { SurfaceState } from '../sim/surface';
+import { BASE_STEP, CHUNK_QUADS } from '../sim/lodBands';
 import { registerShaderChunks } from './shaderChunks';
 import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './surfaceUniforms';
 
@@ -26,6 +27,9 @@ export class OceanMaterial extends ShaderMaterial {
         uHazeDensity: { value: 0.0012 },
         uFlatNormals: { value: false },
         uShowNormals: { value: false },
+        uBaseStep: { value: BASE_STEP },
+        uChunkQuads: { value: CHUNK_QUADS },
+        uLodColors: { value: false },
       },
     });
   }
@@ -58,5 +62,10 @@ export class OceanMaterial extends ShaderMaterial {
 
   setFresnelEnabled(enabled: boolean): void {
     this.uniforms.uFresnelEnabled.value = enabled;
+  }
+
+  /** The LOD debugger's view: each chunk tinted by its band. */
+  setLodColors(enabled: boolean): void {
+    this.uniforms.uLodColors.value = enabled;
   }
 }

@@ -1,28 +1,24 @@
-import { Mesh, PerspectiveCamera, Scene, WebGLRenderer, type CubeTexture, type DataTexture } from 'three';
+import { PerspectiveCamera, Scene, WebGLRenderer, type CubeTexture, type DataTexture } from 'three';
 import type { OceanParams } from '../sim/params';
 import type { OceanSurface } from '../sim/oceanSurface';
 import { fresnelTable } from '../sim/fresnel';
 import { sunDirection } from '../sim/sun';
 import { OceanMaterial } from './oceanMaterial';
-import { createGridGeometry } from './oceanGrid';
+import { OceanChunks, type ChunkStats, type LodSettings } from './oceanChunks';
+import { maxDisplacement } from '../sim/surface';
 import { fresnelTexture, heightmapTexture } from './dataTextures';
 import { SurfaceProbe } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
 import type { SurfaceSample } from '../sim/oceanSurface';
 
-/** Side of the displaced grid, metres, and its vertex spacing. */
-const GRID_SIZE = 1000;
-const GRID_SEGMENTS = 320;
-const GRID_STEP = GRID_SIZE / GRID_SEGMENTS;
-
-export interface RenderStats {
+export interface RenderStats extends ChunkStats {
   drawCalls: number;
   triangles: number;
 }
 
 /**
- * The three.js side of the ocean: renderer, scene, camera and the displaced grid. It is
+ * The three.js side of the ocean: renderer, scene, camera and the displaced chunks. It is
  * given its canvas, its surface data and the time of each frame; it reads no clock, URL
  * or DOM of its own.
  */
@@ -32,10 +28,12 @@ export class OceanView {
   readonly camera: PerspectiveCamera;
   readonly fresnelData = fresnelTable(256);
   private readonly material: OceanMaterial;
-  private readonly ocean: Mesh;
+  private readonly ocean: OceanChunks;
+  private lod: LodSettings;
+  private boundsHeight: number;
   private heightmapTextures: [DataTexture, DataTexture];
   private readonly fresnelTexture: DataTexture;
-  private lastStats: RenderStats = { drawCalls: 0, triangles: 0 };
+  private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, lodCounts: [] };
   private probe?: SurfaceProbe;
   private heightmapView?: HeightmapView;
   private showHeightmaps = false;
@@ -57,10 +55,10 @@ export class OceanView {
     this.heightmapTextures = surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
     this.fresnelTexture = fresnelTexture(this.fresnelData);
     this.material = new OceanMaterial(this.heightmapTextures, this.fresnelTexture, sky);
-    this.ocean = new Mesh(createGridGeometry(GRID_SIZE, GRID_SEGMENTS), this.material);
-    // The grid follows the camera, so three's own bounds test would be against a stale box.
-    this.ocean.frustumCulled = false;
-    this.scene.add(this.ocean);
+    this.ocean = new OceanChunks(this.material);
+    this.scene.add(this.ocean.group);
+    this.lod = params;
+    this.boundsHeight = maxDisplacement(params);
     this.lights = new SceneLights(this.scene);
     this.applyParams(params);
   }
@@ -79,6 +77,10 @@ export class OceanView {
     this.material.wireframe = params.wireframe;
     this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
     this.showHeightmaps = params.view === 'heightmap';
+    this.material.setLodColors(params.lodColors);
+    this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
+    // Chunk boxes reach as high and low as any wave can, so a crest rising into view is never culled.
+    this.boundsHeight = maxDisplacement(params);
   }
 
   setSky(sky: CubeTexture): void {
@@ -103,13 +105,7 @@ export class OceanView {
    */
   update(time: number): void {
     this.material.setSurface(this.surface.stateAt(time));
-    // Snapping to whole grid steps keeps every vertex on the same world lattice, so the
-    // waves stay put under a moving camera instead of swimming.
-    this.ocean.position.set(
-      Math.round(this.camera.position.x / GRID_STEP) * GRID_STEP,
-      0,
-      Math.round(this.camera.position.z / GRID_STEP) * GRID_STEP,
-    );
+    this.ocean.update(this.camera, this.lod, this.boundsHeight);
   }
 
   /** Submits the frame prepared by update() to the GPU. */
@@ -121,7 +117,7 @@ export class OceanView {
       this.renderer.render(this.scene, this.camera);
     }
     const info = this.renderer.info.render;
-    this.lastStats = { drawCalls: info.calls, triangles: info.triangles };
+    this.lastStats = { drawCalls: info.calls, triangles: info.triangles, ...this.ocean.stats() };
   }
 
   /** The displacement evaluated by the GPU shader at (x, z) points and a time. */
@@ -130,12 +126,28 @@ export class OceanView {
     return this.probe.probe(points, this.surface.stateAt(time), this.heightmapTextures);
   }
 
+  /**
+   * CPU time of one chunk update (culling, bands, instance upload preparation) for the
+   * current camera, ms: the median over `batches` batches of 20 updates, since the
+   * browser's clock is too coarse to time a single one.
+   */
+  timeLodUpdate(batches = 25): number {
+    const perBatch: number[] = [];
+    for (let b = 0; b < batches; b++) {
+      const start = performance.now();
+      for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.boundsHeight);
+      perBatch.push((performance.now() - start) / 20);
+    }
+    perBatch.sort((a, c) => a - c);
+    return perBatch[perBatch.length >> 1];
+  }
+
   stats(): RenderStats {
-    return { ...this.lastStats };
+    return { ...this.lastStats, lodCounts: this.lastStats.lodCounts.slice() };
   }
 
   dispose(): void {
-    this.ocean.geometry.dispose();
+    this.ocean.dispose();
     this.material.dispose();
     this.probe?.dispose();
     this.heightmapView?.dispose();

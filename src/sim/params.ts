@@ -52,6 +52,11 @@ export const paramDefs = {
   normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },
   view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap'], label: 'View' },
   fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
+  lodDistance: { kind: 'number', default: 100, min: 10, max: 1000, step: 5, unit: 'm', label: 'LOD distance L' },
+  lodBands: { kind: 'integer', default: 6, min: 1, max: 6, unit: '', label: 'LOD bands' },
+  lodColors: { kind: 'boolean', default: false, label: 'Colour chunks by band' },
+  freezeCulling: { kind: 'boolean', default: false, label: 'Freeze culling' },
+  lodBruteForce: { kind: 'boolean', default: false, label: 'Brute force (full grid, no culling)' },
 } as const satisfies Record<string, ParamDef>;
 
 export type ParamKey = keyof typeof paramDefs;

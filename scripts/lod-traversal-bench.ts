@@ -1,0 +1,69 @@
+/**
+ * CPU cost of the chunk manager per frame, in node: quadtree culling plus band and edge
+ * selection for the default view and for seeded random views. Prints figures; asserts nothing.
+ * Usage: npx tsx scripts/lod-traversal-bench.ts
+ */
+import { viewProjection } from '../src/sim/cameraMath';
+import { ChunkSelector, oceanOrigin, type SelectionInput } from '../src/sim/chunkSelection';
+import { planesFromMatrix } from '../src/sim/frustumMath';
+import { seededRandom } from '../src/sim/integerHash';
+import { bandTriangles, CHUNK_QUADS } from '../src/sim/lodBands';
+import { defaultParams } from '../src/sim/params';
+import { maxDisplacement } from '../src/sim/surface';
+
+const params = defaultParams();
+const selector = new ChunkSelector();
+
+function input(camera: [number, number, number], target: [number, number, number]): SelectionInput {
+  const [originX, originZ] = oceanOrigin(camera[0], camera[2]);
+  return {
+    planes: planesFromMatrix(viewProjection(camera, target, 55, 16 / 9, 0.5, 20000)),
+    camera,
+    originX,
+    originZ,
+    maxDisplacement: maxDisplacement(params),
+    lodDistance: params.lodDistance,
+    lodBands: params.lodBands,
+  };
+}
+
+/**
+ * Median wall time of one selection, and the mean CPU time of the process per selection
+ * (the CPU figure is steadier when other processes share the cores).
+ */
+function cpuMs(frame: SelectionInput, frames = 2000): number {
+  const start = process.cpuUsage();
+  for (let k = 0; k < frames; k++) selector.select(frame);
+  const used = process.cpuUsage(start);
+  return (used.user + used.system) / 1000 / frames;
+}
+
+function medianMs(frame: SelectionInput, frames = 2000): number {
+  for (let k = 0; k < 200; k++) selector.select(frame);
+  const times: number[] = [];
+  for (let k = 0; k < frames; k++) {
+    const start = performance.now();
+    selector.select(frame);
+    times.push(performance.now() - start);
+  }
+  times.sort((a, b) => a - b);
+  return times[times.length >> 1];
+}
+
+const defaultView = input([0, 9, 40], [0, 0, -60]);
+const ms = medianMs(defaultView);
+const cpu = cpuMs(defaultView);
+let triangles = 0;
+for (let n = 0; n < selector.count; n++) triangles += bandTriangles(selector.bands[n]);
+console.log(`default view: ${selector.count}/${selector.total} chunks, per band ${selector.lodCounts.join(' ')}, ${triangles} triangles (brute force ${selector.total * 2 * CHUNK_QUADS ** 2}), selection median ${ms.toFixed(4)} ms wall, ${cpu.toFixed(4)} ms CPU`);
+
+const random = seededRandom(7);
+const medians: number[] = [];
+for (let n = 0; n < 20; n++) {
+  const camera: [number, number, number] = [(random() - 0.5) * 2000, 1 + random() * 200, (random() - 0.5) * 2000];
+  const yaw = random() * 2 * Math.PI;
+  const pitch = -0.6 + random() * 0.7;
+  medians.push(medianMs(input(camera, [camera[0] + Math.cos(yaw), camera[1] + Math.sin(pitch), camera[2] + Math.sin(yaw)]), 300));
+}
+medians.sort((a, b) => a - b);
+console.log(`20 seeded random views (seed 7): median ${medians[10].toFixed(4)} ms, worst ${medians[19].toFixed(4)} ms`);

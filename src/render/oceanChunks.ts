@@ -1,0 +1,191 @@
+import {
+  BufferAttribute,
+  CameraHelper,
+  DynamicDrawUsage,
+  Frustum,
+  Group,
+  InstancedBufferAttribute,
+  InstancedBufferGeometry,
+  Matrix4,
+  Mesh,
+  Vector3,
+  type PerspectiveCamera,
+} from 'three';
+import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
+import type { Plane } from '../sim/frustumMath';
+import { CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
+import { chunkGrid } from '../sim/chunkGrid';
+import type { OceanMaterial } from './oceanMaterial';
+
+export interface LodSettings {
+  lodDistance: number;
+  lodBands: number;
+  lodBruteForce: boolean;
+  freezeCulling: boolean;
+}
+
+export interface ChunkStats {
+  chunksTotal: number;
+  chunksVisible: number;
+  /** Visible chunks per band, nearest band first. */
+  lodCounts: number[];
+}
+
+/** A band's shared grid with room for `capacity` chunk instances. */
+function bandGeometry(band: number, capacity: number): InstancedBufferGeometry {
+  const { positions, indices } = chunkGrid(band);
+  const geometry = new InstancedBufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(positions, 3));
+  geometry.setIndex(new BufferAttribute(indices, 1));
+  geometry.setAttribute('aChunk', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
+  geometry.setAttribute('aEdgeSteps', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
+  geometry.instanceCount = 0;
+  return geometry;
+}
+
+/**
+ * The ocean as chunks: each frame the quadtree picks the chunks in view, each gets its
+ * band, and every band is drawn as one instanced mesh of its shared grid (one draw call
+ * per band in use). No mesh, geometry or buffer is created per frame: the instance buffers
+ * are sized for every chunk once and only their used part is uploaded.
+ */
+export class OceanChunks {
+  readonly group = new Group();
+  private readonly selector = new ChunkSelector();
+  private readonly meshes: Mesh<InstancedBufferGeometry, OceanMaterial>[] = [];
+  private readonly frustum = new Frustum();
+  private readonly viewProjection = new Matrix4();
+  private readonly planes: Plane[] = Array.from({ length: 6 }, () => ({ nx: 0, ny: 0, nz: 1, d: 0 }));
+  private readonly cameraPosition = new Vector3();
+  private readonly cullCamera: [number, number, number] = [0, 0, 0];
+  private bandsInUse = 1;
+  /** Reused every frame; its planes, camera and origin are those culling uses. */
+  private readonly selectionInput: SelectionInput = {
+    planes: this.planes,
+    camera: this.cullCamera,
+    originX: 0,
+    originZ: 0,
+    maxDisplacement: 0,
+    lodDistance: 1,
+    lodBands: 1,
+    bruteForce: false,
+  };
+  private frozenHelper: CameraHelper | null = null;
+  private readonly fill = new Array<number>(MAX_LOD_BANDS).fill(0);
+  /** Per band: the instance attributes and their arrays, looked up once. */
+  private readonly instanceAttributes: InstancedBufferAttribute[][] = [];
+  private readonly chunkData: Float32Array[] = [];
+  private readonly edgeData: Float32Array[] = [];
+
+  constructor(material: OceanMaterial) {
+    const capacity = this.selector.total;
+    for (let band = 0; band < MAX_LOD_BANDS; band++) {
+      const mesh = new Mesh(bandGeometry(band, capacity), material);
+      // The quadtree has already culled; three's test would use a stale, origin-sized sphere.
+      mesh.frustumCulled = false;
+      this.meshes.push(mesh);
+      this.group.add(mesh);
+      const chunk = mesh.geometry.getAttribute('aChunk') as InstancedBufferAttribute;
+      const edges = mesh.geometry.getAttribute('aEdgeSteps') as InstancedBufferAttribute;
+      this.instanceAttributes.push([chunk, edges]);
+      this.chunkData.push(chunk.array as Float32Array);
+      this.edgeData.push(edges.array as Float32Array);
+    }
+  }
+
+  /** Chooses and uploads this frame's chunks for `camera` (or the frozen one). */
+  update(camera: PerspectiveCamera, settings: LodSettings, maxDisplacement: number): void {
+    this.setFrozen(settings.freezeCulling, camera);
+    if (!this.frozenHelper) this.captureCullingView(camera);
+    this.bandsInUse = settings.lodBruteForce ? 1 : settings.lodBands;
+    const selector = this.selector;
+    const input = this.selectionInput;
+    input.maxDisplacement = maxDisplacement;
+    input.lodDistance = settings.lodDistance;
+    input.lodBands = settings.lodBands;
+    input.bruteForce = settings.lodBruteForce;
+    selector.select(input);
+    this.fill.fill(0);
+    const side = selector.side;
+    const { originX, originZ } = input;
+    for (let n = 0; n < selector.count; n++) {
+      const band = selector.bands[n];
+      const leaf = selector.leaves[n];
+      const i = leaf % side;
+      const j = (leaf - i) / side;
+      const o = this.fill[band]++ * 4;
+      const chunk = this.chunkData[band];
+      chunk[o] = originX + i * CHUNK_SIZE;
+      chunk[o + 1] = originZ + j * CHUNK_SIZE;
+      chunk[o + 2] = band;
+      const edges = this.edgeData[band];
+      const e = n * 4;
+      edges[o] = selector.edgeSteps[e];
+      edges[o + 1] = selector.edgeSteps[e + 1];
+      edges[o + 2] = selector.edgeSteps[e + 2];
+      edges[o + 3] = selector.edgeSteps[e + 3];
+    }
+    for (let band = 0; band < MAX_LOD_BANDS; band++) {
+      const count = this.fill[band];
+      this.meshes[band].geometry.instanceCount = count;
+      this.meshes[band].visible = count > 0;
+      if (count === 0) continue;
+      for (const attribute of this.instanceAttributes[band]) {
+        attribute.clearUpdateRanges();
+        attribute.addUpdateRange(0, count * 4);
+        attribute.needsUpdate = true;
+      }
+    }
+  }
+
+  private captureCullingView(camera: PerspectiveCamera): void {
+    camera.updateMatrixWorld();
+    this.viewProjection.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
+    this.frustum.setFromProjectionMatrix(this.viewProjection);
+    this.frustum.planes.forEach((plane, k) => {
+      const target = this.planes[k];
+      target.nx = plane.normal.x;
+      target.ny = plane.normal.y;
+      target.nz = plane.normal.z;
+      target.d = plane.constant;
+    });
+    camera.getWorldPosition(this.cameraPosition).toArray(this.cullCamera);
+    [this.selectionInput.originX, this.selectionInput.originZ] = oceanOrigin(this.cullCamera[0], this.cullCamera[2]);
+  }
+
+  /**
+   * "Freeze culling": keeps the frustum, position and origin of the moment it was switched
+   * on, and draws that frustum as lines (out to the ocean's edge), so orbiting away shows
+   * from outside which chunks were chosen.
+   */
+  private setFrozen(frozen: boolean, camera: PerspectiveCamera): void {
+    if (frozen === (this.frozenHelper !== null)) return;
+    if (frozen) {
+      this.captureCullingView(camera);
+      const snapshot = camera.clone();
+      snapshot.far = OCEAN_EXTENT / 2;
+      snapshot.updateProjectionMatrix();
+      snapshot.updateMatrixWorld();
+      this.frozenHelper = new CameraHelper(snapshot);
+      this.frozenHelper.update();
+      this.group.add(this.frozenHelper);
+    } else if (this.frozenHelper) {
+      this.group.remove(this.frozenHelper);
+      this.frozenHelper.dispose();
+      this.frozenHelper = null;
+    }
+  }
+
+  stats(): ChunkStats {
+    return {
+      chunksTotal: this.selector.total,
+      chunksVisible: this.selector.count,
+      lodCounts: this.selector.lodCounts.slice(0, this.bandsInUse),
+    };
+  }
+
+  dispose(): void {
+    for (const mesh of this.meshes) mesh.geometry.dispose();
+    this.frozenHelper?.dispose();
+  }
+}

@@ -1,0 +1,45 @@
+/**
+ * The seed's distance bands ("Optimización: LOD"): every vertex within L of the camera,
+ * every 2nd from L to 2L, every 3rd beyond. The ocean is cut into square chunks of
+ * CHUNK_QUADS × CHUNK_QUADS full-resolution quads; a chunk's band sets its vertex step.
+ *
+ * Beyond the seed's three bands, each further band doubles both where it starts and its
+ * vertex step (band 3: every 6th vertex from 4L, band 4: every 12th from 8L, band 5: every
+ * 24th from 16L). The step then grows in proportion to the distance, which keeps the
+ * triangles' size on screen roughly constant, and every step divides CHUNK_QUADS, which the
+ * crack-free edges need (see edgeSnap.ts). The last band enabled reaches to the horizon.
+ */
+
+/** Full-resolution vertex spacing, metres. */
+export const BASE_STEP = 2;
+/** Full-resolution quads along a chunk's side: divisible by every band's step. */
+export const CHUNK_QUADS = 24;
+export const CHUNK_SIZE = BASE_STEP * CHUNK_QUADS;
+/** Vertex step of each band, in full-resolution quads. */
+export const BAND_STEPS = [1, 2, 3, 6, 12, 24] as const;
+export const MAX_LOD_BANDS = BAND_STEPS.length;
+
+export function bandStep(band: number): number {
+  return BAND_STEPS[band];
+}
+
+/** Distance from the camera where a band begins, metres: 0, L, 2L, 4L, 8L, … */
+export function bandStart(band: number, lodDistance: number): number {
+  return band === 0 ? 0 : lodDistance * 2 ** (band - 1);
+}
+
+/** The band of a chunk whose nearest point is `distance` metres from the camera. */
+export function bandForDistance(distance: number, lodDistance: number, bands: number): number {
+  let band = 0;
+  while (band + 1 < bands && distance >= bandStart(band + 1, lodDistance)) band++;
+  return band;
+}
+
+/** Quads along a chunk's side at a band, and the triangles of one chunk. */
+export function bandQuads(band: number): number {
+  return CHUNK_QUADS / BAND_STEPS[band];
+}
+
+export function bandTriangles(band: number): number {
+  return 2 * bandQuads(band) ** 2;
+}

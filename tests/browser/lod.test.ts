@@ -1,0 +1,175 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { PNG } from 'pngjs';
+import type { Page } from 'puppeteer';
+import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { compareWithReference } from './imageCompare';
+import { OCEAN_EXTENT } from '../../src/sim/chunkSelection';
+import { CHUNK_SIZE } from '../../src/sim/lodBands';
+import { maxDisplacement } from '../../src/sim/surface';
+import { defaultParams } from '../../src/sim/params';
+
+const REFERENCE_TOLERANCE = 0.005;
+const FOV = 55;
+
+let harness: Harness;
+beforeAll(async () => {
+  harness = await startHarness();
+});
+afterAll(async () => {
+  await harness?.close();
+});
+
+type Vec3 = [number, number, number];
+
+/**
+ * Pixels showing the magenta clear colour where the view ray dips steeply enough that it
+ * must meet the sea inside the ocean's extent: any such pixel is a hole in the surface.
+ */
+function holesBelowHorizon(png: Buffer, position: Vec3, target: Vec3): { holes: number; checked: number } {
+  const image = PNG.sync.read(png);
+  const { width, height, data } = image;
+  const back = position.map((p, k) => p - target[k]) as Vec3;
+  const bl = Math.hypot(...back);
+  const z = back.map((v) => v / bl) as Vec3;
+  const xl = Math.hypot(z[2], z[0]);
+  const x: Vec3 = [z[2] / xl, 0, -z[0] / xl];
+  const y: Vec3 = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]];
+  const t = Math.tan((FOV / 2) * (Math.PI / 180));
+  // Nearest edge of the extent, allowing for the camera-following snap; margin ×2 for waves.
+  const reach = OCEAN_EXTENT / 2 - CHUNK_SIZE;
+  const minSlope = (2 * (position[1] + maxDisplacement(defaultParams()))) / reach;
+  let holes = 0;
+  let checked = 0;
+  for (let py = 0; py < height; py++) {
+    for (let px = 0; px < width; px++) {
+      const cx = ((px + 0.5) / width) * 2 - 1;
+      const cy = 1 - ((py + 0.5) / height) * 2;
+      const dir = [0, 1, 2].map((k) => x[k] * cx * t * (width / height) + y[k] * cy * t - z[k]);
+      if (-dir[1] / Math.hypot(dir[0], dir[2]) < minSlope) continue;
+      checked++;
+      const o = (py * width + px) * 4;
+      if (data[o] > 200 && data[o + 1] < 80 && data[o + 2] > 200) holes++;
+    }
+  }
+  return { holes, checked };
+}
+
+async function showMagentaBehindTheSea(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const { scene, renderer } = window.oceano.three;
+    scene.background = null;
+    renderer.setClearColor(0xff00ff, 1);
+  });
+}
+
+describe('LOD and culling in the browser', () => {
+  it('reports chunk counts in stats(), and the brute-force flag draws every chunk at full resolution', async () => {
+    const { page, consoleErrors } = await openOcean(harness, 'seed=1&t=10');
+    const stats = await page.evaluate(() => window.oceano.stats());
+    expect(stats.chunksTotal).toBe(84 * 84);
+    expect(stats.chunksVisible).toBeGreaterThan(100);
+    expect(stats.chunksVisible).toBeLessThan(stats.chunksTotal / 2);
+    expect(stats.lodCounts).toHaveLength(6);
+    expect(stats.lodCounts.reduce((a, b) => a + b, 0)).toBe(stats.chunksVisible);
+    expect(stats.lodCounts[0]).toBeGreaterThan(0);
+    expect(stats.triangles).toBeLessThan(60_000);
+    // One draw call per band in use plus the sky.
+    expect(stats.drawCalls).toBe(stats.lodCounts.filter((n) => n > 0).length + 1);
+    const brute = await page.evaluate(() => {
+      window.oceano.setParams({ lodBruteForce: true });
+      window.oceano.renderFrame();
+      const s = window.oceano.stats();
+      window.oceano.setParams({ lodBruteForce: false });
+      return s;
+    });
+    expect(brute.chunksVisible).toBe(brute.chunksTotal);
+    expect(brute.lodCounts).toEqual([brute.chunksTotal]);
+    expect(brute.triangles).toBe(brute.chunksTotal * 24 * 24 * 2 + 12);
+    expect(stats.triangles).toBeLessThan(brute.triangles / 10);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('draws no ocean chunk when the camera looks straight up', async () => {
+    const { page } = await openOcean(harness, 'seed=1&t=10');
+    const stats = await page.evaluate(() => {
+      const { camera } = window.oceano.three;
+      camera.position.set(0, 10, 0);
+      camera.lookAt(0, 1000, 0);
+      window.oceano.renderFrame();
+      return window.oceano.stats();
+    });
+    expect(stats.chunksVisible).toBe(0);
+    expect(stats.lodCounts.every((n) => n === 0)).toBe(true);
+    // Only the sky box is drawn.
+    expect(stats.drawCalls).toBe(1);
+    await page.close();
+  });
+
+  const crackViews: { name: string; query: string; position: Vec3; target: Vec3; size: [number, number] }[] = [
+    { name: 'grazing, default bands', query: 'seed=1&t=10', position: [0, 1.5, 0], target: [70, 0.4, -100], size: [1280, 720] },
+    { name: 'grazing, L = 10 m (neighbours several bands apart)', query: 'seed=2&t=3&lodDistance=10', position: [5, 2, 11], target: [-90, 0.2, -120], size: [960, 540] },
+    { name: 'from 60 m, L = 30 m', query: 'seed=3&t=7&lodDistance=30&swellAmplitude=3', position: [13, 60, 7], target: [200, 0, -300], size: [960, 540] },
+  ];
+  for (const view of crackViews) {
+    it(`shows no background through the sea (crack test: ${view.name})`, async () => {
+      const { page } = await openOcean(harness, view.query, ...view.size);
+      await page.evaluate((pose) => window.oceano.setCamera(pose), { position: view.position, target: view.target });
+      await showMagentaBehindTheSea(page);
+      const png = await canvasPng(page);
+      const stats = await page.evaluate(() => window.oceano.stats());
+      // Several bands meet in this view, so there are seams to crack.
+      expect(stats.lodCounts.filter((n) => n > 0).length).toBeGreaterThanOrEqual(3);
+      const { holes, checked } = holesBelowHorizon(png, view.position, view.target);
+      expect(checked).toBeGreaterThan(view.size[0] * view.size[1] * 0.2);
+      expect(holes).toBe(0);
+      await page.close();
+    });
+  }
+
+  it('finds holes when there are some: the crack check itself can fail', async () => {
+    const { page } = await openOcean(harness, 'seed=1&t=10', 960, 540);
+    const position: Vec3 = [0, 1.5, 0];
+    const target: Vec3 = [70, 0.4, -100];
+    await page.evaluate((pose) => window.oceano.setCamera(pose), { position, target });
+    await showMagentaBehindTheSea(page);
+    // Wireframe leaves the inside of every triangle open.
+    await page.evaluate(() => window.oceano.setParams({ wireframe: true }));
+    const { holes } = holesBelowHorizon(await canvasPng(page), position, target);
+    expect(holes).toBeGreaterThan(1000);
+    await page.close();
+  });
+
+  const colourViews: { name: string; query: string; pose?: { position: Vec3; target: Vec3 } }[] = [
+    { name: 'lod-colors-default', query: 'seed=1&t=10&lodColors=1' },
+    { name: 'lod-colors-above', query: 'seed=1&t=10&lodColors=1&lodDistance=40', pose: { position: [0, 120, 150], target: [0, 0, -150] } },
+    { name: 'lod-frozen-outside', query: 'seed=1&t=10&lodColors=1&freezeCulling=1', pose: { position: [-900, 1400, 1300], target: [0, 0, -500] } },
+  ];
+  for (const view of colourViews) {
+    it(`draws the LOD debug view "${view.name}" as its reference`, async () => {
+      const { page, consoleErrors } = await openOcean(harness, view.query);
+      if (view.pose) await page.evaluate((pose) => window.oceano.setCamera(pose), view.pose);
+      const png = await canvasPng(page);
+      expect(compareWithReference(view.name, png).share).toBeLessThanOrEqual(REFERENCE_TOLERANCE);
+      expect(consoleErrors).toEqual([]);
+      await page.close();
+    });
+  }
+
+  it('keeps the frozen selection while the camera orbits away', async () => {
+    const { page } = await openOcean(harness, 'seed=1&t=10&freezeCulling=1');
+    const result = await page.evaluate(() => {
+      const before = window.oceano.stats();
+      window.oceano.setCamera({ position: [-900, 1400, 1300], target: [0, 0, -500] });
+      window.oceano.renderFrame();
+      const frozen = window.oceano.stats();
+      window.oceano.setParams({ freezeCulling: false });
+      window.oceano.renderFrame();
+      return { before, frozen, live: window.oceano.stats() };
+    });
+    expect(result.frozen.chunksVisible).toBe(result.before.chunksVisible);
+    expect(result.frozen.lodCounts).toEqual(result.before.lodCounts);
+    expect(result.live.lodCounts).not.toEqual(result.before.lodCounts);
+    await page.close();
+  });
+});
