@@ -175,7 +175,13 @@ export class OceanApp {
     this.controls.maxPolarAngle = Math.PI * 0.495;
     this.controls.update();
     this.controls.addEventListener('change', this.requestRender);
-    if (this.options.state.camera) this.setCamera(this.options.state.camera);
+    const { camera, cullingCamera } = this.options.state;
+    if (cullingCamera && this.params.freezeCulling) {
+      // Freeze the selection from the culling camera, then look at it from the preset's camera.
+      this.setCamera(cullingCamera);
+      this.view.update(this.clock.time);
+    }
+    if (camera) this.setCamera(camera);
     if (this.options.showPanel) {
       this.panel = new ControlPanel(
         this.container,

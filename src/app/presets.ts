@@ -5,6 +5,8 @@ import type { CameraPose } from './cameraPose';
 export interface Preset {
   params: Partial<OceanParams>;
   camera: CameraPose;
+  /** With freezeCulling: where the culling camera stood when the selection was frozen. */
+  cullingCamera?: CameraPose;
 }
 
 /**
@@ -21,6 +23,57 @@ export const PRESETS = {
   'still-ocean': {
     params: { swellAmplitude: 0, rippleStrength: 0 },
     camera: { position: [0, 6, 40], target: [0, 2, -60] },
+  },
+  /** "Texturas y heightmaps": the two Perlin heightmaps as the vertex shader receives them. */
+  'perlin-heightmap': {
+    params: { view: 'heightmap' },
+    camera: { position: [0, 9, 40], target: [0, 0, -60] },
+  },
+  /** The same grid as flat-plane, now displaced by swell and ripples. */
+  'displaced-plane': {
+    params: { wireframe: true },
+    camera: { position: [0, 30, 30], target: [0, 0, -15] },
+  },
+  /** "Normales incorrectas": every vertex keeps the flat plane's normal, shown as a colour. */
+  'normals-wrong': {
+    params: { shading: 'normals', normals: 'flat', swellAmplitude: 2.5, swellFrequency: 0.08 },
+    camera: { position: [0, 25, 40], target: [0, 0, -30] },
+  },
+  /** "Normales correctas": the fabricated-neighbour normals, shown as colours. */
+  'normals-right': {
+    params: { shading: 'normals', swellAmplitude: 2.5, swellFrequency: 0.08 },
+    camera: { position: [0, 25, 40], target: [0, 0, -30] },
+  },
+  /** "Frecuencia y amplitud normales": the swell alone at its default frequency and amplitude. */
+  'swell-normal': {
+    params: { rippleStrength: 0 },
+    camera: { position: [0, 12, 40], target: [0, 0, -60] },
+  },
+  /** "Máxima frecuencia y amplitud": the swell alone at the top of both ranges. */
+  'swell-maximum': {
+    params: { rippleStrength: 0, swellAmplitude: 4, swellFrequency: 0.2 },
+    camera: { position: [0, 12, 40], target: [0, 0, -60] },
+  },
+  /** The Fresnel table the shader samples, plotted against Schlick's approximation, over the sea. */
+  fresnel: {
+    params: { fresnelPlot: true },
+    camera: { position: [0, 9, 40], target: [0, 0, -60] },
+  },
+  /** "Level of Detail": chunks tinted by distance band, seen from above. */
+  'lod-bands': {
+    params: { lodColors: true, wireframe: false },
+    camera: { position: [0, 260, 220], target: [0, 0, -160] },
+  },
+  /** "Frustum culling": the selection frozen for the default camera, seen from far outside. */
+  'frustum-culling': {
+    params: { lodColors: true, freezeCulling: true },
+    camera: { position: [-900, 1400, 1300], target: [0, 0, -500] },
+    cullingCamera: { position: [0, 9, 40], target: [0, 0, -60] },
+  },
+  /** "Quiero mover el bote": the boat pitching on a short, steep swell, seen from the side. */
+  'boat-pitch': {
+    params: { swellAmplitude: 1.6, swellFrequency: 0.12, rippleStrength: 0.15, boatHeading: 0 },
+    camera: { position: [30, 3, -3], target: [7, 1, -5] },
   },
 } satisfies Record<string, Preset>;
 

@@ -15,6 +15,8 @@ export interface UrlState {
   /** Base path of the six sky images when the page names its own. */
   sky: string | null;
   camera: CameraPose | null;
+  /** A preset's culling camera: the view whose selection freezeCulling keeps. */
+  cullingCamera: CameraPose | null;
   /** null: follow the browser. */
   language: Language | null;
   embed: boolean;
@@ -43,7 +45,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, boat: null, camera: null, language: null, embed: false, notices };
+  const state: UrlState = { params, time: null, sky: null, boat: null, camera: null, cullingCamera: null, language: null, embed: false, notices };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -51,6 +53,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
     if (preset) {
       Object.assign(params, preset.params);
       state.camera = { position: [...preset.camera.position], target: [...preset.camera.target] };
+      if (preset.cullingCamera) state.cullingCamera = { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] };
     } else {
       notices.push(message('presetUnknown', { name: text, known: presetNames.join(', ') }));
     }

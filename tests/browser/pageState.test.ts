@@ -1,7 +1,10 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean, startHarness, type Harness } from './harness';
-import { compareWithReference, diffPngs } from './imageCompare';
+import { compareWithReference, diffPngs, REFERENCE_DIR, updatingReferences } from './imageCompare';
+import { presetNames } from '../../src/app/presets';
+import { writeFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { recordedPage } from './pages';
 
 /** Differing pixels allowed against a reference: SwiftShader is deterministic, this absorbs driver updates. */
@@ -172,11 +175,16 @@ describe('embedding and accessibility', () => {
 });
 
 describe('presets', () => {
-  for (const name of ['flat-plane', 'still-ocean']) {
+  for (const name of presetNames) {
     it(`preset=${name} matches its reference screenshot`, async () => {
       const { page } = await openOcean(harness, `preset=${name}&t=10`, 640, 360);
       expect(await page.evaluate(() => window.oceano.notices())).toEqual([]);
       expect(compareWithReference(`preset-${name}`, await canvasPng(page)).share).toBeLessThanOrEqual(REFERENCE_TOLERANCE);
+      if (name === 'fresnel') {
+        // The plot is page content over the canvas: the README shows the whole page for this one.
+        expect(await page.$eval('.oceano-fresnel-plot', (el) => (el as HTMLElement).offsetParent !== null)).toBe(true);
+        if (updatingReferences) writeFileSync(join(REFERENCE_DIR, 'preset-fresnel-page.png'), await page.screenshot({ type: 'png' }));
+      }
       await page.close();
     });
   }
