@@ -1,6 +1,7 @@
 import type { OceanApp, CameraPose, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
 import type { SurfaceSample } from '../sim/oceanSurface';
+import type { PassTiming } from '../render/underwaterPost';
 
 /** `window.oceano`: how tests, course pages and the console drive the ocean. */
 export interface OceanoApi {
@@ -20,6 +21,10 @@ export interface OceanoApi {
   notices(): string[];
   debug: {
     fresnelTable(): Float32Array;
+    /** The reflectance table seen from under the water (n₁ = 1.333, n₂ = 1). */
+    fresnelTableFromBelow(): Float32Array;
+    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water). */
+    passTimings(): PassTiming[];
     heightmaps(): { size: number; data: Float32Array }[];
   };
   readonly three: ReturnType<OceanApp['three']>;
@@ -48,6 +53,8 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     notices: () => app.notices.messages(),
     debug: {
       fresnelTable: () => app.fresnelTable(),
+      fresnelTableFromBelow: () => app.fresnelTableFromBelow(),
+      passTimings: () => app.passTimings(),
       heightmaps: () => app.heightmaps(),
     },
     get three() {

@@ -5,12 +5,15 @@ const FOLDERS: { title: string; keys: ParamKey[] }[] = [
   { title: 'Swell', keys: ['swellAmplitude', 'swellFrequency'] },
   { title: 'Ripples (Perlin)', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'Light & water', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
+  { title: 'Underwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
   { title: 'View', keys: ['wireframe'] },
 ];
 
 export interface ControlPanelHooks {
   onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
   onPlayingChange(playing: boolean): void;
+  onDive(): void;
+  onSurface(): void;
 }
 
 /**
@@ -32,6 +35,9 @@ export class ControlPanel {
     this.controllers.push(
       this.gui.add(this.model, 'playing').name('Play').onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
+    const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
+    this.gui.add(camera, 'dive').name('Dive under the surface');
+    this.gui.add(camera, 'surface').name('Back to the surface view');
   }
 
   private addControl(group: GUI, key: ParamKey, hooks: ControlPanelHooks): Controller {

@@ -4,6 +4,8 @@ import { validateParams, type OceanParams } from '../sim/params';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
 import { OceanView } from '../render/oceanView';
+import type { PassTiming } from '../render/underwaterPost';
+import type { Submersion } from '../sim/underwater';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { ControlPanel } from './controlPanel';
 import { Notices } from './notices';
@@ -23,7 +25,19 @@ export interface OceanStats {
   frameMs: number;
   drawCalls: number;
   triangles: number;
+  /** The camera is below the surface at its own (x, z), by the CPU twin of the waves. */
+  underwater: boolean;
+  /** 'straddling': the waterline may cross the frame and is decided per pixel. */
+  submersion: Submersion;
+  /** EffectComposer passes run for the last frame; 0 above the water. */
+  composerPasses: number;
 }
+
+/** The default view, and the one "Surface" returns to. */
+const DEFAULT_POSE: CameraPose = { position: [0, 9, 40], target: [0, 0, -60] };
+/** Where "Dive" puts the eye, metres below the mean sea level, and how far ahead it looks. */
+const DIVE_DEPTH = 6;
+const DIVE_LOOK_AHEAD = 60;
 
 /**
  * The page's ocean: owns the clock, the parameters, the view and the controls, and runs
@@ -59,12 +73,14 @@ export class OceanApp {
     const sky = await this.loadSky();
     this.view = new OceanView(this.canvas, this.surface, sky, this.params);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
-    this.controls.target.set(0, 0, -60);
-    this.controls.maxPolarAngle = Math.PI * 0.495;
-    this.controls.update();
+    // The whole sphere around the target: orbiting below its level takes the eye under the water.
+    this.controls.maxPolarAngle = Math.PI;
+    this.setCamera({ position: this.url.camera ?? DEFAULT_POSE.position, target: this.url.target ?? DEFAULT_POSE.target });
     this.panel = new ControlPanel(this.container, this.params, this.clock.playing, {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => (playing ? this.play() : this.pause()),
+      onDive: () => this.dive(),
+      onSurface: () => this.setCamera(DEFAULT_POSE),
     });
     this.resize();
     new ResizeObserver(() => this.resize()).observe(this.canvas);
@@ -148,6 +164,15 @@ export class OceanApp {
     this.controls.update();
   }
 
+  /** Puts the eye DIVE_DEPTH under the mean sea level where it is, looking level the way it looked. */
+  dive(): void {
+    const eye = this.view.camera.position;
+    const heading = this.controls.target.clone().sub(eye).setY(0);
+    if (heading.lengthSq() < 1e-12) heading.set(0, 0, -1);
+    heading.normalize().multiplyScalar(DIVE_LOOK_AHEAD);
+    this.setCamera({ position: [eye.x, -DIVE_DEPTH, eye.z], target: [eye.x + heading.x, -DIVE_DEPTH, eye.z + heading.z] });
+  }
+
   camera(): CameraPose {
     return { position: this.view.camera.position.toArray(), target: this.controls.target.toArray() as [number, number, number] };
   }
@@ -172,8 +197,17 @@ export class OceanApp {
     return { frameMs, ...this.view.stats() };
   }
 
+  /** One frame drawn with the GPU waited for after each pass: each pass's cost in ms. */
+  passTimings(): PassTiming[] {
+    return this.view.profileFrame(this.clock.time);
+  }
+
   fresnelTable(): Float32Array {
     return this.view.fresnelData.slice();
+  }
+
+  fresnelTableFromBelow(): Float32Array {
+    return this.view.fresnelFromBelowData.slice();
   }
 
   heightmaps(): { size: number; data: Float32Array }[] {

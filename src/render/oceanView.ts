@@ -1,8 +1,14 @@
-import { Mesh, PerspectiveCamera, Scene, WebGLRenderer, type CubeTexture, type DataTexture } from 'three';
+import { Color, Mesh, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform } from 'three';
 import type { OceanParams } from '../sim/params';
 import type { OceanSurface } from '../sim/oceanSurface';
-import { fresnelTable } from '../sim/fresnel';
+import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { sunDirection } from '../sim/sun';
+import { maxDisplacement, surfaceHeight } from '../sim/surface';
+import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../sim/underwater';
+import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
+import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
+import { SeaBed } from './seaBed';
+import { UnderwaterPost, type PassTiming } from './underwaterPost';
 import { OceanMaterial } from './oceanMaterial';
 import { createGridGeometry } from './oceanGrid';
 import { fresnelTexture, heightmapTexture } from './dataTextures';
@@ -14,9 +20,22 @@ const GRID_SIZE = 1000;
 const GRID_SEGMENTS = 320;
 const GRID_STEP = GRID_SIZE / GRID_SEGMENTS;
 
+/**
+ * How far from the surface a near-plane sample must be to decide the whole near plane,
+ * metres: it covers the surface rising or dipping between the 3 × 3 samples (spaced about
+ * half a metre) on the steepest ripples.
+ */
+const WATERLINE_MARGIN = 0.25;
+const NEAR_PLANE_SAMPLES: readonly [number, number][] = [-1, 0, 1].flatMap((x) => [-1, 0, 1].map((y) => [x, y] as [number, number]));
+
 export interface RenderStats {
   drawCalls: number;
   triangles: number;
+  /** The eye is below the surface at its own (x, z), by the CPU twin. */
+  underwater: boolean;
+  submersion: Submersion;
+  /** EffectComposer passes run for the last frame: 0 when it was drawn directly. */
+  composerPasses: number;
 }
 
 /**
@@ -29,12 +48,25 @@ export class OceanView {
   readonly scene = new Scene();
   readonly camera: PerspectiveCamera;
   readonly fresnelData = fresnelTable(256);
+  readonly fresnelFromBelowData = fresnelTableFromBelow(256);
   private readonly material: OceanMaterial;
   private readonly ocean: Mesh;
   private heightmapTextures: [DataTexture, DataTexture];
   private readonly fresnelTexture: DataTexture;
-  private lastStats: RenderStats = { drawCalls: 0, triangles: 0 };
+  private readonly fresnelFromBelowTexture: DataTexture;
+  private readonly waterVolume: WaterVolumeUniforms = createWaterVolumeUniforms();
+  private readonly caustics: CausticsUniforms = createCausticsUniforms();
+  private readonly light: Record<'uRefractedSun' | 'uSunColor', IUniform> = {
+    uRefractedSun: { value: new Vector3() },
+    uSunColor: { value: new Color(1.0, 0.93, 0.8) },
+  };
+  private readonly seaBed: SeaBed;
+  /** Made on the first frame that needs it, so a view that never dives never pays for its targets. */
+  private post?: UnderwaterPost;
+  private params: OceanParams;
+  private lastStats: RenderStats = { drawCalls: 0, triangles: 0, underwater: false, submersion: 'above', composerPasses: 0 };
   private probe?: SurfaceProbe;
+  private readonly nearPoint = new Vector3();
 
   constructor(
     canvas: HTMLCanvasElement,
@@ -51,11 +83,20 @@ export class OceanView {
     this.scene.background = sky;
     this.heightmapTextures = surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
     this.fresnelTexture = fresnelTexture(this.fresnelData);
-    this.material = new OceanMaterial(this.heightmapTextures, this.fresnelTexture, sky);
+    this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
+    this.material = new OceanMaterial(
+      this.heightmapTextures,
+      { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
+      sky,
+      { ...this.waterVolume, uSunColor: this.light.uSunColor },
+    );
     this.ocean = new Mesh(createGridGeometry(GRID_SIZE, GRID_SEGMENTS), this.material);
     // The grid follows the camera, so three's own bounds test would be against a stale box.
     this.ocean.frustumCulled = false;
     this.scene.add(this.ocean);
+    this.seaBed = new SeaBed({ ...this.material.surfaceUniforms, ...this.waterVolume, ...this.caustics, ...this.light });
+    this.scene.add(this.seaBed.mesh);
+    this.params = params;
     this.applyParams(params);
   }
 
@@ -65,10 +106,21 @@ export class OceanView {
       this.heightmapTextures = this.surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
       this.material.setHeightmaps(this.heightmapTextures);
     }
+    this.params = params;
+    const sun = sunDirection(params.sunElevation, params.sunAzimuth);
     this.material.setWaterColor(params.waterColor);
-    this.material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
+    this.material.setSunDirection(sun);
     this.material.setFresnelEnabled(params.fresnel);
     this.material.wireframe = params.wireframe;
+
+    const refracted = refractedSunDirection(sun);
+    (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
+    applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
+    applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
+    this.seaBed.setDepth(params.seaBedDepth);
+    this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
+    this.post?.setBlur(params.blurStrength);
+    this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
   }
 
   setSky(sky: CubeTexture): void {
@@ -85,9 +137,33 @@ export class OceanView {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.post?.setSize(w, h, pixelRatio);
   }
 
-  render(time: number): void {
+  /**
+   * Where the view starts: 'above' and 'below' when the eye and the whole near plane are
+   * clear of the surface on one side, else 'straddling' (the waterline may cross the frame).
+   */
+  private submersionAt(time: number): { underwater: boolean; submersion: Submersion } {
+    const state = this.surface.stateAt(time);
+    const maps = this.surface.heightmaps;
+    const eye = this.camera.position;
+    const eyeSurface = surfaceHeight(state, maps, eye.x, eye.z);
+    const underwater = eye.y < eyeSurface;
+    // The near plane lies within `reach` of the eye: far above the highest crest, no sampling needed.
+    const nearHalfHeight = this.camera.near * Math.tan((this.camera.fov * Math.PI) / 360);
+    const reach = Math.hypot(this.camera.near, nearHalfHeight, nearHalfHeight * this.camera.aspect);
+    if (eye.y - reach > maxDisplacement(this.params) + WATERLINE_MARGIN) return { underwater, submersion: 'above' };
+    this.camera.updateMatrixWorld();
+    const points = [{ y: eye.y, surface: eyeSurface }];
+    for (const [x, y] of NEAR_PLANE_SAMPLES) {
+      const p = this.nearPoint.set(x, y, -1).unproject(this.camera);
+      points.push({ y: p.y, surface: surfaceHeight(state, maps, p.x, p.z) });
+    }
+    return { underwater, submersion: classifyNearPlane(points, WATERLINE_MARGIN) };
+  }
+
+  private prepare(time: number): { underwater: boolean; submersion: Submersion } {
     this.material.setSurface(this.surface.stateAt(time));
     // Snapping to whole grid steps keeps every vertex on the same world lattice, so the
     // waves stay put under a moving camera instead of swimming.
@@ -96,9 +172,57 @@ export class OceanView {
       0,
       Math.round(this.camera.position.z / GRID_STEP) * GRID_STEP,
     );
-    this.renderer.render(this.scene, this.camera);
+    const where = this.submersionAt(time);
+    const inWater = where.submersion !== 'above';
+    this.material.setSeenFromBelow(inWater);
+    this.seaBed.mesh.visible = inWater;
+    this.seaBed.follow(this.camera.position);
+    // Seen entirely from below, the sky can only show through the surface: skip drawing it.
+    this.scene.background = where.submersion === 'below' ? null : this.sky;
+    const eyeSurface = this.surface.sample(this.camera.position.x, this.camera.position.z, time).height;
+    this.waterVolume.uCameraDepth.value = Math.max(0, eyeSurface - this.camera.position.y);
+    return where;
+  }
+
+  private underwaterPost(): UnderwaterPost {
+    if (!this.post) {
+      this.post = new UnderwaterPost(this.renderer, this.scene, this.camera, { ...this.material.surfaceUniforms, ...this.waterVolume, ...this.light });
+      const size = this.renderer.getSize(new Vector2());
+      this.post.setSize(size.x, size.y, this.renderer.getPixelRatio());
+      this.post.setBlur(this.params.blurStrength);
+      this.post.setGodRays(this.params.godRays ? this.params.godRaysIntensity : 0);
+    }
+    return this.post;
+  }
+
+  render(time: number): void {
+    const { underwater, submersion } = this.prepare(time);
+    let composerPasses = 0;
+    if (submersion === 'above') this.renderer.render(this.scene, this.camera);
+    else composerPasses = this.underwaterPost().render(submersion === 'straddling');
     const info = this.renderer.info.render;
-    this.lastStats = { drawCalls: info.calls, triangles: info.triangles };
+    this.lastStats = { drawCalls: info.calls, triangles: info.triangles, underwater, submersion, composerPasses };
+  }
+
+  /**
+   * Draws one frame waiting for the GPU after each pass, and returns each pass's time.
+   * Above the water the frame is the single direct render, reported as 'scene'.
+   */
+  profileFrame(time: number): PassTiming[] {
+    const gl = this.renderer.getContext();
+    const pixel = new Uint8Array(4);
+    // Reading a canvas pixel waits for every command before it; each pass binds its own target again.
+    const sync = () => {
+      this.renderer.setRenderTarget(null);
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    };
+    const { submersion } = this.prepare(time);
+    if (submersion !== 'above') return this.underwaterPost().profile(submersion === 'straddling', sync);
+    sync();
+    const start = performance.now();
+    this.renderer.render(this.scene, this.camera);
+    sync();
+    return [{ name: 'scene', ms: performance.now() - start }];
   }
 
   /** The displacement evaluated by the GPU shader at (x, z) points and a time. */
@@ -115,8 +239,11 @@ export class OceanView {
     this.ocean.geometry.dispose();
     this.material.dispose();
     this.probe?.dispose();
+    this.post?.dispose();
+    this.seaBed.dispose();
     for (const texture of this.heightmapTextures) texture.dispose();
     this.fresnelTexture.dispose();
+    this.fresnelFromBelowTexture.dispose();
     this.sky.dispose();
     this.renderer.dispose();
   }

@@ -1,0 +1,91 @@
+// The water between the eye and whatever the scene pass drew: fog and absorption by
+// distance (from the depth buffer) and sunlight scattered out of the shafts under the
+// waves (god rays). Writes alpha = 1 where the pixel's line of sight starts in the water
+// and 0 where it starts in the air, for the blur passes.
+
+#include <packing>
+#include <oceano_displacement>
+#include <oceano_water_volume>
+
+uniform sampler2D tDiffuse;
+uniform sampler2D tDepth;
+uniform mat4 uProjectionInverse;
+uniform mat4 uCameraWorld;
+uniform vec3 uEye;
+uniform float uNear;
+uniform float uFar;
+uniform bool uPerPixelWaterline;
+uniform vec3 uRefractedSun;
+uniform vec3 uSunColor;
+uniform float uGodRays;
+
+varying vec2 vUv;
+
+const int GOD_RAY_STEPS = 12;
+// Shafts are followed this far along the line of sight, metres; fog hides what is beyond.
+const float GOD_RAY_RANGE = 60.0;
+// Depth over which the shafts' contrast fades as their focus blurs, metres.
+const float SHAFT_FADE_DEPTH = 30.0;
+// World size of the shaft pattern relative to the ripple heightmap.
+const float SHAFT_SCALE = 0.35;
+
+// Interleaved gradient noise: a fixed per-pixel offset of the march, so 12 steps read as
+// smooth shafts after the blur instead of as bands. Deterministic, no seed involved.
+float marchJitter(vec2 pixel) {
+  return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
+// Light let through the surface at s, relative to a flat sea: ripple crests act as
+// converging lenses, so the drifting ripple field gives drifting shafts.
+float shaftLight(vec2 s) {
+  float r = sampleHeightmap(uHeightmap0, s * SHAFT_SCALE + uRippleOffset.xy)
+          + sampleHeightmap(uHeightmap1, s * SHAFT_SCALE + uRippleOffset.zw);
+  float lens = clamp(0.5 + 0.9 * r, 0.0, 1.0);
+  return lens * lens * lens;
+}
+
+vec3 godRays(vec3 origin, vec3 direction, float distance) {
+  if (uGodRays <= 0.0 || uRefractedSun.y >= 0.0) return vec3(0.0);
+  float range = min(distance, GOD_RAY_RANGE);
+  float stepLength = range / float(GOD_RAY_STEPS);
+  float jitter = marchJitter(gl_FragCoord.xy);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < GOD_RAY_STEPS; i++) {
+    vec3 p = origin + direction * ((float(i) + jitter) * stepLength);
+    float depth = -p.y;
+    if (depth <= 0.0) continue;
+    // Where the sunlight reaching p crossed the surface.
+    vec2 s = p.xz - uRefractedSun.xz * (p.y / uRefractedSun.y);
+    float contrast = exp(-depth / SHAFT_FADE_DEPTH);
+    float along = (float(i) + jitter) * stepLength;
+    vec3 reach = waterTransmittance(along + depth / -uRefractedSun.y);
+    sum += reach * shaftLight(s) * contrast;
+  }
+  // Forward scattering: the shafts glow most when looking towards the sun.
+  float towardsSun = max(dot(direction, -uRefractedSun), 0.0);
+  float phase = 0.15 + 1.6 * pow(towardsSun, 6.0);
+  return uSunColor * sum * stepLength * uFogDensity * phase * uGodRays;
+}
+
+void main() {
+  vec4 scene = texture2D(tDiffuse, vUv);
+  vec4 nearView = uProjectionInverse * vec4(vUv * 2.0 - 1.0, -1.0, 1.0);
+  nearView /= nearView.w;
+  vec3 nearWorld = (uCameraWorld * nearView).xyz;
+  vec3 direction = normalize(nearWorld - uEye);
+
+  if (uPerPixelWaterline && nearWorld.y >= oceanHeight(nearWorld.xz)) {
+    gl_FragColor = vec4(scene.rgb, 0.0);
+    return;
+  }
+
+  float depthSample = texture2D(tDepth, vUv).x;
+  float distance = 1e6;
+  if (depthSample < 1.0) {
+    float viewZ = perspectiveDepthToViewZ(depthSample, uNear, uFar);
+    distance = length(nearView.xyz * (viewZ / nearView.z));
+  }
+  vec3 color = throughWater(scene.rgb, direction, distance);
+  color += godRays(uEye, direction, distance);
+  gl_FragColor = vec4(color, 1.0);
+}
