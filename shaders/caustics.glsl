@@ -9,7 +9,7 @@ uniform float uCausticsStrength;    // 0: flat light, 1: physical concentration
 
 const float CAUSTICS_AIR_OVER_WATER = 1.0 / 1.333;
 // Side of the surface patch whose image is measured, metres.
-const float CAUSTICS_PATCH = 0.35;
+const float CAUSTICS_PATCH = 0.75;
 // Brightest concentration kept: a fold of the map is a line of infinite intensity.
 const float CAUSTICS_MAX_GAIN = 8.0;
 

@@ -21,26 +21,33 @@ uniform float uGodRays;
 
 varying vec2 vUv;
 
-const int GOD_RAY_STEPS = 12;
+const int GOD_RAY_STEPS = 10;
 // Shafts are followed this far along the line of sight, metres; fog hides what is beyond.
 const float GOD_RAY_RANGE = 60.0;
 // Depth over which the shafts' contrast fades as their focus blurs, metres.
 const float SHAFT_FADE_DEPTH = 30.0;
-// World size of the shaft pattern relative to the ripple heightmap.
-const float SHAFT_SCALE = 0.35;
+// Distance to the neighbours a crest is compared with, metres, and the contrast per metre
+// of height difference.
+const float SHAFT_REACH = 1.5;
+const float SHAFT_CONTRAST = 6.0;
+// Brightness of the shafts at intensity 1: in-scattering made visible on an 8-bit screen.
+const float GOD_RAY_GAIN = 1.5;
 
-// Interleaved gradient noise: a fixed per-pixel offset of the march, so 12 steps read as
+// Interleaved gradient noise: a fixed per-pixel offset of the march, so 10 steps read as
 // smooth shafts after the blur instead of as bands. Deterministic, no seed involved.
 float marchJitter(vec2 pixel) {
   return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-// Light let through the surface at s, relative to a flat sea: ripple crests act as
-// converging lenses, so the drifting ripple field gives drifting shafts.
+// Light let through the surface at s, relative to a flat sea. A ripple crest higher than
+// its surroundings is a converging lens: the band-passed ripple height (centre minus the
+// mean of three neighbours at 120°) gives the shafts, and they drift with the ripples.
 float shaftLight(vec2 s) {
-  float r = sampleHeightmap(uHeightmap0, s * SHAFT_SCALE + uRippleOffset.xy)
-          + sampleHeightmap(uHeightmap1, s * SHAFT_SCALE + uRippleOffset.zw);
-  float lens = clamp(0.5 + 0.9 * r, 0.0, 1.0);
+  float centre = rippleHeight(s);
+  float around = rippleHeight(s + SHAFT_REACH * vec2(1.0, 0.0))
+               + rippleHeight(s + SHAFT_REACH * vec2(-0.5, 0.866))
+               + rippleHeight(s + SHAFT_REACH * vec2(-0.5, -0.866));
+  float lens = clamp(0.5 + SHAFT_CONTRAST * (centre - around / 3.0), 0.0, 1.0);
   return lens * lens * lens;
 }
 
@@ -63,8 +70,8 @@ vec3 godRays(vec3 origin, vec3 direction, float distance) {
   }
   // Forward scattering: the shafts glow most when looking towards the sun.
   float towardsSun = max(dot(direction, -uRefractedSun), 0.0);
-  float phase = 0.15 + 1.6 * pow(towardsSun, 6.0);
-  return uSunColor * sum * stepLength * uFogDensity * phase * uGodRays;
+  float phase = 0.3 + 3.0 * pow(towardsSun, 4.0);
+  return uSunColor * sum * stepLength * uFogDensity * phase * GOD_RAY_GAIN * uGodRays;
 }
 
 void main() {

@@ -75,7 +75,8 @@ export class OceanView {
     params: OceanParams,
   ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
-    this.renderer.info.autoReset = true;
+    // Reset once per frame by render(), so a frame of several composer passes counts them all.
+    this.renderer.info.autoReset = false;
     this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, 20000);
     this.camera.position.set(0, 9, 40);
     this.camera.lookAt(0, 0, -60);
@@ -196,6 +197,7 @@ export class OceanView {
   }
 
   render(time: number): void {
+    this.renderer.info.reset();
     const { underwater, submersion } = this.prepare(time);
     let composerPasses = 0;
     if (submersion === 'above') this.renderer.render(this.scene, this.camera);
