@@ -61,8 +61,10 @@ void main() {
   float distance = length(toEye);
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
+  // Alpha tells the underwater pass which side of this very mesh the line of sight came
+  // from: 0.5 from below, 0 from above (the canvas has no alpha, so this shows nowhere).
   if (!gl_FrontFacing) {
-    gl_FragColor = vec4(shadeFromBelow(v, n), 1.0);
+    gl_FragColor = vec4(shadeFromBelow(v, n), 0.5);
     #include <tonemapping_fragment>
     #include <colorspace_fragment>
     return;
@@ -88,7 +90,7 @@ void main() {
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
 
-  gl_FragColor = vec4(color, 1.0);
+  gl_FragColor = vec4(color, 0.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }

@@ -74,6 +74,16 @@ vec3 godRays(vec3 origin, vec3 direction, float distance) {
   return uSunColor * sum * stepLength * uFogDensity * phase * GOD_RAY_GAIN * uGodRays;
 }
 
+// Where the line of sight hit the ocean mesh, the face it hit says which side it came
+// from (the ocean writes alpha 0 on its top, 0.5 on its underside): that follows the drawn
+// triangles exactly, so the waterline has no gap. Elsewhere (sky, sea bed, other meshes)
+// the near-plane point is compared with the surface height above it.
+bool startsInAir(float alpha, float depthSample, vec3 nearWorld) {
+  if (depthSample < 1.0 && alpha < 0.25) return true;
+  if (depthSample < 1.0 && alpha < 0.75) return false;
+  return nearWorld.y >= oceanHeight(nearWorld.xz);
+}
+
 void main() {
   vec4 scene = texture2D(tDiffuse, vUv);
   vec4 nearView = uProjectionInverse * vec4(vUv * 2.0 - 1.0, -1.0, 1.0);
@@ -81,12 +91,12 @@ void main() {
   vec3 nearWorld = (uCameraWorld * nearView).xyz;
   vec3 direction = normalize(nearWorld - uEye);
 
-  if (uPerPixelWaterline && nearWorld.y >= oceanHeight(nearWorld.xz)) {
+  float depthSample = texture2D(tDepth, vUv).x;
+  if (uPerPixelWaterline && startsInAir(scene.a, depthSample, nearWorld)) {
     gl_FragColor = vec4(scene.rgb, 0.0);
     return;
   }
 
-  float depthSample = texture2D(tDepth, vUv).x;
   float distance = 1e6;
   if (depthSample < 1.0) {
     float viewZ = perspectiveDepthToViewZ(depthSample, uNear, uFar);
