@@ -73,7 +73,7 @@ describe('under the water', () => {
   });
 
   it('shows air above and water below the waterline of a straddling camera', async () => {
-    const { page } = await openOcean(harness, 'seed=1&t=10&camera=0,0.35,40&target=0,0.1,-20&blurStrength=0');
+    const { page } = await openOcean(harness, 'seed=1&t=10&camera=0,1.7,40&target=0,1.5,-20&blurStrength=0');
     const png = PNG.sync.read(await canvasPng(page));
     expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('straddling');
     const mean = (y0: number, y1: number) => {
