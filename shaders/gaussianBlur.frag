@@ -8,6 +8,8 @@ uniform sampler2D tDiffuse;
 uniform vec2 uStep;
 uniform float uWeights[MAX_RADIUS + 1];
 uniform int uRadius;
+// The last pass that needs the mask makes the frame opaque again for the canvas.
+uniform bool uLastMaskUse;
 
 varying vec2 vUv;
 
@@ -24,5 +26,5 @@ void main() {
     total += uWeights[i] * (a.a + b.a);
   }
   vec3 blurred = total > 0.0 ? sum / total : center.rgb;
-  gl_FragColor = vec4(mix(center.rgb, blurred, center.a), center.a);
+  gl_FragColor = vec4(mix(center.rgb, blurred, center.a), uLastMaskUse ? 1.0 : center.a);
 }

@@ -8,6 +8,8 @@ uniform samplerCube uSky;
 uniform sampler2D uFresnelTable;
 uniform sampler2D uFresnelFromBelow;
 uniform bool uFresnelEnabled;
+// Set while the frame goes through the underwater passes, which read the side from alpha.
+uniform bool uMarkSides;
 uniform vec3 uDeepColor;
 uniform vec3 uFacingTint;
 uniform vec3 uSunDirection;
@@ -61,10 +63,10 @@ void main() {
   float distance = length(toEye);
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
-  // Alpha tells the underwater pass which side of this very mesh the line of sight came
-  // from: 0.5 from below, 0 from above (the canvas has no alpha, so this shows nowhere).
+  // With uMarkSides, alpha tells the underwater pass which side of this very mesh the line
+  // of sight came from: 0.5 from below, 0 from above. Drawn straight to the canvas it is 1.
   if (!gl_FrontFacing) {
-    gl_FragColor = vec4(shadeFromBelow(v, n), 0.5);
+    gl_FragColor = vec4(shadeFromBelow(v, n), uMarkSides ? 0.5 : 1.0);
     #include <tonemapping_fragment>
     #include <colorspace_fragment>
     return;
@@ -90,7 +92,7 @@ void main() {
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
 
-  gl_FragColor = vec4(color, 0.0);
+  gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }

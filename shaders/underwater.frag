@@ -18,6 +18,8 @@ uniform bool uPerPixelWaterline;
 uniform vec3 uRefractedSun;
 uniform vec3 uSunColor;
 uniform float uGodRays;
+// Whether the blur passes follow and need the water mask in alpha; else alpha is 1 for the canvas.
+uniform bool uWriteMask;
 
 varying vec2 vUv;
 
@@ -93,7 +95,7 @@ void main() {
 
   float depthSample = texture2D(tDepth, vUv).x;
   if (uPerPixelWaterline && startsInAir(scene.a, depthSample, nearWorld)) {
-    gl_FragColor = vec4(scene.rgb, 0.0);
+    gl_FragColor = vec4(scene.rgb, uWriteMask ? 0.0 : 1.0);
     return;
   }
 

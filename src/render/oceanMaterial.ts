@@ -27,6 +27,7 @@ export class OceanMaterial extends ShaderMaterial {
         uFresnelTable: { value: fresnelTables.fromAbove },
         uFresnelFromBelow: { value: fresnelTables.fromBelow },
         uFresnelEnabled: { value: true },
+        uMarkSides: { value: false },
         uDeepColor: { value: new Color() },
         uFacingTint: { value: new Color() },
         uSunDirection: { value: new Vector3(0, 1, 0) },
@@ -40,9 +41,13 @@ export class OceanMaterial extends ShaderMaterial {
     return this.uniforms as SurfaceUniforms;
   }
 
-  /** Both faces once the view may be under the water: the underside is shaded from below. */
+  /**
+   * Both faces once the view may be under the water: the underside is shaded from below, and
+   * each face marks its side in alpha for the underwater passes.
+   */
   setSeenFromBelow(fromBelow: boolean): void {
     this.side = fromBelow ? DoubleSide : FrontSide;
+    this.uniforms.uMarkSides.value = fromBelow;
   }
 
   setSurface(state: SurfaceState): void {

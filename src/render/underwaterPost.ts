@@ -50,6 +50,7 @@ function blurPass(name: string): ShaderPass {
       uStep: { value: new Vector2() },
       uWeights: { value: Array.from(gaussianKernel(0, BLUR_MAX_RADIUS)) },
       uRadius: { value: 0 },
+      uLastMaskUse: { value: name === 'BlurVertical' },
     },
   });
   return new ShaderPass(material);
@@ -97,6 +98,7 @@ export class UnderwaterPost {
           uFar: { value: 1000 },
           uPerPixelWaterline: { value: false },
           uGodRays: { value: 0 },
+          uWriteMask: { value: false },
         },
       }),
     );
@@ -123,6 +125,7 @@ export class UnderwaterPost {
   setBlur(sigma: number): void {
     const weights = Array.from(gaussianKernel(sigma, BLUR_MAX_RADIUS));
     const radius = sigma === 0 ? 0 : Math.min(BLUR_MAX_RADIUS, Math.ceil(3 * sigma));
+    this.volumePass.uniforms.uWriteMask.value = sigma > 0;
     for (const pass of [this.blurH, this.blurV]) {
       pass.enabled = sigma > 0;
       pass.uniforms.uWeights.value = weights;
