@@ -1,9 +1,15 @@
-// Water shading, above the surface: Fresnel-weighted mix of the reflected sky cube and
-// the water's own colour, a sun highlight, and haze towards the horizon.
+// Water shading. From above: Fresnel-weighted mix of the reflected sky cube and the
+// water's own colour, a sun highlight, and haze towards the horizon. From below: the sky
+// refracted through Snell's window, total internal reflection of the water outside it.
+
+#include <oceano_water_volume>
 
 uniform samplerCube uSky;
 uniform sampler2D uFresnelTable;
+uniform sampler2D uFresnelFromBelow;
 uniform bool uFresnelEnabled;
+// Set while the frame goes through the underwater passes, which read the side from alpha.
+uniform bool uMarkSides;
 uniform vec3 uDeepColor;
 uniform vec3 uFacingTint;
 uniform vec3 uSunDirection;
@@ -30,14 +36,36 @@ vec3 skyColor(vec3 direction) {
 
 // Linear interpolation between table entries done by hand: float textures are not
 // filterable everywhere in WebGL2.
-float fresnelLookup(float cosIncidence) {
-  int size = textureSize(uFresnelTable, 0).x;
+float fresnelLookup(sampler2D table, float cosIncidence) {
+  int size = textureSize(table, 0).x;
   float x = clamp(cosIncidence, 0.0, 1.0) * float(size - 1);
   int i = int(floor(x));
   int j = min(i + 1, size - 1);
-  float a = texelFetch(uFresnelTable, ivec2(i, 0), 0).r;
-  float b = texelFetch(uFresnelTable, ivec2(j, 0), 0).r;
+  float a = texelFetch(table, ivec2(i, 0), 0).r;
+  float b = texelFetch(table, ivec2(j, 0), 0).r;
   return mix(a, b, x - float(i));
+}
+
+const float WATER_OVER_AIR = 1.333;
+
+// v points from the surface down to the eye; n is the surface normal (facing the air).
+vec3 shadeFromBelow(vec3 v, vec3 n) {
+  vec3 towardsWater = -n;
+  float cosIncidence = max(dot(towardsWater, v), 0.0);
+  vec3 up = refract(-v, towardsWater, WATER_OVER_AIR);
+  bool totalReflection = dot(up, up) == 0.0;
+  // Without Fresnel the window still ends where Snell's law says: inside it, all sky.
+  float reflectance = uFresnelEnabled ? fresnelLookup(uFresnelFromBelow, cosIncidence) : (totalReflection ? 1.0 : 0.0);
+
+  vec3 through = vec3(0.0);
+  if (!totalReflection) {
+    vec3 t = normalize(up);
+    through = skyColor(t);
+    float sunVisible = step(0.0, uSunDirection.y);
+    through += uSunColor * pow(max(dot(t, uSunDirection), 0.0), 700.0) * 30.0 * sunVisible;
+  }
+  vec3 mirrored = waterVolumeColor(reflect(-v, towardsWater));
+  return mix(through, mirrored, reflectance);
 }
 
 void main() {
@@ -49,9 +77,17 @@ void main() {
     gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
     return;
   }
+  // With uMarkSides, alpha tells the underwater pass which side of this very mesh the line
+  // of sight came from: 0.5 from below, 0 from above. Drawn straight to the canvas it is 1.
+  if (!gl_FrontFacing) {
+    gl_FragColor = vec4(shadeFromBelow(v, n), uMarkSides ? 0.5 : 1.0);
+    #include <tonemapping_fragment>
+    #include <colorspace_fragment>
+    return;
+  }
   float cosIncidence = max(dot(n, v), 0.0);
 
-  float reflectance = uFresnelEnabled ? fresnelLookup(cosIncidence) : 0.5;
+  float reflectance = uFresnelEnabled ? fresnelLookup(uFresnelTable, cosIncidence) : 0.5;
 
   vec3 r = reflect(-v, n);
   // A reflected ray that points below the horizon would see the sea, not the sky.
@@ -72,7 +108,7 @@ void main() {
 
   if (uLodColors) color = mix(color, BAND_COLORS[int(vBand + 0.5)], 0.7);
 
-  gl_FragColor = vec4(color, 1.0);
+  gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }

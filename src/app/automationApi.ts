@@ -1,6 +1,7 @@
 import type { OceanApp, BoatInfo, CameraPose, LoopActivity, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
 import type { SurfaceSample } from '../sim/oceanSurface';
+import type { PassTiming } from '../render/underwaterPost';
 
 /**
  * `window.oceano` on the page, `element.oceano` on an <oceano-view>: how tests, course
@@ -30,6 +31,10 @@ export interface OceanoApi {
   activity(): LoopActivity;
   debug: {
     fresnelTable(): Float32Array;
+    /** The reflectance table seen from under the water (n₁ = 1.333, n₂ = 1). */
+    fresnelTableFromBelow(): Float32Array;
+    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water). */
+    passTimings(): PassTiming[];
     heightmaps(): { size: number; data: Float32Array }[];
     /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
     lodUpdateMs(batches?: number): number;
@@ -63,6 +68,8 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     activity: () => app.activity(),
     debug: {
       fresnelTable: () => app.fresnelTable(),
+      fresnelTableFromBelow: () => app.fresnelTableFromBelow(),
+      passTimings: () => app.passTimings(),
       heightmaps: () => app.heightmaps(),
       lodUpdateMs: (batches) => app.lodUpdateMs(batches),
     },

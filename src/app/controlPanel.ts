@@ -7,6 +7,7 @@ const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow'] },
+  { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
   { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'freezeCulling', 'lodBruteForce'] },
   { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'view', 'fresnelPlot'] },
 ];
@@ -24,6 +25,8 @@ export interface ControlPanelHooks {
   onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
   onPlayingChange(playing: boolean): void;
   onShare(): void;
+  onDive(): void;
+  onSurface(): void;
 }
 
 /**
@@ -57,6 +60,9 @@ export class ControlPanel {
     );
     // lil-gui draws a function as a <button>: focusable and keyboard operable.
     this.gui.add({ share: () => hooks.onShare() }, 'share').name(tr.ui('share'));
+    const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
+    this.gui.add(camera, 'dive').name(tr.ui('dive'));
+    this.gui.add(camera, 'surface').name(tr.ui('surface'));
   }
 
   private addControl(group: GUI, key: ParamKey, hooks: ControlPanelHooks): Controller {

@@ -79,6 +79,9 @@ export type UiTextId =
   | 'folderView'
   | 'folderBoat'
   | 'folderLod'
+  | 'folderUnderwater'
+  | 'dive'
+  | 'surface'
   | 'folderLiveCounts'
   | 'countChunks'
   | 'countTriangles'
@@ -101,6 +104,9 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderView: 'View',
     folderBoat: 'Boat',
     folderLod: 'LOD & culling',
+    folderUnderwater: 'Underwater',
+    dive: 'Dive under the surface',
+    surface: 'Back to the surface view',
     folderLiveCounts: 'LOD counts (live)',
     countChunks: 'Chunks visible / total',
     countTriangles: 'Triangles',
@@ -122,6 +128,9 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderView: 'Vista',
     folderBoat: 'Barco',
     folderLod: 'LOD y recorte',
+    folderUnderwater: 'Bajo el agua',
+    dive: 'Sumergirse',
+    surface: 'Volver a la superficie',
     folderLiveCounts: 'Contadores de LOD (en vivo)',
     countChunks: 'Parcelas visibles / total',
     countTriangles: 'Triángulos',
@@ -164,6 +173,13 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   lodColors: 'Colorear parcelas por banda',
   freezeCulling: 'Congelar el recorte',
   lodBruteForce: 'Fuerza bruta (malla completa, sin recorte)',
+  blurStrength: 'Desenfoque bajo el agua (σ)',
+  fogDensity: 'Densidad de la niebla del agua',
+  seaBedDepth: 'Profundidad del fondo',
+  caustics: 'Cáusticas',
+  causticsIntensity: 'Intensidad de las cáusticas',
+  godRays: 'Rayos de luz',
+  godRaysIntensity: 'Intensidad de los rayos de luz',
 };
 
 /** Everything the page says, in one language. */

@@ -11,6 +11,8 @@ import type { HullSize } from '../sim/boatPose';
 import { OceanView } from '../render/oceanView';
 import { BoatView } from '../render/boatView';
 import { loadBoatModel } from '../render/boatModel';
+import type { PassTiming } from '../render/underwaterPost';
+import type { Submersion } from '../sim/underwater';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { isCameraPose, type CameraPose } from './cameraPose';
 import { ControlPanel } from './controlPanel';
@@ -44,6 +46,12 @@ export interface OceanStats {
   boatMs: number;
   drawCalls: number;
   triangles: number;
+  /** The camera is below the surface at its own (x, z), by the CPU twin of the waves. */
+  underwater: boolean;
+  /** 'straddling': the waterline may cross the frame and is decided per pixel. */
+  submersion: Submersion;
+  /** EffectComposer passes run for the last frame; 0 above the water. */
+  composerPasses: number;
   chunksTotal: number;
   chunksVisible: number;
   /** Visible chunks per LOD band, nearest band first. */
@@ -89,6 +97,12 @@ export interface BoatInfo {
   target: { position: [number, number, number]; pitch: number; roll: number };
   model: 'loading' | 'loaded' | 'failed';
 }
+
+/** The default view, and the one "Surface" returns to. */
+const DEFAULT_POSE: CameraPose = { position: [0, 9, 40], target: [0, 0, -60] };
+/** Where "Dive" puts the eye, metres below the mean sea level, and how far ahead it looks. */
+const DIVE_DEPTH = 6;
+const DIVE_LOOK_AHEAD = 60;
 
 /**
  * One live ocean in a container element: owns its canvas, the clock, the parameters, the
@@ -172,7 +186,8 @@ export class OceanApp {
     this.boatView = new BoatView(this.view.scene);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
     this.controls.target.set(0, 0, -60);
-    this.controls.maxPolarAngle = Math.PI * 0.495;
+    // The whole sphere around the target: orbiting below its level takes the eye under the water.
+    this.controls.maxPolarAngle = Math.PI;
     this.controls.update();
     this.controls.addEventListener('change', this.requestRender);
     const { camera, cullingCamera } = this.options.state;
@@ -191,6 +206,8 @@ export class OceanApp {
           onParam: (key, value) => this.setParams({ [key]: value }),
           onPlayingChange: (playing) => (playing ? this.play() : this.pause()),
           onShare: () => void this.share(),
+          onDive: () => this.dive(),
+          onSurface: () => this.setCamera(DEFAULT_POSE),
         },
         this.tr,
       );
@@ -447,6 +464,15 @@ export class OceanApp {
     }
   }
 
+  /** Puts the eye DIVE_DEPTH under the mean sea level where it is, looking level the way it looked. */
+  dive(): void {
+    const eye = this.view.camera.position;
+    const heading = this.controls.target.clone().sub(eye).setY(0);
+    if (heading.lengthSq() < 1e-12) heading.set(0, 0, -1);
+    heading.normalize().multiplyScalar(DIVE_LOOK_AHEAD);
+    this.setCamera({ position: [eye.x, -DIVE_DEPTH, eye.z], target: [eye.x + heading.x, -DIVE_DEPTH, eye.z + heading.z] });
+  }
+
   camera(): CameraPose {
     return { position: this.view.camera.position.toArray(), target: this.controls.target.toArray() as [number, number, number] };
   }
@@ -510,8 +536,17 @@ export class OceanApp {
     return this.view.timeLodUpdate(batches);
   }
 
+  /** One frame drawn with the GPU waited for after each pass: each pass's cost in ms. */
+  passTimings(): PassTiming[] {
+    return this.view.profileFrame(this.clock.time);
+  }
+
   fresnelTable(): Float32Array {
     return this.view.fresnelData.slice();
+  }
+
+  fresnelTableFromBelow(): Float32Array {
+    return this.view.fresnelFromBelowData.slice();
   }
 
   heightmaps(): { size: number; data: Float32Array }[] {

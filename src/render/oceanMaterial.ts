@@ -1,29 +1,37 @@
-import { Color, ShaderMaterial, Vector3, type CubeTexture, type Texture } from 'three';
+import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import type { SurfaceState } from '../sim/surface';
 import { BASE_STEP, CHUNK_QUADS } from '../sim/lodBands';
 import { registerShaderChunks } from './shaderChunks';
 import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './surfaceUniforms';
+import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
 
 export class OceanMaterial extends ShaderMaterial {
-  constructor(heightmaps: [Texture, Texture], fresnelTable: Texture, sky: CubeTexture) {
+  constructor(
+    heightmaps: [Texture, Texture],
+    fresnelTables: { fromAbove: Texture; fromBelow: Texture },
+    sky: CubeTexture,
+    shared: WaterVolumeUniforms & Record<'uSunColor', IUniform>,
+  ) {
     registerShaderChunks();
     super({
       vertexShader,
       fragmentShader,
       uniforms: {
         ...createSurfaceUniforms(heightmaps),
+        ...shared,
         uSky: { value: sky },
-        uFresnelTable: { value: fresnelTable },
+        uFresnelTable: { value: fresnelTables.fromAbove },
+        uFresnelFromBelow: { value: fresnelTables.fromBelow },
         uFresnelEnabled: { value: true },
+        uMarkSides: { value: false },
         uDeepColor: { value: new Color() },
         uFacingTint: { value: new Color() },
         uSunDirection: { value: new Vector3(0, 1, 0) },
-        uSunColor: { value: new Color(1.0, 0.93, 0.8) },
         uHazeDensity: { value: 0.0012 },
         uFlatNormals: { value: false },
         uShowNormals: { value: false },
@@ -32,6 +40,20 @@ export class OceanMaterial extends ShaderMaterial {
         uLodColors: { value: false },
       },
     });
+  }
+
+  /** The displacement uniforms, for materials that share this surface (sea bed, post passes). */
+  get surfaceUniforms(): SurfaceUniforms {
+    return this.uniforms as SurfaceUniforms;
+  }
+
+  /**
+   * Both faces once the view may be under the water: the underside is shaded from below, and
+   * each face marks its side in alpha for the underwater passes.
+   */
+  setSeenFromBelow(fromBelow: boolean): void {
+    this.side = fromBelow ? DoubleSide : FrontSide;
+    this.uniforms.uMarkSides.value = fromBelow;
   }
 
   setSurface(state: SurfaceState): void {

@@ -1,43 +1,83 @@
-import { PerspectiveCamera, Scene, WebGLRenderer, type CubeTexture, type DataTexture } from 'three';
+import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform } from 'three';
 import type { OceanParams } from '../sim/params';
-import type { OceanSurface } from '../sim/oceanSurface';
-import { fresnelTable } from '../sim/fresnel';
+import type { OceanSurface, SurfaceSample } from '../sim/oceanSurface';
+import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { sunDirection } from '../sim/sun';
+import { maxDisplacement, surfaceHeight } from '../sim/surface';
+import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../sim/underwater';
+import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
+import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
+import { SeaBed } from './seaBed';
+import { UnderwaterPost, type PassTiming } from './underwaterPost';
 import { OceanMaterial } from './oceanMaterial';
 import { OceanChunks, type ChunkStats, type LodSettings } from './oceanChunks';
-import { maxDisplacement } from '../sim/surface';
 import { fresnelTexture, heightmapTexture } from './dataTextures';
 import { SurfaceProbe } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
-import type { SurfaceSample } from '../sim/oceanSurface';
+
+/**
+ * How far from the surface a near-plane sample must be to decide the whole near plane,
+ * metres: it covers the surface rising or dipping between the 3 × 3 samples (spaced about
+ * half a metre) on the steepest ripples.
+ */
+const WATERLINE_MARGIN = 0.25;
+const NEAR_PLANE_SAMPLES: readonly [number, number][] = [-1, 0, 1].flatMap((x) => [-1, 0, 1].map((y) => [x, y] as [number, number]));
 
 export interface RenderStats extends ChunkStats {
   drawCalls: number;
   triangles: number;
+  /** The eye is below the surface at its own (x, z), by the CPU twin. */
+  underwater: boolean;
+  submersion: Submersion;
+  /** EffectComposer passes run for the last frame: 0 when it was drawn directly. */
+  composerPasses: number;
 }
 
 /**
- * The three.js side of the ocean: renderer, scene, camera and the displaced chunks. It is
- * given its canvas, its surface data and the time of each frame; it reads no clock, URL
- * or DOM of its own.
+ * The three.js side of the ocean: renderer, scene, camera, the chunked ocean, the sea bed
+ * and the underwater passes. It is given its canvas, its surface data and the time of each
+ * frame; it reads no clock, URL or DOM of its own.
  */
 export class OceanView {
   readonly renderer: WebGLRenderer;
   readonly scene = new Scene();
   readonly camera: PerspectiveCamera;
   readonly fresnelData = fresnelTable(256);
+  readonly fresnelFromBelowData = fresnelTableFromBelow(256);
   private readonly material: OceanMaterial;
   private readonly ocean: OceanChunks;
   private lod: LodSettings;
   private boundsHeight: number;
   private heightmapTextures: [DataTexture, DataTexture];
   private readonly fresnelTexture: DataTexture;
-  private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, lodCounts: [] };
+  private readonly fresnelFromBelowTexture: DataTexture;
+  private readonly waterVolume: WaterVolumeUniforms = createWaterVolumeUniforms();
+  private readonly caustics: CausticsUniforms = createCausticsUniforms();
+  private readonly light: Record<'uRefractedSun' | 'uSunColor', IUniform> = {
+    uRefractedSun: { value: new Vector3() },
+    uSunColor: { value: new Color(1.0, 0.93, 0.8) },
+  };
+  private readonly seaBed: SeaBed;
+  private readonly lights: SceneLights;
+  /** Made on the first frame that needs it, so a view that never dives never pays for its targets. */
+  private post?: UnderwaterPost;
+  private params: OceanParams;
+  private lastStats: RenderStats = {
+    drawCalls: 0,
+    triangles: 0,
+    chunksTotal: 0,
+    chunksVisible: 0,
+    lodCounts: [],
+    underwater: false,
+    submersion: 'above',
+    composerPasses: 0,
+  };
+  private where: { underwater: boolean; submersion: Submersion } = { underwater: false, submersion: 'above' };
   private probe?: SurfaceProbe;
   private heightmapView?: HeightmapView;
   private showHeightmaps = false;
-  private readonly lights: SceneLights;
+  private readonly nearPoint = new Vector3();
 
   constructor(
     canvas: HTMLCanvasElement,
@@ -46,7 +86,8 @@ export class OceanView {
     params: OceanParams,
   ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
-    this.renderer.info.autoReset = true;
+    // Reset once per frame by draw(), so a frame of several composer passes counts them all.
+    this.renderer.info.autoReset = false;
     this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, 20000);
     this.camera.position.set(0, 9, 40);
     this.camera.lookAt(0, 0, -60);
@@ -54,12 +95,21 @@ export class OceanView {
     this.scene.background = sky;
     this.heightmapTextures = surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
     this.fresnelTexture = fresnelTexture(this.fresnelData);
-    this.material = new OceanMaterial(this.heightmapTextures, this.fresnelTexture, sky);
+    this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
+    this.material = new OceanMaterial(
+      this.heightmapTextures,
+      { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
+      sky,
+      { ...this.waterVolume, uSunColor: this.light.uSunColor },
+    );
     this.ocean = new OceanChunks(this.material);
     this.scene.add(this.ocean.group);
     this.lod = params;
     this.boundsHeight = maxDisplacement(params);
+    this.seaBed = new SeaBed({ ...this.material.surfaceUniforms, ...this.waterVolume, ...this.caustics, ...this.light });
+    this.scene.add(this.seaBed.mesh);
     this.lights = new SceneLights(this.scene);
+    this.params = params;
     this.applyParams(params);
   }
 
@@ -69,8 +119,9 @@ export class OceanView {
       this.heightmapTextures = this.surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
       this.material.setHeightmaps(this.heightmapTextures);
     }
-    this.material.setWaterColor(params.waterColor);
+    this.params = params;
     const sun = sunDirection(params.sunElevation, params.sunAzimuth);
+    this.material.setWaterColor(params.waterColor);
     this.material.setSunDirection(sun);
     this.lights.update(sun, params.waterColor);
     this.material.setFresnelEnabled(params.fresnel);
@@ -81,6 +132,15 @@ export class OceanView {
     this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
     // Chunk boxes reach as high and low as any wave can, so a crest rising into view is never culled.
     this.boundsHeight = maxDisplacement(params);
+
+    const refracted = refractedSunDirection(sun);
+    (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
+    applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
+    applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
+    this.seaBed.setDepth(params.seaBedDepth);
+    this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
+    this.post?.setBlur(params.blurStrength);
+    this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
   }
 
   setSky(sky: CubeTexture): void {
@@ -97,27 +157,101 @@ export class OceanView {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.post?.setSize(w, h, pixelRatio);
+  }
+
+  /**
+   * Where the view starts: 'above' and 'below' when the eye and the whole near plane are
+   * clear of the surface on one side, else 'straddling' (the waterline may cross the frame).
+   */
+  private submersionAt(time: number): { underwater: boolean; submersion: Submersion } {
+    const state = this.surface.stateAt(time);
+    const maps = this.surface.heightmaps;
+    const eye = this.camera.position;
+    const eyeSurface = surfaceHeight(state, maps, eye.x, eye.z);
+    const underwater = eye.y < eyeSurface;
+    // The near plane lies within `reach` of the eye: far above the highest crest, no sampling needed.
+    const nearHalfHeight = this.camera.near * Math.tan((this.camera.fov * Math.PI) / 360);
+    const reach = Math.hypot(this.camera.near, nearHalfHeight, nearHalfHeight * this.camera.aspect);
+    if (eye.y - reach > this.boundsHeight + WATERLINE_MARGIN) return { underwater, submersion: 'above' };
+    this.camera.updateMatrixWorld();
+    const points = [{ y: eye.y, surface: eyeSurface }];
+    for (const [x, y] of NEAR_PLANE_SAMPLES) {
+      const p = this.nearPoint.set(x, y, -1).unproject(this.camera);
+      points.push({ y: p.y, surface: surfaceHeight(state, maps, p.x, p.z) });
+    }
+    return { underwater, submersion: classifyNearPlane(points, WATERLINE_MARGIN) };
   }
 
   /**
    * The CPU half of a frame: everything that must be decided before drawing (surface
-   * uniforms, grid placement). Kept apart from draw() so its cost can be measured alone.
+   * uniforms, chunk selection, which side of the water the eye is on). Kept apart from
+   * draw() so its cost can be measured alone.
    */
   update(time: number): void {
-    this.material.setSurface(this.surface.stateAt(time));
+    const state = this.surface.stateAt(time);
+    this.material.setSurface(state);
     this.ocean.update(this.camera, this.lod, this.boundsHeight);
+    this.where = this.submersionAt(time);
+    const inWater = this.where.submersion !== 'above';
+    this.material.setSeenFromBelow(inWater);
+    this.seaBed.mesh.visible = inWater;
+    this.seaBed.follow(this.camera.position);
+    // Seen entirely from below, the sky can only show through the surface: skip drawing it.
+    this.scene.background = this.where.submersion === 'below' ? null : this.sky;
+    const eye = this.camera.position;
+    this.waterVolume.uCameraDepth.value = Math.max(0, surfaceHeight(state, this.surface.heightmaps, eye.x, eye.z) - eye.y);
   }
 
-  /** Submits the frame prepared by update() to the GPU. */
-  draw(): void {
-    if (this.showHeightmaps) {
-      this.heightmapView ??= new HeightmapView();
-      this.heightmapView.render(this.renderer, this.heightmapTextures, this.camera.aspect);
-    } else {
-      this.renderer.render(this.scene, this.camera);
+  private underwaterPost(): UnderwaterPost {
+    if (!this.post) {
+      this.post = new UnderwaterPost(this.renderer, this.scene, this.camera, { ...this.material.surfaceUniforms, ...this.waterVolume, ...this.light });
+      const size = this.renderer.getSize(new Vector2());
+      this.post.setSize(size.x, size.y, this.renderer.getPixelRatio());
+      this.post.setBlur(this.params.blurStrength);
+      this.post.setGodRays(this.params.godRays ? this.params.godRaysIntensity : 0);
     }
+    return this.post;
+  }
+
+  /** Submits the frame prepared by update(): directly above water, through the composer below it. */
+  draw(): void {
+    this.renderer.info.reset();
+    const { underwater, submersion } = this.where;
+    let composerPasses = 0;
+    if (this.showHeightmaps) this.heightmapView = this.drawHeightmaps();
+    else if (submersion === 'above') this.renderer.render(this.scene, this.camera);
+    else composerPasses = this.underwaterPost().render(submersion === 'straddling');
     const info = this.renderer.info.render;
-    this.lastStats = { drawCalls: info.calls, triangles: info.triangles, ...this.ocean.stats() };
+    this.lastStats = { drawCalls: info.calls, triangles: info.triangles, ...this.ocean.stats(), underwater, submersion, composerPasses };
+  }
+
+  private drawHeightmaps(): HeightmapView {
+    const view = this.heightmapView ?? new HeightmapView();
+    view.render(this.renderer, this.heightmapTextures, this.camera.aspect);
+    return view;
+  }
+
+  /**
+   * Draws one frame waiting for the GPU after each pass, and returns each pass's time.
+   * Above the water the frame is the single direct render, reported as 'scene'.
+   */
+  profileFrame(time: number): PassTiming[] {
+    const gl = this.renderer.getContext();
+    const pixel = new Uint8Array(4);
+    // Reading a canvas pixel waits for every command before it; each pass binds its own target again.
+    const sync = () => {
+      this.renderer.setRenderTarget(null);
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    };
+    this.update(time);
+    const { submersion } = this.where;
+    if (submersion !== 'above') return this.underwaterPost().profile(submersion === 'straddling', sync);
+    sync();
+    const start = performance.now();
+    this.renderer.render(this.scene, this.camera);
+    sync();
+    return [{ name: 'scene', ms: performance.now() - start }];
   }
 
   /** The displacement evaluated by the GPU shader at (x, z) points and a time. */
@@ -126,11 +260,7 @@ export class OceanView {
     return this.probe.probe(points, this.surface.stateAt(time), this.heightmapTextures);
   }
 
-  /**
-   * CPU time of one chunk update (culling, bands, instance upload preparation) for the
-   * current camera, ms: the median over `batches` batches of 20 updates, since the
-   * browser's clock is too coarse to time a single one.
-   */
+  /** Median CPU time of one culling + LOD update for the current camera, ms (batches of 20 for timer resolution). */
   timeLodUpdate(batches = 25): number {
     const perBatch: number[] = [];
     for (let b = 0; b < batches; b++) {
@@ -151,8 +281,11 @@ export class OceanView {
     this.material.dispose();
     this.probe?.dispose();
     this.heightmapView?.dispose();
+    this.post?.dispose();
+    this.seaBed.dispose();
     for (const texture of this.heightmapTextures) texture.dispose();
     this.fresnelTexture.dispose();
+    this.fresnelFromBelowTexture.dispose();
     this.sky.dispose();
     this.renderer.dispose();
   }

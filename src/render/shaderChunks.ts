@@ -1,5 +1,7 @@
 import { ShaderChunk } from 'three';
 import displacement from '../../shaders/displacement.glsl?raw';
+import waterVolume from '../../shaders/waterVolume.glsl?raw';
+import caustics from '../../shaders/caustics.glsl?raw';
 
 /**
  * Shared GLSL pieces are registered as three.js shader chunks, so every shader that needs
@@ -7,6 +9,9 @@ import displacement from '../../shaders/displacement.glsl?raw';
  */
 const chunks: Record<string, string> = {
   oceano_displacement: displacement,
+  oceano_water_volume: waterVolume,
+  // Needs oceano_displacement included before it; see src/render/causticsUniforms.ts.
+  oceano_caustics: caustics,
 };
 
 export function registerShaderChunks(): void {

@@ -57,6 +57,13 @@ export const paramDefs = {
   lodColors: { kind: 'boolean', default: false, label: 'Colour chunks by band' },
   freezeCulling: { kind: 'boolean', default: false, label: 'Freeze culling' },
   lodBruteForce: { kind: 'boolean', default: false, label: 'Brute force (full grid, no culling)' },
+  blurStrength: { kind: 'number', default: 1.5, min: 0, max: 8, step: 0.1, unit: 'px', label: 'Underwater blur (σ)' },
+  fogDensity: { kind: 'number', default: 0.035, min: 0, max: 0.3, step: 0.001, unit: '1/m', label: 'Water fog density' },
+  seaBedDepth: { kind: 'number', default: 20, min: 2, max: 200, step: 0.5, unit: 'm', label: 'Sea bed depth' },
+  caustics: { kind: 'boolean', default: true, label: 'Caustics' },
+  causticsIntensity: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'Caustics intensity' },
+  godRays: { kind: 'boolean', default: true, label: 'God rays' },
+  godRaysIntensity: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'God rays intensity' },
 } as const satisfies Record<string, ParamDef>;
 
 export type ParamKey = keyof typeof paramDefs;

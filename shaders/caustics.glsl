@@ -1,0 +1,42 @@
+// Caustics: the bright net of light under waves. Needs <oceano_displacement> first.
+// Sunlight is refracted through the displaced surface (its real normals, Snell's law)
+// and followed down to the depth of the lit point; the ratio of a small patch's area on
+// the surface to the area it lands on is the concentration of light there (the inverse
+// Jacobian of the surface-to-floor map). Folds of that map are the bright lines.
+
+uniform vec3 uCausticsSunDirection; // unit vector towards the sun, in the air
+uniform float uCausticsStrength;    // 0: flat light, 1: physical concentration
+
+const float CAUSTICS_AIR_OVER_WATER = 1.0 / 1.333;
+// Side of the surface patch whose image is measured, metres.
+const float CAUSTICS_PATCH = 0.75;
+// Brightest concentration kept: a fold of the map is a line of infinite intensity.
+const float CAUSTICS_MAX_GAIN = 8.0;
+
+vec2 causticLanding(vec2 s, float floorY, vec3 light) {
+  float h = oceanHeight(s);
+  vec3 n = oceanNormal(s, h);
+  vec3 t = refract(light, n, CAUSTICS_AIR_OVER_WATER);
+  return s + t.xz * ((floorY - h) / min(t.y, -1e-3));
+}
+
+// Multiplier of the direct sunlight reaching a point under the water (1 where the sea is
+// flat, above 1 where waves focus light, below where they spread it). Points above the
+// surface, and a sun below the horizon, get 1: there is nothing to concentrate.
+float causticLight(vec3 p) {
+  if (uCausticsSunDirection.y <= 0.0 || uCausticsStrength <= 0.0) return 1.0;
+  if (p.y >= oceanHeight(p.xz)) return 1.0;
+  vec3 light = -uCausticsSunDirection;
+  vec3 flatRay = refract(light, vec3(0.0, 1.0, 0.0), CAUSTICS_AIR_OVER_WATER);
+  // The surface point above p along the ray a flat sea would send there.
+  vec2 s = p.xz - flatRay.xz * (p.y / flatRay.y);
+  vec2 a = causticLanding(s, p.y, light);
+  vec2 b = causticLanding(s + vec2(CAUSTICS_PATCH, 0.0), p.y, light);
+  vec2 c = causticLanding(s + vec2(0.0, CAUSTICS_PATCH), p.y, light);
+  vec2 ab = b - a;
+  vec2 ac = c - a;
+  float landedArea = abs(ab.x * ac.y - ab.y * ac.x);
+  float patchArea = CAUSTICS_PATCH * CAUSTICS_PATCH;
+  float gain = patchArea / max(landedArea, patchArea / CAUSTICS_MAX_GAIN);
+  return mix(1.0, gain, uCausticsStrength);
+}

@@ -1,0 +1,31 @@
+// The sea bed: sand lit by the sunlight that crossed the waves (with its caustics) and
+// by the blue-green light scattered in the water above it. The water between the bed
+// and the eye is added by the underwater pass.
+
+#include <oceano_displacement>
+#include <oceano_water_volume>
+#include <oceano_caustics>
+
+uniform vec3 uSandColor;
+uniform vec3 uSunColor;
+uniform vec3 uRefractedSun;
+uniform float uSunTransmission;
+
+varying vec3 vWorldPosition;
+
+void main() {
+  float depth = max(-vWorldPosition.y, 0.0);
+  // Mottling from the seeded heightmap at a scale of its own, so the bed is not a flat card.
+  float mottle = sampleHeightmap(uHeightmap1, vWorldPosition.xz * 1.7);
+  vec3 albedo = uSandColor * (0.85 + 0.25 * mottle);
+
+  vec3 direct = vec3(0.0);
+  if (uRefractedSun.y < 0.0) {
+    float cosSun = -uRefractedSun.y;
+    vec3 reach = waterTransmittance(depth / cosSun);
+    direct = uSunColor * uSunTransmission * cosSun * reach * causticLight(vWorldPosition);
+  }
+  vec3 ambient = uWaterScatter * exp(-DEPTH_DARKENING * depth);
+  gl_FragColor = vec4(albedo * (direct + ambient), 1.0);
+  #include <colorspace_fragment>
+}

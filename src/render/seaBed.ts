@@ -1,0 +1,57 @@
+import { Color, Mesh, PlaneGeometry, ShaderMaterial, Vector3, type IUniform } from 'three';
+import vertexShader from '../../shaders/seabed.vert?raw';
+import fragmentShader from '../../shaders/seabed.frag?raw';
+import { registerShaderChunks } from './shaderChunks';
+import type { SurfaceUniforms } from './surfaceUniforms';
+import type { WaterVolumeUniforms } from './waterVolumeUniforms';
+import type { CausticsUniforms } from './causticsUniforms';
+
+/** Side of the flat bed, metres: far past where the water fog has hidden everything. */
+const BED_SIZE = 4000;
+const SAND = new Color(0.55, 0.47, 0.33);
+
+/**
+ * A flat sand bed at a configurable depth under the mean sea level, lit through the
+ * waves with caustics. It follows the camera in x and z; its pattern is in world space.
+ */
+export class SeaBed {
+  readonly mesh: Mesh;
+  private readonly material: ShaderMaterial;
+
+  constructor(shared: SurfaceUniforms & WaterVolumeUniforms & CausticsUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>) {
+    registerShaderChunks();
+    this.material = new ShaderMaterial({
+      vertexShader,
+      fragmentShader,
+      uniforms: {
+        ...shared,
+        uSandColor: { value: SAND.clone() },
+        uSunTransmission: { value: 1 },
+      },
+    });
+    const geometry = new PlaneGeometry(BED_SIZE, BED_SIZE);
+    geometry.rotateX(-Math.PI / 2);
+    this.mesh = new Mesh(geometry, this.material);
+    this.mesh.frustumCulled = false;
+    this.mesh.visible = false;
+  }
+
+  setDepth(depth: number): void {
+    this.mesh.position.y = -depth;
+  }
+
+  /** Share of the sunlight a flat sea lets through (1 − Fresnel reflectance at the sun's angle). */
+  setSunTransmission(transmission: number): void {
+    this.material.uniforms.uSunTransmission.value = transmission;
+  }
+
+  follow(eye: Vector3): void {
+    this.mesh.position.x = eye.x;
+    this.mesh.position.z = eye.z;
+  }
+
+  dispose(): void {
+    this.mesh.geometry.dispose();
+    this.material.dispose();
+  }
+}

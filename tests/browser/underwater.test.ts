@@ -1,0 +1,104 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { PNG } from 'pngjs';
+import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { compareWithReference } from './imageCompare';
+import { highFrequencyEnergy } from '../../src/sim/imageEnergy';
+
+const REFERENCE_TOLERANCE = 0.005;
+/** Six metres down, looking level across the sea bed towards the sun's side. */
+const DIVE_QUERY = 'seed=1&t=10&cam=0,-6,40,0,-6,-20';
+
+let harness: Harness;
+beforeAll(async () => {
+  harness = await startHarness();
+});
+afterAll(async () => {
+  await harness?.close();
+});
+
+function energyOf(png: Buffer): number {
+  const image = PNG.sync.read(png);
+  return highFrequencyEnergy(image.data, image.width, image.height);
+}
+
+describe('under the water', () => {
+  it('draws the dive view through the composer, matching the committed reference', async () => {
+    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
+    const png = await canvasPng(page);
+    const stats = await page.evaluate(() => window.oceano.stats());
+    expect(stats.underwater).toBe(true);
+    expect(stats.submersion).toBe('below');
+    expect(stats.composerPasses).toBe(5);
+    const timings = await page.evaluate(() => window.oceano.debug.passTimings());
+    expect(timings.map((t) => t.name)).toEqual(['scene', 'water', 'blurH', 'blurV', 'output']);
+    expect(compareWithReference('underwater-seed1-t10', png).share).toBeLessThanOrEqual(REFERENCE_TOLERANCE);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('lowers the high-frequency energy of the same frame when the blur is on', async () => {
+    const { page } = await openOcean(harness, `${DIVE_QUERY}&blurStrength=0`);
+    const sharp = energyOf(await canvasPng(page));
+    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(3);
+    await page.evaluate(() => window.oceano.setParams({ blurStrength: 3 }));
+    const blurred = energyOf(await canvasPng(page));
+    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(5);
+    console.log(`[oceano] high-frequency energy: blur off ${sharp.toFixed(2)}, blur σ = 3 px ${blurred.toFixed(2)}`);
+    expect(sharp).toBeGreaterThan(0);
+    expect(blurred).toBeLessThan(sharp * 0.5);
+    await page.close();
+  });
+
+  it('flips underwater exactly at the CPU surface height under the camera', async () => {
+    const { page } = await openOcean(harness, 'seed=1&t=10');
+    const result = await page.evaluate(() => {
+      const o = window.oceano;
+      const [x, z] = [12.5, -30.25];
+      const h = o.sampleSurface(x, z).height;
+      const at = (y: number) => {
+        o.setCamera({ position: [x, y, z], target: [x + 10, h, z - 40] });
+        o.renderFrame();
+        return { y: o.getCamera().position[1], ...o.stats() };
+      };
+      return { h, above: at(h + 1e-3), below: at(h - 1e-3) };
+    });
+    expect(result.above.y).toBeCloseTo(result.h + 1e-3, 9);
+    expect(result.below.y).toBeCloseTo(result.h - 1e-3, 9);
+    expect(result.above.underwater).toBe(false);
+    expect(result.below.underwater).toBe(true);
+    // A millimetre from the surface the near plane crosses it: both frames decide per pixel.
+    expect(result.above.submersion).toBe('straddling');
+    expect(result.below.submersion).toBe('straddling');
+    await page.close();
+  });
+
+  it('shows air above and water below the waterline of a straddling camera', async () => {
+    const { page } = await openOcean(harness, 'seed=1&t=10&cam=0,1.7,40,0,1.5,-20&blurStrength=0');
+    const png = PNG.sync.read(await canvasPng(page));
+    expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('straddling');
+    const mean = (y0: number, y1: number) => {
+      const sum = [0, 0, 0];
+      for (let y = y0; y < y1; y++) for (let x = 0; x < png.width; x++) for (let c = 0; c < 3; c++) sum[c] += png.data[(y * png.width + x) * 4 + c];
+      return sum.map((s) => s / ((y1 - y0) * png.width));
+    };
+    const top = mean(0, 20);
+    const bottom = mean(png.height - 20, png.height);
+    // The sky at the top is bright and blue; the water at the bottom is dark blue-green.
+    expect(top[2]).toBeGreaterThan(150);
+    expect(bottom[0] + bottom[1] + bottom[2]).toBeLessThan((top[0] + top[1] + top[2]) * 0.6);
+    expect(bottom[1]).toBeGreaterThan(bottom[0]);
+    await page.close();
+  });
+
+  it('draws an above-water frame directly, with no composer pass', async () => {
+    const { page } = await openOcean(harness, 'seed=1&t=10');
+    await page.evaluate(() => window.oceano.renderFrame());
+    const stats = await page.evaluate(() => window.oceano.stats());
+    expect(stats.underwater).toBe(false);
+    expect(stats.submersion).toBe('above');
+    expect(stats.composerPasses).toBe(0);
+    expect(stats.drawCalls).toBe(2);
+    expect((await page.evaluate(() => window.oceano.debug.passTimings())).map((t) => t.name)).toEqual(['scene']);
+    await page.close();
+  });
+});
