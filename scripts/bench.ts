@@ -17,7 +17,7 @@ import { findBrowser } from '../tests/browser/findBrowser';
 import { openOcean, type Harness } from '../tests/browser/harness';
 import { median, percentile } from '../src/sim/sampleStatistics';
 import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
-import { pageEnvironment, timeFloorFrames, timeOceanFrames } from './bench/pageMeasures';
+import { medianPassTimes, pageEnvironment, timeFloorFrames, timeOceanFrames } from './bench/pageMeasures';
 import { SCENARIOS } from './bench/scenarios';
 import { formatFigure, markdownTable } from './bench/resultsTable';
 
@@ -25,6 +25,7 @@ const WIDTH = 1280;
 const HEIGHT = 720;
 const FRAMES = 40;
 const WARMUP = 5;
+const PASS_FRAMES = 5;
 const RESULTS_FILE = 'bench/results.md';
 const TARGETS = { ratio: 10, cpuMs: 0.2, ttffMs: 1500, jsKB: 200 };
 
@@ -36,6 +37,8 @@ interface Timing {
 interface ScenarioResult {
   name: string;
   query: string;
+  /** Median time of each render pass over PASS_FRAMES profiled frames, ms. */
+  passesMs?: Record<string, number>;
   frameMs: Timing;
   ratio: number;
   triangles: number;
@@ -142,7 +145,8 @@ async function main(): Promise<void> {
       const { page, consoleErrors } = await openOcean(harness, scenario.query, WIDTH, HEIGHT);
       await scenario.setup?.(page);
       const environment = await page.evaluate(pageEnvironment);
-      const frames = await page.evaluate(timeOceanFrames, FRAMES, WARMUP);
+      const frames = await page.evaluate(timeOceanFrames, scenario.frames ?? FRAMES, scenario.frames ? 1 : WARMUP);
+      const passesMs = scenario.passes ? await page.evaluate(medianPassTimes, PASS_FRAMES) : undefined;
       if (frames.canvas[0] !== WIDTH || frames.canvas[1] !== HEIGHT) {
         throw new Error(`Scenario "${scenario.name}": the canvas is ${frames.canvas.join('×')}, not ${WIDTH}×${HEIGHT}.`);
       }
@@ -164,6 +168,7 @@ async function main(): Promise<void> {
         drawCalls: frames.drawCalls,
         cpuMs: round(frames.cpuMs, 4),
         ttffMs: frames.ttffMs === null ? null : round(frames.ttffMs, 1),
+        ...(passesMs ? { passesMs } : {}),
       });
     }
     const floorMs = timing(floorTimes);
@@ -249,6 +254,9 @@ function resultsMarkdown(report: Report, when: Date): string {
     `- ttffMs is the app's first load in a browser whose GPU process already runs; starting that process (the fresh headless browser's first WebGL context, timed in a blank page) took ${formatFigure(report.gpuStartupMs, 0)} ms and is not in it`,
     '',
     markdownTable(['scenario', 'query', 'frame median (ms)', 'frame p95 (ms)', 'ratio to floor', 'triangles', 'draw calls', 'cpuMs', 'ttffMs'], rows),
+    ...report.scenarios
+      .filter((s) => s.passesMs)
+      .flatMap((s) => ['', `Per-pass time, ${s.name} (median of ${PASS_FRAMES} frames, GPU waited for after each pass):`, '', markdownTable(['pass', 'ms'], Object.entries(s.passesMs ?? {}).map(([name, ms]) => [name, formatFigure(ms, 1)]))]),
     '',
     `Headline (${report.scenarios[0].name}) against the targets, which are set for the 2-core SwiftShader machine:`,
     '',

@@ -16,7 +16,7 @@ varying vec3 vWorldPosition;
 void main() {
   float depth = max(-vWorldPosition.y, 0.0);
   // Mottling from the seeded heightmap at a scale of its own, so the bed is not a flat card.
-  float mottle = sampleHeightmap(uHeightmap1, vWorldPosition.xz * 1.7);
+  float mottle = sampleHeightmap(uHeightmap1, vWorldPosition.xz * 1.7, vec2(0.0));
   vec3 albedo = uSandColor * (0.85 + 0.25 * mottle);
 
   vec3 direct = vec3(0.0);

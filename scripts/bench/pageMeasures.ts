@@ -84,3 +84,21 @@ export function pageEnvironment(): { renderer: string; crossOriginIsolated: bool
   const debugInfo = gl.getExtension('WEBGL_debug_renderer_info');
   return { renderer: String(gl.getParameter(debugInfo ? debugInfo.UNMASKED_RENDERER_WEBGL : gl.RENDERER)), crossOriginIsolated: window.crossOriginIsolated };
 }
+
+/**
+ * Runs in the page: profiles `frames` frames with oceano.debug.passTimings() (each pass
+ * followed by a GPU sync) and returns each pass's median, ms.
+ */
+export function medianPassTimes(frames: number): Record<string, number> {
+  const samples: Record<string, number[]> = {};
+  for (let i = 0; i < frames; i++) {
+    for (const { name, ms } of window.oceano.debug.passTimings()) (samples[name] ??= []).push(ms);
+  }
+  const result: Record<string, number> = {};
+  for (const [name, values] of Object.entries(samples)) {
+    values.sort((a, b) => a - b);
+    const mid = values.length >> 1;
+    result[name] = Math.round((values.length % 2 ? values[mid] : (values[mid - 1] + values[mid]) / 2) * 10) / 10;
+  }
+  return result;
+}

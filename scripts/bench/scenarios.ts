@@ -12,6 +12,15 @@ export interface BenchScenario {
   name: string;
   query: string;
   setup?: (page: Page) => Promise<void>;
+  /** Timed frames when the default count would take too long (the brute-force grid). */
+  frames?: number;
+  /** Also time each render pass separately (oceano.debug.passTimings). */
+  passes?: boolean;
 }
 
-export const SCENARIOS: readonly BenchScenario[] = [{ name: 'default view', query: 't=10' }];
+export const SCENARIOS: readonly BenchScenario[] = [
+  { name: 'default view', query: 't=10' },
+  // The LOD's reference: every chunk of the same 4 km extent at full resolution, no culling.
+  { name: 'brute-force grid, same extent', query: 't=10&lodBruteForce=1', frames: 3 },
+  { name: 'underwater (Snell window, god rays, blur)', query: 't=10&preset=underwater', passes: true },
+];

@@ -1,7 +1,7 @@
 import './style.css';
 import './widgets.css';
 import { message } from '../sim/message';
-import { OceanApp } from './oceanApp';
+import { DEFAULT_BOAT_MODEL, OceanApp } from './oceanApp';
 import { createAutomationApi } from './automationApi';
 import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './bootSupport';
 import { preferredLanguage, Translator } from './i18n';
@@ -24,6 +24,7 @@ function boot(): void {
     language,
     reducedMotion: prefersReducedMotion(),
     skyBase: state.sky ?? 'sky',
+    boatUrl: state.boat ?? DEFAULT_BOAT_MODEL,
     shareBase: `${window.location.origin}${window.location.pathname}`,
     showPanel: !state.embed,
   });

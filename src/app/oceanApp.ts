@@ -29,8 +29,8 @@ export type { CameraPose } from './cameraPose';
 /** How often a frame is followed by a GPU sync to measure its full cost (frames). */
 const SYNC_EVERY = 8;
 const FRAME_SAMPLES = 30;
-/** The shipped model, relative to the page. */
-const DEFAULT_BOAT_MODEL = 'models/boat.glb';
+/** The shipped model, relative to the page (or to oceano.js for the web component). */
+export const DEFAULT_BOAT_MODEL = 'models/boat.glb';
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
 const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
 const DEG = Math.PI / 180;
@@ -75,6 +75,8 @@ export interface OceanAppOptions {
   reducedMotion: boolean;
   /** Directory holding the six sky images, as a URL or a path relative to the document. */
   skyBase: string;
+  /** The boat's glTF, as a URL or a path relative to the document. */
+  boatUrl: string;
   /** The link a shared view starts with (page address without its query). */
   shareBase: string;
   /** The lil-gui panel; off when embedded. */
@@ -231,7 +233,7 @@ export class OceanApp {
   }
 
   private async loadBoat(): Promise<void> {
-    const url = this.options.state.boat ?? DEFAULT_BOAT_MODEL;
+    const url = this.options.boatUrl;
     const indicator = document.createElement('div');
     indicator.className = 'oceano-loading';
     indicator.setAttribute('role', 'status');

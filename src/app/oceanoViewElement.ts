@@ -3,7 +3,7 @@ import { isParamKey, paramKeys } from '../sim/params';
 import { createAutomationApi, type OceanoApi } from './automationApi';
 import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './bootSupport';
 import { preferredLanguage, Translator } from './i18n';
-import { OceanApp } from './oceanApp';
+import { DEFAULT_BOAT_MODEL, OceanApp } from './oceanApp';
 import { DEFAULT_CAMERA } from './cameraPose';
 import { PAGE_KEYS, parseSettings } from './urlState';
 
@@ -43,11 +43,13 @@ export class OceanoViewElement extends HTMLElement {
     }
     const assets = OceanoViewElement.assetBase || document.baseURI;
     const skyBase = new URL(state.sky ?? 'sky/', state.sky === null ? assets : document.baseURI).href;
+    const boatUrl = new URL(state.boat ?? DEFAULT_BOAT_MODEL, state.boat === null ? assets : document.baseURI).href;
     const app = new OceanApp(this, {
       state,
       language,
       reducedMotion: prefersReducedMotion(),
       skyBase,
+      boatUrl,
       shareBase: new URL('index.html', assets).href,
       showPanel: false,
     });

@@ -75,6 +75,11 @@ export const PRESETS = {
     params: { swellAmplitude: 1.6, swellFrequency: 0.12, rippleStrength: 0.15, boatHeading: 0 },
     camera: { position: [30, 3, -3], target: [7, 1, -5] },
   },
+  /** "Bajo el agua": Snell's window overhead, god rays, fog and blur. */
+  underwater: {
+    params: {},
+    camera: { position: [0, -8, 20], target: [0, 5, -20] },
+  },
 } satisfies Record<string, Preset>;
 
 export type PresetName = keyof typeof PRESETS;

@@ -78,6 +78,7 @@ export class OceanView {
   private heightmapView?: HeightmapView;
   private showHeightmaps = false;
   private readonly nearPoint = new Vector3();
+  private backgroundAbove: Scene['background'] = null;
 
   constructor(
     canvas: HTMLCanvasElement,
@@ -146,7 +147,8 @@ export class OceanView {
   setSky(sky: CubeTexture): void {
     this.sky.dispose();
     this.sky = sky;
-    this.scene.background = sky;
+    if (this.backgroundAbove) this.backgroundAbove = sky;
+    else this.scene.background = sky;
     this.material.setSky(sky);
   }
 
@@ -198,7 +200,14 @@ export class OceanView {
     this.seaBed.mesh.visible = inWater;
     this.seaBed.follow(this.camera.position);
     // Seen entirely from below, the sky can only show through the surface: skip drawing it.
-    this.scene.background = this.where.submersion === 'below' ? null : this.sky;
+    // Whatever background the scene had (the sky, or a test's flat colour) comes back after.
+    if (this.where.submersion === 'below' && this.scene.background !== null) {
+      this.backgroundAbove = this.scene.background;
+      this.scene.background = null;
+    } else if (this.where.submersion !== 'below' && this.backgroundAbove) {
+      this.scene.background = this.backgroundAbove;
+      this.backgroundAbove = null;
+    }
     const eye = this.camera.position;
     this.waterVolume.uCameraDepth.value = Math.max(0, surfaceHeight(state, this.surface.heightmaps, eye.x, eye.z) - eye.y);
   }

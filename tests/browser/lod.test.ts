@@ -73,8 +73,16 @@ describe('LOD and culling in the browser', () => {
     expect(stats.lodCounts.reduce((a, b) => a + b, 0)).toBe(stats.chunksVisible);
     expect(stats.lodCounts[0]).toBeGreaterThan(0);
     expect(stats.triangles).toBeLessThan(60_000);
-    // One draw call per band in use plus the sky.
-    expect(stats.drawCalls).toBe(stats.lodCounts.filter((n) => n > 0).length + 1);
+    // One instanced draw per non-empty band, one for the sky, and one per other visible mesh (the boat's parts).
+    const otherMeshes = await page.evaluate(() => {
+      let count = 0;
+      window.oceano.three.scene.traverseVisible((o) => {
+        const mesh = o as { isMesh?: boolean; isInstancedMesh?: boolean };
+        if (mesh.isMesh && !mesh.isInstancedMesh) count++;
+      });
+      return count;
+    });
+    expect(stats.drawCalls).toBe(stats.lodCounts.filter((n) => n > 0).length + 1 + otherMeshes);
     const brute = await page.evaluate(() => {
       window.oceano.setParams({ lodBruteForce: true });
       window.oceano.renderFrame();

@@ -1,4 +1,4 @@
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'puppeteer';
 import { screenshotCanvas, type Harness } from './harness';
@@ -39,9 +39,13 @@ export async function recordedPage(harness: Harness, width: number, height: numb
     const url = request.url();
     requests.push(url);
     const path = url.startsWith(harness.baseUrl) ? url.slice(harness.baseUrl.length).split('?')[0] : null;
-    if (path?.startsWith('fixtures/')) {
-      const contentType = path.endsWith('.css') ? 'text/css' : 'text/html';
-      void request.respond({ status: 200, contentType, body: readFileSync(join(FIXTURE_DIR, path.slice('fixtures/'.length))) });
+    const fixture = path?.startsWith('fixtures/') ? join(FIXTURE_DIR, path.slice('fixtures/'.length)) : null;
+    if (fixture !== null && existsSync(fixture)) {
+      const contentType = fixture.endsWith('.css') ? 'text/css' : 'text/html';
+      void request.respond({ status: 200, contentType, body: readFileSync(fixture) });
+    } else if (fixture !== null) {
+      // Answered, never left hanging: a page asking for a file the fixtures lack must see it fail.
+      void request.respond({ status: 404, contentType: 'text/plain', body: 'no such fixture' });
     } else if (path !== null && block.includes(path)) {
       void request.respond({ status: 404, contentType: 'text/plain', body: 'missing on purpose' });
     } else {

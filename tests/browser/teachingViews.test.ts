@@ -36,7 +36,7 @@ describe('teaching views of the seed figures', () => {
 
   it('draws the Fresnel plot only when asked', async () => {
     const { page } = await openOcean(harness, 't=10');
-    expect(await page.$eval('.oceano-fresnel-plot', (el) => (el as HTMLElement).offsetParent === null)).toBe(true);
+    expect(await page.$('.oceano-fresnel-plot')).toBeNull();
     await page.evaluate(() => window.oceano.setParams({ fresnelPlot: true }));
     expect(await page.$eval('.oceano-fresnel-plot', (el) => (el as HTMLElement).offsetParent === null)).toBe(false);
     const withFresnel = await canvasPng(page);
