@@ -242,6 +242,7 @@ export class OceanApp {
     try {
       const model = await loadBoatModel(url);
       this.hull = model.hull;
+      this.view.lightWithCaustics(model.object);
       this.boatView.setModel(model.object);
       this.boatModel = 'loaded';
     } catch (error) {

@@ -1,4 +1,4 @@
-import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform } from 'three';
+import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
 import type { OceanParams } from '../sim/params';
 import type { OceanSurface, SurfaceSample } from '../sim/oceanSurface';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
@@ -15,6 +15,7 @@ import { fresnelTexture, heightmapTexture } from './dataTextures';
 import { SurfaceProbe } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
+import { lightWithCaustics } from './hullCaustics';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -142,6 +143,11 @@ export class OceanView {
     this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
     this.post?.setBlur(params.blurStrength);
     this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
+  }
+
+  /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
+  lightWithCaustics(model: Object3D): void {
+    lightWithCaustics(model, { ...this.material.surfaceUniforms, ...this.caustics });
   }
 
   setSky(sky: CubeTexture): void {

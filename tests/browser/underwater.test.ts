@@ -1,7 +1,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
 import { canvasPng, openOcean, startHarness, type Harness } from './harness';
-import { compareWithReference } from './imageCompare';
+import { compareWithReference, diffPngs } from './imageCompare';
 import { highFrequencyEnergy } from '../../src/sim/imageEnergy';
 
 const REFERENCE_TOLERANCE = 0.005;
@@ -108,5 +108,23 @@ describe('under the water', () => {
     await page.evaluate(() => window.oceano.setCamera({ position: [0, 9, 40], target: [0, 0, -60] }));
     expect((await page.evaluate(() => window.oceano.debug.passTimings())).map((t) => t.name)).toEqual(['scene']);
     await page.close();
+  });
+
+  it('lights the wet side of the boat\'s hull with the same caustics, and nothing else in view', async () => {
+    // Beside the hull, looking up at it; the sea bed pushed out of sight, blur and god rays off,
+    // so only the hull can change with the caustics' intensity.
+    const view = 'seed=1&t=10&cam=12,-1.2,-14,7,-0.2,-5&seaBedDepth=200&blurStrength=0&godRays=0';
+    // One page at a time: a page left in the background does not produce screenshots.
+    const lit = await openOcean(harness, `${view}&causticsIntensity=2`);
+    expect(await lit.page.evaluate(() => window.oceano.boat().model)).toBe('loaded');
+    const litPng = await canvasPng(lit.page);
+    expect(lit.consoleErrors).toEqual([]);
+    await lit.page.close();
+    const flat = await openOcean(harness, `${view}&causticsIntensity=0`);
+    const difference = diffPngs(litPng, await canvasPng(flat.page), 0);
+    await flat.page.close();
+    expect(difference.differentPixels).toBeGreaterThan(50);
+    // The hull covers a small part of the frame: the rest (surface, fog) is the same.
+    expect(difference.share).toBeLessThan(0.1);
   });
 });
