@@ -1,17 +1,12 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import type { HTTPRequest } from 'puppeteer';
-import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 import { ANGLE_BAND, HEAVE_BAND } from '../../src/sim/boatMotion';
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 describe('the boat', () => {
   it('is loaded by oceano.ready and sits on the CPU surface at its centre, which the GPU draws', async () => {

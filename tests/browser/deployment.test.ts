@@ -1,9 +1,10 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { createServer, type Server } from 'node:http';
 import { readFile } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
 import puppeteer from 'puppeteer';
-import { BROWSER_ARGS, type Harness, startHarness } from './harness';
+import { BROWSER_ARGS } from './harness';
+import { useHarness } from './useHarness';
 import { findBrowser } from './findBrowser';
 
 const DIST = join(import.meta.dirname, '..', '..', 'dist');
@@ -43,13 +44,7 @@ function serveUnderSubPath(): Promise<{ server: Server; url: string }> {
 }
 
 describe('deployment', () => {
-  let harness: Harness;
-  beforeAll(async () => {
-    harness = await startHarness();
-  });
-  afterAll(async () => {
-    await harness?.close();
-  });
+  const harness = useHarness();
 
   it('works from a static copy of dist/ under any sub-path (relative base)', async () => {
     const { server, url } = await serveUnderSubPath();

@@ -1,7 +1,8 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer';
-import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { compareWithReference } from './imageCompare';
 import { OCEAN_EXTENT } from '../../src/sim/chunkSelection';
 import { CHUNK_SIZE } from '../../src/sim/lodBands';
@@ -11,13 +12,7 @@ import { defaultParams } from '../../src/sim/params';
 const REFERENCE_TOLERANCE = 0.005;
 const FOV = 55;
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 type Vec3 = [number, number, number];
 

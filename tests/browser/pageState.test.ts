@@ -1,6 +1,7 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
-import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { compareWithReference, diffPngs, REFERENCE_DIR, updatingReferences } from './imageCompare';
 import { presetNames } from '../../src/app/presets';
 import { writeFileSync } from 'node:fs';
@@ -10,13 +11,7 @@ import { recordedPage } from './pages';
 /** Differing pixels allowed against a reference: SwiftShader is deterministic, this absorbs driver updates. */
 const REFERENCE_TOLERANCE = 0.005;
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 const surfaceHeight = (page: Page) => page.evaluate(() => window.oceano.sampleSurface(3, -7).height);
 const pause = (ms: number) => new Promise((r) => setTimeout(r, ms));

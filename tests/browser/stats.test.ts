@@ -1,13 +1,8 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { openOcean, startHarness, type Harness } from './harness';
+import { describe, expect, it } from 'vitest';
+import { openOcean } from './harness';
+import { useHarness } from './useHarness';
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 describe('oceano.stats() start-up and CPU figures', () => {
   it('records the time to first frame once: after the script arrived, before ready, unchanged by later frames', async () => {

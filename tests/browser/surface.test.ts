@@ -1,7 +1,8 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { compareWithReference, diffPngs, REFERENCE_DIR, updatingReferences } from './imageCompare';
 import { fresnelTable } from '../../src/sim/fresnel';
 import { generateRippleHeightmaps } from '../../src/sim/perlinNoise';
@@ -10,13 +11,7 @@ import { HEIGHTMAP_SIZE } from '../../src/sim/surface';
 /** Differing pixels allowed against a reference: SwiftShader is deterministic, this absorbs driver updates. */
 const REFERENCE_TOLERANCE = 0.005;
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 describe('the ocean page', () => {
   it('loads with no console error and resolves oceano.ready after drawing', async () => {

@@ -1,5 +1,6 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { openOcean, startHarness, type Harness } from './harness';
+import { describe, expect, it } from 'vitest';
+import { openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { seededRandom } from '../../src/sim/integerHash';
 
 /**
@@ -12,13 +13,7 @@ const TIMES = [0, 37.25, 4321.5, 100_000.125, 987_654.3];
 const POINTS_PER_TIME = 256;
 const EXTENT = 3000;
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 /** The defaults, and the steepest, shortest swell the parameters allow: the hardest case for float32. */
 const QUERIES = ['seed=9&t=0', 'seed=4&t=0&swellAmplitude=4&swellFrequency=0.2&rippleStrength=2'];

@@ -1,15 +1,10 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
-import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 describe('teaching views of the seed figures', () => {
   it('flat normals (the seed\'s wrong ones) lose the waves\' shading that fabricated normals give', async () => {

@@ -1,6 +1,7 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
-import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { compareWithReference, diffPngs } from './imageCompare';
 import { highFrequencyEnergy } from '../../src/sim/imageEnergy';
 
@@ -8,13 +9,7 @@ const REFERENCE_TOLERANCE = 0.005;
 /** Six metres down, looking level across the sea bed towards the sun's side. */
 const DIVE_QUERY = 'seed=1&t=10&cam=0,-6,40,0,-6,-20';
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 function energyOf(png: Buffer): number {
   const image = PNG.sync.read(png);

@@ -1,15 +1,10 @@
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { canvasPng, openOcean, startHarness, type Harness } from './harness';
+import { describe, expect, it } from 'vitest';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 import { elementCanvasPng, recordedPage, viewsReady } from './pages';
 
-let harness: Harness;
-beforeAll(async () => {
-  harness = await startHarness();
-});
-afterAll(async () => {
-  await harness?.close();
-});
+const harness = useHarness();
 
 type ViewElement = HTMLElement & { oceano: (typeof window)['oceano'] | null };
 

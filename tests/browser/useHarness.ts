@@ -1,0 +1,18 @@
+import { afterAll, beforeAll } from 'vitest';
+import { startHarness, type Harness } from './harness';
+
+/**
+ * One harness (preview server + headless Chromium) for the enclosing test file or
+ * describe block: started before its tests, closed after them. The returned object is
+ * filled in by the time any test runs.
+ */
+export function useHarness(): Harness {
+  const harness = {} as Harness;
+  beforeAll(async () => {
+    Object.assign(harness, await startHarness());
+  });
+  afterAll(async () => {
+    await harness.close?.();
+  });
+  return harness;
+}
