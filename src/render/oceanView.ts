@@ -3,7 +3,7 @@ import type { OceanParams } from '../sim/params';
 import type { OceanSurface, SurfaceSample } from '../sim/oceanSurface';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { sunDirection } from '../sim/sun';
-import { maxDisplacement, surfaceHeight } from '../sim/surface';
+import { maxDisplacement, surfaceHeight, type SurfaceState } from '../sim/surface';
 import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../sim/underwater';
 import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
@@ -172,8 +172,7 @@ export class OceanView {
    * Where the view starts: 'above' and 'below' when the eye and the whole near plane are
    * clear of the surface on one side, else 'straddling' (the waterline may cross the frame).
    */
-  private submersionAt(time: number): { underwater: boolean; submersion: Submersion } {
-    const state = this.surface.stateAt(time);
+  private submersionAt(state: SurfaceState): { underwater: boolean; submersion: Submersion; eyeSurface: number } {
     const maps = this.surface.heightmaps;
     const eye = this.camera.position;
     const eyeSurface = surfaceHeight(state, maps, eye.x, eye.z);
@@ -181,14 +180,14 @@ export class OceanView {
     // The near plane lies within `reach` of the eye: far above the highest crest, no sampling needed.
     const nearHalfHeight = this.camera.near * Math.tan((this.camera.fov * Math.PI) / 360);
     const reach = Math.hypot(this.camera.near, nearHalfHeight, nearHalfHeight * this.camera.aspect);
-    if (eye.y - reach > this.boundsHeight + WATERLINE_MARGIN) return { underwater, submersion: 'above' };
+    if (eye.y - reach > this.boundsHeight + WATERLINE_MARGIN) return { underwater, submersion: 'above', eyeSurface };
     this.camera.updateMatrixWorld();
     const points = [{ y: eye.y, surface: eyeSurface }];
     for (const [x, y] of NEAR_PLANE_SAMPLES) {
       const p = this.nearPoint.set(x, y, -1).unproject(this.camera);
       points.push({ y: p.y, surface: surfaceHeight(state, maps, p.x, p.z) });
     }
-    return { underwater, submersion: classifyNearPlane(points, WATERLINE_MARGIN) };
+    return { underwater, submersion: classifyNearPlane(points, WATERLINE_MARGIN), eyeSurface };
   }
 
   /**
@@ -200,7 +199,8 @@ export class OceanView {
     const state = this.surface.stateAt(time);
     this.material.setSurface(state);
     this.ocean.update(this.camera, this.lod, this.boundsHeight);
-    this.where = this.submersionAt(time);
+    const { eyeSurface, ...where } = this.submersionAt(state);
+    this.where = where;
     const inWater = this.where.submersion !== 'above';
     this.material.setSeenFromBelow(inWater);
     this.seaBed.mesh.visible = inWater;
@@ -214,8 +214,7 @@ export class OceanView {
       this.scene.background = this.backgroundAbove;
       this.backgroundAbove = null;
     }
-    const eye = this.camera.position;
-    this.waterVolume.uCameraDepth.value = Math.max(0, surfaceHeight(state, this.surface.heightmaps, eye.x, eye.z) - eye.y);
+    this.waterVolume.uCameraDepth.value = Math.max(0, eyeSurface - this.camera.position.y);
   }
 
   private underwaterPost(): UnderwaterPost {
