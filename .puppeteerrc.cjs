@@ -1,10 +1,6 @@
-// Puppeteer downloads its own Chrome on install. Where a browser is already present
-// (CHROME_PATH or a system Chromium) or the network reaches only package registries,
-// that download would fail the whole `npm install`, so it is skipped; the tests then
-// find the browser themselves (tests/browser/find-browser.ts).
-const fs = require('node:fs');
-const systemBrowsers = ['/usr/bin/chromium', '/usr/bin/chromium-browser', '/usr/bin/google-chrome'];
-const haveBrowser = Boolean(process.env.CHROME_PATH) || systemBrowsers.some((p) => fs.existsSync(p));
-module.exports = {
-  skipDownload: haveBrowser || process.env.PUPPETEER_SKIP_DOWNLOAD === 'true' || process.env.CI === 'true',
-};
+// Installing the npm packages never downloads a browser: where the network reaches only
+// package registries that download fails, and with it the whole `npm install`/`npm ci`.
+// `npm test` gets a browser itself before the browser tests (scripts/ensure-browser.mjs:
+// puppeteer's download where the network allows, else Debian's chromium when root, else
+// one line saying what to install); tests/browser/findBrowser.ts finds it.
+module.exports = { skipDownload: true };

@@ -13,7 +13,7 @@ import { cpus, loadavg } from 'node:os';
 import { gzipSync } from 'node:zlib';
 import puppeteer, { type Browser } from 'puppeteer';
 import { preview, type PreviewServer } from 'vite';
-import { findBrowser } from '../tests/browser/findBrowser';
+import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
 import { openOcean, type Harness } from '../tests/browser/harness';
 import { median, percentile } from '../src/sim/sampleStatistics';
 import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
@@ -108,7 +108,8 @@ async function startGpuProcess(browser: Browser): Promise<{ renderer: string | n
 /** Launches Chromium on the requested backend; in auto mode falls back to SwiftShader when the GPU path is software or absent. */
 async function launchBrowser(): Promise<{ browser: Browser; backend: Backend; gpuStartupMs: number }> {
   const requested = requestedBackend(process.env.BENCH_GPU);
-  const executablePath = await findBrowser();
+  const executablePath = await locateBrowser();
+  if (!executablePath) throw new Error(NO_BROWSER_MESSAGE);
   const launch = (backend: Backend) => puppeteer.launch({ executablePath, args: backendArgs(backend), headless: true });
   if (requested !== 'swiftshader') {
     const browser = await launch('gpu');
