@@ -10,9 +10,11 @@ import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
 function attempt(label, command) {
   console.log(`[oceano] no browser found: ${label}`);
   try {
-    execSync(command, { stdio: 'inherit', timeout: 10 * 60 * 1000 });
+    execSync(command, { stdio: ['ignore', 'inherit', 'pipe'], timeout: 10 * 60 * 1000 });
     return true;
-  } catch {
+  } catch (error) {
+    const reason = String(error.stderr ?? error.message).split('\n').find((line) => /error/i.test(line)) ?? 'failed';
+    console.log(`[oceano] that did not work: ${reason.trim()}`);
     return false;
   }
 }
