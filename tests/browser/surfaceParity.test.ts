@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
-import { openWithNativeSin, PARITY_HEIGHT_LIMIT, PARITY_NORMAL_LIMIT } from './parity';
+import { openWithNativeSin, PARITY_LIMITS } from './parity';
 import { seededRandom } from '../../src/sim/integerHash';
 
 /**
@@ -18,7 +18,10 @@ const EXTENT = 3000;
 const harness = useHarness();
 
 /** The defaults, and the steepest, shortest swell the parameters allow: the hardest case for float32. */
-const QUERIES = ['seed=9&t=0', 'seed=4&t=0&swellAmplitude=4&swellFrequency=0.2&rippleStrength=2'];
+const CASES = [
+  { query: 'seed=9&t=0', limits: PARITY_LIMITS.defaults },
+  { query: 'seed=4&t=0&swellAmplitude=4&swellFrequency=0.2&rippleStrength=2', limits: PARITY_LIMITS.steepest },
+];
 
 type Case = { t: number; points: [number, number][] };
 
@@ -55,25 +58,26 @@ function worstDisagreement(page: Page, cases: Case[]) {
 }
 
 describe('CPU twin vs GPU shader', () => {
-  it.each(QUERIES)(`agrees within ${PARITY_HEIGHT_LIMIT} m, ${PARITY_NORMAL_LIMIT} in the normal, on ${TIMES.length * POINTS_PER_TIME} random points (seed ${PARITY_SEED}), |x|, |z| up to ${EXTENT} m, t up to 1e6 s: %s`, async (query) => {
+  it.each(CASES)(`agrees within $limits.height m, $limits.normal in the normal, on ${TIMES.length * POINTS_PER_TIME} random points (seed ${PARITY_SEED}), |x|, |z| up to ${EXTENT} m, t up to 1e6 s: $query`, async ({ query, limits }) => {
     const cases = parityCases();
     const farPoints = cases.flatMap((c) => c.points).filter(([x, z]) => Math.abs(x) >= 2000 && Math.abs(z) >= 2000).length;
     expect(farPoints).toBeGreaterThan(50);
     const { page } = await openOcean(harness, query);
     const worst = await worstDisagreement(page, cases);
     console.log(`[oceano] CPU–GPU parity (${query}): max |Δheight| = ${worst.height.toExponential(2)} m at (${worst.at.x}, ${worst.at.z}, t=${worst.at.t}), max |Δnormal| = ${worst.normal.toExponential(2)}`);
-    expect(worst.height).toBeLessThan(PARITY_HEIGHT_LIMIT);
-    expect(worst.normal).toBeLessThan(PARITY_NORMAL_LIMIT);
+    expect(worst.height).toBeLessThan(limits.height);
+    expect(worst.normal).toBeLessThan(limits.normal);
     await page.close();
   });
 
   it('rejects the driver\'s own sin in the swell (negative control: the Taylor series is what keeps parity)', async () => {
     // The defaults: the milder of the two cases, so this fails on the swell's sine alone.
-    const page = await openWithNativeSin(harness, QUERIES[0]);
+    const { query, limits } = CASES[0];
+    const page = await openWithNativeSin(harness, query);
     const worst = await worstDisagreement(page, parityCases());
-    console.log(`[oceano] CPU–GPU parity with native sin (${QUERIES[0]}): max |Δheight| = ${worst.height.toExponential(2)} m, max |Δnormal| = ${worst.normal.toExponential(2)}`);
-    expect(worst.height).toBeGreaterThan(PARITY_HEIGHT_LIMIT);
-    expect(worst.normal).toBeGreaterThan(PARITY_NORMAL_LIMIT);
+    console.log(`[oceano] CPU–GPU parity with native sin (${query}): max |Δheight| = ${worst.height.toExponential(2)} m, max |Δnormal| = ${worst.normal.toExponential(2)}`);
+    expect(worst.height).toBeGreaterThan(limits.height);
+    expect(worst.normal).toBeGreaterThan(limits.normal);
     await page.close();
   });
 });
