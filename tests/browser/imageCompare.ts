@@ -62,12 +62,15 @@ export interface ImageDifference {
  */
 export const REFERENCE_TOLERANCE = { meanAbsError: 0.05, levels: 2, shareOverLevels: 0.001 } as const;
 
-function readPng(bytes: Buffer): PNG {
-  return PNG.sync.read(bytes);
+/** PNG bytes, or an image already decoded (to compare one picture with many without decoding it each time). */
+export type Picture = Buffer | PNG;
+
+function readPng(picture: Picture): PNG {
+  return Buffer.isBuffer(picture) ? PNG.sync.read(picture) : picture;
 }
 
-/** Channel-by-channel difference of two PNGs of one size (alpha is ignored: the canvas is opaque). */
-export function measureDifference(a: Buffer, b: Buffer, diffPath?: string): ImageDifference {
+/** Channel-by-channel difference of two pictures of one size (alpha is ignored: the canvas is opaque). */
+export function measureDifference(a: Picture, b: Picture, diffPath?: string): ImageDifference {
   const left = readPng(a);
   const right = readPng(b);
   if (left.width !== right.width || left.height !== right.height) {
