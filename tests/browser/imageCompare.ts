@@ -47,18 +47,19 @@ export interface ImageDifference {
 /**
  * The one tolerance for reference images. What a correct picture may differ by:
  *
- * Measured with `npx tsx tests/browser/measureReferenceNoise.ts` (3 fresh page loads of each
- * of the 21 references, same build, headless Chromium 14x + SwiftShader, 2-core machine
- * under load): SwiftShader drew every reference bit-identically on every load and against
- * the committed file — mean |Δ| 0 in every channel, 0 pixels off by more than 0 levels. The
- * noise is therefore 0; the limits below sit just above it, with room for one level of
- * rounding drift in a few pixels (a Chromium or SwiftShader update):
- * - mean |Δ| ≤ 0.05 levels in each channel, and
+ * Measured with `npx tsx tests/browser/measureReferenceNoise.ts` (each of the 20 reference
+ * views drawn 2 or 3 times, each on a freshly loaded page, same build, headless Chromium
+ * 156 + SwiftShader on a loaded 2-core machine, 2026-11-21): every draw was bit-identical
+ * to the other draws and to the committed file — mean |Δ| 0 in every channel, no pixel off
+ * by even one level. The noise is 0; the limits sit just above it, leaving room for a few
+ * pixels of rounding drift after a Chromium or SwiftShader update:
+ * - mean |Δ| ≤ 0.05 levels in each of R, G, B, and
  * - at most 0.1 % of pixels off by more than 2 levels in some channel.
  *
- * Faults that must fail (negative controls in tests/browser/referenceControls.test.ts): the
- * sea colour changed by 3 % (mean |Δ| ≈ MEASURED_SEA3 levels), normals-wrong against
- * normals-right, any preset against another's reference.
+ * What they catch (negative controls in referenceControls.test.ts, surface.test.ts and
+ * pageState.test.ts): the deep-water colour made 3 % brighter (#06283a → #06293c) moves the
+ * default view by mean |Δ| 0.12 (G) and 0.30 (B) levels, 2.4 and 6 times the limit; every
+ * pair of different references differs by 3 levels or more of mean |Δ| in some channel.
  */
 export const REFERENCE_TOLERANCE = { meanAbsError: 0.05, levels: 2, shareOverLevels: 0.001 } as const;
 
