@@ -30,6 +30,11 @@ float swellTurns(float cyclesPerMetre, float x, float phase) {
 }
 
 float sinTurns(float turns) {
+#ifdef OCEANO_NATIVE_SIN
+  // Negative control only (tests/browser/surfaceParity.test.ts defines it): the driver's own
+  // sine, which the parity limits must reject.
+  return sin(TWO_PI * turns);
+#else
   float s = fract(turns) - 0.5;
   float folded = sign(s) * (0.25 - abs(abs(s) - 0.25));
   float x = TWO_PI * folded;
@@ -37,6 +42,7 @@ float sinTurns(float turns) {
   float series = 1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0))));
   // sin(2π turns) = −sin(2π s), and folding keeps the sine of s.
   return -x * series;
+#endif
 }
 
 float cosTurns(float turns) {

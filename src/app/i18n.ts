@@ -147,9 +147,9 @@ const UI: Record<Language, Record<UiTextId, string>> = {
 
 /**
  * Spanish labels of the parameters; English ones live next to each definition in
- * params.ts. A unit test checks that every parameter has one.
+ * params.ts. Typed as a full record, so a parameter without one does not compile.
  */
-export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
+export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',
   swellFrequency: 'Frecuencia del oleaje',
@@ -195,7 +195,6 @@ export class Translator {
   }
 
   paramLabel(key: ParamKey): string {
-    const english: string = paramDefs[key].label;
-    return this.language === 'es' ? (SPANISH_PARAM_LABELS[key] ?? english) : english;
+    return this.language === 'es' ? SPANISH_PARAM_LABELS[key] : paramDefs[key].label;
   }
 }

@@ -4,6 +4,7 @@ import type { HTTPRequest } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
+import { PARITY_HEIGHT_LIMIT } from './parity';
 import { ANGLE_BAND, HEAVE_BAND } from '../../src/sim/boatMotion';
 
 const harness = useHarness();
@@ -28,7 +29,7 @@ describe('the boat', () => {
     expect(result.notices).toEqual([]);
     // Time is frozen, so the damped pose is the surface's own.
     expect(result.boat.position[1]).toBe(result.cpu);
-    expect(Math.abs(result.boat.position[1] - result.gpu)).toBeLessThan(1e-3);
+    expect(Math.abs(result.boat.position[1] - result.gpu)).toBeLessThan(PARITY_HEIGHT_LIMIT);
     expect(result.boat.heading).toBeCloseTo((290 * Math.PI) / 180, 12);
     expect(consoleErrors).toEqual([]);
     await page.close();

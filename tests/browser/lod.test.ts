@@ -4,12 +4,12 @@ import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { compareWithReference } from './imageCompare';
+import { LOD_COLOUR_VIEWS, viewPng } from './referenceViews';
 import { OCEAN_EXTENT } from '../../src/sim/chunkSelection';
 import { CHUNK_SIZE } from '../../src/sim/lodBands';
 import { maxDisplacement } from '../../src/sim/surface';
 import { defaultParams } from '../../src/sim/params';
 
-const REFERENCE_TOLERANCE = 0.005;
 const FOV = 55;
 
 const harness = useHarness();
@@ -157,17 +157,11 @@ describe('LOD and culling in the browser', () => {
     await page.close();
   });
 
-  const colourViews: { name: string; query: string; pose?: { position: Vec3; target: Vec3 } }[] = [
-    { name: 'lod-colors-default', query: 'seed=1&t=10&lodColors=1' },
-    { name: 'lod-colors-above', query: 'seed=1&t=10&lodColors=1&lodDistance=40', pose: { position: [0, 120, 150], target: [0, 0, -150] } },
-    { name: 'lod-frozen-outside', query: 'seed=1&t=10&lodColors=1&freezeCulling=1', pose: { position: [-900, 1400, 1300], target: [0, 0, -500] } },
-  ];
-  for (const view of colourViews) {
+  for (const view of LOD_COLOUR_VIEWS) {
     it(`draws the LOD debug view "${view.name}" as its reference`, async () => {
-      const { page, consoleErrors } = await openOcean(harness, view.query);
-      if (view.pose) await page.evaluate((pose) => window.oceano.setCamera(pose), view.pose);
-      const png = await canvasPng(page);
-      expect(compareWithReference(view.name, png).share).toBeLessThanOrEqual(REFERENCE_TOLERANCE);
+      const { page, consoleErrors } = await openOcean(harness, view.query, view.width, view.height);
+      const reference = compareWithReference(view.name, await viewPng(page, view));
+      expect(reference.matches, reference.summary).toBe(true);
       expect(consoleErrors).toEqual([]);
       await page.close();
     });

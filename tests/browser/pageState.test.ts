@@ -2,14 +2,10 @@ import { describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
-import { compareWithReference, diffPngs, REFERENCE_DIR, updatingReferences } from './imageCompare';
+import { compareWithOtherReference, compareWithReference, diffPngs } from './imageCompare';
+import { presetView, viewPng } from './referenceViews';
 import { presetNames } from '../../src/app/presets';
-import { writeFileSync } from 'node:fs';
-import { join } from 'node:path';
 import { recordedPage } from './pages';
-
-/** Differing pixels allowed against a reference: SwiftShader is deterministic, this absorbs driver updates. */
-const REFERENCE_TOLERANCE = 0.005;
 
 const harness = useHarness();
 
@@ -170,17 +166,25 @@ describe('embedding and accessibility', () => {
 });
 
 describe('presets', () => {
-  for (const name of presetNames) {
-    it(`preset=${name} matches its reference screenshot`, async () => {
-      const { page } = await openOcean(harness, `preset=${name}&t=10`, 640, 360);
+  const presetViews = presetNames.map(presetView);
+  for (const view of presetViews) {
+    it(`preset=${view.query.split('&')[0].slice('preset='.length)} matches its reference (${view.name}.png) and no other preset's`, async () => {
+      const { page } = await openOcean(harness, view.query, view.width, view.height);
       expect(await page.evaluate(() => window.oceano.notices())).toEqual([]);
-      expect(compareWithReference(`preset-${name}`, await canvasPng(page)).share).toBeLessThanOrEqual(REFERENCE_TOLERANCE);
-      if (name === 'fresnel') {
-        // The plot is page content over the canvas: the README shows the whole page for this one.
+      if (view.wholePage) {
+        // The Fresnel plot is the subject: page content over the canvas, so the whole page is compared.
         expect(await page.$eval('.oceano-fresnel-plot', (el) => (el as HTMLElement).offsetParent !== null)).toBe(true);
-        if (updatingReferences) writeFileSync(join(REFERENCE_DIR, 'preset-fresnel-page.png'), await page.screenshot({ type: 'png' }));
       }
+      const png = await viewPng(page, view);
       await page.close();
+      const own = compareWithReference(view.name, png);
+      expect(own.matches, own.summary).toBe(true);
+      // Negative control: the comparison tells this figure from every other one (normals-wrong
+      // from normals-right above all: telling those apart is what that pair teaches).
+      for (const other of presetViews.filter((v) => v.name !== view.name)) {
+        const confused = compareWithOtherReference(other.name, png);
+        expect(confused.matches, `preset ${view.name} passed ${confused.summary}`).toBe(false);
+      }
     });
   }
 

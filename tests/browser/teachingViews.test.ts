@@ -20,13 +20,45 @@ describe('teaching views of the seed figures', () => {
     const { page } = await openOcean(harness, 'seed=4&view=heightmap');
     const image = PNG.sync.read(await canvasPng(page));
     const maps = await page.evaluate(() => window.oceano.debug.heightmaps().map((m) => Array.from(m.data)));
-    // Centre of the left square is texel (64, 64) of the first map; the screen's y runs down, the texture's up.
-    const cx = Math.round(image.width / 2 - 0.45 * image.height);
-    const cy = Math.round(image.height / 2);
-    const pixel = image.data[(cy * image.width + cx) * 4];
-    const expected = maps[0][64 * 128 + 64] * 0.5 + 0.5;
-    expect(Math.abs(pixel / 255 - expected)).toBeLessThan(0.06);
-    expect(image.data[(cy * image.width + cx) * 4 + 1]).toBe(pixel);
+    const size = Math.sqrt(maps[0].length);
+    // Where heightmapView.frag puts each map: two squares 0.9 of the height tall, side by
+    // side about the centre, a 2 % gap at the seam, texture v upwards while screen y runs down.
+    const gap = 0.02;
+    const { width: w, height: h } = image;
+    const check = (map: number[], second: boolean, transposed: boolean) => {
+      let checked = 0;
+      let within = 0;
+      for (let py = 0; py < h; py += 3) {
+        for (let px = 0; px < w; px += 3) {
+          const uvx = (px + 0.5 - w / 2) / h / 0.9 + 1;
+          const uvy = (0.5 - (py + 0.5) / h) / 0.9 + 0.5;
+          if (uvy < 0 || uvy >= 1 || (second ? uvx < 1 + gap || uvx >= 2 : uvx < 0 || uvx >= 1 - gap)) continue;
+          const s = second ? (uvx - 1 - gap) / (1 - gap) : uvx / (1 - gap);
+          const fi = s * size;
+          const fj = uvy * size;
+          // Nearest filtering: skip pixels within a tenth of a texel of a texel edge, where rounding decides.
+          if (Math.abs(fi - Math.round(fi)) < 0.1 || Math.abs(fj - Math.round(fj)) < 0.1) continue;
+          const [i, j] = transposed ? [Math.floor(fj), Math.floor(fi)] : [Math.floor(fi), Math.floor(fj)];
+          const expected = map[j * size + i] * 0.5 + 0.5;
+          const o = (py * w + px) * 4;
+          checked++;
+          // One level of 8-bit rounding, and grey: R = G = B.
+          if (Math.abs(image.data[o] / 255 - expected) <= 1.01 / 255 && image.data[o + 1] === image.data[o] && image.data[o + 2] === image.data[o]) within++;
+        }
+      }
+      return { checked, within };
+    };
+    for (const [index, second] of [
+      [0, false],
+      [1, true],
+    ] as const) {
+      const straight = check(maps[index], second, false);
+      expect(straight.checked).toBeGreaterThan(2000);
+      expect(straight.within, `map ${index}`).toBe(straight.checked);
+      // Negative control: the same check against a transposed upload fails nearly everywhere.
+      const transposed = check(maps[index], second, true);
+      expect(transposed.within / transposed.checked, `map ${index} transposed`).toBeLessThan(0.1);
+    }
   });
 
   it('draws the Fresnel plot only when asked', async () => {

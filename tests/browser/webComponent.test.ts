@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { canvasPng, openOcean } from './harness';
+import { canvasPng, openOcean, screenshotCanvas } from './harness';
 import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 import { elementCanvasPng, recordedPage, viewsReady } from './pages';
@@ -163,6 +163,13 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     const { page, consoleErrors } = await recordedPage(harness, 400, 500);
     await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
     await viewsReady(page);
+    // The second figure at a fixed time, drawn before the first is removed.
+    await page.evaluate(() => {
+      const o = (document.querySelector('#second') as ViewElement).oceano!;
+      o.pause();
+      o.setTime(10);
+    });
+    const secondBefore = await elementCanvasPng(page, '#second');
     const result = await page.evaluate(() => {
       const view = document.querySelector('#first') as ViewElement;
       const gl = view.querySelector('canvas')!.getContext('webgl2')!;
@@ -170,9 +177,16 @@ describe('<oceano-view> (dist/oceano.js)', () => {
       return { lost: gl.isContextLost(), api: view.oceano, children: view.childElementCount };
     });
     expect(result).toEqual({ lost: true, api: null, children: 0 });
-    // The other figure still draws.
-    const png = await elementCanvasPng(page, '#second');
-    expect(png.length).toBeGreaterThan(1000);
+    // The other figure still draws, the very same picture as before.
+    const secondAfter = await elementCanvasPng(page, '#second');
+    expect(diffPngs(secondBefore, secondAfter, 0).differentPixels).toBe(0);
+    // Negative control: a figure that stopped drawing (its canvas cleared) would not pass that.
+    await page.evaluate(() => {
+      const gl = (document.querySelector('#second canvas') as HTMLCanvasElement).getContext('webgl2')!;
+      gl.clearColor(0, 0, 0, 1);
+      gl.clear(gl.COLOR_BUFFER_BIT);
+    });
+    expect(diffPngs(secondBefore, await screenshotCanvas(page, '#second canvas'), 0).differentPixels).toBeGreaterThan(1000);
     expect(consoleErrors.filter((e) => !e.includes('Content Security Policy'))).toEqual([]);
     await page.close();
   });

@@ -44,13 +44,51 @@ describe('Fresnel reflectance, water to air', () => {
   });
 });
 
+/**
+ * Reference values written out independently of src/sim/fresnel.ts: the Fresnel equations in
+ * their sine–tangent form (Hecht, Optics, 5th ed., §4.6.2, eqs. 4.42–4.43),
+ * Rs = sin²(θi − θt) / sin²(θi + θt), Rp = tan²(θi − θt) / tan²(θi + θt), R = (Rs + Rp) / 2,
+ * with sin θt = (n1 / n2) sin θi, evaluated in Python (double precision) for n = 1.333 and
+ * rounded to 7 digits. Entry i of a 256-entry table is at cos θ = i / 255.
+ */
+const FROM_ABOVE: [number, number][] = [
+  [0, 1],
+  [1, 0.9756162],
+  [32, 0.4630947],
+  [64, 0.2220939],
+  [100, 0.1020273],
+  [128, 0.0591519],
+  [160, 0.0354576],
+  [200, 0.0237266],
+  [230, 0.0208973],
+  [255, 0.0203732],
+];
+
+describe('known values of the exact equations (n = 1.333)', () => {
+  it('normal incidence: ((1 − 1.333)/(1 + 1.333))² = 0.0203732', () => {
+    expect(fresnelReflectance(1, 1, WATER_IOR)).toBeCloseTo(0.0203732, 7);
+    expect(fresnelReflectance(1, WATER_IOR, 1)).toBeCloseTo(0.0203732, 7);
+  });
+
+  it("Brewster's angle, atan(1.333) = 53.123°: Rp = 0, so R = Rs / 2 = 0.0782710 / 2", () => {
+    expect(fresnelReflectance(Math.cos(deg(53.1232258)), 1, WATER_IOR)).toBeCloseTo(0.0391355, 7);
+    // Seen from below, Brewster's angle is atan(1/1.333) = 36.877°, with the same Rs.
+    expect(fresnelReflectance(Math.cos(deg(36.8767742)), WATER_IOR, 1)).toBeCloseTo(0.0391355, 7);
+  });
+
+  it('critical angle from below, asin(1/1.333) = 48.607°: partial just inside, total just outside', () => {
+    expect((criticalAngle(WATER_IOR, 1) * 180) / Math.PI).toBeCloseTo(48.6066, 4);
+    expect(fresnelReflectance(Math.cos(deg(48.6)), WATER_IOR, 1)).toBeLessThan(1);
+    expect(fresnelReflectance(Math.cos(deg(48.62)), WATER_IOR, 1)).toBe(1);
+  });
+});
+
 describe('Fresnel table', () => {
   const table = fresnelTable(256);
-  it('has 256 entries indexed by cos θ, grazing first', () => {
+  it('has 256 entries indexed by cos θ, grazing first, equal to the independently computed values', () => {
     expect(table.length).toBe(256);
-    expect(table[0]).toBe(1);
-    expect(table[255]).toBeCloseTo(0.0204, 4);
-    expect(table[128]).toBeCloseTo(fresnelReflectance(128 / 255, 1, WATER_IOR), 6);
+    // float32 entries: 6 decimals is within their rounding for values ≤ 1.
+    for (const [i, expected] of FROM_ABOVE) expect(table[i], `entry ${i}`).toBeCloseTo(expected, 6);
   });
   it('decreases monotonically from grazing to normal incidence', () => {
     for (let i = 1; i < table.length; i++) expect(table[i]).toBeLessThanOrEqual(table[i - 1]);

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { paramKeys } from '../../src/sim/params';
-import { message, type MessageId } from '../../src/sim/message';
+import { message, MESSAGE_IDS } from '../../src/sim/message';
 import { preferredLanguage, SPANISH_PARAM_LABELS, Translator } from '../../src/app/i18n';
 import { parseUrlState } from '../../src/app/urlState';
 
@@ -32,11 +32,18 @@ describe('language', () => {
     expect(en.join('\n')).toContain('"swellAmplitude=1e9" is outside [0, 4] m; clamped to 4.');
   });
 
-  it('has both languages for every message id', () => {
-    const ids: MessageId[] = ['skyLoadFailed', 'contextLost', 'shareCopied', 'shareFallback', 'webgl2Missing', 'startFailed'];
-    for (const id of ids) {
-      const m = message(id, { base: 'sky', url: 'http://x/?a', error: 'boom' });
-      expect(new Translator('es').message(m)).not.toBe(new Translator('en').message(m));
+  it('has both languages for every message id, each carrying the same values', () => {
+    // Each value a distinct token, so a translation that drops or swaps one shows.
+    const values = { key: 'K7', text: 'T7', fallback: 'F7', options: 'O7', min: 'MIN7', max: 'MAX7', unit: 'U7', clamped: 'C7', name: 'N7', known: 'KN7', base: 'B7', url: 'http://x/?a=URL7', error: 'E7', reason: 'R7' };
+    const tokens = Object.values(values);
+    for (const id of MESSAGE_IDS) {
+      const m = message(id, values);
+      const es = new Translator('es').message(m);
+      const en = new Translator('en').message(m);
+      expect(es, id).not.toBe(en);
+      expect(es.length, id).toBeGreaterThan(10);
+      expect(tokens.filter((t) => es.includes(t)), id).toEqual(tokens.filter((t) => en.includes(t)));
     }
+    expect(MESSAGE_IDS.length).toBe(21);
   });
 });

@@ -3,8 +3,20 @@ import { integerNoise, seededRandom } from '../../src/sim/integerHash';
 import { TilingPerlinNoise, cosineInterpolate, generateHeightmap, generateRippleHeightmaps, defaultNoiseSettings } from '../../src/sim/perlinNoise';
 
 describe('integer noise', () => {
-  it('returns the same value for the same input and seed', () => {
-    for (let i = -50; i < 50; i++) expect(integerNoise(i, i * 3, 9)).toBe(integerNoise(i, i * 3, 9));
+  it('is the MurmurHash3 finaliser of the mixed lattice point and seed, as documented', () => {
+    // Written out separately in Python from the constants in integerHash.ts's comment and code
+    // (32-bit wrap-around products, h ^= h >> 16, × 0x85ebca6b, h ^= h >> 13, × 0xc2b2ae35,
+    // h ^= h >> 16, then h / 2³¹ − 1), not by calling this module.
+    const expected: [number, number, number, number][] = [
+      [0, 0, 0, -1],
+      [1, 0, 0, -0.8603595807217062],
+      [0, 1, 0, 0.476229693274945],
+      [3, -7, 9, 0.09635292738676071],
+      [-50, -150, 9, 0.8836115980520844],
+      [123456, 654321, 42, 0.45925501035526395],
+      [5, 5, 2147483647, -0.25943325366824865],
+    ];
+    for (const [x, y, seed, value] of expected) expect(integerNoise(x, y, seed), `(${x}, ${y}, ${seed})`).toBe(value);
   });
   it('is bounded in [-1, 1) and roughly zero-mean', () => {
     let sum = 0;
@@ -38,9 +50,30 @@ describe('tiling Perlin noise', () => {
   const settings = { ...defaultNoiseSettings, seed: 42 };
   const noise = new TilingPerlinNoise(settings);
 
-  it('is deterministic per seed: two fields built from one seed agree everywhere', () => {
-    const twin = new TilingPerlinNoise(settings);
-    for (let k = 0; k < 200; k++) expect(twin.sample(k * 0.013, k * 0.029)).toBe(noise.sample(k * 0.013, k * 0.029));
+  it('is the smoothed integer noise at lattice points, and their plain mean halfway between', () => {
+    // One octave of 8 cells on seed 42, whose lattice stream is seed × 7 (perlinNoise.ts).
+    const cells = 8;
+    const field = new TilingPerlinNoise({ seed: 42, baseCells: cells, octaves: 1, persistence: 0.5 });
+    const raw = (x: number, y: number) => integerNoise(((x % cells) + cells) % cells, ((y % cells) + cells) % cells, 42 * 7);
+    // The seed report's smoothing: corners 1/16, sides 1/8, centre 1/4.
+    const smooth = (x: number, y: number) =>
+      (raw(x - 1, y - 1) + raw(x + 1, y - 1) + raw(x - 1, y + 1) + raw(x + 1, y + 1)) / 16 +
+      (raw(x - 1, y) + raw(x + 1, y) + raw(x, y - 1) + raw(x, y + 1)) / 8 +
+      raw(x, y) / 4;
+    for (let y = 0; y < cells; y++) {
+      for (let x = 0; x < cells; x++) {
+        expect(field.sample(x / cells, y / cells)).toBeCloseTo(smooth(x, y), 12);
+        // Cosine interpolation weighs both ends by 1/2 at the middle of a cell edge.
+        expect(field.sample((x + 0.5) / cells, y / cells)).toBeCloseTo((smooth(x, y) + smooth(x + 1, y)) / 2, 12);
+      }
+    }
+  });
+
+  it('gives another field for another seed', () => {
+    const other = new TilingPerlinNoise({ ...settings, seed: 43 });
+    let same = 0;
+    for (let k = 0; k < 200; k++) if (other.sample(k * 0.013, k * 0.029) === noise.sample(k * 0.013, k * 0.029)) same++;
+    expect(same).toBe(0);
   });
 
   it('is bounded by 1 in magnitude', () => {

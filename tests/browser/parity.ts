@@ -1,0 +1,44 @@
+import type { Page } from 'puppeteer';
+import type { Harness } from './harness';
+
+/**
+ * How far the CPU twin (src/sim/surface.ts) and the displacement shader may disagree, just
+ * above what surfaceParity.test.ts measures on SwiftShader (1280 seeded points out to 3 km,
+ * t up to 1e6 s; the figures are deterministic from run to run):
+ * - default parameters: max |Δheight| 2.08e-5 m, max |Δnormal| 2.45e-5;
+ * - the steepest, shortest swell the parameters allow (amplitude 4 m, frequency 0.2,
+ *   ripples ×2): 2.39e-4 m and 2.67e-4.
+ * The driver's own `sin` in place of the shader's Taylor series (the negative control) gives
+ * 6.15e-4 m and 1.59e-4 with the defaults: 20 and 4 times the default limits. The old
+ * single limit of 1e-3 let it through.
+ */
+export const PARITY_LIMITS = {
+  defaults: { height: 3e-5, normal: 4e-5 },
+  steepest: { height: 3e-4, normal: 3.5e-4 },
+} as const;
+
+/** The limits for pages at the default wave parameters (every test but the steep parity case). */
+export const PARITY_HEIGHT_LIMIT = PARITY_LIMITS.defaults.height;
+export const PARITY_NORMAL_LIMIT = PARITY_LIMITS.defaults.normal;
+
+/**
+ * A page whose shaders are compiled with OCEANO_NATIVE_SIN defined, so the swell uses the
+ * driver's `sin` (shaders/displacement.glsl): the fault the parity limits must catch. The
+ * define is put after each shader's #version line as the page hands the source to WebGL.
+ */
+export async function openWithNativeSin(harness: Harness, query: string): Promise<Page> {
+  const page = await harness.browser.newPage();
+  await page.setViewport({ width: 640, height: 360, deviceScaleFactor: 1 });
+  await page.evaluateOnNewDocument(() => {
+    const original = WebGL2RenderingContext.prototype.shaderSource;
+    WebGL2RenderingContext.prototype.shaderSource = function (shader: WebGLShader, source: string) {
+      const patched = source.replace(/^(#version[^\n]*\n)/, '$1#define OCEANO_NATIVE_SIN\n');
+      if (patched === source) throw new Error('A shader without a #version line: the native-sin control cannot define itself.');
+      original.call(this, shader, patched);
+    };
+  });
+  await page.goto(`${harness.baseUrl}?${query}`, { waitUntil: 'load' });
+  await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
+  await page.evaluate(() => window.oceano.ready);
+  return page;
+}
