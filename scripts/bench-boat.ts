@@ -1,14 +1,13 @@
 // CPU cost of the boat's per-frame update (five surface samples, three damped springs):
 // `npx tsx scripts/bench-boat.ts`. Prints figures; times nothing it asserts.
 import { defaultParams } from '../src/sim/params';
-import { OceanSurface } from '../src/sim/oceanSurface';
-import { surfaceHeight } from '../src/sim/surface';
+import { SeedWaveModel } from '../src/sim/seedWaveModel';
 import { BoatMotion } from '../src/sim/boatMotion';
 
 const FRAMES = 20_000;
 const RUNS = 7;
 const params = defaultParams();
-const surface = new OceanSurface(params);
+const waves = new SeedWaveModel(params);
 const hull = { length: 8, beam: 2.6 };
 const perRun: number[] = [];
 for (let run = 0; run < RUNS; run++) {
@@ -16,8 +15,7 @@ for (let run = 0; run < RUNS; run++) {
   const start = performance.now();
   for (let frame = 0; frame < FRAMES; frame++) {
     const time = 10 + frame / 60;
-    const state = surface.stateAt(time);
-    motion.update(time, { heading: 1, speed: 3, response: params.boatResponse }, hull, (x, z) => surfaceHeight(state, surface.heightmaps, x, z));
+    motion.update(time, { heading: 1, speed: 3, response: params.boatResponse }, hull, (x, z) => waves.height(x, z, time));
   }
   perRun.push(((performance.now() - start) / FRAMES) * 1000);
 }

@@ -1,6 +1,7 @@
 import type { OceanApp, BoatInfo, CameraPose, LoopActivity, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
-import type { SurfaceSample } from '../sim/oceanSurface';
+import type { SurfaceSample } from '../sim/waveModel';
+import type { ProbeSample } from '../render/surfaceProbe';
 import type { PassTiming } from '../render/underwaterPost';
 
 /**
@@ -20,7 +21,7 @@ export interface OceanoApi {
   getCamera(): CameraPose;
   sampleSurface(x: number, z: number): SurfaceSample;
   /** The same surface evaluated by the GPU shader and read back; `t` defaults to the current time. */
-  probeGpu(points: [number, number][], t?: number): Promise<SurfaceSample[]>;
+  probeGpu(points: [number, number][], t?: number): Promise<ProbeSample[]>;
   /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boatPose.ts). */
   boat(): BoatInfo;
   stats(): OceanStats;

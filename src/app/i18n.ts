@@ -150,6 +150,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
  * params.ts. A unit test checks that every parameter has one.
  */
 export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
+  waves: 'Modelo de olas',
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',
   swellFrequency: 'Frecuencia del oleaje',

@@ -2,16 +2,16 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { Vector3, type CubeTexture } from 'three';
 import { validateParams, type OceanParams } from '../sim/params';
 import { message, type Message } from '../sim/message';
-import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
+import type { SurfaceSample } from '../sim/waveModel';
 import { sunDirection } from '../sim/sun';
 import { median } from '../sim/sampleStatistics';
-import { surfaceHeight } from '../sim/surface';
 import { BoatMotion, type BoatMotionState } from '../sim/boatMotion';
 import type { HullSize } from '../sim/boatPose';
 import { OceanView } from '../render/oceanView';
 import { BoatView } from '../render/boatView';
 import { loadBoatModel } from '../render/boatModel';
 import type { PassTiming } from '../render/underwaterPost';
+import type { ProbeSample } from '../render/surfaceProbe';
 import type { Submersion } from '../sim/underwater';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { isCameraPose, type CameraPose } from './cameraPose';
@@ -117,7 +117,6 @@ export class OceanApp {
   readonly canvas: HTMLCanvasElement;
   readonly tr: Translator;
   private params: OceanParams;
-  private surface: OceanSurface;
   private view!: OceanView;
   private controls!: OrbitControls;
   private panel?: ControlPanel;
@@ -161,7 +160,6 @@ export class OceanApp {
     this.params = { ...state.params };
     const running = state.time === null && !options.reducedMotion;
     this.clock = new SimulationClock(state.time ?? 0, running);
-    this.surface = new OceanSurface(this.params);
     this.playButton = new PlayButton(container, { play: this.tr.ui('play'), pause: this.tr.ui('pause') }, () =>
       this.clock.playing ? this.pause() : this.play(),
     );
@@ -184,7 +182,7 @@ export class OceanApp {
       sky.dispose();
       return;
     }
-    this.view = new OceanView(this.canvas, this.surface, sky, this.params);
+    this.view = new OceanView(this.canvas, sky, this.params);
     this.boatView = new BoatView(this.view.scene);
     this.controls = new OrbitControls(this.view.camera, this.canvas);
     this.controls.target.set(0, 0, -60);
@@ -372,14 +370,13 @@ export class OceanApp {
   /** Floats the boat at the clock's time; with the camera following, carries the camera along. */
   private updateBoat(): void {
     const time = this.clock.time;
-    const state = this.surface.stateAt(time);
-    const maps = this.surface.heightmaps;
+    const waves = this.view.waves;
     const previous = this.boatState?.pose;
     this.boatState = this.boatMotion.update(
       time,
       { heading: this.params.boatHeading * DEG, speed: this.params.boatSpeed, response: this.params.boatResponse },
       this.hull,
-      (x, z) => surfaceHeight(state, maps, x, z),
+      (x, z) => waves.height(x, z, time),
     );
     const pose = this.boatState.pose;
     this.boatView.setPose(pose);
@@ -510,10 +507,10 @@ export class OceanApp {
 
   sampleSurface(x: number, z: number): SurfaceSample {
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new TypeError(`sampleSurface needs finite x and z, got ${String(x)}, ${String(z)}.`);
-    return this.surface.sample(x, z, this.clock.time);
+    return this.view.waves.sample(x, z, this.clock.time);
   }
 
-  probeGpu(points: unknown, time?: number): SurfaceSample[] {
+  probeGpu(points: unknown, time?: number): ProbeSample[] {
     const valid =
       Array.isArray(points) &&
       points.every((p) => Array.isArray(p) && p.length === 2 && p.every((c) => typeof c === 'number' && Number.isFinite(c)));
@@ -553,7 +550,7 @@ export class OceanApp {
   }
 
   heightmaps(): { size: number; data: Float32Array }[] {
-    return this.surface.heightmaps.map((map) => ({ size: map.size, data: map.data.slice() }));
+    return (this.view.waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() }));
   }
 
   three() {

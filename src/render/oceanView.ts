@@ -1,9 +1,8 @@
 import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
 import type { OceanParams } from '../sim/params';
-import type { OceanSurface, SurfaceSample } from '../sim/oceanSurface';
+import { createWaveModel, type LiveWaveModel } from '../sim/waveModels';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { sunDirection } from '../sim/sun';
-import { maxDisplacement, surfaceHeight, type SurfaceState } from '../sim/surface';
 import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../sim/underwater';
 import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
@@ -11,11 +10,14 @@ import { SeaBed } from './seaBed';
 import { UnderwaterPost, type PassTiming } from './underwaterPost';
 import { OceanMaterial } from './oceanMaterial';
 import { OceanChunks, type ChunkStats, type LodSettings } from './oceanChunks';
-import { fresnelTexture, heightmapTexture } from './dataTextures';
-import { SurfaceProbe } from './surfaceProbe';
+import { fresnelTexture } from './dataTextures';
+import { SurfaceProbe, type ProbeSample } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
 import { lightWithCaustics } from './hullCaustics';
+import { WaveBinding } from './waveModels/waveBinding';
+import { createWaveModelView } from './waveModels/registry';
+import type { WaveModelView } from './waveModels/waveModelView';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -49,8 +51,12 @@ export class OceanView {
   private readonly material: OceanMaterial;
   private readonly ocean: OceanChunks;
   private lod: LodSettings;
-  private boundsHeight: number;
-  private heightmapTextures: [DataTexture, DataTexture];
+  /** The active wave model's GPU half; its `model` is the CPU twin everything else samples. */
+  private waveView: WaveModelView;
+  private readonly waveBinding: WaveBinding;
+  private bounds: { vertical: number; horizontal: number };
+  /** The time of the last update(), to put the wave uniforms back after a probe at another time. */
+  private frameTime = 0;
   private readonly fresnelTexture: DataTexture;
   private readonly fresnelFromBelowTexture: DataTexture;
   private readonly waterVolume: WaterVolumeUniforms = createWaterVolumeUniforms();
@@ -83,7 +89,6 @@ export class OceanView {
 
   constructor(
     canvas: HTMLCanvasElement,
-    private readonly surface: OceanSurface,
     private sky: CubeTexture,
     params: OceanParams,
   ) {
@@ -95,11 +100,12 @@ export class OceanView {
     this.camera.lookAt(0, 0, -60);
 
     this.scene.background = sky;
-    this.heightmapTextures = surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
+    this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
+    this.waveBinding = new WaveBinding(this.waveView);
     this.fresnelTexture = fresnelTexture(this.fresnelData);
     this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
     this.material = new OceanMaterial(
-      this.heightmapTextures,
+      this.waveBinding,
       { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
       sky,
       { ...this.waterVolume, uSunColor: this.light.uSunColor },
@@ -107,20 +113,29 @@ export class OceanView {
     this.ocean = new OceanChunks(this.material);
     this.scene.add(this.ocean.group);
     this.lod = params;
-    this.boundsHeight = maxDisplacement(params);
-    this.seaBed = new SeaBed({ ...this.material.surfaceUniforms, ...this.waterVolume, ...this.caustics, ...this.light });
+    this.bounds = this.waveView.model.bounds();
+    this.seaBed = new SeaBed(this.waveBinding, { ...this.waterVolume, ...this.caustics, ...this.light });
     this.scene.add(this.seaBed.mesh);
     this.lights = new SceneLights(this.scene);
     this.params = params;
     this.applyParams(params);
   }
 
+  /** The CPU twin of the waves on screen: the boat, the underwater switch and the API sample it. */
+  get waves(): LiveWaveModel {
+    return this.waveView.model;
+  }
+
   applyParams(params: OceanParams): void {
-    if (this.surface.setParams(params)) {
-      for (const texture of this.heightmapTextures) texture.dispose();
-      this.heightmapTextures = this.surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
-      this.material.setHeightmaps(this.heightmapTextures);
+    if (params.waves !== this.waveView.name) {
+      const previous = this.waveView;
+      this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
+      this.waveBinding.setModel(this.waveView);
+      previous.dispose();
+    } else {
+      this.waveView.setParams(params);
     }
+    this.seaBed.setNoiseSeed(params.seed);
     this.params = params;
     const sun = sunDirection(params.sunElevation, params.sunAzimuth);
     this.material.setWaterColor(params.waterColor);
@@ -132,8 +147,8 @@ export class OceanView {
     this.showHeightmaps = params.view === 'heightmap';
     this.material.setLodColors(params.lodColors);
     this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
-    // Chunk boxes reach as high and low as any wave can, so a crest rising into view is never culled.
-    this.boundsHeight = maxDisplacement(params);
+    // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
+    this.bounds = this.waveView.model.bounds();
 
     const refracted = refractedSunDirection(sun);
     (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
@@ -147,7 +162,7 @@ export class OceanView {
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
   lightWithCaustics(model: Object3D): void {
-    lightWithCaustics(model, { ...this.material.surfaceUniforms, ...this.caustics });
+    lightWithCaustics(model, this.waveBinding, this.caustics);
   }
 
   setSky(sky: CubeTexture): void {
@@ -172,20 +187,20 @@ export class OceanView {
    * Where the view starts: 'above' and 'below' when the eye and the whole near plane are
    * clear of the surface on one side, else 'straddling' (the waterline may cross the frame).
    */
-  private submersionAt(state: SurfaceState): { underwater: boolean; submersion: Submersion; eyeSurface: number } {
-    const maps = this.surface.heightmaps;
+  private submersionAt(time: number): { underwater: boolean; submersion: Submersion; eyeSurface: number } {
+    const waves = this.waveView.model;
     const eye = this.camera.position;
-    const eyeSurface = surfaceHeight(state, maps, eye.x, eye.z);
+    const eyeSurface = waves.height(eye.x, eye.z, time);
     const underwater = eye.y < eyeSurface;
     // The near plane lies within `reach` of the eye: far above the highest crest, no sampling needed.
     const nearHalfHeight = this.camera.near * Math.tan((this.camera.fov * Math.PI) / 360);
     const reach = Math.hypot(this.camera.near, nearHalfHeight, nearHalfHeight * this.camera.aspect);
-    if (eye.y - reach > this.boundsHeight + WATERLINE_MARGIN) return { underwater, submersion: 'above', eyeSurface };
+    if (eye.y - reach > this.bounds.vertical + WATERLINE_MARGIN) return { underwater, submersion: 'above', eyeSurface };
     this.camera.updateMatrixWorld();
     const points = [{ y: eye.y, surface: eyeSurface }];
     for (const [x, y] of NEAR_PLANE_SAMPLES) {
       const p = this.nearPoint.set(x, y, -1).unproject(this.camera);
-      points.push({ y: p.y, surface: surfaceHeight(state, maps, p.x, p.z) });
+      points.push({ y: p.y, surface: waves.height(p.x, p.z, time) });
     }
     return { underwater, submersion: classifyNearPlane(points, WATERLINE_MARGIN), eyeSurface };
   }
@@ -196,10 +211,10 @@ export class OceanView {
    * draw() so its cost can be measured alone.
    */
   update(time: number): void {
-    const state = this.surface.stateAt(time);
-    this.material.setSurface(state);
-    this.ocean.update(this.camera, this.lod, this.boundsHeight);
-    const { eyeSurface, ...where } = this.submersionAt(state);
+    this.frameTime = time;
+    this.waveView.update(time);
+    this.ocean.update(this.camera, this.lod, this.bounds);
+    const { eyeSurface, ...where } = this.submersionAt(time);
     this.where = where;
     const inWater = this.where.submersion !== 'above';
     this.material.setSeenFromBelow(inWater);
@@ -219,7 +234,7 @@ export class OceanView {
 
   private underwaterPost(): UnderwaterPost {
     if (!this.post) {
-      this.post = new UnderwaterPost(this.renderer, this.scene, this.camera, { ...this.material.surfaceUniforms, ...this.waterVolume, ...this.light });
+      this.post = new UnderwaterPost(this.renderer, this.scene, this.camera, this.waveBinding, { ...this.waterVolume, ...this.light });
       const size = this.renderer.getSize(new Vector2());
       this.post.setSize(size.x, size.y, this.renderer.getPixelRatio());
       this.post.setBlur(this.params.blurStrength);
@@ -240,9 +255,15 @@ export class OceanView {
     this.lastStats = { drawCalls: info.calls, triangles: info.triangles, ...this.ocean.stats(), underwater, submersion, composerPasses };
   }
 
-  private drawHeightmaps(): HeightmapView {
+  /** The active model's heightmaps; a model without any shows a clear screen. */
+  private drawHeightmaps(): HeightmapView | undefined {
+    const textures = this.waveView.heightmapTextures;
+    if (!textures) {
+      this.renderer.clear();
+      return this.heightmapView;
+    }
     const view = this.heightmapView ?? new HeightmapView();
-    view.render(this.renderer, this.heightmapTextures, this.camera.aspect);
+    view.render(this.renderer, textures, this.camera.aspect);
     return view;
   }
 
@@ -268,10 +289,15 @@ export class OceanView {
     return [{ name: 'scene', ms: performance.now() - start }];
   }
 
-  /** The displacement evaluated by the GPU shader at (x, z) points and a time. */
-  probeSurface(points: readonly (readonly [number, number])[], time: number): SurfaceSample[] {
-    this.probe ??= new SurfaceProbe(this.renderer);
-    return this.probe.probe(points, this.surface.stateAt(time), this.heightmapTextures);
+  /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
+  probeSurface(points: readonly (readonly [number, number])[], time: number): ProbeSample[] {
+    this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding);
+    this.waveView.update(time);
+    try {
+      return this.probe.probe(points);
+    } finally {
+      this.waveView.update(this.frameTime);
+    }
   }
 
   /** Median CPU time of one culling + LOD update for the current camera, ms (batches of 20 for timer resolution). */
@@ -279,7 +305,7 @@ export class OceanView {
     const perBatch: number[] = [];
     for (let b = 0; b < batches; b++) {
       const start = performance.now();
-      for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.boundsHeight);
+      for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.bounds);
       perBatch.push((performance.now() - start) / 20);
     }
     perBatch.sort((a, c) => a - c);
@@ -297,7 +323,7 @@ export class OceanView {
     this.heightmapView?.dispose();
     this.post?.dispose();
     this.seaBed.dispose();
-    for (const texture of this.heightmapTextures) texture.dispose();
+    this.waveView.dispose();
     this.fresnelTexture.dispose();
     this.fresnelFromBelowTexture.dispose();
     this.sky.dispose();
