@@ -7,7 +7,9 @@
 uniform vec3 uCausticsSunDirection; // unit vector towards the sun, in the air
 uniform float uCausticsStrength;    // 0: flat light, 1: physical concentration
 
-const float CAUSTICS_AIR_OVER_WATER = 1.0 / 1.333;
+#include <oceano_constants>
+
+const float CAUSTICS_AIR_OVER_WATER = 1.0 / WATER_IOR;
 // Side of the surface patch whose image is measured, metres.
 const float CAUSTICS_PATCH = 0.75;
 // Brightest concentration kept: a fold of the map is a line of infinite intensity.

@@ -2,6 +2,7 @@ import { ShaderChunk } from 'three';
 import tiledHeightmap from '../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../shaders/waterVolume.glsl?raw';
 import caustics from '../../shaders/caustics.glsl?raw';
+import { shaderConstantsChunk } from './shaderConstants';
 
 /**
  * Shared GLSL pieces are registered as three.js shader chunks, so every shader that needs
@@ -9,6 +10,8 @@ import caustics from '../../shaders/caustics.glsl?raw';
  * model's own chunk, registered by its view (src/render/waveModels/).
  */
 const chunks: Record<string, string> = {
+  // #defines made from the TypeScript constants the shaders share (index of refraction, …).
+  oceano_constants: shaderConstantsChunk(),
   oceano_tiled_heightmap: tiledHeightmap,
   oceano_water_volume: waterVolume,
   // Needs <oceano_waves> included before it; see src/render/causticsUniforms.ts.

@@ -19,13 +19,10 @@ import type { Pass } from 'three/addons/postprocessing/Pass.js';
 import fullscreenVertex from '../../shaders/fullscreen.vert?raw';
 import underwaterFragment from '../../shaders/underwater.frag?raw';
 import blurFragment from '../../shaders/gaussianBlur.frag?raw';
-import { gaussianKernel } from '../sim/gaussianKernel';
+import { BLUR_MAX_RADIUS, gaussianKernel } from '../sim/gaussianKernel';
 import { registerShaderChunks } from './shaderChunks';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
-
-/** Must match MAX_RADIUS in shaders/gaussianBlur.frag. */
-const BLUR_MAX_RADIUS = 24;
 
 export interface PassTiming {
   name: string;
