@@ -2,6 +2,7 @@
 // `npx tsx scripts/bench-boat.ts`. Prints figures; times nothing it asserts.
 import { defaultParams } from '../src/sim/params';
 import { SeedWaveModel } from '../src/sim/seedWaveModel';
+import { median } from '../src/sim/sampleStatistics';
 import { BoatMotion } from '../src/sim/boatMotion';
 
 const FRAMES = 20_000;
@@ -19,5 +20,4 @@ for (let run = 0; run < RUNS; run++) {
   }
   perRun.push(((performance.now() - start) / FRAMES) * 1000);
 }
-perRun.sort((a, b) => a - b);
-console.log(`boat update: median ${perRun[RUNS >> 1].toFixed(2)} µs per frame over ${RUNS} runs of ${FRAMES} frames (min ${perRun[0].toFixed(2)}, max ${perRun[RUNS - 1].toFixed(2)})`);
+console.log(`boat update: median ${median(perRun).toFixed(2)} µs per frame over ${RUNS} runs of ${FRAMES} frames (min ${Math.min(...perRun).toFixed(2)}, max ${Math.max(...perRun).toFixed(2)})`);

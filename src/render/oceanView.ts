@@ -1,8 +1,11 @@
 import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
-import type { OceanParams } from '../sim/params';
+import type { OceanParams, ParamKey } from '../sim/params';
+import { paramsChanged } from '../sim/paramChanges';
+import { median } from '../sim/sampleStatistics';
 import { createWaveModel, type LiveWaveModel } from '../sim/waveModels';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
-import { sunDirection } from '../sim/sun';
+import { SUN_LIGHT_COLOR, sunDirection } from '../sim/sun';
+import { DEFAULT_CAMERA } from '../sim/defaultCamera';
 import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../sim/underwater';
 import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
@@ -63,13 +66,15 @@ export class OceanView {
   private readonly caustics: CausticsUniforms = createCausticsUniforms();
   private readonly light: Record<'uRefractedSun' | 'uSunColor', IUniform> = {
     uRefractedSun: { value: new Vector3() },
-    uSunColor: { value: new Color(1.0, 0.93, 0.8) },
+    uSunColor: { value: new Color(...SUN_LIGHT_COLOR) },
   };
   private readonly seaBed: SeaBed;
   private readonly lights: SceneLights;
   /** Made on the first frame that needs it, so a view that never dives never pays for its targets. */
   private post?: UnderwaterPost;
   private params: OceanParams;
+  /** The parameters as last applied, to apply only what changes; null before the first time. */
+  private applied: OceanParams | null = null;
   private lastStats: RenderStats = {
     drawCalls: 0,
     triangles: 0,
@@ -86,6 +91,7 @@ export class OceanView {
   private showHeightmaps = false;
   private readonly nearPoint = new Vector3();
   private backgroundAbove: Scene['background'] = null;
+  private readonly syncPixel = new Uint8Array(4);
 
   constructor(
     canvas: HTMLCanvasElement,
@@ -96,8 +102,8 @@ export class OceanView {
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
     this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, 20000);
-    this.camera.position.set(0, 9, 40);
-    this.camera.lookAt(0, 0, -60);
+    this.camera.position.fromArray(DEFAULT_CAMERA.position);
+    this.camera.lookAt(...DEFAULT_CAMERA.target);
 
     this.scene.background = sky;
     this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
@@ -126,38 +132,50 @@ export class OceanView {
     return this.waveView.model;
   }
 
+  /**
+   * Applies the parameters that differ from the last ones applied (all of them the first
+   * time). Keyboard steering changes the boat's speed and heading every frame; that must
+   * not rebuild blur kernels or re-upload anything the view already has.
+   */
   applyParams(params: OceanParams): void {
+    const before = this.applied;
+    const changed = (...keys: ParamKey[]) => paramsChanged(before, params, keys);
+    this.applied = { ...params };
+    this.params = params;
     if (params.waves !== this.waveView.name) {
       const previous = this.waveView;
       this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
       this.waveBinding.setModel(this.waveView);
       previous.dispose();
     } else {
+      // Cheap for every model: each compares what it reads and re-uploads only on a change.
       this.waveView.setParams(params);
     }
-    this.seaBed.setNoiseSeed(params.seed);
-    this.params = params;
-    const sun = sunDirection(params.sunElevation, params.sunAzimuth);
-    this.material.setWaterColor(params.waterColor);
-    this.material.setSunDirection(sun);
-    this.lights.update(sun, params.waterColor);
-    this.material.setFresnelEnabled(params.fresnel);
-    this.material.wireframe = params.wireframe;
-    this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
-    this.showHeightmaps = params.view === 'heightmap';
-    this.material.setLodColors(params.lodColors);
-    this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
     // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
     this.bounds = this.waveView.model.bounds();
-
-    const refracted = refractedSunDirection(sun);
-    (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
-    applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
-    applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
-    this.seaBed.setDepth(params.seaBedDepth);
-    this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
-    this.post?.setBlur(params.blurStrength);
-    this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
+    if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
+    if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'fogDensity', 'caustics', 'causticsIntensity')) {
+      const sun = sunDirection(params.sunElevation, params.sunAzimuth);
+      this.material.setWaterColor(params.waterColor);
+      this.material.setSunDirection(sun);
+      this.lights.update(sun, params.waterColor);
+      const refracted = refractedSunDirection(sun);
+      (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
+      applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
+      applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
+      this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
+    }
+    if (changed('fresnel')) this.material.setFresnelEnabled(params.fresnel);
+    if (changed('wireframe')) this.material.wireframe = params.wireframe;
+    if (changed('normals', 'shading')) this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
+    if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
+    if (changed('lodColors')) this.material.setLodColors(params.lodColors);
+    if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling')) {
+      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
+    }
+    if (changed('seaBedDepth')) this.seaBed.setDepth(params.seaBedDepth);
+    if (changed('blurStrength')) this.post?.setBlur(params.blurStrength);
+    if (changed('godRays', 'godRaysIntensity')) this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -267,6 +285,12 @@ export class OceanView {
     return view;
   }
 
+  /** Waits for every GPU command so far: reading one canvas pixel cannot finish before them. */
+  waitForGpu(): void {
+    const gl = this.renderer.getContext();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, this.syncPixel);
+  }
+
   /**
    * Draws one frame waiting for the GPU after each pass, and returns each pass's time.
    * Above the water the frame is the single direct render, reported as 'scene'.
@@ -308,8 +332,7 @@ export class OceanView {
       for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.bounds);
       perBatch.push((performance.now() - start) / 20);
     }
-    perBatch.sort((a, c) => a - c);
-    return perBatch[perBatch.length >> 1];
+    return median(perBatch);
   }
 
   stats(): RenderStats {

@@ -3,7 +3,7 @@ import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { compareWithReference, diffPngs } from './imageCompare';
-import { highFrequencyEnergy } from '../../src/sim/imageEnergy';
+import { highFrequencyEnergy } from '../support/imageEnergy';
 
 const REFERENCE_TOLERANCE = 0.005;
 /** Six metres down, looking level across the sea bed towards the sun's side. */
