@@ -1,14 +1,14 @@
 // CPU cost of the boat's per-frame update (five surface samples, three damped springs):
 // `npx tsx scripts/bench-boat.ts`. Prints figures; times nothing it asserts.
 import { defaultParams } from '../src/sim/params';
-import { OceanSurface } from '../src/sim/oceanSurface';
-import { surfaceHeight } from '../src/sim/surface';
+import { SeedWaveModel } from '../src/sim/seedWaveModel';
+import { median } from '../src/sim/sampleStatistics';
 import { BoatMotion } from '../src/sim/boatMotion';
 
 const FRAMES = 20_000;
 const RUNS = 7;
 const params = defaultParams();
-const surface = new OceanSurface(params);
+const waves = new SeedWaveModel(params);
 const hull = { length: 8, beam: 2.6 };
 const perRun: number[] = [];
 for (let run = 0; run < RUNS; run++) {
@@ -16,10 +16,8 @@ for (let run = 0; run < RUNS; run++) {
   const start = performance.now();
   for (let frame = 0; frame < FRAMES; frame++) {
     const time = 10 + frame / 60;
-    const state = surface.stateAt(time);
-    motion.update(time, { heading: 1, speed: 3, response: params.boatResponse }, hull, (x, z) => surfaceHeight(state, surface.heightmaps, x, z));
+    motion.update(time, { heading: 1, speed: 3, response: params.boatResponse }, hull, (x, z) => waves.height(x, z, time));
   }
   perRun.push(((performance.now() - start) / FRAMES) * 1000);
 }
-perRun.sort((a, b) => a - b);
-console.log(`boat update: median ${perRun[RUNS >> 1].toFixed(2)} µs per frame over ${RUNS} runs of ${FRAMES} frames (min ${perRun[0].toFixed(2)}, max ${perRun[RUNS - 1].toFixed(2)})`);
+console.log(`boat update: median ${median(perRun).toFixed(2)} µs per frame over ${RUNS} runs of ${FRAMES} frames (min ${Math.min(...perRun).toFixed(2)}, max ${Math.max(...perRun).toFixed(2)})`);

@@ -1,4 +1,4 @@
-// Caustics: the bright net of light under waves. Needs <oceano_displacement> first.
+// Caustics: the bright net of light under waves. Needs <oceano_waves> first.
 // Sunlight is refracted through the displaced surface (its real normals, Snell's law)
 // and followed down to the depth of the lit point; the ratio of a small patch's area on
 // the surface to the area it lands on is the concentration of light there (the inverse
@@ -7,17 +7,20 @@
 uniform vec3 uCausticsSunDirection; // unit vector towards the sun, in the air
 uniform float uCausticsStrength;    // 0: flat light, 1: physical concentration
 
-const float CAUSTICS_AIR_OVER_WATER = 1.0 / 1.333;
+#include <oceano_constants>
+
+const float CAUSTICS_AIR_OVER_WATER = 1.0 / WATER_IOR;
 // Side of the surface patch whose image is measured, metres.
 const float CAUSTICS_PATCH = 0.75;
 // Brightest concentration kept: a fold of the map is a line of infinite intensity.
 const float CAUSTICS_MAX_GAIN = 8.0;
 
+// Where light through the surface point displaced from grid point s lands at depth floorY.
 vec2 causticLanding(vec2 s, float floorY, vec3 light) {
-  float h = oceanHeight(s);
-  vec3 n = oceanNormal(s, h);
+  vec3 d = waveDisplacement(s);
+  vec3 n = waveNormal(s);
   vec3 t = refract(light, n, CAUSTICS_AIR_OVER_WATER);
-  return s + t.xz * ((floorY - h) / min(t.y, -1e-3));
+  return s + d.xz + t.xz * ((floorY - d.y) / min(t.y, -1e-3));
 }
 
 // Multiplier of the direct sunlight reaching a point under the water (1 where the sea is
@@ -25,7 +28,9 @@ vec2 causticLanding(vec2 s, float floorY, vec3 light) {
 // surface, and a sun below the horizon, get 1: there is nothing to concentrate.
 float causticLight(vec3 p) {
   if (uCausticsSunDirection.y <= 0.0 || uCausticsStrength <= 0.0) return 1.0;
-  if (p.y >= oceanHeight(p.xz)) return 1.0;
+  // Above the surface (the grid point under p stands for the world point: exact for models
+  // that only lift points, within the horizontal displacement's reach for choppy ones).
+  if (p.y >= waveDisplacement(p.xz).y) return 1.0;
   vec3 light = -uCausticsSunDirection;
   vec3 flatRay = refract(light, vec3(0.0, 1.0, 0.0), CAUSTICS_AIR_OVER_WATER);
   // The surface point above p along the ray a flat sea would send there.

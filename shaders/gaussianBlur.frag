@@ -2,11 +2,11 @@
 // the water (alpha = 1, written by the underwater pass) are blurred, and only with each
 // other, so a waterline across the screen stays sharp on the air side.
 
-#define MAX_RADIUS 24
+#include <oceano_constants>
 
 uniform sampler2D tDiffuse;
 uniform vec2 uStep;
-uniform float uWeights[MAX_RADIUS + 1];
+uniform float uWeights[BLUR_MAX_RADIUS + 1];
 uniform int uRadius;
 // The last pass that needs the mask makes the frame opaque again for the canvas.
 uniform bool uLastMaskUse;
@@ -17,7 +17,7 @@ void main() {
   vec4 center = texture2D(tDiffuse, vUv);
   vec3 sum = center.rgb * (uWeights[0] * center.a);
   float total = uWeights[0] * center.a;
-  for (int i = 1; i <= MAX_RADIUS; i++) {
+  for (int i = 1; i <= BLUR_MAX_RADIUS; i++) {
     if (i > uRadius) break;
     vec2 offset = uStep * float(i);
     vec4 a = texture2D(tDiffuse, vUv + offset);

@@ -3,6 +3,7 @@
 // refracted through Snell's window, total internal reflection of the water outside it.
 
 #include <oceano_water_volume>
+#include <oceano_constants>
 
 uniform samplerCube uSky;
 uniform sampler2D uFresnelTable;
@@ -24,10 +25,7 @@ varying vec3 vNormal;
 varying float vBand;
 
 // The LOD debugger's band colours, near to far.
-const vec3 BAND_COLORS[6] = vec3[6](
-  vec3(0.95, 0.2, 0.15), vec3(0.95, 0.6, 0.1), vec3(0.9, 0.9, 0.15),
-  vec3(0.2, 0.8, 0.25), vec3(0.15, 0.75, 0.9), vec3(0.5, 0.3, 0.95)
-);
+const vec3 BAND_COLORS[LOD_BAND_COUNT] = LOD_BAND_COLORS;
 
 // three.js stores cube maps mirrored in x (its flipEnvMap convention for CubeTexture).
 vec3 skyColor(vec3 direction) {
@@ -46,7 +44,7 @@ float fresnelLookup(sampler2D table, float cosIncidence) {
   return mix(a, b, x - float(i));
 }
 
-const float WATER_OVER_AIR = 1.333;
+const float WATER_OVER_AIR = WATER_IOR;
 
 // v points from the surface down to the eye; n is the surface normal (facing the air).
 vec3 shadeFromBelow(vec3 v, vec3 n) {

@@ -1,7 +1,8 @@
 // One ocean chunk instance: a band's shared grid (integer grid coordinates in
 // position.xz), placed at its world corner, with edge vertices snapped onto a coarser
-// neighbour's edge (the GLSL twin of src/sim/edgeSnap.ts), then displaced.
-#include <oceano_displacement>
+// neighbour's edge (the GLSL twin of src/sim/edgeSnap.ts), then displaced by the active wave
+// model's chunk (waveDisplacement / waveNormal, see shaders/waves/).
+#include <oceano_waves>
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
@@ -30,10 +31,10 @@ void main() {
 
   // Corner and step are whole multiples of the base step: the sum is exact in float32, so
   // two chunks compute bit-identical positions (and heights) for a shared vertex.
-  vec3 world = vec3(aChunk.x + float(snapped.x) * uBaseStep, 0.0, aChunk.y + float(snapped.y) * uBaseStep);
-  float height = oceanHeight(world.xz);
-  vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : oceanNormal(world.xz, height);
-  world.y += height;
+  vec2 gridXZ = vec2(aChunk.x + float(snapped.x) * uBaseStep, aChunk.y + float(snapped.y) * uBaseStep);
+  vec3 d = waveDisplacement(gridXZ);
+  vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
+  vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : waveNormal(gridXZ);
   vWorldPosition = world;
   vBand = aChunk.z;
   gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);

@@ -1,6 +1,7 @@
-// Evaluates the ocean's displacement at arbitrary (x, z) points on the GPU: one point per
-// output texel, so the CPU twin can be checked against the real shader code.
-#include <oceano_displacement>
+// Evaluates the active wave model's chunk at arbitrary grid points (x, z) on the GPU, so
+// the CPU twin can be checked against the real shader code. Two output texels per point:
+// even index waveDisplacement (dx, dy, dz), odd index waveNormal.
+#include <oceano_waves>
 
 attribute vec2 aSample;
 attribute float aIndex;
@@ -9,9 +10,8 @@ uniform vec2 uTargetSize;
 varying vec4 vResult;
 
 void main() {
-  float height = oceanHeight(aSample);
-  vec3 normal = oceanNormal(aSample, height);
-  vResult = vec4(height, normal);
+  bool normalTexel = mod(aIndex, 2.0) > 0.5;
+  vResult = vec4(normalTexel ? waveNormal(aSample) : waveDisplacement(aSample), 0.0);
   vec2 texel = vec2(mod(aIndex, uTargetSize.x), floor(aIndex / uTargetSize.x)) + 0.5;
   gl_Position = vec4(texel / uTargetSize * 2.0 - 1.0, 0.0, 1.0);
   gl_PointSize = 1.0;

@@ -2,11 +2,16 @@
 // by the blue-green light scattered in the water above it. The water between the bed
 // and the eye is added by the underwater pass.
 
-#include <oceano_displacement>
+#include <oceano_waves>
+#include <oceano_tiled_heightmap>
 #include <oceano_water_volume>
 #include <oceano_caustics>
 
 uniform vec3 uSandColor;
+// The mottling heightmap (the second Perlin ripple map of the noise seed) and its tiling.
+uniform sampler2D uSandMottle;
+uniform float uSandMottleTile;
+uniform float uSandMottleSize;
 uniform vec3 uSunColor;
 uniform vec3 uRefractedSun;
 uniform float uSunTransmission;
@@ -16,7 +21,7 @@ varying vec3 vWorldPosition;
 void main() {
   float depth = max(-vWorldPosition.y, 0.0);
   // Mottling from the seeded heightmap at a scale of its own, so the bed is not a flat card.
-  float mottle = sampleHeightmap(uHeightmap1, vWorldPosition.xz * 1.7, vec2(0.0));
+  float mottle = sampleTiledHeightmap(uSandMottle, vWorldPosition.xz * 1.7, vec2(0.0), uSandMottleTile, uSandMottleSize);
   vec3 albedo = uSandColor * (0.85 + 0.25 * mottle);
 
   vec3 direct = vec3(0.0);

@@ -4,7 +4,7 @@
 // and 0 where it starts in the air, for the blur passes.
 
 #include <packing>
-#include <oceano_displacement>
+#include <oceano_waves>
 #include <oceano_water_volume>
 
 uniform sampler2D tDiffuse;
@@ -45,10 +45,10 @@ float marchJitter(vec2 pixel) {
 // its surroundings is a converging lens: the band-passed ripple height (centre minus the
 // mean of three neighbours at 120°) gives the shafts, and they drift with the ripples.
 float shaftLight(vec2 s) {
-  float centre = rippleHeight(s);
-  float around = rippleHeight(s + SHAFT_REACH * vec2(1.0, 0.0))
-               + rippleHeight(s + SHAFT_REACH * vec2(-0.5, 0.866))
-               + rippleHeight(s + SHAFT_REACH * vec2(-0.5, -0.866));
+  float centre = waveLensHeight(s);
+  float around = waveLensHeight(s + SHAFT_REACH * vec2(1.0, 0.0))
+               + waveLensHeight(s + SHAFT_REACH * vec2(-0.5, 0.866))
+               + waveLensHeight(s + SHAFT_REACH * vec2(-0.5, -0.866));
   float lens = clamp(0.5 + SHAFT_CONTRAST * (centre - around / 3.0), 0.0, 1.0);
   return lens * lens * lens;
 }
@@ -83,7 +83,7 @@ vec3 godRays(vec3 origin, vec3 direction, float distance) {
 bool startsInAir(float alpha, float depthSample, vec3 nearWorld) {
   if (depthSample < 1.0 && alpha < 0.25) return true;
   if (depthSample < 1.0 && alpha < 0.75) return false;
-  return nearWorld.y >= oceanHeight(nearWorld.xz);
+  return nearWorld.y >= waveDisplacement(nearWorld.xz).y;
 }
 
 void main() {

@@ -87,18 +87,13 @@ export function pageEnvironment(): { renderer: string; crossOriginIsolated: bool
 
 /**
  * Runs in the page: profiles `frames` frames with oceano.debug.passTimings() (each pass
- * followed by a GPU sync) and returns each pass's median, ms.
+ * followed by a GPU sync) and returns each pass's times, ms. Serialised into the page, so
+ * it imports nothing: scripts/bench.ts takes each pass's median in node.
  */
-export function medianPassTimes(frames: number): Record<string, number> {
+export function passTimeSamples(frames: number): Record<string, number[]> {
   const samples: Record<string, number[]> = {};
   for (let i = 0; i < frames; i++) {
     for (const { name, ms } of window.oceano.debug.passTimings()) (samples[name] ??= []).push(ms);
   }
-  const result: Record<string, number> = {};
-  for (const [name, values] of Object.entries(samples)) {
-    values.sort((a, b) => a - b);
-    const mid = values.length >> 1;
-    result[name] = Math.round((values.length % 2 ? values[mid] : (values[mid - 1] + values[mid]) / 2) * 10) / 10;
-  }
-  return result;
+  return samples;
 }

@@ -1,7 +1,10 @@
 import type { OceanApp, BoatInfo, CameraPose, LoopActivity, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
-import type { SurfaceSample } from '../sim/oceanSurface';
+import type { SurfaceSample } from '../sim/waveModel';
+import type { ProbeSample } from '../render/surfaceProbe';
 import type { PassTiming } from '../render/underwaterPost';
+import type { OceanView } from '../render/oceanView';
+import { checkBatches } from './apiChecks';
 
 /**
  * `window.oceano` on the page, `element.oceano` on an <oceano-view>: how tests, course
@@ -20,7 +23,7 @@ export interface OceanoApi {
   getCamera(): CameraPose;
   sampleSurface(x: number, z: number): SurfaceSample;
   /** The same surface evaluated by the GPU shader and read back; `t` defaults to the current time. */
-  probeGpu(points: [number, number][], t?: number): Promise<SurfaceSample[]>;
+  probeGpu(points: [number, number][], t?: number): Promise<ProbeSample[]>;
   /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boatPose.ts). */
   boat(): BoatInfo;
   stats(): OceanStats;
@@ -39,7 +42,7 @@ export interface OceanoApi {
     /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
     lodUpdateMs(batches?: number): number;
   };
-  readonly three: ReturnType<OceanApp['three']>;
+  readonly three: Pick<OceanView, 'renderer' | 'scene' | 'camera'>;
 }
 
 declare global {
@@ -67,14 +70,15 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     shareUrl: () => app.shareUrl(),
     activity: () => app.activity(),
     debug: {
-      fresnelTable: () => app.fresnelTable(),
-      fresnelTableFromBelow: () => app.fresnelTableFromBelow(),
-      passTimings: () => app.passTimings(),
-      heightmaps: () => app.heightmaps(),
-      lodUpdateMs: (batches) => app.lodUpdateMs(batches),
+      fresnelTable: () => app.debugView().fresnelData.slice(),
+      fresnelTableFromBelow: () => app.debugView().fresnelFromBelowData.slice(),
+      passTimings: () => app.debugView().profileFrame(app.clock.time),
+      heightmaps: () => (app.debugView().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
+      lodUpdateMs: (batches) => app.debugView().timeLodUpdate(checkBatches(batches)),
     },
     get three() {
-      return app.three();
+      const view = app.debugView();
+      return { renderer: view.renderer, scene: view.scene, camera: view.camera };
     },
   };
 }

@@ -1,11 +1,6 @@
-/** Where the camera stands and what it looks at, in metres. */
-export interface CameraPose {
-  position: [number, number, number];
-  target: [number, number, number];
-}
+import type { CameraPose } from '../sim/defaultCamera';
 
-/** The view the page opens with: eye 9 m above the sea, looking out over it. */
-export const DEFAULT_CAMERA: CameraPose = { position: [0, 9, 40], target: [0, 0, -60] };
+export { DEFAULT_CAMERA, type CameraPose } from '../sim/defaultCamera';
 
 /** Farther than this from the origin is no view of the sea, and a likely typo. */
 const CAMERA_LIMIT = 1e6;

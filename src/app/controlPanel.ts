@@ -3,7 +3,7 @@ import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../si
 import type { Translator, UiTextId } from './i18n';
 
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
-  { title: 'folderSwell', keys: ['swellAmplitude', 'swellFrequency'] },
+  { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow'] },

@@ -150,6 +150,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
  * params.ts. Typed as a full record, so a parameter without one does not compile.
  */
 export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
+  waves: 'Modelo de olas',
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',
   swellFrequency: 'Frecuencia del oleaje',

@@ -1,5 +1,5 @@
 import type { OceanParams } from '../sim/params';
-import type { CameraPose } from './cameraPose';
+import { DEFAULT_CAMERA, type CameraPose } from './cameraPose';
 
 /** A named view for a course page: a few parameters changed from the defaults and a camera. */
 export interface Preset {
@@ -27,7 +27,7 @@ export const PRESETS = {
   /** "Texturas y heightmaps": the two Perlin heightmaps as the vertex shader receives them. */
   'perlin-heightmap': {
     params: { view: 'heightmap' },
-    camera: { position: [0, 9, 40], target: [0, 0, -60] },
+    camera: DEFAULT_CAMERA,
   },
   /** The same grid as flat-plane, now displaced by swell and ripples. */
   'displaced-plane': {
@@ -57,7 +57,7 @@ export const PRESETS = {
   /** The Fresnel table the shader samples, plotted against Schlick's approximation, over the sea. */
   fresnel: {
     params: { fresnelPlot: true },
-    camera: { position: [0, 9, 40], target: [0, 0, -60] },
+    camera: DEFAULT_CAMERA,
   },
   /** "Level of Detail": chunks tinted by distance band, seen from above. */
   'lod-bands': {
@@ -68,7 +68,7 @@ export const PRESETS = {
   'frustum-culling': {
     params: { lodColors: true, freezeCulling: true },
     camera: { position: [-900, 1400, 1300], target: [0, 0, -500] },
-    cullingCamera: { position: [0, 9, 40], target: [0, 0, -60] },
+    cullingCamera: DEFAULT_CAMERA,
   },
   /** "Quiero mover el bote": the boat pitching on a short, steep swell, seen from the side. */
   'boat-pitch': {

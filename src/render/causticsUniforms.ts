@@ -2,9 +2,9 @@ import { Vector3, type IUniform } from 'three';
 
 /**
  * The uniforms of shaders/caustics.glsl (`#include <oceano_caustics>`, after
- * `#include <oceano_displacement>`). To light any mesh under the water with caustics —
- * the sea bed here, a boat's hull — give its ShaderMaterial the ocean's SurfaceUniforms
- * and this set (shared objects, so one update reaches all), pass the world position to the
+ * `#include <oceano_waves>`). To light any mesh under the water with caustics —
+ * the sea bed here, a boat's hull — bind its ShaderMaterial to the ocean's WaveBinding,
+ * give it this set (shared objects, so one update reaches all), pass the world position to the
  * fragment shader and multiply the direct sunlight by `causticLight(worldPosition)`.
  */
 export type CausticsUniforms = Record<'uCausticsSunDirection' | 'uCausticsStrength', IUniform>;

@@ -21,7 +21,7 @@ export class HeightmapView {
     this.scene.add(quad);
   }
 
-  render(renderer: WebGLRenderer, heightmaps: [Texture, Texture], aspect: number): void {
+  render(renderer: WebGLRenderer, heightmaps: readonly [Texture, Texture], aspect: number): void {
     this.material.uniforms.uHeightmap0.value = heightmaps[0];
     this.material.uniforms.uHeightmap1.value = heightmaps[1];
     this.material.uniforms.uAspect.value = aspect;

@@ -11,6 +11,7 @@ import {
   Vector3,
   type PerspectiveCamera,
 } from 'three';
+import type { DisplacementBounds } from '../sim/waveModel';
 import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
 import { CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
@@ -94,13 +95,15 @@ export class OceanChunks {
   }
 
   /** Chooses and uploads this frame's chunks for `camera` (or the frozen one). */
-  update(camera: PerspectiveCamera, settings: LodSettings, maxDisplacement: number): void {
+  /** `bounds`: how far the waves can move a vertex up or down and sideways (WaveModel.bounds()), metres. */
+  update(camera: PerspectiveCamera, settings: LodSettings, bounds: DisplacementBounds): void {
     this.setFrozen(settings.freezeCulling, camera);
     if (!this.frozenHelper) this.captureCullingView(camera);
     this.bandsInUse = settings.lodBruteForce ? 1 : settings.lodBands;
     const selector = this.selector;
     const input = this.selectionInput;
-    input.maxDisplacement = maxDisplacement;
+    input.maxDisplacement = bounds.vertical;
+    input.horizontalDisplacement = bounds.horizontal;
     input.lodDistance = settings.lodDistance;
     input.lodBands = settings.lodBands;
     input.bruteForce = settings.lodBruteForce;

@@ -1,10 +1,9 @@
 import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
-import type { SurfaceState } from '../sim/surface';
 import { BASE_STEP, CHUNK_QUADS } from '../sim/lodBands';
 import { registerShaderChunks } from './shaderChunks';
-import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './surfaceUniforms';
+import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
@@ -12,7 +11,7 @@ const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
 
 export class OceanMaterial extends ShaderMaterial {
   constructor(
-    heightmaps: [Texture, Texture],
+    waves: WaveBinding,
     fresnelTables: { fromAbove: Texture; fromBelow: Texture },
     sky: CubeTexture,
     shared: WaterVolumeUniforms & Record<'uSunColor', IUniform>,
@@ -22,7 +21,6 @@ export class OceanMaterial extends ShaderMaterial {
       vertexShader,
       fragmentShader,
       uniforms: {
-        ...createSurfaceUniforms(heightmaps),
         ...shared,
         uSky: { value: sky },
         uFresnelTable: { value: fresnelTables.fromAbove },
@@ -40,11 +38,7 @@ export class OceanMaterial extends ShaderMaterial {
         uLodColors: { value: false },
       },
     });
-  }
-
-  /** The displacement uniforms, for materials that share this surface (sea bed, post passes). */
-  get surfaceUniforms(): SurfaceUniforms {
-    return this.uniforms as SurfaceUniforms;
+    waves.attach(this);
   }
 
   /**
@@ -54,14 +48,6 @@ export class OceanMaterial extends ShaderMaterial {
   setSeenFromBelow(fromBelow: boolean): void {
     this.side = fromBelow ? DoubleSide : FrontSide;
     this.uniforms.uMarkSides.value = fromBelow;
-  }
-
-  setSurface(state: SurfaceState): void {
-    applySurfaceState(this.uniforms as SurfaceUniforms, state);
-  }
-
-  setHeightmaps(heightmaps: [Texture, Texture]): void {
-    applyHeightmaps(this.uniforms as SurfaceUniforms, heightmaps);
   }
 
   setSky(sky: CubeTexture): void {

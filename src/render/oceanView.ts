@@ -1,9 +1,11 @@
 import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
-import type { OceanParams } from '../sim/params';
-import type { OceanSurface, SurfaceSample } from '../sim/oceanSurface';
+import type { OceanParams, ParamKey } from '../sim/params';
+import { paramsChanged } from '../sim/paramChanges';
+import { median } from '../sim/sampleStatistics';
+import { createWaveModel, type LiveWaveModel } from '../sim/waveModels';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
-import { sunDirection } from '../sim/sun';
-import { maxDisplacement, surfaceHeight, type SurfaceState } from '../sim/surface';
+import { SUN_LIGHT_COLOR, sunDirection } from '../sim/sun';
+import { DEFAULT_CAMERA } from '../sim/defaultCamera';
 import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../sim/underwater';
 import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
@@ -11,11 +13,14 @@ import { SeaBed } from './seaBed';
 import { UnderwaterPost, type PassTiming } from './underwaterPost';
 import { OceanMaterial } from './oceanMaterial';
 import { OceanChunks, type ChunkStats, type LodSettings } from './oceanChunks';
-import { fresnelTexture, heightmapTexture } from './dataTextures';
-import { SurfaceProbe } from './surfaceProbe';
+import { fresnelTexture } from './dataTextures';
+import { SurfaceProbe, type ProbeSample } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
 import { lightWithCaustics } from './hullCaustics';
+import { WaveBinding } from './waveModels/waveBinding';
+import { createWaveModelView } from './waveModels/registry';
+import type { WaveModelView } from './waveModels/waveModelView';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -49,21 +54,27 @@ export class OceanView {
   private readonly material: OceanMaterial;
   private readonly ocean: OceanChunks;
   private lod: LodSettings;
-  private boundsHeight: number;
-  private heightmapTextures: [DataTexture, DataTexture];
+  /** The active wave model's GPU half; its `model` is the CPU twin everything else samples. */
+  private waveView: WaveModelView;
+  private readonly waveBinding: WaveBinding;
+  private bounds: { vertical: number; horizontal: number };
+  /** The time of the last update(), to put the wave uniforms back after a probe at another time. */
+  private frameTime = 0;
   private readonly fresnelTexture: DataTexture;
   private readonly fresnelFromBelowTexture: DataTexture;
   private readonly waterVolume: WaterVolumeUniforms = createWaterVolumeUniforms();
   private readonly caustics: CausticsUniforms = createCausticsUniforms();
   private readonly light: Record<'uRefractedSun' | 'uSunColor', IUniform> = {
     uRefractedSun: { value: new Vector3() },
-    uSunColor: { value: new Color(1.0, 0.93, 0.8) },
+    uSunColor: { value: new Color(...SUN_LIGHT_COLOR) },
   };
   private readonly seaBed: SeaBed;
   private readonly lights: SceneLights;
   /** Made on the first frame that needs it, so a view that never dives never pays for its targets. */
   private post?: UnderwaterPost;
   private params: OceanParams;
+  /** The parameters as last applied, to apply only what changes; null before the first time. */
+  private applied: OceanParams | null = null;
   private lastStats: RenderStats = {
     drawCalls: 0,
     triangles: 0,
@@ -80,10 +91,10 @@ export class OceanView {
   private showHeightmaps = false;
   private readonly nearPoint = new Vector3();
   private backgroundAbove: Scene['background'] = null;
+  private readonly syncPixel = new Uint8Array(4);
 
   constructor(
     canvas: HTMLCanvasElement,
-    private readonly surface: OceanSurface,
     private sky: CubeTexture,
     params: OceanParams,
   ) {
@@ -91,15 +102,16 @@ export class OceanView {
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
     this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, 20000);
-    this.camera.position.set(0, 9, 40);
-    this.camera.lookAt(0, 0, -60);
+    this.camera.position.fromArray(DEFAULT_CAMERA.position);
+    this.camera.lookAt(...DEFAULT_CAMERA.target);
 
     this.scene.background = sky;
-    this.heightmapTextures = surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
+    this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
+    this.waveBinding = new WaveBinding(this.waveView);
     this.fresnelTexture = fresnelTexture(this.fresnelData);
     this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
     this.material = new OceanMaterial(
-      this.heightmapTextures,
+      this.waveBinding,
       { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
       sky,
       { ...this.waterVolume, uSunColor: this.light.uSunColor },
@@ -107,47 +119,68 @@ export class OceanView {
     this.ocean = new OceanChunks(this.material);
     this.scene.add(this.ocean.group);
     this.lod = params;
-    this.boundsHeight = maxDisplacement(params);
-    this.seaBed = new SeaBed({ ...this.material.surfaceUniforms, ...this.waterVolume, ...this.caustics, ...this.light });
+    this.bounds = this.waveView.model.bounds();
+    this.seaBed = new SeaBed(this.waveBinding, { ...this.waterVolume, ...this.caustics, ...this.light });
     this.scene.add(this.seaBed.mesh);
     this.lights = new SceneLights(this.scene);
     this.params = params;
     this.applyParams(params);
   }
 
-  applyParams(params: OceanParams): void {
-    if (this.surface.setParams(params)) {
-      for (const texture of this.heightmapTextures) texture.dispose();
-      this.heightmapTextures = this.surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
-      this.material.setHeightmaps(this.heightmapTextures);
-    }
-    this.params = params;
-    const sun = sunDirection(params.sunElevation, params.sunAzimuth);
-    this.material.setWaterColor(params.waterColor);
-    this.material.setSunDirection(sun);
-    this.lights.update(sun, params.waterColor);
-    this.material.setFresnelEnabled(params.fresnel);
-    this.material.wireframe = params.wireframe;
-    this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
-    this.showHeightmaps = params.view === 'heightmap';
-    this.material.setLodColors(params.lodColors);
-    this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
-    // Chunk boxes reach as high and low as any wave can, so a crest rising into view is never culled.
-    this.boundsHeight = maxDisplacement(params);
+  /** The CPU twin of the waves on screen: the boat, the underwater switch and the API sample it. */
+  get waves(): LiveWaveModel {
+    return this.waveView.model;
+  }
 
-    const refracted = refractedSunDirection(sun);
-    (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
-    applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
-    applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
-    this.seaBed.setDepth(params.seaBedDepth);
-    this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
-    this.post?.setBlur(params.blurStrength);
-    this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
+  /**
+   * Applies the parameters that differ from the last ones applied (all of them the first
+   * time). Keyboard steering changes the boat's speed and heading every frame; that must
+   * not rebuild blur kernels or re-upload anything the view already has.
+   */
+  applyParams(params: OceanParams): void {
+    const before = this.applied;
+    const changed = (...keys: ParamKey[]) => paramsChanged(before, params, keys);
+    this.applied = { ...params };
+    this.params = params;
+    if (params.waves !== this.waveView.name) {
+      const previous = this.waveView;
+      this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
+      this.waveBinding.setModel(this.waveView);
+      previous.dispose();
+    } else {
+      // Cheap for every model: each compares what it reads and re-uploads only on a change.
+      this.waveView.setParams(params);
+    }
+    // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
+    this.bounds = this.waveView.model.bounds();
+    if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
+    if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'fogDensity', 'caustics', 'causticsIntensity')) {
+      const sun = sunDirection(params.sunElevation, params.sunAzimuth);
+      this.material.setWaterColor(params.waterColor);
+      this.material.setSunDirection(sun);
+      this.lights.update(sun, params.waterColor);
+      const refracted = refractedSunDirection(sun);
+      (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
+      applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
+      applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
+      this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
+    }
+    if (changed('fresnel')) this.material.setFresnelEnabled(params.fresnel);
+    if (changed('wireframe')) this.material.wireframe = params.wireframe;
+    if (changed('normals', 'shading')) this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
+    if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
+    if (changed('lodColors')) this.material.setLodColors(params.lodColors);
+    if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling')) {
+      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
+    }
+    if (changed('seaBedDepth')) this.seaBed.setDepth(params.seaBedDepth);
+    if (changed('blurStrength')) this.post?.setBlur(params.blurStrength);
+    if (changed('godRays', 'godRaysIntensity')) this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
   lightWithCaustics(model: Object3D): void {
-    lightWithCaustics(model, { ...this.material.surfaceUniforms, ...this.caustics });
+    lightWithCaustics(model, this.waveBinding, this.caustics);
   }
 
   setSky(sky: CubeTexture): void {
@@ -172,20 +205,20 @@ export class OceanView {
    * Where the view starts: 'above' and 'below' when the eye and the whole near plane are
    * clear of the surface on one side, else 'straddling' (the waterline may cross the frame).
    */
-  private submersionAt(state: SurfaceState): { underwater: boolean; submersion: Submersion; eyeSurface: number } {
-    const maps = this.surface.heightmaps;
+  private submersionAt(time: number): { underwater: boolean; submersion: Submersion; eyeSurface: number } {
+    const waves = this.waveView.model;
     const eye = this.camera.position;
-    const eyeSurface = surfaceHeight(state, maps, eye.x, eye.z);
+    const eyeSurface = waves.height(eye.x, eye.z, time);
     const underwater = eye.y < eyeSurface;
     // The near plane lies within `reach` of the eye: far above the highest crest, no sampling needed.
     const nearHalfHeight = this.camera.near * Math.tan((this.camera.fov * Math.PI) / 360);
     const reach = Math.hypot(this.camera.near, nearHalfHeight, nearHalfHeight * this.camera.aspect);
-    if (eye.y - reach > this.boundsHeight + WATERLINE_MARGIN) return { underwater, submersion: 'above', eyeSurface };
+    if (eye.y - reach > this.bounds.vertical + WATERLINE_MARGIN) return { underwater, submersion: 'above', eyeSurface };
     this.camera.updateMatrixWorld();
     const points = [{ y: eye.y, surface: eyeSurface }];
     for (const [x, y] of NEAR_PLANE_SAMPLES) {
       const p = this.nearPoint.set(x, y, -1).unproject(this.camera);
-      points.push({ y: p.y, surface: surfaceHeight(state, maps, p.x, p.z) });
+      points.push({ y: p.y, surface: waves.height(p.x, p.z, time) });
     }
     return { underwater, submersion: classifyNearPlane(points, WATERLINE_MARGIN), eyeSurface };
   }
@@ -196,10 +229,10 @@ export class OceanView {
    * draw() so its cost can be measured alone.
    */
   update(time: number): void {
-    const state = this.surface.stateAt(time);
-    this.material.setSurface(state);
-    this.ocean.update(this.camera, this.lod, this.boundsHeight);
-    const { eyeSurface, ...where } = this.submersionAt(state);
+    this.frameTime = time;
+    this.waveView.update(time);
+    this.ocean.update(this.camera, this.lod, this.bounds);
+    const { eyeSurface, ...where } = this.submersionAt(time);
     this.where = where;
     const inWater = this.where.submersion !== 'above';
     this.material.setSeenFromBelow(inWater);
@@ -219,7 +252,7 @@ export class OceanView {
 
   private underwaterPost(): UnderwaterPost {
     if (!this.post) {
-      this.post = new UnderwaterPost(this.renderer, this.scene, this.camera, { ...this.material.surfaceUniforms, ...this.waterVolume, ...this.light });
+      this.post = new UnderwaterPost(this.renderer, this.scene, this.camera, this.waveBinding, { ...this.waterVolume, ...this.light });
       const size = this.renderer.getSize(new Vector2());
       this.post.setSize(size.x, size.y, this.renderer.getPixelRatio());
       this.post.setBlur(this.params.blurStrength);
@@ -240,10 +273,22 @@ export class OceanView {
     this.lastStats = { drawCalls: info.calls, triangles: info.triangles, ...this.ocean.stats(), underwater, submersion, composerPasses };
   }
 
-  private drawHeightmaps(): HeightmapView {
+  /** The active model's heightmaps; a model without any shows a clear screen. */
+  private drawHeightmaps(): HeightmapView | undefined {
+    const textures = this.waveView.heightmapTextures;
+    if (!textures) {
+      this.renderer.clear();
+      return this.heightmapView;
+    }
     const view = this.heightmapView ?? new HeightmapView();
-    view.render(this.renderer, this.heightmapTextures, this.camera.aspect);
+    view.render(this.renderer, textures, this.camera.aspect);
     return view;
+  }
+
+  /** Waits for every GPU command so far: reading one canvas pixel cannot finish before them. */
+  waitForGpu(): void {
+    const gl = this.renderer.getContext();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, this.syncPixel);
   }
 
   /**
@@ -268,10 +313,15 @@ export class OceanView {
     return [{ name: 'scene', ms: performance.now() - start }];
   }
 
-  /** The displacement evaluated by the GPU shader at (x, z) points and a time. */
-  probeSurface(points: readonly (readonly [number, number])[], time: number): SurfaceSample[] {
-    this.probe ??= new SurfaceProbe(this.renderer);
-    return this.probe.probe(points, this.surface.stateAt(time), this.heightmapTextures);
+  /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
+  probeSurface(points: readonly (readonly [number, number])[], time: number): ProbeSample[] {
+    this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding);
+    this.waveView.update(time);
+    try {
+      return this.probe.probe(points);
+    } finally {
+      this.waveView.update(this.frameTime);
+    }
   }
 
   /** Median CPU time of one culling + LOD update for the current camera, ms (batches of 20 for timer resolution). */
@@ -279,11 +329,10 @@ export class OceanView {
     const perBatch: number[] = [];
     for (let b = 0; b < batches; b++) {
       const start = performance.now();
-      for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.boundsHeight);
+      for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.bounds);
       perBatch.push((performance.now() - start) / 20);
     }
-    perBatch.sort((a, c) => a - c);
-    return perBatch[perBatch.length >> 1];
+    return median(perBatch);
   }
 
   stats(): RenderStats {
@@ -297,7 +346,7 @@ export class OceanView {
     this.heightmapView?.dispose();
     this.post?.dispose();
     this.seaBed.dispose();
-    for (const texture of this.heightmapTextures) texture.dispose();
+    this.waveView.dispose();
     this.fresnelTexture.dispose();
     this.fresnelFromBelowTexture.dispose();
     this.sky.dispose();

@@ -1,8 +1,11 @@
-import { Color, Mesh, PlaneGeometry, ShaderMaterial, Vector3, type IUniform } from 'three';
+import { Color, Mesh, PlaneGeometry, ShaderMaterial, Vector3, type DataTexture, type IUniform } from 'three';
 import vertexShader from '../../shaders/seabed.vert?raw';
 import fragmentShader from '../../shaders/seabed.frag?raw';
 import { registerShaderChunks } from './shaderChunks';
-import type { SurfaceUniforms } from './surfaceUniforms';
+import { generateHeightmap, defaultNoiseSettings } from '../sim/perlinNoise';
+import { HEIGHTMAP_SIZE, RIPPLE_TILE_SIZE } from '../sim/surface';
+import { heightmapTexture } from './dataTextures';
+import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 import type { CausticsUniforms } from './causticsUniforms';
 
@@ -17,23 +20,42 @@ const SAND = new Color(0.55, 0.47, 0.33);
 export class SeaBed {
   readonly mesh: Mesh;
   private readonly material: ShaderMaterial;
+  private mottleSeed = Number.NaN;
+  private mottle: DataTexture | null = null;
 
-  constructor(shared: SurfaceUniforms & WaterVolumeUniforms & CausticsUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>) {
+  constructor(waves: WaveBinding, shared: WaterVolumeUniforms & CausticsUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>) {
     registerShaderChunks();
-    this.material = new ShaderMaterial({
-      vertexShader,
-      fragmentShader,
-      uniforms: {
-        ...shared,
-        uSandColor: { value: SAND.clone() },
-        uSunTransmission: { value: 1 },
-      },
-    });
+    this.material = waves.attach(
+      new ShaderMaterial({
+        vertexShader,
+        fragmentShader,
+        uniforms: {
+          ...shared,
+          uSandColor: { value: SAND.clone() },
+          uSunTransmission: { value: 1 },
+          uSandMottle: { value: null },
+          uSandMottleTile: { value: RIPPLE_TILE_SIZE },
+          uSandMottleSize: { value: HEIGHTMAP_SIZE },
+        },
+      }),
+    );
     const geometry = new PlaneGeometry(BED_SIZE, BED_SIZE);
     geometry.rotateX(-Math.PI / 2);
     this.mesh = new Mesh(geometry, this.material);
     this.mesh.frustumCulled = false;
     this.mesh.visible = false;
+  }
+
+  /**
+   * The sand's mottling is the noise seed's second ripple heightmap (the seed model's own
+   * uHeightmap1, whatever wave model runs), at a scale of its own.
+   */
+  setNoiseSeed(seed: number): void {
+    if (seed === this.mottleSeed) return;
+    this.mottleSeed = seed;
+    this.mottle?.dispose();
+    this.mottle = heightmapTexture(generateHeightmap(HEIGHTMAP_SIZE, { ...defaultNoiseSettings, seed: seed * 2 + 1 }));
+    this.material.uniforms.uSandMottle.value = this.mottle;
   }
 
   setDepth(depth: number): void {
@@ -53,5 +75,6 @@ export class SeaBed {
   dispose(): void {
     this.mesh.geometry.dispose();
     this.material.dispose();
+    this.mottle?.dispose();
   }
 }

@@ -1,21 +1,28 @@
 import { ShaderChunk } from 'three';
-import displacement from '../../shaders/displacement.glsl?raw';
+import tiledHeightmap from '../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../shaders/waterVolume.glsl?raw';
 import caustics from '../../shaders/caustics.glsl?raw';
+import { shaderConstantsChunk } from './shaderConstants';
 
 /**
  * Shared GLSL pieces are registered as three.js shader chunks, so every shader that needs
- * the displacement writes `#include <oceano_displacement>` and none keeps a copy.
+ * one writes `#include <oceano_…>` and none keeps a copy. The waves themselves are each
+ * model's own chunk, registered by its view (src/render/waveModels/).
  */
 const chunks: Record<string, string> = {
-  oceano_displacement: displacement,
+  // #defines made from the TypeScript constants the shaders share (index of refraction, …).
+  oceano_constants: shaderConstantsChunk(),
+  oceano_tiled_heightmap: tiledHeightmap,
   oceano_water_volume: waterVolume,
-  // Needs oceano_displacement included before it; see src/render/causticsUniforms.ts.
+  // Needs <oceano_waves> included before it; see src/render/causticsUniforms.ts.
   oceano_caustics: caustics,
 };
 
+/** ShaderChunk is typed with three's own chunk names only; ours are added beside them. */
+export function registerChunk(name: string, source: string): void {
+  (ShaderChunk as unknown as Record<string, string>)[name] = source;
+}
+
 export function registerShaderChunks(): void {
-  // ShaderChunk is typed with three's own chunk names only; ours are added beside them.
-  const registry = ShaderChunk as unknown as Record<string, string>;
-  for (const [name, source] of Object.entries(chunks)) registry[name] = source;
+  for (const [name, source] of Object.entries(chunks)) registerChunk(name, source);
 }

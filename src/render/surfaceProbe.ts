@@ -10,53 +10,65 @@ import {
   ShaderMaterial,
   Vector2,
   WebGLRenderTarget,
-  type Texture,
   type WebGLRenderer,
 } from 'three';
 import vertexShader from '../../shaders/probe.vert?raw';
 import fragmentShader from '../../shaders/probe.frag?raw';
-import type { SurfaceState } from '../sim/surface';
-import type { SurfaceSample } from '../sim/oceanSurface';
-import { registerShaderChunks } from './shaderChunks';
-import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './surfaceUniforms';
+import type { SurfaceSample } from '../sim/waveModel';
+import type { WaveBinding } from './waveModels/waveBinding';
 
 const TARGET_WIDTH = 256;
 
+/** What the GPU computed at one grid point: the chunk's waveDisplacement and waveNormal. */
+export interface ProbeSample extends SurfaceSample {
+  /** waveDisplacement(gridXZ): where the grid point goes, metres. `height` is its dy. */
+  displacement: [number, number, number];
+}
+
 /**
- * Runs the real displacement shader on the GPU for a list of points and reads the results
- * back from a float render target: the GPU side of the CPU-vs-GPU parity check.
+ * Runs the active wave model's real shader chunk on the GPU for a list of grid points and
+ * reads the results back from a float render target: the GPU side of the CPU-vs-GPU
+ * parity check. The caller sets the model's uniforms for the time wanted (update(time)).
  */
 export class SurfaceProbe {
   private readonly material: ShaderMaterial;
   private readonly camera = new OrthographicCamera();
 
-  constructor(private readonly renderer: WebGLRenderer) {
-    registerShaderChunks();
-    this.material = new ShaderMaterial({
-      vertexShader,
-      fragmentShader,
-      uniforms: { ...createSurfaceUniforms(), uTargetSize: { value: new Vector2() } },
-      depthTest: false,
-      depthWrite: false,
-    });
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    private readonly waves: WaveBinding,
+  ) {
+    this.material = waves.attach(
+      new ShaderMaterial({
+        vertexShader,
+        fragmentShader,
+        uniforms: { uTargetSize: { value: new Vector2() } },
+        depthTest: false,
+        depthWrite: false,
+      }),
+    );
   }
 
-  probe(points: readonly (readonly [number, number])[], state: SurfaceState, heightmaps: [Texture, Texture]): SurfaceSample[] {
+  probe(points: readonly (readonly [number, number])[]): ProbeSample[] {
     const count = points.length;
     if (count === 0) return [];
-    const rows = Math.ceil(count / TARGET_WIDTH);
-    const samples = new Float32Array(count * 2);
-    const indices = new Float32Array(count);
+    // Two texels per point: the displacement, then the normal.
+    const texels = count * 2;
+    const rows = Math.ceil(texels / TARGET_WIDTH);
+    const samples = new Float32Array(texels * 2);
+    const indices = new Float32Array(texels);
     points.forEach(([x, z], i) => {
-      samples[i * 2] = x;
-      samples[i * 2 + 1] = z;
-      indices[i] = i;
+      for (let k = 0; k < 2; k++) {
+        samples[(2 * i + k) * 2] = x;
+        samples[(2 * i + k) * 2 + 1] = z;
+        indices[2 * i + k] = 2 * i + k;
+      }
     });
     const geometry = new BufferGeometry();
     geometry.setAttribute('aSample', new BufferAttribute(samples, 2));
     geometry.setAttribute('aIndex', new BufferAttribute(indices, 1));
     // three needs a position attribute to know the draw count; the shader ignores it.
-    geometry.setAttribute('position', new BufferAttribute(new Float32Array(count * 3), 3));
+    geometry.setAttribute('position', new BufferAttribute(new Float32Array(texels * 3), 3));
     const target = new WebGLRenderTarget(TARGET_WIDTH, rows, {
       type: FloatType,
       format: RGBAFormat,
@@ -64,10 +76,7 @@ export class SurfaceProbe {
       magFilter: NearestFilter,
       depthBuffer: false,
     });
-    const uniforms = this.material.uniforms as SurfaceUniforms & { uTargetSize: { value: Vector2 } };
-    applySurfaceState(uniforms, state);
-    applyHeightmaps(uniforms, heightmaps);
-    uniforms.uTargetSize.value.set(TARGET_WIDTH, rows);
+    (this.material.uniforms.uTargetSize.value as Vector2).set(TARGET_WIDTH, rows);
 
     const scene = new Scene();
     const points3 = new Points(geometry, this.material);
@@ -85,13 +94,18 @@ export class SurfaceProbe {
       geometry.dispose();
       target.dispose();
     }
-    return Array.from({ length: count }, (_, i) => ({
-      height: pixels[i * 4],
-      normal: [pixels[i * 4 + 1], pixels[i * 4 + 2], pixels[i * 4 + 3]] as [number, number, number],
-    }));
+    return Array.from({ length: count }, (_, i) => {
+      const d = i * 8;
+      return {
+        displacement: [pixels[d], pixels[d + 1], pixels[d + 2]] as [number, number, number],
+        height: pixels[d + 1],
+        normal: [pixels[d + 4], pixels[d + 5], pixels[d + 6]] as [number, number, number],
+      };
+    });
   }
 
   dispose(): void {
+    this.waves.detach(this.material);
     this.material.dispose();
   }
 }

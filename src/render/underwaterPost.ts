@@ -19,13 +19,10 @@ import type { Pass } from 'three/addons/postprocessing/Pass.js';
 import fullscreenVertex from '../../shaders/fullscreen.vert?raw';
 import underwaterFragment from '../../shaders/underwater.frag?raw';
 import blurFragment from '../../shaders/gaussianBlur.frag?raw';
-import { gaussianKernel } from '../sim/gaussianKernel';
+import { BLUR_MAX_RADIUS, gaussianKernel } from '../sim/gaussianKernel';
 import { registerShaderChunks } from './shaderChunks';
-import type { SurfaceUniforms } from './surfaceUniforms';
+import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
-
-/** Must match MAX_RADIUS in shaders/gaussianBlur.frag. */
-const BLUR_MAX_RADIUS = 24;
 
 export interface PassTiming {
   name: string;
@@ -75,7 +72,8 @@ export class UnderwaterPost {
     private readonly renderer: WebGLRenderer,
     scene: Scene,
     private readonly camera: PerspectiveCamera,
-    shared: SurfaceUniforms & WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
+    waves: WaveBinding,
+    shared: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
   ) {
     registerShaderChunks();
     const size = renderer.getDrawingBufferSize(new Vector2());
@@ -83,7 +81,7 @@ export class UnderwaterPost {
     this.composer = new EffectComposer(renderer, target);
     this.scenePass = new RenderPass(scene, camera);
     this.volumePass = new WaterVolumePass(
-      new ShaderMaterial({
+      waves.attach(new ShaderMaterial({
         name: 'UnderwaterVolume',
         vertexShader: fullscreenVertex,
         fragmentShader: underwaterFragment,
@@ -100,7 +98,7 @@ export class UnderwaterPost {
           uGodRays: { value: 0 },
           uWriteMask: { value: false },
         },
-      }),
+      })),
     );
     this.blurH = blurPass('BlurHorizontal');
     this.blurV = blurPass('BlurVertical');

@@ -54,9 +54,10 @@ export class ChunkQuadtree {
    * The seed's frustum culling: from the root, a node wholly outside is skipped with its
    * subtree, a node wholly inside yields all its leaves untested, a straddling node recurses.
    * Chunk (i, j) spans x in [originX + i·size, originX + (i+1)·size], likewise z, and y in
-   * [minY, maxY]. Writes leaf indices into `out` and returns how many.
+   * [minY, maxY]; `margin` grows every box in x and z (vertices displaced sideways). Writes
+   * leaf indices into `out` and returns how many.
    */
-  select(planes: readonly Plane[], originX: number, originZ: number, size: number, minY: number, maxY: number, out: Uint32Array): number {
+  select(planes: readonly Plane[], originX: number, originZ: number, size: number, minY: number, maxY: number, out: Uint32Array, margin = 0): number {
     const nodes = this.nodes;
     const side = this.side;
     const stack = this.stack;
@@ -69,7 +70,7 @@ export class ChunkQuadtree {
       const j0 = nodes[o + 1];
       const i1 = nodes[o + 2];
       const j1 = nodes[o + 3];
-      const verdict = classifyBox(planes, originX + i0 * size, minY, originZ + j0 * size, originX + i1 * size, maxY, originZ + j1 * size);
+      const verdict = classifyBox(planes, originX + i0 * size - margin, minY, originZ + j0 * size - margin, originX + i1 * size + margin, maxY, originZ + j1 * size + margin);
       if (verdict === OUTSIDE) continue;
       const childCount = nodes[o + 5];
       if (verdict === INSIDE || childCount === 0) {

@@ -23,6 +23,8 @@ export interface SelectionInput {
   originZ: number;
   /** Largest |height| of the surface: chunk boxes span y in [-this, +this]. */
   maxDisplacement: number;
+  /** Largest sideways move of a vertex (choppy waves): chunk boxes grow by this in x and z. */
+  horizontalDisplacement?: number;
   lodDistance: number;
   lodBands: number;
   /** Every chunk at full resolution and none culled: the reference the LOD is measured against. */
@@ -71,7 +73,7 @@ export class ChunkSelector {
       this.lodCounts[0] = this.total;
       return this.count;
     }
-    this.count = this.quadtree.select(input.planes, originX, originZ, CHUNK_SIZE, -h, h, this.leaves);
+    this.count = this.quadtree.select(input.planes, originX, originZ, CHUNK_SIZE, -h, h, this.leaves, input.horizontalDisplacement ?? 0);
     this.prepareBands(input);
     this.lodCounts.fill(0);
     for (let n = 0; n < this.count; n++) {

@@ -1,3 +1,6 @@
+/** Widest blur the underwater passes run, taps on each side: also the GLSL array size (BLUR_MAX_RADIUS). */
+export const BLUR_MAX_RADIUS = 24;
+
 /**
  * One side of a normalised 1D Gaussian kernel: weights[0] is the centre tap, weights[i]
  * the tap i pixels away on each side. The radius is 3σ rounded up (99.7 % of the mass),

@@ -15,6 +15,15 @@ export const BASE_STEP = 2;
 /** Full-resolution quads along a chunk's side: divisible by every band's step. */
 export const CHUNK_QUADS = 24;
 export const CHUNK_SIZE = BASE_STEP * CHUNK_QUADS;
+/** The LOD debugger's tint for each band, near to far (linear RGB); the shader reads these as LOD_BAND_COLORS. */
+export const LOD_BAND_COLORS: readonly (readonly [number, number, number])[] = [
+  [0.95, 0.2, 0.15],
+  [0.95, 0.6, 0.1],
+  [0.9, 0.9, 0.15],
+  [0.2, 0.8, 0.25],
+  [0.15, 0.75, 0.9],
+  [0.5, 0.3, 0.95],
+];
 /** Vertex step of each band, in full-resolution quads. */
 export const BAND_STEPS = [1, 2, 3, 6, 12, 24] as const;
 export const MAX_LOD_BANDS = BAND_STEPS.length;

@@ -1,4 +1,12 @@
 /**
+ * Colour of the sunlight on the water, the sea bed and the god rays (linear RGB; the
+ * shaders' uSunColor). The painted sky's sun disc and the boat's directional light use
+ * skyPainter's SUN, a slightly whiter value: the two have always differed, and making them
+ * one would change every reference picture, so each has its single definition.
+ */
+export const SUN_LIGHT_COLOR: readonly [number, number, number] = [1.0, 0.93, 0.8];
+
+/**
  * Sun direction from elevation above the horizon and azimuth, both in degrees. Azimuth 0
  * points along −z (where the default camera looks) and grows towards +x.
  */

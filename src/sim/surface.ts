@@ -3,7 +3,7 @@ import type { OceanParams } from './params';
 
 /**
  * The displacement function M(x, z) of the seed report, on the CPU. Its GLSL twin is
- * shaders/displacement.glsl; both read the same SurfaceState, so every time-dependent
+ * shaders/waves/seed.glsl; both read the same SurfaceState, so every time-dependent
  * phase is computed here once, in double precision, and reduced to [0, 2π) or to one
  * tile before it reaches the GPU. That keeps float32 shaders exact at t = 10⁶ s.
  */

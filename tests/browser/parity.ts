@@ -23,7 +23,7 @@ export const PARITY_NORMAL_LIMIT = PARITY_LIMITS.defaults.normal;
 
 /**
  * A page whose shaders are compiled with OCEANO_NATIVE_SIN defined, so the swell uses the
- * driver's `sin` (shaders/displacement.glsl): the fault the parity limits must catch. The
+ * driver's `sin` (shaders/waves/seed.glsl): the fault the parity limits must catch. The
  * define is put after each shader's #version line as the page hands the source to WebGL.
  */
 export async function openWithNativeSin(harness: Harness, query: string): Promise<Page> {

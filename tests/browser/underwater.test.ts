@@ -4,7 +4,7 @@ import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { compareWithReference, diffPngs } from './imageCompare';
 import { DIVE_QUERY } from './referenceViews';
-import { highFrequencyEnergy } from '../../src/sim/imageEnergy';
+import { highFrequencyEnergy } from '../support/imageEnergy';
 
 
 const harness = useHarness();

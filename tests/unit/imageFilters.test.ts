@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { gaussianKernel } from '../../src/sim/gaussianKernel';
-import { highFrequencyEnergy } from '../../src/sim/imageEnergy';
+import { highFrequencyEnergy } from '../support/imageEnergy';
 import { seededRandom } from '../../src/sim/integerHash';
 
 function grey(values: number[][]): Uint8Array {

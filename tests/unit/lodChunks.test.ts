@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { Frustum, Matrix4, PerspectiveCamera } from 'three';
-import { viewProjection } from '../../src/sim/cameraMath';
+import { viewProjection } from '../support/cameraMath';
 import { ChunkQuadtree } from '../../src/sim/chunkQuadtree';
 import { chunkGrid } from '../../src/sim/chunkGrid';
 import { ChunkSelector, OCEAN_CHUNKS_PER_SIDE, OCEAN_EXTENT, oceanOrigin } from '../../src/sim/chunkSelection';

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Heightmap } from '../../src/sim/perlinNoise';
 import { defaultParams } from '../../src/sim/params';
-import { OceanSurface } from '../../src/sim/oceanSurface';
+import { SeedWaveModel } from '../../src/sim/seedWaveModel';
 import {
   deepWaterAngularFrequency,
   maxDisplacement,
@@ -60,7 +60,7 @@ describe('swell', () => {
   });
 
   it('never exceeds maxDisplacement', () => {
-    const surface = new OceanSurface(defaultParams());
+    const surface = new SeedWaveModel(defaultParams());
     const bound = maxDisplacement(defaultParams());
     const random = seededRandom(11);
     for (let k = 0; k < 2000; k++) {

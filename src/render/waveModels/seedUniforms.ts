@@ -1,7 +1,7 @@
 import { Vector4, type IUniform, type Texture } from 'three';
-import type { SurfaceState } from '../sim/surface';
+import type { SurfaceState } from '../../sim/surface';
 
-/** The uniforms of shaders/displacement.glsl: every material that includes it owns one set. */
+/** The uniforms of shaders/waves/seed.glsl, shared (the same objects) by every material that includes it. */
 export type SurfaceUniforms = Record<
   | 'uSwellAmplitude'
   | 'uSwellFrequency'

@@ -1,6 +1,16 @@
-// M(x, z), the ocean's displacement: the GLSL twin of src/sim/surface.ts. Every phase and
-// offset arrives already reduced (see surfaceStateAt), so float32 stays exact far from the
-// origin and late in time. Keep the two files in step: a parity test compares them.
+// The seed's waves as a wave-model chunk (`#include <oceano_waves>` resolves here when
+// waves=seed; see src/render/waveModels/). M(x, z), the ocean's displacement: the GLSL twin
+// of src/sim/surface.ts and src/sim/seedWaveModel.ts. Every phase and offset arrives already
+// reduced (see surfaceStateAt), so float32 stays exact far from the origin and late in time.
+// Keep the files in step: a parity test compares them.
+//
+// The contract every model's chunk meets:
+//   vec3 waveDisplacement(vec2 gridXZ)  where the undisplaced grid point goes, (dx, dy, dz)
+//   vec3 waveNormal(vec2 gridXZ)        unit normal of the displaced surface there
+//   float waveLensHeight(vec2 worldXZ)  the short waves' height, whose bumps focus sunlight
+//                                       into the underwater shafts (god rays)
+
+#include <oceano_tiled_heightmap>
 
 uniform float uSwellAmplitude;
 uniform float uSwellFrequency;
@@ -59,24 +69,8 @@ float swellHeight(vec2 p) {
   return uSwellAmplitude * (first + SECOND_SWELL_AMPLITUDE * second);
 }
 
-// p reduced to one tile without rounding: tile * floor(p / tile) is a multiple of the tile
-// that float32 holds exactly, and p minus it is exact too (the difference is smaller than p
-// and on p's own lattice). fract(p / tile) instead rounds p / tile to float32 first, which
-// far from the origin moves the sample by about |p| · 6e-8 m and shows in the heights.
-vec2 wrapToTile(vec2 p) {
-  return p - uTileSize * floor(p / uTileSize);
-}
-
-// Bilinear with wrap by hand: texel (i, j) sits at world offset (i, j) * tile / size.
-// Each texel holds its own height and those of its +x, +z and diagonal neighbours
-// (wrapped), so one fetch gives the four corners and no modulo is needed. The offset is
-// added after the point is brought into its tile, where the sum rounds at small magnitude.
 float sampleHeightmap(sampler2D map, vec2 p, vec2 offset) {
-  vec2 st = fract((wrapToTile(p) + offset) / uTileSize) * uHeightmapSize;
-  vec2 cell = floor(st);
-  vec2 f = st - cell;
-  vec4 corners = texelFetch(map, ivec2(cell), 0);
-  return mix(mix(corners.x, corners.y, f.x), mix(corners.z, corners.w, f.x), f.y);
+  return sampleTiledHeightmap(map, p, offset, uTileSize, uHeightmapSize);
 }
 
 float rippleHeight(vec2 p) {
@@ -96,4 +90,18 @@ vec3 oceanNormal(vec2 p, float h1) {
   float h2 = oceanHeight(p + vec2(d, 0.0));
   float h3 = oceanHeight(p + vec2(0.0, d));
   return normalize(vec3(-(h2 - h1) * d, d * d, -(h3 - h1) * d));
+}
+
+// The seam. The seed only lifts points (dx = dz = 0), so a grid point is its own world point.
+vec3 waveDisplacement(vec2 gridXZ) {
+  return vec3(0.0, oceanHeight(gridXZ), 0.0);
+}
+
+vec3 waveNormal(vec2 gridXZ) {
+  return oceanNormal(gridXZ, oceanHeight(gridXZ));
+}
+
+// The ripples alone: the swell is too long to focus light within the shafts' few metres.
+float waveLensHeight(vec2 worldXZ) {
+  return rippleHeight(worldXZ);
 }

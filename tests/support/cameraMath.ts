@@ -1,7 +1,7 @@
 /**
  * A perspective camera's view-projection matrix (column-major, OpenGL clip space, the
- * same as three's PerspectiveCamera with up = +y), so node tests and the traversal bench
- * can make frustums for any pose without three.js.
+ * same as three's PerspectiveCamera with up = +y), written out so the unit tests check the
+ * frustum code against an independent derivation rather than against three itself.
  */
 export function viewProjection(
   position: readonly [number, number, number],

@@ -1,0 +1,79 @@
+import { BoatMotion, type BoatMotionState } from '../sim/boatMotion';
+import type { HullSize } from '../sim/boatPose';
+import type { OceanParams } from '../sim/params';
+import type { LiveWaveModel } from '../sim/waveModels';
+import type { BoatView } from '../render/boatView';
+import type { BoatModel } from '../render/boatModel';
+
+/** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
+const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
+const DEG = Math.PI / 180;
+
+export interface BoatInfo {
+  /** Centre of the hull at the waterline, metres. */
+  position: [number, number, number];
+  /** Radians; the conventions of src/sim/boatPose.ts: heading clockwise from −z, pitch > 0 bow up, roll > 0 starboard up. */
+  heading: number;
+  pitch: number;
+  roll: number;
+  /** The undamped pose on the surface at this instant (equal to the above when the clock stands still). */
+  target: { position: [number, number, number]; pitch: number; roll: number };
+  model: 'loading' | 'loaded' | 'failed';
+}
+
+/**
+ * The boat's motion on the active waves and, when the camera follows it, the camera's:
+ * `carryCamera(dx, dz)` moves the eye and the orbit target together by the boat's step.
+ */
+export class BoatController {
+  private readonly motion = new BoatMotion();
+  private state?: BoatMotionState;
+  private hull: HullSize = NOMINAL_HULL;
+  private modelState: BoatInfo['model'] = 'loading';
+
+  constructor(
+    private readonly view: BoatView,
+    private readonly carryCamera: (dx: number, dz: number) => void,
+  ) {}
+
+  setModel(model: BoatModel | null): void {
+    this.modelState = model ? 'loaded' : 'failed';
+    if (!model) return;
+    this.hull = model.hull;
+    this.view.setModel(model.object);
+  }
+
+  /** Floats the boat at `time`; with the camera following, carries the camera along. */
+  update(time: number, params: OceanParams, waves: LiveWaveModel): void {
+    const previous = this.state?.pose;
+    this.state = this.motion.update(
+      time,
+      { heading: params.boatHeading * DEG, speed: params.boatSpeed, response: params.boatResponse },
+      this.hull,
+      (x, z) => waves.height(x, z, time),
+    );
+    const pose = this.state.pose;
+    this.view.setPose(pose);
+    if (params.boatFollow && previous) this.carryCamera(pose.x - previous.x, pose.z - previous.z);
+  }
+
+  /** Following starts by looking at the boat from where the camera stands relative to its target. */
+  startFollowing(target: { x: number; z: number }): void {
+    if (!this.state) return;
+    const { x, z } = this.state.pose;
+    this.carryCamera(x - target.x, z - target.z);
+  }
+
+  info(): BoatInfo {
+    if (!this.state) throw new Error('The boat has not been floated yet: wait for oceano.ready.');
+    const { pose, target } = this.state;
+    return {
+      position: [pose.x, pose.y, pose.z],
+      heading: pose.heading,
+      pitch: pose.pitch,
+      roll: pose.roll,
+      target: { position: [target.x, target.y, target.z], pitch: target.pitch, roll: target.roll },
+      model: this.modelState,
+    };
+  }
+}

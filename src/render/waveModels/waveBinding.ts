@@ -1,0 +1,73 @@
+import type { IUniform, Material, ShaderMaterial } from 'three';
+import { WAVES_INCLUDE, type WaveModelView } from './waveModelView';
+
+interface BoundShader {
+  material: ShaderMaterial;
+  vertexShader: string;
+  fragmentShader: string;
+}
+
+/**
+ * Keeps every material that reads the waves bound to the active model: `#include
+ * <oceano_waves>` is rewritten to the model's own chunk and the model's uniforms are put in
+ * the material's uniforms. The include is rewritten per material rather than by changing a
+ * global ShaderChunk entry because three caches programs by the unresolved source: two
+ * views on one page with different models, or a switch of model, need distinct sources.
+ */
+export class WaveBinding {
+  private readonly shaders: BoundShader[] = [];
+  private readonly patched = new Set<Material>();
+
+  constructor(private active: WaveModelView) {}
+
+  get model(): WaveModelView {
+    return this.active;
+  }
+
+  /** The model's uniforms, to merge into a shader three builds itself (onBeforeCompile). */
+  get uniforms(): Readonly<Record<string, IUniform>> {
+    return this.active.uniforms;
+  }
+
+  /** GLSL source with the generic include pointed at the active model's chunk. */
+  resolve(source: string): string {
+    return source.split(WAVES_INCLUDE).join(`#include <${this.active.chunkName}>`);
+  }
+
+  /** Binds a ShaderMaterial whose sources contain `#include <oceano_waves>`; returns it. */
+  attach<M extends ShaderMaterial>(material: M): M {
+    const bound = { material, vertexShader: material.vertexShader, fragmentShader: material.fragmentShader };
+    this.shaders.push(bound);
+    this.bind(bound, null);
+    return material;
+  }
+
+  /** A material patched in onBeforeCompile (reading `resolve` and `uniforms` then): recompiled on a switch. */
+  attachPatched(material: Material): void {
+    this.patched.add(material);
+  }
+
+  detach(material: Material): void {
+    const k = this.shaders.findIndex((s) => s.material === material);
+    if (k >= 0) this.shaders.splice(k, 1);
+    this.patched.delete(material);
+  }
+
+  /** Switches every bound material to another model (the caller disposes the old one). */
+  setModel(model: WaveModelView): void {
+    if (model === this.active) return;
+    const previous = this.active;
+    this.active = model;
+    for (const bound of this.shaders) this.bind(bound, previous);
+    for (const material of this.patched) material.needsUpdate = true;
+  }
+
+  private bind(bound: BoundShader, previous: WaveModelView | null): void {
+    const { material } = bound;
+    if (previous) for (const key of Object.keys(previous.uniforms)) delete material.uniforms[key];
+    Object.assign(material.uniforms, this.active.uniforms);
+    material.vertexShader = this.resolve(bound.vertexShader);
+    material.fragmentShader = this.resolve(bound.fragmentShader);
+    material.needsUpdate = true;
+  }
+}

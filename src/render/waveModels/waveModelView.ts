@@ -1,0 +1,36 @@
+import type { IUniform, Texture } from 'three';
+import type { OceanParams } from '../../sim/params';
+import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
+
+/**
+ * The render side of one wave model: the GPU half of the seam whose CPU half is
+ * src/sim/waveModel.ts. It owns its GLSL chunk (registered with three's ShaderChunk under
+ * `chunkName`), the uniforms and textures that chunk reads, and whatever GPU work a frame
+ * needs before drawing (update). Every shader that needs the waves writes
+ * `#include <oceano_waves>`; WaveBinding points that include at the active model's chunk.
+ *
+ * The chunk defines, in terms of the undisplaced grid point:
+ *   vec3 waveDisplacement(vec2 gridXZ);  // (dx, dy, dz): the vertex goes to grid + d
+ *   vec3 waveNormal(vec2 gridXZ);        // unit normal of the displaced surface there
+ *   float waveLensHeight(vec2 worldXZ);  // short waves' height: focuses the god-ray shafts
+ * and nothing else that other shaders may rely on (helpers stay private by convention).
+ */
+export interface WaveModelView {
+  readonly name: WavesChoice;
+  /** The CPU twin this view draws; the boat, the underwater switch and the API sample it. */
+  readonly model: LiveWaveModel;
+  /** The ShaderChunk name of this model's GLSL, e.g. 'oceano_waves_seed'. */
+  readonly chunkName: string;
+  /** What the chunk reads. The same objects go into every material bound to this model. */
+  readonly uniforms: Readonly<Record<string, IUniform>>;
+  /** Textures the "heightmap" teaching view shows, where the model has any. */
+  readonly heightmapTextures?: readonly [Texture, Texture];
+  /** Passes new parameters to the model and re-uploads whatever they changed. */
+  setParams(params: OceanParams): void;
+  /** Prepares the uniforms (and any GPU passes) for a frame at `time`, seconds. */
+  update(time: number): void;
+  dispose(): void;
+}
+
+/** The include every wave-reading shader writes; see WaveBinding. */
+export const WAVES_INCLUDE = '#include <oceano_waves>';

@@ -1,0 +1,74 @@
+import { afterEach, describe, expect, it, vi } from 'vitest';
+import { FrameStats } from '../../src/app/frameStats';
+import { FrameLoop } from '../../src/app/frameLoop';
+import { paramsChanged } from '../../src/sim/paramChanges';
+import { defaultParams } from '../../src/sim/params';
+import type { RenderStats } from '../../src/render/oceanView';
+
+const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
+
+describe('FrameStats', () => {
+  it('never stalls the shipped loop on the GPU until stats are asked for, then one frame in eight', () => {
+    const stats = new FrameStats();
+    const syncs = (frames: number) => {
+      let n = 0;
+      for (let i = 0; i < frames; i++) {
+        if (stats.loopShouldSync()) n++;
+        stats.framesDrawn++;
+      }
+      return n;
+    };
+    expect(syncs(64)).toBe(0);
+    stats.summary(RENDER);
+    expect(syncs(64)).toBe(8);
+  });
+
+  it('reports medians of the recorded samples (0 before any)', () => {
+    const stats = new FrameStats();
+    expect(stats.summary(RENDER)).toMatchObject({ frameMs: 0, cpuMs: 0, boatMs: 0, ttffMs: null, triangles: 10 });
+    for (const ms of [5, 1, 3]) stats.recordUpdate(ms / 10, ms);
+    stats.recordSyncedFrame(7);
+    expect(stats.summary(RENDER)).toMatchObject({ frameMs: 7, cpuMs: 3, boatMs: 0.3 });
+  });
+});
+
+describe('paramsChanged', () => {
+  it('sees a change only in the keys asked about; everything is new the first time', () => {
+    const a = defaultParams();
+    const b = { ...a, boatHeading: a.boatHeading + 1 };
+    expect(paramsChanged(null, a, ['blurStrength'])).toBe(true);
+    expect(paramsChanged(a, b, ['blurStrength', 'godRays'])).toBe(false);
+    expect(paramsChanged(a, b, ['blurStrength', 'boatHeading'])).toBe(true);
+  });
+});
+
+describe('FrameLoop', () => {
+  afterEach(() => vi.unstubAllGlobals());
+
+  it('runs only when started, playing and not stopped for any reason', () => {
+    const frames: FrameRequestCallback[] = [];
+    vi.stubGlobal('requestAnimationFrame', (cb: FrameRequestCallback) => frames.push(cb));
+    vi.stubGlobal('cancelAnimationFrame', () => {});
+    let playing = true;
+    const loop = new FrameLoop({ tick: () => {}, redraw: () => {}, playing: () => playing });
+    expect(loop.isLooping).toBe(false);
+    loop.start();
+    expect(loop.isLooping).toBe(true);
+    loop.setStopped('hidden', true);
+    loop.setStopped('contextLost', true);
+    loop.setStopped('hidden', false);
+    expect(loop.isLooping).toBe(false);
+    loop.setStopped('contextLost', false);
+    expect(loop.isLooping).toBe(true);
+    playing = false;
+    loop.refresh();
+    expect(loop.isLooping).toBe(false);
+    // A paused view draws once on request, and only one frame however often it is asked.
+    const before = frames.length;
+    loop.requestRender();
+    loop.requestRender();
+    expect(frames.length).toBe(before + 1);
+    loop.dispose();
+    expect(loop.isLooping).toBe(false);
+  });
+});

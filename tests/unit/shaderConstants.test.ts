@@ -1,0 +1,54 @@
+import { describe, expect, it } from 'vitest';
+import { readdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { glslFloat, shaderConstantsChunk } from '../../src/render/shaderConstants';
+import { WATER_IOR } from '../../src/sim/fresnel';
+import { BLUR_MAX_RADIUS } from '../../src/sim/gaussianKernel';
+import { LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../src/sim/lodBands';
+
+const SHADER_DIR = join(__dirname, '../../shaders');
+
+function shaderFiles(dir: string): string[] {
+  return readdirSync(dir, { withFileTypes: true }).flatMap((entry) =>
+    entry.isDirectory() ? shaderFiles(join(dir, entry.name)) : [join(dir, entry.name)],
+  );
+}
+
+/** Literal copies of the shared constants that a shader must not carry (they come from oceano_constants). */
+function copiesIn(source: string): string[] {
+  const found: string[] = [];
+  if (/\b1\.333\b/.test(source)) found.push('index of refraction 1.333');
+  if (new RegExp(`\\b${BLUR_MAX_RADIUS}\\b`).test(source)) found.push(`blur radius ${BLUR_MAX_RADIUS}`);
+  for (const rgb of LOD_BAND_COLORS) {
+    if (source.includes(`vec3(${rgb.map(glslFloat).join(', ')})`)) found.push(`band colour ${rgb.join(', ')}`);
+  }
+  return found;
+}
+
+describe('constants shared by TypeScript and GLSL', () => {
+  it('are written into the oceano_constants chunk from the TypeScript values', () => {
+    const chunk = shaderConstantsChunk();
+    expect(chunk).toContain(`#define WATER_IOR ${WATER_IOR}`);
+    expect(chunk).toContain(`#define BLUR_MAX_RADIUS ${BLUR_MAX_RADIUS}`);
+    expect(chunk).toContain('#define LOD_BAND_COLORS vec3[6](vec3(0.95, 0.2, 0.15), vec3(0.95, 0.6, 0.1),');
+    expect(LOD_BAND_COLORS).toHaveLength(MAX_LOD_BANDS);
+  });
+
+  it('are written as GLSL float literals', () => {
+    expect(glslFloat(1)).toBe('1.0');
+    expect(glslFloat(1.333)).toBe('1.333');
+    expect(glslFloat(1e-7)).toBe('1e-7');
+    expect(() => glslFloat(Number.NaN)).toThrow();
+  });
+
+  it('appear in no shader file as literal copies', () => {
+    const offenders = shaderFiles(SHADER_DIR).flatMap((file) => copiesIn(readFileSync(file, 'utf8')).map((what) => `${file}: ${what}`));
+    expect(offenders).toEqual([]);
+  });
+
+  it('would be caught if copied into a shader again (negative control)', () => {
+    expect(copiesIn('const float WATER_OVER_AIR = 1.333;')).toEqual(['index of refraction 1.333']);
+    expect(copiesIn('#define MAX_RADIUS 24')).toEqual(['blur radius 24']);
+    expect(copiesIn('vec3(0.5, 0.3, 0.95)')).toEqual(['band colour 0.5, 0.3, 0.95']);
+  });
+});
