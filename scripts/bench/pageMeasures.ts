@@ -97,3 +97,24 @@ export function passTimeSamples(frames: number): Record<string, number[]> {
   }
   return samples;
 }
+
+export interface ExampleFrames {
+  frameTimes: number[];
+  drawCalls: number;
+  triangles: number;
+  canvas: [number, number];
+}
+
+/** Times `frames` frames of three.js's ocean example page after `warmup` untimed ones, each ended by a one-pixel readPixels. */
+export function timeThreejsExampleFrames(frames: number, warmup: number): ExampleFrames {
+  const example = window.threejsOcean;
+  for (let i = 0; i < warmup; i++) example.renderFrame();
+  const frameTimes: number[] = [];
+  for (let i = 0; i < frames; i++) {
+    const start = performance.now();
+    example.renderFrame();
+    frameTimes.push(performance.now() - start);
+  }
+  const stats = example.stats();
+  return { frameTimes, drawCalls: stats.drawCalls, triangles: stats.triangles, canvas: example.canvas() };
+}

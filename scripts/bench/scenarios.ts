@@ -11,6 +11,8 @@ import type { Page } from 'puppeteer';
 export interface BenchScenario {
   name: string;
   query: string;
+  /** Which page draws it: Oceano (the default) or the copy of three.js's ocean example. */
+  page?: 'oceano' | 'threejs-ocean';
   setup?: (page: Page) => Promise<void>;
   /** Timed frames when the default count would take too long (the brute-force grid). */
   frames?: number;
@@ -20,7 +22,23 @@ export interface BenchScenario {
 
 export const SCENARIOS: readonly BenchScenario[] = [
   { name: 'default view', query: 't=10' },
+  // The comparison teachers make: three.js's own ocean example, drawn in the same browser.
+  { name: 'three.js ocean example (Water + Sky + bloom)', query: '', page: 'threejs-ocean' },
+  { name: 'three.js ocean example (Water + Sky, no bloom)', query: 'bloom=0', page: 'threejs-ocean' },
+  // The same eye as the default view, turned up (mostly sky) and down (sea fills the frame).
+  { name: 'looking up', query: 't=10&cam=0,9,40,0,60,-20' },
+  { name: 'looking down', query: 't=10&cam=0,9,40,0,0,30' },
   // The LOD's reference: every chunk of the same 4 km extent at full resolution, no culling.
   { name: 'brute-force grid, same extent', query: 't=10&lodBruteForce=1', frames: 3 },
   { name: 'underwater (Snell window, god rays, blur)', query: 't=10&preset=underwater', passes: true },
+];
+
+/** The ratios the targets are stated in: [label, numerator scenario, denominator scenario or 'floor', target]. */
+export const COMPARISONS: readonly [string, string, string, number | null][] = [
+  ['default / three.js example (Water + Sky, no bloom)', 'default view', 'three.js ocean example (Water + Sky, no bloom)', 0.6],
+  ['default / three.js example (Water + Sky + bloom)', 'default view', 'three.js ocean example (Water + Sky + bloom)', 0.6],
+  ['default / floor', 'default view', 'floor', 20],
+  ['underwater / default', 'underwater (Snell window, god rays, blur)', 'default view', 2],
+  ['looking up / default', 'looking up', 'default view', null],
+  ['looking down / default', 'looking down', 'default view', null],
 ];

@@ -47,9 +47,13 @@ export interface OpenedPage {
   consoleErrors: string[];
 }
 
-/** Opens the app with a query string at a size, waits for `oceano.ready`. */
-export async function openOcean(harness: Harness, query: string, width = 640, height = 360, path = ''): Promise<OpenedPage> {
+/**
+ * Opens the app with a query string at a size, waits for `oceano.ready`. timeoutMs bounds
+ * each wait (puppeteer's default, 30 s, unless given: the benchmark on a busy machine needs more).
+ */
+export async function openOcean(harness: Harness, query: string, width = 640, height = 360, path = '', timeoutMs?: number): Promise<OpenedPage> {
   const page = await harness.browser.newPage();
+  if (timeoutMs !== undefined) page.setDefaultTimeout(timeoutMs);
   const consoleErrors: string[] = [];
   page.on('console', (message) => {
     if (message.type() === 'error') consoleErrors.push(message.text());
