@@ -1,0 +1,67 @@
+import { describe, expect, it } from 'vitest';
+import { openOcean } from './harness';
+import { useHarness } from './useHarness';
+import { recordedPage, viewsReady } from './pages';
+
+/** What issue 11's new user tripped over, each checked the way they met it. */
+const harness = useHarness();
+
+type ViewElement = HTMLElement & { oceano: (typeof window)['oceano'] | null };
+
+describe('notices', () => {
+  it('in a 400-px figure, every one of seven notices wraps inside its box and can be scrolled to', async () => {
+    const { page } = await recordedPage(harness, 600, 400);
+    await page.goto(`${harness.baseUrl}fixtures/notices-400.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    const facts = await page.evaluate(() => {
+      const view = document.querySelector('#bad') as ViewElement;
+      const list = view.querySelector('.oceano-notices') as HTMLElement;
+      const box = view.getBoundingClientRect();
+      const items = Array.from(list.querySelectorAll<HTMLElement>('.oceano-notice'));
+      const overflowing = items.filter((item) => item.scrollWidth > item.clientWidth + 1 || item.getBoundingClientRect().right > box.right + 0.5);
+      // Scroll each notice into the list's view: it must then lie inside the figure.
+      const reachable = items.filter((item) => {
+        item.scrollIntoView({ block: 'nearest' });
+        const r = item.getBoundingClientRect();
+        return r.top >= box.top - 0.5 && r.bottom <= box.bottom + 0.5;
+      });
+      return { count: view.oceano!.notices().length, items: items.length, overflowing: overflowing.length, reachable: reachable.length, listBottom: list.getBoundingClientRect().bottom, boxBottom: box.bottom, width: box.width };
+    });
+    expect(facts.width).toBe(400);
+    expect(facts.count).toBe(7);
+    expect(facts.items).toBe(7);
+    expect(facts.overflowing).toBe(0);
+    expect(facts.reachable).toBe(7);
+    expect(facts.listBottom).toBeLessThanOrEqual(facts.boxBottom);
+    await page.close();
+  });
+
+  it('shows a refused share link wrapped beside the panel, selectable in one click', async () => {
+    const { page } = await openOcean(harness, 't=4&seed=5', 800, 450);
+    await page.evaluate(() => {
+      Object.defineProperty(navigator, 'clipboard', { value: { writeText: () => Promise.reject(new DOMException('refused', 'NotAllowedError')) } });
+    });
+    const url = await page.evaluate(() => window.oceano.shareUrl());
+    await page.evaluate(() => (Array.from(document.querySelectorAll<HTMLElement>('.lil-gui button')).find((b) => b.textContent?.includes('Share link')) as HTMLElement).click());
+    await page.waitForFunction(() => window.oceano.notices().length > 0);
+    const facts = await page.evaluate(() => {
+      const notice = document.querySelector('.oceano-notice') as HTMLElement;
+      const link = notice.querySelector('.oceano-notice-link') as HTMLElement;
+      const panel = document.querySelector('.lil-gui') as HTMLElement;
+      return {
+        noticeRight: notice.getBoundingClientRect().right,
+        panelLeft: panel.getBoundingClientRect().left,
+        fits: notice.scrollWidth <= notice.clientWidth + 1,
+        link: link.textContent,
+        userSelect: getComputedStyle(link).userSelect,
+        lines: Math.round(link.getBoundingClientRect().height / parseFloat(getComputedStyle(link).lineHeight)),
+      };
+    });
+    expect(facts.link).toBe(url);
+    expect(facts.fits).toBe(true);
+    expect(facts.noticeRight).toBeLessThanOrEqual(facts.panelLeft);
+    expect(facts.userSelect).toBe('all');
+    expect(facts.lines).toBeGreaterThan(1);
+    await page.close();
+  });
+});
