@@ -1,3 +1,5 @@
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
@@ -62,6 +64,47 @@ describe('notices', () => {
     expect(facts.noticeRight).toBeLessThanOrEqual(facts.panelLeft);
     expect(facts.userSelect).toBe('all');
     expect(facts.lines).toBeGreaterThan(1);
+    await page.close();
+  });
+});
+
+describe('booting', () => {
+  it('opened from disk, says in words to serve it over http(s), and oceano.ready rejects with that reason', async () => {
+    const page = await harness.browser.newPage();
+    await page.setViewport({ width: 640, height: 360, deviceScaleFactor: 1 });
+    await page.goto(pathToFileURL(join(import.meta.dirname, '..', '..', 'dist', 'index.html')).href, { waitUntil: 'load' });
+    const facts = await page.evaluate(async () => {
+      const api = (window as { oceano?: unknown }).oceano as { ready?: Promise<void> } | undefined;
+      let rejection = 'did not reject';
+      try {
+        await api?.ready;
+      } catch (error) {
+        rejection = (error as Error).message;
+      }
+      const fatal = document.querySelector('.oceano-fatal') as HTMLElement | null;
+      return { isElement: api instanceof Element, rejection, text: fatal?.innerText ?? '', visible: fatal !== null && fatal.getBoundingClientRect().height > 0 };
+    });
+    expect(facts.isElement).toBe(false);
+    expect(facts.text).toMatch(/served over http\(s\)/);
+    expect(facts.text).toContain('python3 -m http.server 8000');
+    expect(facts.visible).toBe(true);
+    expect(facts.rejection).toBe(facts.text);
+    await page.close();
+  });
+
+  it('without WebGL2, oceano.ready rejects with the reason shown on the page', async () => {
+    const page = await harness.browser.newPage();
+    await page.evaluateOnNewDocument(() => {
+      const original = HTMLCanvasElement.prototype.getContext;
+      HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, kind: string, ...rest: unknown[]) {
+        return kind === 'webgl2' ? null : (original as (k: string, ...r: unknown[]) => RenderingContext | null).call(this, kind, ...rest);
+      } as typeof original;
+    });
+    await page.goto(harness.baseUrl, { waitUntil: 'load' });
+    await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined, { timeout: 10_000 });
+    const rejection = await page.evaluate(() => window.oceano.ready.then(() => 'resolved', (error: Error) => error.message));
+    expect(rejection).toMatch(/WebGL2/);
+    expect(await page.$eval('.oceano-fatal', (el) => (el as HTMLElement).innerText)).toBe(rejection);
     await page.close();
   });
 });
