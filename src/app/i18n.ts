@@ -8,11 +8,17 @@ export function isLanguage(text: string): text is Language {
   return (LANGUAGES as readonly string[]).includes(text);
 }
 
+/** The language we speak for a BCP 47 tag (es-ES, es_MX, EN), by its primary subtag; null if none. */
+export function languageFromTag(tag: string): Language | null {
+  const primary = tag.trim().toLowerCase().split(/[-_]/)[0];
+  return isLanguage(primary) ? primary : null;
+}
+
 /** The first of the browser's preferred languages that we speak, else English. */
 export function preferredLanguage(browserLanguages: readonly string[]): Language {
   for (const tag of browserLanguages) {
-    const primary = tag.toLowerCase().split('-')[0];
-    if (isLanguage(primary)) return primary;
+    const language = languageFromTag(tag);
+    if (language) return language;
   }
   return 'en';
 }

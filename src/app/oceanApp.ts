@@ -5,6 +5,7 @@ import { message, type Message } from '../sim/message';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
 import { median } from '../sim/sampleStatistics';
+import { isValidTime, MAX_TIME } from '../sim/simulationTime';
 import { surfaceHeight } from '../sim/surface';
 import { BoatMotion, type BoatMotionState } from '../sim/boatMotion';
 import type { HullSize } from '../sim/boatPose';
@@ -429,7 +430,7 @@ export class OceanApp {
   }
 
   setTime(seconds: number): void {
-    if (typeof seconds !== 'number' || !Number.isFinite(seconds)) throw new TypeError(`setTime needs a finite number of seconds, got ${String(seconds)}.`);
+    if (!isValidTime(seconds)) throw new TypeError(`setTime needs a time in seconds between 0 and ${MAX_TIME} (as the URL's t), got ${String(seconds)}.`);
     this.clock.setTime(seconds);
     this.requestRender();
   }

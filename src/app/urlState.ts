@@ -1,7 +1,8 @@
 import { defaultParams, isParamKey, paramDefs, paramKeys, parseParamText, type OceanParams } from '../sim/params';
 import { message, type Message } from '../sim/message';
 import { formatCameraText, parseCameraText, type CameraPose } from './cameraPose';
-import { isLanguage, type Language } from './i18n';
+import { languageFromTag, type Language } from './i18n';
+import { isValidTime } from '../sim/simulationTime';
 import { findPreset, presetNames } from './presets';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
@@ -62,7 +63,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   for (const [key, text] of pairs) {
     if (key === 't') {
       const value = text.trim() === '' ? NaN : Number(text);
-      if (Number.isFinite(value) && value >= 0 && value <= 1e9) state.time = value;
+      if (isValidTime(value)) state.time = value;
       else notices.push(message('timeInvalid', { text }));
     } else if (key === 'sky') {
       if (isSafeAssetPath(text)) state.sky = text;
@@ -75,7 +76,8 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       if (camera) state.camera = camera;
       else notices.push(message('cameraInvalid', { text }));
     } else if (key === 'lang') {
-      if (isLanguage(text)) state.language = text;
+      const language = languageFromTag(text);
+      if (language) state.language = language;
       else notices.push(message('languageInvalid', { text }));
     } else if (key === 'embed') {
       if (text === '1' || text === '' || text === 'true') state.embed = true;
