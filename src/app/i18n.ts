@@ -24,6 +24,8 @@ export function preferredLanguage(browserLanguages: readonly string[]): Language
 }
 
 type Render = (v: MessageValues) => string;
+/** Inner text ended with exactly one full stop, so "…404)." never becomes "…404).)" or "..". */
+const sentence = (text: string | number | boolean | undefined) => `${String(text ?? '').trim().replace(/[.\s]+$/, '')}.`;
 const unit = (v: MessageValues) => (v.unit ? ` ${v.unit}` : '');
 
 const MESSAGES: Record<Language, Record<MessageId, Render>> = {
@@ -46,9 +48,14 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     shareCopied: () => 'Link to this view copied to the clipboard.',
     shareFallback: (v) => `Copy this link to share the view: ${v.url}`,
     webgl2Missing: () => 'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.',
-    startFailed: (v) => `Oceano could not start: ${v.error}`,
+    startFailed: (v) => `Oceano could not start: ${sentence(v.error)}`,
     boatPathInvalid: (v) => `"boat=${v.text}" is not a path on this site; using the built-in boat.`,
-    boatLoadFailed: (v) => `${v.reason} The ocean runs without the boat.`,
+    boatLoadFailed: (v) => `The boat could not be loaded: ${sentence(v.reason)} The ocean runs without the boat.`,
+    boatUnreachable: (v) => `The boat model "${v.url}" could not be fetched. The ocean runs without the boat.`,
+    boatNotFound: (v) => `The boat model "${v.url}" was not found (HTTP ${v.status}). The ocean runs without the boat.`,
+    boatWebPage: (v) => `The boat model "${v.url}" is missing: the server sent a web page in its place. The ocean runs without the boat.`,
+    boatNotGltf: (v) => `The boat model "${v.url}" is not a valid glTF model: neither a binary .glb nor a JSON .gltf file that three.js can read. The ocean runs without the boat.`,
+    boatNoGeometry: (v) => `The boat model "${v.url}" has no geometry to float. The ocean runs without the boat.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -69,11 +76,20 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     shareCopied: () => 'Enlace a esta vista copiado al portapapeles.',
     shareFallback: (v) => `Copia este enlace para compartir la vista: ${v.url}`,
     webgl2Missing: () => 'Oceano necesita WebGL2, que este navegador o dispositivo no ofrece. Prueba un Chrome, Firefox o Safari reciente, o activa la aceleración por hardware.',
-    startFailed: (v) => `Oceano no pudo arrancar: ${v.error}`,
+    // The error's own text is English (a browser or library message): the console has it.
+    startFailed: () => 'Oceano no pudo arrancar; el detalle técnico está en la consola del navegador.',
     boatPathInvalid: (v) => `"boat=${v.text}" no es una ruta de este sitio; se usa el barco incluido.`,
-    boatLoadFailed: (v) => `No se pudo cargar el barco (${v.reason}). El océano sigue sin él.`,
+    boatLoadFailed: () => 'No se pudo cargar el barco; el detalle técnico está en la consola del navegador. El océano sigue sin él.',
+    boatUnreachable: (v) => `No se pudo descargar el modelo del barco "${v.url}". El océano sigue sin él.`,
+    boatNotFound: (v) => `No se encontró el modelo del barco "${v.url}" (HTTP ${v.status}). El océano sigue sin él.`,
+    boatWebPage: (v) => `Falta el modelo del barco "${v.url}": el servidor envió una página web en su lugar. El océano sigue sin él.`,
+    boatNotGltf: (v) => `El modelo del barco "${v.url}" no es un glTF válido: ni un .glb binario ni un .gltf JSON que three.js pueda leer. El océano sigue sin él.`,
+    boatNoGeometry: (v) => `El modelo del barco "${v.url}" no tiene geometría que pueda flotar. El océano sigue sin él.`,
   },
 };
+
+/** Every notice this page can show (a test renders each in both languages). */
+export const MESSAGE_IDS = Object.keys(MESSAGES.en) as MessageId[];
 
 /** Words of the interface that are not parameters or notices. */
 export type UiTextId =
@@ -98,7 +114,12 @@ export type UiTextId =
   | 'pause'
   | 'playing'
   | 'share'
-  | 'dismiss';
+  | 'dismiss'
+  | 'fresnelPlotLabel'
+  | 'fresnelTitle'
+  | 'fresnelAxis'
+  | 'fresnelExact'
+  | 'fresnelSchlick';
 
 const UI: Record<Language, Record<UiTextId, string>> = {
   en: {
@@ -124,6 +145,11 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     playing: 'Play',
     share: 'Share link',
     dismiss: 'Dismiss',
+    fresnelPlotLabel: 'Plot of the Fresnel reflectance of water against the angle of incidence, exact and Schlick',
+    fresnelTitle: 'Fresnel reflectance, air → water',
+    fresnelAxis: 'angle of incidence',
+    fresnelExact: 'exact (table uploaded to the GPU)',
+    fresnelSchlick: 'Schlick’s approximation',
   },
   es: {
     canvasLabel: 'Océano 3D animado bajo un cielo',
@@ -148,6 +174,11 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     playing: 'Reproducir',
     share: 'Compartir enlace',
     dismiss: 'Cerrar',
+    fresnelPlotLabel: 'Gráfico de la reflectancia de Fresnel del agua según el ángulo de incidencia, exacta y de Schlick',
+    fresnelTitle: 'Reflectancia de Fresnel, aire → agua',
+    fresnelAxis: 'ángulo de incidencia',
+    fresnelExact: 'exacta (tabla subida a la GPU)',
+    fresnelSchlick: 'aproximación de Schlick',
   },
 };
 

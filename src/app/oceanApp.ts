@@ -1,7 +1,7 @@
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { Vector3, type CubeTexture } from 'three';
 import { validateParams, type OceanParams } from '../sim/params';
-import { message, type Message } from '../sim/message';
+import { message, messageOf, type Message } from '../sim/message';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
 import { sunDirection } from '../sim/sun';
 import { median } from '../sim/sampleStatistics';
@@ -248,7 +248,7 @@ export class OceanApp {
       this.boatModel = 'loaded';
     } catch (error) {
       this.boatModel = 'failed';
-      this.notify(message('boatLoadFailed', { reason: (error as Error).message }));
+      this.notify(messageOf(error, 'boatLoadFailed'));
     } finally {
       indicator.remove();
     }
@@ -366,7 +366,7 @@ export class OceanApp {
 
   /** The plot is made the first time it is asked for: most figures never show it. */
   private showFresnelPlot(visible: boolean): void {
-    if (visible) this.fresnelPlot ??= new FresnelPlot(this.container, this.view.fresnelData);
+    if (visible) this.fresnelPlot ??= new FresnelPlot(this.container, this.view.fresnelData, this.tr);
     this.fresnelPlot?.setVisible(visible);
   }
 

@@ -4,6 +4,7 @@ import { describe, expect, it } from 'vitest';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { recordedPage, viewsReady } from './pages';
+import { diffPngs } from './imageCompare';
 
 /** What issue 11's new user tripped over, each checked the way they met it. */
 const harness = useHarness();
@@ -105,6 +106,23 @@ describe('booting', () => {
     const rejection = await page.evaluate(() => window.oceano.ready.then(() => 'resolved', (error: Error) => error.message));
     expect(rejection).toMatch(/WebGL2/);
     expect(await page.$eval('.oceano-fatal', (el) => (el as HTMLElement).innerText)).toBe(rejection);
+    await page.close();
+  });
+});
+
+describe('Spanish page', () => {
+  it('says a missing boat in Spanish only, and labels the Fresnel plot in Spanish', async () => {
+    const { page } = await openOcean(harness, 'lang=es&t=2&fresnelPlot=1&boat=models/none.glb', 640, 360);
+    const facts = await page.evaluate(() => ({ notices: window.oceano.notices(), plot: document.querySelector('.oceano-fresnel-plot')!.getAttribute('aria-label') }));
+    expect(facts.notices).toEqual(['No se encontró el modelo del barco "models/none.glb" (HTTP 404). El océano sigue sin él.']);
+    expect(facts.plot).toMatch(/^Gráfico de la reflectancia de Fresnel/);
+    const plotPng = async () => Buffer.from(await (await page.$('.oceano-fresnel-plot'))!.screenshot({ type: 'png' }));
+    const spanish = await plotPng();
+    const english = await openOcean(harness, 'lang=en&t=2&fresnelPlot=1', 640, 360);
+    const englishPlot = Buffer.from(await (await english.page.$('.oceano-fresnel-plot'))!.screenshot({ type: 'png' }));
+    // Same curves, other words: the pictures differ only by their labels.
+    expect(diffPngs(spanish, englishPlot, 0).differentPixels).toBeGreaterThan(200);
+    await english.page.close();
     await page.close();
   });
 });
