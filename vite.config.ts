@@ -3,17 +3,18 @@ import { defineConfig } from 'vitest/config';
 
 /**
  * The page's Content-Security-Policy: scripts only from this origin (no inline script, no
- * eval), every fetch, image and connection to this origin. Styles allow 'unsafe-inline'
- * because lil-gui injects its stylesheet as a <style> element (with its icon font as a
- * data: URL, hence font-src data:). Only the build gets it: the
- * dev server's hot reload needs more.
+ * eval), every fetch, image, font and connection to this origin. Styles allow
+ * 'unsafe-inline' for the style attributes lil-gui and three.js set. lil-gui's icon font,
+ * a data: URL in its stylesheet, is served as a file instead (lilGuiFontFile below), so
+ * the page also runs clean under just "default-src 'self'; style-src 'self'
+ * 'unsafe-inline'". Only the build gets it: the dev server's hot reload needs more.
  */
 export const CONTENT_SECURITY_POLICY = [
   "default-src 'self'",
   "script-src 'self'",
   "style-src 'self' 'unsafe-inline'",
   "img-src 'self' data: blob:",
-  "font-src 'self' data:",
+  "font-src 'self'",
   "connect-src 'self'",
   "object-src 'none'",
   "base-uri 'self'",
@@ -25,6 +26,24 @@ function contentSecurityPolicy(): Plugin {
     name: 'oceano-content-security-policy',
     apply: 'build',
     transformIndexHtml: () => [{ tag: 'meta', attrs: { 'http-equiv': 'Content-Security-Policy', content: CONTENT_SECURITY_POLICY }, injectTo: 'head-prepend' }],
+  };
+}
+
+/**
+ * lil-gui's stylesheet (imported by the page with injectStyles off) carries its icon font
+ * as a data: URL, which a font-src without data: refuses: point it at the same font as a
+ * file in public/fonts (extracted once from lil-gui 0.21's CSS).
+ */
+function lilGuiFontFile(): Plugin {
+  return {
+    name: 'oceano-lil-gui-font-file',
+    enforce: 'pre',
+    transform(code, id) {
+      if (!id.replaceAll('\\', '/').includes('/lil-gui/dist/lil-gui.css')) return null;
+      const replaced = code.replace(/url\("data:application\/font-woff2[^"]*"\)/, 'url("/fonts/lil-gui.woff2")');
+      if (replaced === code) throw new Error('lil-gui.css no longer embeds its icon font as expected: update lilGuiFontFile.');
+      return replaced;
+    },
   };
 }
 
@@ -42,7 +61,7 @@ function libraryBuild(): Plugin {
 export default defineConfig({
   // Relative base: dist/ works when copied under any sub-path of a course site.
   base: './',
-  plugins: [contentSecurityPolicy(), libraryBuild()],
+  plugins: [contentSecurityPolicy(), lilGuiFontFile(), libraryBuild()],
   build: { target: 'es2022', chunkSizeWarningLimit: 800 },
   server: { host: '127.0.0.1', port: 5173 },
   preview: { host: '127.0.0.1', port: 4173 },

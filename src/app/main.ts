@@ -1,3 +1,6 @@
+// lil-gui's styles as a stylesheet of the page, not a <style> it injects (see vite.config.ts, lilGuiFontFile);
+// by path, because the package's exports name no stylesheet.
+import '../../node_modules/lil-gui/dist/lil-gui.css';
 import './style.css';
 import './widgets.css';
 import { message } from '../sim/message';
