@@ -1,4 +1,4 @@
-import { paramDefs, type ParamKey } from '../sim/params';
+import { paramDefs, type OceanParams, type ParamKey } from '../sim/params';
 import type { Message, MessageId, MessageValues } from '../sim/message';
 
 export const LANGUAGES = ['en', 'es'] as const;
@@ -94,6 +94,8 @@ export const MESSAGE_IDS = Object.keys(MESSAGES.en) as MessageId[];
 /** Words of the interface that are not parameters or notices. */
 export type UiTextId =
   | 'canvasLabel'
+  | 'canvasLabelHeightmap'
+  | 'canvasLabelNormals'
   | 'panelTitle'
   | 'folderSwell'
   | 'folderRipples'
@@ -124,6 +126,8 @@ export type UiTextId =
 const UI: Record<Language, Record<UiTextId, string>> = {
   en: {
     canvasLabel: 'Animated 3D ocean under a sky',
+    canvasLabelHeightmap: 'The two heightmaps of the ripples, shown as greyscale images of their values',
+    canvasLabelNormals: 'Animated 3D ocean coloured by its surface normals',
     panelTitle: 'Oceano',
     folderSwell: 'Swell',
     folderRipples: 'Ripples (Perlin)',
@@ -153,6 +157,8 @@ const UI: Record<Language, Record<UiTextId, string>> = {
   },
   es: {
     canvasLabel: 'Océano 3D animado bajo un cielo',
+    canvasLabelHeightmap: 'Los dos mapas de alturas de las ondas, como imágenes en escala de grises de sus valores',
+    canvasLabelNormals: 'Océano 3D animado coloreado según las normales de su superficie',
     panelTitle: 'Oceano',
     folderSwell: 'Oleaje',
     folderRipples: 'Ondas (Perlin)',
@@ -218,6 +224,12 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   godRays: 'Rayos de luz',
   godRaysIntensity: 'Intensidad de los rayos de luz',
 };
+
+/** What the canvas shows, for its aria-label: it follows the teaching view. */
+export function canvasLabel(tr: Translator, params: Pick<OceanParams, 'view' | 'shading'>): string {
+  if (params.view === 'heightmap') return tr.ui('canvasLabelHeightmap');
+  return tr.ui(params.shading === 'normals' ? 'canvasLabelNormals' : 'canvasLabel');
+}
 
 /** Everything the page says, in one language. */
 export class Translator {

@@ -17,8 +17,9 @@ import type { Submersion } from '../sim/underwater';
 import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
 import { isCameraPose, type CameraPose } from './cameraPose';
 import { ControlPanel } from './controlPanel';
-import { Translator, type Language } from './i18n';
+import { canvasLabel, Translator, type Language } from './i18n';
 import { BoatSteering } from './boatSteering';
+import { CameraKeys } from './cameraKeys';
 import { Notices } from './notices';
 import { FresnelPlot } from './fresnelPlot';
 import { PlayButton } from './playButton';
@@ -135,6 +136,7 @@ export class OceanApp {
   private hull: HullSize = NOMINAL_HULL;
   private boatModel: BoatInfo['model'] = 'loading';
   private steering?: BoatSteering;
+  private cameraKeys?: CameraKeys;
   private frameCount = 0;
   private lastFrameTime: number | null = null;
   private animationHandle = 0;
@@ -155,7 +157,7 @@ export class OceanApp {
     this.canvas = document.createElement('canvas');
     this.canvas.className = 'oceano-canvas';
     this.canvas.setAttribute('role', 'img');
-    this.canvas.setAttribute('aria-label', this.tr.ui('canvasLabel'));
+    this.canvas.setAttribute('aria-label', canvasLabel(this.tr, state.params));
     container.appendChild(this.canvas);
     this.notices = new Notices(container, this.tr.ui('dismiss'));
     for (const notice of state.notices) this.notify(notice);
@@ -221,6 +223,7 @@ export class OceanApp {
     // The full page steers from anywhere; an embedded figure only when it has the focus.
     const keyTarget: Window | HTMLElement = this.options.showPanel ? window : this.container;
     this.steering = new BoatSteering(keyTarget, (change) => this.setParams(change), () => this.params);
+    this.cameraKeys = new CameraKeys(keyTarget, () => this.camera(), (pose) => this.setCamera(pose));
     this.resize();
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(this.canvas);
@@ -423,6 +426,7 @@ export class OceanApp {
       this.moveCamera(x - this.controls.target.x, z - this.controls.target.z);
     }
     this.view.applyParams(this.params);
+    this.canvas.setAttribute('aria-label', canvasLabel(this.tr, this.params));
     this.showFresnelPlot(this.params.fresnelPlot);
     this.panel?.sync(this.params, this.clock.playing);
     this.requestRender();
@@ -572,6 +576,7 @@ export class OceanApp {
     this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
     this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
     this.steering?.dispose();
+    this.cameraKeys?.dispose();
     this.panel?.dispose();
     this.playButton.dispose();
     this.fresnelPlot?.dispose();

@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { describe, expect, it } from 'vitest';
@@ -114,7 +115,9 @@ describe('Spanish page', () => {
   it('says a missing boat in Spanish only, and labels the Fresnel plot in Spanish', async () => {
     const { page } = await openOcean(harness, 'lang=es&t=2&fresnelPlot=1&boat=models/none.glb', 640, 360);
     const facts = await page.evaluate(() => ({ notices: window.oceano.notices(), plot: document.querySelector('.oceano-fresnel-plot')!.getAttribute('aria-label') }));
-    expect(facts.notices).toEqual(['No se encontró el modelo del barco "models/none.glb" (HTTP 404). El océano sigue sin él.']);
+    // The preview server answers a missing file with its index page (boatWebPage) or a 404 (boatNotFound): either, all in Spanish.
+    expect(facts.notices).toHaveLength(1);
+    expect(facts.notices[0]).toMatch(/^(No se encontró el modelo del barco "models\/none\.glb" \(HTTP 404\)|Falta el modelo del barco "models\/none\.glb": el servidor envió una página web en su lugar)\. El océano sigue sin él\.$/);
     expect(facts.plot).toMatch(/^Gráfico de la reflectancia de Fresnel/);
     const plotPng = async () => Buffer.from(await (await page.$('.oceano-fresnel-plot'))!.screenshot({ type: 'png' }));
     const spanish = await plotPng();
@@ -123,6 +126,117 @@ describe('Spanish page', () => {
     // Same curves, other words: the pictures differ only by their labels.
     expect(diffPngs(spanish, englishPlot, 0).differentPixels).toBeGreaterThan(200);
     await english.page.close();
+    await page.close();
+  });
+});
+
+describe('keyboard and accessibility', () => {
+  it('moves the camera with J/L/I/K/U/O while the arrows steer the boat and leave the camera alone', async () => {
+    const { page } = await openOcean(harness, 't=1', 640, 360);
+    const camera = () => page.evaluate(() => window.oceano.getCamera());
+    const distance = (c: { position: number[]; target: number[] }) => Math.hypot(...c.position.map((p, i) => p - c.target[i]));
+    const start = await camera();
+    await page.keyboard.press('ArrowLeft');
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    expect(await camera()).toEqual(start);
+    await page.keyboard.press('KeyL');
+    const orbited = await camera();
+    expect(orbited.target).toEqual(start.target);
+    expect(distance(orbited)).toBeCloseTo(distance(start), 6);
+    expect(Math.hypot(orbited.position[0] - start.position[0], orbited.position[2] - start.position[2])).toBeGreaterThan(1);
+    await page.keyboard.press('KeyI');
+    expect((await camera()).position[1]).toBeGreaterThan(orbited.position[1]);
+    const before = distance(await camera());
+    await page.keyboard.press('KeyU');
+    expect(distance(await camera()) / before).toBeCloseTo(0.9, 6);
+    await page.close();
+  });
+
+  it('shows a focus ring on lil-gui controls without hover, labels ▶ by its action only, names the canvas by its view', async () => {
+    const { page } = await openOcean(harness, 't=1', 640, 360);
+    const session = await page.createCDPSession();
+    await session.send('Emulation.setEmulatedMedia', { features: [{ name: 'hover', value: 'none' }, { name: 'pointer', value: 'coarse' }] });
+    expect(await page.evaluate(() => matchMedia('(hover: hover)').matches)).toBe(false);
+    const rings: string[] = [];
+    for (let i = 0; i < 12; i++) {
+      await page.keyboard.press('Tab');
+      const ring = await page.evaluate(() => {
+        const el = document.activeElement as HTMLElement | null;
+        if (!el || !el.closest('.lil-gui')) return null;
+        const style = getComputedStyle(el);
+        return `${el.tagName}:${style.outlineStyle}:${style.outlineWidth}`;
+      });
+      if (ring) rings.push(ring);
+    }
+    expect(rings.length).toBeGreaterThan(3);
+    for (const ring of rings) expect(ring).toMatch(/:solid:2px$/);
+
+    const play = await page.$eval('.oceano-play', (b) => ({ pressed: b.getAttribute('aria-pressed'), label: b.getAttribute('aria-label') }));
+    expect(play).toEqual({ pressed: null, label: 'Play' });
+    await page.click('.oceano-play');
+    expect(await page.$eval('.oceano-play', (b) => [b.getAttribute('aria-pressed'), b.getAttribute('aria-label')])).toEqual([null, 'Pause']);
+
+    const label = () => page.$eval('.oceano-canvas', (c) => c.getAttribute('aria-label'));
+    expect(await label()).toBe('Animated 3D ocean under a sky');
+    await page.evaluate(() => window.oceano.setParams({ view: 'heightmap' }));
+    expect(await label()).toMatch(/heightmaps/);
+    await page.evaluate(() => window.oceano.setParams({ view: 'ocean' }));
+    expect(await label()).toBe('Animated 3D ocean under a sky');
+    await page.close();
+  });
+
+  it('starts with the panel folded on a 375×667 phone, open on a 640-px window', async () => {
+    const phone = await openOcean(harness, 't=1', 375, 667);
+    const folded = await phone.page.evaluate(() => {
+      const gui = document.querySelector('.lil-gui.lil-root') as HTMLElement;
+      return { closed: gui.classList.contains('lil-closed'), height: gui.getBoundingClientRect().height };
+    });
+    expect(folded.closed).toBe(true);
+    expect(folded.height).toBeLessThan(667 / 10);
+    await phone.page.close();
+    const desk = await openOcean(harness, 't=1', 640, 360);
+    expect(await desk.page.$eval('.lil-gui.lil-root', (g) => g.classList.contains('lil-closed'))).toBe(false);
+    await desk.page.close();
+  });
+});
+
+describe('content security policy', () => {
+  const STRICT = "default-src 'self'; style-src 'self' 'unsafe-inline'";
+
+  it(`runs clean under "${STRICT}", the panel's icon font included`, async () => {
+    const html = readFileSync(join(import.meta.dirname, '..', '..', 'dist', 'index.html'), 'utf8');
+    const strict = html.replace(/<meta http-equiv="Content-Security-Policy" content="[^"]*"/, `<meta http-equiv="Content-Security-Policy" content="${STRICT}"`);
+    expect(strict).toContain(STRICT);
+    const page = await harness.browser.newPage();
+    const violations: string[] = [];
+    const errors: string[] = [];
+    const requests: string[] = [];
+    page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.exposeFunction('__violation', (text: string) => violations.push(text));
+    await page.evaluateOnNewDocument(() => {
+      document.addEventListener('securitypolicyviolation', (e) => (window as unknown as { __violation(t: string): void }).__violation(`${e.effectiveDirective} ${e.blockedURI}`));
+    });
+    await page.setRequestInterception(true);
+    page.on('request', (request) => {
+      requests.push(request.url());
+      if (request.url().split('?')[0] === harness.baseUrl) void request.respond({ status: 200, contentType: 'text/html', body: strict });
+      else void request.continue();
+    });
+    await page.setViewport({ width: 800, height: 600, deviceScaleFactor: 1 });
+    await page.goto(`${harness.baseUrl}?t=1`, { waitUntil: 'load' });
+    await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
+    await page.evaluate(() => window.oceano.ready);
+    // A checked box draws its ✓ in lil-gui's icon font: make sure the font is wanted and loaded.
+    await page.evaluate(() => document.querySelectorAll<HTMLElement>('.lil-gui .lil-title').forEach((t) => t.parentElement!.classList.contains('lil-closed') && t.click()));
+    const fontLoaded = await page.evaluate(async () => {
+      await document.fonts.ready;
+      return document.fonts.check('12px "lil-gui"', '✓') && Array.from(document.fonts).some((f) => f.family.replaceAll('"', '') === 'lil-gui' && f.status === 'loaded');
+    });
+    expect(violations).toEqual([]);
+    expect(errors).toEqual([]);
+    expect(fontLoaded).toBe(true);
+    expect(requests.some((url) => url.endsWith('fonts/lil-gui.woff2'))).toBe(true);
     await page.close();
   });
 });
