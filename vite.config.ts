@@ -1,4 +1,4 @@
-import { build, type Plugin } from 'vite';
+import type { Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 
 /**
@@ -47,22 +47,29 @@ function lilGuiFontFile(): Plugin {
   };
 }
 
-/** `vite build` also writes dist/oceano.js (the <oceano-view> web component), so one command builds everything the tests serve. */
-function libraryBuild(): Plugin {
-  return {
-    name: 'oceano-library-build',
-    apply: 'build',
-    async closeBundle() {
-      await build({ configFile: 'vite.lib.config.ts', logLevel: 'warn' });
-    },
-  };
-}
-
 export default defineConfig({
   // Relative base: dist/ works when copied under any sub-path of a course site.
   base: './',
-  plugins: [contentSecurityPolicy(), lilGuiFontFile(), libraryBuild()],
-  build: { target: 'es2022', chunkSizeWarningLimit: 800 },
+  plugins: [contentSecurityPolicy(), lilGuiFontFile()],
+  /**
+   * One build for the page and dist/oceano.js (the <oceano-view> web component): two
+   * entries of one bundle, so both import the same minified three.js chunk and the same
+   * app code instead of each carrying its own copy (issue 11.11). oceano.js keeps its
+   * fixed name beside index.html: it finds the sky and the boat relative to its own URL.
+   */
+  build: {
+    target: 'es2022',
+    chunkSizeWarningLimit: 800,
+    rollupOptions: {
+      input: { index: 'index.html', oceano: 'src/lib.ts' },
+      // oceano.js is a module pages import from: keep its exports (OceanoViewElement).
+      preserveEntrySignatures: 'exports-only',
+      output: {
+        entryFileNames: (chunk) => (chunk.name === 'oceano' ? 'oceano.js' : 'assets/[name]-[hash].js'),
+        manualChunks: (id) => (id.includes('/node_modules/three/') ? 'three' : undefined),
+      },
+    },
+  },
   server: { host: '127.0.0.1', port: 5173 },
   preview: { host: '127.0.0.1', port: 4173 },
   test: {

@@ -1,4 +1,5 @@
-import { readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { describe, expect, it } from 'vitest';
@@ -238,5 +239,29 @@ describe('content security policy', () => {
     expect(fontLoaded).toBe(true);
     expect(requests.some((url) => url.endsWith('fonts/lil-gui.woff2'))).toBe(true);
     await page.close();
+  });
+});
+
+describe('packaging', () => {
+  const dist = join(import.meta.dirname, '..', '..', 'dist');
+  const scripts = [...readdirSync(join(dist, 'assets')).filter((f) => f.endsWith('.js')).map((f) => `assets/${f}`), 'oceano.js'];
+  const text = (file: string) => readFileSync(join(dist, file), 'utf8');
+
+  it('ships minified scripts, three.js once, imported by both the page and oceano.js', () => {
+    for (const file of scripts) {
+      const code = text(file);
+      // Minified: no indented methods, no class keeping its source name (GLSL strings keep their lines, so line length says nothing).
+      expect(code, file).not.toMatch(/\n\s+constructor\(/);
+      expect(code, file).not.toMatch(/class (OceanApp|WebGLRenderer|OceanView)\b/);
+    }
+    const withThree = scripts.filter((file) => text(file).includes('THREE.WebGLRenderer'));
+    expect(withThree).toHaveLength(1);
+    const threeChunk = withThree[0].split('/').pop()!;
+    const pageEntry = /<script type="module"[^>]*src="\.\/([^"]+)"/.exec(text('index.html'))![1];
+    expect(text(pageEntry)).toContain(threeChunk);
+    expect(text('oceano.js')).toContain(threeChunk);
+    const gzipKB = scripts.reduce((sum, file) => sum + gzipSync(readFileSync(join(dist, file))).length, 0) / 1024;
+    // Measured 209 KB for page and component together (three.js alone 166 KB); before, 205 + 283 KB.
+    expect(gzipKB).toBeLessThan(260);
   });
 });
