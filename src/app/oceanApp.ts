@@ -358,7 +358,8 @@ export class OceanApp {
     if (this.boatTimes.length > FRAME_SAMPLES) this.boatTimes.shift();
     if (this.updateTimes.length > FRAME_SAMPLES) this.updateTimes.shift();
     this.view.draw();
-    if (this.frameCount % COUNTS_EVERY === 0) this.panel?.showCounts(this.view.stats());
+    // While looping, every COUNTS_EVERY frames; a paused view draws only on a change, so every such frame.
+    if (!this.looping || this.frameCount % COUNTS_EVERY === 0) this.panel?.showCounts(this.view.stats());
     this.frameCount++;
     if (!sync) return;
     const gl = this.view.renderer.getContext();
