@@ -48,4 +48,13 @@ describe('notices in the page language (issue 11.7)', () => {
     expect(new Translator('es').message(messageOf(error, 'boatLoadFailed'))).toBe('No se encontró el modelo del barco "models/none.glb" (HTTP 404). El océano sigue sin él.');
     expect(messageOf(new Error('boom'), 'boatLoadFailed')).toEqual(message('boatLoadFailed', { reason: 'boom' }));
   });
+
+  it('promises nothing about a lost context that the browser may not keep: it names the view limit and the way out (issue 11.8)', () => {
+    for (const language of ['en', 'es'] as const) {
+      const text = new Translator(language).message(message('contextLost'));
+      expect(text, language).not.toMatch(/by itself|volverá solo/);
+      expect(text, language).toMatch(/16/);
+      expect(text, language).toMatch(/reload|recarga/);
+    }
+  });
 });
