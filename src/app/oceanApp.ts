@@ -165,6 +165,7 @@ export class OceanApp {
     const running = state.time === null && !options.reducedMotion;
     this.clock = new SimulationClock(state.time ?? 0, running);
     this.surface = new OceanSurface(this.params);
+    if (state.boatState && state.time !== null) this.boatMotion.restore(state.boatState, state.time);
     this.playButton = new PlayButton(container, { play: this.tr.ui('play'), pause: this.tr.ui('pause') }, () =>
       this.clock.playing ? this.pause() : this.play(),
     );
@@ -497,6 +498,7 @@ export class OceanApp {
       sky: state.sky,
       boat: state.boat,
       embed: state.embed,
+      boatState: this.boatMotion.snapshot(this.clock.time),
     });
     return `${this.options.shareBase}?${query}`;
   }

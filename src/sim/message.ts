@@ -28,7 +28,8 @@ export type MessageId =
   | 'boatNotFound'
   | 'boatWebPage'
   | 'boatNotGltf'
-  | 'boatNoGeometry';
+  | 'boatNoGeometry'
+  | 'boatStateInvalid';
 
 export type MessageValues = Record<string, string | number | boolean>;
 

@@ -41,3 +41,16 @@ describe('one validation for every entry point', () => {
     }
   });
 });
+
+describe('boat state in a link (issue 11.1)', () => {
+  it('writes the boat state so that it reads back bit for bit, and refuses a bad one with a notice', async () => {
+    const { formatBoatState, parseBoatState } = await import('../../src/app/urlState');
+    const b = { x: 6.36123456789, z: -5.3312345, heading: { value: 5.1, velocity: -0.01 }, heave: { value: 1.0001, velocity: 0.3 }, pitch: { value: 0.01, velocity: 1e-17 }, roll: { value: -0.02, velocity: 0 } };
+    expect(parseBoatState(formatBoatState(b))).toEqual(b);
+    expect(parseUrlState(`?t=3&boatState=${formatBoatState(b)}`).boatState).toEqual(b);
+    const bad = parseUrlState('?t=3&boatState=1,2,3');
+    expect(bad.boatState).toBeNull();
+    expect(bad.notices.map((n) => n.id)).toEqual(['boatStateInvalid']);
+    expect(parseBoatState('3000,0,0,0,0,0,0,0,0,0')).toBeNull();
+  });
+});
