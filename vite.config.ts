@@ -1,19 +1,20 @@
-import { build, type Plugin } from 'vite';
+import type { Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 
 /**
  * The page's Content-Security-Policy: scripts only from this origin (no inline script, no
- * eval), every fetch, image and connection to this origin. Styles allow 'unsafe-inline'
- * because lil-gui injects its stylesheet as a <style> element (with its icon font as a
- * data: URL, hence font-src data:). Only the build gets it: the
- * dev server's hot reload needs more.
+ * eval), every fetch, image, font and connection to this origin. Styles allow
+ * 'unsafe-inline' for the style attributes lil-gui and three.js set. lil-gui's icon font,
+ * a data: URL in its stylesheet, is served as a file instead (lilGuiFontFile below), so
+ * the page also runs clean under just "default-src 'self'; style-src 'self'
+ * 'unsafe-inline'". Only the build gets it: the dev server's hot reload needs more.
  */
 export const CONTENT_SECURITY_POLICY = [
   "default-src 'self'",
   "script-src 'self'",
   "style-src 'self' 'unsafe-inline'",
   "img-src 'self' data: blob:",
-  "font-src 'self' data:",
+  "font-src 'self'",
   "connect-src 'self'",
   "object-src 'none'",
   "base-uri 'self'",
@@ -28,13 +29,20 @@ function contentSecurityPolicy(): Plugin {
   };
 }
 
-/** `vite build` also writes dist/oceano.js (the <oceano-view> web component), so one command builds everything the tests serve. */
-function libraryBuild(): Plugin {
+/**
+ * lil-gui's stylesheet (imported by the page with injectStyles off) carries its icon font
+ * as a data: URL, which a font-src without data: refuses: point it at the same font as a
+ * file in public/fonts (extracted once from lil-gui 0.21's CSS).
+ */
+function lilGuiFontFile(): Plugin {
   return {
-    name: 'oceano-library-build',
-    apply: 'build',
-    async closeBundle() {
-      await build({ configFile: 'vite.lib.config.ts', logLevel: 'warn' });
+    name: 'oceano-lil-gui-font-file',
+    enforce: 'pre',
+    transform(code, id) {
+      if (!id.replaceAll('\\', '/').includes('/lil-gui/dist/lil-gui.css')) return null;
+      const replaced = code.replace(/url\("data:application\/font-woff2[^"]*"\)/, 'url("/fonts/lil-gui.woff2")');
+      if (replaced === code) throw new Error('lil-gui.css no longer embeds its icon font as expected: update lilGuiFontFile.');
+      return replaced;
     },
   };
 }
@@ -42,8 +50,26 @@ function libraryBuild(): Plugin {
 export default defineConfig({
   // Relative base: dist/ works when copied under any sub-path of a course site.
   base: './',
-  plugins: [contentSecurityPolicy(), libraryBuild()],
-  build: { target: 'es2022', chunkSizeWarningLimit: 800 },
+  plugins: [contentSecurityPolicy(), lilGuiFontFile()],
+  /**
+   * One build for the page and dist/oceano.js (the <oceano-view> web component): two
+   * entries of one bundle, so both import the same minified three.js chunk and the same
+   * app code instead of each carrying its own copy (issue 11.11). oceano.js keeps its
+   * fixed name beside index.html: it finds the sky and the boat relative to its own URL.
+   */
+  build: {
+    target: 'es2022',
+    chunkSizeWarningLimit: 800,
+    rollupOptions: {
+      input: { index: 'index.html', oceano: 'src/lib.ts' },
+      // oceano.js is a module pages import from: keep its exports (OceanoViewElement).
+      preserveEntrySignatures: 'exports-only',
+      output: {
+        entryFileNames: (chunk) => (chunk.name === 'oceano' ? 'oceano.js' : 'assets/[name]-[hash].js'),
+        manualChunks: (id) => (id.includes('/node_modules/three/') ? 'three' : undefined),
+      },
+    },
+  },
   server: { host: '127.0.0.1', port: 5173 },
   preview: { host: '127.0.0.1', port: 4173 },
   test: {

@@ -1,11 +1,13 @@
+import { isValidTime, MAX_TIME } from '../sim/simulationTime';
 import { isCameraPose, type CameraPose } from './cameraPose';
 
 /**
  * The automation API's argument checks: each throws a TypeError that says what was wanted,
  * before anything is changed, so a course page's mistake reads as a sentence.
  */
+/** The URL's `t` range (src/sim/simulationTime.ts), so a time set here always makes a link that opens. */
 export function checkTime(seconds: unknown): number {
-  if (typeof seconds !== 'number' || !Number.isFinite(seconds)) throw new TypeError(`setTime needs a finite number of seconds, got ${String(seconds)}.`);
+  if (!isValidTime(seconds)) throw new TypeError(`setTime needs a time in seconds between 0 and ${MAX_TIME} (as the URL's t), got ${String(seconds)}.`);
   return seconds;
 }
 

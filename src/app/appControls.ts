@@ -1,5 +1,7 @@
 import type { OceanParams } from '../sim/params';
 import { BoatSteering } from './boatSteering';
+import { CameraKeys } from './cameraKeys';
+import type { CameraPose } from './cameraPose';
 import { ControlPanel, type ControlPanelHooks, type LiveCounts } from './controlPanel';
 import { FresnelPlot } from './fresnelPlot';
 import type { Translator } from './i18n';
@@ -7,24 +9,39 @@ import type { Translator } from './i18n';
 /** How often the GUI's live LOD counts are refreshed (frames). */
 const COUNTS_EVERY = 10;
 
+/** What the keys change through the app's own API, so they are checked as any caller's change is. */
+export interface KeyedApp {
+  setParams(change: Partial<OceanParams>): unknown;
+  getParams(): OceanParams;
+  camera(): CameraPose;
+  setCamera(pose: CameraPose): void;
+}
+
 /**
  * What the user steers the ocean with besides the canvas: the lil-gui panel (full page
- * only), the keyboard's boat steering and the Fresnel plot, kept in step with the parameters.
+ * only), the keyboard's boat steering and camera keys, and the Fresnel plot, kept in step
+ * with the parameters.
  */
 export class AppControls {
   private readonly panel?: ControlPanel;
   private readonly steering: BoatSteering;
+  private readonly cameraKeys: CameraKeys;
+  private readonly tr: Translator;
   private fresnelPlot?: FresnelPlot;
 
   constructor(
     private readonly container: HTMLElement,
     private readonly fresnelData: Float32Array,
     state: { showPanel: boolean; params: OceanParams; playing: boolean; tr: Translator },
-    hooks: ControlPanelHooks & { setParams(change: Partial<OceanParams>): void; params(): OceanParams },
+    app: KeyedApp,
+    hooks: ControlPanelHooks,
   ) {
     if (state.showPanel) this.panel = new ControlPanel(container, state.params, state.playing, hooks, state.tr);
     // The full page steers from anywhere; an embedded figure only when it has the focus.
-    this.steering = new BoatSteering(state.showPanel ? window : container, (change) => hooks.setParams(change), () => hooks.params());
+    const keyTarget: Window | HTMLElement = state.showPanel ? window : container;
+    this.steering = new BoatSteering(keyTarget, (change) => app.setParams(change), () => app.getParams());
+    this.cameraKeys = new CameraKeys(keyTarget, () => app.camera(), (pose) => app.setCamera(pose));
+    this.tr = state.tr;
     this.sync(state.params, state.playing);
   }
 
@@ -35,18 +52,22 @@ export class AppControls {
 
   sync(params: OceanParams, playing: boolean): void {
     // The plot is made the first time it is asked for: most figures never show it.
-    if (params.fresnelPlot) this.fresnelPlot ??= new FresnelPlot(this.container, this.fresnelData);
+    if (params.fresnelPlot) this.fresnelPlot ??= new FresnelPlot(this.container, this.fresnelData, this.tr);
     this.fresnelPlot?.setVisible(params.fresnelPlot);
     this.panel?.sync(params, playing);
   }
 
-  /** The panel's live LOD counts, refreshed every COUNTS_EVERY frames. */
-  showCounts(frame: number, counts: () => LiveCounts): void {
-    if (this.panel && frame % COUNTS_EVERY === 0) this.panel.showCounts(counts());
+  /**
+   * The panel's live LOD counts: while looping, every COUNTS_EVERY frames; a paused view
+   * draws only on a change (a t= link, a preset, a camera move), so on every such frame.
+   */
+  showCounts(frame: number, looping: boolean, counts: () => LiveCounts): void {
+    if (this.panel && (!looping || frame % COUNTS_EVERY === 0)) this.panel.showCounts(counts());
   }
 
   dispose(): void {
     this.steering.dispose();
+    this.cameraKeys.dispose();
     this.panel?.dispose();
     this.fresnelPlot?.dispose();
   }

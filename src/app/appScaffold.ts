@@ -1,4 +1,5 @@
-import type { Translator } from './i18n';
+import type { OceanParams } from '../sim/params';
+import { canvasLabel, type Translator } from './i18n';
 import { Notices } from './notices';
 import { PlayButton } from './playButton';
 
@@ -9,15 +10,20 @@ export interface Scaffold {
   playButton: PlayButton;
 }
 
-export function buildScaffold(container: HTMLElement, tr: Translator, onPlayToggle: () => void): Scaffold {
+export function buildScaffold(container: HTMLElement, tr: Translator, params: OceanParams, onPlayToggle: () => void): Scaffold {
   const canvas = document.createElement('canvas');
   canvas.className = 'oceano-canvas';
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', tr.ui('canvasLabel'));
+  labelCanvas(canvas, tr, params);
   container.appendChild(canvas);
   const notices = new Notices(container, tr.ui('dismiss'));
   const playButton = new PlayButton(container, { play: tr.ui('play'), pause: tr.ui('pause') }, onPlayToggle);
   return { canvas, notices, playButton };
+}
+
+/** The canvas's aria-label says what it shows: it follows the teaching view (heightmaps, normals). */
+export function labelCanvas(canvas: HTMLCanvasElement, tr: Translator, params: OceanParams): void {
+  canvas.setAttribute('aria-label', canvasLabel(tr, params));
 }
 
 /** Removes what buildScaffold made. */

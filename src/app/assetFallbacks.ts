@@ -1,5 +1,5 @@
 import type { CubeTexture } from 'three';
-import { message, type Message } from '../sim/message';
+import { message, messageOf, type Message } from '../sim/message';
 import { sunDirection } from '../sim/sun';
 import type { OceanParams } from '../sim/params';
 import { loadBoatModel, type BoatModel } from '../render/boatModel';
@@ -28,7 +28,9 @@ export async function loadBoatOrNotify(container: HTMLElement, url: string, load
   try {
     return await loadBoatModel(url);
   } catch (error) {
-    notify(message('boatLoadFailed', { reason: (error as Error).message }));
+    // The notice in the page's language; the English detail for the console.
+    console.error('The boat could not be loaded:', error);
+    notify(messageOf(error, 'boatLoadFailed'));
     return null;
   } finally {
     indicator.remove();

@@ -82,3 +82,39 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     },
   };
 }
+
+/**
+ * The API of an ocean that could not start (no WebGL2, a failed boot): `ready` rejects with
+ * the reason and every call throws it, so a harness awaiting `ready` fails loudly instead
+ * of screenshotting a blank page, and `window.oceano` is never anything but this API.
+ */
+export function createFailedApi(reason: Error): OceanoApi {
+  const ready = Promise.reject(reason);
+  // Handled here so the page logs no unhandled rejection; whoever awaits `ready` still gets it.
+  ready.catch(() => undefined);
+  const fail = (): never => {
+    throw reason;
+  };
+  return {
+    ready,
+    setTime: fail,
+    play: fail,
+    pause: fail,
+    renderFrame: fail,
+    getParams: fail,
+    setParams: fail,
+    setCamera: fail,
+    getCamera: fail,
+    sampleSurface: fail,
+    probeGpu: () => Promise.reject(reason),
+    boat: fail,
+    stats: fail,
+    notices: fail,
+    shareUrl: fail,
+    activity: fail,
+    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail },
+    get three(): never {
+      throw reason;
+    },
+  };
+}

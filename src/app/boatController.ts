@@ -1,4 +1,4 @@
-import { BoatMotion, type BoatMotionState } from '../sim/boatMotion';
+import { BoatMotion, type BoatMotionState, type BoatSnapshot } from '../sim/boatMotion';
 import type { HullSize } from '../sim/boatPose';
 import type { OceanParams } from '../sim/params';
 import type { LiveWaveModel } from '../sim/waveModels';
@@ -16,7 +16,10 @@ export interface BoatInfo {
   heading: number;
   pitch: number;
   roll: number;
-  /** The undamped pose on the surface at this instant (equal to the above when the clock stands still). */
+  /**
+   * The undamped pose on the surface at this instant. Equal to the above after a jump in
+   * time or on a link without a boat state; a paused view keeps the damped pose, not this.
+   */
   target: { position: [number, number, number]; pitch: number; roll: number };
   model: 'loading' | 'loaded' | 'failed';
 }
@@ -31,10 +34,14 @@ export class BoatController {
   private hull: HullSize = NOMINAL_HULL;
   private modelState: BoatInfo['model'] = 'loading';
 
+  /** `opened`: a share link's boat state, restored at its time (the link's `t`); without both the boat starts afresh. */
   constructor(
     private readonly view: BoatView,
     private readonly carryCamera: (dx: number, dz: number) => void,
-  ) {}
+    opened: { boatState: BoatSnapshot | null; time: number | null } = { boatState: null, time: null },
+  ) {
+    if (opened.boatState && opened.time !== null) this.motion.restore(opened.boatState, opened.time);
+  }
 
   setModel(model: BoatModel | null): void {
     this.modelState = model ? 'loaded' : 'failed';
@@ -62,6 +69,11 @@ export class BoatController {
     if (!this.state) return;
     const { x, z } = this.state.pose;
     this.carryCamera(x - target.x, z - target.z);
+  }
+
+  /** The motion at `time` for a share link; null if the boat was last floated at another time. */
+  snapshot(time: number): BoatSnapshot | null {
+    return this.motion.snapshot(time);
   }
 
   info(): BoatInfo {

@@ -10,6 +10,12 @@ const ASTERN = new Set(['KeyS', 'ArrowDown']);
 const PORT = new Set(['KeyA', 'ArrowLeft']);
 const STARBOARD = new Set(['KeyD', 'ArrowRight']);
 
+/** `value` rounded to a multiple of `step`, written with no more decimals than the step has (0.1 → one). */
+export function onStep(value: number, step: number): number {
+  const decimals = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
+  return Number((Math.round(value / step) * step).toFixed(decimals));
+}
+
 /**
  * Keyboard steering: W/↑ and S/↓ change the speed, A/← and D/→ turn to port and starboard,
  * for as long as they are held. The keys change the same parameters as the GUI
@@ -22,6 +28,12 @@ export class BoatSteering {
   private readonly unapplied = new Set<string>();
   /** Keys let go of before a frame applied them, to drop after the next one does. */
   private readonly released = new Set<string>();
+  /**
+   * The unrounded values the keys have reached, and the rounded ones stored from them: the
+   * parameters hold values on their GUI step (2.4, not 2.4335999999999984, which would
+   * show up in links), while a frame's small change still adds up.
+   */
+  private exact: { speed: number; heading: number; stored: { speed: number; heading: number } } | null = null;
 
   constructor(
     private readonly target: Window | HTMLElement,
@@ -71,10 +83,15 @@ export class BoatSteering {
     this.unapplied.clear();
     if (turn === 0 && throttle === 0) return;
     const { boatHeading, boatSpeed } = this.params();
-    const heading = (((boatHeading + turn * TURN_RATE * seconds) % 360) + 360) % 360;
+    // Start from the stored values whenever something else (GUI, API, URL) changed them.
+    const stored = this.exact?.stored;
+    if (!this.exact || stored?.speed !== boatSpeed || stored.heading !== boatHeading) this.exact = { speed: boatSpeed, heading: boatHeading, stored: { speed: boatSpeed, heading: boatHeading } };
+    const exact = this.exact;
+    exact.heading = (((exact.heading + turn * TURN_RATE * seconds) % 360) + 360) % 360;
     const { min, max } = paramDefs.boatSpeed;
-    const speed = Math.min(max, Math.max(min, boatSpeed + throttle * ACCELERATION * seconds));
-    this.setParams({ boatHeading: heading, boatSpeed: speed });
+    exact.speed = Math.min(max, Math.max(min, exact.speed + throttle * ACCELERATION * seconds));
+    exact.stored = { speed: onStep(exact.speed, paramDefs.boatSpeed.step), heading: onStep(exact.heading, paramDefs.boatHeading.step) % 360 };
+    this.setParams({ boatHeading: exact.stored.heading, boatSpeed: exact.stored.speed });
   }
 
   dispose(): void {

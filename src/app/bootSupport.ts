@@ -28,6 +28,7 @@ export function showFatal(container: HTMLElement, text: string): void {
 /** Starts the app; a failure replaces the view with a readable message and rejects `ready`. */
 export function startApp(app: OceanApp, container: HTMLElement, tr: Translator): Promise<void> {
   return app.start().catch((error: unknown) => {
+    console.error('Oceano could not start:', error);
     showFatal(container, tr.message(message('startFailed', { error: error instanceof Error ? error.message : String(error) })));
     throw error;
   });

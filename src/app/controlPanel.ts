@@ -12,6 +12,9 @@ const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'view', 'fresnelPlot'] },
 ];
 
+/** Views narrower than this (CSS px; a phone held upright) start with the panel folded. */
+const NARROW = 560;
+
 /** What the LOD debugger's read-only counters show. */
 export interface LiveCounts {
   chunksVisible: number;
@@ -41,7 +44,8 @@ export class ControlPanel {
   private readonly countControllers: Controller[] = [];
 
   constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
-    this.gui = new GUI({ container, title: tr.ui('panelTitle') });
+    // Its styles come from the page's stylesheet (main.ts): no <style> element with a data: font.
+    this.gui = new GUI({ container, title: tr.ui('panelTitle'), injectStyles: false });
     this.model = { ...params, playing };
     for (const folder of FOLDERS) {
       const group = this.gui.addFolder(tr.ui(folder.title));
@@ -63,6 +67,8 @@ export class ControlPanel {
     const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
     this.gui.add(camera, 'dive').name(tr.ui('dive'));
     this.gui.add(camera, 'surface').name(tr.ui('surface'));
+    // On a phone the open panel would cover most of the sea: start it folded (its title opens it).
+    if (container.clientWidth < NARROW) this.gui.close();
   }
 
   private addControl(group: GUI, key: ParamKey, hooks: ControlPanelHooks): Controller {

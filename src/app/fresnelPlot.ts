@@ -1,4 +1,5 @@
 import { schlickReflectance, WATER_IOR, AIR_IOR } from '../sim/fresnel';
+import type { Translator } from './i18n';
 
 const WIDTH = 380;
 const HEIGHT = 240;
@@ -11,13 +12,17 @@ const MARGIN = { left: 44, right: 14, top: 30, bottom: 36 };
 export class FresnelPlot {
   private readonly canvas: HTMLCanvasElement;
 
-  constructor(container: HTMLElement, table: Float32Array) {
+  constructor(
+    container: HTMLElement,
+    table: Float32Array,
+    private readonly tr: Translator,
+  ) {
     this.canvas = document.createElement('canvas');
     this.canvas.className = 'oceano-fresnel-plot';
     this.canvas.width = WIDTH;
     this.canvas.height = HEIGHT;
     this.canvas.setAttribute('role', 'img');
-    this.canvas.setAttribute('aria-label', 'Plot of the Fresnel reflectance of water against the angle of incidence, exact and Schlick');
+    this.canvas.setAttribute('aria-label', tr.ui('fresnelPlotLabel'));
     this.canvas.hidden = true;
     container.appendChild(this.canvas);
     this.draw(table);
@@ -39,7 +44,7 @@ export class FresnelPlot {
     ctx.fillRect(0, 0, WIDTH, HEIGHT);
     ctx.font = '12px system-ui, sans-serif';
     ctx.fillStyle = '#1b2a33';
-    ctx.fillText(`Fresnel reflectance, air → water (n = ${WATER_IOR})`, MARGIN.left, 18);
+    ctx.fillText(`${this.tr.ui('fresnelTitle')} (n = ${WATER_IOR})`, MARGIN.left, 18);
 
     ctx.strokeStyle = '#c9d3d9';
     ctx.lineWidth = 1;
@@ -57,7 +62,7 @@ export class FresnelPlot {
       ctx.stroke();
       ctx.fillText(r.toFixed(2), 6, y(r) + 4);
     }
-    ctx.fillText('angle of incidence', MARGIN.left + plotW / 2 - 50, HEIGHT - 6);
+    ctx.fillText(this.tr.ui('fresnelAxis'), MARGIN.left + plotW / 2 - 50, HEIGHT - 6);
 
     const curve = (color: string, dash: number[], reflectance: (degrees: number) => number) => {
       ctx.strokeStyle = color;
@@ -84,11 +89,11 @@ export class FresnelPlot {
     ctx.fillStyle = '#0a6fa8';
     ctx.fillRect(MARGIN.left + 8, MARGIN.top + 8, 16, 3);
     ctx.fillStyle = '#1b2a33';
-    ctx.fillText('exact (table uploaded to the GPU)', MARGIN.left + 30, MARGIN.top + 13);
+    ctx.fillText(this.tr.ui('fresnelExact'), MARGIN.left + 30, MARGIN.top + 13);
     ctx.fillStyle = '#d2691e';
     ctx.fillRect(MARGIN.left + 8, MARGIN.top + 26, 16, 3);
     ctx.fillStyle = '#1b2a33';
-    ctx.fillText('Schlick’s approximation', MARGIN.left + 30, MARGIN.top + 31);
+    ctx.fillText(this.tr.ui('fresnelSchlick'), MARGIN.left + 30, MARGIN.top + 31);
   }
 
   dispose(): void {

@@ -1,4 +1,4 @@
-import { paramDefs, type ParamKey } from '../sim/params';
+import { paramDefs, type OceanParams, type ParamKey } from '../sim/params';
 import type { Message, MessageId, MessageValues } from '../sim/message';
 
 export const LANGUAGES = ['en', 'es'] as const;
@@ -8,16 +8,24 @@ export function isLanguage(text: string): text is Language {
   return (LANGUAGES as readonly string[]).includes(text);
 }
 
+/** The language we speak for a BCP 47 tag (es-ES, es_MX, EN), by its primary subtag; null if none. */
+export function languageFromTag(tag: string): Language | null {
+  const primary = tag.trim().toLowerCase().split(/[-_]/)[0];
+  return isLanguage(primary) ? primary : null;
+}
+
 /** The first of the browser's preferred languages that we speak, else English. */
 export function preferredLanguage(browserLanguages: readonly string[]): Language {
   for (const tag of browserLanguages) {
-    const primary = tag.toLowerCase().split('-')[0];
-    if (isLanguage(primary)) return primary;
+    const language = languageFromTag(tag);
+    if (language) return language;
   }
   return 'en';
 }
 
 type Render = (v: MessageValues) => string;
+/** Inner text ended with exactly one full stop, so "…404)." never becomes "…404).)" or "..". */
+const sentence = (text: string | number | boolean | undefined) => `${String(text ?? '').trim().replace(/[.\s]+$/, '')}.`;
 const unit = (v: MessageValues) => (v.unit ? ` ${v.unit}` : '');
 
 const MESSAGES: Record<Language, Record<MessageId, Render>> = {
@@ -36,13 +44,19 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     presetUnknown: (v) => `There is no preset "${v.name}"; showing the default view. Presets: ${v.known}.`,
     unknownUrlParam: (v) => `Unknown URL parameter "${v.key}" was ignored.`,
     skyLoadFailed: (v) => `The sky images under "${v.base}" could not be loaded. Showing a painted sky instead.`,
-    contextLost: () => 'The graphics context was lost (the GPU was reset or is busy). The ocean will come back by itself as soon as the browser restores it.',
+    contextLost: () => 'The graphics context was lost: the GPU was reset, or this page holds more 3D views than the browser keeps alive (about 16). The ocean comes back if the browser restores the context; if it does not, reload the page.',
     shareCopied: () => 'Link to this view copied to the clipboard.',
     shareFallback: (v) => `Copy this link to share the view: ${v.url}`,
     webgl2Missing: () => 'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.',
-    startFailed: (v) => `Oceano could not start: ${v.error}`,
+    startFailed: (v) => `Oceano could not start: ${sentence(v.error)}`,
     boatPathInvalid: (v) => `"boat=${v.text}" is not a path on this site; using the built-in boat.`,
-    boatLoadFailed: (v) => `${v.reason} The ocean runs without the boat.`,
+    boatLoadFailed: (v) => `The boat could not be loaded: ${sentence(v.reason)} The ocean runs without the boat.`,
+    boatUnreachable: (v) => `The boat model "${v.url}" could not be fetched. The ocean runs without the boat.`,
+    boatNotFound: (v) => `The boat model "${v.url}" was not found (HTTP ${v.status}). The ocean runs without the boat.`,
+    boatWebPage: (v) => `The boat model "${v.url}" is missing: the server sent a web page in its place. The ocean runs without the boat.`,
+    boatNotGltf: (v) => `The boat model "${v.url}" is not a valid glTF model: neither a binary .glb nor a JSON .gltf file that three.js can read. The ocean runs without the boat.`,
+    boatNoGeometry: (v) => `The boat model "${v.url}" has no geometry to float. The ocean runs without the boat.`,
+    boatStateInvalid: (v) => `"boatState=${v.text}" is not ten finite numbers within the boat's area; the boat starts afresh.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -59,19 +73,28 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     presetUnknown: (v) => `No existe la vista predefinida "${v.name}"; se muestra la vista por defecto. Disponibles: ${v.known}.`,
     unknownUrlParam: (v) => `Se ignoró el parámetro de URL desconocido "${v.key}".`,
     skyLoadFailed: (v) => `No se pudieron cargar las imágenes del cielo en "${v.base}". Se muestra un cielo pintado en su lugar.`,
-    contextLost: () => 'Se perdió el contexto gráfico (la GPU se reinició o está ocupada). El océano volverá solo en cuanto el navegador lo restablezca.',
+    contextLost: () => 'Se perdió el contexto gráfico: la GPU se reinició, o esta página tiene más vistas 3D de las que el navegador mantiene (unas 16). El océano vuelve si el navegador restablece el contexto; si no, recarga la página.',
     shareCopied: () => 'Enlace a esta vista copiado al portapapeles.',
     shareFallback: (v) => `Copia este enlace para compartir la vista: ${v.url}`,
     webgl2Missing: () => 'Oceano necesita WebGL2, que este navegador o dispositivo no ofrece. Prueba un Chrome, Firefox o Safari reciente, o activa la aceleración por hardware.',
-    startFailed: (v) => `Oceano no pudo arrancar: ${v.error}`,
+    // The error's own text is English (a browser or library message): the console has it.
+    startFailed: () => 'Oceano no pudo arrancar; el detalle técnico está en la consola del navegador.',
     boatPathInvalid: (v) => `"boat=${v.text}" no es una ruta de este sitio; se usa el barco incluido.`,
-    boatLoadFailed: (v) => `No se pudo cargar el barco (${v.reason}). El océano sigue sin él.`,
+    boatLoadFailed: () => 'No se pudo cargar el barco; el detalle técnico está en la consola del navegador. El océano sigue sin él.',
+    boatUnreachable: (v) => `No se pudo descargar el modelo del barco "${v.url}". El océano sigue sin él.`,
+    boatNotFound: (v) => `No se encontró el modelo del barco "${v.url}" (HTTP ${v.status}). El océano sigue sin él.`,
+    boatWebPage: (v) => `Falta el modelo del barco "${v.url}": el servidor envió una página web en su lugar. El océano sigue sin él.`,
+    boatNotGltf: (v) => `El modelo del barco "${v.url}" no es un glTF válido: ni un .glb binario ni un .gltf JSON que three.js pueda leer. El océano sigue sin él.`,
+    boatNoGeometry: (v) => `El modelo del barco "${v.url}" no tiene geometría que pueda flotar. El océano sigue sin él.`,
+    boatStateInvalid: (v) => `"boatState=${v.text}" no son diez números finitos dentro de la zona del barco; el barco empieza de nuevo.`,
   },
 };
 
 /** Words of the interface that are not parameters or notices. */
 export type UiTextId =
   | 'canvasLabel'
+  | 'canvasLabelHeightmap'
+  | 'canvasLabelNormals'
   | 'panelTitle'
   | 'folderSwell'
   | 'folderRipples'
@@ -92,11 +115,18 @@ export type UiTextId =
   | 'pause'
   | 'playing'
   | 'share'
-  | 'dismiss';
+  | 'dismiss'
+  | 'fresnelPlotLabel'
+  | 'fresnelTitle'
+  | 'fresnelAxis'
+  | 'fresnelExact'
+  | 'fresnelSchlick';
 
 const UI: Record<Language, Record<UiTextId, string>> = {
   en: {
     canvasLabel: 'Animated 3D ocean under a sky',
+    canvasLabelHeightmap: 'The two heightmaps of the ripples, shown as greyscale images of their values',
+    canvasLabelNormals: 'Animated 3D ocean coloured by its surface normals',
     panelTitle: 'Oceano',
     folderSwell: 'Swell',
     folderRipples: 'Ripples (Perlin)',
@@ -118,9 +148,16 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     playing: 'Play',
     share: 'Share link',
     dismiss: 'Dismiss',
+    fresnelPlotLabel: 'Plot of the Fresnel reflectance of water against the angle of incidence, exact and Schlick',
+    fresnelTitle: 'Fresnel reflectance, air → water',
+    fresnelAxis: 'angle of incidence',
+    fresnelExact: 'exact (table uploaded to the GPU)',
+    fresnelSchlick: 'Schlick’s approximation',
   },
   es: {
     canvasLabel: 'Océano 3D animado bajo un cielo',
+    canvasLabelHeightmap: 'Los dos mapas de alturas de las ondas, como imágenes en escala de grises de sus valores',
+    canvasLabelNormals: 'Océano 3D animado coloreado según las normales de su superficie',
     panelTitle: 'Oceano',
     folderSwell: 'Oleaje',
     folderRipples: 'Ondas (Perlin)',
@@ -142,6 +179,11 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     playing: 'Reproducir',
     share: 'Compartir enlace',
     dismiss: 'Cerrar',
+    fresnelPlotLabel: 'Gráfico de la reflectancia de Fresnel del agua según el ángulo de incidencia, exacta y de Schlick',
+    fresnelTitle: 'Reflectancia de Fresnel, aire → agua',
+    fresnelAxis: 'ángulo de incidencia',
+    fresnelExact: 'exacta (tabla subida a la GPU)',
+    fresnelSchlick: 'aproximación de Schlick',
   },
 };
 
@@ -182,6 +224,12 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   godRays: 'Rayos de luz',
   godRaysIntensity: 'Intensidad de los rayos de luz',
 };
+
+/** What the canvas shows, for its aria-label: it follows the teaching view. */
+export function canvasLabel(tr: Translator, params: Pick<OceanParams, 'view' | 'shading'>): string {
+  if (params.view === 'heightmap') return tr.ui('canvasLabelHeightmap');
+  return tr.ui(params.shading === 'normals' ? 'canvasLabelNormals' : 'canvasLabel');
+}
 
 /** Everything the page says, in one language. */
 export class Translator {

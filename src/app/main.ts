@@ -1,21 +1,26 @@
+// lil-gui's styles as a stylesheet of the page, not a <style> it injects (see vite.config.ts, lilGuiFontFile);
+// by path, because the package's exports name no stylesheet.
+import '../../node_modules/lil-gui/dist/lil-gui.css';
 import './style.css';
 import './widgets.css';
 import { message } from '../sim/message';
 import { DEFAULT_BOAT_MODEL, OceanApp } from './oceanApp';
-import { createAutomationApi } from './automationApi';
+import { createAutomationApi, createFailedApi } from './automationApi';
 import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './bootSupport';
 import { preferredLanguage, Translator } from './i18n';
 import { parseUrlState } from './urlState';
 
 /** The page bootstrap: reads the URL and the browser's preferences and hands them to one OceanApp. */
 function boot(): void {
-  const container = document.getElementById('oceano') as HTMLElement;
+  const container = document.getElementById('oceano-page') as HTMLElement;
   const state = parseUrlState(window.location.search);
   const language = state.language ?? preferredLanguage(navigator.languages);
   const tr = new Translator(language);
   document.documentElement.lang = language;
   if (!hasWebGL2()) {
-    showFatal(container, tr.message(message('webgl2Missing')));
+    const text = tr.message(message('webgl2Missing'));
+    showFatal(container, text);
+    window.oceano = createFailedApi(new Error(text));
     return;
   }
   if (state.embed) document.documentElement.classList.add('oceano-embedded');
@@ -34,4 +39,10 @@ function boot(): void {
   window.oceano = createAutomationApi(app, ready);
 }
 
-boot();
+try {
+  boot();
+} catch (error) {
+  // Whatever stopped the boot, `oceano.ready` says it rather than never settling.
+  window.oceano = createFailedApi(error instanceof Error ? error : new Error(String(error)));
+  throw error;
+}

@@ -1,4 +1,11 @@
-/** Readable messages for the user, shown over the canvas: never only in the console. */
+/** A web address inside a message: shown as a link of its own, selectable in one click. */
+const URL_PATTERN = /https?:\/\/\S+/g;
+
+/**
+ * Readable messages for the user, shown over the canvas: never only in the console. Long
+ * text wraps inside its notice (a share link is one long word), and the list scrolls when
+ * it is taller than the view, so a small figure can still show every notice.
+ */
 export class Notices {
   private readonly list: HTMLElement;
 
@@ -18,7 +25,8 @@ export class Notices {
     const item = document.createElement('div');
     item.className = `oceano-notice oceano-notice-${level}`;
     const text = document.createElement('span');
-    text.textContent = message;
+    text.className = 'oceano-notice-text';
+    text.append(...withLinks(message));
     const close = document.createElement('button');
     close.type = 'button';
     close.textContent = '×';
@@ -34,10 +42,28 @@ export class Notices {
   }
 
   messages(): string[] {
-    return Array.from(this.list.querySelectorAll('.oceano-notice span'), (el) => el.textContent ?? '');
+    return Array.from(this.list.querySelectorAll('.oceano-notice-text'), (el) => el.textContent ?? '');
   }
 
   dispose(): void {
     this.list.remove();
   }
+}
+
+/** The message as text nodes, with each web address in a span that one click selects whole (to copy where the clipboard is refused). */
+function withLinks(message: string): Node[] {
+  const nodes: Node[] = [];
+  let last = 0;
+  for (const match of message.matchAll(URL_PATTERN)) {
+    const index = match.index ?? 0;
+    if (index > last) nodes.push(document.createTextNode(message.slice(last, index)));
+    // Not an <a>: a click meant to select the link must not navigate away from the view.
+    const link = document.createElement('span');
+    link.className = 'oceano-notice-link';
+    link.textContent = match[0];
+    nodes.push(link);
+    last = index + match[0].length;
+  }
+  if (last < message.length) nodes.push(document.createTextNode(message.slice(last)));
+  return nodes;
 }

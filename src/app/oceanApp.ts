@@ -9,7 +9,7 @@ import { Translator } from './i18n';
 import type { Notices } from './notices';
 import { SimulationClock } from './simulationClock';
 import type { OceanAppOptions } from './appOptions';
-import { buildScaffold, disposeScaffold, type Scaffold } from './appScaffold';
+import { buildScaffold, disposeScaffold, labelCanvas, type Scaffold } from './appScaffold';
 import { FrameLoop, type LoopActivity, type SuspendReason } from './frameLoop';
 import { FrameStats, type OceanStats } from './frameStats';
 import { BoatController, type BoatInfo } from './boatController';
@@ -56,10 +56,10 @@ export class OceanApp {
     private readonly options: OceanAppOptions,
   ) {
     this.tr = new Translator(options.language);
-    this.scaffold = buildScaffold(container, this.tr, () => this.setPlaying(!this.clock.playing));
+    this.params = { ...options.state.params };
+    this.scaffold = buildScaffold(container, this.tr, this.params, () => this.setPlaying(!this.clock.playing));
     ({ canvas: this.canvas, notices: this.notices } = this.scaffold);
     for (const notice of options.state.notices) this.notify(notice);
-    this.params = { ...options.state.params };
     this.clock = new SimulationClock(options.state.time ?? 0, options.state.time === null && !options.reducedMotion);
     this.scaffold.playButton.sync(this.clock.playing);
     const tick = (seconds: number) => {
@@ -84,7 +84,7 @@ export class OceanApp {
     if (this.disposed) return sky.dispose();
     this.view = new OceanView(this.canvas, sky, this.params);
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
-    this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz));
+    this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
     if (state.cullingCamera && this.params.freezeCulling) {
       // Freeze the selection from the culling camera, then look at it from the preset's camera.
       this.orbit.setPose(state.cullingCamera);
@@ -97,14 +97,13 @@ export class OceanApp {
       setLost: (lost) => this.loop.setStopped('contextLost', lost),
       redraw: () => (this.resize(), this.renderFrame()),
     });
-    this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr }, {
+    const controlState = { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr };
+    this.controls = new AppControls(this.container, this.view.fresnelData, controlState, this, {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => this.setPlaying(playing),
       onShare: () => void this.share(),
       onDive: () => this.orbit.dive(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
-      setParams: (change) => this.setParams(change),
-      params: () => this.params,
     });
     this.resize();
     (this.resizeObserver = new ResizeObserver(() => this.resize())).observe(this.canvas);
@@ -139,7 +138,7 @@ export class OceanApp {
     this.view.update(this.clock.time);
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
     this.view.draw();
-    this.controls?.showCounts(this.frameStats.framesDrawn++, () => this.view.stats());
+    this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());
     if (!sync) return;
     this.view.waitForGpu();
     this.frameStats.recordSyncedFrame(performance.now() - start);
@@ -152,6 +151,7 @@ export class OceanApp {
     this.params = { ...this.params, ...valid };
     if (startsFollowing) this.boatMotion.startFollowing(this.orbit.target);
     this.view.applyParams(this.params);
+    labelCanvas(this.canvas, this.tr, this.params);
     this.controls?.sync(this.params, this.clock.playing);
     this.loop.requestRender();
     return this.getParams();
@@ -171,9 +171,9 @@ export class OceanApp {
   setCamera = (pose: CameraPose): void => this.orbit.setPose(checkCameraPose(pose));
   camera = (): CameraPose => this.orbit.pose();
   boat = (): BoatInfo => this.boatMotion.info();
-  /** A link that reopens this exact view: parameters, camera, language and the current time (frozen). */
+  /** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion. */
   shareUrl = (): string =>
-    shareUrl(this.options.shareBase, { params: this.params, time: this.clock.time, camera: this.camera(), language: this.options.language, opened: this.options.state });
+    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time) });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number): SurfaceSample => (checkSurfacePoint(x, z), this.view.waves.sample(x, z, this.clock.time));
   probeGpu = (points: unknown, time?: number): ProbeSample[] => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);

@@ -1,6 +1,6 @@
 import { message } from '../sim/message';
 import { isParamKey, paramKeys } from '../sim/params';
-import { createAutomationApi, type OceanoApi } from './automationApi';
+import { createAutomationApi, createFailedApi, type OceanoApi } from './automationApi';
 import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './bootSupport';
 import { preferredLanguage, Translator } from './i18n';
 import { DEFAULT_BOAT_MODEL, OceanApp } from './oceanApp';
@@ -38,7 +38,9 @@ export class OceanoViewElement extends HTMLElement {
     const language = state.language ?? preferredLanguage(navigator.languages);
     const tr = new Translator(language);
     if (!hasWebGL2()) {
-      showFatal(this, tr.message(message('webgl2Missing')));
+      const text = tr.message(message('webgl2Missing'));
+      showFatal(this, text);
+      this.oceano = createFailedApi(new Error(text));
       return;
     }
     const assets = OceanoViewElement.assetBase || document.baseURI;

@@ -18,13 +18,16 @@ export class PlayButton {
     container.appendChild(this.element);
   }
 
-  /** Shows the action the button will take: "Play" while paused, "Pause" while playing. */
+  /**
+   * Shows the action the button will take: "Play" while paused, "Pause" while playing. The
+   * label says it all, so no aria-pressed: a toggle state on top of a changing label
+   * would read as "Pause, pressed" (WAI-ARIA Authoring Practices, button pattern).
+   */
   sync(playing: boolean): void {
     const label = playing ? this.labels.pause : this.labels.play;
     this.element.textContent = playing ? '❚❚' : '▶';
     this.element.setAttribute('aria-label', label);
     this.element.title = label;
-    this.element.setAttribute('aria-pressed', String(playing));
   }
 
   dispose(): void {

@@ -1,24 +1,27 @@
 import { message, type Message } from '../sim/message';
 import type { OceanParams } from '../sim/params';
+import type { BoatSnapshot } from '../sim/boatMotion';
 import type { CameraPose } from './cameraPose';
-import type { Language } from './i18n';
-import { formatUrlState, type UrlState } from './urlState';
+import type { OceanAppOptions } from './appOptions';
+import { formatUrlState } from './urlState';
 
-/** Everything a shared link carries: the view as it is now, frozen at its time. */
+/** What a shared link carries of the view as it is now, frozen at its time. */
 export interface SharedView {
   params: OceanParams;
   time: number;
   camera: CameraPose;
-  language: Language;
-  /** The asset and embedding choices the page was opened with. */
-  opened: Pick<UrlState, 'sky' | 'boat' | 'embed'>;
+  /** The boat's motion at `time`, so the link rebuilds it exactly (null: it starts afresh). */
+  boatState: BoatSnapshot | null;
 }
 
-/** A link that reopens this exact view: parameters, camera, language and the current time (frozen). */
-export function shareUrl(base: string, view: SharedView): string {
-  const { opened } = view;
-  const query = formatUrlState({ params: view.params, time: view.time, camera: view.camera, language: view.language, sky: opened.sky, boat: opened.boat, embed: opened.embed });
-  return `${base}?${query}`;
+/** What it carries of the page as it was opened: its address, language, assets and embedding. */
+export type OpenedPage = Pick<OceanAppOptions, 'shareBase' | 'language'> & { state: Pick<OceanAppOptions['state'], 'sky' | 'boat' | 'embed'> };
+
+/** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion then. */
+export function shareUrl(page: OpenedPage, view: SharedView): string {
+  const { sky, boat, embed } = page.state;
+  const query = formatUrlState({ ...view, language: page.language, sky, boat, embed });
+  return `${page.shareBase}?${query}`;
 }
 
 /** Copies the link; where the clipboard is refused, shows the link for the user to copy. */

@@ -1,11 +1,13 @@
 import { defaultParams, isParamKey, paramDefs, paramKeys, parseParamText, type OceanParams } from '../sim/params';
 import { message, type Message } from '../sim/message';
 import { formatCameraText, parseCameraText, type CameraPose } from './cameraPose';
-import { isLanguage, type Language } from './i18n';
+import { languageFromTag, type Language } from './i18n';
+import { isValidTime } from '../sim/simulationTime';
+import { BOAT_EXTENT, type BoatSnapshot } from '../sim/boatMotion';
 import { findPreset, presetNames } from './presets';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
-export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'boat'] as const;
+export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'boat', 'boatState'] as const;
 
 /** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
@@ -23,6 +25,8 @@ export interface UrlState {
   notices: Message[];
   /** Path of the boat's glTF model when the page names its own. */
   boat: string | null;
+  /** The boat's motion at `time` (a share link's), to rebuild it exactly; null: start afresh. */
+  boatState: BoatSnapshot | null;
 }
 
 /**
@@ -45,7 +49,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, boat: null, camera: null, cullingCamera: null, language: null, embed: false, notices };
+  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, camera: null, cullingCamera: null, language: null, embed: false, notices };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -62,7 +66,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   for (const [key, text] of pairs) {
     if (key === 't') {
       const value = text.trim() === '' ? NaN : Number(text);
-      if (Number.isFinite(value) && value >= 0 && value <= 1e9) state.time = value;
+      if (isValidTime(value)) state.time = value;
       else notices.push(message('timeInvalid', { text }));
     } else if (key === 'sky') {
       if (isSafeAssetPath(text)) state.sky = text;
@@ -70,12 +74,17 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
     } else if (key === 'boat') {
       if (isSafeAssetPath(text)) state.boat = text;
       else notices.push(message('boatPathInvalid', { text }));
+    } else if (key === 'boatState') {
+      const snapshot = parseBoatState(text);
+      if (snapshot) state.boatState = snapshot;
+      else notices.push(message('boatStateInvalid', { text }));
     } else if (key === 'cam') {
       const camera = parseCameraText(text);
       if (camera) state.camera = camera;
       else notices.push(message('cameraInvalid', { text }));
     } else if (key === 'lang') {
-      if (isLanguage(text)) state.language = text;
+      const language = languageFromTag(text);
+      if (language) state.language = language;
       else notices.push(message('languageInvalid', { text }));
     } else if (key === 'embed') {
       if (text === '1' || text === '' || text === 'true') state.embed = true;
@@ -100,6 +109,7 @@ export interface ShareableState {
   sky: string | null;
   boat: string | null;
   embed: boolean;
+  boatState?: BoatSnapshot | null;
 }
 
 /**
@@ -116,8 +126,24 @@ export function formatUrlState(state: ShareableState): string {
   query.set('t', String(state.time));
   query.set('cam', formatCameraText(state.camera));
   query.set('lang', state.language);
+  if (state.boatState) query.set('boatState', formatBoatState(state.boatState));
   if (state.sky !== null) query.set('sky', state.sky);
   if (state.boat !== null) query.set('boat', state.boat);
   if (state.embed) query.set('embed', '1');
   return query.toString();
+}
+
+/** `x,z,heading,headingRate,heave,heaveRate,pitch,pitchRate,roll,rollRate`, numbers written to read back bit for bit. */
+export function formatBoatState(b: BoatSnapshot): string {
+  return [b.x, b.z, b.heading.value, b.heading.velocity, b.heave.value, b.heave.velocity, b.pitch.value, b.pitch.velocity, b.roll.value, b.roll.velocity].map(String).join(',');
+}
+
+/** Ten finite numbers, the position within the boat's square; null otherwise. Only meaningful with `t`. */
+export function parseBoatState(text: string): BoatSnapshot | null {
+  const parts = text.split(',');
+  if (parts.length !== 10 || parts.some((p) => p.trim() === '')) return null;
+  const n = parts.map(Number);
+  if (!n.every((v) => Number.isFinite(v) && Math.abs(v) <= 1e6) || Math.abs(n[0]) > BOAT_EXTENT || Math.abs(n[1]) > BOAT_EXTENT) return null;
+  const f = (i: number) => ({ value: n[i], velocity: n[i + 1] });
+  return { x: n[0], z: n[1], heading: f(2), heave: f(4), pitch: f(6), roll: f(8) };
 }

@@ -1,6 +1,7 @@
 import { Box3, type Object3D } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import type { HullSize } from '../sim/boatPose';
+import { message, MessageError } from '../sim/message';
 
 export interface BoatModel {
   object: Object3D;
@@ -23,29 +24,49 @@ function looksLikeGltf(data: ArrayBuffer): boolean {
   return firstVisible === 0x7b;
 }
 
+/**
+ * Every failure comes out as a MessageError, whose notice the page shows in its own
+ * language; the technical detail of an unexpected one goes to the console.
+ */
 export async function loadBoatModel(url: string): Promise<BoatModel> {
+  try {
+    return await fetchBoatModel(url);
+  } catch (error) {
+    if (error instanceof MessageError) throw error;
+    console.warn('Oceano: the boat model could not be loaded:', error);
+    const reason = error instanceof Error ? error.message : String(error);
+    throw new MessageError(message('boatLoadFailed', { reason }), reason);
+  }
+}
+
+async function fetchBoatModel(url: string): Promise<BoatModel> {
   let response: Response;
   try {
     response = await fetch(url);
   } catch {
-    throw new Error(`The boat model "${url}" could not be fetched.`);
+    throw new MessageError(message('boatUnreachable', { url }), `The boat model "${url}" could not be fetched.`);
   }
-  if (!response.ok) throw new Error(`The boat model "${url}" was not found (HTTP ${response.status}).`);
+  if (!response.ok) {
+    throw new MessageError(message('boatNotFound', { url, status: response.status }), `The boat model "${url}" was not found (HTTP ${response.status}).`);
+  }
   if ((response.headers.get('content-type') ?? '').includes('text/html')) {
-    throw new Error(`The boat model "${url}" is missing: the server sent a web page in its place.`);
+    throw new MessageError(message('boatWebPage', { url }), `The boat model "${url}" is missing: the server sent a web page in its place.`);
   }
   const data = await response.arrayBuffer();
-  if (!looksLikeGltf(data)) throw new Error(`The boat model "${url}" is not a valid glTF model: it is neither a binary .glb nor a JSON .gltf file.`);
+  if (!looksLikeGltf(data)) {
+    throw new MessageError(message('boatNotGltf', { url }), `The boat model "${url}" is not a valid glTF model: it is neither a binary .glb nor a JSON .gltf file.`);
+  }
   let object: Object3D;
   try {
     object = (await new GLTFLoader().parseAsync(data, url.slice(0, url.lastIndexOf('/') + 1))).scene;
   } catch (error) {
     const reason = error instanceof Error ? error.message : String(error);
-    throw new Error(`The boat model "${url}" is not a valid glTF model (${reason}).`);
+    // The loader's reason is English and technical: the console gets it, the notice does not.
+    throw new MessageError(message('boatNotGltf', { url }), `The boat model "${url}" is not a valid glTF model (${reason}).`);
   }
   const box = new Box3().setFromObject(object);
   const length = box.max.z - box.min.z;
   const beam = box.max.x - box.min.x;
-  if (!(length > 0) || !(beam > 0)) throw new Error(`The boat model "${url}" has no geometry to float.`);
+  if (!(length > 0) || !(beam > 0)) throw new MessageError(message('boatNoGeometry', { url }), `The boat model "${url}" has no geometry to float.`);
   return { object, hull: { length, beam } };
 }

@@ -270,7 +270,9 @@ export class OceanView {
     else if (submersion === 'above') this.renderer.render(this.scene, this.camera);
     else composerPasses = this.underwaterPost().render(submersion === 'straddling');
     const info = this.renderer.info.render;
-    this.lastStats = { drawCalls: info.calls, triangles: info.triangles, ...this.ocean.stats(), underwater, submersion, composerPasses };
+    // Wireframe draws each ocean triangle as three line segments (three.js's wireframe index), counted as lines.
+    const triangles = info.triangles + (this.material.wireframe ? Math.round(info.lines / 3) : 0);
+    this.lastStats = { drawCalls: info.calls, triangles, ...this.ocean.stats(), underwater, submersion, composerPasses };
   }
 
   /** The active model's heightmaps; a model without any shows a clear screen. */

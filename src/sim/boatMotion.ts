@@ -23,12 +23,28 @@ export interface BoatControls {
   response: number;
 }
 
+/**
+ * Everything the motion carries from frame to frame: with the time it was taken at, it
+ * rebuilds the boat exactly (a share link carries it, so the boat comes back where it was,
+ * with its damped heave, pitch and roll, not at its start or on its undamped pose).
+ */
+export interface BoatSnapshot {
+  x: number;
+  z: number;
+  heading: FollowerState;
+  heave: FollowerState;
+  pitch: FollowerState;
+  roll: FollowerState;
+}
+
 export interface BoatMotionState {
   pose: BoatPose;
   /** The undamped pose on the surface at this instant, for comparison. */
   target: BoatPose;
 }
 
+const clampTo = (state: FollowerState, target: number, band: number): FollowerState =>
+  state.value > target + band ? { value: target + band, velocity: 0 } : state.value < target - band ? { value: target - band, velocity: 0 } : state;
 const clampToExtent = (v: number) => Math.min(BOAT_EXTENT, Math.max(-BOAT_EXTENT, v));
 const TWO_PI = 2 * Math.PI;
 /** The angle in [−π, π) equal to `angle` modulo 2π. */
@@ -38,10 +54,11 @@ const wrapSigned = (angle: number) => angle - TWO_PI * Math.floor((angle + Math.
  * The boat over time: sails along its heading at its speed, kept within BOAT_EXTENT, and
  * floats: heave, pitch and roll follow the surface's pose through critically damped
  * springs, and the hull swings round to a new heading the same way, the short way round.
- * Time comes in from the frame loop's clock. A step of zero (a frozen or paused
- * clock), a step back, or the first update puts the boat exactly on its target pose, so a
- * still picture always shows the true pose of that instant; a step longer than `maxStep`
- * (a jump with setTime) does the same instead of sailing the whole gap.
+ * Time comes in from the frame loop's clock. The first update, a step back, or a step
+ * longer than `maxStep` (a jump with setTime) puts the boat exactly on its target pose, so
+ * a frozen link without a boat state shows the true pose of that instant. A step of zero
+ * (a paused view drawn again) holds the springs where they were, so pausing freezes the
+ * boat as it was and a share link made then (snapshot/restore) reproduces it.
  */
 export class BoatMotion {
   private x: number;
@@ -66,13 +83,16 @@ export class BoatMotion {
     const dt = this.lastTime === null ? NaN : time - this.lastTime;
     this.lastTime = time;
     const stepping = dt > 0 && dt <= this.maxStep;
+    // The clock stood still (a paused view drawn again): the springs stand still too, kept
+    // within their bands of a target that parameters may have moved.
+    const holding = dt === 0 && this.current !== null;
     if (stepping) {
       const commanded = this.heading.value + wrapSigned(controls.heading - this.heading.value);
       this.heading = followStep(this.heading, commanded, dt, 1 / HEADING_RESPONSE, HEADING_BAND);
       const [fx, fz] = forwardOf(this.heading.value);
       this.x = clampToExtent(this.x + fx * controls.speed * dt);
       this.z = clampToExtent(this.z + fz * controls.speed * dt);
-    } else {
+    } else if (!holding) {
       this.heading = { value: controls.heading, velocity: 0 };
     }
     const heading = this.heading.value - TWO_PI * Math.floor(this.heading.value / TWO_PI);
@@ -82,6 +102,10 @@ export class BoatMotion {
       this.heave = followStep(this.heave, target.y, dt, omega, HEAVE_BAND);
       this.pitch = followStep(this.pitch, target.pitch, dt, omega, ANGLE_BAND);
       this.roll = followStep(this.roll, target.roll, dt, omega, ANGLE_BAND);
+    } else if (holding) {
+      this.heave = clampTo(this.heave, target.y, HEAVE_BAND);
+      this.pitch = clampTo(this.pitch, target.pitch, ANGLE_BAND);
+      this.roll = clampTo(this.roll, target.roll, ANGLE_BAND);
     } else {
       this.heave = { value: target.y, velocity: 0 };
       this.pitch = { value: target.pitch, velocity: 0 };
@@ -96,5 +120,24 @@ export class BoatMotion {
 
   state(): BoatMotionState | null {
     return this.current;
+  }
+
+  /** The state at `time`, or null when the motion was last updated at another time (or never). */
+  snapshot(time: number): BoatSnapshot | null {
+    if (this.lastTime !== time || this.current === null) return null;
+    return { x: this.x, z: this.z, heading: { ...this.heading }, heave: { ...this.heave }, pitch: { ...this.pitch }, roll: { ...this.roll } };
+  }
+
+  /** Puts the boat back as `snapshot` had it at `time`: the next update at that time draws that very pose. */
+  restore(snapshot: BoatSnapshot, time: number): void {
+    this.x = clampToExtent(snapshot.x);
+    this.z = clampToExtent(snapshot.z);
+    this.heading = { ...snapshot.heading };
+    this.heave = { ...snapshot.heave };
+    this.pitch = { ...snapshot.pitch };
+    this.roll = { ...snapshot.roll };
+    this.lastTime = time;
+    // Marks the motion as under way, so the first update holds the restored springs.
+    this.current = { pose: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value }, target: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value } };
   }
 }

@@ -25,6 +25,12 @@ export const MESSAGE_IDS = [
   'startFailed',
   'boatPathInvalid',
   'boatLoadFailed',
+  'boatUnreachable',
+  'boatNotFound',
+  'boatWebPage',
+  'boatNotGltf',
+  'boatNoGeometry',
+  'boatStateInvalid',
 ] as const;
 
 export type MessageId = (typeof MESSAGE_IDS)[number];
@@ -38,4 +44,24 @@ export interface Message {
 
 export function message(id: MessageId, values: MessageValues = {}): Message {
   return { id, values };
+}
+
+/**
+ * An error whose notice is a Message, so the page can say it in its own language; the
+ * Error's own text (English) is for the console.
+ */
+export class MessageError extends Error {
+  constructor(
+    readonly notice: Message,
+    english: string,
+  ) {
+    super(english);
+    this.name = 'MessageError';
+  }
+}
+
+/** The notice for a failure: its own Message when it has one, else `fallback` with the error's text as `reason`. */
+export function messageOf(error: unknown, fallback: MessageId): Message {
+  if (error instanceof MessageError) return error.notice;
+  return message(fallback, { reason: error instanceof Error ? error.message : String(error) });
 }

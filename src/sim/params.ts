@@ -117,11 +117,14 @@ export function validateParam(key: string, value: unknown): OceanParams[ParamKey
         throw new ParamError(key, `"${key}" must be one of ${def.options.join(', ')}, got ${describe(value)}.`);
       }
       return value as OceanParams[ParamKey];
-    case 'color':
-      if (typeof value !== 'string' || !COLOR_PATTERN.test(value)) {
-        throw new ParamError(key, `"${key}" must be a colour like #12ab9f, got ${describe(value)}.`);
+    case 'color': {
+      // With or without the '#': the URL, the GUI's share links and this API take the same text.
+      const hex = typeof value === 'string' && !value.startsWith('#') ? `#${value}` : value;
+      if (typeof hex !== 'string' || !COLOR_PATTERN.test(hex)) {
+        throw new ParamError(key, `"${key}" must be a colour like #12ab9f or 12ab9f, got ${describe(value)}.`);
       }
-      return value.toLowerCase();
+      return hex.toLowerCase();
+    }
     default: {
       if (typeof value !== 'number' || !Number.isFinite(value)) {
         throw new ParamError(key, `"${key}" must be a finite number, got ${describe(value)}.`);

@@ -94,7 +94,7 @@ describe('resizing', () => {
     }
     for (let i = 0; i < 4; i++) {
       await page.evaluate((zero) => {
-        const container = document.getElementById('oceano')!;
+        const container = document.getElementById('oceano-page')!;
         container.style.width = zero ? '0px' : '';
         container.style.height = zero ? '0px' : '';
       }, i % 2 === 0);

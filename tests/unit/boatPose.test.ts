@@ -86,13 +86,35 @@ describe('BoatMotion', () => {
   const still = { heading: 0, speed: 0, response: 0.25 };
   const wave = (t: number) => (x: number, z: number) => 1.4 * Math.sin(0.05 * x + 0.7 * t) * Math.cos(0.05 * z) + 0.3 * Math.sin(1.3 * x - 2 * t);
 
-  it('sits exactly on the surface at the first frame and whenever the clock stands still', () => {
+  it('sits exactly on the surface at the first frame, and holds its damped pose while the clock stands still', () => {
     const motion = new BoatMotion([3, -7]);
     const first = motion.update(10, still, HULL, wave(10));
     expect(first.pose).toEqual(first.target);
-    motion.update(10.016, still, HULL, wave(10.016));
-    const frozen = motion.update(10.016, still, HULL, wave(10.016));
-    expect(frozen.pose).toEqual(frozen.target);
+    let moving = first;
+    for (let t = 10.016; t < 10.5; t += 0.016) moving = motion.update(t, still, HULL, wave(t));
+    // Issue 11.1: pausing froze the picture with the damped pose, and drawing it again
+    // (an orbit, a share link) jumped the boat to its target; now it stays.
+    expect(moving.pose).not.toEqual(moving.target);
+    const time = 11;
+    const held = motion.update(time, still, HULL, wave(time));
+    const frozen = motion.update(time, still, HULL, wave(time));
+    expect(frozen.pose).toEqual(held.pose);
+  });
+
+  it('rebuilds itself exactly from a snapshot, held and then moving on', () => {
+    const controls = { heading: 1.2, speed: 3, response: 0.25 };
+    const a = new BoatMotion();
+    let t = 0;
+    for (let i = 0; i < 200; i++) a.update((t += 0.016), controls, HULL, wave(t));
+    const snapshot = a.snapshot(t)!;
+    expect(a.snapshot(t + 1)).toBeNull();
+    const b = new BoatMotion();
+    b.restore(snapshot, t);
+    expect(b.update(t, controls, HULL, wave(t)).pose).toEqual(a.update(t, controls, HULL, wave(t)).pose);
+    for (let i = 0; i < 50; i++) {
+      t += 0.016;
+      expect(b.update(t, controls, HULL, wave(t)).pose).toEqual(a.update(t, controls, HULL, wave(t)).pose);
+    }
   });
 
   it('is deterministic for a sequence of times and stays in its band on a moving sea', () => {

@@ -1,8 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { paramKeys } from '../../src/sim/params';
-import { message, MESSAGE_IDS } from '../../src/sim/message';
+import { message, MESSAGE_IDS, type MessageId } from '../../src/sim/message';
 import { preferredLanguage, SPANISH_PARAM_LABELS, Translator } from '../../src/app/i18n';
 import { parseUrlState } from '../../src/app/urlState';
+
+/** Values that carry English text, which only the English notice repeats. */
+const ENGLISH_ONLY: Partial<Record<MessageId, string>> = { startFailed: 'E7', boatLoadFailed: 'R7' };
 
 describe('language', () => {
   it('follows the first browser language we speak, else English', () => {
@@ -42,8 +45,12 @@ describe('language', () => {
       const en = new Translator('en').message(m);
       expect(es, id).not.toBe(en);
       expect(es.length, id).toBeGreaterThan(10);
-      expect(tokens.filter((t) => es.includes(t)), id).toEqual(tokens.filter((t) => en.includes(t)));
+      // An inner error is English text (a browser's or library's): Spanish leaves it to the console (issue 11.7).
+      const english = ENGLISH_ONLY[id];
+      const expected = tokens.filter((t) => en.includes(t) && t !== english);
+      expect(tokens.filter((t) => es.includes(t)), id).toEqual(expected);
+      if (english) expect(en, id).toContain(english);
     }
-    expect(MESSAGE_IDS.length).toBe(21);
+    expect(MESSAGE_IDS.length).toBe(27);
   });
 });
