@@ -4,6 +4,9 @@ import { FrameLoop } from '../../src/app/frameLoop';
 import { paramsChanged } from '../../src/sim/paramChanges';
 import { defaultParams } from '../../src/sim/params';
 import type { RenderStats } from '../../src/render/oceanView';
+import { shareUrl } from '../../src/app/sharing';
+import { parseUrlState } from '../../src/app/urlState';
+import type { BoatSnapshot } from '../../src/sim/boatMotion';
 
 const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
 
@@ -70,5 +73,23 @@ describe('FrameLoop', () => {
     expect(frames.length).toBe(before + 1);
     loop.dispose();
     expect(loop.isLooping).toBe(false);
+  });
+});
+
+describe('shareUrl', () => {
+  it("carries the view, the boat's motion at its time and the page's choices, and reads back as they were (issue 11.1)", () => {
+    const params = { ...defaultParams(), boatSpeed: 2.4, boatHeading: 30 };
+    // Values with full double precision, so a link that rounds any of them shows.
+    const boatState: BoatSnapshot = { x: 6.361234567891, z: -5.33, heading: { value: 0.1 / 3, velocity: -0.2 }, heave: { value: 1 / 7, velocity: 0.01 }, pitch: { value: -0.02, velocity: 1e-5 }, roll: { value: 0.03, velocity: -2e-4 } };
+    const camera = { position: [10, 4, 12] as [number, number, number], target: [0, 0, 0] as [number, number, number] };
+    const page = { shareBase: 'https://example.org/ocean/', language: 'es' as const, state: { sky: 'skies/dusk', boat: 'models/b.glb', embed: true } };
+    const url = shareUrl(page, { params, time: 3.25, camera, boatState });
+    expect(url.startsWith('https://example.org/ocean/?')).toBe(true);
+    const back = parseUrlState(url.slice(url.indexOf('?')));
+    expect(back.notices).toEqual([]);
+    expect(back).toMatchObject({ time: 3.25, camera, boatState, language: 'es', sky: 'skies/dusk', boat: 'models/b.glb', embed: true });
+    expect(back.params).toEqual(params);
+    // Without a state (the boat last floated at another time) the link lets it start afresh.
+    expect(parseUrlState(shareUrl(page, { params, time: 3.25, camera, boatState: null }).split('?')[1]).boatState).toBeNull();
   });
 });
