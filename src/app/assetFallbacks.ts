@@ -28,8 +28,6 @@ export async function loadBoatOrNotify(container: HTMLElement, url: string, load
   try {
     return await loadBoatModel(url);
   } catch (error) {
-    // The notice in the page's language; the English detail for the console.
-    console.error('The boat could not be loaded:', error);
     notify(messageOf(error, 'boatLoadFailed'));
     return null;
   } finally {

@@ -62,6 +62,7 @@ async function fetchBoatModel(url: string): Promise<BoatModel> {
   } catch (error) {
     const reason = error instanceof Error ? error.message : String(error);
     // The loader's reason is English and technical: the console gets it, the notice does not.
+    console.warn(`Oceano: the boat model "${url}" could not be parsed: ${reason}`);
     throw new MessageError(message('boatNotGltf', { url }), `The boat model "${url}" is not a valid glTF model (${reason}).`);
   }
   const box = new Box3().setFromObject(object);
