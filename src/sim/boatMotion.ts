@@ -58,7 +58,9 @@ const wrapSigned = (angle: number) => angle - TWO_PI * Math.floor((angle + Math.
  * longer than `maxStep` (a jump with setTime) puts the boat exactly on its target pose, so
  * a frozen link without a boat state shows the true pose of that instant. A step of zero
  * (a paused view drawn again) holds the springs where they were, so pausing freezes the
- * boat as it was and a share link made then (snapshot/restore) reproduces it.
+ * boat as it was and a share link made then (snapshot/restore) reproduces it; unless the
+ * commanded heading changed since the last update (the GUI or the API steered a paused
+ * view), which puts the boat at once on its true pose for the new heading.
  */
 export class BoatMotion {
   private x: number;
@@ -70,6 +72,8 @@ export class BoatMotion {
   /** Unwrapped, so the spring turns the short way round; reported in [0, 2π). */
   private heading: FollowerState = { value: 0, velocity: 0 };
   private current: BoatMotionState | null = null;
+  /** The heading commanded at the last update; null after a restore, which does not know it. */
+  private command: number | null = null;
 
   constructor(
     start: readonly [number, number] = BOAT_START,
@@ -84,8 +88,11 @@ export class BoatMotion {
     this.lastTime = time;
     const stepping = dt > 0 && dt <= this.maxStep;
     // The clock stood still (a paused view drawn again): the springs stand still too, kept
-    // within their bands of a target that parameters may have moved.
-    const holding = dt === 0 && this.current !== null;
+    // within their bands of a target that parameters may have moved; a new heading is the
+    // user turning the boat, shown at once as before.
+    const steeredStill = this.command !== null && controls.heading !== this.command;
+    const holding = dt === 0 && this.current !== null && !steeredStill;
+    this.command = controls.heading;
     if (stepping) {
       const commanded = this.heading.value + wrapSigned(controls.heading - this.heading.value);
       this.heading = followStep(this.heading, commanded, dt, 1 / HEADING_RESPONSE, HEADING_BAND);
@@ -137,6 +144,7 @@ export class BoatMotion {
     this.pitch = { ...snapshot.pitch };
     this.roll = { ...snapshot.roll };
     this.lastTime = time;
+    this.command = null;
     // Marks the motion as under way, so the first update holds the restored springs.
     this.current = { pose: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value }, target: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value } };
   }

@@ -101,6 +101,22 @@ describe('BoatMotion', () => {
     expect(frozen.pose).toEqual(held.pose);
   });
 
+  it('turns at once onto its true pose when a new heading is commanded while the clock stands still', () => {
+    const motion = new BoatMotion([3, -7]);
+    let t = 10;
+    let state = motion.update(t, still, HULL, wave(t));
+    for (let i = 0; i < 30; i++) state = motion.update((t += 0.016), still, HULL, wave(t));
+    expect(state.pose).not.toEqual(state.target);
+    // Drawn again unchanged, it holds its damped pose (issue 11.1).
+    expect(motion.update(t, still, HULL, wave(t)).pose).toEqual(state.pose);
+    // The GUI or setParams turned a paused boat: the picture shows it on its new heading, as a first frame would.
+    const turned = motion.update(t, { ...still, heading: 1.5 }, HULL, wave(t));
+    expect(turned.pose.heading).toBe(1.5);
+    expect(turned.pose).toEqual(turned.target);
+    // Drawn again with that heading, it holds.
+    expect(motion.update(t, { ...still, heading: 1.5 }, HULL, wave(t)).pose).toEqual(turned.pose);
+  });
+
   it('rebuilds itself exactly from a snapshot, held and then moving on', () => {
     const controls = { heading: 1.2, speed: 3, response: 0.25 };
     const a = new BoatMotion();
