@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
-import { compareWithReference, diffPngs } from './imageCompare';
+import { compareWithReference, describeDifference, diffPngs, measureDifference, withinTolerance } from './imageCompare';
 import { DIVE_QUERY } from './referenceViews';
 import { highFrequencyEnergy } from '../support/imageEnergy';
 
@@ -42,6 +42,28 @@ describe('under the water', () => {
     console.log(`[oceano] high-frequency energy: blur off ${sharp.toFixed(2)}, blur σ = 3 px ${blurred.toFixed(2)}`);
     expect(sharp).toBeGreaterThan(0);
     expect(blurred).toBeLessThan(sharp * 0.5);
+    await page.close();
+  });
+
+  it('draws the same shafts from the window generic wave models get as from the seed\'s repeating tile', async () => {
+    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
+    const tile = await canvasPng(page);
+    await page.evaluate(() => {
+      window.oceano.debug.forceShaftLightWindow(true);
+      window.oceano.renderFrame();
+    });
+    const windowed = await canvasPng(page);
+    // The window's corner is on the tile's texel lattice, so both bakes hold the lens at the
+    // same points and the god rays read the same values (src/sim/shaftLightTile.ts).
+    const same = measureDifference(tile, windowed);
+    console.log(`[oceano] shaft light, window vs tile: ${describeDifference(same)}`);
+    expect(withinTolerance(same), describeDifference(same)).toBe(true);
+    // Negative control: the same comparison sees the shafts' share of the picture, here made
+    // 25 % brighter, which a window baked at the wrong place or with the wrong lens would move.
+    await page.evaluate(() => window.oceano.setParams({ godRaysIntensity: 1.25 * window.oceano.getParams().godRaysIntensity }));
+    const brighter = measureDifference(tile, await canvasPng(page));
+    expect(withinTolerance(brighter), describeDifference(brighter)).toBe(false);
+    expect(consoleErrors).toEqual([]);
     await page.close();
   });
 
