@@ -5,6 +5,7 @@
 // Jacobian of the surface-to-floor map). Folds of that map are the bright lines.
 
 uniform vec3 uCausticsSunDirection; // unit vector towards the sun, in the air
+uniform vec3 uCausticsRefractedSun; // the sunlight's direction under a flat sea (from the CPU)
 uniform float uCausticsStrength;    // 0: flat light, 1: physical concentration
 
 #include <oceano_constants>
@@ -32,7 +33,7 @@ float causticLight(vec3 p) {
   // that only lift points, within the horizontal displacement's reach for choppy ones).
   if (p.y >= waveDisplacement(p.xz).y) return 1.0;
   vec3 light = -uCausticsSunDirection;
-  vec3 flatRay = refract(light, vec3(0.0, 1.0, 0.0), CAUSTICS_AIR_OVER_WATER);
+  vec3 flatRay = uCausticsRefractedSun;
   // The surface point above p along the ray a flat sea would send there.
   vec2 s = p.xz - flatRay.xz * (p.y / flatRay.y);
   vec2 a = causticLanding(s, p.y, light);

@@ -41,6 +41,8 @@ export interface OceanoApi {
     heightmaps(): { size: number; data: Float32Array }[];
     /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
     lodUpdateMs(batches?: number): number;
+    /** Under the water: bake the shaft light as the window generic wave models get, even for the seed. */
+    forceShaftLightWindow(on: boolean): void;
   };
   readonly three: Pick<OceanView, 'renderer' | 'scene' | 'camera'>;
 }
@@ -75,6 +77,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
       passTimings: () => app.debugView().profileFrame(app.clock.time),
       heightmaps: () => (app.debugView().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
       lodUpdateMs: (batches) => app.debugView().timeLodUpdate(checkBatches(batches)),
+      forceShaftLightWindow: (on) => app.debugView().forceShaftLightWindow(on === true),
     },
     get three() {
       const view = app.debugView();

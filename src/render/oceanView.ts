@@ -315,6 +315,14 @@ export class OceanView {
     return [{ name: 'scene', ms: performance.now() - start }];
   }
 
+  /**
+   * Debug: bake the shaft light as a window around the camera even where the model's lens
+   * repeats, so a test can compare the path generic wave models take with the tile.
+   */
+  forceShaftLightWindow(on: boolean): void {
+    this.underwaterPost().forceShaftLightWindow = on;
+  }
+
   /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
   probeSurface(points: readonly (readonly [number, number])[], time: number): ProbeSample[] {
     this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding);

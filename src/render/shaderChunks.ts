@@ -2,6 +2,7 @@ import { ShaderChunk } from 'three';
 import tiledHeightmap from '../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../shaders/waterVolume.glsl?raw';
 import caustics from '../../shaders/caustics.glsl?raw';
+import waterline from '../../shaders/waterline.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 
 /**
@@ -16,6 +17,8 @@ const chunks: Record<string, string> = {
   oceano_water_volume: waterVolume,
   // Needs <oceano_waves> included before it; see src/render/causticsUniforms.ts.
   oceano_caustics: caustics,
+  // Needs <oceano_waves> included before it: the underwater passes' waterline test.
+  oceano_waterline: waterline,
 };
 
 /** ShaderChunk is typed with three's own chunk names only; ours are added beside them. */

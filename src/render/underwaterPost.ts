@@ -1,7 +1,10 @@
 import {
+  ClampToEdgeWrapping,
   DepthTexture,
   HalfFloatType,
+  LinearFilter,
   Matrix4,
+  RepeatWrapping,
   ShaderMaterial,
   Vector2,
   Vector3,
@@ -13,13 +16,15 @@ import {
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
-import { ShaderPass } from 'three/addons/postprocessing/ShaderPass.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
-import type { Pass } from 'three/addons/postprocessing/Pass.js';
+import { FullScreenQuad, Pass } from 'three/addons/postprocessing/Pass.js';
 import fullscreenVertex from '../../shaders/fullscreen.vert?raw';
 import underwaterFragment from '../../shaders/underwater.frag?raw';
 import blurFragment from '../../shaders/gaussianBlur.frag?raw';
-import { BLUR_MAX_RADIUS, gaussianKernel } from '../sim/gaussianKernel';
+import shaftLightFragment from '../../shaders/shaftLight.frag?raw';
+import compositeFragment from '../../shaders/underwaterComposite.frag?raw';
+import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel } from '../sim/gaussianKernel';
+import { planShaftLightTile, type ShaftLightTile } from '../sim/shaftLightTile';
 import { registerShaderChunks } from './shaderChunks';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
@@ -29,128 +34,236 @@ export interface PassTiming {
   ms: number;
 }
 
-/** The water pass reads the depth the scene pass wrote along with its colour. */
-class WaterVolumePass extends ShaderPass {
-  render(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget, deltaTime: number, maskActive: boolean): void {
-    this.uniforms.tDepth.value = readBuffer.depthTexture;
-    super.render(renderer, writeBuffer, readBuffer, deltaTime, maskActive);
+/** The shaft-light texture: repeating for one period of the lens, clamped for a window. */
+function shaftLightTarget(tile: ShaftLightTile): WebGLRenderTarget {
+  const wrap = tile.kind === 'tile' ? RepeatWrapping : ClampToEdgeWrapping;
+  return new WebGLRenderTarget(tile.size, tile.size, {
+    type: HalfFloatType,
+    minFilter: LinearFilter,
+    magFilter: LinearFilter,
+    wrapS: wrap,
+    wrapT: wrap,
+    depthBuffer: false,
+  });
+}
+
+/** Half of a drawing-buffer size, rounded up so the half-resolution image covers every pixel. */
+const half = (pixels: number) => Math.max(1, Math.ceil(pixels / 2));
+
+/**
+ * A full-screen draw of one material into a target chosen when the frame runs: its own
+ * (then it leaves the composer's buffers alone, needsSwap false) or the composer's
+ * write buffer, or the canvas when it is the last pass.
+ */
+class QuadPass extends Pass {
+  private readonly quad: FullScreenQuad;
+
+  constructor(
+    readonly material: ShaderMaterial,
+    private readonly prepare: (readBuffer: WebGLRenderTarget) => WebGLRenderTarget | 'composer',
+  ) {
+    super();
+    this.quad = new FullScreenQuad(material);
+  }
+
+  get uniforms(): Record<string, IUniform> {
+    return this.material.uniforms;
+  }
+
+  render(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget): void {
+    const target = this.prepare(readBuffer);
+    this.needsSwap = target === 'composer';
+    renderer.setRenderTarget(target !== 'composer' ? target : this.renderToScreen ? null : writeBuffer);
+    this.quad.render(renderer);
+  }
+
+  dispose(): void {
+    this.material.dispose();
+    this.quad.dispose();
   }
 }
 
-function blurPass(name: string): ShaderPass {
-  const material = new ShaderMaterial({
+/**
+ * Switches a #define: a frame's case (god rays or not, a waterline across the view or not)
+ * is compiled in, not branched on, because SwiftShader runs both sides of a branch. three.js
+ * keeps each compiled variant, so switching back and forth compiles each once.
+ */
+function setDefine(material: ShaderMaterial, name: string, on: boolean): void {
+  if (name in material.defines === on) return;
+  if (on) material.defines[name] = '';
+  else delete material.defines[name];
+  material.needsUpdate = true;
+}
+
+function blurMaterial(name: string, step: Vector2): ShaderMaterial {
+  return new ShaderMaterial({
     name,
     vertexShader: fullscreenVertex,
     fragmentShader: blurFragment,
     uniforms: {
       tDiffuse: { value: null },
-      uStep: { value: new Vector2() },
-      uWeights: { value: Array.from(gaussianKernel(0, BLUR_MAX_RADIUS)) },
-      uRadius: { value: 0 },
-      uLastMaskUse: { value: name === 'BlurVertical' },
+      uStep: { value: step },
+      uOffsets: { value: Array.from(new Float32Array(BLUR_MAX_TAPS)) },
+      uWeights: { value: Array.from(new Float32Array(BLUR_MAX_TAPS)) },
+      uTaps: { value: 1 },
     },
   });
-  return new ShaderPass(material);
 }
 
 /**
- * What the camera sees from under the water, as EffectComposer passes: the scene, the
- * water volume (fog, absorption, god rays, and the per-pixel waterline mask), a separable
- * Gaussian blur (horizontal, then vertical) and the output pass (tone mapping, sRGB).
- * Only used while some of the view is under the water; above it, the view renders directly.
+ * What the camera sees from under the water, as EffectComposer passes: the scene; the
+ * shaft-light tile the god rays read; the water volume (fog, absorption, god rays, and
+ * the per-pixel waterline mask); and with the blur on, a separable Gaussian blur
+ * (horizontal, then vertical) and a composite that puts the sharp air side back and
+ * tone-maps. The water pass and the blur run at half resolution when the blur is on: the
+ * blur softens that detail anyway, and they were three quarters of the frame's cost at
+ * full resolution (issue 14). With the blur off, the water pass runs at full resolution
+ * and an OutputPass tone-maps. Only used while some of the view is under the water; above
+ * it, the view renders directly.
  */
 export class UnderwaterPost {
   private readonly composer: EffectComposer;
   private readonly scenePass: RenderPass;
-  private readonly volumePass: WaterVolumePass;
-  private readonly blurH: ShaderPass;
-  private readonly blurV: ShaderPass;
+  private readonly shaftPass: QuadPass;
+  private readonly volumePass: QuadPass;
+  private readonly blurH: QuadPass;
+  private readonly blurV: QuadPass;
+  private readonly compositePass: QuadPass;
   private readonly outputPass: OutputPass;
   private readonly named: [string, Pass][];
+  /** The baked shaft light; remade when the tile's kind or size changes (a switch of wave model). */
+  private shaftTarget: WebGLRenderTarget;
+  private shaftTile: ShaftLightTile = { kind: 'tile', origin: [0, 0], extent: 1, size: 1 };
+  /** Debug: bake a window even for a model whose lens repeats (tests compare the two). */
+  forceShaftLightWindow = false;
+  /** Half-resolution premultiplied water, ping-ponged by the blur: water → A, blurH → B, blurV → A. */
+  private readonly halfA: WebGLRenderTarget;
+  private readonly halfB: WebGLRenderTarget;
+  private blurOn = false;
 
   constructor(
     private readonly renderer: WebGLRenderer,
     scene: Scene,
     private readonly camera: PerspectiveCamera,
-    waves: WaveBinding,
+    private readonly waves: WaveBinding,
     shared: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
   ) {
     registerShaderChunks();
     const size = renderer.getDrawingBufferSize(new Vector2());
     const target = new WebGLRenderTarget(size.x, size.y, { type: HalfFloatType, depthTexture: new DepthTexture(size.x, size.y) });
+    const halfOptions = { type: HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false };
+    this.halfA = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
+    this.halfB = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
+    this.shaftTarget = shaftLightTarget(this.shaftTile);
     this.composer = new EffectComposer(renderer, target);
     this.scenePass = new RenderPass(scene, camera);
-    this.volumePass = new WaterVolumePass(
+
+    // Where the bake lies, the same objects in the bake and the water pass.
+    const tile: Record<string, IUniform> = { uShaftOrigin: { value: new Vector2() }, uShaftExtent: { value: 1 } };
+    this.shaftPass = new QuadPass(
+      waves.attach(new ShaderMaterial({ name: 'UnderwaterShaftLight', vertexShader: fullscreenVertex, fragmentShader: shaftLightFragment, uniforms: { ...tile } })),
+      () => this.shaftTarget,
+    );
+    // The view's uniforms, the same objects in the water pass and the composite.
+    const view: Record<string, IUniform> = {
+      tDepth: { value: null },
+      uProjectionInverse: { value: new Matrix4() },
+      uCameraWorld: { value: new Matrix4() },
+      uEye: { value: new Vector3() },
+      uNear: { value: 0.1 },
+      uFar: { value: 1000 },
+    };
+    this.volumePass = new QuadPass(
       waves.attach(new ShaderMaterial({
         name: 'UnderwaterVolume',
         vertexShader: fullscreenVertex,
         fragmentShader: underwaterFragment,
-        uniforms: {
-          ...shared,
-          tDiffuse: { value: null },
-          tDepth: { value: null },
-          uProjectionInverse: { value: new Matrix4() },
-          uCameraWorld: { value: new Matrix4() },
-          uEye: { value: new Vector3() },
-          uNear: { value: 0.1 },
-          uFar: { value: 1000 },
-          uPerPixelWaterline: { value: false },
-          uGodRays: { value: 0 },
-          uWriteMask: { value: false },
-        },
+        uniforms: { ...shared, ...view, ...tile, tDiffuse: { value: null }, tShaftLight: { value: this.shaftTarget.texture }, uGodRays: { value: 0 }, uWriteMask: { value: false } },
       })),
+      (readBuffer) => {
+        this.volumePass.uniforms.tDiffuse.value = readBuffer.texture;
+        view.tDepth.value = readBuffer.depthTexture;
+        return this.blurOn ? this.halfA : 'composer';
+      },
     );
-    this.blurH = blurPass('BlurHorizontal');
-    this.blurV = blurPass('BlurVertical');
+    const stepH = new Vector2();
+    const stepV = new Vector2();
+    this.blurH = new QuadPass(blurMaterial('BlurHorizontal', stepH), () => {
+      this.blurH.uniforms.tDiffuse.value = this.halfA.texture;
+      return this.halfB;
+    });
+    this.blurV = new QuadPass(blurMaterial('BlurVertical', stepV), () => {
+      this.blurV.uniforms.tDiffuse.value = this.halfB.texture;
+      return this.halfA;
+    });
+    this.compositePass = new QuadPass(
+      waves.attach(new ShaderMaterial({
+        name: 'UnderwaterComposite',
+        vertexShader: fullscreenVertex,
+        fragmentShader: compositeFragment,
+        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.halfA.texture } },
+      })),
+      (readBuffer) => {
+        this.compositePass.uniforms.tDiffuse.value = readBuffer.texture;
+        view.tDepth.value = readBuffer.depthTexture;
+        return 'composer';
+      },
+    );
     this.outputPass = new OutputPass();
     this.named = [
       ['scene', this.scenePass],
+      ['shafts', this.shaftPass],
       ['water', this.volumePass],
       ['blurH', this.blurH],
       ['blurV', this.blurV],
+      ['composite', this.compositePass],
       ['output', this.outputPass],
     ];
     for (const [, pass] of this.named) this.composer.addPass(pass);
+    this.setBlur(0);
   }
 
   setSize(width: number, height: number, pixelRatio: number): void {
     this.composer.setPixelRatio(pixelRatio);
     this.composer.setSize(width, height);
-    this.updateBlurSteps();
+    const size = this.renderer.getDrawingBufferSize(new Vector2());
+    for (const target of [this.halfA, this.halfB]) target.setSize(half(size.x), half(size.y));
+    (this.blurH.uniforms.uStep.value as Vector2).set(1 / half(size.x), 0);
+    (this.blurV.uniforms.uStep.value as Vector2).set(0, 1 / half(size.y));
   }
 
-  /** Blur σ in pixels; 0 switches both blur passes off. */
+  /** Blur σ in screen pixels; 0 switches the blur, and the half-resolution water, off. */
   setBlur(sigma: number): void {
-    const weights = Array.from(gaussianKernel(sigma, BLUR_MAX_RADIUS));
-    const radius = sigma === 0 ? 0 : Math.min(BLUR_MAX_RADIUS, Math.ceil(3 * sigma));
-    this.volumePass.uniforms.uWriteMask.value = sigma > 0;
+    this.blurOn = sigma > 0;
+    const kernel = linearSampledKernel(halfResolutionSigma(sigma), BLUR_MAX_RADIUS, BLUR_MAX_TAPS);
+    this.volumePass.uniforms.uWriteMask.value = this.blurOn;
+    for (const pass of [this.blurH, this.blurV, this.compositePass]) pass.enabled = this.blurOn;
+    this.outputPass.enabled = !this.blurOn;
     for (const pass of [this.blurH, this.blurV]) {
-      pass.enabled = sigma > 0;
-      pass.uniforms.uWeights.value = weights;
-      pass.uniforms.uRadius.value = radius;
+      pass.uniforms.uOffsets.value = Array.from(kernel.offsets);
+      pass.uniforms.uWeights.value = Array.from(kernel.weights);
+      pass.uniforms.uTaps.value = kernel.taps;
     }
   }
 
   setGodRays(intensity: number): void {
     this.volumePass.uniforms.uGodRays.value = intensity;
+    setDefine(this.volumePass.material, 'GOD_RAYS', intensity > 0);
+    // No god rays, nothing reads the shaft light.
+    this.shaftPass.enabled = intensity > 0;
   }
 
-  private updateBlurSteps(): void {
-    const size = this.renderer.getDrawingBufferSize(new Vector2());
-    (this.blurH.uniforms.uStep.value as Vector2).set(1 / size.x, 0);
-    (this.blurV.uniforms.uStep.value as Vector2).set(0, 1 / size.y);
-  }
-
-  /** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
+/** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
   render(perPixelWaterline: boolean, afterEachPass?: (name: string) => void): number {
-    const u = this.volumePass.uniforms;
+    const u = this.volumePass.uniforms; // the view uniforms are shared with the composite
     this.camera.updateMatrixWorld();
     (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);
     (u.uCameraWorld.value as Matrix4).copy(this.camera.matrixWorld);
     (u.uEye.value as Vector3).copy(this.camera.position);
     u.uNear.value = this.camera.near;
     u.uFar.value = this.camera.far;
-    u.uPerPixelWaterline.value = perPixelWaterline;
+    if (this.shaftPass.enabled) this.placeShaftLight();
+    for (const pass of [this.volumePass, this.compositePass]) setDefine(pass.material, 'PER_PIXEL_WATERLINE', perPixelWaterline);
     const restore: [Pass, Pass['render']][] = [];
     if (afterEachPass) {
       for (const [name, pass] of this.named) {
@@ -170,6 +283,25 @@ export class UnderwaterPost {
     return this.named.filter(([, pass]) => pass.enabled).length;
   }
 
+  /** Plans this frame's bake of the shaft light (src/sim/shaftLightTile.ts) and points the passes at it. */
+  private placeShaftLight(): void {
+    const model = this.waves.model;
+    const eye = this.camera.position;
+    const sun = this.volumePass.uniforms.uRefractedSun.value as Vector3;
+    const period = this.forceShaftLightWindow ? null : model.lensPeriod;
+    const tile = planShaftLightTile(period, [eye.x, eye.y, eye.z], [sun.x, sun.y, sun.z]);
+    if (tile.kind !== this.shaftTile.kind || tile.size !== this.shaftTile.size) {
+      this.shaftTarget.dispose();
+      this.shaftTarget = shaftLightTarget(tile);
+      this.volumePass.uniforms.tShaftLight.value = this.shaftTarget.texture;
+    }
+    this.shaftTile = tile;
+    const u = this.volumePass.uniforms;
+    (u.uShaftOrigin.value as Vector2).fromArray(tile.origin);
+    u.uShaftExtent.value = tile.extent;
+    setDefine(this.volumePass.material, 'SHAFT_LIGHT_WINDOW', tile.kind === 'window');
+  }
+
   /** Each enabled pass's cost in one frame, with the GPU waited for after each. */
   profile(perPixelWaterline: boolean, sync: () => void): PassTiming[] {
     const timings: PassTiming[] = [];
@@ -185,7 +317,9 @@ export class UnderwaterPost {
   }
 
   dispose(): void {
+    for (const pass of [this.shaftPass, this.volumePass, this.compositePass]) this.waves.detach(pass.material);
     for (const [, pass] of this.named) pass.dispose();
+    for (const target of [this.shaftTarget, this.halfA, this.halfB]) target.dispose();
     this.composer.dispose();
   }
 }

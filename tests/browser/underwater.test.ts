@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
-import { compareWithReference, diffPngs } from './imageCompare';
+import { compareWithReference, describeDifference, diffPngs, measureDifference, withinTolerance } from './imageCompare';
 import { DIVE_QUERY } from './referenceViews';
 import { highFrequencyEnergy } from '../support/imageEnergy';
 
@@ -21,9 +21,10 @@ describe('under the water', () => {
     const stats = await page.evaluate(() => window.oceano.stats());
     expect(stats.underwater).toBe(true);
     expect(stats.submersion).toBe('below');
-    expect(stats.composerPasses).toBe(5);
+    expect(stats.composerPasses).toBe(6);
     const timings = await page.evaluate(() => window.oceano.debug.passTimings());
-    expect(timings.map((t) => t.name)).toEqual(['scene', 'water', 'blurH', 'blurV', 'output']);
+    // The water and the blur at half resolution; the composite also tone-maps, so no output pass.
+    expect(timings.map((t) => t.name)).toEqual(['scene', 'shafts', 'water', 'blurH', 'blurV', 'composite']);
     const reference = compareWithReference('underwater-seed1-t10', png);
     expect(reference.matches, reference.summary).toBe(true);
     expect(consoleErrors).toEqual([]);
@@ -33,13 +34,36 @@ describe('under the water', () => {
   it('lowers the high-frequency energy of the same frame when the blur is on', async () => {
     const { page } = await openOcean(harness, `${DIVE_QUERY}&blurStrength=0`);
     const sharp = energyOf(await canvasPng(page));
-    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(3);
+    // Blur off: scene, shafts, water at full resolution, output.
+    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(4);
     await page.evaluate(() => window.oceano.setParams({ blurStrength: 3 }));
     const blurred = energyOf(await canvasPng(page));
-    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(5);
+    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(6);
     console.log(`[oceano] high-frequency energy: blur off ${sharp.toFixed(2)}, blur σ = 3 px ${blurred.toFixed(2)}`);
     expect(sharp).toBeGreaterThan(0);
     expect(blurred).toBeLessThan(sharp * 0.5);
+    await page.close();
+  });
+
+  it('draws the same shafts from the window generic wave models get as from the seed\'s repeating tile', async () => {
+    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
+    const tile = await canvasPng(page);
+    await page.evaluate(() => {
+      window.oceano.debug.forceShaftLightWindow(true);
+      window.oceano.renderFrame();
+    });
+    const windowed = await canvasPng(page);
+    // The window's corner is on the tile's texel lattice, so both bakes hold the lens at the
+    // same points and the god rays read the same values (src/sim/shaftLightTile.ts).
+    const same = measureDifference(tile, windowed);
+    console.log(`[oceano] shaft light, window vs tile: ${describeDifference(same)}`);
+    expect(withinTolerance(same), describeDifference(same)).toBe(true);
+    // Negative control: the same comparison sees the shafts' share of the picture, here made
+    // 25 % brighter, which a window baked at the wrong place or with the wrong lens would move.
+    await page.evaluate(() => window.oceano.setParams({ godRaysIntensity: 1.25 * window.oceano.getParams().godRaysIntensity }));
+    const brighter = measureDifference(tile, await canvasPng(page));
+    expect(withinTolerance(brighter), describeDifference(brighter)).toBe(false);
+    expect(consoleErrors).toEqual([]);
     await page.close();
   });
 
@@ -91,7 +115,7 @@ describe('under the water', () => {
     expect(stats.underwater).toBe(false);
     expect(stats.submersion).toBe('above');
     expect(stats.composerPasses).toBe(0);
-    // Drawn once, directly: the same frame through the composer would draw the scene and five passes.
+    // Drawn once, directly: the same frame through the composer would draw the scene and five more passes.
     const viaComposer = await page.evaluate(() => {
       window.oceano.setCamera({ position: [0, -6, 40], target: [0, -6, -20] });
       window.oceano.renderFrame();

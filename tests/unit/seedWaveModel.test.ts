@@ -55,6 +55,7 @@ function fakeView(name: string, uniforms: Record<string, IUniform>): WaveModelVi
     name: 'seed',
     model: null as unknown as LiveWaveModel,
     chunkName: `oceano_waves_${name}`,
+    lensPeriod: null,
     uniforms,
     setParams() {},
     update() {},

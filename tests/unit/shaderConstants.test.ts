@@ -3,7 +3,8 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { glslFloat, shaderConstantsChunk } from '../../src/render/shaderConstants';
 import { WATER_IOR } from '../../src/sim/fresnel';
-import { BLUR_MAX_RADIUS } from '../../src/sim/gaussianKernel';
+import { BLUR_MAX_TAPS } from '../../src/sim/gaussianKernel';
+import { GOD_RAY_RANGE } from '../../src/sim/shaftLightTile';
 import { LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../src/sim/lodBands';
 
 const SHADER_DIR = join(__dirname, '../../shaders');
@@ -18,7 +19,9 @@ function shaderFiles(dir: string): string[] {
 function copiesIn(source: string): string[] {
   const found: string[] = [];
   if (/\b1\.333\b/.test(source)) found.push('index of refraction 1.333');
-  if (new RegExp(`\\b${BLUR_MAX_RADIUS}\\b`).test(source)) found.push(`blur radius ${BLUR_MAX_RADIUS}`);
+  // The tap count is a small number found everywhere: a copy shows as an array size or a loop bound.
+  if (new RegExp(`\\[\\s*${BLUR_MAX_TAPS}\\s*\\]|<\\s*${BLUR_MAX_TAPS}\\b|MAX_TAPS\\s+${BLUR_MAX_TAPS}\\b`).test(source)) found.push(`blur taps ${BLUR_MAX_TAPS}`);
+  if (new RegExp(`=\\s*${GOD_RAY_RANGE}\\.0\\b`).test(source)) found.push(`god-ray range ${GOD_RAY_RANGE}`);
   for (const rgb of LOD_BAND_COLORS) {
     if (source.includes(`vec3(${rgb.map(glslFloat).join(', ')})`)) found.push(`band colour ${rgb.join(', ')}`);
   }
@@ -29,7 +32,8 @@ describe('constants shared by TypeScript and GLSL', () => {
   it('are written into the oceano_constants chunk from the TypeScript values', () => {
     const chunk = shaderConstantsChunk();
     expect(chunk).toContain(`#define WATER_IOR ${WATER_IOR}`);
-    expect(chunk).toContain(`#define BLUR_MAX_RADIUS ${BLUR_MAX_RADIUS}`);
+    expect(chunk).toContain(`#define BLUR_MAX_TAPS ${BLUR_MAX_TAPS}`);
+    expect(chunk).toContain('#define GOD_RAY_RANGE 60.0');
     expect(chunk).toContain('#define LOD_BAND_COLORS vec3[6](vec3(0.95, 0.2, 0.15), vec3(0.95, 0.6, 0.1),');
     expect(LOD_BAND_COLORS).toHaveLength(MAX_LOD_BANDS);
   });
@@ -48,7 +52,9 @@ describe('constants shared by TypeScript and GLSL', () => {
 
   it('would be caught if copied into a shader again (negative control)', () => {
     expect(copiesIn('const float WATER_OVER_AIR = 1.333;')).toEqual(['index of refraction 1.333']);
-    expect(copiesIn('#define MAX_RADIUS 24')).toEqual(['blur radius 24']);
+    expect(copiesIn('#define MAX_TAPS 8')).toEqual(['blur taps 8']);
+    expect(copiesIn('uniform float uWeights[8];')).toEqual(['blur taps 8']);
+    expect(copiesIn('const float GOD_RAY_RANGE = 60.0;')).toEqual(['god-ray range 60']);
     expect(copiesIn('vec3(0.5, 0.3, 0.95)')).toEqual(['band colour 0.5, 0.3, 0.95']);
   });
 });

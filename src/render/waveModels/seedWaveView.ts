@@ -2,6 +2,7 @@ import type { DataTexture } from 'three';
 import seedChunk from '../../../shaders/waves/seed.glsl?raw';
 import type { OceanParams } from '../../sim/params';
 import type { SeedWaveModel } from '../../sim/seedWaveModel';
+import { RIPPLE_TILE_SIZE } from '../../sim/surface';
 import { heightmapTexture } from '../dataTextures';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
 import type { WaveModelView } from './waveModelView';
@@ -11,6 +12,8 @@ import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type Surface
 export class SeedWaveView implements WaveModelView {
   readonly name = 'seed';
   readonly chunkName = 'oceano_waves_seed';
+  /** The lens is the ripples alone, two heightmaps tiled on the same 96 m square. */
+  readonly lensPeriod = RIPPLE_TILE_SIZE;
   readonly uniforms: SurfaceUniforms;
   heightmapTextures: [DataTexture, DataTexture];
 

@@ -23,6 +23,12 @@ export interface WaveModelView {
   readonly chunkName: string;
   /** What the chunk reads. The same objects go into every material bound to this model. */
   readonly uniforms: Readonly<Record<string, IUniform>>;
+  /**
+   * Metres after which waveLensHeight repeats along x and along z, or null where it does not
+   * repeat. The underwater shaft light is baked over one period when it is small enough, else
+   * over a window around the camera (src/sim/shaftLightTile.ts).
+   */
+  readonly lensPeriod: number | null;
   /** Textures the "heightmap" teaching view shows, where the model has any. */
   readonly heightmapTextures?: readonly [Texture, Texture];
   /** Passes new parameters to the model and re-uploads whatever they changed. */

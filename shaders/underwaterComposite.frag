@@ -1,0 +1,60 @@
+// The last underwater pass at full resolution, with the blur on: the blurred water from
+// half resolution where the pixel's line of sight starts in the water, the scene, sharp,
+// where it starts in the air, then tone mapping and the output colour space (what
+// OutputPass would do in a pass of its own).
+
+#include <packing>
+#include <oceano_waves>
+#include <oceano_water_volume>
+#include <oceano_waterline>
+
+uniform sampler2D tDiffuse;
+uniform sampler2D tDepth;
+// Premultiplied: rgb is the blurred water colour times the share of water under the kernel, in a.
+uniform sampler2D tBlurred;
+uniform mat4 uProjectionInverse;
+uniform mat4 uCameraWorld;
+uniform vec3 uEye;
+uniform float uNear;
+uniform float uFar;
+
+varying vec2 vUv;
+
+// Below this share of water the blurred colour is mostly rounding (half floats keep 11
+// bits): a water pixel at the waterline with no water pixel within the kernel's reach at
+// half resolution, which the fog alone then colours.
+const float MIN_WATER_SHARE = 1.0 / 512.0;
+
+// Without PER_PIXEL_WATERLINE (the near plane is wholly under the water) every pixel is
+// water and has water all around it: the blurred colour alone. The cases are compiled
+// apart rather than branched on a uniform: SwiftShader runs both sides of a branch.
+void main() {
+#ifdef PER_PIXEL_WATERLINE
+  vec4 scene = texture2D(tDiffuse, vUv);
+  vec4 nearView = uProjectionInverse * vec4(vUv * 2.0 - 1.0, -1.0, 1.0);
+  nearView /= nearView.w;
+  vec3 nearWorld = (uCameraWorld * nearView).xyz;
+  float depthSample = texture2D(tDepth, vUv).x;
+  vec4 blurred = texture2D(tBlurred, vUv);
+  vec3 color;
+  if (startsInAir(scene.a, depthSample, nearWorld)) {
+    color = scene.rgb;
+  } else if (blurred.a >= MIN_WATER_SHARE) {
+    color = blurred.rgb / blurred.a;
+  } else {
+    // Fog alone, unblurred, for the few water pixels with no water beside them at half resolution.
+    float distance = 1e6;
+    if (depthSample < 1.0) {
+      float viewZ = perspectiveDepthToViewZ(depthSample, uNear, uFar);
+      distance = length(nearView.xyz * (viewZ / nearView.z));
+    }
+    color = throughWater(scene.rgb, normalize(nearWorld - uEye), distance);
+  }
+  gl_FragColor = vec4(color, 1.0);
+#else
+  vec4 blurred = texture2D(tBlurred, vUv);
+  gl_FragColor = vec4(blurred.rgb / max(blurred.a, MIN_WATER_SHARE), 1.0);
+#endif
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+}
