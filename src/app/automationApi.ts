@@ -115,7 +115,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     notices: fail,
     shareUrl: fail,
     activity: fail,
-    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail },
+    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail },
     get three(): never {
       throw reason;
     },
