@@ -74,6 +74,7 @@ export type UiTextId =
   | 'canvasLabel'
   | 'panelTitle'
   | 'folderSwell'
+  | 'folderSpectral'
   | 'folderRipples'
   | 'folderLight'
   | 'folderView'
@@ -99,6 +100,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabel: 'Animated 3D ocean under a sky',
     panelTitle: 'Oceano',
     folderSwell: 'Swell',
+    folderSpectral: 'Spectral sea (waves=fft)',
     folderRipples: 'Ripples (Perlin)',
     folderLight: 'Light & water',
     folderView: 'View',
@@ -123,6 +125,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabel: 'Océano 3D animado bajo un cielo',
     panelTitle: 'Oceano',
     folderSwell: 'Oleaje',
+    folderSpectral: 'Mar espectral (waves=fft)',
     folderRipples: 'Ondas (Perlin)',
     folderLight: 'Luz y agua',
     folderView: 'Vista',
@@ -151,6 +154,17 @@ const UI: Record<Language, Record<UiTextId, string>> = {
  */
 export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   waves: 'Modelo de olas',
+  windSpeed: 'Velocidad del viento U10',
+  windDirection: 'Dirección del viento',
+  spectrum: 'Espectro de oleaje',
+  fetch: 'Fetch (JONSWAP)',
+  depth: 'Profundidad (dispersión)',
+  spreading: 'Dispersión direccional s (cos-2s)',
+  choppiness: 'Crestas afiladas λ',
+  fftSize: 'Tamaño de la FFT',
+  foam: 'Espuma',
+  foamThreshold: 'Umbral de espuma (jacobiano)',
+  normalsCompare: 'Comparar normales de pendiente | fabricadas',
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',
   swellFrequency: 'Frecuencia del oleaje',

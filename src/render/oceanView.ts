@@ -144,6 +144,7 @@ export class OceanView {
     this.material.setFresnelEnabled(params.fresnel);
     this.material.wireframe = params.wireframe;
     this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
+    this.material.setNormalsCompare(params.normalsCompare);
     this.showHeightmaps = params.view === 'heightmap';
     this.material.setLodColors(params.lodColors);
     this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };

@@ -66,6 +66,21 @@ export class FftOcean implements WaveModel {
     this.bound = { vertical: sum, horizontal: sea.choppiness * sum };
   }
 
+  /** The time the fields hold (NaN before the first setTime). */
+  get fieldsTime(): number {
+    return this.time;
+  }
+
+  /**
+   * Takes fields computed elsewhere for time t: a Worker running setTime(t) on an FftOcean of
+   * the same SeaState (same seed, hence the same h₀) gives bit-identical arrays.
+   */
+  adoptFields(time: number, fields: readonly CascadeFields[]): void {
+    if (fields.length !== this.fields.length) throw new RangeError(`Expected ${this.fields.length} cascades of fields, got ${fields.length}.`);
+    fields.forEach((f, c) => (this.fields[c] = f));
+    this.time = time;
+  }
+
   /** Evolves to time t (s). Only t mod T matters (quantised dispersion), reduced here in float64. */
   setTime(time: number): void {
     if (time === this.time) return;

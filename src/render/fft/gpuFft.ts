@@ -181,7 +181,8 @@ function spectrumTextures(tile: SpectralTile): { h0: DataTexture; cycles: DataTe
 export class GpuFftOcean {
   readonly sizes: number[];
   readonly targets: WebGLRenderTarget[];
-  private readonly fft: GpuInverseFft;
+  /** The pass runner, shared with passes that read the results (foam). */
+  readonly fft: GpuInverseFft;
   private readonly spectrumMaterials: RawShaderMaterial[];
   private readonly inputs: DataTexture[] = [];
   private readonly evolved: WebGLRenderTarget;

@@ -1,0 +1,143 @@
+import { DEEP } from './dispersion';
+import { FftOcean, type CascadeFields } from './fftOcean';
+import type { OceanParams } from './params';
+import type { SeaState } from './seaState';
+import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample } from './waveModel';
+import type { LiveWaveModel } from './waveModels';
+
+/** The parameters the spectral sea reads; everything else leaves it unchanged. */
+export type FftWaveParams = Pick<
+  OceanParams,
+  'seed' | 'windSpeed' | 'windDirection' | 'spectrum' | 'fetch' | 'depth' | 'spreading' | 'choppiness' | 'fftSize'
+>;
+
+/** The depth parameter's top (1000 m) stands for deep water: every wave the cascades carry has k h > 3 there. */
+export const DEEP_PARAM = 1000;
+
+export function seaStateFromParams(p: FftWaveParams): SeaState {
+  return {
+    windSpeed: p.windSpeed,
+    windDirection: p.windDirection,
+    spectrum: p.spectrum,
+    fetch: p.fetch * 1000,
+    depth: p.depth >= DEEP_PARAM ? DEEP : p.depth,
+    spreading: p.spreading,
+    choppiness: p.choppiness,
+    fftSize: Number(p.fftSize) as SeaState['fftSize'],
+    seed: p.seed,
+  };
+}
+
+/** A key that changes exactly when the drawn sea changes (JSON of the SeaState; Infinity is spelt out). */
+export function seaKey(sea: SeaState): string {
+  return JSON.stringify({ ...sea, depth: String(sea.depth) });
+}
+
+/**
+ * Where fields for a time come from when the main thread must not compute them: a Worker
+ * running the same FftOcean (src/render/waveModels/fftFieldsWorker.ts). request(t) asks for
+ * the fields at t; the answer arrives later through FftWaveModel.receive.
+ */
+export interface FieldSource {
+  request(sea: SeaState, time: number): void;
+  dispose(): void;
+}
+
+/**
+ * How far behind the asked time the fields a Worker delivered may be and still be used: one
+ * or two frames of a playing clock. A larger jump (a seek, a paused setTime, the first frame)
+ * is computed at once on the calling thread, so a frozen time is always exact.
+ */
+export const MAX_LAG_SECONDS = 0.1;
+
+/**
+ * The spectral sea as the app's LiveWaveModel: the CPU twin (FftOcean, float64 fields read
+ * exactly as the GPU reads its textures) plus the policy of when to compute them.
+ *
+ * Synchronous, with one documented lag: displacement / sample / height at time t answer
+ * exactly at t (computing the fields on this thread if they are not held) except while a
+ * Worker is attached and the held fields are at most MAX_LAG_SECONDS older than t: then they
+ * answer from those fields (typically one frame old, the Worker asked to catch up). That is
+ * the playing frame loop: the boat and the underwater switch then cost a few bilinear reads
+ * per frame on the main thread, the FFTs run in the Worker. A paused view, `setTime(t)` then
+ * `sampleSurface`, and every test are exact.
+ */
+export class FftWaveModel implements LiveWaveModel {
+  readonly name = 'fft' as const;
+  ocean: FftOcean;
+  private key: string;
+  private source: FieldSource | null = null;
+
+  constructor(params: FftWaveParams) {
+    const sea = seaStateFromParams(params);
+    this.key = seaKey(sea);
+    this.ocean = new FftOcean(sea);
+  }
+
+  get sea(): SeaState {
+    return this.ocean.setup.sea;
+  }
+
+  /** Returns true when the sea changed (a new h₀: the GPU spectrum textures must be made again). */
+  setParams(params: FftWaveParams): boolean {
+    const sea = seaStateFromParams(params);
+    const key = seaKey(sea);
+    if (key === this.key) return false;
+    this.key = key;
+    this.ocean = new FftOcean(sea);
+    return true;
+  }
+
+  attachSource(source: FieldSource | null): void {
+    this.source?.dispose();
+    this.source = source;
+  }
+
+  /** Fields a FieldSource computed for `sea` at `time`; ignored if the sea changed meanwhile or they are older than those held. */
+  receive(sea: SeaState, time: number, fields: CascadeFields[]): void {
+    if (seaKey(sea) !== this.key) return;
+    const held = this.ocean.fieldsTime;
+    if (!Number.isNaN(held) && time <= held) return;
+    this.ocean.adoptFields(time, fields);
+  }
+
+  /** The time whose fields answer a question about `time` (see the class comment). */
+  private fieldsFor(time: number): number {
+    const held = this.ocean.fieldsTime;
+    if (time === held) return time;
+    if (this.source && time > held && time - held <= MAX_LAG_SECONDS) {
+      this.source.request(this.sea, time);
+      return held;
+    }
+    this.ocean.setTime(time);
+    return time;
+  }
+
+  /** Asks the Worker (if any) for the fields at `time` ahead of use: called once per frame. */
+  prefetch(time: number): void {
+    if (this.source && time !== this.ocean.fieldsTime) this.source.request(this.sea, time);
+  }
+
+  displacement(x: number, z: number, time: number): [number, number, number] {
+    return this.ocean.displacement(x, z, this.fieldsFor(time));
+  }
+
+  /** The height alone: the fixed-point inversion without the normal. */
+  height(x: number, z: number, time: number): number {
+    const at = this.fieldsFor(time);
+    const p = undoHorizontalDisplacement((px, pz) => this.ocean.displacement(px, pz, at), x, z);
+    return this.ocean.displacement(p.x, p.z, at)[1];
+  }
+
+  sample(x: number, z: number, time: number): SurfaceSample {
+    return this.ocean.sample(x, z, this.fieldsFor(time));
+  }
+
+  bounds(): DisplacementBounds {
+    return this.ocean.bounds();
+  }
+
+  dispose(): void {
+    this.attachSource(null);
+  }
+}
