@@ -15,7 +15,10 @@ const PARITY_SEED = 20261121;
 const TIMES = [0, 37.25, 4321.5, 100_000.125, 1_000_000];
 const POINTS_PER_TIME = 96;
 const EXTENT = 3000;
-/** Measured worst |Δheight| (see the log line): 1e-4 m or less; the issue's bound is 1 mm. */
+/**
+ * The issue's bound. Measured worst |Δheight|: 0.24 mm (fresh breeze), 0.76 mm (gale, λ = 1.2: the
+ * float32 FFT of metre-high waves); worst |Δnormal| 1.5e-4; the negative control 3.5 cm.
+ */
 const HEIGHT_TOLERANCE = 1e-3;
 
 const harness = useHarness();
@@ -70,7 +73,7 @@ describe('waves=fft: CPU twin vs drawn mesh', () => {
     const worst = await compare(query, randomCases(), 0);
     console.log(`[oceano] FFT CPU–GPU parity (${query}): max |Δheight| = ${worst.height.toExponential(2)} m at (${worst.at.x}, ${worst.at.z}, t=${worst.at.t}), max |Δnormal| = ${worst.normal.toExponential(2)}`);
     expect(worst.height).toBeLessThan(HEIGHT_TOLERANCE);
-    expect(worst.normal).toBeLessThan(5e-3);
+    expect(worst.normal).toBeLessThan(1e-3);
   });
 
   it('negative control: the twin 20 ms late (one frame) is caught', async () => {
