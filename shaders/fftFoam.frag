@@ -20,7 +20,7 @@ void main() {
   float jxx = texelFetch(uDisplacement, texel, 0).w;
   vec4 d = texelFetch(uDerivatives, texel, 0);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
-  float fresh = clamp((uThreshold - jacobian) * 4.0, 0.0, 1.0);
+  float fresh = clamp((uThreshold - jacobian) * 12.0, 0.0, 1.0);
   float old = texelFetch(uPrevious, texel, 0).r * uDecay;
   outFoam = vec4(max(old, fresh), jacobian, 0.0, 1.0);
 }

@@ -95,7 +95,7 @@ float waveFoam(vec2 gridXZ) {
   float jxx = fftDisplacementFields(gridXZ).w;
   vec4 d = fftDerivativeFields(gridXZ);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
-  float now = smoothstep(uFoamThreshold, uFoamThreshold - 0.35, jacobian);
+  float now = smoothstep(uFoamThreshold, uFoamThreshold - 0.08, jacobian);
   float kept = fftBilinear(uFftFoam0, gridXZ, uFftScale.x).r
              + fftBilinear(uFftFoam1, gridXZ, uFftScale.y).r
              + fftBilinear(uFftFoam2, gridXZ, uFftScale.z).r;

@@ -163,7 +163,7 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   choppiness: 'Crestas afiladas λ',
   fftSize: 'Tamaño de la FFT',
   foam: 'Espuma',
-  foamThreshold: 'Umbral de espuma (jacobiano)',
+  foamThreshold: 'Sesgo del umbral de espuma (jacobiano)',
   normalsCompare: 'Comparar normales de pendiente | fabricadas',
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',

@@ -132,9 +132,9 @@ export class OceanView {
       this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
       this.waveBinding.setModel(this.waveView);
       previous.dispose();
-    } else {
-      this.waveView.setParams(params);
     }
+    // A new view too: parameters it does not take from its model (the FFT's foam) arrive here.
+    this.waveView.setParams(params);
     this.seaBed.setNoiseSeed(params.seed);
     this.params = params;
     const sun = sunDirection(params.sunElevation, params.sunAzimuth);

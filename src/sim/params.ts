@@ -47,7 +47,8 @@ export const paramDefs = {
   choppiness: { kind: 'number', default: 1, min: 0, max: 2, step: 0.05, unit: '', label: 'Choppiness λ' },
   fftSize: { kind: 'choice', default: '128', options: ['64', '128', '256'], label: 'FFT size' },
   foam: { kind: 'boolean', default: true, label: 'Foam' },
-  foamThreshold: { kind: 'number', default: 0.35, min: -0.5, max: 1, step: 0.01, unit: '', label: 'Foam threshold (Jacobian)' },
+  // Added to the Jacobian threshold that gives Monahan's whitecap coverage for the wind (src/sim/whitecaps.ts).
+  foamThreshold: { kind: 'number', default: 0, min: -0.5, max: 0.5, step: 0.01, unit: '', label: 'Foam threshold bias (Jacobian)' },
   seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },
   swellAmplitude: { kind: 'number', default: 1.4, min: 0, max: 4, step: 0.05, unit: 'm', label: 'Swell amplitude' },
   swellFrequency: { kind: 'number', default: 0.05, min: 0.005, max: 0.2, step: 0.001, unit: 'rad/m', label: 'Swell frequency' },

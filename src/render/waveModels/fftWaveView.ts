@@ -2,6 +2,7 @@ import { Vector3, type IUniform, type WebGLRenderer } from 'three';
 import fftChunk from '../../../shaders/waves/fft.glsl?raw';
 import type { OceanParams } from '../../sim/params';
 import type { FftWaveModel } from '../../sim/fftWaveModel';
+import { foamJacobianThreshold } from '../../sim/whitecaps';
 import { FftFoam } from '../fft/fftFoam';
 import { GpuFftOcean } from '../fft/gpuFft';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
@@ -40,7 +41,7 @@ export class FftWaveView implements WaveModelView {
   private foam: FftFoam;
   private time = Number.NaN;
   private foamEnabled = true;
-  private foamThreshold = 0.35;
+  private foamThreshold = 0.7;
 
   constructor(
     readonly model: FftWaveModel,
@@ -88,9 +89,9 @@ export class FftWaveView implements WaveModelView {
 
   setParams(params: OceanParams): void {
     this.foamEnabled = params.foam;
-    this.foamThreshold = params.foamThreshold;
+    this.foamThreshold = foamJacobianThreshold(params.windSpeed, params.choppiness, params.foamThreshold);
     this.uniforms.uFoamEnabled.value = params.foam ? 1 : 0;
-    this.uniforms.uFoamThreshold.value = params.foamThreshold;
+    this.uniforms.uFoamThreshold.value = this.foamThreshold;
     if (!this.model.setParams(params)) return;
     this.foam.dispose();
     this.gpu.dispose();
