@@ -8,7 +8,7 @@ describe('whitecaps', () => {
     expect(whitecapCoverage(4)).toBeLessThan(0.001);
   });
 
-  it('normal quantiles within 4.5e-4 (plus the tables' rounding) of (1.2816, 1.6449, 2.3263, 3.0902)', () => {
+  it('normal quantiles within 4.5e-4 (plus the tables\' rounding) of 1.2816, 1.6449, 2.3263, 3.0902', () => {
     for (const [p, z] of [[0.1, 1.2816], [0.05, 1.6449], [0.01, 2.3263], [0.001, 3.0902]]) expect(Math.abs(upperNormalQuantile(p) - z)).toBeLessThan(4.5e-4 + 5e-5);
   });
 
