@@ -47,29 +47,33 @@ export interface FieldSource {
 }
 
 /**
- * How far behind the asked time the fields a Worker delivered may be and still be used: one
- * or two frames of a playing clock. A larger jump (a seek, a paused setTime, the first frame)
- * is computed at once on the calling thread, so a frozen time is always exact.
+ * The largest step between two successive frame times that still counts as playing. A larger
+ * jump (a seek, a paused setTime, the first frame) is computed at once on the calling thread,
+ * so a frozen time is always exact.
  */
-export const MAX_LAG_SECONDS = 0.1;
+export const MAX_FRAME_STEP = 0.1;
+
+/** Fields older than this are not used even while playing (a Worker that died or fell far behind): compute instead. */
+export const MAX_LAG_SECONDS = 1;
 
 /**
  * The spectral sea as the app's LiveWaveModel: the CPU twin (FftOcean, float64 fields read
  * exactly as the GPU reads its textures) plus the policy of when to compute them.
  *
- * Synchronous, with one documented lag: displacement / sample / height at time t answer
- * exactly at t (computing the fields on this thread if they are not held) except while a
- * Worker is attached and the held fields are at most MAX_LAG_SECONDS older than t: then they
- * answer from those fields (typically one frame old, the Worker asked to catch up). That is
- * the playing frame loop: the boat and the underwater switch then cost a few bilinear reads
- * per frame on the main thread, the FFTs run in the Worker. A paused view, `setTime(t)` then
- * `sampleSurface`, and every test are exact.
+ * Synchronous. `sample` (the API's sampleSurface) and `displacement` are always exact at the
+ * time asked: if the fields held are for another time they are computed on the calling thread
+ * first (tens of ms). `height` (the frame loop's question: boat, underwater switch) is exact
+ * too except while the clock plays with a Worker attached (successive times less than
+ * MAX_FRAME_STEP apart): then it answers from the newest fields the Worker has delivered,
+ * typically a frame or two old (as old as the Worker's FFTs take), and asks it for the
+ * current time. The main thread then spends only bilinear reads per frame on the twin.
  */
 export class FftWaveModel implements LiveWaveModel {
   readonly name = 'fft' as const;
   ocean: FftOcean;
   private key: string;
   private source: FieldSource | null = null;
+  private lastFrameTime = Number.NaN;
 
   constructor(params: FftWaveParams) {
     const sea = seaStateFromParams(params);
@@ -105,11 +109,14 @@ export class FftWaveModel implements LiveWaveModel {
   }
 
   /** The time whose fields answer a question about `time` (see the class comment). */
-  private fieldsFor(time: number): number {
+  private fieldsFor(time: number, exact: boolean): number {
     const held = this.ocean.fieldsTime;
+    const previous = this.lastFrameTime;
+    if (!exact) this.lastFrameTime = time;
     if (time === held) return time;
-    if (this.source && time > held && time - held <= MAX_LAG_SECONDS) {
-      this.source.request(this.sea, time);
+    const playing = !exact && this.source !== null && Math.abs(time - previous) <= MAX_FRAME_STEP && Math.abs(time - held) <= MAX_LAG_SECONDS;
+    if (playing) {
+      this.source?.request(this.sea, time);
       return held;
     }
     this.ocean.setTime(time);
@@ -122,7 +129,7 @@ export class FftWaveModel implements LiveWaveModel {
   }
 
   displacement(x: number, z: number, time: number): [number, number, number] {
-    return this.ocean.displacement(x, z, this.fieldsFor(time));
+    return this.ocean.displacement(x, z, this.fieldsFor(time, true));
   }
 
   /**
@@ -140,13 +147,13 @@ export class FftWaveModel implements LiveWaveModel {
     return { x: p.x, z: p.z, height: this.ocean.displacement(p.x, p.z, at)[1], residual: p.residual };
   }
 
-  /** The height alone: the inversion without the normal. */
+  /** The height alone (the inversion without the normal); lags while playing, see the class comment. */
   height(x: number, z: number, time: number): number {
-    return this.invert(x, z, this.fieldsFor(time)).height;
+    return this.invert(x, z, this.fieldsFor(time, false)).height;
   }
 
   sample(x: number, z: number, time: number): SurfaceSample {
-    const at = this.fieldsFor(time);
+    const at = this.fieldsFor(time, true);
     const p = this.invert(x, z, at);
     return { height: p.height, normal: this.ocean.normalAt(p.x, p.z, at) };
   }
