@@ -96,9 +96,10 @@ float waveFoam(vec2 gridXZ) {
   vec4 d = fftDerivativeFields(gridXZ);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
   float now = smoothstep(uFoamThreshold, uFoamThreshold - 0.08, jacobian);
-  float kept = fftBilinear(uFftFoam0, gridXZ, uFftScale.x).r
-             + fftBilinear(uFftFoam1, gridXZ, uFftScale.y).r
-             + fftBilinear(uFftFoam2, gridXZ, uFftScale.z).r;
+  // The largest tile's foam is left out: its texels are tens of metres wide (22 m in a gale),
+  // which drew soft white blotches; breaking happens at the scale of the shorter waves.
+  float kept = 0.7 * (fftBilinear(uFftFoam1, gridXZ, uFftScale.y).r
+                    + fftBilinear(uFftFoam2, gridXZ, uFftScale.z).r);
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 
