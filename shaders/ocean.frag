@@ -4,6 +4,7 @@
 
 #include <oceano_water_volume>
 #include <oceano_constants>
+#include <oceano_waves>
 
 uniform samplerCube uSky;
 uniform sampler2D uFresnelTable;
@@ -23,6 +24,14 @@ uniform bool uLodColors;
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
 varying float vBand;
+varying vec2 vGridXZ;
+uniform bool uFlatNormals;
+// waves=fft teaching view: slope normals per pixel on the left half of the screen, the
+// fabricated normals per vertex (interpolated, from ocean.vert) on the right.
+uniform bool uNormalsCompare;
+
+// A spectral sea's foam is sea water whipped with air: white, lit by sun and sky.
+const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 
 // The LOD debugger's band colours, near to far.
 const vec3 BAND_COLORS[LOD_BAND_COUNT] = LOD_BAND_COLORS;
@@ -71,6 +80,11 @@ void main() {
   float distance = length(toEye);
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
+#ifdef WAVE_PIXEL_NORMALS
+  // Exact slopes at this pixel's own grid point, not interpolated between vertices.
+  bool fabricatedHalf = uNormalsCompare && (viewMatrix * vec4(vWorldPosition, 1.0)).x > 0.0;
+  if (!uFlatNormals && !fabricatedHalf) n = waveNormal(vGridXZ);
+#endif
   if (uShowNormals) {
     gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
     return;
@@ -99,6 +113,12 @@ void main() {
   float sunVisible = step(0.0, uSunDirection.y);
   float specular = pow(max(dot(n, halfway), 0.0), 900.0) * 40.0;
   color += uSunColor * specular * reflectance * sunVisible;
+
+#ifdef WAVE_FOAM
+  float foam = waveFoam(vGridXZ);
+  float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
+  color = mix(color, FOAM_COLOR * foamLight, foam);
+#endif
 
   vec3 horizon = skyColor(normalize(vec3(-v.x, 0.0, -v.z)));
   float haze = 1.0 - exp(-distance * uHazeDensity);

@@ -15,6 +15,11 @@ attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
 varying float vBand;
+// The undisplaced grid point, for models whose normals and foam are evaluated per pixel.
+varying vec2 vGridXZ;
+#ifdef WAVE_FABRICATED_NORMAL
+uniform bool uNormalsCompare;
+#endif
 
 // Integers, so the snapped vertex lands exactly on the neighbour's vertex.
 int snapEdge(int k, int step) {
@@ -35,6 +40,10 @@ void main() {
   vec3 d = waveDisplacement(gridXZ);
   vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
   vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : waveNormal(gridXZ);
+#ifdef WAVE_FABRICATED_NORMAL
+  if (uNormalsCompare && !uFlatNormals) vNormal = waveFabricatedNormal(gridXZ);
+#endif
+  vGridXZ = gridXZ;
   vWorldPosition = world;
   vBand = aChunk.z;
   gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);

@@ -4,12 +4,13 @@ import type { Translator, UiTextId } from './i18n';
 
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
+  { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'choppiness', 'fftSize', 'foam', 'foamThreshold'] },
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow'] },
   { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
   { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'freezeCulling', 'lodBruteForce'] },
-  { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'view', 'fresnelPlot'] },
+  { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'normalsCompare', 'view', 'fresnelPlot'] },
 ];
 
 /** Views narrower than this (CSS px; a phone held upright) start with the panel folded. */

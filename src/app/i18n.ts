@@ -97,6 +97,7 @@ export type UiTextId =
   | 'canvasLabelNormals'
   | 'panelTitle'
   | 'folderSwell'
+  | 'folderSpectral'
   | 'folderRipples'
   | 'folderLight'
   | 'folderView'
@@ -129,6 +130,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabelNormals: 'Animated 3D ocean coloured by its surface normals',
     panelTitle: 'Oceano',
     folderSwell: 'Swell',
+    folderSpectral: 'Spectral sea (waves=fft)',
     folderRipples: 'Ripples (Perlin)',
     folderLight: 'Light & water',
     folderView: 'View',
@@ -160,6 +162,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabelNormals: 'Océano 3D animado coloreado según las normales de su superficie',
     panelTitle: 'Oceano',
     folderSwell: 'Oleaje',
+    folderSpectral: 'Mar espectral (waves=fft)',
     folderRipples: 'Ondas (Perlin)',
     folderLight: 'Luz y agua',
     folderView: 'Vista',
@@ -193,6 +196,17 @@ const UI: Record<Language, Record<UiTextId, string>> = {
  */
 export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   waves: 'Modelo de olas',
+  windSpeed: 'Velocidad del viento U10',
+  windDirection: 'Dirección del viento',
+  spectrum: 'Espectro de oleaje',
+  fetch: 'Fetch (JONSWAP)',
+  depth: 'Profundidad (dispersión)',
+  spreading: 'Dispersión direccional s (cos-2s)',
+  choppiness: 'Crestas afiladas λ',
+  fftSize: 'Tamaño de la FFT',
+  foam: 'Espuma',
+  foamThreshold: 'Sesgo del umbral de espuma (jacobiano)',
+  normalsCompare: 'Comparar normales de pendiente | fabricadas',
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',
   swellFrequency: 'Frecuencia del oleaje',

@@ -80,6 +80,36 @@ export const PRESETS = {
     params: {},
     camera: { position: [0, -8, 20], target: [0, 5, -20] },
   },
+  // The spectral sea (waves=fft): the same seed and camera, only the wind and spectrum change.
+  /** A light air, U = 4 m/s: short, low wind waves, no foam; the peak wavelength is about 14 m. */
+  calm: {
+    params: { waves: 'fft', windSpeed: 4 },
+    camera: { position: [0, 9, 40], target: [0, 0, -60] },
+  },
+  /** Beaufort 5, U = 10 m/s on a fully developed Pierson–Moskowitz sea: Hs ≈ 2 m, peak ≈ 90 m. */
+  'fresh-breeze': {
+    params: { waves: 'fft', windSpeed: 10, spectrum: 'pierson-moskowitz' },
+    camera: { position: [0, 9, 40], target: [0, 0, -60] },
+  },
+  /** Beaufort 8, U = 20 m/s: Hs ≈ 8 m, peak ≈ 350 m, choppy crests folding into foam (Jacobian < threshold). */
+  gale: {
+    params: { waves: 'fft', windSpeed: 20, foam: true },
+    camera: { position: [0, 14, 40], target: [0, 2, -60] },
+  },
+  /** JONSWAP, 15 m/s blowing over only 20 km of water: a young, peaked sea, shorter and lower than PM's at that wind. */
+  'short-fetch': {
+    params: { waves: 'fft', windSpeed: 15, spectrum: 'jonswap', fetch: 20 },
+    camera: { position: [0, 9, 40], target: [0, 0, -60] },
+  },
+  /**
+   * Normals as colours on a fresh breeze: left, exact per pixel from the spectral slopes
+   * (i k h); right, the seed's fabricated neighbours per vertex, interpolated.
+   */
+  'fft-normals': {
+    params: { waves: 'fft', windSpeed: 10, shading: 'normals', normalsCompare: true },
+    // Close over the water, away from the boat: the per-pixel detail of the left half shows.
+    camera: { position: [-40, 7, 20], target: [-40, 0, -8] },
+  },
 } satisfies Record<string, Preset>;
 
 export type PresetName = keyof typeof PRESETS;

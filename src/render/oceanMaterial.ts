@@ -33,6 +33,7 @@ export class OceanMaterial extends ShaderMaterial {
         uHazeDensity: { value: 0.0012 },
         uFlatNormals: { value: false },
         uShowNormals: { value: false },
+        uNormalsCompare: { value: false },
         uBaseStep: { value: BASE_STEP },
         uChunkQuads: { value: CHUNK_QUADS },
         uLodColors: { value: false },
@@ -66,6 +67,11 @@ export class OceanMaterial extends ShaderMaterial {
   setTeachingViews(flatNormals: boolean, showNormals: boolean): void {
     this.uniforms.uFlatNormals.value = flatNormals;
     this.uniforms.uShowNormals.value = showNormals;
+  }
+
+  /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */
+  setNormalsCompare(enabled: boolean): void {
+    this.uniforms.uNormalsCompare.value = enabled;
   }
 
   setFresnelEnabled(enabled: boolean): void {

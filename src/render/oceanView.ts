@@ -147,10 +147,10 @@ export class OceanView {
       this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
       this.waveBinding.setModel(this.waveView);
       previous.dispose();
-    } else {
-      // Cheap for every model: each compares what it reads and re-uploads only on a change.
-      this.waveView.setParams(params);
     }
+    // Every model, a new one too: each compares what it reads and re-uploads only on a change
+    // (and a new view gets what it does not take from its model, such as the FFT's foam).
+    this.waveView.setParams(params);
     // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
     this.bounds = this.waveView.model.bounds();
     if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
@@ -168,6 +168,7 @@ export class OceanView {
     if (changed('fresnel')) this.material.setFresnelEnabled(params.fresnel);
     if (changed('wireframe')) this.material.wireframe = params.wireframe;
     if (changed('normals', 'shading')) this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
+    if (changed('normalsCompare')) this.material.setNormalsCompare(params.normalsCompare);
     if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
     if (changed('lodColors')) this.material.setLodColors(params.lodColors);
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling')) {

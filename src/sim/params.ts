@@ -33,8 +33,22 @@ interface ChoiceDef {
 export type ParamDef = NumberDef | BooleanDef | ColorDef | ChoiceDef;
 
 export const paramDefs = {
-  // The wave model (src/sim/waveModels.ts): 'seed' is the seed report's sines and Perlin ripples.
-  waves: { kind: 'choice', default: 'seed', options: ['seed'], label: 'Wave model' },
+  // The wave model (src/sim/waveModels.ts): 'seed' is the seed report's sines and Perlin ripples,
+  // 'fft' the spectral sea (Tessendorf's FFT of a wind spectrum, src/sim/fftOcean.ts).
+  waves: { kind: 'choice', default: 'seed', options: ['seed', 'fft'], label: 'Wave model' },
+  // The spectral sea's wind and spectrum (read only with waves=fft; see src/sim/seaState.ts).
+  windSpeed: { kind: 'number', default: 10, min: 1, max: 30, step: 0.5, unit: 'm/s', label: 'Wind speed U10' },
+  windDirection: { kind: 'number', default: 20, min: 0, max: 360, step: 1, unit: '°', label: 'Wind direction' },
+  spectrum: { kind: 'choice', default: 'pierson-moskowitz', options: ['pierson-moskowitz', 'jonswap', 'phillips'], label: 'Wave spectrum' },
+  fetch: { kind: 'number', default: 100, min: 1, max: 1000, step: 1, unit: 'km', label: 'Fetch (JONSWAP)' },
+  // At 1000 m every wave the cascades carry is a deep-water wave (k h > 3), so 1000 means deep.
+  depth: { kind: 'number', default: 1000, min: 1, max: 1000, step: 1, unit: 'm', label: 'Water depth (dispersion)' },
+  spreading: { kind: 'number', default: 8, min: 1, max: 40, step: 0.5, unit: '', label: 'Directional spreading s (cos-2s)' },
+  choppiness: { kind: 'number', default: 1, min: 0, max: 2, step: 0.05, unit: '', label: 'Choppiness λ' },
+  fftSize: { kind: 'choice', default: '128', options: ['64', '128', '256'], label: 'FFT size' },
+  foam: { kind: 'boolean', default: true, label: 'Foam' },
+  // Added to the Jacobian threshold that gives Monahan's whitecap coverage for the wind (src/sim/whitecaps.ts).
+  foamThreshold: { kind: 'number', default: 0, min: -0.5, max: 0.5, step: 0.01, unit: '', label: 'Foam threshold bias (Jacobian)' },
   seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },
   swellAmplitude: { kind: 'number', default: 1.4, min: 0, max: 4, step: 0.05, unit: 'm', label: 'Swell amplitude' },
   swellFrequency: { kind: 'number', default: 0.05, min: 0.005, max: 0.2, step: 0.001, unit: 'rad/m', label: 'Swell frequency' },
@@ -52,6 +66,9 @@ export const paramDefs = {
   // Teaching views of the seed's figures.
   shading: { kind: 'choice', default: 'water', options: ['water', 'normals'], label: 'Shading' },
   normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },
+  // waves=fft teaching view: left half of the screen the exact slope normals per pixel, right
+  // half the seed's fabricated-neighbour normals per vertex, on the same sea.
+  normalsCompare: { kind: 'boolean', default: false, label: 'Compare slope | fabricated normals' },
   view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap'], label: 'View' },
   fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
   lodDistance: { kind: 'number', default: 100, min: 10, max: 1000, step: 5, unit: 'm', label: 'LOD distance L' },

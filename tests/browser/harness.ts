@@ -60,6 +60,8 @@ export async function openOcean(harness: Harness, query: string, width = 640, he
   });
   page.on('pageerror', (error) => consoleErrors.push(String(error)));
   await page.setViewport({ width, height, deviceScaleFactor: 1 });
+  // A loaded 2-core machine compiling SwiftShader programs can take longer than puppeteer's 30 s.
+  page.setDefaultTimeout(120_000);
   await page.goto(`${harness.baseUrl}${path}${query ? `?${query}` : ''}`, { waitUntil: 'load' });
   await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
   await page.evaluate(() => window.oceano.ready);

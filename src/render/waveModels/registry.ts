@@ -1,5 +1,7 @@
 import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
+import { FftWaveModel } from '../../sim/fftWaveModel';
 import { SeedWaveModel } from '../../sim/seedWaveModel';
+import { FftWaveView } from './fftWaveView';
 import type { WaveModelView } from './waveModelView';
 import { SeedWaveView } from './seedWaveView';
 import type { WebGLRenderer } from 'three';
@@ -13,6 +15,10 @@ const VIEWS: { [K in WavesChoice]: (model: LiveWaveModel, renderer: WebGLRendere
   seed: (model) => {
     if (!(model instanceof SeedWaveModel)) throw new TypeError(`The seed wave view needs a SeedWaveModel, got '${model.name}'.`);
     return new SeedWaveView(model);
+  },
+  fft: (model, renderer) => {
+    if (!(model instanceof FftWaveModel)) throw new TypeError(`The FFT wave view needs an FftWaveModel, got '${model.name}'.`);
+    return new FftWaveView(model, renderer);
   },
 };
 

@@ -1,0 +1,109 @@
+// The spectral sea as a wave-model chunk (`#include <oceano_waves>` resolves here when
+// waves=fft; see src/render/waveModels/fftWaveView.ts). Three cascades (FFT tiles of
+// different sizes, src/sim/cascades.ts), each two RGBA32F textures written by the GPU FFT
+// (src/render/fft/gpuFft.ts):
+//   uFftDisplacementC: (dx, dy, dz, ∂Dx/∂x)    uFftDerivativesC: (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)
+// Texel (p, q) of a tile of side L is the grid point (p L/n, q L/n); tiles repeat. Each field
+// is read bilinearly by hand (texelFetch: float textures need not be filterable), exactly as
+// the CPU twin src/sim/fftOcean.ts reads its float64 arrays: a parity test holds them together.
+//
+// The contract every model's chunk meets:
+//   vec3 waveDisplacement(vec2 gridXZ)  where the undisplaced grid point goes, (dx, dy, dz)
+//   vec3 waveNormal(vec2 gridXZ)        unit normal of the displaced surface there
+//   float waveLensHeight(vec2 worldXZ)  the short waves' height (focuses the god rays)
+// and, this model only (ocean.frag tests the defines):
+//   WAVE_PIXEL_NORMALS: waveNormal is exact (from spectral slopes): evaluate it per pixel
+//   WAVE_FOAM: float waveFoam(vec2 gridXZ), foam coverage in [0, 1]
+//   WAVE_FABRICATED_NORMAL: vec3 waveFabricatedNormal(vec2 gridXZ), the seed's finite-
+//     difference normal of the same surface, for the comparison teaching view
+
+#define WAVE_PIXEL_NORMALS
+#define WAVE_FOAM
+#define WAVE_FABRICATED_NORMAL
+
+uniform sampler2D uFftDisplacement0;
+uniform sampler2D uFftDisplacement1;
+uniform sampler2D uFftDisplacement2;
+uniform sampler2D uFftDerivatives0;
+uniform sampler2D uFftDerivatives1;
+uniform sampler2D uFftDerivatives2;
+uniform sampler2D uFftFoam0;
+uniform sampler2D uFftFoam1;
+uniform sampler2D uFftFoam2;
+uniform vec3 uFftScale;      // n / L per cascade: texels per metre
+uniform float uFftN;
+uniform float uFoamEnabled;  // 0 or 1
+uniform float uFoamThreshold;
+uniform float uFabricatedDelta;
+
+// The CPU twin's bilinear read: u = x n/L, texel floor(u) mod n and the next, weights fract(u).
+vec4 fftBilinear(sampler2D map, vec2 p, float scale) {
+  vec2 u = p * scale;
+  vec2 f = floor(u);
+  vec2 w = u - f;
+  int n = int(uFftN);
+  ivec2 i0 = ivec2(mod(f, uFftN));
+  ivec2 i1 = (i0 + 1) % n;
+  vec4 a = texelFetch(map, i0, 0);
+  vec4 b = texelFetch(map, ivec2(i1.x, i0.y), 0);
+  vec4 c = texelFetch(map, ivec2(i0.x, i1.y), 0);
+  vec4 d = texelFetch(map, i1, 0);
+  vec4 top = a + (b - a) * w.x;
+  vec4 bottom = c + (d - c) * w.x;
+  return top + (bottom - top) * w.y;
+}
+
+vec4 fftDisplacementFields(vec2 p) {
+  return fftBilinear(uFftDisplacement0, p, uFftScale.x)
+       + fftBilinear(uFftDisplacement1, p, uFftScale.y)
+       + fftBilinear(uFftDisplacement2, p, uFftScale.z);
+}
+
+vec4 fftDerivativeFields(vec2 p) {
+  return fftBilinear(uFftDerivatives0, p, uFftScale.x)
+       + fftBilinear(uFftDerivatives1, p, uFftScale.y)
+       + fftBilinear(uFftDerivatives2, p, uFftScale.z);
+}
+
+vec3 waveDisplacement(vec2 gridXZ) {
+  return fftDisplacementFields(gridXZ).xyz;
+}
+
+// Normal of P(x, z) = (x + Dx, h, z + Dz): ∂P/∂z × ∂P/∂x with every derivative exact from the
+// spectrum (i k h, −λ k k̂ h), as FftOcean.normalAt.
+vec3 waveNormal(vec2 gridXZ) {
+  float jxx = fftDisplacementFields(gridXZ).w;
+  vec4 d = fftDerivativeFields(gridXZ);
+  vec3 tx = vec3(1.0 + jxx, d.x, d.w);
+  vec3 tz = vec3(d.w, d.y, 1.0 + d.z);
+  return normalize(cross(tz, tx));
+}
+
+// The seed's way on this sea: neighbours a small step away, their displaced positions
+// differenced. What the teaching view puts beside the exact normal.
+vec3 waveFabricatedNormal(vec2 gridXZ) {
+  float s = uFabricatedDelta;
+  vec3 p0 = vec3(gridXZ.x, 0.0, gridXZ.y) + waveDisplacement(gridXZ);
+  vec3 px = vec3(gridXZ.x + s, 0.0, gridXZ.y) + waveDisplacement(gridXZ + vec2(s, 0.0));
+  vec3 pz = vec3(gridXZ.x, 0.0, gridXZ.y + s) + waveDisplacement(gridXZ + vec2(0.0, s));
+  return normalize(cross(pz - p0, px - p0));
+}
+
+// Foam: what each cascade accumulated (fading over seconds, src/render/fft/fftFoam.ts) plus
+// where the whole sea's Jacobian folds right now.
+float waveFoam(vec2 gridXZ) {
+  float jxx = fftDisplacementFields(gridXZ).w;
+  vec4 d = fftDerivativeFields(gridXZ);
+  float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
+  float now = smoothstep(uFoamThreshold, uFoamThreshold - 0.08, jacobian);
+  // The largest tile's foam is left out: its texels are tens of metres wide (22 m in a gale),
+  // which drew soft white blotches; breaking happens at the scale of the shorter waves.
+  float kept = 0.7 * (fftBilinear(uFftFoam1, gridXZ, uFftScale.y).r
+                    + fftBilinear(uFftFoam2, gridXZ, uFftScale.z).r);
+  return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
+}
+
+// The shortest cascade's height: metre-scale bumps that focus sunlight into shafts.
+float waveLensHeight(vec2 worldXZ) {
+  return fftBilinear(uFftDisplacement2, worldXZ, uFftScale.z).y;
+}

@@ -1,0 +1,63 @@
+import type { CascadeFields } from '../../sim/fftOcean';
+import type { FieldSource } from '../../sim/fftWaveModel';
+import type { SeaState } from '../../sim/seaState';
+
+export interface FieldsRequest {
+  sea: SeaState;
+  time: number;
+}
+
+export interface FieldsReply extends FieldsRequest {
+  fields: CascadeFields[];
+}
+
+/**
+ * A FieldSource backed by fftFieldsWorker.ts. One request in flight at a time; a newer request
+ * replaces one still waiting, so a slow Worker is never asked for stale times.
+ * If the Worker cannot start (a Content-Security-Policy without worker-src for the bundled
+ * web component, say), requests are dropped and FftWaveModel computes on the calling thread.
+ */
+export class WorkerFieldSource implements FieldSource {
+  private readonly worker: Worker | null;
+  private busy = false;
+  private pending: FieldsRequest | null = null;
+
+  constructor(deliver: (reply: FieldsReply) => void) {
+    let worker: Worker | null = null;
+    try {
+      worker = new Worker(new URL('./fftFieldsWorker.ts', import.meta.url), { type: 'module' });
+      worker.onmessage = (event: MessageEvent<FieldsReply>) => {
+        this.busy = false;
+        deliver(event.data);
+        this.flush();
+      };
+      worker.onerror = () => {
+        this.worker?.terminate();
+        this.failed = true;
+      };
+    } catch {
+      worker = null;
+    }
+    this.worker = worker;
+  }
+
+  private failed = false;
+
+  request(sea: SeaState, time: number): void {
+    if (!this.worker || this.failed) return;
+    this.pending = { sea, time };
+    if (!this.busy) this.flush();
+  }
+
+  private flush(): void {
+    if (!this.worker || !this.pending || this.failed) return;
+    this.busy = true;
+    this.worker.postMessage(this.pending);
+    this.pending = null;
+  }
+
+  dispose(): void {
+    this.worker?.terminate();
+    this.failed = true;
+  }
+}

@@ -1,0 +1,137 @@
+import { Vector3, type IUniform, type WebGLRenderer } from 'three';
+import fftChunk from '../../../shaders/waves/fft.glsl?raw';
+import type { OceanParams } from '../../sim/params';
+import type { FftWaveModel } from '../../sim/fftWaveModel';
+import { foamJacobianThreshold } from '../../sim/whitecaps';
+import { FftFoam } from '../fft/fftFoam';
+import { GpuFftOcean } from '../fft/gpuFft';
+import { registerChunk, registerShaderChunks } from '../shaderChunks';
+import { WorkerFieldSource } from './fftFieldsSource';
+import type { WaveModelView } from './waveModelView';
+
+/** Foam fades as e^{−t/τ}: a whitecap lingers a few seconds after its crest has passed. */
+export const FOAM_FADE_SECONDS = 2.5;
+/** Steps longer than this (a seek, a paused jump) rebuild the foam from a short warm-up instead. */
+const FOAM_MAX_STEP = 0.25;
+/** The warm-up: foam at t is built from the sea at t − 3 s, t − 2.4 s, …, t, so a frozen t always draws the same foam. */
+const FOAM_WARMUP_STEPS = 5;
+const FOAM_WARMUP_DT = 0.6;
+/** Step of the fabricated-neighbour normal in the comparison view, m (the finest LOD band's grid step). */
+const FABRICATED_DELTA = 1;
+
+type FftUniforms = Record<
+  | 'uFftDisplacement0' | 'uFftDisplacement1' | 'uFftDisplacement2'
+  | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
+  | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
+  | 'uFftScale' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFabricatedDelta',
+  IUniform
+>;
+
+/**
+ * The spectral sea on the GPU (shaders/waves/fft.glsl): per frame, update(t) evolves every
+ * cascade's h₀ to t and runs its inverse FFTs (src/render/fft/gpuFft.ts), then one foam step;
+ * the chunk reads the resulting displacement, slope and foam textures. Its CPU twin is
+ * `model` (FftWaveModel), fed by a Worker while the clock plays.
+ */
+export class FftWaveView implements WaveModelView {
+  readonly name = 'fft';
+  readonly chunkName = 'oceano_waves_fft';
+  readonly uniforms: FftUniforms;
+  private gpu: GpuFftOcean;
+  private foam: FftFoam;
+  private time = Number.NaN;
+  private foamEnabled = true;
+  private foamThreshold = 0.7;
+
+  constructor(
+    readonly model: FftWaveModel,
+    private readonly renderer: WebGLRenderer,
+  ) {
+    registerChunk(this.chunkName, fftChunk);
+    registerShaderChunks();
+    this.uniforms = {
+      uFftDisplacement0: { value: null },
+      uFftDisplacement1: { value: null },
+      uFftDisplacement2: { value: null },
+      uFftDerivatives0: { value: null },
+      uFftDerivatives1: { value: null },
+      uFftDerivatives2: { value: null },
+      uFftFoam0: { value: null },
+      uFftFoam1: { value: null },
+      uFftFoam2: { value: null },
+      uFftScale: { value: new Vector3() },
+      uFftN: { value: 1 },
+      uFoamEnabled: { value: 1 },
+      uFoamThreshold: { value: this.foamThreshold },
+      uFabricatedDelta: { value: FABRICATED_DELTA },
+    };
+    this.gpu = new GpuFftOcean(renderer, model.ocean.setup);
+    this.foam = new FftFoam(this.gpu);
+    this.bindTextures();
+    model.attachSource(new WorkerFieldSource((reply) => model.receive(reply.sea, reply.time, reply.fields)));
+  }
+
+  /** waveLensHeight reads the smallest cascade alone, so it repeats with that tile. */
+  get lensPeriod(): number {
+    return this.model.ocean.setup.cascades[2].size;
+  }
+
+  private bindTextures(): void {
+    const setup = this.model.ocean.setup;
+    if (setup.cascades.length !== 3) throw new RangeError(`shaders/waves/fft.glsl reads 3 cascades, the sea has ${setup.cascades.length}.`);
+    const u = this.uniforms;
+    const n = setup.sea.fftSize;
+    this.gpu.displacement.forEach((t, c) => (u[`uFftDisplacement${c}` as 'uFftDisplacement0'].value = t));
+    this.gpu.derivatives.forEach((t, c) => (u[`uFftDerivatives${c}` as 'uFftDerivatives0'].value = t));
+    (u.uFftScale.value as Vector3).set(n / setup.cascades[0].size, n / setup.cascades[1].size, n / setup.cascades[2].size);
+    u.uFftN.value = n;
+    this.bindFoam();
+  }
+
+  private bindFoam(): void {
+    this.foam.textures.forEach((t, c) => (this.uniforms[`uFftFoam${c}` as 'uFftFoam0'].value = t));
+  }
+
+  setParams(params: OceanParams): void {
+    this.foamEnabled = params.foam;
+    this.foamThreshold = foamJacobianThreshold(params.windSpeed, params.choppiness, params.foamThreshold);
+    this.uniforms.uFoamEnabled.value = params.foam ? 1 : 0;
+    this.uniforms.uFoamThreshold.value = this.foamThreshold;
+    if (!this.model.setParams(params)) return;
+    this.foam.dispose();
+    this.gpu.dispose();
+    this.gpu = new GpuFftOcean(this.renderer, this.model.ocean.setup);
+    this.foam = new FftFoam(this.gpu);
+    this.time = Number.NaN;
+    this.bindTextures();
+  }
+
+  /** FFT passes for every cascade at `time`, then the foam (stepped, or rebuilt after a jump). */
+  update(time: number): void {
+    if (Object.is(time, this.time)) return;
+    const previous = this.time;
+    this.time = time;
+    this.model.prefetch(time);
+    if (!this.foamEnabled) {
+      this.gpu.update(time);
+      return;
+    }
+    const dt = time - previous;
+    if (dt > 0 && dt <= FOAM_MAX_STEP) {
+      this.gpu.update(time);
+      this.foam.step(Math.exp(-dt / FOAM_FADE_SECONDS), this.foamThreshold);
+    } else {
+      for (let k = FOAM_WARMUP_STEPS; k >= 0; k--) {
+        this.gpu.update(time - k * FOAM_WARMUP_DT);
+        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : Math.exp(-FOAM_WARMUP_DT / FOAM_FADE_SECONDS), this.foamThreshold);
+      }
+    }
+    this.bindFoam();
+  }
+
+  dispose(): void {
+    this.model.dispose();
+    this.foam.dispose();
+    this.gpu.dispose();
+  }
+}

@@ -1,0 +1,116 @@
+import { describe, expect, it } from 'vitest';
+import { PNG } from 'pngjs';
+import type { Page } from 'puppeteer';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
+import { diffPngs } from './imageCompare';
+import { highFrequencyEnergy } from '../support/imageEnergy';
+
+/**
+ * The spectral sea's picture: exact in time (t = 10⁶ s looks like t = 10 s, a frozen t draws
+ * the same picture on every load), seeded, and foam where the crests fold.
+ */
+const harness = useHarness();
+const WIDTH = 480;
+const HEIGHT = 270;
+
+/** The sea below the horizon of the default camera (rows 0.55 h to h), as luminance statistics. */
+function seaStatistics(png: Buffer): { mean: number; std: number; energy: number } {
+  const image = PNG.sync.read(png);
+  const top = Math.round(image.height * 0.55);
+  const rows = image.height - top;
+  const data = image.data.subarray(top * image.width * 4);
+  let sum = 0;
+  let squares = 0;
+  for (let i = 0; i < image.width * rows; i++) {
+    const l = 0.2126 * data[4 * i] + 0.7152 * data[4 * i + 1] + 0.0722 * data[4 * i + 2];
+    sum += l;
+    squares += l * l;
+  }
+  const n = image.width * rows;
+  const mean = sum / n;
+  return { mean, std: Math.sqrt(squares / n - mean * mean), energy: highFrequencyEnergy(data, image.width, rows) };
+}
+
+/**
+ * Share of white sea pixels (bright and grey) in the left half of the frame: the sun (azimuth
+ * 20°) puts its glitter, white too, in the right half.
+ */
+function whiteShare(png: Buffer): number {
+  const image = PNG.sync.read(png);
+  const top = Math.round(image.height * 0.55);
+  const right = Math.round(image.width / 2);
+  let white = 0;
+  for (let y = top; y < image.height; y++) {
+    for (let x = 0; x < right; x++) {
+      const i = 4 * (y * image.width + x);
+      const [r, g, b] = [image.data[i], image.data[i + 1], image.data[i + 2]];
+      if (Math.min(r, g, b) > 170 && Math.max(r, g, b) - Math.min(r, g, b) < 40) white++;
+    }
+  }
+  return white / (right * (image.height - top));
+}
+
+async function frameAt(page: Page, t: number): Promise<Buffer> {
+  await page.evaluate((t) => {
+    window.oceano.pause();
+    window.oceano.setTime(t);
+  }, t);
+  return canvasPng(page);
+}
+
+function ratio(a: number, b: number): number {
+  return Math.max(a, b) / Math.min(a, b);
+}
+
+/**
+ * Two seas look alike when the mean, the spread and the high-frequency energy of their
+ * luminance agree within these ratios. Measured (log lines, seed 2): t = 10 against t = 10⁶
+ * differ by 6 % in mean, 5 % in spread and 18 % in high-frequency energy (two realisations of
+ * one sea); the calm sea against the fresh breeze (the negative control) by 3.1× in energy.
+ */
+const LIMITS = { mean: 1.1, std: 1.25, energy: 1.35 };
+function alike(a: ReturnType<typeof seaStatistics>, b: ReturnType<typeof seaStatistics>): boolean {
+  return ratio(a.mean, b.mean) < LIMITS.mean && ratio(a.std, b.std) < LIMITS.std && ratio(a.energy, b.energy) < LIMITS.energy;
+}
+
+describe('waves=fft picture', () => {
+  it('t = 10⁶ s looks as good as t = 10 s (same luminance statistics and fine detail); a calm sea does not pass as the same', async () => {
+    const { page } = await openOcean(harness, 'waves=fft&seed=2&t=10', WIDTH, HEIGHT);
+    const early = seaStatistics(await frameAt(page, 10));
+    const late = seaStatistics(await frameAt(page, 1_000_000));
+    await page.evaluate(() => window.oceano.setParams({ windSpeed: 4 }));
+    const calm = seaStatistics(await frameAt(page, 10));
+    const show = (s: ReturnType<typeof seaStatistics>) => `mean ${s.mean.toFixed(1)}, std ${s.std.toFixed(1)}, HF ${s.energy.toFixed(1)}`;
+    console.log(`[oceano] fft t=10: ${show(early)}; t=1e6: ${show(late)}; calm (negative control): ${show(calm)}`);
+    expect(alike(early, late)).toBe(true);
+    expect(alike(early, calm)).toBe(false);
+    await page.close();
+  });
+
+  it('same seed, same picture on a fresh load; another seed another picture', async () => {
+    const first = await openOcean(harness, 'waves=fft&seed=5&t=42.5', WIDTH, HEIGHT);
+    const a = await canvasPng(first.page);
+    await first.page.evaluate(() => window.oceano.setParams({ seed: 6 }));
+    const otherSeed = await canvasPng(first.page);
+    await first.page.close();
+    const second = await openOcean(harness, 'waves=fft&seed=5&t=42.5', WIDTH, HEIGHT);
+    const b = await canvasPng(second.page);
+    await second.page.close();
+    expect(diffPngs(a, b, 0).differentPixels).toBe(0);
+    expect(diffPngs(a, otherSeed, 0).share).toBeGreaterThan(0.2);
+  });
+
+  it('foam is white in the default view at 15 m/s, and gone with foam=false', async () => {
+    const { page } = await openOcean(harness, 'waves=fft&windSpeed=15&t=10', WIDTH, HEIGHT);
+    const withFoam = whiteShare(await canvasPng(page));
+    await page.evaluate(() => window.oceano.setParams({ foam: false }));
+    const without = whiteShare(await canvasPng(page));
+    console.log(`[oceano] white share of the sea at 15 m/s: foam ${(withFoam * 100).toFixed(2)} %, foam=false ${(without * 100).toFixed(2)} %`);
+    // Measured: 0.12 % of the left half's sea pixels pure white with foam, 0.01 % without (only
+    // fully white pixels count; partial foam is lighter but not counted).
+    expect(withFoam).toBeGreaterThan(0.0008);
+    expect(without).toBeLessThan(0.0003);
+    await page.close();
+  });
+});
