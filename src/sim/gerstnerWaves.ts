@@ -156,6 +156,13 @@ export function gerstnerNormalAt(
 }
 
 /**
+ * Evaluations invertGerstner uses by default. Measured (tests/unit/gerstnerWaves.test.ts):
+ * 3 leave under 1e-5 m on every PM sea with Q = 1, 4 leave under 2e-5 m at the hard limit
+ * Σ QkA = 1 with 8 or more waves, and 4 waves at that limit need 5 (1e-4 m worst).
+ */
+export const GERSTNER_INVERSION_STEPS = 5;
+
+/**
  * The grid point p whose displaced position lands above the world point q = (x, z), by
  * Newton's method on p + Dₕ(p) = q with the closed-form Jacobian J = I + ∂Dₕ/∂p, after one
  * fixed-point step p₀ = q − Dₕ(q) as the start.
@@ -207,13 +214,6 @@ export function steepnessSum(waves: readonly GerstnerWave[]): number {
   for (const w of waves) sum += TWO_PI * Math.hypot(w.cx, w.cz) * w.horizontal;
   return sum;
 }
-
-/**
- * Evaluations invertGerstner uses by default. Measured (tests/unit/gerstnerWaves.test.ts):
- * 3 leave under 1e-5 m on every PM sea with Q = 1, 4 leave under 2e-5 m at the hard limit
- * Σ QkA = 1 with 8 or more waves, and 4 waves at that limit need 5 (1e-4 m worst).
- */
-export const GERSTNER_INVERSION_STEPS = 5;
 
 /** The Gerstner sum as a WaveModel: what the boat, the underwater switch and the physics panel read. */
 export class GerstnerWaveModel implements WaveModel {
