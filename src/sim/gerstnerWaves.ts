@@ -75,7 +75,7 @@ export function gerstnerDisplacementAt(
     const angle = TWO_PI * turnsAt(w, phases[i], x, z);
     const s = Math.sin(angle);
     const c = Math.cos(angle);
-    const inv = 1 / Math.hypot(w.cx, w.cz);
+    const inv = 1 / Math.sqrt(w.cx * w.cx + w.cz * w.cz);
     dx -= w.horizontal * w.cx * inv * s;
     dz -= w.horizontal * w.cz * inv * s;
     dy += w.amplitude * c;
@@ -118,7 +118,7 @@ export function gerstnerDerivativesAt(
     const kx = TWO_PI * w.cx;
     const kz = TWO_PI * w.cz;
     // Q A / |k| · k k: the horizontal terms carry k̂ k = k k / |k|.
-    const qc = (w.horizontal / Math.hypot(kx, kz)) * c;
+    const qc = (w.horizontal / Math.sqrt(kx * kx + kz * kz)) * c;
     dxdx -= qc * kx * kx;
     dxdz -= qc * kx * kz;
     dzdz -= qc * kz * kz;
@@ -226,17 +226,29 @@ export class GerstnerWaveModel implements WaveModel {
     this.inversionSteps = inversionSteps;
   }
 
+  /** The reduced phases of the last time asked for: callers sample many points per frame. */
+  private phasesTime = Number.NaN;
+  private phases: Float64Array = new Float64Array(0);
+
+  private phasesAt(time: number): Float64Array {
+    if (time !== this.phasesTime) {
+      this.phases = gerstnerTimePhases(this.waves, time);
+      this.phasesTime = time;
+    }
+    return this.phases;
+  }
+
   displacement(x: number, z: number, time: number): [number, number, number] {
-    return gerstnerDisplacementAt(this.waves, gerstnerTimePhases(this.waves, time), x, z);
+    return gerstnerDisplacementAt(this.waves, this.phasesAt(time), x, z);
   }
 
   normal(x: number, z: number, time: number): [number, number, number] {
-    return gerstnerNormalAt(this.waves, gerstnerTimePhases(this.waves, time), x, z);
+    return gerstnerNormalAt(this.waves, this.phasesAt(time), x, z);
   }
 
   /** Height and normal above the world point; the grid point under it is found by invertGerstner. */
   sample(x: number, z: number, time: number): SurfaceSample {
-    const phases = gerstnerTimePhases(this.waves, time);
+    const phases = this.phasesAt(time);
     const grid = invertGerstner(this.waves, phases, x, z, this.inversionSteps);
     return {
       height: gerstnerDisplacementAt(this.waves, phases, grid.x, grid.z)[1],

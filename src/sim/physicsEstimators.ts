@@ -44,7 +44,7 @@ export interface DispersionOptions {
 export interface DispersionPoint {
   /** Wavenumber |k| of the mode, rad/m (power-weighted over the mode's 3 × 3 neighbourhood). */
   k: number;
-  /** Measured angular frequency, rad/s: minus the mean rate of change of the mode's phase. */
+  /** Measured angular frequency, rad/s: the mean rate at which the mode's phase turns. */
   omega: number;
   /** Mean power of the mode, m² (arbitrary but consistent scale): the weight of this point. */
   power: number;
@@ -79,8 +79,9 @@ function fft2(fft: FFT, data: Float64Array, n: number): Float64Array {
  * its own k) and 2-D Fourier transformed. A wave A cos(k·x − ω t + φ) puts into the bin at
  * +k the coefficient ∝ e^{i(φ − ω t)} (FFT kernel e^{−i k·x}), so the phase of that bin falls
  * at rate ω. The rate is measured as the mean of arg(X(tⱼ₊₁) X*(tⱼ)) over the snapshots,
- * which needs ω dt < π. Both halves of the k-plane are kept: a wave running toward −k shows
- * in the bin at +k with a rising phase, i.e. a negative ω, and is reported as such.
+ * which needs ω dt < π. The heights are real, so X(−k) = X(k)*: every wave shows twice, and
+ * only the half-plane k_z > 0 (and k_z = 0, kₓ > 0) is read. A wave running toward −k shows
+ * in the bin at +k with a rising phase; |rate| is its ω either way.
  */
 export function estimateDispersion(sampler: HeightSampler, options: DispersionOptions): DispersionPoint[] {
   const { size, resolution: n, startTime, timeStep, snapshots } = options;
@@ -137,7 +138,8 @@ export function estimateDispersion(sampler: HeightSampler, options: DispersionOp
       let isPeak = true;
       for (let a = -1; a <= 1 && isPeak; a++) for (let b = -1; b <= 1; b++) if ((a || b) && at(r + a, c + b) > p) isPeak = false;
       // The Nyquist row and column hold aliased, unsigned modes.
-      if (isPeak && r !== n / 2 && c !== n / 2) candidates.push(n * r + c);
+      const upperHalf = signed(r) > 0 || (r === 0 && signed(c) > 0);
+      if (isPeak && upperHalf && r !== n / 2 && c !== n / 2) candidates.push(n * r + c);
     }
   }
   candidates.sort((a, b) => power[b] - power[a]);
@@ -159,7 +161,7 @@ export function estimateDispersion(sampler: HeightSampler, options: DispersionOp
         kz += p * (signed(r) + a) * dk;
       }
     }
-    const omega = -Math.atan2(turnIm[b], turnRe[b]) / timeStep;
+    const omega = Math.abs(Math.atan2(turnIm[b], turnRe[b])) / timeStep;
     points.push({ k: Math.hypot(kx / sum, kz / sum), omega, power: power[b] });
   }
   return points;
@@ -232,24 +234,24 @@ export function frequencySpectrum(series: ArrayLike<number>, timeStep: number, s
   const density = new Float64Array(half + 1);
   for (let m = 0; m <= half; m++) {
     omega[m] = m * resolution;
-    // |X|² / Σw² is the two-sided power per bin; double it for one side (not at 0 or Nyquist),
+    // By Parseval, |X|² / (N Σw²) is the two-sided power per bin; double it for one side (not at 0 or Nyquist),
     // and divide by Δω for a density.
     const sides = m === 0 || m === half ? 1 : 2;
-    density[m] = (sides * sum[m]) / count / windowPower / resolution;
+    density[m] = (sides * sum[m]) / count / (segment * windowPower) / resolution;
   }
   return { omega, density, resolution };
 }
 
 /**
- * The spectral peak ωp: the bin of largest density after a 3-bin running mean (the raw
+ * The spectral peak ωp: the bin of largest density after a 5-bin running mean (the raw
  * periodogram's scatter moves a lone maximum), refined by a parabola through it and its
  * neighbours, which places the peak between bins.
  */
 export function spectralPeak(spectrum: FrequencySpectrumEstimate): number {
   const { density, omega, resolution } = spectrum;
-  const smooth = (i: number) => (density[i - 1] + density[i] + density[i + 1]) / 3;
-  let best = 2;
-  for (let i = 2; i < density.length - 2; i++) if (smooth(i) > smooth(best)) best = i;
+  const smooth = (i: number) => (density[i - 2] + density[i - 1] + density[i] + density[i + 1] + density[i + 2]) / 5;
+  let best = 3;
+  for (let i = 3; i < density.length - 3; i++) if (smooth(i) > smooth(best)) best = i;
   const a = smooth(best - 1);
   const b = smooth(best);
   const c = smooth(best + 1);

@@ -16,6 +16,8 @@ import gerstnerGlsl from '../../shaders/gerstner.glsl?raw';
 import { G, cosineSquared, jonswap, piersonMoskowitz } from './localSpectra';
 
 const TWO_PI = 2 * Math.PI;
+/** The inversion sweeps take 1–3 s alone; the shared 2-core machine can triple that. */
+const SLOW = 30_000;
 
 /** A sea from the test's PM spectrum (local copy, see localSpectra.ts). */
 function pmSea(u10: number, count: number, seed: number, steepness = 1): GerstnerWave[] {
@@ -43,7 +45,7 @@ describe('Gerstner twin against hand-derived values', () => {
     expect(d[0]).toBeCloseTo(-0.3 * 0.6 * 0.80901699, 7);
     expect(d[1]).toBeCloseTo(0.5 * 0.58778525, 7);
     expect(d[2]).toBeCloseTo(-0.3 * 0.8 * 0.80901699, 7);
-  });
+  }, SLOW);
 
   it('a quarter period later the angle has fallen by 90°: θ = −36°', () => {
     const quarter = TWO_PI / wave.omega / 4;
@@ -51,7 +53,7 @@ describe('Gerstner twin against hand-derived values', () => {
     // sin(−36°) = −0.58778525, cos(−36°) = 0.80901699.
     expect(d[0]).toBeCloseTo(0.3 * 0.6 * 0.58778525, 7);
     expect(d[1]).toBeCloseTo(0.5 * 0.80901699, 7);
-  });
+  }, SLOW);
 
   it('the normal at the crest of a lone trochoid is straight up, and at θ = 90° tilts by atan(kA / (1 − 0))', () => {
     const crest = gerstnerNormalAt([wave], gerstnerTimePhases([wave], 0), 0, 0);
@@ -62,7 +64,7 @@ describe('Gerstner twin against hand-derived values', () => {
     const kA = (TWO_PI / 20) * 0.5;
     const expected = [0.6 * kA, 1, 0.8 * kA].map((v) => v / Math.hypot(kA, 1));
     for (let i = 0; i < 3; i++) expect(n[i]).toBeCloseTo(expected[i], 10);
-  });
+  }, SLOW);
 
   it('two waves add (superposition of displacement)', () => {
     const other: GerstnerWave = { cx: -0.05, cz: 0, omega: Math.sqrt(G * TWO_PI * 0.05), amplitude: 0.2, horizontal: 0.2, phase: 0.25 };
@@ -71,7 +73,7 @@ describe('Gerstner twin against hand-derived values', () => {
     const a = gerstnerDisplacementAt([wave], p.subarray(0, 1), 7, -3);
     const b = gerstnerDisplacementAt([other], p.subarray(1, 2), 7, -3);
     for (let i = 0; i < 3; i++) expect(sum[i]).toBeCloseTo(a[i] + b[i], 12);
-  });
+  }, SLOW);
 });
 
 /** The shader's arithmetic in float32 (Math.fround at every step), sine exact: what a GPU computes. */
@@ -114,7 +116,7 @@ describe('Time phases reduced in double precision keep a float32 shader exact la
     }
     // Measured 1.1e-5 m (64 waves, Hs 5.0 m); unreduced, 4.4e-2 m (next test).
     expect(worst).toBeLessThan(1e-4);
-  });
+  }, SLOW);
 
   it('negative control: handing the shader the unreduced phase φ − ωt/2π in float32 misses by centimetres', () => {
     const t = 1e6;
@@ -126,7 +128,7 @@ describe('Time phases reduced in double precision keep a float32 shader exact la
       for (let i = 0; i < 3; i++) worst = Math.max(worst, Math.abs(gpu[i] - cpu[i]));
     }
     expect(worst).toBeGreaterThan(1e-2);
-  });
+  }, SLOW);
 });
 
 describe('Analytic normals against finite differences of the twin', () => {
@@ -162,7 +164,7 @@ describe('Analytic normals against finite differences of the twin', () => {
   it('agree within 1e-6 rad over 400 points (central differences, h = 1 mm)', () => {
     // Measured 3e-8 rad, the floor of acos near 1; the height-field control below is 3.1e-2 rad.
     expect(worstAngle((x, z) => gerstnerNormalAt(sea, tau, x, z))).toBeLessThan(1e-6);
-  });
+  }, SLOW);
 
   it('negative control: the height-field normal that ignores the horizontal motion is off by far more', () => {
     const heightFieldNormal = (x: number, z: number): [number, number, number] => {
@@ -171,7 +173,7 @@ describe('Analytic normals against finite differences of the twin', () => {
       return [-d.dydx / len, 1 / len, -d.dydz / len];
     };
     expect(worstAngle(heightFieldNormal)).toBeGreaterThan(1e-2);
-  });
+  }, SLOW);
 });
 
 describe('Steepness limit: Σ Qᵢ kᵢ Aᵢ ≤ Q ≤ 1, so crests never loop', () => {
@@ -184,7 +186,7 @@ describe('Steepness limit: Σ Qᵢ kᵢ Aᵢ ≤ Q ≤ 1, so crests never loop',
         for (const w of waves) expect(w.horizontal).toBeLessThanOrEqual(w.amplitude * (1 + 1e-12));
       }
     }
-  });
+  }, SLOW);
 
   it('a sea steeper than the limit (Σ kA > 1: PM\'s waves at twice their height) is scaled to exactly Q', () => {
     const drawn = drawGerstnerWaves({ count: 64, seed: 2, spectrum: piersonMoskowitz(10).spectrum, spreading: cosineSquared, windDirection: 0, steepness: 1 });
@@ -192,11 +194,11 @@ describe('Steepness limit: Σ Qᵢ kᵢ Aᵢ ≤ Q ≤ 1, so crests never loop',
     const slope = steepnessSum(waves.map((w) => ({ ...w, horizontal: w.amplitude })));
     expect(slope).toBeGreaterThan(1);
     for (const q of [0.2, 0.6, 1]) expect(steepnessSum(limitSteepness(waves, q))).toBeCloseTo(q, 12);
-  });
+  }, SLOW);
 
   it('rejects Q outside [0, 1]', () => {
     expect(() => limitSteepness(pmSea(10, 4, 1), 1.2)).toThrow(/Steepness/);
-  });
+  }, SLOW);
 
   function smallestJacobian(waves: GerstnerWave[]): number {
     const tau = gerstnerTimePhases(waves, 0);
@@ -211,11 +213,11 @@ describe('Steepness limit: Σ Qᵢ kᵢ Aᵢ ≤ Q ≤ 1, so crests never loop',
   it('at the limit the horizontal map never folds: det J ≥ 0 on 40 000 points (4 waves, Σ QkA = 1)', () => {
     // Measured minimum 0.126: the four crests never all meet on this patch; at Σ QkA = 2, −0.73.
     expect(smallestJacobian(atSteepness(pmSea(10, 4, 1), 1))).toBeGreaterThanOrEqual(0);
-  });
+  }, SLOW);
 
   it('negative control: past the limit (Σ QkA = 2) the same sea folds over (det J < 0: a looped crest)', () => {
     expect(smallestJacobian(atSteepness(pmSea(10, 4, 1), 2))).toBeLessThan(0);
-  });
+  }, SLOW);
 });
 
 describe('Inverting the horizontal motion (sample at a world point)', () => {
@@ -232,7 +234,7 @@ describe('Inverting the horizontal motion (sample at a world point)', () => {
       // Measured worst 3.1e-6 m over seeds 1–5.
       expect(worstResidual(sea, (tau, x, z) => invertGerstner(sea, tau, x, z, 3).residual)).toBeLessThan(1e-3);
     }
-  });
+  }, SLOW);
 
   it.each([
     [4, 5],
@@ -245,14 +247,14 @@ describe('Inverting the horizontal motion (sample at a world point)', () => {
       // Measured worst over seeds 1–5: 1.0e-4 m (4 waves, 5 steps), 1.8e-5 m (16 waves, 4 steps).
       expect(worstResidual(sea, (tau, x, z) => invertGerstner(sea, tau, x, z, steps).residual)).toBeLessThan(1e-3);
     }
-  });
+  }, SLOW);
 
   it('negative control: plain fixed-point (the seam default, 4 steps) does not reach 1 mm at the limit', () => {
     const sea = atSteepness(pmSea(20, 16, 1), 1);
     const worst = worstResidual(sea, (tau, x, z) => undoHorizontalDisplacement((px, pz) => gerstnerDisplacementAt(sea, tau, px, pz), x, z, 4).residual);
     // Measured 0.20 m: its error shrinks by only |∂Dₕ/∂p| → 1 per step near an aligned crest.
     expect(worst).toBeGreaterThan(1e-2);
-  });
+  }, SLOW);
 
   it('negative control: Newton with a planted sign error in the Jacobian fails', () => {
     const sea = pmSea(20, 16, 1);
@@ -277,7 +279,7 @@ describe('Inverting the horizontal motion (sample at a world point)', () => {
       return Math.hypot(px + d[0] - x, pz + d[2] - z);
     });
     expect(worst).toBeGreaterThan(1e-3);
-  });
+  }, SLOW);
 
   it('sample() returns the height and normal of the grid point that lands on the query point', () => {
     const sea = pmSea(14, 32, 9);
@@ -291,7 +293,7 @@ describe('Inverting the horizontal motion (sample at a world point)', () => {
       expect(s.height).toBeCloseTo(d[1], 12);
       expect(s.normal).toEqual(model.normal(p.x, p.z, t));
     }
-  });
+  }, SLOW);
 });
 
 describe('Waves drawn from a spectrum', () => {
@@ -301,7 +303,7 @@ describe('Waves drawn from a spectrum', () => {
   it('is deterministic in the seed, and another seed gives another sea', () => {
     expect(gerstnerSea(options)).toEqual(gerstnerSea(options));
     expect(gerstnerSea({ ...options, seed: 12 })).not.toEqual(gerstnerSea(options));
-  });
+  }, SLOW);
 
   it('keeps the band\'s variance: Σ Aᵢ²/2 = 0.989 m₀, so 4√(Σ Aᵢ²/2) is within 1 % of PM\'s Hs', () => {
     const waves = gerstnerSea(options);
@@ -309,7 +311,7 @@ describe('Waves drawn from a spectrum', () => {
     // PM's Hs = 0.21 U₁₉.₅²/g is the rounded form of 4√(α / 4β) U²/g = 0.2092: 0.4 % apart.
     expect(4 * Math.sqrt(m0)).toBeCloseTo(Math.sqrt(0.989) * pm.hs, 1);
     expect(Math.abs(4 * Math.sqrt(m0) / pm.hs - 1)).toBeLessThan(0.01);
-  });
+  }, SLOW);
 
   it('heads the waves downwind (cos² spreading: every wave within ±90° of the wind, mean near it)', () => {
     const waves = gerstnerSea({ ...options, count: 64 });
@@ -322,7 +324,7 @@ describe('Waves drawn from a spectrum', () => {
       sz += Math.sin(heading);
     }
     expect(Math.abs(Math.atan2(sz, sx))).toBeLessThan(0.15);
-  });
+  }, SLOW);
 
   it('gives each wave the k of the dispersion relation passed in (finite depth 8 m)', () => {
     const dispersion = linearDispersion(8);
@@ -331,7 +333,7 @@ describe('Waves drawn from a spectrum', () => {
       expect(Math.sqrt(G * k * Math.tanh(8 * k))).toBeCloseTo(w.omega, 9);
     }
     expect(wavenumberFor(1, linearDispersion())).toBeCloseTo(1 / G, 12);
-  });
+  }, SLOW);
 
   it('bounds() hold every displacement on a patch', () => {
     const model = new GerstnerWaveModel(gerstnerSea(options));
@@ -341,7 +343,7 @@ describe('Waves drawn from a spectrum', () => {
       expect(Math.abs(d[1])).toBeLessThanOrEqual(b.vertical);
       expect(Math.hypot(d[0], d[2])).toBeLessThanOrEqual(b.horizontal);
     }
-  });
+  }, SLOW);
 });
 
 describe('GLSL chunk and its uniforms helper agree', () => {
@@ -350,5 +352,5 @@ describe('GLSL chunk and its uniforms helper agree', () => {
     expect(gerstnerGlsl).toMatch(/vec3 waveDisplacement\(vec2 gridXZ\)/);
     expect(gerstnerGlsl).toMatch(/vec3 waveNormal\(vec2 gridXZ\)/);
     for (const name of ['uGerstnerCount', 'uGerstnerWaves', 'uGerstnerPhases']) expect(gerstnerGlsl).toMatch(new RegExp(`uniform \\w+ ${name}\\b`));
-  });
+  }, SLOW);
 });
