@@ -181,6 +181,8 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   causticsIntensity: 'Intensidad de las cáusticas',
   godRays: 'Rayos de luz',
   godRaysIntensity: 'Intensidad de los rayos de luz',
+  gerstnerCount: 'Ondas de Gerstner',
+  gerstnerSteepness: 'Pendiente de Gerstner Q',
 };
 
 /** Everything the page says, in one language. */

@@ -66,6 +66,10 @@ export const paramDefs = {
   causticsIntensity: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'Caustics intensity' },
   godRays: { kind: 'boolean', default: true, label: 'God rays' },
   godRaysIntensity: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'God rays intensity' },
+  // Gerstner waves (waves=gerstner): how many trochoids are drawn from the wind spectrum, and
+  // Q, the share of the looping limit Σ Qᵢ kᵢ Aᵢ ≤ 1 they may use (src/sim/gerstnerSpectrum.ts).
+  gerstnerCount: { kind: 'integer', default: 32, min: 4, max: 64, unit: '', label: 'Gerstner waves' },
+  gerstnerSteepness: { kind: 'number', default: 0.6, min: 0.2, max: 1, step: 0.05, unit: '', label: 'Gerstner steepness Q' },
 } as const satisfies Record<string, ParamDef>;
 
 export type ParamKey = keyof typeof paramDefs;
