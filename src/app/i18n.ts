@@ -183,6 +183,16 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   godRaysIntensity: 'Intensidad de los rayos de luz',
   gerstnerCount: 'Ondas de Gerstner',
   gerstnerSteepness: 'Pendiente de Gerstner Q',
+  windSpeed: 'Velocidad del viento U10',
+  windDirection: 'Dirección del viento (hacia, horario desde −z)',
+  spectrum: 'Espectro del oleaje',
+  fetch: 'Fetch (JONSWAP)',
+  depth: 'Profundidad del agua (1000 = profunda)',
+  spreading: 'Dispersión direccional s (cos-2s)',
+  choppiness: 'Encrespamiento λ',
+  fftSize: 'Tamaño de la FFT (por cascada)',
+  foam: 'Espuma',
+  foamThreshold: 'Espuma donde el jacobiano J es menor que',
 };
 
 /** Everything the page says, in one language. */

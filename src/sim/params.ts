@@ -70,6 +70,17 @@ export const paramDefs = {
   // Q, the share of the looping limit Σ Qᵢ kᵢ Aᵢ ≤ 1 they may use (src/sim/gerstnerSpectrum.ts).
   gerstnerCount: { kind: 'integer', default: 32, min: 4, max: 64, unit: '', label: 'Gerstner waves' },
   gerstnerSteepness: { kind: 'number', default: 0.6, min: 0.2, max: 1, step: 0.05, unit: '', label: 'Gerstner steepness Q' },
+  // The spectral (Tessendorf FFT) sea, waves=fft: see src/sim/seaState.ts for how these become a SeaState.
+  windSpeed: { kind: 'number', default: 10, min: 1, max: 30, step: 0.5, unit: 'm/s', label: 'Wind speed U10' },
+  windDirection: { kind: 'number', default: 20, min: 0, max: 360, step: 1, unit: '°', label: 'Wind direction (towards, clockwise from −z)' },
+  spectrum: { kind: 'choice', default: 'pierson-moskowitz', options: ['pierson-moskowitz', 'jonswap', 'phillips'], label: 'Wave spectrum' },
+  fetch: { kind: 'number', default: 100, min: 1, max: 1000, step: 1, unit: 'km', label: 'Fetch (JONSWAP)' },
+  depth: { kind: 'number', default: 1000, min: 2, max: 1000, step: 1, unit: 'm', label: 'Water depth (1000 = deep)' },
+  spreading: { kind: 'number', default: 8, min: 1, max: 64, step: 0.5, unit: '', label: 'Directional spreading s (cos-2s)' },
+  choppiness: { kind: 'number', default: 1, min: 0, max: 2, step: 0.05, unit: '', label: 'Choppiness λ' },
+  fftSize: { kind: 'choice', default: '128', options: ['64', '128', '256'], label: 'FFT size (per cascade)' },
+  foam: { kind: 'boolean', default: true, label: 'Foam' },
+  foamThreshold: { kind: 'number', default: 0.3, min: -0.5, max: 1, step: 0.01, unit: '', label: 'Foam where Jacobian J below' },
 } as const satisfies Record<string, ParamDef>;
 
 export type ParamKey = keyof typeof paramDefs;

@@ -1,0 +1,259 @@
+import {
+  BufferAttribute,
+  BufferGeometry,
+  DataTexture,
+  FloatType,
+  GLSL3,
+  Mesh,
+  NearestFilter,
+  OrthographicCamera,
+  RawShaderMaterial,
+  RepeatWrapping,
+  RGBAFormat,
+  Scene,
+  WebGLRenderTarget,
+  Vector3,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
+import quadVertex from '../../../shaders/fftQuad.vert?raw';
+import spectrumFragment from '../../../shaders/fftSpectrum.frag?raw';
+import stageFragment from '../../../shaders/fftStage.frag?raw';
+import { timeInPeriod } from '../../sim/dispersion';
+import type { FftOceanSetup } from '../../sim/fftOcean';
+import { REPEAT_PERIOD, type SpectralTile } from '../../sim/initialSpectrum';
+
+/** An n × n float texture read with texelFetch (no filtering: the ocean shader interpolates itself, as the CPU twin does). */
+function dataTexture(data: Float32Array, width: number, height: number, format: typeof RGBAFormat): DataTexture {
+  const texture = new DataTexture(data, width, height, format, FloatType);
+  texture.minFilter = NearestFilter;
+  texture.magFilter = NearestFilter;
+  texture.wrapS = RepeatWrapping;
+  texture.wrapT = RepeatWrapping;
+  texture.generateMipmaps = false;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+/** Two RGBA32F colour attachments, written together by every pass (MRT). Needs EXT_color_buffer_float. */
+function mrtTarget(n: number): WebGLRenderTarget {
+  const target = new WebGLRenderTarget(n, n, {
+    count: 2,
+    type: FloatType,
+    format: RGBAFormat,
+    minFilter: NearestFilter,
+    magFilter: NearestFilter,
+    wrapS: RepeatWrapping,
+    wrapT: RepeatWrapping,
+    depthBuffer: false,
+    stencilBuffer: false,
+    generateMipmaps: false,
+  });
+  return target;
+}
+
+/** (cos, sin) of 2π m/n for m < n/2, in float64 then rounded once to float32. */
+function twiddleTable(n: number): DataTexture {
+  const data = new Float32Array(2 * n);
+  for (let m = 0; m < n / 2; m++) {
+    data[4 * m] = Math.cos((2 * Math.PI * m) / n);
+    data[4 * m + 1] = Math.sin((2 * Math.PI * m) / n);
+  }
+  return dataTexture(data, n / 2, 1, RGBAFormat);
+}
+
+/**
+ * GPU inverse 2-D FFTs of n × n grids, four complex signals at a time (two RGBA32F textures),
+ * by 2·log₂n Stockham passes ping-ponging between two MRT render targets. The result lands in
+ * `target` (the pass count is even), so callers can keep its textures bound.
+ */
+export class GpuInverseFft {
+  readonly n: number;
+  private readonly scene = new Scene();
+  private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
+  private readonly mesh: Mesh;
+  private readonly stage: RawShaderMaterial;
+  private readonly twiddle: DataTexture;
+  private readonly scratch: WebGLRenderTarget;
+
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    n: number,
+  ) {
+    if (!renderer.extensions.has('EXT_color_buffer_float')) throw new Error('The spectral ocean needs WebGL2 float render targets (EXT_color_buffer_float).');
+    this.n = n;
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
+    this.twiddle = twiddleTable(n);
+    this.stage = new RawShaderMaterial({
+      name: 'FftStage',
+      glslVersion: GLSL3,
+      vertexShader: quadVertex,
+      fragmentShader: stageFragment,
+      uniforms: {
+        uInput0: { value: null },
+        uInput1: { value: null },
+        uTwiddle: { value: this.twiddle },
+        uN: { value: n },
+        uHalfSize: { value: 1 },
+        uVertical: { value: false },
+      },
+      depthTest: false,
+      depthWrite: false,
+    });
+    this.mesh = new Mesh(geometry, this.stage);
+    this.mesh.frustumCulled = false;
+    this.scene.add(this.mesh);
+    this.scratch = mrtTarget(n);
+  }
+
+  /** A render target the FFT can write its result into. */
+  createTarget(): WebGLRenderTarget {
+    return mrtTarget(this.n);
+  }
+
+  /** Draws `material` over every texel of `target` (any size). Leaves the renderer's own target as it was. */
+  draw(material: RawShaderMaterial, target: WebGLRenderTarget): void {
+    const previous = this.renderer.getRenderTarget();
+    const autoClear = this.renderer.autoClear;
+    this.renderer.autoClear = false;
+    this.mesh.material = material;
+    this.renderer.setRenderTarget(target);
+    this.renderer.render(this.scene, this.camera);
+    this.renderer.setRenderTarget(previous);
+    this.renderer.autoClear = autoClear;
+  }
+
+  /** Inverse-transforms the two textures (rows, then columns) into `target`. */
+  transform(input0: Texture, input1: Texture, target: WebGLRenderTarget): void {
+    const u = this.stage.uniforms;
+    let source: [Texture, Texture] = [input0, input1];
+    let write = this.scratch;
+    for (const vertical of [false, true]) {
+      for (let half = 1; half < this.n; half *= 2) {
+        u.uInput0.value = source[0];
+        u.uInput1.value = source[1];
+        u.uHalfSize.value = half;
+        u.uVertical.value = vertical;
+        this.draw(this.stage, write);
+        source = [write.textures[0], write.textures[1]];
+        write = write === this.scratch ? target : this.scratch;
+      }
+    }
+  }
+
+  dispose(): void {
+    this.stage.dispose();
+    this.twiddle.dispose();
+    this.scratch.dispose();
+    this.mesh.geometry.dispose();
+  }
+}
+
+/** h₀(k) and h₀(−k) side by side, and ω as whole cycles m per repeat period (split as in fftSpectrum.frag: 4096·mh, ml, m), as float32 textures. */
+function spectrumTextures(tile: SpectralTile): { h0: DataTexture; cycles: DataTexture } {
+  const n = tile.n;
+  const pairs = new Float32Array(4 * n * n);
+  const cycles = new Float32Array(4 * n * n);
+  const omega0 = (2 * Math.PI) / REPEAT_PERIOD;
+  for (let b = 0; b < n; b++) {
+    for (let a = 0; a < n; a++) {
+      const i = b * n + a;
+      const j = ((n - b) % n) * n + ((n - a) % n);
+      pairs[4 * i] = tile.h0[2 * i];
+      pairs[4 * i + 1] = tile.h0[2 * i + 1];
+      pairs[4 * i + 2] = tile.h0[2 * j];
+      pairs[4 * i + 3] = tile.h0[2 * j + 1];
+      const m = Math.round(tile.omega[i] / omega0);
+      if (m >= 2 ** 24) throw new Error('A wave too fast for the float32 phase split (m ≥ 2²⁴).');
+      const low = m % 4096;
+      cycles[4 * i] = m - low;
+      cycles[4 * i + 1] = low;
+      cycles[4 * i + 2] = m;
+    }
+  }
+  return { h0: dataTexture(pairs, n, n, RGBAFormat), cycles: dataTexture(cycles, n, n, RGBAFormat) };
+}
+
+/**
+ * f ∈ [0, 1) as x + y + z with x and y of 12 significant bits each (exact multiples of 2⁻¹² and
+ * 2⁻²⁴) and z the float32 rest, so the shader's products m·x, m·y are exact (fftSpectrum.frag).
+ */
+export function splitFraction(f: number): [number, number, number] {
+  const x = Math.floor(f * 4096) / 4096;
+  const y = Math.floor((f - x) * 2 ** 24) / 2 ** 24;
+  return [x, y, Math.fround(f - x - y)];
+}
+
+/**
+ * The spectral ocean on the GPU: per cascade, h₀ uploaded once (drawn on the CPU from the
+ * seed, the same numbers as the CPU twin), then each update(t) one time-evolution pass and
+ * 2·log₂n FFT passes. After update, per cascade c:
+ *   displacement[c]: RGBA32F n × n, (dx, dy, dz, ∂Dx/∂x)
+ *   derivatives[c]:  RGBA32F n × n, (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)
+ * Texel (p, q) is the grid point x = p·L/n, z = q·L/n of a tile of side L = sizes[c], repeating.
+ */
+export class GpuFftOcean {
+  readonly sizes: number[];
+  readonly n: number;
+  readonly targets: WebGLRenderTarget[];
+  private readonly fft: GpuInverseFft;
+  private readonly spectrumMaterials: RawShaderMaterial[];
+  private readonly inputs: DataTexture[] = [];
+  private readonly evolved: WebGLRenderTarget;
+
+  constructor(renderer: WebGLRenderer, setup: FftOceanSetup) {
+    const n = setup.sea.fftSize;
+    this.n = n;
+    this.fft = new GpuInverseFft(renderer, n);
+    this.sizes = setup.cascades.map((c) => c.size);
+    this.evolved = this.fft.createTarget();
+    this.targets = setup.tiles.map(() => this.fft.createTarget());
+    this.spectrumMaterials = setup.tiles.map((tile) => {
+      const { h0, cycles } = spectrumTextures(tile);
+      this.inputs.push(h0, cycles);
+      return new RawShaderMaterial({
+        name: 'FftSpectrum',
+        glslVersion: GLSL3,
+        vertexShader: quadVertex,
+        fragmentShader: spectrumFragment,
+        uniforms: {
+          uH0: { value: h0 },
+          uCycles: { value: cycles },
+          uTauOverT: { value: new Vector3() },
+          uTileSize: { value: tile.cascade.size },
+          uChoppiness: { value: setup.sea.choppiness },
+          uN: { value: n },
+        },
+        depthTest: false,
+        depthWrite: false,
+      });
+    });
+  }
+
+  get displacement(): Texture[] {
+    return this.targets.map((t) => t.textures[0]);
+  }
+
+  get derivatives(): Texture[] {
+    return this.targets.map((t) => t.textures[1]);
+  }
+
+  /** Evolves every cascade to time t (s) and transforms it. t is reduced mod T in float64 here. */
+  update(time: number): void {
+    const [x, y, z] = splitFraction(timeInPeriod(time, REPEAT_PERIOD) / REPEAT_PERIOD);
+    this.spectrumMaterials.forEach((material, c) => {
+      (material.uniforms.uTauOverT.value as Vector3).set(x, y, z);
+      this.fft.draw(material, this.evolved);
+      this.fft.transform(this.evolved.textures[0], this.evolved.textures[1], this.targets[c]);
+    });
+  }
+
+  dispose(): void {
+    this.fft.dispose();
+    this.evolved.dispose();
+    for (const t of this.targets) t.dispose();
+    for (const m of this.spectrumMaterials) m.dispose();
+    for (const t of this.inputs) t.dispose();
+  }
+}

@@ -1,0 +1,167 @@
+import { timeInPeriod } from './dispersion';
+import { cascadeLayout, type Cascade } from './cascades';
+import { InverseFft2d } from './fft2d';
+import { initialSpectrum, REPEAT_PERIOD, type SpectralTile } from './initialSpectrum';
+import type { SeaState } from './seaState';
+import { evolveSpectra } from './spectralFields';
+import { directionalSpectrum, frequencySpectrum, peakWavelength } from './waveSpectrum';
+import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample, type WaveModel } from './waveModel';
+
+/**
+ * The spatial fields of one cascade at one time, laid out as the GPU's two RGBA textures:
+ * n × n texels, texel (p, q) at index 4(q·n + p), p along x, q along z.
+ *   displacement: (dx, dy, dz, ∂Dx/∂x)
+ *   derivatives:  (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)      (D already times λ)
+ */
+export interface CascadeFields {
+  displacement: Float64Array;
+  derivatives: Float64Array;
+}
+
+/** Everything the GPU needs to draw the same sea: per cascade its tile and h₀ (the CPU draws h₀ once, the GPU evolves it). */
+export interface FftOceanSetup {
+  sea: SeaState;
+  cascades: Cascade[];
+  tiles: SpectralTile[];
+}
+
+export function fftOceanSetup(sea: SeaState): FftOceanSetup {
+  const spectrum = frequencySpectrum(sea);
+  const cascades = cascadeLayout(peakWavelength(sea), sea.fftSize);
+  const density = directionalSpectrum(sea, spectrum);
+  const tiles = cascades.map((c, i) => initialSpectrum(c, sea.fftSize, density, sea.depth, sea.seed, i));
+  return { sea, cascades, tiles };
+}
+
+/**
+ * CPU twin of the spectral sea, float64 (the seed report's "CPU Shader" idea for an FFT sea).
+ * setTime(t) runs the time evolution and 4 inverse FFTs per cascade (the costly part, once per
+ * time step; a Worker may own it and post `fields` back). displacement/sample then only read the
+ * fields, bilinearly, exactly as the GPU reads its textures (texel (p, q) of a tile of side L
+ * sits at x = p L/n, z = q L/n, tiles repeat), so the two agree to float32 rounding.
+ * Synchronous: displacement(x, z, t) and sample(x, z, t) call setTime(t) themselves when t changes.
+ */
+export class FftOcean implements WaveModel {
+  readonly name = 'fft' as const;
+  readonly setup: FftOceanSetup;
+  readonly fields: CascadeFields[];
+  private time = Number.NaN;
+  private readonly fft: InverseFft2d;
+  private readonly spectra: Float64Array[][];
+  private readonly bound: DisplacementBounds;
+  /** Texels per metre of each cascade. */
+  private readonly scale: number[];
+  private readonly acc = new Float64Array(4);
+
+  constructor(sea: SeaState) {
+    this.setup = fftOceanSetup(sea);
+    const n = sea.fftSize;
+    this.fft = new InverseFft2d(n);
+    this.spectra = this.setup.tiles.map(() => [0, 1, 2, 3].map(() => new Float64Array(2 * n * n)));
+    this.fields = this.setup.tiles.map(() => ({ displacement: new Float64Array(4 * n * n), derivatives: new Float64Array(4 * n * n) }));
+    this.scale = this.setup.cascades.map((c) => n / c.size);
+    // Strict bounds: |h(x,t)| ≤ Σ|h̃(k,t)| ≤ Σ(|h₀(k)| + |h₀(−k)|) = 2 Σ|h₀|, and |D| ≤ λ times that.
+    let sum = 0;
+    for (const tile of this.setup.tiles) for (let i = 0; i < tile.h0.length; i += 2) sum += 2 * Math.hypot(tile.h0[i], tile.h0[i + 1]);
+    this.bound = { vertical: sum, horizontal: sea.choppiness * sum };
+  }
+
+  /** Evolves to time t (s). Only t mod T matters (quantised dispersion), reduced here in float64. */
+  setTime(time: number): void {
+    if (time === this.time) return;
+    this.time = time;
+    const tau = timeInPeriod(time, REPEAT_PERIOD);
+    const n = this.setup.sea.fftSize;
+    this.setup.tiles.forEach((tile, c) => {
+      const spectra = evolveSpectra(tile, tau, this.setup.sea.choppiness, this.spectra[c]);
+      for (const s of spectra) this.fft.transform(s);
+      const { displacement, derivatives } = this.fields[c];
+      const [a, b, d, e] = spectra;
+      for (let i = 0; i < n * n; i++) {
+        displacement[4 * i] = a[2 * i];
+        displacement[4 * i + 1] = a[2 * i + 1];
+        displacement[4 * i + 2] = b[2 * i];
+        displacement[4 * i + 3] = b[2 * i + 1];
+        derivatives[4 * i] = d[2 * i];
+        derivatives[4 * i + 1] = d[2 * i + 1];
+        derivatives[4 * i + 2] = e[2 * i];
+        derivatives[4 * i + 3] = e[2 * i + 1];
+      }
+    });
+  }
+
+  displacement(x: number, z: number, time: number): [number, number, number] {
+    this.setTime(time);
+    const r = this.accumulate(x, z, 'displacement');
+    return [r[0], r[1], r[2]];
+  }
+
+  /** Sum over cascades of the derivative fields at the undisplaced grid point (x, z). */
+  derivatives(x: number, z: number, time: number): { sx: number; sz: number; jxx: number; jzz: number; jxz: number } {
+    this.setTime(time);
+    const jxx = this.accumulate(x, z, 'displacement')[3];
+    const r = this.accumulate(x, z, 'derivatives');
+    return { sx: r[0], sz: r[1], jxx, jzz: r[2], jxz: r[3] };
+  }
+
+  /** Bilinear read of one RGBA field of every cascade, summed, into this.acc (reused: no allocation per call). */
+  private accumulate(x: number, z: number, which: keyof CascadeFields): Float64Array {
+    const acc = this.acc;
+    acc.fill(0);
+    const n = this.setup.sea.fftSize;
+    for (let c = 0; c < this.fields.length; c++) {
+      const f = this.fields[c][which];
+      const u = x * this.scale[c];
+      const v = z * this.scale[c];
+      const fu = Math.floor(u);
+      const fv = Math.floor(v);
+      const wx = u - fu;
+      const wz = v - fv;
+      const p0 = ((fu % n) + n) % n;
+      const q0 = ((fv % n) + n) % n;
+      const p1 = p0 + 1 === n ? 0 : p0 + 1;
+      const q1 = q0 + 1 === n ? 0 : q0 + 1;
+      const i00 = 4 * (q0 * n + p0);
+      const i10 = 4 * (q0 * n + p1);
+      const i01 = 4 * (q1 * n + p0);
+      const i11 = 4 * (q1 * n + p1);
+      for (let ch = 0; ch < 4; ch++) {
+        const top = f[i00 + ch] + (f[i10 + ch] - f[i00 + ch]) * wx;
+        const bottom = f[i01 + ch] + (f[i11 + ch] - f[i01 + ch]) * wx;
+        acc[ch] += top + (bottom - top) * wz;
+      }
+    }
+    return acc;
+  }
+
+  /**
+   * Normal of the displaced surface P(x, z) = (x + Dx, h, z + Dz) at the grid point (x, z):
+   * the cross product of its tangents ∂P/∂z × ∂P/∂x, exact from the spectral derivatives.
+   */
+  normalAt(x: number, z: number, time: number): [number, number, number] {
+    const d = this.derivatives(x, z, time);
+    const tx = [1 + d.jxx, d.sx, d.jxz];
+    const tz = [d.jxz, d.sz, 1 + d.jzz];
+    const nx = tz[1] * tx[2] - tz[2] * tx[1];
+    const ny = tz[2] * tx[0] - tz[0] * tx[2];
+    const nz = tz[0] * tx[1] - tz[1] * tx[0];
+    const len = Math.hypot(nx, ny, nz);
+    return [nx / len, ny / len, nz / len];
+  }
+
+  /** Jacobian of the horizontal map at grid point (x, z): below 1 compresses, below 0 folds (foam). */
+  jacobian(x: number, z: number, time: number): number {
+    const d = this.derivatives(x, z, time);
+    return (1 + d.jxx) * (1 + d.jzz) - d.jxz * d.jxz;
+  }
+
+  sample(x: number, z: number, time: number): SurfaceSample {
+    this.setTime(time);
+    const p = undoHorizontalDisplacement((px, pz) => this.displacement(px, pz, time), x, z);
+    return { height: this.displacement(p.x, p.z, time)[1], normal: this.normalAt(p.x, p.z, time) };
+  }
+
+  bounds(): DisplacementBounds {
+    return this.bound;
+  }
+}

@@ -1,0 +1,205 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import puppeteer, { type Browser, type Page } from 'puppeteer';
+import { build } from 'vite';
+import { join } from 'node:path';
+import { BROWSER_ARGS } from './harness';
+import { findBrowser } from './findBrowser';
+import { InverseFft2d } from '../../src/sim/fft2d';
+import { FftOcean } from '../../src/sim/fftOcean';
+import { seededRandom } from '../../src/sim/integerHash';
+import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/seaState';
+import type { FftParityApi } from './fixtures/fftParity';
+
+/**
+ * The GPU FFT (render targets, Stockham passes, float32) against fft.js (float64) on the CPU:
+ * impulses, single modes, seeded random spectra, and the whole spectral ocean against its CPU twin.
+ * The page is a bundle of tests/browser/fixtures/fftParity.ts on about:blank.
+ */
+let browser: Browser;
+let page: Page;
+
+beforeAll(async () => {
+  const output = await build({
+    configFile: false,
+    logLevel: 'warn',
+    build: { write: false, minify: false, target: 'es2022', lib: { entry: join(import.meta.dirname, 'fixtures/fftParity.ts'), formats: ['es'], fileName: 'fftParity' } },
+  });
+  const bundles = Array.isArray(output) ? output : [output];
+  const chunk = bundles.flatMap((b) => ('output' in b ? b.output : [])).find((o) => o.type === 'chunk');
+  if (!chunk || chunk.type !== 'chunk') throw new Error('No bundle for the FFT parity page.');
+  browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true });
+  page = await browser.newPage();
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.setContent('<!doctype html><html><body></body></html>');
+  await page.addScriptTag({ content: chunk.code, type: 'module' });
+  await page.waitForFunction(() => 'fftParity' in window, { timeout: 60_000 });
+  expect(errors).toEqual([]);
+}, 300_000);
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+const gpu = <K extends keyof FftParityApi>(name: K, ...args: Parameters<FftParityApi[K]>): Promise<ReturnType<FftParityApi[K]>> =>
+  page.evaluate((n, a) => (window as unknown as { fftParity: Record<string, (...x: unknown[]) => unknown> }).fftParity[n](...a), name, args as unknown[]) as Promise<ReturnType<FftParityApi[K]>>;
+
+/** fft.js reference for the packed layout: RGBA texel = two complex numbers; inverse, unnormalised. */
+function cpuInverse(n: number, input: number[]): number[] {
+  const fft = new InverseFft2d(n);
+  const out = new Array<number>(4 * n * n);
+  for (const half of [0, 1]) {
+    const c = new Float64Array(2 * n * n);
+    for (let i = 0; i < n * n; i++) {
+      c[2 * i] = input[4 * i + 2 * half];
+      c[2 * i + 1] = input[4 * i + 2 * half + 1];
+    }
+    fft.transform(c);
+    for (let i = 0; i < n * n; i++) {
+      out[4 * i + 2 * half] = c[2 * i];
+      out[4 * i + 2 * half + 1] = c[2 * i + 1];
+    }
+  }
+  return out;
+}
+
+function relativeError(got: ArrayLike<number>, want: ArrayLike<number>): number {
+  let diff = 0;
+  let scale = 0;
+  for (let i = 0; i < want.length; i++) {
+    diff = Math.max(diff, Math.abs(got[i] - want[i]));
+    scale = Math.max(scale, Math.abs(want[i]));
+  }
+  return diff / scale;
+}
+
+type Case = { name: string; input: (n: number) => [number[], number[]] };
+const zeros = (n: number) => new Array<number>(4 * n * n).fill(0);
+const cases: Case[] = [
+  {
+    name: 'impulses (→ single plane waves)',
+    input: (n) => {
+      const a = zeros(n);
+      const b = zeros(n);
+      a[4 * (3 * n + 5)] = 1; // mode (5, 3), real
+      a[4 * (0 * n + 0) + 3] = 0.5; // DC of the second signal, imaginary
+      b[4 * ((n - 1) * n + 2) + 1] = -2; // mode (2, −1)
+      b[4 * ((n / 2) * n + n / 2) + 2] = 1; // the Nyquist corner
+      return [a, b];
+    },
+  },
+  {
+    name: 'single modes (→ impulses)',
+    input: (n) => {
+      const a = zeros(n);
+      const b = zeros(n);
+      for (let q = 0; q < n; q++) {
+        for (let p = 0; p < n; p++) {
+          const phase = (-2 * Math.PI * (7 * p + 2 * q)) / n;
+          a[4 * (q * n + p)] = Math.cos(phase);
+          a[4 * (q * n + p) + 1] = Math.sin(phase);
+          b[4 * (q * n + p) + 2] = Math.cos((-2 * Math.PI * (n - 1) * q) / n);
+          b[4 * (q * n + p) + 3] = Math.sin((-2 * Math.PI * (n - 1) * q) / n);
+        }
+      }
+      return [a, b];
+    },
+  },
+  {
+    name: 'seeded random spectra',
+    input: (n) => {
+      const r = seededRandom(n * 7 + 1);
+      return [zeros(n).map(() => r() - 0.5), zeros(n).map(() => r() - 0.5)];
+    },
+  },
+];
+
+describe('GPU FFT against fft.js', () => {
+  for (const n of [64, 128, 256]) {
+    for (const c of cases) {
+      it(`${c.name}, n = ${n}: within 1e-4 relative (planted fault: transposed reference fails)`, async () => {
+        const [a, b] = c.input(n);
+        const [ga, gb] = await gpu('inverse', n, a, b);
+        const wantA = cpuInverse(n, a);
+        const wantB = cpuInverse(n, b);
+        const errors = [relativeError(ga, wantA), relativeError(gb, wantB)];
+        console.log(`GPU FFT ${c.name} n=${n}: relative error ${errors.map((e) => e.toExponential(2)).join(', ')}`);
+        for (const e of errors) expect(e).toBeLessThan(1e-4);
+        // negative control: the reference with x and z swapped
+        const transposed = wantA.map((_, i) => {
+          const t = Math.floor(i / 4);
+          const p = t % n;
+          const q = Math.floor(t / n);
+          return wantA[4 * (p * n + q) + (i % 4)];
+        });
+        expect(relativeError(ga, transposed)).toBeGreaterThan(1e-2);
+      });
+    }
+  }
+});
+
+describe('GPU spectral ocean against its CPU twin', () => {
+  for (const [name, sea] of [
+    ['fresh breeze, PM, 64²', { ...DEFAULT_SEA_STATE, fftSize: 64, windSpeed: 10 }],
+    ['gale, 128²', { ...DEFAULT_SEA_STATE, fftSize: 128, windSpeed: 20, seed: 5 }],
+    ['short fetch JONSWAP, 256²', { ...DEFAULT_SEA_STATE, fftSize: 256, windSpeed: 20, spectrum: 'jonswap', fetch: 20_000, seed: 9 }],
+  ] as [string, SeaState][]) {
+    it(`${name}: every texel of every cascade within 1 mm (fields within 1e-4 relative), at t = 10 s and t = 10⁶ + 3.7 s`, async () => {
+      const times = [10, 1e6 + 3.7];
+      const gpuFields = await gpu('ocean', sea, times);
+      const cpu = new FftOcean(sea);
+      times.forEach((t, ti) => {
+        cpu.setTime(t);
+        cpu.fields.forEach((f, c) => {
+          const [displacement, derivatives] = gpuFields[ti][c];
+          let mm = 0;
+          for (let i = 0; i < displacement.length; i++) mm = Math.max(mm, Math.abs(displacement[i] - f.displacement[i]));
+          const rel = [relativeError(displacement, f.displacement), relativeError(derivatives, f.derivatives)];
+          console.log(`${name} t=${t} cascade ${c}: max |Δ| ${(mm * 1000).toFixed(4)} mm, relative ${rel.map((e) => e.toExponential(2)).join(', ')}`);
+          expect(mm).toBeLessThan(1e-3);
+          for (const e of rel) expect(e).toBeLessThan(1e-4);
+        });
+      });
+      // planted fault: the CPU twin 0.05 s later is not the GPU's sea
+      cpu.setTime(times[0] + 0.05);
+      expect(relativeError(gpuFields[0][0][0], cpu.fields[0].displacement)).toBeGreaterThan(1e-3);
+    });
+  }
+
+  it('shaders/fftWaves.glsl gives the CPU twin’s displacement within 1 mm, and its normal and Jacobian, on seeded random points (t = 37 s and 10⁶ + 0.3 s)', async () => {
+    const sea: SeaState = { ...DEFAULT_SEA_STATE, fftSize: 64, windSpeed: 15, seed: 11 };
+    const random = seededRandom(2024);
+    const points = Array.from({ length: 128 }, () => (random() - 0.5) * 2000);
+    const cpu = new FftOcean(sea);
+    for (const t of [37, 1e6 + 0.3]) {
+      const [displacement, normal] = await gpu('sample', sea, t, points);
+      let mm = 0;
+      let normalError = 0;
+      let jacobianError = 0;
+      let planted = 0;
+      for (let i = 0; i < points.length / 2; i++) {
+        const [x, z] = [points[2 * i], points[2 * i + 1]];
+        const d = cpu.displacement(x, z, t);
+        for (let c = 0; c < 3; c++) mm = Math.max(mm, Math.abs(displacement[4 * i + c] - d[c]));
+        jacobianError = Math.max(jacobianError, Math.abs(displacement[4 * i + 3] - cpu.jacobian(x, z, t)));
+        const n = cpu.normalAt(x, z, t);
+        for (let c = 0; c < 3; c++) normalError = Math.max(normalError, Math.abs(normal[4 * i + c] - n[c]));
+        // planted fault: the CPU twin read half a texel of the largest tile away
+        planted = Math.max(planted, Math.abs(displacement[4 * i + 1] - cpu.displacement(x + (0.5 * cpu.setup.cascades[0].size) / 64, z, t)[1]));
+      }
+      console.log(`fftWaves.glsl vs CPU twin, t=${t}: displacement ${(mm * 1000).toFixed(4)} mm, normal ${normalError.toExponential(2)}, J ${jacobianError.toExponential(2)}; planted fault ${(planted * 1000).toFixed(1)} mm`);
+      expect(mm).toBeLessThan(1e-3);
+      expect(normalError).toBeLessThan(1e-3);
+      expect(jacobianError).toBeLessThan(1e-3);
+      expect(planted).toBeGreaterThan(1e-2);
+    }
+  });
+
+  it('reports the GPU FFT cost on this renderer (3 cascades, one update)', async () => {
+    for (const fftSize of [64, 128, 256] as const) {
+      const ms = await gpu('cost', { ...DEFAULT_SEA_STATE, fftSize }, fftSize === 256 ? 5 : 10);
+      console.log(`GPU FFT ocean update, 3 cascades, ${fftSize}²: ${ms.toFixed(1)} ms`);
+      expect(ms).toBeGreaterThan(0);
+    }
+  });
+});
