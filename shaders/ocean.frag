@@ -3,6 +3,8 @@
 // refracted through Snell's window, total internal reflection of the water outside it.
 
 #include <oceano_water_volume>
+// The wave model's chunk, only for models with closed-form normals (see WAVES_FRAGMENT_INCLUDE).
+#include <oceano_waves_fragment>
 
 uniform samplerCube uSky;
 uniform sampler2D uFresnelTable;
@@ -22,6 +24,10 @@ uniform bool uLodColors;
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
 varying float vBand;
+#ifdef WAVE_NORMAL_PER_PIXEL
+varying vec2 vGridXZ;
+uniform bool uFlatNormals;
+#endif
 
 // The LOD debugger's band colours, near to far.
 const vec3 BAND_COLORS[6] = vec3[6](
@@ -72,7 +78,14 @@ void main() {
   vec3 toEye = cameraPosition - vWorldPosition;
   float distance = length(toEye);
   vec3 v = toEye / distance;
+#ifdef WAVE_NORMAL_PER_PIXEL
+  // The closed-form normal at this pixel's own grid point: the mapping from grid to
+  // displaced surface is smooth, so interpolating the grid point is exact to first order,
+  // and the crests keep their sharp highlights between vertices.
+  vec3 n = uFlatNormals ? vec3(0.0, 1.0, 0.0) : waveNormal(vGridXZ);
+#else
   vec3 n = normalize(vNormal);
+#endif
   if (uShowNormals) {
     gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
     return;

@@ -15,6 +15,10 @@ attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
 varying float vBand;
+#ifdef WAVE_NORMAL_PER_PIXEL
+// The undisplaced grid point, for models whose normal ocean.frag evaluates per pixel.
+varying vec2 vGridXZ;
+#endif
 
 // Integers, so the snapped vertex lands exactly on the neighbour's vertex.
 int snapEdge(int k, int step) {
@@ -37,5 +41,8 @@ void main() {
   vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : waveNormal(gridXZ);
   vWorldPosition = world;
   vBand = aChunk.z;
+#ifdef WAVE_NORMAL_PER_PIXEL
+  vGridXZ = gridXZ;
+#endif
   gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);
 }

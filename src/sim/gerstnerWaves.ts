@@ -1,7 +1,7 @@
 import { type DisplacementBounds, type SurfaceSample, type WaveModel } from './waveModel';
 
 /**
- * A sum of Gerstner (trochoidal) waves, the CPU twin of shaders/gerstner.glsl.
+ * A sum of Gerstner (trochoidal) waves, the CPU twin of shaders/waves/gerstner.glsl.
  *
  * Each wave i moves the undisplaced grid point p = (x, z) to
  *   p + ( −Qᵢ Aᵢ k̂ᵢ sin θᵢ ,  Aᵢ cos θᵢ ),   θᵢ = kᵢ · p − ωᵢ t + φᵢ

@@ -33,8 +33,9 @@ interface ChoiceDef {
 export type ParamDef = NumberDef | BooleanDef | ColorDef | ChoiceDef;
 
 export const paramDefs = {
-  // The wave model (src/sim/waveModels.ts): 'seed' is the seed report's sines and Perlin ripples.
-  waves: { kind: 'choice', default: 'seed', options: ['seed'], label: 'Wave model' },
+  // The wave model (src/sim/waveModels.ts): 'seed' is the seed report's sines and Perlin ripples,
+  // 'gerstner' a sum of trochoids drawn from the wind spectrum (src/sim/gerstnerLiveModel.ts).
+  waves: { kind: 'choice', default: 'seed', options: ['seed', 'gerstner'], label: 'Wave model' },
   seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },
   swellAmplitude: { kind: 'number', default: 1.4, min: 0, max: 4, step: 0.05, unit: 'm', label: 'Swell amplitude' },
   swellFrequency: { kind: 'number', default: 0.05, min: 0.005, max: 0.2, step: 0.001, unit: 'rad/m', label: 'Swell frequency' },

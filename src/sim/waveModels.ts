@@ -1,5 +1,6 @@
 import type { Heightmap } from './perlinNoise';
 import type { OceanParams } from './params';
+import { GerstnerLiveModel } from './gerstnerLiveModel';
 import { SeedWaveModel } from './seedWaveModel';
 import type { WaveModel } from './waveModel';
 
@@ -26,6 +27,7 @@ export interface LiveWaveModel extends WaveModel {
  */
 const FACTORIES: { [K in WavesChoice]: (params: OceanParams) => LiveWaveModel } = {
   seed: (params) => new SeedWaveModel(params),
+  gerstner: (params) => new GerstnerLiveModel(params),
 };
 
 export function createWaveModel(params: OceanParams): LiveWaveModel {

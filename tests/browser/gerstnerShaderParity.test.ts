@@ -9,12 +9,12 @@ import { seededRandom } from '../../src/sim/integerHash';
 import { cosineSquared, piersonMoskowitz } from '../unit/localSpectra';
 
 /**
- * shaders/gerstner.glsl against its CPU twin, on SwiftShader's WebGL2, before the chunk is
+ * shaders/waves/gerstner.glsl against its CPU twin, on SwiftShader's WebGL2, before the chunk is
  * wired into the ocean: the chunk's waveDisplacement and waveNormal run in a bare vertex
  * shader whose outputs are captured by transform feedback, on float32 points up to 3 km
  * out and times up to 10⁶ s. Needs no build and no app page (about:blank).
  */
-const CHUNK = readFileSync(new URL('../../shaders/gerstner.glsl', import.meta.url), 'utf8');
+const CHUNK = readFileSync(new URL('../../shaders/waves/gerstner.glsl', import.meta.url), 'utf8');
 const PARITY_SEED = 20261121;
 const TIMES = [0, 37.25, 100_000.125, 987_654.3];
 

@@ -12,7 +12,7 @@ import {
 import { drawGerstnerWaves, gerstnerSea, limitSteepness, linearDispersion, wavenumberFor } from '../../src/sim/gerstnerSpectrum';
 import { undoHorizontalDisplacement } from '../../src/sim/waveModel';
 import { GERSTNER_MAX_WAVES } from '../../src/render/waveModels/gerstnerWaveUniforms';
-import gerstnerGlsl from '../../shaders/gerstner.glsl?raw';
+import gerstnerGlsl from '../../shaders/waves/gerstner.glsl?raw';
 import { G, cosineSquared, jonswap, piersonMoskowitz } from './localSpectra';
 
 const TWO_PI = 2 * Math.PI;

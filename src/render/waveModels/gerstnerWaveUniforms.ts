@@ -1,14 +1,14 @@
 import { Vector4, type IUniform } from 'three';
-import gerstnerChunk from '../../../shaders/gerstner.glsl?raw';
+import gerstnerChunk from '../../../shaders/waves/gerstner.glsl?raw';
 import { gerstnerTimePhases, type GerstnerWave } from '../../sim/gerstnerWaves';
 
-/** Must equal GERSTNER_MAX_WAVES in shaders/gerstner.glsl (params.gerstnerCount's maximum). */
+/** Must equal GERSTNER_MAX_WAVES in shaders/waves/gerstner.glsl (params.gerstnerCount's maximum). */
 export const GERSTNER_MAX_WAVES = 64;
 
 export type GerstnerUniforms = Record<'uGerstnerCount' | 'uGerstnerWaves' | 'uGerstnerPhases', IUniform>;
 
 /**
- * The render side of the Gerstner model: its GLSL chunk (shaders/gerstner.glsl, which
+ * The render side of the Gerstner model: its GLSL chunk (shaders/waves/gerstner.glsl, which
  * defines waveDisplacement and waveNormal per the wave-model seam), the uniforms that chunk
  * reads, and the per-frame update. The wave table is uploaded once per sea; each frame
  * only the 64 reduced time phases change, computed in double precision on the CPU by the

@@ -2,6 +2,8 @@ import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
 import { SeedWaveModel } from '../../sim/seedWaveModel';
 import type { WaveModelView } from './waveModelView';
 import { SeedWaveView } from './seedWaveView';
+import { GerstnerLiveModel } from '../../sim/gerstnerLiveModel';
+import { GerstnerWaveView } from './gerstnerWaveView';
 import type { WebGLRenderer } from 'three';
 
 /**
@@ -13,6 +15,10 @@ const VIEWS: { [K in WavesChoice]: (model: LiveWaveModel, renderer: WebGLRendere
   seed: (model) => {
     if (!(model instanceof SeedWaveModel)) throw new TypeError(`The seed wave view needs a SeedWaveModel, got '${model.name}'.`);
     return new SeedWaveView(model);
+  },
+  gerstner: (model) => {
+    if (!(model instanceof GerstnerLiveModel)) throw new TypeError(`The Gerstner wave view needs a GerstnerLiveModel, got '${model.name}'.`);
+    return new GerstnerWaveView(model);
   },
 };
 

@@ -1,5 +1,5 @@
 import type { IUniform, Material, ShaderMaterial } from 'three';
-import { WAVES_INCLUDE, type WaveModelView } from './waveModelView';
+import { WAVES_FRAGMENT_INCLUDE, WAVES_INCLUDE, type WaveModelView } from './waveModelView';
 
 interface BoundShader {
   material: ShaderMaterial;
@@ -31,7 +31,12 @@ export class WaveBinding {
 
   /** GLSL source with the generic include pointed at the active model's chunk. */
   resolve(source: string): string {
-    return source.split(WAVES_INCLUDE).join(`#include <${this.active.chunkName}>`);
+    const chunk = `#include <${this.active.chunkName}>`;
+    return source
+      .split(WAVES_FRAGMENT_INCLUDE)
+      .join(this.active.perPixelNormals ? chunk : '')
+      .split(WAVES_INCLUDE)
+      .join(chunk);
   }
 
   /** Binds a ShaderMaterial whose sources contain `#include <oceano_waves>`; returns it. */

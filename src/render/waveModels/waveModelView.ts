@@ -23,6 +23,12 @@ export interface WaveModelView {
   readonly chunkName: string;
   /** What the chunk reads. The same objects go into every material bound to this model. */
   readonly uniforms: Readonly<Record<string, IUniform>>;
+  /**
+   * True when the chunk's waveNormal is cheap enough to run per pixel (closed form): ocean.frag
+   * then includes the chunk (WAVES_FRAGMENT_INCLUDE) and evaluates it at the interpolated
+   * grid point instead of interpolating vertex normals.
+   */
+  readonly perPixelNormals?: boolean;
   /** Textures the "heightmap" teaching view shows, where the model has any. */
   readonly heightmapTextures?: readonly [Texture, Texture];
   /** Passes new parameters to the model and re-uploads whatever they changed. */
@@ -34,3 +40,9 @@ export interface WaveModelView {
 
 /** The include every wave-reading shader writes; see WaveBinding. */
 export const WAVES_INCLUDE = '#include <oceano_waves>';
+
+/**
+ * The include ocean.frag writes: the active chunk for a model with per-pixel normals,
+ * nothing for the others, so their fragment programs stay exactly as they were.
+ */
+export const WAVES_FRAGMENT_INCLUDE = '#include <oceano_waves_fragment>';

@@ -1,5 +1,14 @@
-// The Gerstner sea: the GLSL twin of src/sim/gerstnerWaves.ts (gerstnerDisplacementAt,
-// gerstnerNormalAt). Keep the two in step: a parity test compares them.
+// The Gerstner sea as a wave-model chunk (`#include <oceano_waves>` resolves here when
+// waves=gerstner; see src/render/waveModels/): the GLSL twin of src/sim/gerstnerWaves.ts
+// (gerstnerDisplacementAt, gerstnerNormalAt). Keep the two in step: parity tests compare them.
+//
+// The contract every model's chunk meets:
+//   vec3 waveDisplacement(vec2 gridXZ)  where the undisplaced grid point goes, (dx, dy, dz)
+//   vec3 waveNormal(vec2 gridXZ)        unit normal of the displaced surface there
+//   float waveLensHeight(vec2 worldXZ)  the short waves' height, whose bumps focus sunlight
+//                                       into the underwater shafts (god rays)
+// and, because the normal is closed-form and cheap, it asks ocean.frag to evaluate
+// waveNormal per pixel at the interpolated grid point (WAVE_NORMAL_PER_PIXEL).
 //
 // Wave i moves grid point p to p + (−QᵢAᵢ k̂ᵢ sin θᵢ, Aᵢ cos θᵢ), θᵢ = kᵢ·p − ωᵢt + φᵢ.
 // Angles are in turns. The time part τᵢ = fract(φᵢ − ωᵢt/2π) arrives already reduced in
@@ -7,6 +16,7 @@
 // part is fract(cₓ x) + fract(c_z z), which drops the integer turns before they cost bits.
 
 #define GERSTNER_MAX_WAVES 64
+#define WAVE_NORMAL_PER_PIXEL
 
 uniform int uGerstnerCount;
 // Per wave: (cₓ, c_z) the wavevector in cycles per metre, A the amplitude (m), QA the
@@ -19,8 +29,8 @@ const float GERSTNER_TWO_PI = 6.283185307179586;
 
 // GLSL's sin and cos promise only about 2^-11 absolute accuracy (SwiftShader gives just
 // that), which on a 2-m wave is 1e-3 m, ten times the parity budget. So, as in
-// displacement.glsl: fold the turn into [-1/4, 1/4] and use the Taylor series to x^11,
-// accurate to 6e-8 over [-π/2, π/2]. Named apart from displacement.glsl's sinTurns so both
+// waves/seed.glsl: fold the turn into [-1/4, 1/4] and use the Taylor series to x^11,
+// accurate to 6e-8 over [-π/2, π/2]. Named apart from waves/seed.glsl's sinTurns so both
 // chunks can sit in one program.
 float gerstnerSinTurns(float turns) {
   float s = fract(turns) - 0.5;
@@ -82,4 +92,20 @@ vec3 waveNormal(vec2 gridXZ) {
   vec3 tx = vec3(1.0 + dxdx, dydx, dxdz);
   vec3 tz = vec3(dxdz, dydz, 1.0 + dzdz);
   return normalize(cross(tz, tx));
+}
+
+// Waves shorter than this focus sunlight within the god-ray shafts' few metres; longer ones
+// only tilt the whole shaft field. Their height is taken at the world point itself (their
+// horizontal motion, a fraction of a metre, moves the shafts, not their pattern).
+const float GERSTNER_LENS_WAVELENGTH = 12.0;
+
+float waveLensHeight(vec2 worldXZ) {
+  float h = 0.0;
+  for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
+    if (i >= uGerstnerCount) break;
+    vec4 wave = uGerstnerWaves[i];
+    if (dot(wave.xy, wave.xy) * GERSTNER_LENS_WAVELENGTH * GERSTNER_LENS_WAVELENGTH < 1.0) continue;
+    h += wave.z * gerstnerSinTurns(gerstnerTurns(wave, gerstnerPhase(i), worldXZ) + 0.25);
+  }
+  return h;
 }
