@@ -1,6 +1,7 @@
 import type { OceanApp, BoatInfo, CameraPose, LoopActivity, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
 import type { SurfaceSample } from '../sim/waveModel';
+import type { PhysicsReport } from '../sim/physicsReport';
 import type { ProbeSample } from '../render/surfaceProbe';
 import type { PassTiming } from '../render/underwaterPost';
 
@@ -25,6 +26,8 @@ export interface OceanoApi {
   /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boatPose.ts). */
   boat(): BoatInfo;
   stats(): OceanStats;
+  /** The running sea measured through its CPU twin against theory (the physics panel's figures). Takes seconds. */
+  physics(): PhysicsReport;
   notices(): string[];
   /** The link that reopens this view exactly (what the share button copies). */
   shareUrl(): string;
@@ -39,6 +42,8 @@ export interface OceanoApi {
     heightmaps(): { size: number; data: Float32Array }[];
     /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
     lodUpdateMs(batches?: number): number;
+    /** How many times the physics estimators have run, once the open panel has drawn. */
+    physicsRuns(): Promise<number>;
   };
   readonly three: ReturnType<OceanApp['three']>;
 }
@@ -64,6 +69,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     probeGpu: async (points, t) => app.probeGpu(points, t),
     boat: () => app.boat(),
     stats: () => app.stats(),
+    physics: () => app.physics(),
     notices: () => app.notices.messages(),
     shareUrl: () => app.shareUrl(),
     activity: () => app.activity(),
@@ -73,6 +79,11 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
       passTimings: () => app.passTimings(),
       heightmaps: () => app.heightmaps(),
       lodUpdateMs: (batches) => app.lodUpdateMs(batches),
+      physicsRuns: async () => {
+        const state = app.physicsPanelState();
+        await state.settled;
+        return app.physicsPanelState().runs;
+      },
     },
     get three() {
       return app.three();

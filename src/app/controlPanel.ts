@@ -5,6 +5,10 @@ import type { Translator, UiTextId } from './i18n';
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
+  // The wind sea that waves=gerstner (and the FFT sea) draw from.
+  { title: 'folderWind', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading'] },
+  { title: 'folderGerstner', keys: ['gerstnerCount', 'gerstnerSteepness'] },
+  { title: 'folderPhysics', keys: ['physics'] },
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow'] },
   { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },

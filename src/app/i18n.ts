@@ -80,6 +80,9 @@ export type UiTextId =
   | 'folderBoat'
   | 'folderLod'
   | 'folderUnderwater'
+  | 'folderWind'
+  | 'folderGerstner'
+  | 'folderPhysics'
   | 'dive'
   | 'surface'
   | 'folderLiveCounts'
@@ -105,6 +108,9 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderBoat: 'Boat',
     folderLod: 'LOD & culling',
     folderUnderwater: 'Underwater',
+    folderWind: 'Wind & spectrum',
+    folderGerstner: 'Gerstner waves',
+    folderPhysics: 'Physics vs theory',
     dive: 'Dive under the surface',
     surface: 'Back to the surface view',
     folderLiveCounts: 'LOD counts (live)',
@@ -129,6 +135,9 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderBoat: 'Barco',
     folderLod: 'LOD y recorte',
     folderUnderwater: 'Bajo el agua',
+    folderWind: 'Viento y espectro',
+    folderGerstner: 'Ondas de Gerstner',
+    folderPhysics: 'Física frente a teoría',
     dive: 'Sumergirse',
     surface: 'Volver a la superficie',
     folderLiveCounts: 'Contadores de LOD (en vivo)',
@@ -165,6 +174,7 @@ export const SPANISH_PARAM_LABELS: Partial<Record<ParamKey, string>> = {
   normals: 'Normales',
   view: 'Vista',
   fresnelPlot: 'Gráfico de Fresnel',
+  physics: 'Panel de física',
   boatSpeed: 'Velocidad del barco',
   boatHeading: 'Rumbo del barco',
   boatResponse: 'Tiempo de respuesta de flotación',

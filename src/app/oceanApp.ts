@@ -20,6 +20,8 @@ import { Translator, type Language } from './i18n';
 import { BoatSteering } from './boatSteering';
 import { Notices } from './notices';
 import { FresnelPlot } from './fresnelPlot';
+import { PhysicsPanel } from './physicsPanel';
+import type { PhysicsReport } from '../sim/physicsReport';
 import { PlayButton } from './playButton';
 import { SimulationClock } from './simulationClock';
 import { formatUrlState, type UrlState } from './urlState';
@@ -121,6 +123,7 @@ export class OceanApp {
   private controls!: OrbitControls;
   private panel?: ControlPanel;
   private fresnelPlot?: FresnelPlot;
+  private readonly physicsPanel: PhysicsPanel;
   private readonly playButton: PlayButton;
   private resizeObserver?: ResizeObserver;
   private frameTimes: number[] = [];
@@ -164,6 +167,17 @@ export class OceanApp {
       this.clock.playing ? this.pause() : this.play(),
     );
     this.playButton.sync(this.clock.playing);
+    this.physicsPanel = new PhysicsPanel(container, { model: () => this.view.waves, params: () => this.params, time: () => this.clock.time });
+  }
+
+  /** The running sea measured against theory (what the physics panel shows); seconds of CPU. */
+  physics(): PhysicsReport {
+    return this.physicsPanel.measure();
+  }
+
+  /** Estimator runs so far, and a promise that the open panel has drawn (tests). */
+  physicsPanelState(): { runs: number; settled: Promise<void> } {
+    return { runs: this.physicsPanel.runs, settled: this.physicsPanel.settled() };
   }
 
   /** Shows a message in the app's language. */
@@ -215,6 +229,7 @@ export class OceanApp {
     this.canvas.addEventListener('webglcontextlost', this.onContextLost);
     this.canvas.addEventListener('webglcontextrestored', this.onContextRestored);
     this.showFresnelPlot(this.params.fresnelPlot);
+    this.physicsPanel.setOpen(this.params.physics);
     // The full page steers from anywhere; an embedded figure only when it has the focus.
     const keyTarget: Window | HTMLElement = this.options.showPanel ? window : this.container;
     this.steering = new BoatSteering(keyTarget, (change) => this.setParams(change), () => this.params);
@@ -420,6 +435,7 @@ export class OceanApp {
     }
     this.view.applyParams(this.params);
     this.showFresnelPlot(this.params.fresnelPlot);
+    if (this.started) this.physicsPanel.setOpen(this.params.physics);
     this.panel?.sync(this.params, this.clock.playing);
     this.requestRender();
     return this.getParams();
@@ -571,6 +587,7 @@ export class OceanApp {
     this.panel?.dispose();
     this.playButton.dispose();
     this.fresnelPlot?.dispose();
+    this.physicsPanel.dispose();
     this.notices.dispose();
     if (this.started) {
       this.controls.removeEventListener('change', this.requestRender);

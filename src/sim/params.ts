@@ -55,6 +55,8 @@ export const paramDefs = {
   normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },
   view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap'], label: 'View' },
   fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
+  // The physics panel (src/app/physicsPanel.ts): the running sea measured against theory.
+  physics: { kind: 'boolean', default: false, label: 'Physics panel' },
   lodDistance: { kind: 'number', default: 100, min: 10, max: 1000, step: 5, unit: 'm', label: 'LOD distance L' },
   lodBands: { kind: 'integer', default: 6, min: 1, max: 6, unit: '', label: 'LOD bands' },
   lodColors: { kind: 'boolean', default: false, label: 'Colour chunks by band' },
