@@ -6,7 +6,7 @@ import { findBrowser } from './findBrowser';
 import { gerstnerSea } from '../../src/sim/gerstnerSpectrum';
 import { GerstnerWaveModel, gerstnerTimePhases } from '../../src/sim/gerstnerWaves';
 import { seededRandom } from '../../src/sim/integerHash';
-import { cosineSquared, piersonMoskowitz } from '../unit/localSpectra';
+import { cosineSquared, piersonMoskowitz } from '../unit/testSeas';
 
 /**
  * shaders/waves/gerstner.glsl against its CPU twin, on SwiftShader's WebGL2, before the chunk is

@@ -3,7 +3,7 @@ import type { Vector4 } from 'three';
 import { GERSTNER_MAX_WAVES, GerstnerWaveUniforms } from '../../src/render/waveModels/gerstnerWaveUniforms';
 import { gerstnerSea } from '../../src/sim/gerstnerSpectrum';
 import { gerstnerTimePhases } from '../../src/sim/gerstnerWaves';
-import { cosineSquared, piersonMoskowitz } from './localSpectra';
+import { cosineSquared, piersonMoskowitz } from './testSeas';
 
 const sea = gerstnerSea({ count: 37, seed: 4, spectrum: piersonMoskowitz(9).spectrum, spreading: cosineSquared, windDirection: 2, steepness: 0.7 });
 

@@ -13,13 +13,13 @@ import { drawGerstnerWaves, gerstnerSea, limitSteepness, linearDispersion, waven
 import { undoHorizontalDisplacement } from '../../src/sim/waveModel';
 import { GERSTNER_MAX_WAVES } from '../../src/render/waveModels/gerstnerWaveUniforms';
 import gerstnerGlsl from '../../shaders/waves/gerstner.glsl?raw';
-import { G, cosineSquared, jonswap, piersonMoskowitz } from './localSpectra';
+import { G, cosineSquared, jonswap, piersonMoskowitz } from './testSeas';
 
 const TWO_PI = 2 * Math.PI;
 /** The inversion sweeps take 1–3 s alone; the shared 2-core machine can triple that. */
 const SLOW = 30_000;
 
-/** A sea from the test's PM spectrum (local copy, see localSpectra.ts). */
+/** A sea from the test's PM spectrum (the app's PM, see testSeas.ts). */
 function pmSea(u10: number, count: number, seed: number, steepness = 1): GerstnerWave[] {
   return gerstnerSea({ count, seed, spectrum: piersonMoskowitz(u10).spectrum, spreading: cosineSquared, windDirection: 0.3, steepness });
 }

@@ -16,7 +16,7 @@ import {
 import { gerstnerSea, linearDispersion, type Dispersion } from '../../src/sim/gerstnerSpectrum';
 import { GerstnerWaveModel } from '../../src/sim/gerstnerWaves';
 import { seededRandom } from '../../src/sim/integerHash';
-import { G, cosineSquared, jonswap, piersonMoskowitz } from './localSpectra';
+import { G, cosineSquared, jonswap, piersonMoskowitz } from './testSeas';
 
 const TWO_PI = 2 * Math.PI;
 const deep: Dispersion = (k) => Math.sqrt(G * k);
