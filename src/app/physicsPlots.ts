@@ -144,7 +144,8 @@ export class PhysicsView {
           width: PLOT_WIDTH,
           height: PLOT_HEIGHT,
           scales: { x: { time: false }, y: { distr: 3 } },
-          axes: [{ label: 'ω, rad/s' }, { label: 'S, m²·s' }],
+          // Log axis: powers of ten written as such (the default rounds 10⁻⁴ to "0").
+          axes: [{ label: 'ω, rad/s' }, { label: 'S, m²·s', values: (_, ticks) => ticks.map((v) => (v >= 1 ? String(v) : v.toExponential(0))) }],
           series,
         },
         data,
