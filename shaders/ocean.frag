@@ -81,7 +81,9 @@ void main() {
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
 #ifdef WAVE_PIXEL_NORMALS
-  // Exact slopes at this pixel's own grid point, not interpolated between vertices.
+  // Exact normals (spectral slopes, or the Gerstner sum's closed form) at this pixel's own
+  // grid point, not interpolated between vertices: the mapping from grid to displaced
+  // surface is smooth, so interpolating the grid point is exact to first order.
   bool fabricatedHalf = uNormalsCompare && (viewMatrix * vec4(vWorldPosition, 1.0)).x > 0.0;
   if (!uFlatNormals && !fabricatedHalf) n = waveNormal(vGridXZ);
 #endif

@@ -5,6 +5,7 @@ import type { CameraPose } from './cameraPose';
 import { ControlPanel, type ControlPanelHooks, type LiveCounts } from './controlPanel';
 import { FresnelPlot } from './fresnelPlot';
 import type { Translator } from './i18n';
+import { PhysicsPanel, type PhysicsSource } from './physicsPanel';
 
 /** How often the GUI's live LOD counts are refreshed (frames). */
 const COUNTS_EVERY = 10;
@@ -19,8 +20,8 @@ export interface KeyedApp {
 
 /**
  * What the user steers the ocean with besides the canvas: the lil-gui panel (full page
- * only), the keyboard's boat steering and camera keys, and the Fresnel plot, kept in step
- * with the parameters.
+ * only), the keyboard's boat steering and camera keys, the Fresnel plot and the physics
+ * panel, kept in step with the parameters.
  */
 export class AppControls {
   private readonly panel?: ControlPanel;
@@ -28,11 +29,12 @@ export class AppControls {
   private readonly cameraKeys: CameraKeys;
   private readonly tr: Translator;
   private fresnelPlot?: FresnelPlot;
+  readonly physics: PhysicsPanel;
 
   constructor(
     private readonly container: HTMLElement,
     private readonly fresnelData: Float32Array,
-    state: { showPanel: boolean; params: OceanParams; playing: boolean; tr: Translator },
+    state: { showPanel: boolean; params: OceanParams; playing: boolean; tr: Translator; physics: PhysicsSource },
     app: KeyedApp,
     hooks: ControlPanelHooks,
   ) {
@@ -42,6 +44,7 @@ export class AppControls {
     this.steering = new BoatSteering(keyTarget, (change) => app.setParams(change), () => app.getParams());
     this.cameraKeys = new CameraKeys(keyTarget, () => app.camera(), (pose) => app.setCamera(pose));
     this.tr = state.tr;
+    this.physics = new PhysicsPanel(container, state.physics);
     this.sync(state.params, state.playing);
   }
 
@@ -54,6 +57,7 @@ export class AppControls {
     // The plot is made the first time it is asked for: most figures never show it.
     if (params.fresnelPlot) this.fresnelPlot ??= new FresnelPlot(this.container, this.fresnelData, this.tr);
     this.fresnelPlot?.setVisible(params.fresnelPlot);
+    this.physics.setOpen(params.physics);
     this.panel?.sync(params, playing);
   }
 
@@ -70,5 +74,6 @@ export class AppControls {
     this.cameraKeys.dispose();
     this.panel?.dispose();
     this.fresnelPlot?.dispose();
+    this.physics.dispose();
   }
 }

@@ -1,6 +1,7 @@
 import type { OceanApp, BoatInfo, CameraPose, LoopActivity, OceanStats } from './oceanApp';
 import type { OceanParams } from '../sim/params';
 import type { SurfaceSample } from '../sim/waveModel';
+import type { PhysicsReport } from '../sim/physicsReport';
 import type { ProbeSample } from '../render/surfaceProbe';
 import type { PassTiming } from '../render/underwaterPost';
 import type { OceanView } from '../render/oceanView';
@@ -27,6 +28,8 @@ export interface OceanoApi {
   /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boatPose.ts). */
   boat(): BoatInfo;
   stats(): OceanStats;
+  /** The running sea measured through its CPU twin against theory (the physics panel's figures). Takes seconds. */
+  physics(): PhysicsReport;
   notices(): string[];
   /** The link that reopens this view exactly (what the share button copies). */
   shareUrl(): string;
@@ -43,6 +46,8 @@ export interface OceanoApi {
     lodUpdateMs(batches?: number): number;
     /** Under the water: bake the shaft light as the window generic wave models get, even for the seed. */
     forceShaftLightWindow(on: boolean): void;
+    /** How many times the physics estimators have run, once the open panel has drawn. */
+    physicsRuns(): Promise<number>;
   };
   readonly three: Pick<OceanView, 'renderer' | 'scene' | 'camera'>;
 }
@@ -51,6 +56,12 @@ declare global {
   interface Window {
     oceano: OceanoApi;
   }
+}
+
+/** The physics panel exists once the app has started (after `ready`). */
+function started<T>(part: T | undefined): T {
+  if (part === undefined) throw new Error('The ocean has not started yet: await oceano.ready first.');
+  return part;
 }
 
 export function createAutomationApi(app: OceanApp, ready: Promise<void>): OceanoApi {
@@ -68,6 +79,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     probeGpu: async (points, t) => app.probeGpu(points, t),
     boat: () => app.boat(),
     stats: () => app.stats(),
+    physics: () => started(app.physicsPanel()).measure(),
     notices: () => app.notices.messages(),
     shareUrl: () => app.shareUrl(),
     activity: () => app.activity(),
@@ -78,6 +90,11 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
       heightmaps: () => (app.debugView().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
       lodUpdateMs: (batches) => app.debugView().timeLodUpdate(checkBatches(batches)),
       forceShaftLightWindow: (on) => app.debugView().forceShaftLightWindow(on === true),
+      physicsRuns: async () => {
+        const panel = started(app.physicsPanel());
+        await panel.settled();
+        return panel.runs;
+      },
     },
     get three() {
       const view = app.debugView();
@@ -115,7 +132,8 @@ export function createFailedApi(reason: Error): OceanoApi {
     notices: fail,
     shareUrl: fail,
     activity: fail,
-    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail },
+    physics: fail,
+    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, physicsRuns: () => Promise.reject(reason) },
     get three(): never {
       throw reason;
     },

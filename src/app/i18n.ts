@@ -104,6 +104,8 @@ export type UiTextId =
   | 'folderBoat'
   | 'folderLod'
   | 'folderUnderwater'
+  | 'folderGerstner'
+  | 'folderPhysics'
   | 'dive'
   | 'surface'
   | 'folderLiveCounts'
@@ -130,13 +132,15 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabelNormals: 'Animated 3D ocean coloured by its surface normals',
     panelTitle: 'Oceano',
     folderSwell: 'Swell',
-    folderSpectral: 'Spectral sea (waves=fft)',
+    folderSpectral: 'Wind & spectrum (fft, gerstner)',
     folderRipples: 'Ripples (Perlin)',
     folderLight: 'Light & water',
     folderView: 'View',
     folderBoat: 'Boat',
     folderLod: 'LOD & culling',
     folderUnderwater: 'Underwater',
+    folderGerstner: 'Gerstner waves',
+    folderPhysics: 'Physics vs theory',
     dive: 'Dive under the surface',
     surface: 'Back to the surface view',
     folderLiveCounts: 'LOD counts (live)',
@@ -162,13 +166,15 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabelNormals: 'Océano 3D animado coloreado según las normales de su superficie',
     panelTitle: 'Oceano',
     folderSwell: 'Oleaje',
-    folderSpectral: 'Mar espectral (waves=fft)',
+    folderSpectral: 'Viento y espectro (fft, gerstner)',
     folderRipples: 'Ondas (Perlin)',
     folderLight: 'Luz y agua',
     folderView: 'Vista',
     folderBoat: 'Barco',
     folderLod: 'LOD y recorte',
     folderUnderwater: 'Bajo el agua',
+    folderGerstner: 'Ondas de Gerstner',
+    folderPhysics: 'Física frente a teoría',
     dive: 'Sumergirse',
     surface: 'Volver a la superficie',
     folderLiveCounts: 'Contadores de LOD (en vivo)',
@@ -221,6 +227,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   normals: 'Normales',
   view: 'Vista',
   fresnelPlot: 'Gráfico de Fresnel',
+  physics: 'Panel de física',
   boatSpeed: 'Velocidad del barco',
   boatHeading: 'Rumbo del barco',
   boatResponse: 'Tiempo de respuesta de flotación',
@@ -237,6 +244,8 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   causticsIntensity: 'Intensidad de las cáusticas',
   godRays: 'Rayos de luz',
   godRaysIntensity: 'Intensidad de los rayos de luz',
+  gerstnerCount: 'Ondas de Gerstner',
+  gerstnerSteepness: 'Pendiente de Gerstner Q',
 };
 
 /** What the canvas shows, for its aria-label: it follows the teaching view. */

@@ -97,8 +97,8 @@ export class OceanApp {
       setLost: (lost) => this.loop.setStopped('contextLost', lost),
       redraw: () => (this.resize(), this.renderFrame()),
     });
-    const controlState = { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr };
-    this.controls = new AppControls(this.container, this.view.fresnelData, controlState, this, {
+    const physics = { model: () => this.view.waves, params: () => this.params, time: () => this.clock.time };
+    this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics }, this, {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => this.setPlaying(playing),
       onShare: () => void this.share(),
@@ -180,6 +180,7 @@ export class OceanApp {
   stats = (): OceanStats => this.frameStats.summary(this.view.stats());
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects). */
   debugView = (): OceanView => this.view;
+  physicsPanel = () => this.controls?.physics;
 
   /** Frees every GPU resource and gives the WebGL context back to the browser (which allows only a few at once). */
   dispose(): void {

@@ -110,6 +110,22 @@ export const PRESETS = {
     // Close over the water, away from the boat: the per-pixel detail of the left half shows.
     camera: { position: [-40, 7, 20], target: [-40, 0, -8] },
   },
+  /**
+   * A young, steep wind sea (JONSWAP, 20 m/s over 20 km, long-crested) of 64 Gerstner
+   * trochoids at Q = 1, the steepest the sea may be (Σ Qᵢ kᵢ Aᵢ ≤ 1, see
+   * limitSteepness): crests sharpen towards cusps and troughs flatten. The note: at exactly
+   * Σ Qᵢ kᵢ Aᵢ = 1 a crest where every wave peaks together is a cusp, never a loop.
+   * Compare gerstner-gentle, the same sea and camera at Q = 0.2.
+   */
+  'gerstner-steepness': {
+    params: { waves: 'gerstner', gerstnerSteepness: 1, gerstnerCount: 64, windSpeed: 20, spectrum: 'jonswap', fetch: 20, spreading: 32 },
+    camera: { position: [0, 4, 25], target: [0, 0, -20] },
+  },
+  /** The same Gerstner sea at Q = 0.2: nearly sinusoidal, round crests. */
+  'gerstner-gentle': {
+    params: { waves: 'gerstner', gerstnerSteepness: 0.2, gerstnerCount: 64, windSpeed: 20, spectrum: 'jonswap', fetch: 20, spreading: 32 },
+    camera: { position: [0, 4, 25], target: [0, 0, -20] },
+  },
 } satisfies Record<string, Preset>;
 
 export type PresetName = keyof typeof PRESETS;

@@ -34,8 +34,9 @@ export type ParamDef = NumberDef | BooleanDef | ColorDef | ChoiceDef;
 
 export const paramDefs = {
   // The wave model (src/sim/waveModels.ts): 'seed' is the seed report's sines and Perlin ripples,
-  // 'fft' the spectral sea (Tessendorf's FFT of a wind spectrum, src/sim/fftOcean.ts).
-  waves: { kind: 'choice', default: 'seed', options: ['seed', 'fft'], label: 'Wave model' },
+  // 'fft' the spectral sea (Tessendorf's FFT of a wind spectrum, src/sim/fftOcean.ts),
+  // 'gerstner' a sum of trochoids drawn from the same wind spectrum (src/sim/gerstnerLiveModel.ts).
+  waves: { kind: 'choice', default: 'seed', options: ['seed', 'fft', 'gerstner'], label: 'Wave model' },
   // The spectral sea's wind and spectrum (read only with waves=fft; see src/sim/seaState.ts).
   windSpeed: { kind: 'number', default: 10, min: 1, max: 30, step: 0.5, unit: 'm/s', label: 'Wind speed U10' },
   windDirection: { kind: 'number', default: 20, min: 0, max: 360, step: 1, unit: '°', label: 'Wind direction' },
@@ -71,6 +72,8 @@ export const paramDefs = {
   normalsCompare: { kind: 'boolean', default: false, label: 'Compare slope | fabricated normals' },
   view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap'], label: 'View' },
   fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
+  // The physics panel (src/app/physicsPanel.ts): the running sea measured against theory.
+  physics: { kind: 'boolean', default: false, label: 'Physics panel' },
   lodDistance: { kind: 'number', default: 100, min: 10, max: 1000, step: 5, unit: 'm', label: 'LOD distance L' },
   lodBands: { kind: 'integer', default: 6, min: 1, max: 6, unit: '', label: 'LOD bands' },
   lodColors: { kind: 'boolean', default: false, label: 'Colour chunks by band' },
@@ -83,6 +86,10 @@ export const paramDefs = {
   causticsIntensity: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'Caustics intensity' },
   godRays: { kind: 'boolean', default: true, label: 'God rays' },
   godRaysIntensity: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'God rays intensity' },
+  // Gerstner waves (waves=gerstner): how many trochoids are drawn from the wind spectrum, and
+  // Q, the share of the looping limit Σ Qᵢ kᵢ Aᵢ ≤ 1 they may use (src/sim/gerstnerSpectrum.ts).
+  gerstnerCount: { kind: 'integer', default: 32, min: 4, max: 64, unit: '', label: 'Gerstner waves' },
+  gerstnerSteepness: { kind: 'number', default: 0.6, min: 0.2, max: 1, step: 0.05, unit: '', label: 'Gerstner steepness Q' },
 } as const satisfies Record<string, ParamDef>;
 
 export type ParamKey = keyof typeof paramDefs;

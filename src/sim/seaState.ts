@@ -44,3 +44,35 @@ export function windVector(windDirectionDeg: number): [number, number] {
   const a = (windDirectionDeg * Math.PI) / 180;
   return [Math.sin(a), -Math.cos(a)];
 }
+
+/** The parameters of the spectral sea, as the parameter table (params.ts) holds them. */
+export interface SeaParams {
+  windSpeed: number;
+  windDirection: number;
+  spectrum: SpectrumName;
+  /** km */
+  fetch: number;
+  /** m; the table's maximum, 1000, means deep water */
+  depth: number;
+  spreading: number;
+  choppiness: number;
+  fftSize: '64' | '128' | '256';
+  seed: number;
+}
+
+/** Depth at and above which the sea is treated as deep (the depth parameter's maximum). */
+export const DEEP_PARAM_DEPTH = 1000;
+
+export function seaStateFromParams(p: SeaParams): SeaState {
+  return {
+    windSpeed: p.windSpeed,
+    windDirection: p.windDirection,
+    spectrum: p.spectrum,
+    fetch: p.fetch * 1000,
+    depth: p.depth >= DEEP_PARAM_DEPTH ? DEEP : p.depth,
+    spreading: p.spreading,
+    choppiness: p.choppiness,
+    fftSize: Number(p.fftSize) as SeaState['fftSize'],
+    seed: p.seed,
+  };
+}

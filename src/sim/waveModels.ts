@@ -1,6 +1,7 @@
 import type { Heightmap } from './perlinNoise';
 import type { OceanParams } from './params';
 import { FftWaveModel } from './fftWaveModel';
+import { GerstnerLiveModel } from './gerstnerLiveModel';
 import { SeedWaveModel } from './seedWaveModel';
 import type { WaveModel } from './waveModel';
 
@@ -28,6 +29,7 @@ export interface LiveWaveModel extends WaveModel {
 const FACTORIES: { [K in WavesChoice]: (params: OceanParams) => LiveWaveModel } = {
   seed: (params) => new SeedWaveModel(params),
   fft: (params) => new FftWaveModel(params),
+  gerstner: (params) => new GerstnerLiveModel(params),
 };
 
 export function createWaveModel(params: OceanParams): LiveWaveModel {

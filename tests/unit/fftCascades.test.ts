@@ -85,3 +85,16 @@ describe('cascades', () => {
     }
   });
 });
+
+describe('sea state from the parameter table', () => {
+  it('maps km to m, the deepest depth to deep water, and the FFT size text to a number', async () => {
+    const { defaultParams } = await import('../../src/sim/params');
+    const { seaStateFromParams } = await import('../../src/sim/seaState');
+    const p = defaultParams();
+    const s = seaStateFromParams(p);
+    expect(s.fetch).toBe(100_000);
+    expect(s.depth).toBe(Infinity);
+    expect(s.fftSize).toBe(128);
+    expect(seaStateFromParams({ ...p, depth: 20, fftSize: '256' })).toMatchObject({ depth: 20, fftSize: 256 });
+  });
+});

@@ -8,11 +8,11 @@ import {
   NearestFilter,
   OrthographicCamera,
   RawShaderMaterial,
-  RedFormat,
   RepeatWrapping,
   RGBAFormat,
   Scene,
   WebGLRenderTarget,
+  Vector3,
   type Texture,
   type WebGLRenderer,
 } from 'three';
@@ -24,7 +24,7 @@ import type { FftOceanSetup } from '../../sim/fftOcean';
 import { REPEAT_PERIOD, type SpectralTile } from '../../sim/initialSpectrum';
 
 /** An n × n float texture read with texelFetch (no filtering: the ocean shader interpolates itself, as the CPU twin does). */
-function dataTexture(data: Float32Array, width: number, height: number, format: typeof RGBAFormat | typeof RedFormat): DataTexture {
+function dataTexture(data: Float32Array, width: number, height: number, format: typeof RGBAFormat): DataTexture {
   const texture = new DataTexture(data, width, height, format, FloatType);
   texture.minFilter = NearestFilter;
   texture.magFilter = NearestFilter;
@@ -112,7 +112,7 @@ export class GpuInverseFft {
     return mrtTarget(this.n);
   }
 
-  /** Draws `material` over every texel of `target`. Leaves the renderer's own target as it was. */
+  /** Draws `material` over every texel of `target` (any size). Leaves the renderer's own target as it was. */
   draw(material: RawShaderMaterial, target: WebGLRenderTarget): void {
     const previous = this.renderer.getRenderTarget();
     const autoClear = this.renderer.autoClear;
@@ -150,11 +150,11 @@ export class GpuInverseFft {
   }
 }
 
-/** h₀(k) and h₀(−k) side by side, and ω as whole cycles per repeat period, as float32 textures. */
+/** h₀(k) and h₀(−k) side by side, and ω as whole cycles m per repeat period (split as in fftSpectrum.frag: 4096·mh, ml, m), as float32 textures. */
 function spectrumTextures(tile: SpectralTile): { h0: DataTexture; cycles: DataTexture } {
   const n = tile.n;
   const pairs = new Float32Array(4 * n * n);
-  const cycles = new Float32Array(n * n);
+  const cycles = new Float32Array(4 * n * n);
   const omega0 = (2 * Math.PI) / REPEAT_PERIOD;
   for (let b = 0; b < n; b++) {
     for (let a = 0; a < n; a++) {
@@ -164,10 +164,25 @@ function spectrumTextures(tile: SpectralTile): { h0: DataTexture; cycles: DataTe
       pairs[4 * i + 1] = tile.h0[2 * i + 1];
       pairs[4 * i + 2] = tile.h0[2 * j];
       pairs[4 * i + 3] = tile.h0[2 * j + 1];
-      cycles[i] = Math.round(tile.omega[i] / omega0);
+      const m = Math.round(tile.omega[i] / omega0);
+      if (m >= 2 ** 24) throw new Error('A wave too fast for the float32 phase split (m ≥ 2²⁴).');
+      const low = m % 4096;
+      cycles[4 * i] = m - low;
+      cycles[4 * i + 1] = low;
+      cycles[4 * i + 2] = m;
     }
   }
-  return { h0: dataTexture(pairs, n, n, RGBAFormat), cycles: dataTexture(cycles, n, n, RedFormat) };
+  return { h0: dataTexture(pairs, n, n, RGBAFormat), cycles: dataTexture(cycles, n, n, RGBAFormat) };
+}
+
+/**
+ * f ∈ [0, 1) as x + y + z with x and y of 12 significant bits each (exact multiples of 2⁻¹² and
+ * 2⁻²⁴) and z the float32 rest, so the shader's products m·x, m·y are exact (fftSpectrum.frag).
+ */
+export function splitFraction(f: number): [number, number, number] {
+  const x = Math.floor(f * 4096) / 4096;
+  const y = Math.floor((f - x) * 2 ** 24) / 2 ** 24;
+  return [x, y, Math.fround(f - x - y)];
 }
 
 /**
@@ -180,6 +195,7 @@ function spectrumTextures(tile: SpectralTile): { h0: DataTexture; cycles: DataTe
  */
 export class GpuFftOcean {
   readonly sizes: number[];
+  readonly n: number;
   readonly targets: WebGLRenderTarget[];
   /** The pass runner, shared with passes that read the results (foam). */
   readonly fft: GpuInverseFft;
@@ -189,6 +205,7 @@ export class GpuFftOcean {
 
   constructor(renderer: WebGLRenderer, setup: FftOceanSetup) {
     const n = setup.sea.fftSize;
+    this.n = n;
     this.fft = new GpuInverseFft(renderer, n);
     this.sizes = setup.cascades.map((c) => c.size);
     this.evolved = this.fft.createTarget();
@@ -204,7 +221,7 @@ export class GpuFftOcean {
         uniforms: {
           uH0: { value: h0 },
           uCycles: { value: cycles },
-          uTauOverT: { value: 0 },
+          uTauOverT: { value: new Vector3() },
           uTileSize: { value: tile.cascade.size },
           uChoppiness: { value: setup.sea.choppiness },
           uN: { value: n },
@@ -225,9 +242,9 @@ export class GpuFftOcean {
 
   /** Evolves every cascade to time t (s) and transforms it. t is reduced mod T in float64 here. */
   update(time: number): void {
-    const tauOverT = timeInPeriod(time, REPEAT_PERIOD) / REPEAT_PERIOD;
+    const [x, y, z] = splitFraction(timeInPeriod(time, REPEAT_PERIOD) / REPEAT_PERIOD);
     this.spectrumMaterials.forEach((material, c) => {
-      material.uniforms.uTauOverT.value = tauOverT;
+      (material.uniforms.uTauOverT.value as Vector3).set(x, y, z);
       this.fft.draw(material, this.evolved);
       this.fft.transform(this.evolved.textures[0], this.evolved.textures[1], this.targets[c]);
     });

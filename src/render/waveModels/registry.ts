@@ -4,6 +4,8 @@ import { SeedWaveModel } from '../../sim/seedWaveModel';
 import { FftWaveView } from './fftWaveView';
 import type { WaveModelView } from './waveModelView';
 import { SeedWaveView } from './seedWaveView';
+import { GerstnerLiveModel } from '../../sim/gerstnerLiveModel';
+import { GerstnerWaveView } from './gerstnerWaveView';
 import type { WebGLRenderer } from 'three';
 
 /**
@@ -19,6 +21,10 @@ const VIEWS: { [K in WavesChoice]: (model: LiveWaveModel, renderer: WebGLRendere
   fft: (model, renderer) => {
     if (!(model instanceof FftWaveModel)) throw new TypeError(`The FFT wave view needs an FftWaveModel, got '${model.name}'.`);
     return new FftWaveView(model, renderer);
+  },
+  gerstner: (model) => {
+    if (!(model instanceof GerstnerLiveModel)) throw new TypeError(`The Gerstner wave view needs a GerstnerLiveModel, got '${model.name}'.`);
+    return new GerstnerWaveView(model);
   },
 };
 

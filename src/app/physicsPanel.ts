@@ -1,0 +1,75 @@
+import type { OceanParams } from '../sim/params';
+import { measurePhysics, type MeasuredSea, type PhysicsReport } from '../sim/physicsReport';
+import { seaStateFromParams } from '../sim/seaState';
+import type { LiveWaveModel } from '../sim/waveModels';
+
+/** What the panel reads of the running app: the active CPU twin, the parameters, the clock. */
+export interface PhysicsSource {
+  model(): LiveWaveModel;
+  params(): OceanParams;
+  time(): number;
+}
+
+/** The running sea as the estimators see it: heights above world points from the CPU twin. */
+export function measuredSea(model: LiveWaveModel, params: OceanParams): MeasuredSea {
+  const height = (x: number, z: number, t: number) => model.height(x, z, t);
+  if (model.name === 'seed') return { name: 'seed', height, sea: { swellWavenumber: params.swellFrequency } };
+  return { name: model.name, height, sea: seaStateFromParams(params) };
+}
+
+/** What the lazily loaded plots module exports (src/app/physicsPlots.ts). */
+type PlotsModule = typeof import('./physicsPlots');
+type PhysicsView = InstanceType<PlotsModule['PhysicsView']>;
+
+/**
+ * physics=1: measures the running sea and plots it against theory. Closed, it costs nothing:
+ * no estimator runs and the plotting code (physicsPlots.ts with uPlot and its CSS) is not
+ * even loaded; both happen when the panel first opens (dynamic import, a separate chunk).
+ */
+export class PhysicsPanel {
+  /** Estimator runs so far (the panel's and oceano.physics()'s): the test of "costs nothing when closed". */
+  runs = 0;
+  private open = false;
+  private view?: PhysicsView;
+  private loading?: Promise<void>;
+
+  constructor(
+    private readonly container: HTMLElement,
+    private readonly source: PhysicsSource,
+  ) {}
+
+  /** Measures now, from the current time on (a few seconds of CPU: only on demand). */
+  measure(): PhysicsReport {
+    this.runs++;
+    return measurePhysics(measuredSea(this.source.model(), this.source.params()), this.source.time());
+  }
+
+  setOpen(open: boolean): void {
+    if (open === this.open) return;
+    this.open = open;
+    if (!open) {
+      this.view?.setVisible(false);
+      return;
+    }
+    if (this.view) {
+      this.view.setVisible(true);
+      this.view.show(this.measure());
+      return;
+    }
+    this.loading ??= import('./physicsPlots').then((plots) => {
+      this.view = new plots.PhysicsView(this.container, () => this.measure());
+      this.view.setVisible(this.open);
+      if (this.open) this.view.refresh();
+    });
+  }
+
+  /** Resolves once the panel, if open, has drawn its first measurement (for tests). */
+  async settled(): Promise<void> {
+    await this.loading;
+    await this.view?.drawn;
+  }
+
+  dispose(): void {
+    this.view?.dispose();
+  }
+}
