@@ -6,7 +6,7 @@ import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample
 
 /** Fixed-point steps of the inversion (FftWaveModel.invert); see there for the measured errors. */
 export const INVERSION_STEPS = 12;
-import type { LiveWaveModel } from './waveModels';
+import type { LiveWaveModel } from './liveWaveModel';
 
 /** The parameters the spectral sea reads; everything else leaves it unchanged. */
 export type FftWaveParams = Pick<

@@ -6,7 +6,7 @@ import type { OceanParams } from './params';
 import { seaStateFromParams, windVector } from './seaState';
 import { frequencySpectrum } from './waveSpectrum';
 import type { DisplacementBounds, SurfaceSample } from './waveModel';
-import type { LiveWaveModel } from './waveModels';
+import type { LiveWaveModel } from './liveWaveModel';
 
 /** The parameters the Gerstner sea is drawn from: the FFT sea's wind and spectrum, plus count and Q. */
 export type GerstnerSeaParams = Pick<

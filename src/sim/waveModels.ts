@@ -1,26 +1,10 @@
-import type { Heightmap } from './perlinNoise';
 import type { OceanParams } from './params';
 import { FftWaveModel } from './fftWaveModel';
 import { GerstnerLiveModel } from './gerstnerLiveModel';
 import { SeedWaveModel } from './seedWaveModel';
-import type { WaveModel } from './waveModel';
+import type { LiveWaveModel, WavesChoice } from './liveWaveModel';
 
-/** The `waves` parameter's values: one per registered model. */
-export type WavesChoice = OceanParams['waves'];
-
-/**
- * A wave model the app can run: the WaveModel seam plus what a live page needs of it. The
- * model keeps the parameters it is given and reads only those it uses.
- */
-export interface LiveWaveModel extends WaveModel {
-  readonly name: WavesChoice;
-  /** Takes the current parameters; returns true when data the GPU holds (textures) must be made again. */
-  setParams(params: OceanParams): boolean;
-  /** Height of the displaced surface above the world point (x, z), metres. */
-  height(x: number, z: number, time: number): number;
-  /** Heightmaps the "heightmap" teaching view shows and the API returns, where the model has any. */
-  readonly heightmaps?: readonly Heightmap[];
-}
+export type { LiveWaveModel, WavesChoice } from './liveWaveModel';
 
 /**
  * How each model is made. Adding a model: add its name to `waves`'s options in params.ts,
