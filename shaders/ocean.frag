@@ -5,6 +5,8 @@
 #include <oceano_water_volume>
 
 uniform samplerCube uSky;
+// -1 for a cube map made from images (three mirrors those in x), +1 for a cube render target.
+uniform float uSkyFlip;
 uniform sampler2D uFresnelTable;
 uniform sampler2D uFresnelFromBelow;
 uniform bool uFresnelEnabled;
@@ -29,9 +31,8 @@ const vec3 BAND_COLORS[6] = vec3[6](
   vec3(0.2, 0.8, 0.25), vec3(0.15, 0.75, 0.9), vec3(0.5, 0.3, 0.95)
 );
 
-// three.js stores cube maps mirrored in x (its flipEnvMap convention for CubeTexture).
 vec3 skyColor(vec3 direction) {
-  return textureCube(uSky, vec3(-direction.x, direction.y, direction.z)).rgb;
+  return textureCube(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z)).rgb;
 }
 
 // Linear interpolation between table entries done by hand: float textures are not
@@ -106,7 +107,7 @@ void main() {
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
 
-  if (uLodColors) color = mix(color, BAND_COLORS[int(vBand + 0.5)], 0.7);
+  if (uLodColors) color = mix(color, BAND_COLORS[min(int(vBand + 0.5), 5)], 0.7);
 
   gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>

@@ -3,7 +3,6 @@ import { Vector3, type CubeTexture } from 'three';
 import { validateParams, type OceanParams } from '../sim/params';
 import { message, type Message } from '../sim/message';
 import { OceanSurface, type SurfaceSample } from '../sim/oceanSurface';
-import { sunDirection } from '../sim/sun';
 import { median } from '../sim/sampleStatistics';
 import { surfaceHeight } from '../sim/surface';
 import { BoatMotion, type BoatMotionState } from '../sim/boatMotion';
@@ -13,7 +12,7 @@ import { BoatView } from '../render/boatView';
 import { loadBoatModel } from '../render/boatModel';
 import type { PassTiming } from '../render/underwaterPost';
 import type { Submersion } from '../sim/underwater';
-import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
+import { loadSkyCube } from '../render/skyCube';
 import { isCameraPose, type CameraPose } from './cameraPose';
 import { ControlPanel } from './controlPanel';
 import { Translator, type Language } from './i18n';
@@ -181,7 +180,7 @@ export class OceanApp {
   async start(): Promise<void> {
     const sky = await this.loadSky();
     if (this.disposed) {
-      sky.dispose();
+      sky?.dispose();
       return;
     }
     this.view = new OceanView(this.canvas, this.surface, sky, this.params);
@@ -253,13 +252,17 @@ export class OceanApp {
     }
   }
 
-  private async loadSky(): Promise<CubeTexture> {
-    const base = this.options.skyBase;
+  /** A page's own six images (`sky=`), or null for the sky painted from the sun. */
+  private async loadSky(): Promise<CubeTexture | null> {
+    const custom = this.options.state.sky;
+    if (custom === null) return null;
     try {
-      return await loadSkyCube(base);
+      const sky = await loadSkyCube(this.options.skyBase);
+      this.notify(message('skyCustomSunFixed', { base: custom }));
+      return sky;
     } catch {
-      this.notify(message('skyLoadFailed', { base: this.options.state.sky ?? base }));
-      return paintedSkyCube(sunDirection(this.params.sunElevation, this.params.sunAzimuth));
+      this.notify(message('skyLoadFailed', { base: custom }));
+      return null;
     }
   }
 

@@ -10,6 +10,14 @@ import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
 
+/**
+ * three.js stores cube maps made from images mirrored in x (its flipEnvMap convention),
+ * while a cube render target holds each world direction where it is: -1 and +1.
+ */
+function skyFlip(sky: CubeTexture): number {
+  return sky.isRenderTargetTexture ? 1 : -1;
+}
+
 export class OceanMaterial extends ShaderMaterial {
   constructor(
     heightmaps: [Texture, Texture],
@@ -25,6 +33,7 @@ export class OceanMaterial extends ShaderMaterial {
         ...createSurfaceUniforms(heightmaps),
         ...shared,
         uSky: { value: sky },
+        uSkyFlip: { value: skyFlip(sky) },
         uFresnelTable: { value: fresnelTables.fromAbove },
         uFresnelFromBelow: { value: fresnelTables.fromBelow },
         uFresnelEnabled: { value: true },
@@ -66,6 +75,7 @@ export class OceanMaterial extends ShaderMaterial {
 
   setSky(sky: CubeTexture): void {
     this.uniforms.uSky.value = sky;
+    this.uniforms.uSkyFlip.value = skyFlip(sky);
   }
 
   setWaterColor(hex: string): void {

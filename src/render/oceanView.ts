@@ -16,6 +16,7 @@ import { SurfaceProbe } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
 import { lightWithCaustics } from './hullCaustics';
+import { SunSky } from './sunSky';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -80,11 +81,18 @@ export class OceanView {
   private showHeightmaps = false;
   private readonly nearPoint = new Vector3();
   private backgroundAbove: Scene['background'] = null;
+  /** The sky painted from the sun; absent while a page's own six images are shown. */
+  private sunSky: SunSky | null = null;
+  private sky: CubeTexture;
 
+  /**
+   * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
+   * default sky, painted from the sun parameters and repainted whenever they change.
+   */
   constructor(
     canvas: HTMLCanvasElement,
     private readonly surface: OceanSurface,
-    private sky: CubeTexture,
+    customSky: CubeTexture | null,
     params: OceanParams,
   ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
@@ -94,6 +102,9 @@ export class OceanView {
     this.camera.position.set(0, 9, 40);
     this.camera.lookAt(0, 0, -60);
 
+    if (!customSky) this.sunSky = new SunSky();
+    const sky = customSky ?? (this.sunSky as SunSky).texture;
+    this.sky = sky;
     this.scene.background = sky;
     this.heightmapTextures = surface.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
     this.fresnelTexture = fresnelTexture(this.fresnelData);
@@ -125,6 +136,7 @@ export class OceanView {
     const sun = sunDirection(params.sunElevation, params.sunAzimuth);
     this.material.setWaterColor(params.waterColor);
     this.material.setSunDirection(sun);
+    this.sunSky?.update(this.renderer, sun);
     this.lights.update(sun, params.waterColor);
     this.material.setFresnelEnabled(params.fresnel);
     this.material.wireframe = params.wireframe;
@@ -150,8 +162,11 @@ export class OceanView {
     lightWithCaustics(model, { ...this.material.surfaceUniforms, ...this.caustics });
   }
 
+  /** Shows a page's own cube map from now on (the sun then moves only the lighting). */
   setSky(sky: CubeTexture): void {
-    this.sky.dispose();
+    if (this.sunSky) this.sunSky.dispose();
+    else this.sky.dispose();
+    this.sunSky = null;
     this.sky = sky;
     if (this.backgroundAbove) this.backgroundAbove = sky;
     else this.scene.background = sky;
@@ -286,6 +301,11 @@ export class OceanView {
     return perBatch[perBatch.length >> 1];
   }
 
+  /** How many times the sun's sky has been painted (0 with a page's own images). */
+  skyPaintCount(): number {
+    return this.sunSky?.paintCount ?? 0;
+  }
+
   stats(): RenderStats {
     return { ...this.lastStats, lodCounts: this.lastStats.lodCounts.slice() };
   }
@@ -300,7 +320,8 @@ export class OceanView {
     for (const texture of this.heightmapTextures) texture.dispose();
     this.fresnelTexture.dispose();
     this.fresnelFromBelowTexture.dispose();
-    this.sky.dispose();
+    if (this.sunSky) this.sunSky.dispose();
+    else this.sky.dispose();
     this.renderer.dispose();
   }
 }

@@ -17,6 +17,7 @@ export type MessageId =
   | 'presetUnknown'
   | 'unknownUrlParam'
   | 'skyLoadFailed'
+  | 'skyCustomSunFixed'
   | 'contextLost'
   | 'shareCopied'
   | 'shareFallback'
