@@ -5,10 +5,13 @@
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
-uniform float uBaseStep;
 uniform int uChunkQuads;
+// The grid's centre and the Chebyshev distances from it over which the far rings' waves
+// fade out (src/sim/farRings.ts): 1 on every chunk of the grid, 0 past ring 2.
+uniform vec2 uOceanCenter;
+uniform vec2 uFarFade;
 
-attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, unused
+attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, metres per grid unit
 attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
 
 varying vec3 vWorldPosition;
@@ -30,9 +33,15 @@ void main() {
 
   // Corner and step are whole multiples of the base step: the sum is exact in float32, so
   // two chunks compute bit-identical positions (and heights) for a shared vertex.
-  vec3 world = vec3(aChunk.x + float(snapped.x) * uBaseStep, 0.0, aChunk.y + float(snapped.y) * uBaseStep);
+  vec3 world = vec3(aChunk.x + float(snapped.x) * aChunk.w, 0.0, aChunk.y + float(snapped.y) * aChunk.w);
+  vec2 fromCenter = abs(world.xz - uOceanCenter);
+  float waves = 1.0 - smoothstep(uFarFade.x, uFarFade.y, max(fromCenter.x, fromCenter.y));
   float height = oceanHeight(world.xz);
   vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : oceanNormal(world.xz, height);
+  if (waves < 1.0) {
+    height *= waves;
+    vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
+  }
   world.y += height;
   vWorldPosition = world;
   vBand = aChunk.z;

@@ -1,8 +1,9 @@
-import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
+import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector2, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import type { SurfaceState } from '../sim/surface';
-import { BASE_STEP, CHUNK_QUADS } from '../sim/lodBands';
+import { CHUNK_QUADS } from '../sim/lodBands';
+import { FAR_FADE_END, FAR_FADE_START } from '../sim/farRings';
 import { registerShaderChunks } from './shaderChunks';
 import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './surfaceUniforms';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
@@ -44,8 +45,9 @@ export class OceanMaterial extends ShaderMaterial {
         uHazeDensity: { value: 0.0012 },
         uFlatNormals: { value: false },
         uShowNormals: { value: false },
-        uBaseStep: { value: BASE_STEP },
         uChunkQuads: { value: CHUNK_QUADS },
+        uOceanCenter: { value: new Vector2() },
+        uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
         uLodColors: { value: false },
       },
     });
@@ -94,6 +96,11 @@ export class OceanMaterial extends ShaderMaterial {
 
   setFresnelEnabled(enabled: boolean): void {
     this.uniforms.uFresnelEnabled.value = enabled;
+  }
+
+  /** The chunk grid's centre this frame, where the far rings' fade is measured from. */
+  setOceanCenter(x: number, z: number): void {
+    (this.uniforms.uOceanCenter.value as Vector2).set(x, z);
   }
 
   /** The LOD debugger's view: each chunk tinted by its band. */

@@ -24,6 +24,11 @@ import { SunSky } from './sunSky';
  * half a metre) on the steepest ripples.
  */
 const WATERLINE_MARGIN = 0.25;
+/**
+ * Past the far rings' skirt (src/sim/farRings.ts), so the sea meets the horizon from 10 km
+ * up. Depth precision is set by the near plane, not this (with far ≫ near).
+ */
+const CAMERA_FAR = 1e9;
 const NEAR_PLANE_SAMPLES: readonly [number, number][] = [-1, 0, 1].flatMap((x) => [-1, 0, 1].map((y) => [x, y] as [number, number]));
 
 export interface RenderStats extends ChunkStats {
@@ -70,6 +75,7 @@ export class OceanView {
     triangles: 0,
     chunksTotal: 0,
     chunksVisible: 0,
+    farCellsVisible: 0,
     lodCounts: [],
     underwater: false,
     submersion: 'above',
@@ -98,7 +104,7 @@ export class OceanView {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
-    this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, 20000);
+    this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, CAMERA_FAR);
     this.camera.position.set(0, 9, 40);
     this.camera.lookAt(0, 0, -60);
 
