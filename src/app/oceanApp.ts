@@ -53,6 +53,8 @@ export interface OceanStats {
   composerPasses: number;
   chunksTotal: number;
   chunksVisible: number;
+  /** Cells of the far rings past the 4 km grid in view (src/sim/farRings.ts). */
+  farCellsVisible: number;
   /** Visible chunks per LOD band, nearest band first. */
   lodCounts: number[];
   /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */

@@ -16,7 +16,8 @@ import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '.
 import type { Plane } from '../sim/frustumMath';
 import { BASE_STEP, CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
 import { chunkGrid, squareGrid } from '../sim/chunkGrid';
-import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, skirtMesh } from '../sim/farRings';
+import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../sim/farRings';
+import { classifyBox, OUTSIDE } from '../sim/frustumMath';
 import type { OceanMaterial } from './oceanMaterial';
 
 export interface LodSettings {
@@ -205,6 +206,14 @@ export class OceanChunks {
       attribute.addUpdateRange(0, count * 4);
       attribute.needsUpdate = true;
     }
+    // The skirt is drawn when the box of any of its four sides is in view.
+    const e = rings[rings.length - 1].outer;
+    const R = SKIRT_RADIUS;
+    let skirtSeen = false;
+    for (const [x0, z0, x1, z1] of [[-R, e, R, R], [-R, -R, R, -e], [e, -R, R, R], [-R, -R, -e, R]]) {
+      if (classifyBox(this.planes, centerX + x0, 0, centerZ + z0, centerX + x1, 0, centerZ + z1) !== OUTSIDE) skirtSeen = true;
+    }
+    this.skirt.visible = skirtSeen;
     const skirtChunk = this.skirt.geometry.getAttribute('aChunk') as BufferAttribute;
     const data = skirtChunk.array as Float32Array;
     const points = this.skirtPoints;
