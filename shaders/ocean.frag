@@ -6,6 +6,8 @@
 #include <oceano_constants>
 
 uniform samplerCube uSky;
+// -1 for a cube map made from images (three mirrors those in x), +1 for a cube render target.
+uniform float uSkyFlip;
 uniform sampler2D uFresnelTable;
 uniform sampler2D uFresnelFromBelow;
 uniform bool uFresnelEnabled;
@@ -24,12 +26,12 @@ varying vec3 vWorldPosition;
 varying vec3 vNormal;
 varying float vBand;
 
-// The LOD debugger's band colours, near to far.
+// The LOD debugger's band colours, near to far; the far rings and the skirt (bands past
+// the grid's) take the last one.
 const vec3 BAND_COLORS[LOD_BAND_COUNT] = LOD_BAND_COLORS;
 
-// three.js stores cube maps mirrored in x (its flipEnvMap convention for CubeTexture).
 vec3 skyColor(vec3 direction) {
-  return textureCube(uSky, vec3(-direction.x, direction.y, direction.z)).rgb;
+  return textureCube(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z)).rgb;
 }
 
 // Linear interpolation between table entries done by hand: float textures are not
@@ -104,7 +106,7 @@ void main() {
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
 
-  if (uLodColors) color = mix(color, BAND_COLORS[int(vBand + 0.5)], 0.7);
+  if (uLodColors) color = mix(color, BAND_COLORS[min(int(vBand + 0.5), LOD_BAND_COUNT - 1)], 0.7);
 
   gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>

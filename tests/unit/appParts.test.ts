@@ -5,7 +5,7 @@ import { paramsChanged } from '../../src/sim/paramChanges';
 import { defaultParams } from '../../src/sim/params';
 import type { RenderStats } from '../../src/render/oceanView';
 
-const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
+const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, farCellsVisible: 5, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
 
 describe('FrameStats', () => {
   it('never stalls the shipped loop on the GPU until stats are asked for, then one frame in eight', () => {
