@@ -95,7 +95,7 @@ export class OceanApp {
       showNotice: () => this.notify(message('contextLost'), 'error'),
       removeNotice: (notice) => this.notices.remove(notice),
       setLost: (lost) => this.loop.setStopped('contextLost', lost),
-      redraw: () => (this.resize(), this.renderFrame()),
+      redraw: () => (this.view.contextRestored(), this.resize(), this.renderFrame()),
     });
     this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr }, {
       onParam: (key, value) => this.setParams({ [key]: value }),

@@ -201,6 +201,13 @@ export class OceanView {
     lightWithCaustics(model, this.waveBinding, this.caustics);
   }
 
+  /** After a lost WebGL context comes back: paints again what lived only in render targets (the sun's sky). */
+  contextRestored(): void {
+    if (!this.sunSky) return;
+    this.sunSky.forget();
+    this.sunSky.update(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
+  }
+
   /** Shows a page's own cube map from now on (the sun then moves only the lighting). */
   setSky(sky: CubeTexture): void {
     if (this.sunSky) this.sunSky.dispose();

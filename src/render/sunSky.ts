@@ -97,6 +97,14 @@ export class SunSky {
     return true;
   }
 
+  /**
+   * A restored WebGL context gives the cube back empty (three.js re-creates render targets
+   * but not what was drawn into them): the next update() paints it again.
+   */
+  forget(): void {
+    this.painted.set(Number.NaN, Number.NaN, Number.NaN);
+  }
+
   dispose(): void {
     this.target.dispose();
     this.material.dispose();

@@ -238,7 +238,9 @@ describe('security', () => {
     for (const script of html.match(/<script\b[^>]*>/g) ?? []) expect(script).toMatch(/\bsrc=/);
 
     const { page, consoleErrors, requests, violations } = await recordedPage(harness, 640, 360);
-    await page.goto(`${harness.baseUrl}?t=1&seed=2`, { waitUntil: 'load' });
+    // sky=sky: the default sky is painted and fetches nothing, so the shipped faces are asked
+    // for to have every kind of asset the page can load (page, script, style, six images, boat).
+    await page.goto(`${harness.baseUrl}?t=1&seed=2&sky=sky`, { waitUntil: 'load' });
     await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
     await page.evaluate(() => window.oceano.ready);
     await page.evaluate(() => window.oceano.renderFrame());
