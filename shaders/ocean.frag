@@ -7,6 +7,8 @@
 #include <oceano_waves>
 
 uniform samplerCube uSky;
+// -1 for a cube map made from images (three mirrors those in x), +1 for a cube render target.
+uniform float uSkyFlip;
 uniform sampler2D uFresnelTable;
 uniform sampler2D uFresnelFromBelow;
 uniform bool uFresnelEnabled;
@@ -33,12 +35,12 @@ uniform bool uNormalsCompare;
 // A spectral sea's foam is sea water whipped with air: white, lit by sun and sky.
 const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 
-// The LOD debugger's band colours, near to far.
+// The LOD debugger's band colours, near to far; the far rings and the skirt (bands past
+// the grid's) take the last one.
 const vec3 BAND_COLORS[LOD_BAND_COUNT] = LOD_BAND_COLORS;
 
-// three.js stores cube maps mirrored in x (its flipEnvMap convention for CubeTexture).
 vec3 skyColor(vec3 direction) {
-  return textureCube(uSky, vec3(-direction.x, direction.y, direction.z)).rgb;
+  return textureCube(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z)).rgb;
 }
 
 // Linear interpolation between table entries done by hand: float textures are not
@@ -126,7 +128,7 @@ void main() {
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
 
-  if (uLodColors) color = mix(color, BAND_COLORS[int(vBand + 0.5)], 0.7);
+  if (uLodColors) color = mix(color, BAND_COLORS[min(int(vBand + 0.5), LOD_BAND_COUNT - 1)], 0.7);
 
   gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>

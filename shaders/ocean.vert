@@ -6,10 +6,13 @@
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
-uniform float uBaseStep;
 uniform int uChunkQuads;
+// The grid's centre and the Chebyshev distances from it over which the far rings' waves
+// fade out (src/sim/farRings.ts): 1 on every chunk of the grid, 0 past ring 2.
+uniform vec2 uOceanCenter;
+uniform vec2 uFarFade;
 
-attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, unused
+attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, metres per grid unit
 attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
 
 varying vec3 vWorldPosition;
@@ -36,14 +39,22 @@ void main() {
 
   // Corner and step are whole multiples of the base step: the sum is exact in float32, so
   // two chunks compute bit-identical positions (and heights) for a shared vertex.
-  vec2 gridXZ = vec2(aChunk.x + float(snapped.x) * uBaseStep, aChunk.y + float(snapped.y) * uBaseStep);
+  vec2 gridXZ = vec2(aChunk.x + float(snapped.x) * aChunk.w, aChunk.y + float(snapped.y) * aChunk.w);
+  vec2 fromCenter = abs(gridXZ - uOceanCenter);
+  float waves = 1.0 - smoothstep(uFarFade.x, uFarFade.y, max(fromCenter.x, fromCenter.y));
   vec3 d = waveDisplacement(gridXZ);
-  vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
   vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : waveNormal(gridXZ);
 #ifdef WAVE_FABRICATED_NORMAL
   if (uNormalsCompare && !uFlatNormals) vNormal = waveFabricatedNormal(gridXZ);
 #endif
   vGridXZ = gridXZ;
+  // The fade scales the model's whole displacement (horizontal too, so the far rings'
+  // vertices stay on their snapped grid) and tilts the normal back to straight up.
+  if (waves < 1.0) {
+    d *= waves;
+    vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
+  }
+  vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
   vWorldPosition = world;
   vBand = aChunk.z;
   gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);

@@ -1,17 +1,22 @@
 import type { CubeTexture } from 'three';
 import { message, messageOf, type Message } from '../sim/message';
-import { sunDirection } from '../sim/sun';
-import type { OceanParams } from '../sim/params';
 import { loadBoatModel, type BoatModel } from '../render/boatModel';
-import { loadSkyCube, paintedSkyCube } from '../render/skyCube';
+import { loadSkyCube } from '../render/skyCube';
 
-/** The sky's six images; where they cannot be loaded, a sky painted for the sun, with a notice naming `shownBase`. */
-export async function loadSkyOrPaint(base: string, shownBase: string, params: OceanParams, notify: (m: Message) => void): Promise<CubeTexture> {
+/**
+ * A page's own six images (`sky=` names `custom`, loaded from `base`), with a notice that
+ * their sun is painted in; null for the sky painted from the sun: when the page names none,
+ * or when its images cannot be loaded (with a notice naming them).
+ */
+export async function loadCustomSky(base: string, custom: string | null, notify: (m: Message) => void): Promise<CubeTexture | null> {
+  if (custom === null) return null;
   try {
-    return await loadSkyCube(base);
+    const sky = await loadSkyCube(base);
+    notify(message('skyCustomSunFixed', { base: custom }));
+    return sky;
   } catch {
-    notify(message('skyLoadFailed', { base: shownBase }));
-    return paintedSkyCube(sunDirection(params.sunElevation, params.sunAzimuth));
+    notify(message('skyLoadFailed', { base: custom }));
+    return null;
   }
 }
 

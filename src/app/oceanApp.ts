@@ -16,7 +16,7 @@ import { BoatController, type BoatInfo } from './boatController';
 import { OrbitCamera } from './orbitCamera';
 import { shareLink, shareUrl } from './sharing';
 import { checkCameraPose, checkProbe, checkSurfacePoint, checkTime } from './apiChecks';
-import { loadBoatOrNotify, loadSkyOrPaint } from './assetFallbacks';
+import { loadBoatOrNotify, loadCustomSky } from './assetFallbacks';
 import { ContextWatch } from './contextLoss';
 import { AppControls } from './appControls';
 
@@ -80,8 +80,8 @@ export class OceanApp {
    */
   async start(): Promise<void> {
     const { state, showPanel, skyBase } = this.options;
-    const sky = await loadSkyOrPaint(skyBase, state.sky ?? skyBase, this.params, this.notify);
-    if (this.disposed) return sky.dispose();
+    const sky = await loadCustomSky(skyBase, state.sky, this.notify);
+    if (this.disposed) return sky?.dispose();
     this.view = new OceanView(this.canvas, sky, this.params);
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
@@ -95,7 +95,7 @@ export class OceanApp {
       showNotice: () => this.notify(message('contextLost'), 'error'),
       removeNotice: (notice) => this.notices.remove(notice),
       setLost: (lost) => this.loop.setStopped('contextLost', lost),
-      redraw: () => (this.resize(), this.renderFrame()),
+      redraw: () => (this.view.contextRestored(), this.resize(), this.renderFrame()),
     });
     const physics = { model: () => this.view.waves, params: () => this.params, time: () => this.clock.time };
     this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics }, this, {

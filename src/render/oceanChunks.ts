@@ -5,6 +5,7 @@ import {
   Frustum,
   Group,
   InstancedBufferAttribute,
+  BufferGeometry,
   InstancedBufferGeometry,
   Matrix4,
   Mesh,
@@ -14,8 +15,10 @@ import {
 import type { DisplacementBounds } from '../sim/waveModel';
 import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
-import { CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
-import { chunkGrid } from '../sim/chunkGrid';
+import { BASE_STEP, CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
+import { chunkGrid, squareGrid } from '../sim/chunkGrid';
+import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../sim/farRings';
+import { classifyBox, OUTSIDE } from '../sim/frustumMath';
 import type { OceanMaterial } from './oceanMaterial';
 
 export interface LodSettings {
@@ -28,13 +31,18 @@ export interface LodSettings {
 export interface ChunkStats {
   chunksTotal: number;
   chunksVisible: number;
+  /** Cells of the far rings beyond the grid in view (src/sim/farRings.ts). */
+  farCellsVisible: number;
   /** Visible chunks per band, nearest band first. */
   lodCounts: number[];
 }
 
 /** A band's shared grid with room for `capacity` chunk instances. */
 function bandGeometry(band: number, capacity: number): InstancedBufferGeometry {
-  const { positions, indices } = chunkGrid(band);
+  return instancedGrid(chunkGrid(band), capacity);
+}
+
+function instancedGrid({ positions, indices }: { positions: Float32Array; indices: Uint16Array }, capacity: number): InstancedBufferGeometry {
   const geometry = new InstancedBufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(positions, 3));
   geometry.setIndex(new BufferAttribute(indices, 1));
@@ -77,8 +85,13 @@ export class OceanChunks {
   private readonly instanceAttributes: InstancedBufferAttribute[][] = [];
   private readonly chunkData: Float32Array[] = [];
   private readonly edgeData: Float32Array[] = [];
+  private readonly farSelector = new FarRingSelector(OCEAN_EXTENT / 2);
+  private readonly farMesh: Mesh<InstancedBufferGeometry, OceanMaterial>;
+  private readonly skirt: Mesh<BufferGeometry, OceanMaterial>;
+  private readonly skirtPoints: Float64Array;
+  private readonly edgeScratch = [0, 0, 0, 0];
 
-  constructor(material: OceanMaterial) {
+  constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
     for (let band = 0; band < MAX_LOD_BANDS; band++) {
       const mesh = new Mesh(bandGeometry(band, capacity), material);
@@ -92,10 +105,29 @@ export class OceanChunks {
       this.chunkData.push(chunk.array as Float32Array);
       this.edgeData.push(edges.array as Float32Array);
     }
+    // Every far ring's cell draws one shared grid: one instanced draw for all of them.
+    this.farMesh = new Mesh(instancedGrid(squareGrid(RING_OWN_STEP, RING_CELL_QUADS, true), this.farSelector.total), material);
+    this.farMesh.frustumCulled = false;
+    this.group.add(this.farMesh);
+    // The skirt's vertices carry their world place in aChunk (grid position 0), updated as the grid moves.
+    const rings = this.farSelector.rings;
+    const { points, indices } = skirtMesh(rings[rings.length - 1]);
+    this.skirtPoints = points;
+    const count = points.length / 2;
+    const skirtGeometry = new BufferGeometry();
+    skirtGeometry.setAttribute('position', new BufferAttribute(new Float32Array(count * 3), 3));
+    skirtGeometry.setAttribute('aChunk', new BufferAttribute(new Float32Array(count * 4), 4).setUsage(DynamicDrawUsage));
+    skirtGeometry.setAttribute('aEdgeSteps', new BufferAttribute(new Float32Array(count * 4).fill(1), 4));
+    skirtGeometry.setIndex(new BufferAttribute(indices, 1));
+    this.skirt = new Mesh(skirtGeometry, material);
+    this.skirt.frustumCulled = false;
+    this.group.add(this.skirt);
   }
 
-  /** Chooses and uploads this frame's chunks for `camera` (or the frozen one). */
-  /** `bounds`: how far the waves can move a vertex up or down and sideways (WaveModel.bounds()), metres. */
+  /**
+   * Chooses and uploads this frame's chunks for `camera` (or the frozen one).
+   * `bounds`: how far the waves can move a vertex up or down and sideways (WaveModel.bounds()), metres.
+   */
   update(camera: PerspectiveCamera, settings: LodSettings, bounds: DisplacementBounds): void {
     this.setFrozen(settings.freezeCulling, camera);
     if (!this.frozenHelper) this.captureCullingView(camera);
@@ -121,6 +153,7 @@ export class OceanChunks {
       chunk[o] = originX + i * CHUNK_SIZE;
       chunk[o + 1] = originZ + j * CHUNK_SIZE;
       chunk[o + 2] = band;
+      chunk[o + 3] = BASE_STEP;
       const edges = this.edgeData[band];
       const e = n * 4;
       edges[o] = selector.edgeSteps[e];
@@ -138,6 +171,65 @@ export class OceanChunks {
         attribute.addUpdateRange(0, count * 4);
         attribute.needsUpdate = true;
       }
+    }
+    this.updateFar(originX + OCEAN_EXTENT / 2, originZ + OCEAN_EXTENT / 2, bounds);
+  }
+
+  /** The far rings' cells in view, and the skirt, around the grid's centre. */
+  private updateFar(centerX: number, centerZ: number, bounds: DisplacementBounds): void {
+    this.material.setOceanCenter(centerX, centerZ);
+    const far = this.farSelector;
+    const rings = far.rings;
+    const count = far.select(this.planes, centerX, centerZ, -bounds.vertical, bounds.vertical, bounds.horizontal);
+    const geometry = this.farMesh.geometry;
+    const chunkAttribute = geometry.getAttribute('aChunk') as InstancedBufferAttribute;
+    const edgeAttribute = geometry.getAttribute('aEdgeSteps') as InstancedBufferAttribute;
+    const chunk = chunkAttribute.array as Float32Array;
+    const edges = edgeAttribute.array as Float32Array;
+    const steps = this.edgeScratch;
+    for (let n = 0; n < count; n++) {
+      const r = far.ringOf[n];
+      const ring = rings[r];
+      const i = far.cellI[n];
+      const j = far.cellJ[n];
+      const o = n * 4;
+      chunk[o] = centerX - ring.outer + i * ring.cellSize;
+      chunk[o + 1] = centerZ - ring.outer + j * ring.cellSize;
+      // Band index past the grid's six, for the LOD colours (the shader clamps to its last colour).
+      chunk[o + 2] = MAX_LOD_BANDS + r;
+      chunk[o + 3] = ring.unit;
+      ringEdgeSteps(ring, i, j, r === rings.length - 1, steps);
+      edges[o] = steps[0];
+      edges[o + 1] = steps[1];
+      edges[o + 2] = steps[2];
+      edges[o + 3] = steps[3];
+    }
+    geometry.instanceCount = count;
+    this.farMesh.visible = count > 0;
+    for (const attribute of [chunkAttribute, edgeAttribute]) {
+      attribute.clearUpdateRanges();
+      attribute.addUpdateRange(0, count * 4);
+      attribute.needsUpdate = true;
+    }
+    // The skirt is drawn when the box of any of its four sides is in view.
+    const e = rings[rings.length - 1].outer;
+    const R = SKIRT_RADIUS;
+    let skirtSeen = false;
+    for (const [x0, z0, x1, z1] of [[-R, e, R, R], [-R, -R, R, -e], [e, -R, R, R], [-R, -R, -e, R]]) {
+      if (classifyBox(this.planes, centerX + x0, 0, centerZ + z0, centerX + x1, 0, centerZ + z1) !== OUTSIDE) skirtSeen = true;
+    }
+    this.skirt.visible = skirtSeen;
+    const skirtChunk = this.skirt.geometry.getAttribute('aChunk') as BufferAttribute;
+    const data = skirtChunk.array as Float32Array;
+    const points = this.skirtPoints;
+    if (data[0] !== Math.fround(centerX + points[0]) || data[1] !== Math.fround(centerZ + points[1])) {
+      for (let v = 0; v < points.length / 2; v++) {
+        data[v * 4] = centerX + points[v * 2];
+        data[v * 4 + 1] = centerZ + points[v * 2 + 1];
+        data[v * 4 + 2] = MAX_LOD_BANDS + rings.length;
+        data[v * 4 + 3] = 1;
+      }
+      skirtChunk.needsUpdate = true;
     }
   }
 
@@ -183,12 +275,15 @@ export class OceanChunks {
     return {
       chunksTotal: this.selector.total,
       chunksVisible: this.selector.count,
+      farCellsVisible: this.farSelector.count,
       lodCounts: this.selector.lodCounts.slice(0, this.bandsInUse),
     };
   }
 
   dispose(): void {
     for (const mesh of this.meshes) mesh.geometry.dispose();
+    this.farMesh.geometry.dispose();
+    this.skirt.geometry.dispose();
     this.frozenHelper?.dispose();
   }
 }

@@ -1,13 +1,22 @@
-import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
+import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector2, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
-import { BASE_STEP, CHUNK_QUADS } from '../sim/lodBands';
+import { CHUNK_QUADS } from '../sim/lodBands';
+import { FAR_FADE_END, FAR_FADE_START } from '../sim/farRings';
 import { registerShaderChunks } from './shaderChunks';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
+
+/**
+ * three.js stores cube maps made from images mirrored in x (its flipEnvMap convention),
+ * while a cube render target holds each world direction where it is: -1 and +1.
+ */
+function skyFlip(sky: CubeTexture): number {
+  return sky.isRenderTargetTexture ? 1 : -1;
+}
 
 export class OceanMaterial extends ShaderMaterial {
   constructor(
@@ -23,6 +32,7 @@ export class OceanMaterial extends ShaderMaterial {
       uniforms: {
         ...shared,
         uSky: { value: sky },
+        uSkyFlip: { value: skyFlip(sky) },
         uFresnelTable: { value: fresnelTables.fromAbove },
         uFresnelFromBelow: { value: fresnelTables.fromBelow },
         uFresnelEnabled: { value: true },
@@ -34,8 +44,9 @@ export class OceanMaterial extends ShaderMaterial {
         uFlatNormals: { value: false },
         uShowNormals: { value: false },
         uNormalsCompare: { value: false },
-        uBaseStep: { value: BASE_STEP },
         uChunkQuads: { value: CHUNK_QUADS },
+        uOceanCenter: { value: new Vector2() },
+        uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
         uLodColors: { value: false },
       },
     });
@@ -53,6 +64,7 @@ export class OceanMaterial extends ShaderMaterial {
 
   setSky(sky: CubeTexture): void {
     this.uniforms.uSky.value = sky;
+    this.uniforms.uSkyFlip.value = skyFlip(sky);
   }
 
   setWaterColor(hex: string): void {
@@ -76,6 +88,11 @@ export class OceanMaterial extends ShaderMaterial {
 
   setFresnelEnabled(enabled: boolean): void {
     this.uniforms.uFresnelEnabled.value = enabled;
+  }
+
+  /** The chunk grid's centre this frame, where the far rings' fade is measured from. */
+  setOceanCenter(x: number, z: number): void {
+    (this.uniforms.uOceanCenter.value as Vector2).set(x, z);
   }
 
   /** The LOD debugger's view: each chunk tinted by its band. */

@@ -21,6 +21,7 @@ import { lightWithCaustics } from './hullCaustics';
 import { WaveBinding } from './waveModels/waveBinding';
 import { createWaveModelView } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
+import { SunSky } from './sunSky';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -28,6 +29,11 @@ import type { WaveModelView } from './waveModels/waveModelView';
  * half a metre) on the steepest ripples.
  */
 const WATERLINE_MARGIN = 0.25;
+/**
+ * Past the far rings' skirt (src/sim/farRings.ts), so the sea meets the horizon from 10 km
+ * up. Depth precision is set by the near plane, not this (with far ≫ near).
+ */
+const CAMERA_FAR = 1e9;
 const NEAR_PLANE_SAMPLES: readonly [number, number][] = [-1, 0, 1].flatMap((x) => [-1, 0, 1].map((y) => [x, y] as [number, number]));
 
 export interface RenderStats extends ChunkStats {
@@ -80,6 +86,7 @@ export class OceanView {
     triangles: 0,
     chunksTotal: 0,
     chunksVisible: 0,
+    farCellsVisible: 0,
     lodCounts: [],
     underwater: false,
     submersion: 'above',
@@ -92,19 +99,29 @@ export class OceanView {
   private readonly nearPoint = new Vector3();
   private backgroundAbove: Scene['background'] = null;
   private readonly syncPixel = new Uint8Array(4);
+  /** The sky painted from the sun; absent while a page's own six images are shown. */
+  private sunSky: SunSky | null = null;
+  private sky: CubeTexture;
 
+  /**
+   * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
+   * default sky, painted from the sun parameters and repainted whenever they change.
+   */
   constructor(
     canvas: HTMLCanvasElement,
-    private sky: CubeTexture,
+    customSky: CubeTexture | null,
     params: OceanParams,
   ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
-    this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, 20000);
+    this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, CAMERA_FAR);
     this.camera.position.fromArray(DEFAULT_CAMERA.position);
     this.camera.lookAt(...DEFAULT_CAMERA.target);
 
+    if (!customSky) this.sunSky = new SunSky();
+    const sky = customSky ?? (this.sunSky as SunSky).texture;
+    this.sky = sky;
     this.scene.background = sky;
     this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
     this.waveBinding = new WaveBinding(this.waveView);
@@ -158,6 +175,7 @@ export class OceanView {
       const sun = sunDirection(params.sunElevation, params.sunAzimuth);
       this.material.setWaterColor(params.waterColor);
       this.material.setSunDirection(sun);
+      this.sunSky?.update(this.renderer, sun);
       this.lights.update(sun, params.waterColor);
       const refracted = refractedSunDirection(sun);
       (this.light.uRefractedSun.value as Vector3).fromArray(refracted ?? [0, 0, 0]);
@@ -184,8 +202,18 @@ export class OceanView {
     lightWithCaustics(model, this.waveBinding, this.caustics);
   }
 
+  /** After a lost WebGL context comes back: paints again what lived only in render targets (the sun's sky). */
+  contextRestored(): void {
+    if (!this.sunSky) return;
+    this.sunSky.forget();
+    this.sunSky.update(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
+  }
+
+  /** Shows a page's own cube map from now on (the sun then moves only the lighting). */
   setSky(sky: CubeTexture): void {
-    this.sky.dispose();
+    if (this.sunSky) this.sunSky.dispose();
+    else this.sky.dispose();
+    this.sunSky = null;
     this.sky = sky;
     if (this.backgroundAbove) this.backgroundAbove = sky;
     else this.scene.background = sky;
@@ -346,6 +374,11 @@ export class OceanView {
     return median(perBatch);
   }
 
+  /** How many times the sun's sky has been painted (0 with a page's own images). */
+  skyPaintCount(): number {
+    return this.sunSky?.paintCount ?? 0;
+  }
+
   stats(): RenderStats {
     return { ...this.lastStats, lodCounts: this.lastStats.lodCounts.slice() };
   }
@@ -360,7 +393,8 @@ export class OceanView {
     this.waveView.dispose();
     this.fresnelTexture.dispose();
     this.fresnelFromBelowTexture.dispose();
-    this.sky.dispose();
+    if (this.sunSky) this.sunSky.dispose();
+    else this.sky.dispose();
     this.renderer.dispose();
   }
 }

@@ -1,6 +1,12 @@
 import { ChunkQuadtree } from './chunkQuadtree';
 import type { Plane } from './frustumMath';
-import { BAND_STEPS, bandStart, bandStep, CHUNK_SIZE, MAX_LOD_BANDS } from './lodBands';
+import { BAND_STEPS, bandStart, bandStep, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS } from './lodBands';
+
+/**
+ * The step the grid's border chunks share with the first far ring (src/sim/farRings.ts):
+ * one vertex per chunk corner, 48 m, whatever their own band.
+ */
+export const BORDER_STEP = CHUNK_QUADS;
 
 /** Chunks along each side of the ocean: 84 × 48 m = 4032 m. */
 export const OCEAN_CHUNKS_PER_SIDE = 84;
@@ -69,6 +75,14 @@ export class ChunkSelector {
       this.count = this.total;
       this.bands.fill(0, 0, this.total);
       this.edgeSteps.fill(bandStep(0), 0, this.total * 4);
+      for (let k = 0; k < this.total; k++) {
+        const i = k % side;
+        const j = (k - i) / side;
+        if (i === 0) this.edgeSteps[k * 4] = BORDER_STEP;
+        if (i === side - 1) this.edgeSteps[k * 4 + 1] = BORDER_STEP;
+        if (j === 0) this.edgeSteps[k * 4 + 2] = BORDER_STEP;
+        if (j === side - 1) this.edgeSteps[k * 4 + 3] = BORDER_STEP;
+      }
       this.lodCounts.fill(0);
       this.lodCounts[0] = this.total;
       return this.count;
@@ -85,10 +99,10 @@ export class ChunkSelector {
       this.lodCounts[band]++;
       const own = BAND_STEPS[band];
       const o = n * 4;
-      this.edgeSteps[o] = i > 0 ? Math.max(own, BAND_STEPS[this.cachedBand(i - 1, j)]) : own;
-      this.edgeSteps[o + 1] = i < side - 1 ? Math.max(own, BAND_STEPS[this.cachedBand(i + 1, j)]) : own;
-      this.edgeSteps[o + 2] = j > 0 ? Math.max(own, BAND_STEPS[this.cachedBand(i, j - 1)]) : own;
-      this.edgeSteps[o + 3] = j < side - 1 ? Math.max(own, BAND_STEPS[this.cachedBand(i, j + 1)]) : own;
+      this.edgeSteps[o] = i > 0 ? Math.max(own, BAND_STEPS[this.cachedBand(i - 1, j)]) : BORDER_STEP;
+      this.edgeSteps[o + 1] = i < side - 1 ? Math.max(own, BAND_STEPS[this.cachedBand(i + 1, j)]) : BORDER_STEP;
+      this.edgeSteps[o + 2] = j > 0 ? Math.max(own, BAND_STEPS[this.cachedBand(i, j - 1)]) : BORDER_STEP;
+      this.edgeSteps[o + 3] = j < side - 1 ? Math.max(own, BAND_STEPS[this.cachedBand(i, j + 1)]) : BORDER_STEP;
     }
     return this.count;
   }

@@ -18,6 +18,7 @@ export const MESSAGE_IDS = [
   'presetUnknown',
   'unknownUrlParam',
   'skyLoadFailed',
+  'skyCustomSunFixed',
   'contextLost',
   'shareCopied',
   'shareFallback',

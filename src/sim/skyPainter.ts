@@ -33,10 +33,27 @@ export function worldDirectionOfTexel(face: CubeFace, s: number, t: number): Vec
 
 export const ZENITH: Rgb = [0.16, 0.36, 0.68];
 export const HORIZON: Rgb = [0.74, 0.83, 0.9];
-const BELOW_HORIZON: Rgb = [0.2, 0.3, 0.36];
+export const BELOW_HORIZON: Rgb = [0.2, 0.3, 0.36];
 export const SUN: Rgb = [1.0, 0.96, 0.86];
-const CLOUD_LIT: Rgb = [1.0, 0.98, 0.95];
-const CLOUD_SHADE: Rgb = [0.66, 0.7, 0.76];
+export const CLOUD_LIT: Rgb = [1.0, 0.98, 0.95];
+export const CLOUD_SHADE: Rgb = [0.66, 0.7, 0.76];
+// The GPU painter's dusk (shaders/skyDome.frag), which the shipped PNG faces never had:
+// a warm horizon and greyer zenith as the sun nears the horizon, a deep blue once it is
+// about 10° below.
+export const DUSK_HORIZON: Rgb = [0.96, 0.62, 0.38];
+export const DUSK_ZENITH: Rgb = [0.2, 0.3, 0.5];
+export const NIGHT_HORIZON: Rgb = [0.16, 0.2, 0.3];
+export const NIGHT_ZENITH: Rgb = [0.03, 0.05, 0.12];
+
+/** The cloud layer's Perlin noise: the CPU painter and the GPU painter's baked tile share it. */
+export function cloudNoise(cloudSeed = 7): TilingPerlinNoise {
+  return new TilingPerlinNoise({ seed: cloudSeed, baseCells: 3, octaves: 6, persistence: 0.55 });
+}
+
+/** One tile of cloud density at (i / size, j / size), row-major in v: what sample() gives there. */
+export function cloudDensityTile(size: number, cloudSeed = 7): Float64Array {
+  return cloudNoise(cloudSeed).sampleGrid(size);
+}
 
 const mix = (a: Rgb, b: Rgb, t: number): Rgb => [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t];
 const smoothstep = (e0: number, e1: number, x: number) => {
@@ -51,7 +68,7 @@ export class SkyPainter {
     private readonly sun: Vec3,
     cloudSeed = 7,
   ) {
-    this.clouds = new TilingPerlinNoise({ seed: cloudSeed, baseCells: 3, octaves: 6, persistence: 0.55 });
+    this.clouds = cloudNoise(cloudSeed);
   }
 
   /** sRGB colour in [0, 1] of the sky seen in world direction d (unit length). */

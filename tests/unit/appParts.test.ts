@@ -8,7 +8,7 @@ import { shareUrl } from '../../src/app/sharing';
 import { parseUrlState } from '../../src/app/urlState';
 import type { BoatSnapshot } from '../../src/sim/boatMotion';
 
-const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
+const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, farCellsVisible: 5, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
 
 describe('FrameStats', () => {
   it('never stalls the shipped loop on the GPU until stats are asked for, then one frame in eight', () => {

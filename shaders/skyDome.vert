@@ -1,0 +1,8 @@
+// The sky painter's dome: a cube around the cube camera; each fragment paints the world
+// direction from the centre through it.
+varying vec3 vDirection;
+
+void main() {
+  vDirection = position;
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}

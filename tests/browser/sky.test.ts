@@ -1,0 +1,142 @@
+import { describe, expect, it } from 'vitest';
+import { PNG } from 'pngjs';
+import type { Page } from 'puppeteer';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
+import { sunDirection } from '../../src/sim/sun';
+
+const harness = useHarness();
+const FOV = 55;
+type Vec3 = [number, number, number];
+
+/** World direction of the ray through pixel (px, py) of a camera at `position` looking at `target`. */
+function pixelRay(px: number, py: number, width: number, height: number, position: Vec3, target: Vec3): Vec3 {
+  const back = position.map((p, k) => p - target[k]) as Vec3;
+  const bl = Math.hypot(...back);
+  const z = back.map((v) => v / bl) as Vec3;
+  const xl = Math.hypot(z[2], z[0]);
+  const x: Vec3 = [z[2] / xl, 0, -z[0] / xl];
+  const y: Vec3 = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]];
+  const t = Math.tan((FOV / 2) * (Math.PI / 180));
+  const cx = ((px + 0.5) / width) * 2 - 1;
+  const cy = 1 - ((py + 0.5) / height) * 2;
+  const d = [0, 1, 2].map((k) => x[k] * cx * t * (width / height) + y[k] * cy * t - z[k]) as Vec3;
+  const l = Math.hypot(...d);
+  return d.map((v) => v / l) as Vec3;
+}
+
+/**
+ * The sun disc in the picture: the centroid of the white pixels (every channel ≥ 250)
+ * above the horizon, as a world direction, and how many there were. The glow and lit
+ * clouds stay below 250 in blue (the sun colour's blue is 0.86, the clouds' 0.95).
+ */
+function whiteCentroid(png: Buffer, position: Vec3, target: Vec3): { direction: Vec3 | null; count: number } {
+  const { width, height, data } = PNG.sync.read(png);
+  const sum: Vec3 = [0, 0, 0];
+  let count = 0;
+  for (let py = 0; py < height; py++) {
+    for (let px = 0; px < width; px++) {
+      const o = (py * width + px) * 4;
+      if (Math.min(data[o], data[o + 1], data[o + 2]) < 250) continue;
+      const ray = pixelRay(px, py, width, height, position, target);
+      if (ray[1] <= 0) continue;
+      for (let k = 0; k < 3; k++) sum[k] += ray[k];
+      count++;
+    }
+  }
+  if (count === 0) return { direction: null, count };
+  const l = Math.hypot(...sum);
+  return { direction: sum.map((v) => v / l) as Vec3, count };
+}
+
+const degreesBetween = (a: Vec3, b: Vec3) => (Math.acos(Math.min(1, a[0] * b[0] + a[1] * b[1] + a[2] * b[2])) * 180) / Math.PI;
+
+/** A camera 30 m up looking 8° to the right of the sun and 5° below it, so the disc is off centre. */
+function cameraFacingSun(elevation: number, azimuth: number): { position: Vec3; target: Vec3; query: string } {
+  const position: Vec3 = [0, 30, 0];
+  const look = sunDirection(Math.max(elevation - 5, 2), azimuth + 8);
+  const target = position.map((p, k) => p + look[k] * 1000) as Vec3;
+  return { position, target, query: `cam=${[...position, ...target].map((v) => v.toFixed(3)).join(',')}` };
+}
+
+async function sunOffset(page: Page, elevation: number, azimuth: number): Promise<{ degrees: number; count: number }> {
+  const { position, target } = cameraFacingSun(elevation, azimuth);
+  const { direction, count } = whiteCentroid(await canvasPng(page), position, target);
+  return { degrees: direction ? degreesBetween(direction, sunDirection(elevation, azimuth)) : Infinity, count };
+}
+
+// One degree: about seven pixels at 640 × 360 (a pixel is 0.15°); the disc itself is about 1.2° across.
+const MAX_OFFSET_DEG = 1;
+
+describe('the sky painted from the sun', () => {
+  for (const [elevation, azimuth] of [
+    [18, 20],
+    [10, 340],
+    [40, 120],
+    [4, 250],
+    [62, 200],
+  ]) {
+    it(`puts its sun disc where the sun is (elevation ${elevation}°, azimuth ${azimuth}°)`, async () => {
+      const { query } = cameraFacingSun(elevation, azimuth);
+      const { page, consoleErrors } = await openOcean(harness, `t=10&sunElevation=${elevation}&sunAzimuth=${azimuth}&${query}`);
+      const { degrees, count } = await sunOffset(page, elevation, azimuth);
+      expect(count).toBeGreaterThan(3);
+      expect(degrees).toBeLessThan(MAX_OFFSET_DEG);
+      expect(consoleErrors).toEqual([]);
+      await page.close();
+    });
+  }
+
+  it('finds the baked sun of a custom sky away from a moved sun (the check can fail), and says why in a notice', async () => {
+    const { query } = cameraFacingSun(18, 110);
+    const { page } = await openOcean(harness, `t=10&sky=sky&sunElevation=18&sunAzimuth=110&${query}`);
+    const { degrees } = await sunOffset(page, 18, 110);
+    expect(degrees).toBeGreaterThan(MAX_OFFSET_DEG);
+    expect((await page.evaluate(() => window.oceano.notices())).join(' ')).toContain('moves only the lighting');
+    await page.close();
+  });
+
+  it('shows no disc and a darker dusk sky with the sun below the horizon', async () => {
+    const { query, position, target } = cameraFacingSun(3, 20);
+    const { page } = await openOcean(harness, `t=10&sunElevation=3&sunAzimuth=20&${query}`);
+    const dayCount = whiteCentroid(await canvasPng(page), position, target).count;
+    const brightness = async () => {
+      const { width, height, data } = PNG.sync.read(await canvasPng(page));
+      let sum = 0;
+      for (let py = 0; py < height / 4; py++) for (let px = 0; px < width; px++) sum += data[(py * width + px) * 4 + 2];
+      return sum / ((width * height) / 4);
+    };
+    const dayBlue = await brightness();
+    await page.evaluate(() => window.oceano.setParams({ sunElevation: -10 }));
+    await page.evaluate(() => new Promise(requestAnimationFrame));
+    expect(dayCount).toBeGreaterThan(3);
+    expect(whiteCentroid(await canvasPng(page), position, target).count).toBe(0);
+    // Top quarter of the frame, blue channel: the night blue is well under the day's.
+    expect(await brightness()).toBeLessThan(dayBlue * 0.6);
+    await page.close();
+  });
+
+  it('paints the cube only when the sun moves, never per frame', async () => {
+    const { page } = await openOcean(harness, 't=10');
+    const paints = await page.evaluate(async () => {
+      const { renderer, scene } = window.oceano.three;
+      let other = 0;
+      const render = renderer.render.bind(renderer);
+      renderer.render = (s, c) => {
+        if (s !== scene) other++;
+        render(s, c);
+      };
+      const frames = () => new Promise<void>((done) => requestAnimationFrame(() => requestAnimationFrame(() => requestAnimationFrame(() => done()))));
+      window.oceano.setParams({ waterColor: '#103050' });
+      await frames();
+      const still = other;
+      window.oceano.setParams({ sunAzimuth: 90 });
+      await frames();
+      return { still, moved: other - still };
+    });
+    expect(paints.still).toBe(0);
+    // One repaint: the cube camera's six faces.
+    expect(paints.moved).toBe(6);
+    await page.close();
+  });
+});
