@@ -20,9 +20,8 @@ import { loadBoatOrNotify, loadCustomSky } from './assetFallbacks';
 import { ContextWatch } from './contextLoss';
 import { AppControls } from './appControls';
 
-export type { CameraPose } from './cameraPose';
 export type { OceanAppOptions } from './appOptions';
-export type { BoatInfo, LoopActivity, OceanStats, SuspendReason };
+export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
 
 /** The shipped model, relative to the page (or to oceano.js for the web component). */
 export const DEFAULT_BOAT_MODEL = 'models/boat.glb';
@@ -178,7 +177,7 @@ export class OceanApp {
   sampleSurface = (x: number, z: number): SurfaceSample => (checkSurfacePoint(x, z), this.view.waves.sample(x, z, this.clock.time));
   probeGpu = (points: unknown, time?: number): ProbeSample[] => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   stats = (): OceanStats => this.frameStats.summary(this.view.stats());
-  /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects). */
+  /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */
   debugView = (): OceanView => this.view;
   physicsPanel = () => this.controls?.physics;
 
