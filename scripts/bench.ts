@@ -14,7 +14,7 @@ import { gzipSync } from 'node:zlib';
 import puppeteer, { type Browser } from 'puppeteer';
 import { preview, type PreviewServer } from 'vite';
 import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
-import { openOcean, type Harness } from '../tests/browser/harness';
+import { openOcean, type Harness } from './browserHarness';
 import { median, percentile } from '../src/sim/sampleStatistics';
 import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
 import { passTimeSamples, pageEnvironment, timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './bench/pageMeasures';

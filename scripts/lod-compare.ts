@@ -6,7 +6,7 @@
  * Usage: npx vite build && npx tsx scripts/lod-compare.ts [query] [frames] [bruteFrames]
  */
 import { median } from '../src/sim/sampleStatistics';
-import { openOcean, startHarness } from '../tests/browser/harness';
+import { openOcean, startHarness } from './browserHarness';
 
 const query = process.argv[2] ?? 'seed=1&t=10';
 const frames = Number(process.argv[3] ?? 15);

@@ -3,9 +3,8 @@ import { createServer, type Server } from 'node:http';
 import { readFile } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
 import puppeteer from 'puppeteer';
-import { BROWSER_ARGS } from './harness';
+import { BROWSER_ARGS, findBrowser } from './harness';
 import { useHarness } from './useHarness';
-import { findBrowser } from './findBrowser';
 
 const DIST = join(import.meta.dirname, '..', '..', 'dist');
 const SUB_PATH = '/courses/graphics/week-3/ocean/';

@@ -3,7 +3,7 @@ import puppeteer, { type Browser, type Page } from 'puppeteer';
 import { build } from 'vite';
 import { join } from 'node:path';
 import { BROWSER_ARGS } from './harness';
-import { findBrowser } from './findBrowser';
+import { findBrowser } from './harness';
 import { InverseFft2d } from '../../src/sim/fft2d';
 import { FftOcean } from '../../src/sim/fftOcean';
 import { seededRandom } from '../../src/sim/integerHash';

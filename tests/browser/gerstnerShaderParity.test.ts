@@ -2,7 +2,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import puppeteer, { type Browser } from 'puppeteer';
 import { readFileSync } from 'node:fs';
 import { BROWSER_ARGS } from './harness';
-import { findBrowser } from './findBrowser';
+import { findBrowser } from './harness';
 import { gerstnerSea } from '../../src/sim/gerstnerSpectrum';
 import { GerstnerWaveModel, gerstnerTimePhases } from '../../src/sim/gerstnerWaves';
 import { seededRandom } from '../../src/sim/integerHash';
