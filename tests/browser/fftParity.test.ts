@@ -166,35 +166,6 @@ describe('GPU spectral ocean against its CPU twin', () => {
     });
   }
 
-  it('shaders/fftWaves.glsl gives the CPU twin’s displacement within 1 mm, and its normal and Jacobian, on seeded random points (t = 37 s and 10⁶ + 0.3 s)', async () => {
-    const sea: SeaState = { ...DEFAULT_SEA_STATE, fftSize: 64, windSpeed: 15, seed: 11 };
-    const random = seededRandom(2024);
-    const points = Array.from({ length: 128 }, () => (random() - 0.5) * 2000);
-    const cpu = new FftOcean(sea);
-    for (const t of [37, 1e6 + 0.3]) {
-      const [displacement, normal] = await gpu('sample', sea, t, points);
-      let mm = 0;
-      let normalError = 0;
-      let jacobianError = 0;
-      let planted = 0;
-      for (let i = 0; i < points.length / 2; i++) {
-        const [x, z] = [points[2 * i], points[2 * i + 1]];
-        const d = cpu.displacement(x, z, t);
-        for (let c = 0; c < 3; c++) mm = Math.max(mm, Math.abs(displacement[4 * i + c] - d[c]));
-        jacobianError = Math.max(jacobianError, Math.abs(displacement[4 * i + 3] - cpu.jacobian(x, z, t)));
-        const n = cpu.normalAt(x, z, t);
-        for (let c = 0; c < 3; c++) normalError = Math.max(normalError, Math.abs(normal[4 * i + c] - n[c]));
-        // planted fault: the CPU twin read half a texel of the largest tile away
-        planted = Math.max(planted, Math.abs(displacement[4 * i + 1] - cpu.displacement(x + (0.5 * cpu.setup.cascades[0].size) / 64, z, t)[1]));
-      }
-      console.log(`fftWaves.glsl vs CPU twin, t=${t}: displacement ${(mm * 1000).toFixed(4)} mm, normal ${normalError.toExponential(2)}, J ${jacobianError.toExponential(2)}; planted fault ${(planted * 1000).toFixed(1)} mm`);
-      expect(mm).toBeLessThan(1e-3);
-      expect(normalError).toBeLessThan(1e-3);
-      expect(jacobianError).toBeLessThan(1e-3);
-      expect(planted).toBeGreaterThan(1e-2);
-    }
-  });
-
   it('reports the GPU FFT cost on this renderer (3 cascades, one update)', async () => {
     for (const fftSize of [64, 128, 256] as const) {
       const ms = await gpu('cost', { ...DEFAULT_SEA_STATE, fftSize }, fftSize === 256 ? 5 : 10);
