@@ -1,35 +1,17 @@
-import { DEEP } from './dispersion';
 import { FftOcean, type CascadeFields } from './fftOcean';
+import type { LiveWaveModel } from './liveWaveModel';
 import type { OceanParams } from './params';
-import type { SeaState } from './seaState';
+import { seaStateFromParams, type SeaState } from './seaState';
 import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample } from './waveModel';
 
 /** Fixed-point steps of the inversion (FftWaveModel.invert); see there for the measured errors. */
 export const INVERSION_STEPS = 12;
-import type { LiveWaveModel } from './liveWaveModel';
 
 /** The parameters the spectral sea reads; everything else leaves it unchanged. */
 export type FftWaveParams = Pick<
   OceanParams,
   'seed' | 'windSpeed' | 'windDirection' | 'spectrum' | 'fetch' | 'depth' | 'spreading' | 'choppiness' | 'fftSize'
 >;
-
-/** The depth parameter's top (1000 m) stands for deep water: every wave the cascades carry has k h > 3 there. */
-export const DEEP_PARAM = 1000;
-
-export function seaStateFromParams(p: FftWaveParams): SeaState {
-  return {
-    windSpeed: p.windSpeed,
-    windDirection: p.windDirection,
-    spectrum: p.spectrum,
-    fetch: p.fetch * 1000,
-    depth: p.depth >= DEEP_PARAM ? DEEP : p.depth,
-    spreading: p.spreading,
-    choppiness: p.choppiness,
-    fftSize: Number(p.fftSize) as SeaState['fftSize'],
-    seed: p.seed,
-  };
-}
 
 /** A key that changes exactly when the drawn sea changes (JSON of the SeaState; Infinity is spelt out). */
 export function seaKey(sea: SeaState): string {
