@@ -10,6 +10,9 @@
     ? 'Oceano tiene que servirse por http(s): los navegadores no cargan sus módulos desde un archivo (file://). En la carpeta de index.html ejecuta: python3 -m http.server 8000 y abre http://localhost:8000/'
     : 'Oceano has to be served over http(s): browsers do not load its modules from a file (file://). In the folder holding index.html run: python3 -m http.server 8000 and open http://localhost:8000/';
   var page = document.getElementById('oceano-page') || document.body;
+  // Nothing is loading: the words below take the loading indicator's place.
+  var loading = page.querySelector('.oceano-loading');
+  if (loading) loading.remove();
   var box = document.createElement('div');
   box.className = 'oceano-fatal';
   box.setAttribute('role', 'alert');

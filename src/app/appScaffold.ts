@@ -2,12 +2,14 @@ import type { OceanParams } from '../sim/params';
 import { canvasLabel, type Translator } from './i18n';
 import { Notices } from './notices';
 import { PlayButton } from './playButton';
+import { LoadingProgress } from './loadingProgress';
 
-/** What an ocean puts in its container before any GL exists: the canvas, the notices, the play button. */
+/** What an ocean puts in its container before any GL exists: the canvas, the notices, the play button, the loading steps. */
 export interface Scaffold {
   canvas: HTMLCanvasElement;
   notices: Notices;
   playButton: PlayButton;
+  loading: LoadingProgress;
 }
 
 export function buildScaffold(container: HTMLElement, tr: Translator, params: OceanParams, onPlayToggle: () => void): Scaffold {
@@ -18,7 +20,7 @@ export function buildScaffold(container: HTMLElement, tr: Translator, params: Oc
   container.appendChild(canvas);
   const notices = new Notices(container, tr.ui('dismiss'));
   const playButton = new PlayButton(container, { play: tr.ui('play'), pause: tr.ui('pause') }, onPlayToggle);
-  return { canvas, notices, playButton };
+  return { canvas, notices, playButton, loading: new LoadingProgress(container, tr) };
 }
 
 /** The canvas's aria-label says what it shows: it follows the teaching view (heightmaps, normals). */
@@ -28,6 +30,7 @@ export function labelCanvas(canvas: HTMLCanvasElement, tr: Translator, params: O
 
 /** Removes what buildScaffold made. */
 export function disposeScaffold(scaffold: Scaffold): void {
+  scaffold.loading.finish();
   scaffold.playButton.dispose();
   scaffold.notices.dispose();
   scaffold.canvas.remove();

@@ -2,6 +2,7 @@ import type { CubeTexture } from 'three';
 import { message, messageOf, type Message } from '../sim/message';
 import { loadBoatModel, type BoatModel } from '../render/boatModel';
 import { loadSkyCube } from '../render/skyCube';
+import type { LoadingProgress } from './loadingProgress';
 
 /**
  * A page's own six images (`sky=` names `custom`, loaded from `base`), with a notice that
@@ -20,22 +21,13 @@ export async function loadCustomSky(base: string, custom: string | null, notify:
   }
 }
 
-/**
- * The boat's model, with a loading indicator over the running sea meanwhile; where it
- * cannot be had, null and a notice saying why (the sea runs on without a boat).
- */
-export async function loadBoatOrNotify(container: HTMLElement, url: string, loadingText: string, notify: (m: Message) => void): Promise<BoatModel | null> {
-  const indicator = document.createElement('div');
-  indicator.className = 'oceano-loading';
-  indicator.setAttribute('role', 'status');
-  indicator.textContent = loadingText;
-  container.appendChild(indicator);
+/** The boat's model, shown as the loading step under way; where it cannot be had, null and a notice saying why (the sea runs on without a boat). */
+export async function loadBoatOrNotify(url: string, notify: (m: Message) => void, loading: LoadingProgress): Promise<BoatModel | null> {
+  loading.begin('boat');
   try {
     return await loadBoatModel(url);
   } catch (error) {
     notify(messageOf(error, 'boatLoadFailed'));
     return null;
-  } finally {
-    indicator.remove();
   }
 }

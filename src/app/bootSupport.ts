@@ -16,8 +16,9 @@ export function hasWebGL2(): boolean {
   }
 }
 
-/** Words in place of the canvas when the ocean cannot run at all. */
+/** Words in place of the canvas, and of the loading steps, when the ocean cannot run at all. */
 export function showFatal(container: HTMLElement, text: string): void {
+  container.querySelector(':scope > .oceano-loading')?.remove();
   const box = document.createElement('div');
   box.className = 'oceano-fatal';
   box.setAttribute('role', 'alert');

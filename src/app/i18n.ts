@@ -115,7 +115,10 @@ export type UiTextId =
   | 'countTriangles'
   | 'countDrawCalls'
   | 'countPerBand'
-  | 'boatLoading'
+  | 'loadingTitle'
+  | 'loading_sky'
+  | 'loading_firstFrame'
+  | 'loading_boat'
   | 'play'
   | 'pause'
   | 'playing'
@@ -150,7 +153,10 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     countTriangles: 'Triangles',
     countDrawCalls: 'Draw calls',
     countPerBand: 'Chunks per band',
-    boatLoading: 'Loading the boat…',
+    loadingTitle: 'Loading',
+    loading_sky: 'sky',
+    loading_firstFrame: 'sea and first frame',
+    loading_boat: 'boat',
     play: 'Play',
     pause: 'Pause',
     playing: 'Play',
@@ -184,7 +190,10 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     countTriangles: 'Triángulos',
     countDrawCalls: 'Llamadas de dibujo',
     countPerBand: 'Parcelas por banda',
-    boatLoading: 'Cargando el barco…',
+    loadingTitle: 'Cargando',
+    loading_sky: 'cielo',
+    loading_firstFrame: 'mar y primer fotograma',
+    loading_boat: 'barco',
     play: 'Reproducir',
     pause: 'Pausar',
     playing: 'Reproducir',

@@ -27,10 +27,9 @@ export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
 export const DEFAULT_BOAT_MODEL = 'models/boat.glb';
 
 /**
- * One live ocean in a container element: the composition root. It owns the parameters and
- * the clock and wires the parts, each in a file of its own: the DOM scaffold, FrameLoop,
- * FrameStats, ContextWatch, BoatController, OrbitCamera, sharing, the API's argument checks
- * and the asset fallbacks. The automation API is a thin layer over its public methods.
+ * One live ocean in a container element: the composition root. It owns the parameters and the clock and wires
+ * the parts, each in a file of its own: the DOM scaffold, FrameLoop, FrameStats, ContextWatch, BoatController,
+ * OrbitCamera, sharing, the API's argument checks and the asset fallbacks. The automation API is a thin layer.
  */
 export class OceanApp {
   readonly notices: Notices;
@@ -73,19 +72,19 @@ export class OceanApp {
   notify = (m: Message, level: 'warning' | 'error' = 'warning'): HTMLElement => this.notices.show(this.tr.message(m), level);
 
   /**
-   * Builds the scene, draws the first frame and starts the loop; then loads the boat while
-   * the sea runs, and resolves once a frame with the boat in it (or a notice saying why it
-   * is missing) is on screen, so screenshots taken after `oceano.ready` always hold it.
+   * Builds the scene, draws the first frame and starts the loop, then loads the boat while the sea runs. Resolves
+   * once a frame with the boat (or a notice saying why it is missing) is on screen, so `oceano.ready` means finished.
    */
   async start(): Promise<void> {
-    const { state, showPanel, skyBase } = this.options;
+    const { state, showPanel, skyBase } = this.options, { loading } = this.scaffold;
     const sky = await loadCustomSky(skyBase, state.sky, this.notify);
+    loading.begin('firstFrame');
+    await loading.painted();
     if (this.disposed) return sky?.dispose();
     this.view = new OceanView(this.canvas, sky, this.params);
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
-    if (state.cullingCamera && this.params.freezeCulling) {
-      // Freeze the selection from the culling camera, then look at it from the preset's camera.
+    if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
       this.orbit.setPose(state.cullingCamera);
       this.view.update(this.clock.time);
     }
@@ -110,10 +109,11 @@ export class OceanApp {
     this.renderFrame(true);
     this.frameStats.markFirstFrame();
     this.loop.start();
-    const model = await loadBoatOrNotify(this.container, this.options.boatUrl, this.tr.ui('boatLoading'), this.notify);
+    const model = await loadBoatOrNotify(this.options.boatUrl, this.notify, loading);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
+    loading.finish();
   }
 
   /** Stops the frame loop while the tab is hidden or the view is scrolled away; a page of many views stays light. */

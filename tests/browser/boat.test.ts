@@ -178,7 +178,7 @@ describe('bad boat models', () => {
     });
     await page.goto(`${harness.baseUrl}?seed=1&t=10`, { waitUntil: 'load' });
     await page.waitForFunction(() => document.querySelector('.oceano-loading') !== null && (window.oceano?.stats().triangles ?? 0) > 0);
-    expect(await page.$eval('.oceano-loading', (el) => (el as HTMLElement).innerText)).toMatch(/Loading the boat/);
+    expect(await page.$eval('.oceano-loading li[data-state="active"]', (el) => (el as HTMLElement).innerText)).toBe('boat');
     expect(held).toHaveLength(1);
     await held[0].abort('failed');
     await page.evaluate(() => window.oceano.ready);
