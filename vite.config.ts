@@ -81,6 +81,7 @@ export default defineConfig({
         test: {
           name: 'browser',
           include: ['tests/browser/**/*.test.ts'],
+          globalSetup: ['tests/browser/sharedBrowser.ts'],
           environment: 'node',
           testTimeout: 120_000,
           hookTimeout: 120_000,

@@ -26,17 +26,30 @@ export interface Harness {
   close(): Promise<void>;
 }
 
-export async function startHarness(args: string[] = BROWSER_ARGS): Promise<Harness> {
+/**
+ * Starts a preview server and a browser, or, given `connectTo` (a running browser's
+ * WebSocket endpoint), drives that browser instead: the test suite shares one browser
+ * across its files so that its GPU process keeps the shader programs it has compiled.
+ * Closing a harness that connected closes the pages it left open and disconnects.
+ */
+export async function startHarness(args: string[] = BROWSER_ARGS, connectTo?: string): Promise<Harness> {
   const server: PreviewServer = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'error' });
   const address = server.httpServer.address();
   if (!address || typeof address === 'string') throw new Error('The preview server has no TCP address.');
   const baseUrl = `http://127.0.0.1:${address.port}/`;
-  const browser = await puppeteer.launch({ executablePath: await findBrowser(), args, headless: true });
+  const browser = connectTo
+    ? await puppeteer.connect({ browserWSEndpoint: connectTo })
+    : await puppeteer.launch({ executablePath: await findBrowser(), args, headless: true });
   return {
     browser,
     baseUrl,
     async close() {
-      await browser.close();
+      if (connectTo) {
+        for (const page of await browser.pages()) if (page.url() !== 'about:blank') await page.close();
+        await browser.disconnect();
+      } else {
+        await browser.close();
+      }
       await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
     },
   };
