@@ -52,6 +52,9 @@ function instancedGrid({ positions, indices }: { positions: Float32Array; indice
   return geometry;
 }
 
+/** 6 planes × 4, the camera (3), the grid's origin (2), the two bounds and three settings. */
+const SELECTION_KEY_LENGTH = 34;
+
 /**
  * The ocean as chunks: each frame the quadtree picks the chunks in view, each gets its
  * band, and every band is drawn as one instanced mesh of its shared grid (one draw call
@@ -90,6 +93,9 @@ export class OceanChunks {
   private readonly skirt: Mesh<BufferGeometry, OceanMaterial>;
   private readonly skirtPoints: Float64Array;
   private readonly edgeScratch = [0, 0, 0, 0];
+  /** Everything the selection depends on, as of the last frame that selected: the planes, camera, origin, bounds and settings. */
+  private readonly lastKey = new Float64Array(SELECTION_KEY_LENGTH).fill(NaN);
+  private readonly key = new Float64Array(SELECTION_KEY_LENGTH);
 
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
@@ -139,6 +145,9 @@ export class OceanChunks {
     input.lodDistance = settings.lodDistance;
     input.lodBands = settings.lodBands;
     input.bruteForce = settings.lodBruteForce;
+    // A still camera over an unchanged sea chooses the same chunks: the last frame's
+    // selection and uploads stand, and the frame's CPU work is only this comparison.
+    if (this.sameSelectionAsLastFrame(settings)) return;
     selector.select(input);
     this.fill.fill(0);
     const side = selector.side;
@@ -173,6 +182,37 @@ export class OceanChunks {
       }
     }
     this.updateFar(originX + OCEAN_EXTENT / 2, originZ + OCEAN_EXTENT / 2, bounds);
+  }
+
+  private sameSelectionAsLastFrame(settings: LodSettings): boolean {
+    const key = this.key;
+    const input = this.selectionInput;
+    let k = 0;
+    for (const plane of this.planes) {
+      key[k++] = plane.nx;
+      key[k++] = plane.ny;
+      key[k++] = plane.nz;
+      key[k++] = plane.d;
+    }
+    key[k++] = this.cullCamera[0];
+    key[k++] = this.cullCamera[1];
+    key[k++] = this.cullCamera[2];
+    key[k++] = input.originX;
+    key[k++] = input.originZ;
+    key[k++] = input.maxDisplacement;
+    key[k++] = input.horizontalDisplacement ?? 0;
+    key[k++] = settings.lodDistance;
+    key[k++] = settings.lodBands;
+    key[k++] = settings.lodBruteForce ? 1 : 0;
+    let same = true;
+    for (let n = 0; n < SELECTION_KEY_LENGTH; n++) same &&= key[n] === this.lastKey[n];
+    this.lastKey.set(key);
+    return same;
+  }
+
+  /** Makes the next frame select again (after the GPU buffers were lost, for one). */
+  forgetSelection(): void {
+    this.lastKey.fill(NaN);
   }
 
   /** The far rings' cells in view, and the skirt, around the grid's centre. */
