@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { InstancedBufferGeometry, Mesh, PerspectiveCamera } from 'three';
+import { InstancedBufferAttribute, InstancedBufferGeometry, Mesh, PerspectiveCamera } from 'three';
 import { OceanChunks, type LodSettings } from '../../src/render/oceanChunks';
 import type { OceanMaterial } from '../../src/render/oceanMaterial';
 import type { DisplacementBounds } from '../../src/sim/waveModel';
@@ -90,7 +90,7 @@ describe('a still camera reuses the last selection', () => {
     const step = walk(3, 1)[0];
     ocean.update(camera(step), step.settings, step.bounds);
     const geometry = (ocean.group.children[0] as Mesh).geometry as InstancedBufferGeometry;
-    const attribute = geometry.getAttribute('aChunk');
+    const attribute = geometry.getAttribute('aChunk') as InstancedBufferAttribute;
     const version = attribute.version;
     ocean.update(camera(step), step.settings, step.bounds);
     expect(attribute.version).toBe(version);
