@@ -92,13 +92,22 @@ vec3 oceanNormal(vec2 p, float h1) {
   return normalize(vec3(-(h2 - h1) * d, d * d, -(h3 - h1) * d));
 }
 
+// The height waveDisplacement last computed, and where: the vertex shader asks for the
+// normal at the same point next, and the normal's first sample is that very height. Kept
+// here because the shader compiler does not merge two calls that read textures, and one
+// full evaluation of M in four is a quarter of the vertex stage.
+vec2 lastHeightPoint = vec2(3.0e38);
+float lastHeight = 0.0;
+
 // The seam. The seed only lifts points (dx = dz = 0), so a grid point is its own world point.
 vec3 waveDisplacement(vec2 gridXZ) {
-  return vec3(0.0, oceanHeight(gridXZ), 0.0);
+  lastHeightPoint = gridXZ;
+  lastHeight = oceanHeight(gridXZ);
+  return vec3(0.0, lastHeight, 0.0);
 }
 
 vec3 waveNormal(vec2 gridXZ) {
-  return oceanNormal(gridXZ, oceanHeight(gridXZ));
+  return oceanNormal(gridXZ, gridXZ == lastHeightPoint ? lastHeight : oceanHeight(gridXZ));
 }
 
 // The ripples alone: the swell is too long to focus light within the shafts' few metres.
