@@ -66,7 +66,9 @@ export default defineConfig({
       preserveEntrySignatures: 'exports-only',
       output: {
         entryFileNames: (chunk) => (chunk.name === 'oceano' ? 'oceano.js' : 'assets/[name]-[hash].js'),
-        manualChunks: (id) => (id.includes('/node_modules/three/') ? 'three' : undefined),
+        // three.js's core in one chunk both entries share; its addons go where they are used,
+        // so the glTF loader lands in a chunk of its own, fetched with the boat.
+        manualChunks: (id) => (id.includes('/node_modules/three/build/') ? 'three' : undefined),
       },
     },
   },

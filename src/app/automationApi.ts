@@ -14,6 +14,11 @@ import { checkBatches } from './apiChecks';
 export interface OceanoApi {
   /** Resolves once the first frame is drawn and the boat is in it (or a notice says why it is not). */
   ready: Promise<void>;
+  /**
+   * Settles once every part loaded on first use that the view has asked for (the underwater
+   * passes, on the first frame below the surface) has arrived, and a frame with it is drawn.
+   */
+  loaded(): Promise<void>;
   setTime(seconds: number): void;
   play(): void;
   pause(): void;
@@ -71,6 +76,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     play: () => app.play(),
     pause: () => app.pause(),
     renderFrame: () => app.renderFrame(true),
+    loaded: () => app.debugView().whenPartsLoaded().then(() => app.renderFrame(true)),
     getParams: () => app.getParams(),
     setParams: (partial) => app.setParams(partial),
     setCamera: (pose) => app.setCamera(pose),
@@ -121,6 +127,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     play: fail,
     pause: fail,
     renderFrame: fail,
+    loaded: () => ready,
     getParams: fail,
     setParams: fail,
     setCamera: fail,

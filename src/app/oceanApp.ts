@@ -81,7 +81,7 @@ export class OceanApp {
     loading.begin('firstFrame');
     await loading.painted();
     if (this.disposed) return sky?.dispose();
-    this.view = new OceanView(this.canvas, sky, this.params);
+    this.view = new OceanView(this.canvas, sky, this.params, this.loop.requestRender);
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
@@ -109,7 +109,7 @@ export class OceanApp {
     this.renderFrame(true);
     this.frameStats.markFirstFrame();
     this.loop.start();
-    const model = await loadBoatOrNotify(this.options.boatUrl, this.notify, loading);
+    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded()]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);

@@ -1,5 +1,4 @@
 import { Box3, type Object3D } from 'three';
-import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import type { HullSize } from '../sim/boatPose';
 import { message, MessageError } from '../sim/message';
 
@@ -56,6 +55,8 @@ async function fetchBoatModel(url: string): Promise<BoatModel> {
   if (!looksLikeGltf(data)) {
     throw new MessageError(message('boatNotGltf', { url }), `The boat model "${url}" is not a valid glTF model: it is neither a binary .glb nor a JSON .gltf file.`);
   }
+  // The loader is fetched with the model, after the first frame: the page's first load stays small.
+  const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
   let object: Object3D;
   try {
     object = (await new GLTFLoader().parseAsync(data, url.slice(0, url.lastIndexOf('/') + 1))).scene;

@@ -10,7 +10,7 @@ import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type S
 import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
 import { SeaBed } from './seaBed';
-import { UnderwaterPost, type PassTiming } from './underwaterPost';
+import type { PassTiming, UnderwaterPost } from './underwaterPost';
 import { OceanMaterial } from './oceanMaterial';
 import { OceanChunks, type ChunkStats, type LodSettings } from './oceanChunks';
 import { fresnelTexture } from './dataTextures';
@@ -78,6 +78,9 @@ export class OceanView {
   private readonly lights: SceneLights;
   /** Made on the first frame that needs it, so a view that never dives never pays for its targets. */
   private post?: UnderwaterPost;
+  private underwaterCode?: typeof import('./underwaterPost');
+  private underwaterLoad?: Promise<void>;
+  private shaftLightWindowForced = false;
   private params: OceanParams;
   /** The parameters as last applied, to apply only what changes; null before the first time. */
   private applied: OceanParams | null = null;
@@ -107,10 +110,15 @@ export class OceanView {
    * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
    * default sky, painted from the sun parameters and repainted whenever they change.
    */
+  /**
+   * `redraw`: asks the app for a frame, once a part loaded on first use (the underwater
+   * passes) has arrived.
+   */
   constructor(
     canvas: HTMLCanvasElement,
     customSky: CubeTexture | null,
     params: OceanParams,
+    private readonly redraw: () => void = () => undefined,
   ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
@@ -280,15 +288,31 @@ export class OceanView {
     this.waterVolume.uCameraDepth.value = Math.max(0, eyeSurface - this.camera.position.y);
   }
 
-  private underwaterPost(): UnderwaterPost {
-    if (!this.post) {
-      this.post = new UnderwaterPost(this.renderer, this.scene, this.camera, this.waveBinding, { ...this.waterVolume, ...this.light });
+  /**
+   * The underwater passes, built on first use. Their code (the composer, its passes and
+   * shaders) is fetched only when the camera first goes below the surface; until it has
+   * arrived this returns undefined, the canvas keeps its last frame, and `redraw` is called
+   * once it is there.
+   */
+  private underwaterPost(): UnderwaterPost | undefined {
+    if (!this.post && this.underwaterCode) {
+      this.post = new this.underwaterCode.UnderwaterPost(this.renderer, this.scene, this.camera, this.waveBinding, { ...this.waterVolume, ...this.light });
       const size = this.renderer.getSize(new Vector2());
       this.post.setSize(size.x, size.y, this.renderer.getPixelRatio());
       this.post.setBlur(this.params.blurStrength);
       this.post.setGodRays(this.params.godRays ? this.params.godRaysIntensity : 0);
+      this.post.forceShaftLightWindow = this.shaftLightWindowForced;
     }
+    this.underwaterLoad ??= import('./underwaterPost').then((code) => {
+      this.underwaterCode = code;
+      this.redraw();
+    });
     return this.post;
+  }
+
+  /** Settles once the underwater passes have loaded, when a frame has needed them; at once otherwise. */
+  whenPartsLoaded(): Promise<void> {
+    return this.underwaterLoad ?? Promise.resolve();
   }
 
   /** Submits the frame prepared by update(): directly above water, through the composer below it. */
@@ -298,7 +322,7 @@ export class OceanView {
     let composerPasses = 0;
     if (this.showHeightmaps) this.heightmapView = this.drawHeightmaps();
     else if (submersion === 'above') this.renderer.render(this.scene, this.camera);
-    else composerPasses = this.underwaterPost().render(submersion === 'straddling');
+    else composerPasses = this.underwaterPost()?.render(submersion === 'straddling') ?? 0;
     const info = this.renderer.info.render;
     // Wireframe draws each ocean triangle as three line segments (three.js's wireframe index), counted as lines.
     const triangles = info.triangles + (this.material.wireframe ? Math.round(info.lines / 3) : 0);
@@ -337,7 +361,11 @@ export class OceanView {
     };
     this.update(time);
     const { submersion } = this.where;
-    if (submersion !== 'above') return this.underwaterPost().profile(submersion === 'straddling', sync);
+    if (submersion !== 'above') {
+      const post = this.underwaterPost();
+      if (!post) throw new Error('The underwater passes are still loading: await oceano.ready, or draw a frame below the surface first.');
+      return post.profile(submersion === 'straddling', sync);
+    }
     sync();
     const start = performance.now();
     this.renderer.render(this.scene, this.camera);
@@ -350,7 +378,8 @@ export class OceanView {
    * repeats, so a test can compare the path generic wave models take with the tile.
    */
   forceShaftLightWindow(on: boolean): void {
-    this.underwaterPost().forceShaftLightWindow = on;
+    this.shaftLightWindowForced = on;
+    if (this.post) this.post.forceShaftLightWindow = on;
   }
 
   /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
