@@ -133,8 +133,8 @@ export const PRESETS = {
    */
   'compare-models': {
     params: { compare: 'seed,gerstner,fft', compareSplit: 0.333, compareSplit2: 0.667, windSpeed: 10, spectrum: 'pierson-moskowitz' },
-    // Shifted 25 m to the right: the boat, riding the first model, floats in the seed's strip.
-    camera: { position: [25, 9, 40], target: [25, 0, -60] },
+    // Shifted 35 m to the right: the boat, riding the first model, floats inside the seed's strip.
+    camera: { position: [35, 9, 40], target: [35, 0, -60] },
   },
 } satisfies Record<string, Preset>;
 
