@@ -3,7 +3,7 @@ import type { OceanParams, ParamKey } from '../sim/params';
 import { paramsChanged } from '../sim/paramChanges';
 import { median } from '../sim/sampleStatistics';
 import { createWaveModel, type LiveWaveModel, type WavesChoice } from '../sim/waveModels';
-import { compareModelNames, compareStrips } from '../sim/compareLayout';
+import { compareModelNames, compareStrips, type Strip } from '../sim/compareLayout';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { SUN_LIGHT_COLOR, sunDirection } from '../sim/sun';
 import { DEFAULT_CAMERA } from '../sim/defaultCamera';
@@ -109,6 +109,8 @@ export class OceanView {
   /** compare=a,b[,c]: the models after the first (which is this view's own), left to right. */
   private sides: CompareSide[] = [];
   private readonly bufferSize = new Vector2();
+  /** A strip's culling camera (see stripCamera). */
+  private readonly cullCamera = new PerspectiveCamera();
 
   /**
    * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
@@ -291,13 +293,23 @@ export class OceanView {
   update(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
-    this.ocean.update(this.camera, this.lod, this.bounds);
-    for (const side of this.sides) {
-      side.view.update(time);
-      side.chunks.update(this.camera, this.lod, side.bounds());
-    }
+    for (const side of this.sides) side.view.update(time);
     const { eyeSurface, ...where } = this.submersionAt(time);
     this.where = where;
+    const strips = this.splitStrips();
+    if (!strips) {
+      this.ocean.update(this.camera, this.lod, this.bounds);
+    } else {
+      // Each model culls its chunks to its own strip's frustum, so its vertex work too is its
+      // strip's share. Bands and seams depend on distance alone (ChunkSelector), so every
+      // chunk that can reach the strip is the same chunk the model alone would draw there.
+      const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
+      const chunks = [this.ocean, ...this.sides.map((side) => side.chunks)];
+      const bounds = [this.bounds, ...this.sides.map((side) => side.bounds())];
+      strips.forEach((strip, i) => {
+        if (strip.x1 > strip.x0) chunks[i].update(this.stripCamera(strip, width), this.lod, bounds[i]);
+      });
+    }
     const inWater = this.where.submersion !== 'above';
     this.material.setSeenFromBelow(inWater);
     this.seaBed.mesh.visible = inWater;
@@ -331,7 +343,7 @@ export class OceanView {
     const { underwater, submersion } = this.where;
     let composerPasses = 0;
     if (this.showHeightmaps) this.heightmapView = this.drawHeightmaps();
-    else if (submersion === 'above' && this.sides.length > 0) this.drawCompare();
+    else if (submersion === 'above' && this.sides.length > 0) this.drawCompare(this.splitStrips() ?? []);
     else if (submersion === 'above') this.renderer.render(this.scene, this.camera);
     else composerPasses = this.underwaterPost().render(submersion === 'straddling');
     const info = this.renderer.info.render;
@@ -347,11 +359,10 @@ export class OceanView {
    * same pixels as that model drawn alone; its fragment work is its strip's share. (Below the
    * water the first model is drawn alone: the underwater passes are not split.)
    */
-  private drawCompare(): void {
+  private drawCompare(strips: readonly Strip[]): void {
     const size = this.renderer.getDrawingBufferSize(this.bufferSize);
     const ratio = this.renderer.getPixelRatio();
     const groups = [this.ocean.group, ...this.sides.map((side) => side.chunks.group)];
-    const strips = compareStrips(groups.length, this.params.compareSplit, this.params.compareSplit2, size.x);
     this.renderer.setScissorTest(true);
     try {
       strips.forEach((strip, i) => {
@@ -365,6 +376,24 @@ export class OceanView {
       this.renderer.setScissorTest(false);
       groups.forEach((group, j) => (group.visible = j === 0));
     }
+  }
+
+  /** The strips of a split frame (compare= above the water, not the heightmap view); null for a whole frame. */
+  private splitStrips(): Strip[] | null {
+    if (this.sides.length === 0 || this.showHeightmaps || this.where.submersion !== 'above') return null;
+    const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
+    return compareStrips(this.sides.length + 1, this.params.compareSplit, this.params.compareSplit2, width);
+  }
+
+  /** The view's camera narrowed to one strip's columns (setViewOffset): the frustum a strip's chunks are culled with. */
+  private stripCamera(strip: Strip, width: number): PerspectiveCamera {
+    const camera = this.cullCamera.copy(this.camera);
+    // The full height from the camera's own aspect (setViewOffset sets aspect = width / height),
+    // so a fractional pixel ratio's rounded buffer cannot narrow the frustum.
+    const fullHeight = width / this.camera.aspect;
+    camera.setViewOffset(width, fullHeight, strip.x0, 0, strip.x1 - strip.x0, fullHeight);
+    camera.updateMatrixWorld();
+    return camera;
   }
 
   /** The active model's heightmaps; a model without any shows a clear screen. */
