@@ -112,8 +112,27 @@ describe('compare=seed,gerstner,fft: the split view', () => {
     await page.evaluate(() => window.oceano.renderFrame());
     const keyed = await page.evaluate(() => window.oceano.getParams());
     expect(keyed.compareSplit).toBeCloseTo(0.27, 12);
-    expect(keyed.boatHeading).toBe(heading);
     expect(await page.evaluate(() => new URL(window.oceano.shareUrl()).searchParams.get('compareSplit'))).toBe('0.27');
+    // The arrows steer the boat while the sea runs (boatSteering.ts): held on a focused divider
+    // for 400 ms of running time, they must move only the divider.
+    await page.evaluate(() => window.oceano.play());
+    await page.keyboard.down('ArrowRight');
+    await new Promise((resolve) => setTimeout(resolve, 400));
+    await page.keyboard.up('ArrowRight');
+    await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+    await page.evaluate(() => window.oceano.pause());
+    const held = await page.evaluate(() => window.oceano.getParams());
+    expect(held.compareSplit).toBeCloseTo(0.28, 12);
+    expect(held.boatHeading).toBe(heading);
+    // Switched at run time: off hides the dividers; another pair rebuilds them with its names.
+    await page.evaluate(() => window.oceano.setParams({ compare: 'off' }));
+    await page.evaluate(() => window.oceano.renderFrame());
+    expect(await page.$eval('.oceano-compare', (el) => (el as HTMLElement).hidden)).toBe(true);
+    expect(await page.$$('[role="separator"]')).toHaveLength(0);
+    await page.evaluate(() => window.oceano.setParams({ compare: 'gerstner,fft,seed' }));
+    await page.evaluate(() => window.oceano.renderFrame());
+    expect(await page.$$eval('.oceano-compare-label', (els) => els.map((el) => el.textContent))).toEqual(['gerstner', 'fft', 'seed']);
+    expect(await page.$$('[role="separator"]')).toHaveLength(2);
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
