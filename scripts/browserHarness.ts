@@ -82,7 +82,7 @@ export async function openOcean(harness: Harness, query: string, width = 640, he
 }
 
 /** What is drawn over a canvas (control panel, notices, play button): hidden while a canvas is screenshot. */
-const OVERLAYS = '.lil-gui, .oceano-notices, .oceano-play, .oceano-fresnel-plot';
+const OVERLAYS = '.lil-gui, .oceano-notices, .oceano-play, .oceano-fresnel-plot, .oceano-compare';
 
 /** Screenshots a canvas element with the overlays above it hidden, so only the ocean is in the picture. */
 export async function screenshotCanvas(page: Page, selector = 'canvas'): Promise<Buffer> {

@@ -6,6 +6,7 @@ import { ControlPanel, type ControlPanelHooks, type LiveCounts } from './control
 import { FresnelPlot } from './fresnelPlot';
 import type { Translator } from './i18n';
 import { PhysicsPanel, type PhysicsSource } from './physicsPanel';
+import { CompareDividers } from './compareDividers';
 
 /** How often the GUI's live LOD counts are refreshed (frames). */
 const COUNTS_EVERY = 10;
@@ -30,6 +31,7 @@ export class AppControls {
   private readonly tr: Translator;
   private fresnelPlot?: FresnelPlot;
   readonly physics: PhysicsPanel;
+  private readonly dividers: CompareDividers;
 
   constructor(
     private readonly container: HTMLElement,
@@ -45,6 +47,8 @@ export class AppControls {
     this.cameraKeys = new CameraKeys(keyTarget, () => app.camera(), (pose) => app.setCamera(pose));
     this.tr = state.tr;
     this.physics = new PhysicsPanel(container, state.physics);
+    // The split view's dividers belong to the view, embedded or not: made here, hidden until compare= is set.
+    this.dividers = new CompareDividers(container, state.tr, (key, value) => hooks.onParam(key, value));
     this.sync(state.params, state.playing);
   }
 
@@ -58,6 +62,7 @@ export class AppControls {
     if (params.fresnelPlot) this.fresnelPlot ??= new FresnelPlot(this.container, this.fresnelData, this.tr);
     this.fresnelPlot?.setVisible(params.fresnelPlot);
     this.physics.setOpen(params.physics);
+    this.dividers.sync(params);
     this.panel?.sync(params, playing);
   }
 
@@ -75,5 +80,6 @@ export class AppControls {
     this.panel?.dispose();
     this.fresnelPlot?.dispose();
     this.physics.dispose();
+    this.dividers.dispose();
   }
 }

@@ -108,6 +108,8 @@ export type UiTextId =
   | 'folderUnderwater'
   | 'folderGerstner'
   | 'folderPhysics'
+  | 'folderCompare'
+  | 'compareDivider'
   | 'dive'
   | 'surface'
   | 'folderLiveCounts'
@@ -146,6 +148,8 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderUnderwater: 'Underwater',
     folderGerstner: 'Gerstner waves',
     folderPhysics: 'Physics vs theory',
+    folderCompare: 'Models side by side',
+    compareDivider: 'Divider between wave models (drag, or arrow keys)',
     dive: 'Dive under the surface',
     surface: 'Back to the surface view',
     folderLiveCounts: 'LOD counts (live)',
@@ -183,6 +187,8 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     folderUnderwater: 'Bajo el agua',
     folderGerstner: 'Ondas de Gerstner',
     folderPhysics: 'Física frente a teoría',
+    folderCompare: 'Modelos lado a lado',
+    compareDivider: 'Divisor entre modelos de olas (arrastrar o flechas)',
     dive: 'Sumergirse',
     surface: 'Volver a la superficie',
     folderLiveCounts: 'Contadores de LOD (en vivo)',
@@ -213,6 +219,9 @@ const UI: Record<Language, Record<UiTextId, string>> = {
  */
 export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   waves: 'Modelo de olas',
+  compare: 'Comparar modelos lado a lado',
+  compareSplit: 'Comparar: primer divisor',
+  compareSplit2: 'Comparar: segundo divisor',
   windSpeed: 'Velocidad del viento U10',
   windDirection: 'Dirección del viento',
   spectrum: 'Espectro de oleaje',

@@ -126,6 +126,16 @@ export const PRESETS = {
     params: { waves: 'gerstner', gerstnerSteepness: 0.2, gerstnerCount: 64, windSpeed: 20, spectrum: 'jonswap', fetch: 20, spreading: 32 },
     camera: { position: [0, 4, 25], target: [0, 0, -20] },
   },
+  /**
+   * The three wave models side by side on one camera, wind (10 m/s, Pierson–Moskowitz) and
+   * seed: left, the seed's sines and Perlin ripples; middle, 32 Gerstner trochoids drawn from
+   * the wind spectrum; right, Tessendorf's FFT of the same spectrum.
+   */
+  'compare-models': {
+    params: { compare: 'seed,gerstner,fft', compareSplit: 0.333, compareSplit2: 0.667, windSpeed: 10, spectrum: 'pierson-moskowitz' },
+    // Shifted 35 m to the right: the boat, riding the first model, floats inside the seed's strip.
+    camera: { position: [35, 9, 40], target: [35, 0, -60] },
+  },
 } satisfies Record<string, Preset>;
 
 export type PresetName = keyof typeof PRESETS;

@@ -2,7 +2,8 @@ import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type 
 import type { OceanParams, ParamKey } from '../sim/params';
 import { paramsChanged } from '../sim/paramChanges';
 import { median } from '../sim/sampleStatistics';
-import { createWaveModel, type LiveWaveModel } from '../sim/waveModels';
+import { createWaveModel, type LiveWaveModel, type WavesChoice } from '../sim/waveModels';
+import { compareModelNames, compareStrips, type Strip } from '../sim/compareLayout';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { SUN_LIGHT_COLOR, sunDirection } from '../sim/sun';
 import { DEFAULT_CAMERA } from '../sim/defaultCamera';
@@ -22,6 +23,7 @@ import { WaveBinding } from './waveModels/waveBinding';
 import { createWaveModelView } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
 import { SunSky } from './sunSky';
+import { CompareSide, type OceanMaterialInputs } from './compareSide';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -105,6 +107,13 @@ export class OceanView {
   /** The sky painted from the sun; absent while a page's own six images are shown. */
   private sunSky: SunSky | null = null;
   private sky: CubeTexture;
+  /** What a compare side's ocean material shares with the view's own. */
+  private readonly materialInputs: OceanMaterialInputs;
+  /** compare=a,b[,c]: the models after the first (which is this view's own), left to right. */
+  private sides: CompareSide[] = [];
+  private readonly bufferSize = new Vector2();
+  /** A strip's culling camera (see stripCamera). */
+  private readonly cullCamera = new PerspectiveCamera();
 
   /**
    * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
@@ -131,16 +140,16 @@ export class OceanView {
     const sky = customSky ?? (this.sunSky as SunSky).texture;
     this.sky = sky;
     this.scene.background = sky;
-    this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
+    this.waveView = createWaveModelView(createWaveModel({ ...params, waves: firstModel(params) }), this.renderer);
     this.waveBinding = new WaveBinding(this.waveView);
     this.fresnelTexture = fresnelTexture(this.fresnelData);
     this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
-    this.material = new OceanMaterial(
-      this.waveBinding,
-      { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
+    this.materialInputs = {
+      fresnelTables: { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
       sky,
-      { ...this.waterVolume, uSunColor: this.light.uSunColor },
-    );
+      shared: { ...this.waterVolume, uSunColor: this.light.uSunColor },
+    };
+    this.material = new OceanMaterial(this.waveBinding, this.materialInputs.fresnelTables, sky, this.materialInputs.shared);
     this.ocean = new OceanChunks(this.material);
     this.scene.add(this.ocean.group);
     this.lod = params;
@@ -167,22 +176,24 @@ export class OceanView {
     const changed = (...keys: ParamKey[]) => paramsChanged(before, params, keys);
     this.applied = { ...params };
     this.params = params;
-    if (params.waves !== this.waveView.name) {
+    const first = firstModel(params);
+    if (first !== this.waveView.name) {
       const previous = this.waveView;
-      this.waveView = createWaveModelView(createWaveModel(params), this.renderer);
+      this.waveView = createWaveModelView(createWaveModel({ ...params, waves: first }), this.renderer);
       this.waveBinding.setModel(this.waveView);
       previous.dispose();
     }
+    const newSides = this.syncCompareSides(compareModelNames<WavesChoice>(params.compare).slice(1), params);
     // Every model, a new one too: each compares what it reads and re-uploads only on a change
     // (and a new view gets what it does not take from its model, such as the FFT's foam).
     this.waveView.setParams(params);
+    for (const side of this.sides) side.view.setParams(params);
+    for (const side of newSides) applyLook(side.material, params);
     // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
     this.bounds = this.waveView.model.bounds();
     if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'fogDensity', 'caustics', 'causticsIntensity')) {
       const sun = sunDirection(params.sunElevation, params.sunAzimuth);
-      this.material.setWaterColor(params.waterColor);
-      this.material.setSunDirection(sun);
       this.sunSky?.update(this.renderer, sun);
       this.lights.update(sun, params.waterColor);
       const refracted = refractedSunDirection(sun);
@@ -191,18 +202,38 @@ export class OceanView {
       applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
       this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
     }
-    if (changed('fresnel')) this.material.setFresnelEnabled(params.fresnel);
-    if (changed('wireframe')) this.material.wireframe = params.wireframe;
-    if (changed('normals', 'shading')) this.material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
-    if (changed('normalsCompare')) this.material.setNormalsCompare(params.normalsCompare);
+    if (changed(...LOOK_KEYS)) for (const material of [this.material, ...this.sides.map((s) => s.material)]) applyLook(material, params);
     if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
-    if (changed('lodColors')) this.material.setLodColors(params.lodColors);
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling')) {
       this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
     }
     if (changed('seaBedDepth')) this.seaBed.setDepth(params.seaBedDepth);
     if (changed('blurStrength')) this.post?.setBlur(params.blurStrength);
     if (changed('godRays', 'godRaysIntensity')) this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
+  }
+
+  /**
+   * Keeps one CompareSide per model after the first, in order, reusing those already made;
+   * returns the new ones (whose materials still need the look applied).
+   */
+  private syncCompareSides(names: readonly WavesChoice[], params: OceanParams): CompareSide[] {
+    const kept: CompareSide[] = [];
+    const made: CompareSide[] = [];
+    const unused = [...this.sides];
+    for (const name of names) {
+      const k = unused.findIndex((side) => side.name === name);
+      if (k >= 0) {
+        kept.push(unused.splice(k, 1)[0]);
+      } else {
+        const side = new CompareSide(name, params, this.renderer, this.materialInputs);
+        this.scene.add(side.chunks.group);
+        kept.push(side);
+        made.push(side);
+      }
+    }
+    for (const side of unused) side.dispose();
+    this.sides = kept;
+    return made;
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -226,7 +257,9 @@ export class OceanView {
     this.sky = sky;
     if (this.backgroundAbove) this.backgroundAbove = sky;
     else this.scene.background = sky;
+    this.materialInputs.sky = sky;
     this.material.setSky(sky);
+    for (const side of this.sides) side.material.setSky(sky);
   }
 
   setSize(width: number, height: number, pixelRatio: number): void {
@@ -269,9 +302,23 @@ export class OceanView {
   update(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
-    this.ocean.update(this.camera, this.lod, this.bounds);
+    for (const side of this.sides) side.view.update(time);
     const { eyeSurface, ...where } = this.submersionAt(time);
     this.where = where;
+    const strips = this.splitStrips();
+    if (!strips) {
+      this.ocean.update(this.camera, this.lod, this.bounds);
+    } else {
+      // Each model culls its chunks to its own strip's frustum, so its vertex work too is its
+      // strip's share. Bands and seams depend on distance alone (ChunkSelector), so every
+      // chunk that can reach the strip is the same chunk the model alone would draw there.
+      const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
+      const chunks = [this.ocean, ...this.sides.map((side) => side.chunks)];
+      const bounds = [this.bounds, ...this.sides.map((side) => side.bounds())];
+      strips.forEach((strip, i) => {
+        if (strip.x1 > strip.x0) chunks[i].update(this.stripCamera(strip, width), this.lod, bounds[i]);
+      });
+    }
     const inWater = this.where.submersion !== 'above';
     this.material.setSeenFromBelow(inWater);
     this.seaBed.mesh.visible = inWater;
@@ -321,12 +368,57 @@ export class OceanView {
     const { underwater, submersion } = this.where;
     let composerPasses = 0;
     if (this.showHeightmaps) this.heightmapView = this.drawHeightmaps();
+    else if (submersion === 'above' && this.sides.length > 0) this.drawCompare(this.splitStrips() ?? []);
     else if (submersion === 'above') this.renderer.render(this.scene, this.camera);
     else composerPasses = this.underwaterPost()?.render(submersion === 'straddling') ?? 0;
     const info = this.renderer.info.render;
     // Wireframe draws each ocean triangle as three line segments (three.js's wireframe index), counted as lines.
     const triangles = info.triangles + (this.material.wireframe ? Math.round(info.lines / 3) : 0);
     this.lastStats = { drawCalls: info.calls, triangles, ...this.ocean.stats(), underwater, submersion, composerPasses };
+  }
+
+  /**
+   * compare=a,b[,c] above the water: the scene once per model, each with only its own ocean
+   * shown, the viewport the whole canvas and the scissor its strip of columns. Every pixel is
+   * drawn by exactly one model, with the projection of the whole view, so a strip holds the
+   * same pixels as that model drawn alone; its fragment work is its strip's share. (Below the
+   * water the first model is drawn alone: the underwater passes are not split.)
+   */
+  private drawCompare(strips: readonly Strip[]): void {
+    const size = this.renderer.getDrawingBufferSize(this.bufferSize);
+    const ratio = this.renderer.getPixelRatio();
+    const groups = [this.ocean.group, ...this.sides.map((side) => side.chunks.group)];
+    this.renderer.setScissorTest(true);
+    try {
+      strips.forEach((strip, i) => {
+        if (strip.x1 <= strip.x0) return;
+        groups.forEach((group, j) => (group.visible = i === j));
+        // three multiplies the scissor by the pixel ratio and rounds: whole buffer pixels come back.
+        this.renderer.setScissor(strip.x0 / ratio, 0, (strip.x1 - strip.x0) / ratio, size.y / ratio);
+        this.renderer.render(this.scene, this.camera);
+      });
+    } finally {
+      this.renderer.setScissorTest(false);
+      groups.forEach((group, j) => (group.visible = j === 0));
+    }
+  }
+
+  /** The strips of a split frame (compare= above the water, not the heightmap view); null for a whole frame. */
+  private splitStrips(): Strip[] | null {
+    if (this.sides.length === 0 || this.showHeightmaps || this.where.submersion !== 'above') return null;
+    const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
+    return compareStrips(this.sides.length + 1, this.params.compareSplit, this.params.compareSplit2, width);
+  }
+
+  /** The view's camera narrowed to one strip's columns (setViewOffset): the frustum a strip's chunks are culled with. */
+  private stripCamera(strip: Strip, width: number): PerspectiveCamera {
+    const camera = this.cullCamera.copy(this.camera);
+    // The full height from the camera's own aspect (setViewOffset sets aspect = width / height),
+    // so a fractional pixel ratio's rounded buffer cannot narrow the frustum.
+    const fullHeight = width / this.camera.aspect;
+    camera.setViewOffset(width, fullHeight, strip.x0, 0, strip.x1 - strip.x0, fullHeight);
+    camera.updateMatrixWorld();
+    return camera;
   }
 
   /** The active model's heightmaps; a model without any shows a clear screen. */
@@ -423,6 +515,7 @@ export class OceanView {
   dispose(): void {
     this.ocean.dispose();
     this.material.dispose();
+    for (const side of this.sides) side.dispose();
     this.probe?.dispose();
     this.heightmapView?.dispose();
     this.post?.dispose();
@@ -434,4 +527,22 @@ export class OceanView {
     else this.sky.dispose();
     this.renderer.dispose();
   }
+}
+
+/** The model the view itself draws: the first of a comparison, else `waves`. */
+function firstModel(params: OceanParams): WavesChoice {
+  return compareModelNames<WavesChoice>(params.compare)[0] ?? params.waves;
+}
+
+/** The parameters an ocean material shows (every model's material of a comparison alike). */
+const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors'];
+
+function applyLook(material: OceanMaterial, params: OceanParams): void {
+  material.setWaterColor(params.waterColor);
+  material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
+  material.setFresnelEnabled(params.fresnel);
+  material.wireframe = params.wireframe;
+  material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
+  material.setNormalsCompare(params.normalsCompare);
+  material.setLodColors(params.lodColors);
 }

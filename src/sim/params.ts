@@ -1,4 +1,8 @@
 import { message, type Message } from './message';
+import { COMPARE_OFF, compareOrderings } from './compareLayout';
+
+/** The wave models, in the order the `waves` parameter lists them (src/sim/waveModels.ts). */
+const WAVE_MODEL_NAMES = ['seed', 'fft', 'gerstner'] as const;
 
 /**
  * Every tunable of the ocean in one typed place: default, range and unit. The GUI, the
@@ -36,7 +40,14 @@ export const paramDefs = {
   // The wave model (src/sim/waveModels.ts): 'seed' is the seed report's sines and Perlin ripples,
   // 'fft' the spectral sea (Tessendorf's FFT of a wind spectrum, src/sim/fftOcean.ts),
   // 'gerstner' a sum of trochoids drawn from the same wind spectrum (src/sim/gerstnerLiveModel.ts).
-  waves: { kind: 'choice', default: 'seed', options: ['seed', 'fft', 'gerstner'], label: 'Wave model' },
+  waves: { kind: 'choice', default: 'seed', options: WAVE_MODEL_NAMES, label: 'Wave model' },
+  // Side by side (src/sim/compareLayout.ts): two or three models, left to right, on the same
+  // camera, wind and seed, each drawing only its own strip of the screen. The first replaces
+  // `waves` while the split is on: the boat, the underwater view and the physics panel use it.
+  compare: { kind: 'choice', default: COMPARE_OFF, options: [COMPARE_OFF, ...compareOrderings(WAVE_MODEL_NAMES)], label: 'Compare models side by side' },
+  // Where the dividers stand, as fractions of the view's width (the second only with three models).
+  compareSplit: { kind: 'number', default: 0.5, min: 0, max: 1, step: 0.001, unit: '', label: 'Compare: first divider' },
+  compareSplit2: { kind: 'number', default: 0.75, min: 0, max: 1, step: 0.001, unit: '', label: 'Compare: second divider' },
   // The spectral sea's wind and spectrum (read only with waves=fft; see src/sim/seaState.ts).
   windSpeed: { kind: 'number', default: 10, min: 1, max: 30, step: 0.5, unit: 'm/s', label: 'Wind speed U10' },
   windDirection: { kind: 'number', default: 20, min: 0, max: 360, step: 1, unit: '°', label: 'Wind direction' },

@@ -1,0 +1,55 @@
+import type { CubeTexture, IUniform, Texture, WebGLRenderer } from 'three';
+import type { OceanParams } from '../sim/params';
+import type { DisplacementBounds } from '../sim/waveModel';
+import { createWaveModel, type WavesChoice } from '../sim/waveModels';
+import { OceanMaterial } from './oceanMaterial';
+import { OceanChunks } from './oceanChunks';
+import { WaveBinding } from './waveModels/waveBinding';
+import { createWaveModelView } from './waveModels/registry';
+import type { WaveModelView } from './waveModels/waveModelView';
+import type { WaterVolumeUniforms } from './waterVolumeUniforms';
+
+/** What every ocean material of one view shares: Fresnel tables, sky, water volume, sun colour. */
+export interface OceanMaterialInputs {
+  fresnelTables: { fromAbove: Texture; fromBelow: Texture };
+  sky: CubeTexture;
+  shared: WaterVolumeUniforms & Record<'uSunColor', IUniform>;
+}
+
+/**
+ * One extra model of the side-by-side view (compare=a,b[,c]), beside the view's own first
+ * model: its own live model (CPU twin), its own GPU half, its own ocean material bound to it
+ * through its own WaveBinding (so `#include <oceano_waves>` resolves to its chunk) and its
+ * own chunk meshes, culled with its own displacement bounds. The view shows its group only
+ * while it draws this model's strip, so each strip is drawn exactly as that model alone.
+ */
+export class CompareSide {
+  readonly view: WaveModelView;
+  readonly material: OceanMaterial;
+  readonly chunks: OceanChunks;
+  private readonly binding: WaveBinding;
+
+  constructor(name: WavesChoice, params: OceanParams, renderer: WebGLRenderer, inputs: OceanMaterialInputs) {
+    this.view = createWaveModelView(createWaveModel({ ...params, waves: name }), renderer);
+    this.binding = new WaveBinding(this.view);
+    this.material = new OceanMaterial(this.binding, inputs.fresnelTables, inputs.sky, inputs.shared);
+    this.chunks = new OceanChunks(this.material);
+    this.chunks.group.visible = false;
+  }
+
+  get name(): WavesChoice {
+    return this.view.name;
+  }
+
+  bounds(): DisplacementBounds {
+    return this.view.model.bounds();
+  }
+
+  dispose(): void {
+    this.chunks.group.removeFromParent();
+    this.chunks.dispose();
+    this.binding.detach(this.material);
+    this.material.dispose();
+    this.view.dispose();
+  }
+}
