@@ -128,3 +128,9 @@ float wakeFoam(vec2 worldXZ) {
   }
   return min(1.0, trail + bow);
 }
+
+// The normal of y = h_model + η from the model's unit normal n and the wake's slope
+// (∂η/∂x, ∂η/∂z): the twin of addWake in src/sim/boatWake.ts.
+vec3 wakeTiltNormal(vec3 n, vec2 slope) {
+  return normalize(vec3(n.x - slope.x * n.y, n.y, n.z - slope.y * n.y));
+}

@@ -4,6 +4,9 @@ import type { OceanParams } from '../sim/params';
 import type { LiveWaveModel } from '../sim/waveModels';
 import type { BoatView } from '../render/boatView';
 import type { BoatModel } from '../render/boatModel';
+import type { OceanView } from '../render/oceanView';
+import type { SurfaceSample } from '../sim/waveModel';
+import { addWake, BoatWake, wakeHeightBound } from '../sim/boatWake';
 
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
 const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
@@ -33,6 +36,8 @@ export class BoatController {
   private state?: BoatMotionState;
   private hull: HullSize = NOMINAL_HULL;
   private modelState: BoatInfo['model'] = 'loading';
+  /** The wake the boat leaves, recorded every frame (src/sim/boatWake.ts). */
+  private readonly wake = new BoatWake();
 
   /** `opened`: a share link's boat state, restored at its time (the link's `t`); without both the boat starts afresh. */
   constructor(
@@ -50,8 +55,12 @@ export class BoatController {
     this.view.setModel(model.object);
   }
 
-  /** Floats the boat at `time`; with the camera following, carries the camera along. */
-  update(time: number, params: OceanParams, waves: LiveWaveModel): void {
+  /**
+   * Floats the boat at `time` on the waves alone (not on its own wake); with the camera
+   * following, carries the camera along. Then records the boat into its wake and hands the
+   * wake for this frame to `view`.
+   */
+  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>): void {
     const previous = this.state?.pose;
     this.state = this.motion.update(
       time,
@@ -62,6 +71,15 @@ export class BoatController {
     const pose = this.state.pose;
     this.view.setPose(pose);
     if (params.boatFollow && previous) this.carryCamera(pose.x - previous.x, pose.z - previous.z);
+    this.wake.record(time, { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, turnRate: params.boatTurnRate * DEG });
+    const data = this.wake.uniforms(time, { enabled: params.wake, strength: params.wakeStrength });
+    view.setWake(data, wakeHeightBound(data), { visible: params.wake && params.wakeGuide, x: pose.x, y: 0.05, z: pose.z, heading: pose.heading });
+  }
+
+  /** The waves' sample at world (x, z) with the boat's wake added there, as drawn: what a second boat would feel. */
+  withWake(sample: SurfaceSample, x: number, z: number, time: number, params: OceanParams): SurfaceSample {
+    if (!params.wake) return sample;
+    return addWake(sample, this.wake.at(x, z, time, { enabled: params.wake, strength: params.wakeStrength }));
   }
 
   /** Following starts by looking at the boat from where the camera stands relative to its target. */

@@ -115,6 +115,7 @@ export type UiTextId =
   | 'countTriangles'
   | 'countDrawCalls'
   | 'countPerBand'
+  | 'froudeNumber'
   | 'boatLoading'
   | 'play'
   | 'pause'
@@ -150,6 +151,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     countTriangles: 'Triangles',
     countDrawCalls: 'Draw calls',
     countPerBand: 'Chunks per band',
+    froudeNumber: 'Froude number U/√(gL)',
     boatLoading: 'Loading the boat…',
     play: 'Play',
     pause: 'Pause',
@@ -184,6 +186,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     countTriangles: 'Triángulos',
     countDrawCalls: 'Llamadas de dibujo',
     countPerBand: 'Parcelas por banda',
+    froudeNumber: 'Número de Froude U/√(gL)',
     boatLoading: 'Cargando el barco…',
     play: 'Reproducir',
     pause: 'Pausar',
@@ -234,6 +237,10 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   boatHeading: 'Rumbo del barco',
   boatResponse: 'Tiempo de respuesta de flotación',
   boatFollow: 'La cámara sigue al barco',
+  boatTurnRate: 'Velocidad de giro del barco',
+  wake: 'Estela de Kelvin',
+  wakeStrength: 'Intensidad de la estela',
+  wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
   lodDistance: 'Distancia de LOD L',
   lodBands: 'Bandas de LOD',
   lodColors: 'Colorear parcelas por banda',

@@ -22,6 +22,9 @@ import { WaveBinding } from './waveModels/waveBinding';
 import { createWaveModelView } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
 import { SunSky } from './sunSky';
+import { applyWakeUniforms, createWakeUniforms } from './wakeUniforms';
+import { KelvinGuideView } from './kelvinGuideView';
+import type { WakeUniformData } from '../sim/wakeUniformData';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -70,6 +73,11 @@ export class OceanView {
   private readonly fresnelFromBelowTexture: DataTexture;
   private readonly waterVolume: WaterVolumeUniforms = createWaterVolumeUniforms();
   private readonly caustics: CausticsUniforms = createCausticsUniforms();
+  /** The boat's wake (shaders/wake.glsl), shared by the ocean and the probe; filled by setWake. */
+  private readonly wake = createWakeUniforms();
+  /** How far the wake can raise or lower the surface this frame (wakeHeightBound), metres. */
+  private wakeBound = 0;
+  private readonly kelvinGuide: KelvinGuideView;
   private readonly light: Record<'uRefractedSun' | 'uSunColor', IUniform> = {
     uRefractedSun: { value: new Vector3() },
     uSunColor: { value: new Color(...SUN_LIGHT_COLOR) },
@@ -131,7 +139,7 @@ export class OceanView {
       this.waveBinding,
       { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
       sky,
-      { ...this.waterVolume, uSunColor: this.light.uSunColor },
+      { ...this.waterVolume, ...this.wake, uSunColor: this.light.uSunColor },
     );
     this.ocean = new OceanChunks(this.material);
     this.scene.add(this.ocean.group);
@@ -140,6 +148,7 @@ export class OceanView {
     this.seaBed = new SeaBed(this.waveBinding, { ...this.waterVolume, ...this.caustics, ...this.light });
     this.scene.add(this.seaBed.mesh);
     this.lights = new SceneLights(this.scene);
+    this.kelvinGuide = new KelvinGuideView(this.scene);
     this.params = params;
     this.applyParams(params);
   }
@@ -195,6 +204,22 @@ export class OceanView {
     if (changed('seaBedDepth')) this.seaBed.setDepth(params.seaBedDepth);
     if (changed('blurStrength')) this.post?.setBlur(params.blurStrength);
     if (changed('godRays', 'godRaysIntensity')) this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
+  }
+
+  /**
+   * The boat's wake for the coming frame: its uniforms (packed by src/sim/boatWake.ts), the
+   * bound that grows the culling boxes, and the ±19.47° teaching guide at the boat.
+   */
+  setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
+    applyWakeUniforms(this.wake, data);
+    this.material.setWakeOn(data.count >= 2);
+    this.wakeBound = bound;
+    this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
+  }
+
+  /** The culling bounds: the model's, grown by the wake's. */
+  private cullingBounds(): { vertical: number; horizontal: number } {
+    return this.wakeBound === 0 ? this.bounds : { vertical: this.bounds.vertical + this.wakeBound, horizontal: this.bounds.horizontal };
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -260,7 +285,7 @@ export class OceanView {
   update(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
-    this.ocean.update(this.camera, this.lod, this.bounds);
+    this.ocean.update(this.camera, this.lod, this.cullingBounds());
     const { eyeSurface, ...where } = this.submersionAt(time);
     this.where = where;
     const inWater = this.where.submersion !== 'above';
@@ -354,7 +379,7 @@ export class OceanView {
 
   /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
   probeSurface(points: readonly (readonly [number, number])[], time: number): ProbeSample[] {
-    this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding);
+    this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding, this.wake);
     this.waveView.update(time);
     try {
       return this.probe.probe(points);
@@ -368,7 +393,7 @@ export class OceanView {
     const perBatch: number[] = [];
     for (let b = 0; b < batches; b++) {
       const start = performance.now();
-      for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.bounds);
+      for (let k = 0; k < 20; k++) this.ocean.update(this.camera, this.lod, this.cullingBounds());
       perBatch.push((performance.now() - start) / 20);
     }
     return median(perBatch);
@@ -390,6 +415,7 @@ export class OceanView {
     this.heightmapView?.dispose();
     this.post?.dispose();
     this.seaBed.dispose();
+    this.kelvinGuide.dispose();
     this.waveView.dispose();
     this.fresnelTexture.dispose();
     this.fresnelFromBelowTexture.dispose();
