@@ -23,7 +23,7 @@ export interface FoamParams {
 }
 
 export const TRAIL_DECAY = 20;
-export const BOW_DECAY = 8;
+export const BOW_DECAY = 4;
 /** The bow wave's foam spreads sideways at this fraction of the boat's speed (its crest leaves the bow at ≈ 20°, tan 20° ≈ 0.36). */
 export const BOW_SPREAD = 0.36;
 
