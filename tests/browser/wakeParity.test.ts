@@ -97,6 +97,25 @@ describe('the Kelvin wake: CPU twin vs the drawn mesh', () => {
     expect(control.height).toBeGreaterThan(height);
     expect(control.normal).toBeGreaterThan(normal);
     if (late) {
+      // The boat floats on the waves without its own wake: its undamped pose is the same with
+      // the wake off, while the surface drawn under its centre is not (the control).
+      const boat = await page.evaluate(() => {
+        const o = window.oceano;
+        o.setTime(37.25);
+        o.renderFrame();
+        const on = o.boat().target;
+        const drawn = o.sampleSurface(on.position[0], on.position[2]).height;
+        o.setParams({ wake: false });
+        o.renderFrame();
+        const off = o.boat().target;
+        const bare = o.sampleSurface(on.position[0], on.position[2]).height;
+        o.setParams({ wake: true });
+        return { dy: Math.abs(on.position[1] - off.position[1]), dPitch: Math.abs(on.pitch - off.pitch), wakeUnderBoat: Math.abs(drawn - bare) };
+      });
+      console.log(`[oceano] the boat with and without its own wake: |Δy| ${boat.dy} m, |Δpitch| ${boat.dPitch}; the wake under it ${boat.wakeUnderBoat.toExponential(2)} m`);
+      expect(boat.dy).toBe(0);
+      expect(boat.dPitch).toBe(0);
+      expect(boat.wakeUnderBoat).toBeGreaterThan(0.01);
       // A calm sea, so only the wake changes in the frame the CPU is late by.
       await page.evaluate(() => window.oceano.setParams({ swellAmplitude: 0, rippleStrength: 0 }));
       const frameLate = await worst(page, cases().slice(1, 2), 'cpuFrameLate');
