@@ -37,7 +37,7 @@ import { TRACK_POINTS, type TrackPoint } from './wakeTrack';
  * so a segment across which the phase turns fast (a non-stationary part of the integral)
  * contributes what it should, little, instead of aliasing. Two details are not physics:
  * r is softened to √(r² + σ²) under the hull, where the far-field G does not hold, and the
- * history is tapered to zero between 21 and 31 s so the end of the ring buffer leaves no
+ * history is tapered to zero between 56 and 76 s of age so the end of the ring buffer leaves no
  * ring of its own.
  */
 
@@ -49,7 +49,7 @@ export const FOOTPRINT_PER_LENGTH = 0.25;
  * ≈ 0.5) displaces ≈ 6.4 m³, 0.0125 L³.
  */
 export const VOLUME_PER_LENGTH_CUBED = 0.0125;
-/** History taper, seconds of age: full weight before TAPER_START, none after TAPER_END (< 31 s, the oldest sample's least age). */
+/** History taper, seconds of age: full weight before TAPER_START, none after TAPER_END (under 78 s, about the age of the oldest point a full track holds: 16 s of fine samples, then 2 s ones up to 64 points). */
 export const TAPER_START = 56;
 export const TAPER_END = 76;
 
