@@ -7,6 +7,7 @@ import type { BoatModel } from '../render/boatModel';
 import type { OceanView } from '../render/oceanView';
 import type { SurfaceSample } from '../sim/waveModel';
 import { addWake, BoatWake, wakeHeightBound } from '../sim/boatWake';
+import type { WakeTrack } from '../sim/wakeTrack';
 
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
 const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
@@ -43,9 +44,10 @@ export class BoatController {
   constructor(
     private readonly view: BoatView,
     private readonly carryCamera: (dx: number, dz: number) => void,
-    opened: { boatState: BoatSnapshot | null; time: number | null } = { boatState: null, time: null },
+    opened: { boatState: BoatSnapshot | null; wakeTrack?: WakeTrack | null; time: number | null } = { boatState: null, time: null },
   ) {
     if (opened.boatState && opened.time !== null) this.motion.restore(opened.boatState, opened.time);
+    if (opened.wakeTrack && opened.time !== null) this.wake.restore(opened.wakeTrack);
   }
 
   setModel(model: BoatModel | null): void {
@@ -87,6 +89,11 @@ export class BoatController {
     if (!this.state) return;
     const { x, z } = this.state.pose;
     this.carryCamera(x - target.x, z - target.z);
+  }
+
+  /** The wake's track for a share link made at `time`; null if it was last recorded at another time. */
+  wakeText(time: number): string | null {
+    return this.wake.track.fine.latest()?.time === time ? this.wake.track.serialize() : null;
   }
 
   /** The motion at `time` for a share link; null if the boat was last floated at another time. */

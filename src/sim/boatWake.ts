@@ -98,14 +98,25 @@ export function addWake(sample: SurfaceSample, wake: readonly [number, number, n
 }
 
 export class BoatWake {
-  readonly track = new WakeTrack();
+  private trackState = new WakeTrack();
   /** The inputs of the last replay, while the clock has not moved on from it. */
   private replayed: (WakeControls & { time: number }) | null = null;
   private packed: { time: number; settings: WakeSettings; data: WakeUniformData } | null = null;
 
+  get track(): WakeTrack {
+    return this.trackState;
+  }
+
+  /** A share link's track (WakeTrack.parse): the wake continues from it rather than being replayed. */
+  restore(track: WakeTrack): void {
+    this.trackState = track;
+    this.replayed = null;
+    this.packed = null;
+  }
+
   /** Records the boat at `time` (every frame); a fresh track is replayed first (see above). */
   record(time: number, c: WakeControls): void {
-    const head = this.track.fine.latest();
+    const head = this.trackState.fine.latest();
     const fresh = head === null || !(time >= head.time) || time - head.time > TRACK_MAX_GAP;
     // Paused on a replayed track and given new controls (a slider, the API): replay them, so
     // a frozen view shows the wake of what it now says the boat does.
@@ -113,17 +124,17 @@ export class BoatWake {
     const changed = r !== null && r.time === time && (r.x !== c.x || r.z !== c.z || r.heading !== c.heading || r.speed !== c.speed || r.turnRate !== c.turnRate);
     if (fresh || changed) this.replay(time, c);
     else if (time !== r?.time) this.replayed = null;
-    this.track.record(time, c.x, c.z, c.speed);
+    this.trackState.record(time, c.x, c.z, c.speed);
     this.packed = null;
   }
 
   private replay(time: number, c: WakeControls): void {
-    this.track.reset();
+    this.trackState.reset();
     const steps = Math.round(REPLAY_SECONDS / REPLAY_STEP);
     for (let i = steps; i > 0; i--) {
       const age = i * REPLAY_STEP;
       const [x, z] = replayedPosition(c, age);
-      this.track.record(time - age, x, z, c.speed);
+      this.trackState.record(time - age, x, z, c.speed);
     }
     this.replayed = { ...c, time };
   }
@@ -132,7 +143,7 @@ export class BoatWake {
   uniforms(time: number, settings: WakeSettings): WakeUniformData {
     const p = this.packed;
     if (p && p.time === time && p.settings.enabled === settings.enabled && p.settings.strength === settings.strength) return p.data;
-    const data = packWakeUniforms(this.track.points(), time, this.params(settings), WAKE_HULL.beam);
+    const data = packWakeUniforms(this.trackState.points(), time, this.params(settings), WAKE_HULL.beam);
     this.packed = { time, settings: { ...settings }, data };
     return data;
   }

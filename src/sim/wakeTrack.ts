@@ -222,14 +222,14 @@ function isInstant(time: number, interval: number): boolean {
 
 /**
  * Share-link text for a track: positions to the centimetre, speeds to the cm/s, the head's
- * time to the millisecond, samples' times implied by the interval. "i;t0;x,z,s;x,z,s;...|hx,hz,hs,ht".
+ * time exactly (it is the link's `t`, so the reopened view continues the same track), samples' times implied by the interval. "i;t0;x,z,s;x,z,s;...|hx,hz,hs,ht".
  */
 export function serializeTrack(state: TrackState): string {
   const r2 = (v: number) => String(Math.round(v * 100) / 100);
   const t0 = state.samples.length > 0 ? Math.round(state.samples[0].time / state.interval) : 0;
   const samples = state.samples.map((s) => `${r2(s.x)},${r2(s.z)},${r2(s.speed)}`).join(';');
   const h = state.head;
-  const head = h ? `${r2(h.x)},${r2(h.z)},${r2(h.speed)},${Math.round(h.time * 1000) / 1000}` : '';
+  const head = h ? `${r2(h.x)},${r2(h.z)},${r2(h.speed)},${String(h.time)}` : '';
   return `${state.interval};${t0};${samples}|${head}`;
 }
 

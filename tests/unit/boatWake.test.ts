@@ -97,3 +97,48 @@ describe('the boat wake as the app keeps it', () => {
     expect(Math.max(...naive.map((v, i) => Math.abs(v / nl - expected[i] / e)))).toBeGreaterThan(1e-3);
   });
 });
+
+describe('the wake in a share link', () => {
+  it('a link made while sailing restores the very track (to the centimetre): the reopened view does not replay it', async () => {
+    const { parseSettings, formatUrlState } = await import('../../src/app/urlState');
+    const { defaultParams } = await import('../../src/sim/params');
+    const live = new BoatWake();
+    // Sailing and steering: a track no replay of the present course would make.
+    let x = 0;
+    let z = 0;
+    for (let i = 0; i <= 40 * 60; i++) {
+      const t = 100 + i / 60;
+      const heading = i < 20 * 60 ? 0 : 60 * DEG;
+      live.record(t, { x, z, heading, speed: 4, turnRate: 0 });
+      const [fx, fz] = forwardOf(heading);
+      x += (fx * 4) / 60;
+      z += (fz * 4) / 60;
+    }
+    const time = 100 + 40;
+    const params = { ...defaultParams(), wake: true };
+    const link = formatUrlState({ params, time, camera: { position: [0, 10, 10], target: [0, 0, 0] }, language: 'en', sky: null, boat: null, embed: false, wakeTrack: live.track.serialize() });
+    const state = parseSettings(new URLSearchParams(link));
+    expect(state.notices).toEqual([]);
+    const head = live.track.fine.latest()!;
+    const restored = new BoatWake();
+    restored.restore(state.wakeTrack!);
+    restored.record(time, { x: head.x, z: head.z, heading: 60 * DEG, speed: 4, turnRate: 0 });
+    const a = live.uniforms(time, ON).track;
+    const b = restored.uniforms(time, ON).track;
+    let worst = 0;
+    for (let i = 0; i < a.length; i++) worst = Math.max(worst, Math.abs(a[i] - b[i]));
+    expect(worst).toBeLessThan(0.006);
+    // Control: without the track the link replays the present course, a straight line, far from the bend.
+    const replayed = new BoatWake();
+    replayed.record(time, { x: head.x, z: head.z, heading: 60 * DEG, speed: 4, turnRate: 0 });
+    const c = replayed.uniforms(time, ON).track;
+    let off = 0;
+    for (let i = 0; i < a.length; i++) off = Math.max(off, Math.abs(a[i] - c[i]));
+    expect(off).toBeGreaterThan(10);
+    // A link with the wake off carries no track; a mangled one gives a notice and no track.
+    expect(formatUrlState({ params: defaultParams(), time, camera: { position: [0, 10, 10], target: [0, 0, 0] }, language: 'en', sky: null, boat: null, embed: false, wakeTrack: live.track.serialize() })).not.toContain('wakeTrack');
+    const bad = parseSettings(new URLSearchParams('wakeTrack=0.5;3;1,2,3|'));
+    expect(bad.wakeTrack).toBeNull();
+    expect(bad.notices.map((n) => n.id)).toEqual(['wakeTrackInvalid']);
+  });
+});
