@@ -221,11 +221,13 @@ function isInstant(time: number, interval: number): boolean {
 }
 
 /**
- * Share-link text for a track: positions to the centimetre, speeds to the cm/s, the head's
- * time exactly (it is the link's `t`, so the reopened view continues the same track), samples' times implied by the interval. "i;t0;x,z,s;x,z,s;...|hx,hz,hs,ht".
+ * Share-link text for a track: every number written to read back bit for bit (a reopened link
+ * draws the very same wake, pixel for pixel; rounding positions to the centimetre moved
+ * 0.25 % of a 320×180 picture's pixels by up to 21 levels), samples' times implied by the
+ * interval. "i;t0;x,z,s;x,z,s;...|hx,hz,hs,ht".
  */
 export function serializeTrack(state: TrackState): string {
-  const r2 = (v: number) => String(Math.round(v * 100) / 100);
+  const r2 = (v: number) => String(v);
   const t0 = state.samples.length > 0 ? Math.round(state.samples[0].time / state.interval) : 0;
   const samples = state.samples.map((s) => `${r2(s.x)},${r2(s.z)},${r2(s.speed)}`).join(';');
   const h = state.head;

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
-import { openOcean } from './harness';
+import { canvasPng, openOcean } from './harness';
+import { describeDifference, diffPngs, measureDifference, withinTolerance } from './imageCompare';
 import { useHarness } from './useHarness';
 import { PARITY_LIMITS } from './parity';
 import { seededRandom } from '../../src/sim/integerHash';
@@ -123,5 +124,35 @@ describe('the Kelvin wake: CPU twin vs the drawn mesh', () => {
       expect(frameLate.height).toBeGreaterThan(height);
     }
     await page.close();
+  });
+
+  it('a share link made while sailing and steering reopens on the same wake, pixel for pixel; without its track it shows the replay instead (control)', async () => {
+    const { page } = await openOcean(harness, 'preset=wake-turn', 320, 180);
+    const url = await page.evaluate(async () => {
+      const o = window.oceano;
+      const wait = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
+      o.play();
+      await wait(1500);
+      // Steer the other way: the track bends back, which no replay of the present course makes.
+      o.setParams({ boatTurnRate: -12 });
+      await wait(2500);
+      o.pause();
+      o.renderFrame();
+      return o.shareUrl();
+    });
+    expect(url).toMatch(/[?&]wakeTrack=/);
+    const original = await canvasPng(page);
+    await page.close();
+    const query = url.slice(url.indexOf('?') + 1);
+    const reopened = await openOcean(harness, query, 320, 180);
+    expect(await reopened.page.evaluate(() => window.oceano.notices())).toEqual([]);
+    const same = diffPngs(original, await canvasPng(reopened.page), 0).differentPixels;
+    await reopened.page.close();
+    const replay = await openOcean(harness, query.replace(/&?wakeTrack=[^&]*/, ''), 320, 180);
+    const replayed = measureDifference(original, await canvasPng(replay.page));
+    await replay.page.close();
+    console.log(`[oceano] wake share link: reopened, ${same} pixels differ; without its track ${describeDifference(replayed)}`);
+    expect(same).toBe(0);
+    expect(withinTolerance(replayed), describeDifference(replayed)).toBe(false);
   });
 });
