@@ -27,6 +27,10 @@ varying vec3 vWorldPosition;
 varying vec3 vNormal;
 varying float vBand;
 varying vec2 vGridXZ;
+varying vec2 vWakeSlope;
+varying float vWakeFoam;
+// The boat's wake is on (its uniforms live in the vertex shader's oceano_wake chunk).
+uniform bool uWakeOn;
 uniform bool uFlatNormals;
 // waves=fft teaching view: slope normals per pixel on the left half of the screen, the
 // fabricated normals per vertex (interpolated, from ocean.vert) on the right.
@@ -87,7 +91,11 @@ void main() {
   // grid point, not interpolated between vertices: the mapping from grid to displaced
   // surface is smooth, so interpolating the grid point is exact to first order.
   bool fabricatedHalf = uNormalsCompare && (viewMatrix * vec4(vWorldPosition, 1.0)).x > 0.0;
-  if (!uFlatNormals && !fabricatedHalf) n = waveNormal(vGridXZ);
+  if (!uFlatNormals && !fabricatedHalf) {
+    n = waveNormal(vGridXZ);
+    // The wake's slope is interpolated from the vertices (its waves are 8 m and longer).
+    if (uWakeOn) n = normalize(vec3(n.x - vWakeSlope.x * n.y, n.y, n.z - vWakeSlope.y * n.y));
+  }
 #endif
   if (uShowNormals) {
     gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
@@ -118,11 +126,16 @@ void main() {
   float specular = pow(max(dot(n, halfway), 0.0), 900.0) * 40.0;
   color += uSunColor * specular * reflectance * sunVisible;
 
+  float foam = 0.0;
 #ifdef WAVE_FOAM
-  float foam = waveFoam(vGridXZ);
-  float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
-  color = mix(color, FOAM_COLOR * foamLight, foam);
+  foam = waveFoam(vGridXZ);
 #endif
+  // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
+  if (uWakeOn) foam = max(foam, vWakeFoam);
+  if (foam > 0.0) {
+    float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
+    color = mix(color, FOAM_COLOR * foamLight, foam);
+  }
 
   vec3 horizon = skyColor(normalize(vec3(-v.x, 0.0, -v.z)));
   float haze = 1.0 - exp(-distance * uHazeDensity);

@@ -3,6 +3,8 @@
 // neighbour's edge (the GLSL twin of src/sim/edgeSnap.ts), then displaced by the active wave
 // model's chunk (waveDisplacement / waveNormal, see shaders/waves/).
 #include <oceano_waves>
+// The boat's Kelvin wake, added to whichever model is active (src/sim/boatWake.ts).
+#include <oceano_wake>
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
@@ -20,6 +22,9 @@ varying vec3 vNormal;
 varying float vBand;
 // The undisplaced grid point, for models whose normals and foam are evaluated per pixel.
 varying vec2 vGridXZ;
+// The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
+varying vec2 vWakeSlope;
+varying float vWakeFoam;
 #ifdef WAVE_FABRICATED_NORMAL
 uniform bool uNormalsCompare;
 #endif
@@ -55,6 +60,17 @@ void main() {
     vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
   }
   vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
+  // The wake at the displaced point's own (x, z), so the height above a world point is the
+  // model's plus the wake's there, as the CPU twin adds them (addWake). Off, nothing changes.
+  vWakeSlope = vec2(0.0);
+  vWakeFoam = 0.0;
+  if (uWakeCount >= 2) {
+    vec3 wake = wakeHeightAndGradient(world.xz);
+    world.y += wake.x;
+    if (!uFlatNormals) vNormal = wakeTiltNormal(vNormal, wake.yz);
+    vWakeSlope = wake.yz;
+    vWakeFoam = wakeFoam(world.xz);
+  }
   vWorldPosition = world;
   vBand = aChunk.z;
   gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);

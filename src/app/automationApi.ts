@@ -27,6 +27,7 @@ export interface OceanoApi {
   setParams(partial: Partial<OceanParams>): OceanParams;
   setCamera(pose: CameraPose): void;
   getCamera(): CameraPose;
+  /** The surface as drawn at the current time: the active waves plus the boat's wake where it is on. */
   sampleSurface(x: number, z: number): SurfaceSample;
   /** The same surface evaluated by the GPU shader and read back; `t` defaults to the current time. */
   probeGpu(points: [number, number][], t?: number): Promise<ProbeSample[]>;

@@ -4,6 +4,10 @@ import type { OceanParams } from '../sim/params';
 import type { LiveWaveModel } from '../sim/waveModels';
 import type { BoatView } from '../render/boatView';
 import type { BoatModel } from '../render/boatModel';
+import type { OceanView } from '../render/oceanView';
+import type { SurfaceSample } from '../sim/waveModel';
+import { addWake, BoatWake, wakeHeightBound } from '../sim/boatWake';
+import type { WakeTrack } from '../sim/wakeTrack';
 
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
 const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
@@ -33,14 +37,17 @@ export class BoatController {
   private state?: BoatMotionState;
   private hull: HullSize = NOMINAL_HULL;
   private modelState: BoatInfo['model'] = 'loading';
+  /** The wake the boat leaves, recorded every frame (src/sim/boatWake.ts). */
+  private readonly wake = new BoatWake();
 
   /** `opened`: a share link's boat state, restored at its time (the link's `t`); without both the boat starts afresh. */
   constructor(
     private readonly view: BoatView,
     private readonly carryCamera: (dx: number, dz: number) => void,
-    opened: { boatState: BoatSnapshot | null; time: number | null } = { boatState: null, time: null },
+    opened: { boatState: BoatSnapshot | null; wakeTrack?: WakeTrack | null; time: number | null } = { boatState: null, time: null },
   ) {
     if (opened.boatState && opened.time !== null) this.motion.restore(opened.boatState, opened.time);
+    if (opened.wakeTrack && opened.time !== null) this.wake.restore(opened.wakeTrack);
   }
 
   setModel(model: BoatModel | null): void {
@@ -50,8 +57,12 @@ export class BoatController {
     this.view.setModel(model.object);
   }
 
-  /** Floats the boat at `time`; with the camera following, carries the camera along. */
-  update(time: number, params: OceanParams, waves: LiveWaveModel): void {
+  /**
+   * Floats the boat at `time` on the waves alone (not on its own wake); with the camera
+   * following, carries the camera along. Then records the boat into its wake and hands the
+   * wake for this frame to `view`.
+   */
+  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>): void {
     const previous = this.state?.pose;
     this.state = this.motion.update(
       time,
@@ -62,6 +73,15 @@ export class BoatController {
     const pose = this.state.pose;
     this.view.setPose(pose);
     if (params.boatFollow && previous) this.carryCamera(pose.x - previous.x, pose.z - previous.z);
+    this.wake.record(time, { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, turnRate: params.boatTurnRate * DEG });
+    const data = this.wake.uniforms(time, { enabled: params.wake, strength: params.wakeStrength });
+    view.setWake(data, wakeHeightBound(data), { visible: params.wake && params.wakeGuide, x: pose.x, y: 0.05, z: pose.z, heading: pose.heading });
+  }
+
+  /** The waves' sample at world (x, z) with the boat's wake added there, as drawn: what a second boat would feel. */
+  withWake(sample: SurfaceSample, x: number, z: number, time: number, params: OceanParams): SurfaceSample {
+    if (!params.wake) return sample;
+    return addWake(sample, this.wake.at(x, z, time, { enabled: params.wake, strength: params.wakeStrength }));
   }
 
   /** Following starts by looking at the boat from where the camera stands relative to its target. */
@@ -69,6 +89,11 @@ export class BoatController {
     if (!this.state) return;
     const { x, z } = this.state.pose;
     this.carryCamera(x - target.x, z - target.z);
+  }
+
+  /** The wake's track for a share link made at `time`; null if it was last recorded at another time. */
+  wakeText(time: number): string | null {
+    return this.wake.track.fine.latest()?.time === time ? this.wake.track.serialize() : null;
   }
 
   /** The motion at `time` for a share link; null if the boat was last floated at another time. */

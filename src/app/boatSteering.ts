@@ -73,7 +73,7 @@ export class BoatSteering {
     return [...keys].some((key) => this.held.has(key)) ? 1 : 0;
   }
 
-  /** Applies the held keys over `seconds` of the frame loop's time. */
+  /** Applies the held keys, and the boatTurnRate parameter, over `seconds` of the frame loop's time. */
   apply(seconds: number): void {
     if (seconds <= 0) return;
     const turn = this.holding(STARBOARD) - this.holding(PORT);
@@ -81,13 +81,14 @@ export class BoatSteering {
     for (const key of this.released) this.held.delete(key);
     this.released.clear();
     this.unapplied.clear();
-    if (turn === 0 && throttle === 0) return;
-    const { boatHeading, boatSpeed } = this.params();
+    const { boatHeading, boatSpeed, boatTurnRate } = this.params();
+    if (turn === 0 && throttle === 0 && boatTurnRate === 0) return;
     // Start from the stored values whenever something else (GUI, API, URL) changed them.
     const stored = this.exact?.stored;
     if (!this.exact || stored?.speed !== boatSpeed || stored.heading !== boatHeading) this.exact = { speed: boatSpeed, heading: boatHeading, stored: { speed: boatSpeed, heading: boatHeading } };
     const exact = this.exact;
-    exact.heading = (((exact.heading + turn * TURN_RATE * seconds) % 360) + 360) % 360;
+    // The boatTurnRate parameter is a rudder held over: it turns the boat as a key does.
+    exact.heading = (((exact.heading + (turn * TURN_RATE + boatTurnRate) * seconds) % 360) + 360) % 360;
     const { min, max } = paramDefs.boatSpeed;
     exact.speed = Math.min(max, Math.max(min, exact.speed + throttle * ACCELERATION * seconds));
     exact.stored = { speed: onStep(exact.speed, paramDefs.boatSpeed.step), heading: onStep(exact.heading, paramDefs.boatHeading.step) % 360 };

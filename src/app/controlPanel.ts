@@ -1,6 +1,8 @@
 import GUI, { type Controller } from 'lil-gui';
 import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../sim/params';
 import type { Translator, UiTextId } from './i18n';
+import { froudeNumber } from '../sim/kelvinWake';
+import { WAKE_HULL } from '../sim/boatWake';
 
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
@@ -11,7 +13,7 @@ const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },
   { title: 'folderPhysics', keys: ['physics'] },
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
-  { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow'] },
+  { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide'] },
   { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
   { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'freezeCulling', 'lodBruteForce'] },
   { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'normalsCompare', 'view', 'fresnelPlot'] },
@@ -47,15 +49,21 @@ export class ControlPanel {
   private readonly controllers: Controller[] = [];
   private readonly counts = { chunks: '', triangles: '', drawCalls: '', perBand: '' };
   private readonly countControllers: Controller[] = [];
+  /** The boat folder's read-only Froude number of the hull at the set speed. */
+  private readonly froude = { value: '' };
+  private readonly froudeController: Controller;
 
   constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
     // Its styles come from the page's stylesheet (main.ts): no <style> element with a data: font.
     this.gui = new GUI({ container, title: tr.ui('panelTitle'), injectStyles: false });
     this.model = { ...params, playing };
+    let boatFolder: GUI | null = null;
     for (const folder of FOLDERS) {
       const group = this.gui.addFolder(tr.ui(folder.title));
       for (const key of folder.keys) this.controllers.push(this.addControl(group, key, hooks));
+      if (folder.title === 'folderBoat') boatFolder = group;
     }
+    this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(tr.ui('froudeNumber')).disable();
     const live = this.gui.addFolder(tr.ui('folderLiveCounts'));
     const labels: [keyof typeof this.counts, UiTextId][] = [
       ['chunks', 'countChunks'],
@@ -96,6 +104,9 @@ export class ControlPanel {
   sync(params: OceanParams, playing: boolean): void {
     Object.assign(this.model, params, { playing });
     for (const controller of this.controllers) controller.updateDisplay();
+    // Fr = U/√(gL) of the hull the wake is made for: what sets the wake's amplitude and look.
+    this.froude.value = `${froudeNumber(params.boatSpeed, WAKE_HULL.length).toFixed(2)} (L = ${WAKE_HULL.length} m)`;
+    this.froudeController.updateDisplay();
   }
 
   showCounts(counts: LiveCounts): void {

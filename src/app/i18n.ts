@@ -58,6 +58,7 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     boatNotGltf: (v) => `The boat model "${v.url}" is not a valid glTF model: neither a binary .glb nor a JSON .gltf file that three.js can read. The ocean runs without the boat.`,
     boatNoGeometry: (v) => `The boat model "${v.url}" has no geometry to float. The ocean runs without the boat.`,
     boatStateInvalid: (v) => `"boatState=${v.text}" is not ten finite numbers within the boat's area; the boat starts afresh.`,
+    wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" is not a recorded track; the wake is replayed from the boat's present course.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -89,6 +90,7 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     boatNotGltf: (v) => `El modelo del barco "${v.url}" no es un glTF válido: ni un .glb binario ni un .gltf JSON que three.js pueda leer. El océano sigue sin él.`,
     boatNoGeometry: (v) => `El modelo del barco "${v.url}" no tiene geometría que pueda flotar. El océano sigue sin él.`,
     boatStateInvalid: (v) => `"boatState=${v.text}" no son diez números finitos dentro de la zona del barco; el barco empieza de nuevo.`,
+    wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" no es una derrota grabada; la estela se reconstruye con el rumbo actual del barco.`,
   },
 };
 
@@ -121,6 +123,7 @@ export type UiTextId =
   | 'loading_sky'
   | 'loading_firstFrame'
   | 'loading_boat'
+  | 'froudeNumber'
   | 'play'
   | 'pause'
   | 'playing'
@@ -161,6 +164,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     loading_sky: 'sky',
     loading_firstFrame: 'sea and first frame',
     loading_boat: 'boat',
+    froudeNumber: 'Froude number U/√(gL)',
     play: 'Play',
     pause: 'Pause',
     playing: 'Play',
@@ -200,6 +204,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     loading_sky: 'cielo',
     loading_firstFrame: 'mar y primer fotograma',
     loading_boat: 'barco',
+    froudeNumber: 'Número de Froude U/√(gL)',
     play: 'Reproducir',
     pause: 'Pausar',
     playing: 'Reproducir',
@@ -252,6 +257,10 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   boatHeading: 'Rumbo del barco',
   boatResponse: 'Tiempo de respuesta de flotación',
   boatFollow: 'La cámara sigue al barco',
+  boatTurnRate: 'Velocidad de giro del barco',
+  wake: 'Estela de Kelvin',
+  wakeStrength: 'Intensidad de la estela',
+  wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
   lodDistance: 'Distancia de LOD L',
   lodBands: 'Bandas de LOD',
   lodColors: 'Colorear parcelas por banda',

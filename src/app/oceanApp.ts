@@ -132,7 +132,7 @@ export class OceanApp {
   renderFrame(sync = this.frameStats.loopShouldSync()): void {
     if (this.context?.lost) return;
     const start = performance.now();
-    this.boatMotion.update(this.clock.time, this.params, this.view.waves);
+    this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view);
     const boatEnd = performance.now();
     this.view.update(this.clock.time);
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
@@ -172,9 +172,9 @@ export class OceanApp {
   boat = (): BoatInfo => this.boatMotion.info();
   /** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion. */
   shareUrl = (): string =>
-    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time) });
+    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time) });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
-  sampleSurface = (x: number, z: number): SurfaceSample => (checkSurfacePoint(x, z), this.view.waves.sample(x, z, this.clock.time));
+  sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (checkSurfacePoint(x, z), this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params));
   probeGpu = (points: unknown, time?: number): ProbeSample[] => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   stats = (): OceanStats => this.frameStats.summary(this.view.stats());
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */

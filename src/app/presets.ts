@@ -136,6 +136,21 @@ export const PRESETS = {
     // Shifted 35 m to the right: the boat, riding the first model, floats inside the seed's strip.
     camera: { position: [35, 9, 40], target: [35, 0, -60] },
   },
+  /**
+   * The Cuña de Kelvin: a boat at 4 m/s (Fr = 0.45 for its 8 m hull) on a calm sea, seen from
+   * 60 m up. The wake's sources lie along the boat's track (src/sim/kelvinWake.ts); its cusps
+   * fall on the ±19.47° lines that `wakeGuide=1` draws over it. The foam marks the hull's
+   * trail and the bow wave.
+   */
+  'kelvin-wake': {
+    params: { swellAmplitude: 0, rippleStrength: 0.05, wake: true, boatSpeed: 4, boatHeading: 270, sunElevation: 25, sunAzimuth: 300 },
+    camera: { position: [60, 60, 60], target: [60, 0, -10] },
+  },
+  /** The same boat holding a 3 °/s turn to starboard (a 76 m radius): the wake follows the curved track, not a straight wedge. */
+  'wake-turn': {
+    params: { swellAmplitude: 0, rippleStrength: 0.05, wake: true, boatSpeed: 4, boatHeading: 270, boatTurnRate: 3, sunElevation: 25, sunAzimuth: 300 },
+    camera: { position: [50, 110, 70], target: [50, 0, -50] },
+  },
 } satisfies Record<string, Preset>;
 
 export type PresetName = keyof typeof PRESETS;

@@ -12,6 +12,8 @@ export interface SharedView {
   camera: CameraPose;
   /** The boat's motion at `time`, so the link rebuilds it exactly (null: it starts afresh). */
   boatState: BoatSnapshot | null;
+  /** The wake's track then (WakeTrack.serialize), so the link shows the same wake. */
+  wakeTrack?: string | null;
 }
 
 /** What it carries of the page as it was opened: its address, language, assets and embedding. */

@@ -5,9 +5,10 @@ import { languageFromTag, type Language } from './i18n';
 import { isValidTime } from '../sim/simulationTime';
 import { BOAT_EXTENT, type BoatSnapshot } from '../sim/boatMotion';
 import { findPreset, presetNames } from './presets';
+import { WakeTrack } from '../sim/wakeTrack';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
-export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'boat', 'boatState'] as const;
+export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'boat', 'boatState', 'wakeTrack'] as const;
 
 /** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
@@ -27,6 +28,8 @@ export interface UrlState {
   boat: string | null;
   /** The boat's motion at `time` (a share link's), to rebuild it exactly; null: start afresh. */
   boatState: BoatSnapshot | null;
+  /** The wake's recorded track (WakeTrack.serialize) at `time`, so a link shows the wake it was made with; null: replayed. */
+  wakeTrack: WakeTrack | null;
 }
 
 /**
@@ -49,7 +52,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, camera: null, cullingCamera: null, language: null, embed: false, notices };
+  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -78,6 +81,12 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       const snapshot = parseBoatState(text);
       if (snapshot) state.boatState = snapshot;
       else notices.push(message('boatStateInvalid', { text }));
+    } else if (key === 'wakeTrack') {
+      try {
+        state.wakeTrack = WakeTrack.parse(text);
+      } catch {
+        notices.push(message('wakeTrackInvalid', { text: text.slice(0, 80) }));
+      }
     } else if (key === 'cam') {
       const camera = parseCameraText(text);
       if (camera) state.camera = camera;
@@ -110,6 +119,8 @@ export interface ShareableState {
   boat: string | null;
   embed: boolean;
   boatState?: BoatSnapshot | null;
+  /** WakeTrack.serialize() of the wake on screen; left out when the wake is off. */
+  wakeTrack?: string | null;
 }
 
 /**
@@ -127,6 +138,7 @@ export function formatUrlState(state: ShareableState): string {
   query.set('cam', formatCameraText(state.camera));
   query.set('lang', state.language);
   if (state.boatState) query.set('boatState', formatBoatState(state.boatState));
+  if (state.wakeTrack && state.params.wake) query.set('wakeTrack', state.wakeTrack);
   if (state.sky !== null) query.set('sky', state.sky);
   if (state.boat !== null) query.set('boat', state.boat);
   if (state.embed) query.set('embed', '1');

@@ -8,12 +8,14 @@ import { WaveBinding } from './waveModels/waveBinding';
 import { createWaveModelView } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
+import type { WakeUniforms } from './wakeUniforms';
 
 /** What every ocean material of one view shares: Fresnel tables, sky, water volume, sun colour. */
 export interface OceanMaterialInputs {
   fresnelTables: { fromAbove: Texture; fromBelow: Texture };
   sky: CubeTexture;
-  shared: WaterVolumeUniforms & Record<'uSunColor', IUniform>;
+  /** Uniforms every ocean material shares: the water volume, the boat's wake (switched on only for the first model's material), the sun's colour. */
+  shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>;
 }
 
 /**

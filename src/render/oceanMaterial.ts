@@ -6,6 +6,7 @@ import { FAR_FADE_END, FAR_FADE_START } from '../sim/farRings';
 import { registerShaderChunks } from './shaderChunks';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
+import type { WakeUniforms } from './wakeUniforms';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
@@ -23,7 +24,7 @@ export class OceanMaterial extends ShaderMaterial {
     waves: WaveBinding,
     fresnelTables: { fromAbove: Texture; fromBelow: Texture },
     sky: CubeTexture,
-    shared: WaterVolumeUniforms & Record<'uSunColor', IUniform>,
+    shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>,
   ) {
     registerShaderChunks();
     super({
@@ -48,6 +49,7 @@ export class OceanMaterial extends ShaderMaterial {
         uOceanCenter: { value: new Vector2() },
         uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
         uLodColors: { value: false },
+        uWakeOn: { value: false },
       },
     });
     waves.attach(this);
@@ -93,6 +95,11 @@ export class OceanMaterial extends ShaderMaterial {
   /** The chunk grid's centre this frame, where the far rings' fade is measured from. */
   setOceanCenter(x: number, z: number): void {
     (this.uniforms.uOceanCenter.value as Vector2).set(x, z);
+  }
+
+  /** Whether the fragment shader adds the wake's slope and foam (the vertex shader reads uWakeCount). */
+  setWakeOn(on: boolean): void {
+    this.uniforms.uWakeOn.value = on;
   }
 
   /** The LOD debugger's view: each chunk tinted by its band. */

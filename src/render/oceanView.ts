@@ -24,6 +24,9 @@ import { createWaveModelView } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
 import { SunSky } from './sunSky';
 import { CompareSide, type OceanMaterialInputs } from './compareSide';
+import { applyWakeUniforms, createWakeUniforms } from './wakeUniforms';
+import { KelvinGuideView } from './kelvinGuideView';
+import type { WakeUniformData } from '../sim/wakeUniformData';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -72,6 +75,11 @@ export class OceanView {
   private readonly fresnelFromBelowTexture: DataTexture;
   private readonly waterVolume: WaterVolumeUniforms = createWaterVolumeUniforms();
   private readonly caustics: CausticsUniforms = createCausticsUniforms();
+  /** The boat's wake (shaders/wake.glsl), shared by the ocean and the probe; filled by setWake. */
+  private readonly wake = createWakeUniforms();
+  /** How far the wake can raise or lower the surface this frame (wakeHeightBound), metres. */
+  private wakeBound = 0;
+  private readonly kelvinGuide: KelvinGuideView;
   private readonly light: Record<'uRefractedSun' | 'uSunColor', IUniform> = {
     uRefractedSun: { value: new Vector3() },
     uSunColor: { value: new Color(...SUN_LIGHT_COLOR) },
@@ -147,7 +155,7 @@ export class OceanView {
     this.materialInputs = {
       fresnelTables: { fromAbove: this.fresnelTexture, fromBelow: this.fresnelFromBelowTexture },
       sky,
-      shared: { ...this.waterVolume, uSunColor: this.light.uSunColor },
+      shared: { ...this.waterVolume, ...this.wake, uSunColor: this.light.uSunColor },
     };
     this.material = new OceanMaterial(this.waveBinding, this.materialInputs.fresnelTables, sky, this.materialInputs.shared);
     this.ocean = new OceanChunks(this.material);
@@ -157,6 +165,7 @@ export class OceanView {
     this.seaBed = new SeaBed(this.waveBinding, { ...this.waterVolume, ...this.caustics, ...this.light });
     this.scene.add(this.seaBed.mesh);
     this.lights = new SceneLights(this.scene);
+    this.kelvinGuide = new KelvinGuideView(this.scene);
     this.params = params;
     this.applyParams(params);
   }
@@ -236,6 +245,22 @@ export class OceanView {
     return made;
   }
 
+  /**
+   * The boat's wake for the coming frame: its uniforms (packed by src/sim/boatWake.ts), the
+   * bound that grows the culling boxes, and the ±19.47° teaching guide at the boat.
+   */
+  setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
+    applyWakeUniforms(this.wake, data);
+    this.material.setWakeOn(data.count >= 2);
+    this.wakeBound = bound;
+    this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
+  }
+
+  /** The culling bounds: the model's, grown by the wake's. */
+  private cullingBounds(): { vertical: number; horizontal: number } {
+    return this.wakeBound === 0 ? this.bounds : { vertical: this.bounds.vertical + this.wakeBound, horizontal: this.bounds.horizontal };
+  }
+
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
   lightWithCaustics(model: Object3D): void {
     lightWithCaustics(model, this.waveBinding, this.caustics);
@@ -307,14 +332,14 @@ export class OceanView {
     this.where = where;
     const strips = this.splitStrips();
     if (!strips) {
-      this.ocean.update(this.camera, this.lod, this.bounds);
+      this.ocean.update(this.camera, this.lod, this.cullingBounds());
     } else {
       // Each model culls its chunks to its own strip's frustum, so its vertex work too is its
       // strip's share. Bands and seams depend on distance alone (ChunkSelector), so every
       // chunk that can reach the strip is the same chunk the model alone would draw there.
       const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
       const chunks = [this.ocean, ...this.sides.map((side) => side.chunks)];
-      const bounds = [this.bounds, ...this.sides.map((side) => side.bounds())];
+      const bounds = [this.cullingBounds(), ...this.sides.map((side) => side.bounds())];
       strips.forEach((strip, i) => {
         if (strip.x1 > strip.x0) chunks[i].update(this.stripCamera(strip, width), this.lod, bounds[i]);
       });
@@ -476,7 +501,7 @@ export class OceanView {
 
   /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
   probeSurface(points: readonly (readonly [number, number])[], time: number): ProbeSample[] {
-    this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding);
+    this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding, this.wake);
     this.waveView.update(time);
     try {
       return this.probe.probe(points);
@@ -496,7 +521,7 @@ export class OceanView {
       const start = performance.now();
       for (let k = 0; k < 20; k++) {
         this.ocean.forgetSelection();
-        this.ocean.update(this.camera, this.lod, this.bounds);
+        this.ocean.update(this.camera, this.lod, this.cullingBounds());
       }
       perBatch.push((performance.now() - start) / 20);
     }
@@ -520,6 +545,7 @@ export class OceanView {
     this.heightmapView?.dispose();
     this.post?.dispose();
     this.seaBed.dispose();
+    this.kelvinGuide.dispose();
     this.waveView.dispose();
     this.fresnelTexture.dispose();
     this.fresnelFromBelowTexture.dispose();

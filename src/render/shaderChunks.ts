@@ -3,6 +3,7 @@ import tiledHeightmap from '../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../shaders/waterVolume.glsl?raw';
 import caustics from '../../shaders/caustics.glsl?raw';
 import waterline from '../../shaders/waterline.glsl?raw';
+import wake from '../../shaders/wake.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 
 /**
@@ -19,6 +20,8 @@ const chunks: Record<string, string> = {
   oceano_caustics: caustics,
   // Needs <oceano_waves> included before it: the underwater passes' waterline test.
   oceano_waterline: waterline,
+  // The boat's Kelvin wake and its foam, added to whichever wave model is active; uniforms in src/render/wakeUniforms.ts.
+  oceano_wake: wake,
 };
 
 /** ShaderChunk is typed with three's own chunk names only; ours are added beside them. */

@@ -16,10 +16,11 @@ import vertexShader from '../../shaders/probe.vert?raw';
 import fragmentShader from '../../shaders/probe.frag?raw';
 import type { SurfaceSample } from '../sim/waveModel';
 import type { WaveBinding } from './waveModels/waveBinding';
+import type { WakeUniforms } from './wakeUniforms';
 
 const TARGET_WIDTH = 256;
 
-/** What the GPU computed at one grid point: the chunk's waveDisplacement and waveNormal. */
+/** What the GPU computed at one grid point: the chunk's waveDisplacement and waveNormal (with the wake where it is on). */
 export interface ProbeSample extends SurfaceSample {
   /** waveDisplacement(gridXZ): where the grid point goes, metres. `height` is its dy. */
   displacement: [number, number, number];
@@ -37,12 +38,13 @@ export class SurfaceProbe {
   constructor(
     private readonly renderer: WebGLRenderer,
     private readonly waves: WaveBinding,
+    wake: WakeUniforms,
   ) {
     this.material = waves.attach(
       new ShaderMaterial({
         vertexShader,
         fragmentShader,
-        uniforms: { uTargetSize: { value: new Vector2() } },
+        uniforms: { uTargetSize: { value: new Vector2() }, ...wake },
         depthTest: false,
         depthWrite: false,
       }),

@@ -32,6 +32,7 @@ export const MESSAGE_IDS = [
   'boatNotGltf',
   'boatNoGeometry',
   'boatStateInvalid',
+  'wakeTrackInvalid',
 ] as const;
 
 export type MessageId = (typeof MESSAGE_IDS)[number];

@@ -75,6 +75,15 @@ export const paramDefs = {
   boatHeading: { kind: 'number', default: 290, min: 0, max: 360, step: 1, unit: '°', label: 'Boat heading' },
   boatResponse: { kind: 'number', default: 0.25, min: 0.02, max: 2, step: 0.01, unit: 's', label: 'Float response time' },
   boatFollow: { kind: 'boolean', default: false, label: 'Camera follows boat' },
+  // A held rudder: the heading turns by this much every second of play (positive to starboard),
+  // as the A/D keys do; the wake-turn preset uses it.
+  boatTurnRate: { kind: 'number', default: 0, min: -20, max: 20, step: 0.5, unit: '°/s', label: 'Boat turn rate' },
+  // The boat's Kelvin wake (src/sim/boatWake.ts, shaders/wake.glsl), added to whichever wave
+  // model is active. Off by default, so the default picture stays what it was.
+  wake: { kind: 'boolean', default: false, label: 'Kelvin wake' },
+  wakeStrength: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'Wake strength' },
+  // Teaching overlay: the ±19.47° lines from theory, drawn behind the boat.
+  wakeGuide: { kind: 'boolean', default: false, label: 'Kelvin angle guide (±19.47°)' },
   // Teaching views of the seed's figures.
   shading: { kind: 'choice', default: 'water', options: ['water', 'normals'], label: 'Shading' },
   normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },

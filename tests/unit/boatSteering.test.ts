@@ -7,9 +7,9 @@ function key(type: 'keydown' | 'keyup', code: string): Event {
   return Object.assign(new Event(type, { cancelable: true }), { code });
 }
 
-function steer(codes: string[], frames: number): { stored: OceanParams[]; params: OceanParams } {
+function steer(codes: string[], frames: number, start: Partial<OceanParams> = {}): { stored: OceanParams[]; params: OceanParams } {
   const target = new EventTarget();
-  let params = defaultParams();
+  let params = { ...defaultParams(), ...start };
   const stored: OceanParams[] = [];
   const steering = new BoatSteering(
     target as unknown as HTMLElement,
@@ -39,6 +39,14 @@ describe('keyboard steering stores values on the parameters\' steps (issue 11.11
     for (const p of stored) expect(Number.isInteger(p.boatHeading)).toBe(true);
     expect(params.boatHeading).toBeGreaterThanOrEqual(334);
     expect(params.boatHeading).toBeLessThanOrEqual(336);
+  });
+
+  it('boatTurnRate turns the boat as a held key would: 6 °/s for 5 s is 30°, to starboard; none without it (control)', () => {
+    const { params } = steer([], 300, { boatTurnRate: 6 });
+    expect(params.boatHeading).toBeGreaterThanOrEqual(319);
+    expect(params.boatHeading).toBeLessThanOrEqual(321);
+    expect(steer([], 300, { boatTurnRate: -6 }).params.boatHeading).toBe(260);
+    expect(steer([], 300).stored).toEqual([]);
   });
 
   it('rounds to the step with the step\'s decimals', () => {
