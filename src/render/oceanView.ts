@@ -324,7 +324,8 @@ export class OceanView {
 
   /**
    * Draws one frame waiting for the GPU after each pass, and returns each pass's time.
-   * Above the water the frame is the single direct render, reported as 'scene'.
+   * Above the water the frame is the single direct render, reported as 'scene'; a model with
+   * GPU passes of its own (waves=fft: 'fft', 'foam') reports those first.
    */
   profileFrame(time: number): PassTiming[] {
     const gl = this.renderer.getContext();
@@ -335,13 +336,15 @@ export class OceanView {
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     };
     this.update(time);
+    // The wave model's own GPU passes (the FFTs), redone at the same time, come first.
+    const wavePasses = this.waveView.profilePasses?.(sync) ?? [];
     const { submersion } = this.where;
-    if (submersion !== 'above') return this.underwaterPost().profile(submersion === 'straddling', sync);
+    if (submersion !== 'above') return [...wavePasses, ...this.underwaterPost().profile(submersion === 'straddling', sync)];
     sync();
     const start = performance.now();
     this.renderer.render(this.scene, this.camera);
     sync();
-    return [{ name: 'scene', ms: performance.now() - start }];
+    return [...wavePasses, { name: 'scene', ms: performance.now() - start }];
   }
 
   /**

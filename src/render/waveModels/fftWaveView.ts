@@ -8,6 +8,7 @@ import { GpuFftOcean } from '../fft/gpuFft';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
 import { WorkerFieldSource } from './fftFieldsSource';
 import type { WaveModelView } from './waveModelView';
+import type { PassTiming } from '../underwaterPost';
 
 /** Foam fades as e^{−t/τ}: a whitecap lingers a few seconds after its crest has passed. */
 export const FOAM_FADE_SECONDS = 2.5;
@@ -127,6 +128,27 @@ export class FftWaveView implements WaveModelView {
       }
     }
     this.bindFoam();
+  }
+
+  /**
+   * The FFT passes of every cascade at the current time again (same spectrum, same time: same
+   * textures), then one foam step with no fade (max(old, fresh) with fresh already in old:
+   * the foam is unchanged), each group timed between two GPU syncs.
+   */
+  profilePasses(sync: () => void): PassTiming[] {
+    if (Number.isNaN(this.time)) return [];
+    sync();
+    let start = performance.now();
+    this.gpu.update(this.time);
+    sync();
+    const timings: PassTiming[] = [{ name: 'fft', ms: performance.now() - start }];
+    if (!this.foamEnabled) return timings;
+    start = performance.now();
+    this.foam.step(1, this.foamThreshold);
+    sync();
+    this.bindFoam();
+    timings.push({ name: 'foam', ms: performance.now() - start });
+    return timings;
   }
 
   dispose(): void {

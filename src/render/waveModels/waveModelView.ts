@@ -1,4 +1,5 @@
 import type { IUniform, Texture } from 'three';
+import type { PassTiming } from '../underwaterPost';
 import type { OceanParams } from '../../sim/params';
 import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
 
@@ -35,6 +36,12 @@ export interface WaveModelView {
   setParams(params: OceanParams): void;
   /** Prepares the uniforms (and any GPU passes) for a frame at `time`, seconds. */
   update(time: number): void;
+  /**
+   * For the profiler (oceano.debug.passTimings, `npm run bench`): runs this frame's GPU
+   * passes once more, giving the same textures, calling `sync` (which waits for the GPU)
+   * after each group, and returns each group's time. Absent for models with no GPU passes.
+   */
+  profilePasses?(sync: () => void): PassTiming[];
   dispose(): void;
 }
 
