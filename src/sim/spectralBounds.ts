@@ -34,6 +34,11 @@ export interface CascadeSpread {
   /** Standard deviations of the horizontal displacement D_x and D_z per unit λ, m. */
   dx: number;
   dz: number;
+  /**
+   * RMS slope √(2 Σ k²|h₀|²). To first order the Jacobian of the choppy map is
+   * J ≈ 1 − λ Σ k h̃ (∂Dx/∂x + ∂Dz/∂z with D = −iλ k̂ h), so J's spread is λ times this.
+   */
+  slope: number;
   /** Independent values over one tile and one repeat period (texels × time samples). */
   samples: number;
 }
@@ -45,6 +50,7 @@ export function cascadeSpread(tile: SpectralTile, depth: number): CascadeSpread 
   let height = 0;
   let dx = 0;
   let dz = 0;
+  let slope = 0;
   let kMax = 0;
   for (let b = 0; b < n; b++) {
     for (let a = 0; a < n; a++) {
@@ -58,11 +64,12 @@ export function cascadeSpread(tile: SpectralTile, depth: number): CascadeSpread 
       height += 2 * power;
       dx += (2 * power * kx * kx) / k2;
       dz += (2 * power * kz * kz) / k2;
+      slope += 2 * power * k2;
       kMax = Math.max(kMax, Math.sqrt(k2));
     }
   }
   const timeSamples = Math.max(1, Math.ceil((TIME_OVERSAMPLING * REPEAT_PERIOD * angularFrequency(kMax, depth)) / Math.PI));
-  return { height: Math.sqrt(height), dx: Math.sqrt(dx), dz: Math.sqrt(dz), samples: n * n * timeSamples };
+  return { height: Math.sqrt(height), dx: Math.sqrt(dx), dz: Math.sqrt(dz), slope: Math.sqrt(slope), samples: n * n * timeSamples };
 }
 
 /** How many standard deviations a Gaussian reaches, with probability ε, over `samples` values (two-sided). */
