@@ -312,7 +312,7 @@ export class OceanView {
       return this.heightmapView;
     }
     const view = this.heightmapView ?? new HeightmapView();
-    view.render(this.renderer, textures, this.camera.aspect);
+    view.render(this.renderer, textures, this.camera.aspect, this.waveView.heightmapLayout);
     return view;
   }
 

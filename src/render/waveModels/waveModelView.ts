@@ -32,6 +32,11 @@ export interface WaveModelView {
   readonly lensPeriod: number | null;
   /** Textures the "heightmap" teaching view shows, where the model has any. */
   readonly heightmapTextures?: readonly [Texture, Texture];
+  /**
+   * Where those textures keep the height and what value the view draws white (its negative
+   * black), per texture. Absent: channel 0 (r), ±1 (the seed's Perlin maps).
+   */
+  readonly heightmapLayout?: HeightmapLayout;
   /** Passes new parameters to the model and re-uploads whatever they changed. */
   setParams(params: OceanParams): void;
   /** Prepares the uniforms (and any GPU passes) for a frame at `time`, seconds. */
@@ -43,6 +48,13 @@ export interface WaveModelView {
    */
   profilePasses?(sync: () => void): PassTiming[];
   dispose(): void;
+}
+
+export interface HeightmapLayout {
+  /** 0: the height is in r; 1: in g (the FFT's (dx, dy, dz, ·) textures). */
+  channel: 0 | 1;
+  /** Height drawn white in each texture, m. */
+  range: readonly [number, number];
 }
 
 /** The include every wave-reading shader writes; see WaveBinding. */
