@@ -9,7 +9,7 @@ import { GpuFftOcean } from '../fft/gpuFft';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
 import { WorkerFieldSource } from './fftFieldsSource';
 import type { HeightmapLayout, WaveModelView } from './waveModelView';
-import type { PassTiming } from '../underwaterPost';
+import type { PassTiming } from '../passTiming';
 
 /** Foam fades as e^{−t/τ}: a whitecap lingers a few seconds after its crest has passed. */
 export const FOAM_FADE_SECONDS = 2.5;

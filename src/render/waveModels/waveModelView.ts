@@ -1,5 +1,5 @@
 import type { IUniform, Texture } from 'three';
-import type { PassTiming } from '../underwaterPost';
+import type { PassTiming } from '../passTiming';
 import type { OceanParams } from '../../sim/params';
 import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
 
