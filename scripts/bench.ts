@@ -29,7 +29,11 @@ const FRAMES = Number(process.env.BENCH_FRAMES ?? 40);
 if (!Number.isInteger(FRAMES) || FRAMES < 5) throw new Error(`BENCH_FRAMES must be an integer ≥ 5, got "${process.env.BENCH_FRAMES}".`);
 const WARMUP = 5;
 const PASS_FRAMES = 5;
-const RESULTS_FILE = 'bench/results.md';
+// BENCH_ONLY=name,name runs only the scenarios whose names contain one of those words (e.g.
+// BENCH_ONLY="default view,FFT view" for the FFT ratio) and writes bench/results-subset.md, so
+// the full run's bench/results.md is not replaced by a partial one.
+const ONLY = (process.env.BENCH_ONLY ?? '').split(',').map((word) => word.trim()).filter(Boolean);
+const RESULTS_FILE = ONLY.length ? 'bench/results-subset.md' : 'bench/results.md';
 // The targets of issue 14, for the 2-core SwiftShader machine.
 const TARGETS = { ratio: 20, cpuMs: 0.1, ttffMs: 800, jsKB: 200 };
 // A page load on a machine shared by several jobs can take minutes; puppeteer's 30 s is too short.
@@ -156,7 +160,9 @@ async function main(): Promise<void> {
     let renderer = '';
     let crossOriginIsolated = false;
     let floorTimes: number[] = [];
-    for (const scenario of SCENARIOS) {
+    const scenarios = ONLY.length ? SCENARIOS.filter((s) => ONLY.some((word) => s.name.includes(word))) : SCENARIOS;
+    if (scenarios.length === 0) throw new Error(`BENCH_ONLY="${process.env.BENCH_ONLY}" matches no scenario in scripts/bench/scenarios.ts.`);
+    for (const scenario of scenarios) {
       if (scenario.page === 'threejs-ocean') {
         results.push(await timeThreejsExample(browser, exampleBaseUrl, scenario));
         continue;
@@ -164,7 +170,7 @@ async function main(): Promise<void> {
       const { page, consoleErrors } = await openOcean(harness, scenario.query, WIDTH, HEIGHT, '', PAGE_TIMEOUT_MS);
       await scenario.setup?.(page);
       const environment = await page.evaluate(pageEnvironment);
-      const frames = await page.evaluate(timeOceanFrames, scenario.frames ?? FRAMES, scenario.frames ? 1 : WARMUP);
+      const frames = await page.evaluate(timeOceanFrames, scenario.frames ?? FRAMES, scenario.frames ? 1 : WARMUP, scenario.stepSeconds ?? 0, Number(new URLSearchParams(scenario.query).get('t') ?? 0));
       const passesMs = scenario.passes ? medianOfEach(await page.evaluate(passTimeSamples, PASS_FRAMES)) : undefined;
       if (frames.canvas[0] !== WIDTH || frames.canvas[1] !== HEIGHT) {
         throw new Error(`Scenario "${scenario.name}": the canvas is ${frames.canvas.join('×')}, not ${WIDTH}×${HEIGHT}.`);
@@ -197,6 +203,8 @@ async function main(): Promise<void> {
       const median = (name: string) => (name === 'floor' ? floorMs.median : results.find((r) => r.name === name)?.frameMs.median ?? Number.NaN);
       return { label, ratio: round(median(numerator) / median(denominator), 2), target };
     });
+    // A subset run (BENCH_ONLY) prints only the ratios whose two rows it ran.
+    const comparisonsRun = comparisons.filter((c) => ONLY.length === 0 || Number.isFinite(c.ratio));
     const [headline] = results;
     const report = {
       renderer,
@@ -214,7 +222,7 @@ async function main(): Promise<void> {
       drawCalls: headline.drawCalls,
       cpuMs: headline.cpuMs,
       ttffMs: headline.ttffMs,
-      comparisons,
+      comparisons: comparisonsRun,
       gpuStartupMs: round(gpuStartupMs, 1),
       jsKB: round(jsKB, 1),
       scenarios: results,
@@ -319,7 +327,7 @@ function resultsMarkdown(report: Report, when: Date): string {
       .filter((s) => s.passesMs)
       .flatMap((s) => ['', `Per-pass time, ${s.name} (median of ${PASS_FRAMES} frames, GPU waited for after each pass):`, '', markdownTable(['pass', 'ms'], Object.entries(s.passesMs ?? {}).map(([name, ms]) => [name, formatFigure(ms, 1)]))]),
     '',
-    `Headline (${report.scenarios[0].name}) and the ratios between rows against the targets of issue 14, which are set for the 2-core SwiftShader machine:`,
+    `Headline (${report.scenarios[0].name}) and the ratios between rows against the targets of issues 14 and 12 (FFT view / default ≤ 1.3), set for the 2-core SwiftShader machine:`,
     '',
     markdownTable(['figure', 'measured', 'target'], targets),
     '',

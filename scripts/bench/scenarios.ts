@@ -18,6 +18,12 @@ export interface BenchScenario {
   frames?: number;
   /** Also time each render pass separately (oceano.debug.passTimings). */
   passes?: boolean;
+  /**
+   * Seconds the clock moves between timed frames (from the query's `t`), for a sea whose frame
+   * does per-time GPU work (waves=fft: the FFT and foam passes). Unset: the clock stays paused,
+   * and a model that caches its work per time would skip it.
+   */
+  stepSeconds?: number;
 }
 
 export const SCENARIOS: readonly BenchScenario[] = [
@@ -31,6 +37,10 @@ export const SCENARIOS: readonly BenchScenario[] = [
   // The LOD's reference: every chunk of the same 4 km extent at full resolution, no culling.
   { name: 'brute-force grid, same extent', query: 't=10&lodBruteForce=1', frames: 3 },
   { name: 'underwater (Snell window, god rays, blur)', query: 't=10&preset=underwater', passes: true },
+  // The spectral sea (issue 12) from the default camera: its frame with the clock running at
+  // 60 Hz (every frame evolves the spectra, runs the FFTs and one foam step), and those
+  // passes timed alone.
+  { name: 'FFT view (waves=fft, clock running)', query: 't=10&waves=fft', passes: true, stepSeconds: 1 / 60 },
 ];
 
 /** The ratios the issue's targets are stated in: [label, numerator scenario, denominator scenario or 'floor', target]. */
@@ -39,6 +49,8 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['default / three.js example (Water + Sky + bloom)', 'default view', 'three.js ocean example (Water + Sky + bloom)', 0.6],
   ['default / floor', 'default view', 'floor', 20],
   ['underwater / default', 'underwater (Snell window, god rays, blur)', 'default view', 2],
+  // Issue 12: the spectral sea at most 1.3× the seed's frame, same camera, same run.
+  ['FFT view / default', 'FFT view (waves=fft, clock running)', 'default view', 1.3],
   ['looking up / default', 'looking up', 'default view', null],
   ['looking down / default', 'looking down', 'default view', null],
 ];

@@ -34,6 +34,7 @@ uniform vec3 uFftScale;      // n / L per cascade: texels per metre
 uniform float uFftN;
 uniform float uFoamEnabled;  // 0 or 1
 uniform float uFoamThreshold;
+uniform float uFoamSoftness;   // half-width of the soft edge around the threshold
 uniform float uFabricatedDelta;
 
 // The CPU twin's bilinear read: u = x n/L, texel floor(u) mod n and the next, weights fract(u).
@@ -53,16 +54,31 @@ vec4 fftBilinear(sampler2D map, vec2 p, float scale) {
   return top + (bottom - top) * w.y;
 }
 
+// The last grid point's sums, kept per shader invocation: a pixel asks for the normal and
+// then the foam at the same point, and each costs 24 texel reads; the second is free.
+vec2 fftCachedPoint = vec2(3.0e38);
+vec4 fftCachedDisplacement;
+vec4 fftCachedDerivatives;
+
+void fftReadFields(vec2 p) {
+  if (p == fftCachedPoint) return;
+  fftCachedPoint = p;
+  fftCachedDisplacement = fftBilinear(uFftDisplacement0, p, uFftScale.x)
+                        + fftBilinear(uFftDisplacement1, p, uFftScale.y)
+                        + fftBilinear(uFftDisplacement2, p, uFftScale.z);
+  fftCachedDerivatives = fftBilinear(uFftDerivatives0, p, uFftScale.x)
+                       + fftBilinear(uFftDerivatives1, p, uFftScale.y)
+                       + fftBilinear(uFftDerivatives2, p, uFftScale.z);
+}
+
 vec4 fftDisplacementFields(vec2 p) {
-  return fftBilinear(uFftDisplacement0, p, uFftScale.x)
-       + fftBilinear(uFftDisplacement1, p, uFftScale.y)
-       + fftBilinear(uFftDisplacement2, p, uFftScale.z);
+  fftReadFields(p);
+  return fftCachedDisplacement;
 }
 
 vec4 fftDerivativeFields(vec2 p) {
-  return fftBilinear(uFftDerivatives0, p, uFftScale.x)
-       + fftBilinear(uFftDerivatives1, p, uFftScale.y)
-       + fftBilinear(uFftDerivatives2, p, uFftScale.z);
+  fftReadFields(p);
+  return fftCachedDerivatives;
 }
 
 vec3 waveDisplacement(vec2 gridXZ) {
@@ -89,17 +105,22 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
   return normalize(cross(pz - p0, px - p0));
 }
 
-// Foam: what each cascade accumulated (fading over seconds, src/render/fft/fftFoam.ts) plus
-// where the whole sea's Jacobian folds right now.
+// Foam: what each cascade accumulated (fading over seconds, src/render/fft/fftFoam.ts, each
+// against its own band's threshold) and where the whole sea's Jacobian folds right now, half
+// white at the threshold itself (so Monahan's share of the sea is at least half white) and
+// fully white ¼σ deeper.
 float waveFoam(vec2 gridXZ) {
   float jxx = fftDisplacementFields(gridXZ).w;
   vec4 d = fftDerivativeFields(gridXZ);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
-  float now = smoothstep(uFoamThreshold, uFoamThreshold - 0.08, jacobian);
+  float now = smoothstep(uFoamThreshold + uFoamSoftness, uFoamThreshold - uFoamSoftness, jacobian);
   // The largest tile's foam is left out: its texels are tens of metres wide (22 m in a gale),
   // which drew soft white blotches; breaking happens at the scale of the shorter waves.
-  float kept = 0.7 * (fftBilinear(uFftFoam1, gridXZ, uFftScale.y).r
-                    + fftBilinear(uFftFoam2, gridXZ, uFftScale.z).r);
+  // Each stores a foam potential (1 at its threshold, shaders/fftFoam.frag): white from 1 on.
+  float potential = max(fftBilinear(uFftFoam1, gridXZ, uFftScale.y).r, fftBilinear(uFftFoam2, gridXZ, uFftScale.z).r);
+  // A wide ramp: foam left behind thins out as it fades (translucent, then gone) instead of
+  // shrinking as a hard-edged white floe.
+  float kept = smoothstep(0.5, 1.5, potential);
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 

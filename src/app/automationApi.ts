@@ -45,7 +45,7 @@ export interface OceanoApi {
     fresnelTable(): Float32Array;
     /** The reflectance table seen from under the water (n₁ = 1.333, n₂ = 1). */
     fresnelTableFromBelow(): Float32Array;
-    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water). */
+    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water, after 'fft' and 'foam' when waves=fft). */
     passTimings(): PassTiming[];
     heightmaps(): { size: number; data: Float32Array }[];
     /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */

@@ -7,7 +7,7 @@ import { WAKE_HULL } from '../sim/boatWake';
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
   // The wind sea that both waves=fft and waves=gerstner draw from.
-  { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'choppiness', 'fftSize', 'foam', 'foamThreshold'] },
+  { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel', 'choppiness', 'fftSize', 'foam', 'foamThreshold'] },
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderGerstner', keys: ['gerstnerCount', 'gerstnerSteepness'] },
   { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },

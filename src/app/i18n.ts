@@ -233,6 +233,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   fetch: 'Fetch (JONSWAP)',
   depth: 'Profundidad (dispersión)',
   spreading: 'Dispersión direccional s (cos-2s)',
+  spreadingModel: 'Modelo de dispersión direccional',
   choppiness: 'Crestas afiladas λ',
   fftSize: 'Tamaño de la FFT',
   foam: 'Espuma',

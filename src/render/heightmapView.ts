@@ -1,8 +1,12 @@
-import { Mesh, OrthographicCamera, PlaneGeometry, Scene, ShaderMaterial, type Texture, type WebGLRenderer } from 'three';
+import { Mesh, OrthographicCamera, PlaneGeometry, Scene, ShaderMaterial, Vector2, type Texture, type WebGLRenderer } from 'three';
+import type { HeightmapLayout } from './waveModels/waveModelView';
 import vertexShader from '../../shaders/fullscreen.vert?raw';
 import fragmentShader from '../../shaders/heightmapView.frag?raw';
 
-/** A full-screen picture of the two ripple heightmaps: the textures the vertex shader samples. */
+/**
+ * A full-screen picture of a wave model's two heightmaps, the textures the vertex shader samples:
+ * the seed's two Perlin ripple maps, or the FFT's largest and smallest cascade's height field.
+ */
 export class HeightmapView {
   private readonly scene = new Scene();
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
@@ -12,7 +16,7 @@ export class HeightmapView {
     this.material = new ShaderMaterial({
       vertexShader,
       fragmentShader,
-      uniforms: { uHeightmap0: { value: null }, uHeightmap1: { value: null }, uAspect: { value: 1 } },
+      uniforms: { uHeightmap0: { value: null }, uHeightmap1: { value: null }, uAspect: { value: 1 }, uChannel: { value: 0 }, uRange: { value: new Vector2(1, 1) } },
       depthTest: false,
       depthWrite: false,
     });
@@ -21,10 +25,13 @@ export class HeightmapView {
     this.scene.add(quad);
   }
 
-  render(renderer: WebGLRenderer, heightmaps: readonly [Texture, Texture], aspect: number): void {
-    this.material.uniforms.uHeightmap0.value = heightmaps[0];
-    this.material.uniforms.uHeightmap1.value = heightmaps[1];
-    this.material.uniforms.uAspect.value = aspect;
+  render(renderer: WebGLRenderer, heightmaps: readonly [Texture, Texture], aspect: number, layout: HeightmapLayout = { channel: 0, range: [1, 1] }): void {
+    const u = this.material.uniforms;
+    u.uHeightmap0.value = heightmaps[0];
+    u.uHeightmap1.value = heightmaps[1];
+    u.uAspect.value = aspect;
+    u.uChannel.value = layout.channel;
+    (u.uRange.value as Vector2).set(layout.range[0], layout.range[1]);
     renderer.render(this.scene, this.camera);
   }
 

@@ -454,7 +454,7 @@ export class OceanView {
       return this.heightmapView;
     }
     const view = this.heightmapView ?? new HeightmapView();
-    view.render(this.renderer, textures, this.camera.aspect);
+    view.render(this.renderer, textures, this.camera.aspect, this.waveView.heightmapLayout);
     return view;
   }
 
@@ -466,7 +466,8 @@ export class OceanView {
 
   /**
    * Draws one frame waiting for the GPU after each pass, and returns each pass's time.
-   * Above the water the frame is the single direct render, reported as 'scene'.
+   * Above the water the frame is the single direct render, reported as 'scene'; a model with
+   * GPU passes of its own (waves=fft: 'fft', 'foam') reports those first.
    */
   profileFrame(time: number): PassTiming[] {
     const gl = this.renderer.getContext();
@@ -477,17 +478,19 @@ export class OceanView {
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     };
     this.update(time);
+    // The wave model's own GPU passes (the FFTs), redone at the same time, come first.
+    const wavePasses = this.waveView.profilePasses?.(sync) ?? [];
     const { submersion } = this.where;
     if (submersion !== 'above') {
       const post = this.underwaterPost();
       if (!post) throw new Error('The underwater passes are still loading: await oceano.ready, or draw a frame below the surface first.');
-      return post.profile(submersion === 'straddling', sync);
+      return [...wavePasses, ...post.profile(submersion === 'straddling', sync)];
     }
     sync();
     const start = performance.now();
     this.renderer.render(this.scene, this.camera);
     sync();
-    return [{ name: 'scene', ms: performance.now() - start }];
+    return [...wavePasses, { name: 'scene', ms: performance.now() - start }];
   }
 
   /**

@@ -29,10 +29,8 @@ import { registerShaderChunks } from './shaderChunks';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 
-export interface PassTiming {
-  name: string;
-  ms: number;
-}
+import type { PassTiming } from './passTiming';
+export type { PassTiming };
 
 /** The shaft-light texture: repeating for one period of the lens, clamped for a window. */
 function shaftLightTarget(tile: ShaftLightTile): WebGLRenderTarget {

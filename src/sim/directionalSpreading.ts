@@ -1,3 +1,5 @@
+import { GRAVITY } from './dispersion';
+
 /**
  * Directional spreading: how a wind sea's energy at one frequency spreads around the wind
  * direction. The cos-2s model of Longuet-Higgins, Cartwright & Smith (1963), "Observations of
@@ -27,4 +29,37 @@ export function logGamma(x: number): number {
   const t = z + 7.5;
   for (let i = 1; i < 9; i++) a += c[i] / (z + i);
   return 0.5 * Math.log(2 * Math.PI) + (z + 0.5) * Math.log(t) - t + Math.log(a);
+}
+
+/**
+ * The cos-2s exponent as it was measured during JONSWAP, varying with frequency: Hasselmann,
+ * Dunckel & Ewing (1980), "Directional wave spectra observed during JONSWAP 1973", J. Phys.
+ * Oceanogr. 10, 1264–1280, eq. 41:
+ *   s = 6.97 (ω/ωp)^4.06                          for ω < 1.05 ωp,
+ *   s = 9.77 (ω/ωp)^μ,  μ = −2.33 − 1.45 (U ωp/g − 1.17)   for ω ≥ 1.05 ωp,
+ * U ωp / g = U / c_p the wave age's inverse. Narrowest (s ≈ 9) just above the peak, wider for
+ * the longer and the shorter waves. (Also in Horvath 2015, "Empirical directional wave spectra
+ * for computer graphics", §5.3.)
+ */
+export function hasselmannSpreadingExponent(omega: number, omegaPeak: number, windSpeed: number): number {
+  const r = omega / omegaPeak;
+  if (r < 1.05) return 6.97 * r ** 4.06;
+  const mu = -2.33 - 1.45 * ((windSpeed * omegaPeak) / GRAVITY - 1.17);
+  return 9.77 * r ** mu;
+}
+
+/** Which spreading the spectral sea uses: cos-2s with the user's s, or Hasselmann's s(ω). */
+export type SpreadingModel = 'cos-2s' | 'hasselmann';
+
+/**
+ * D(θ, ω) for a sea: cos-2s with exponent `s` at every frequency, or Hasselmann et al.'s
+ * exponent for each ω relative to the peak ωp at wind speed U (then `s` is not read).
+ */
+export function spreadingFunction(model: SpreadingModel, s: number, omegaPeak: number, windSpeed: number): (theta: number, omega: number) => number {
+  return model === 'hasselmann' ? (theta, omega) => hasselmannSpreading(theta, omega, omegaPeak, windSpeed) : (theta) => cos2sSpreading(theta, s);
+}
+
+/** Hasselmann et al. (1980) spreading: cos-2s with the exponent of its frequency (above); ∫D dθ = 1 at every ω. */
+export function hasselmannSpreading(theta: number, omega: number, omegaPeak: number, windSpeed: number): number {
+  return cos2sSpreading(theta, hasselmannSpreadingExponent(omega, omegaPeak, windSpeed));
 }

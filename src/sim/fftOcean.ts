@@ -3,6 +3,7 @@ import { cascadeLayout, type Cascade } from './cascades';
 import { InverseFft2d } from './fft2d';
 import { initialSpectrum, REPEAT_PERIOD, type SpectralTile } from './initialSpectrum';
 import type { SeaState } from './seaState';
+import { spectralBounds } from './spectralBounds';
 import { evolveSpectra } from './spectralFields';
 import { directionalSpectrum, frequencySpectrum, peakWavelength } from './waveSpectrum';
 import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample, type WaveModel } from './waveModel';
@@ -60,10 +61,9 @@ export class FftOcean implements WaveModel {
     this.spectra = this.setup.tiles.map(() => [0, 1, 2, 3].map(() => new Float64Array(2 * n * n)));
     this.fields = this.setup.tiles.map(() => ({ displacement: new Float64Array(4 * n * n), derivatives: new Float64Array(4 * n * n) }));
     this.scale = this.setup.cascades.map((c) => n / c.size);
-    // Strict bounds: |h(x,t)| ≤ Σ|h̃(k,t)| ≤ Σ(|h₀(k)| + |h₀(−k)|) = 2 Σ|h₀|, and |D| ≤ λ times that.
-    let sum = 0;
-    for (const tile of this.setup.tiles) for (let i = 0; i < tile.h0.length; i += 2) sum += 2 * Math.hypot(tile.h0[i], tile.h0[i + 1]);
-    this.bound = { vertical: sum, horizontal: sea.choppiness * sum };
+    // From the spectrum's spread and the Gaussian's extremes over a tile and a repeat period
+    // (src/sim/spectralBounds.ts), not the strict 2 Σ|h₀| (all modes in phase: 97 m in a gale).
+    this.bound = spectralBounds(this.setup.tiles, sea.depth, sea.choppiness);
   }
 
   /** The time the fields hold (NaN before the first setTime). */

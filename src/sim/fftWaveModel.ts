@@ -10,7 +10,7 @@ export const INVERSION_STEPS = 12;
 /** The parameters the spectral sea reads; everything else leaves it unchanged. */
 export type FftWaveParams = Pick<
   OceanParams,
-  'seed' | 'windSpeed' | 'windDirection' | 'spectrum' | 'fetch' | 'depth' | 'spreading' | 'choppiness' | 'fftSize'
+  'seed' | 'windSpeed' | 'windDirection' | 'spectrum' | 'fetch' | 'depth' | 'spreading' | 'spreadingModel' | 'choppiness' | 'fftSize'
 >;
 
 /** A key that changes exactly when the drawn sea changes (JSON of the SeaState; Infinity is spelt out). */

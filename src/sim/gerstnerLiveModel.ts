@@ -1,5 +1,5 @@
 import { angularFrequency } from './dispersion';
-import { cos2sSpreading } from './directionalSpreading';
+import { spreadingFunction } from './directionalSpreading';
 import { gerstnerSea } from './gerstnerSpectrum';
 import { GerstnerWaveModel, type GerstnerWave } from './gerstnerWaves';
 import type { OceanParams } from './params';
@@ -11,7 +11,7 @@ import type { LiveWaveModel } from './liveWaveModel';
 /** The parameters the Gerstner sea is drawn from: the FFT sea's wind and spectrum, plus count and Q. */
 export type GerstnerSeaParams = Pick<
   OceanParams,
-  'seed' | 'gerstnerCount' | 'gerstnerSteepness' | 'windSpeed' | 'windDirection' | 'spectrum' | 'fetch' | 'depth' | 'spreading'
+  'seed' | 'gerstnerCount' | 'gerstnerSteepness' | 'windSpeed' | 'windDirection' | 'spectrum' | 'fetch' | 'depth' | 'spreading' | 'spreadingModel'
 >;
 
 const SEA_KEYS: readonly (keyof GerstnerSeaParams)[] = [
@@ -24,6 +24,7 @@ const SEA_KEYS: readonly (keyof GerstnerSeaParams)[] = [
   'fetch',
   'depth',
   'spreading',
+  'spreadingModel',
 ];
 
 /**
@@ -39,7 +40,7 @@ export function gerstnerWavesFor(params: GerstnerSeaParams): GerstnerWave[] {
     count: params.gerstnerCount,
     seed: params.seed,
     spectrum: spectrum.density,
-    spreading: (theta) => cos2sSpreading(theta, sea.spreading),
+    spreading: spreadingFunction(sea.spreadingModel, sea.spreading, spectrum.peak, sea.windSpeed),
     windDirection: Math.atan2(wz, wx),
     steepness: params.gerstnerSteepness,
     dispersion: (k) => angularFrequency(k, sea.depth),

@@ -56,6 +56,8 @@ export const paramDefs = {
   // At 1000 m every wave the cascades carry is a deep-water wave (k h > 3), so 1000 means deep.
   depth: { kind: 'number', default: 1000, min: 1, max: 1000, step: 1, unit: 'm', label: 'Water depth (dispersion)' },
   spreading: { kind: 'number', default: 8, min: 1, max: 40, step: 0.5, unit: '', label: 'Directional spreading s (cos-2s)' },
+  // cos-2s with the s above at every frequency, or Hasselmann et al. (1980)'s s(ω/ωp) measured in JONSWAP.
+  spreadingModel: { kind: 'choice', default: 'cos-2s', options: ['cos-2s', 'hasselmann'], label: 'Spreading model' },
   choppiness: { kind: 'number', default: 1, min: 0, max: 2, step: 0.05, unit: '', label: 'Choppiness λ' },
   fftSize: { kind: 'choice', default: '128', options: ['64', '128', '256'], label: 'FFT size' },
   foam: { kind: 'boolean', default: true, label: 'Foam' },

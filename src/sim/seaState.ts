@@ -1,4 +1,5 @@
 import { DEEP } from './dispersion';
+import type { SpreadingModel } from './directionalSpreading';
 
 /** Which published frequency spectrum the wind sea follows. */
 export type SpectrumName = 'pierson-moskowitz' | 'jonswap' | 'phillips';
@@ -19,6 +20,8 @@ export interface SeaState {
   depth: number;
   /** cos-2s spreading exponent s (larger: narrower around the wind). */
   spreading: number;
+  /** cos-2s with s at every frequency, or Hasselmann et al. (1980)'s s(ω) (src/sim/directionalSpreading.ts). */
+  spreadingModel: SpreadingModel;
   /** λ, the scale of the choppy horizontal displacement (0: none, 1: Gerstner-like). */
   choppiness: number;
   /** Grid points per side of every cascade's FFT. */
@@ -34,6 +37,7 @@ export const DEFAULT_SEA_STATE: SeaState = {
   fetch: 100_000,
   depth: DEEP,
   spreading: 8,
+  spreadingModel: 'cos-2s',
   choppiness: 1,
   fftSize: 128,
   seed: 1,
@@ -55,6 +59,7 @@ export interface SeaParams {
   /** m; the table's maximum, 1000, means deep water */
   depth: number;
   spreading: number;
+  spreadingModel: SpreadingModel;
   choppiness: number;
   fftSize: '64' | '128' | '256';
   seed: number;
@@ -71,6 +76,7 @@ export function seaStateFromParams(p: SeaParams): SeaState {
     fetch: p.fetch * 1000,
     depth: p.depth >= DEEP_PARAM_DEPTH ? DEEP : p.depth,
     spreading: p.spreading,
+    spreadingModel: p.spreadingModel,
     choppiness: p.choppiness,
     fftSize: Number(p.fftSize) as SeaState['fftSize'],
     seed: p.seed,

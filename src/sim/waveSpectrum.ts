@@ -1,5 +1,5 @@
 import { angularFrequency, groupVelocity, waveNumber } from './dispersion';
-import { cos2sSpreading } from './directionalSpreading';
+import { spreadingFunction } from './directionalSpreading';
 import { jonswapM0Approx, jonswapShape, jonswapWithShape } from './jonswap';
 import { piersonMoskowitz, piersonMoskowitzM0, piersonMoskowitzPeak } from './piersonMoskowitz';
 import { phillips, phillipsM0, phillipsPeak } from './phillips';
@@ -42,11 +42,12 @@ export function peakWavelength(sea: SeaState): number {
 export function directionalSpectrum(sea: SeaState, spectrum: FrequencySpectrum): (kx: number, kz: number) => number {
   const [wx, wz] = windVector(sea.windDirection);
   const windAngle = Math.atan2(wz, wx);
+  const spreading = spreadingFunction(sea.spreadingModel, sea.spreading, spectrum.peak, sea.windSpeed);
   return (kx, kz) => {
     const k = Math.hypot(kx, kz);
     if (k === 0) return 0;
     const omega = angularFrequency(k, sea.depth);
     const theta = Math.atan2(kz, kx) - windAngle;
-    return (spectrum.density(omega) * groupVelocity(k, sea.depth) * cos2sSpreading(theta, sea.spreading)) / k;
+    return (spectrum.density(omega) * groupVelocity(k, sea.depth) * spreading(theta, omega)) / k;
   };
 }

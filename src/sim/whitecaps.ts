@@ -33,3 +33,15 @@ export function foamJacobianThreshold(windSpeed: number, choppiness: number, bia
   const coverage = Math.min(0.5, Math.max(1e-9, whitecapCoverage(windSpeed)));
   return 1 - JACOBIAN_SPREAD * choppiness * upperNormalQuantile(coverage) + bias;
 }
+
+/**
+ * The same threshold for a field whose Jacobian has spread `jacobianSpread` (one cascade's
+ * band: λ times its RMS slope, src/sim/spectralBounds.ts), so that each cascade's share of
+ * folding crests is Monahan's coverage at the scale of its own waves. Measured (U = 10–20 m/s,
+ * 128², seed 1): the three cascades' J spreads are 0.063, 0.079 and 0.095 λ, which the RMS
+ * slopes give exactly. `share` takes that part of the coverage only.
+ */
+export function foamThresholdForSpread(jacobianSpread: number, windSpeed: number, bias = 0, share = 1): number {
+  const coverage = Math.min(0.5, Math.max(1e-9, share * whitecapCoverage(windSpeed)));
+  return 1 - jacobianSpread * upperNormalQuantile(coverage) + bias;
+}

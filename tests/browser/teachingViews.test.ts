@@ -61,6 +61,37 @@ describe('teaching views of the seed figures', () => {
     }
   });
 
+  it('under waves=fft shows the largest and smallest cascade\'s height fields: not blank, not the seed\'s maps, moving with time', async () => {
+    // Grey spread (8-bit levels) inside the left square, a quarter of the frame's height in
+    // from its edges: a blank view (what waves=fft drew before, the negative control) has 0.
+    const spread = (png: Buffer) => {
+      const image = PNG.sync.read(png);
+      const values: number[] = [];
+      for (let y = Math.round(image.height * 0.25); y < image.height * 0.75; y += 2) {
+        for (let x = Math.round(image.width * 0.15); x < image.width * 0.45; x += 2) values.push(image.data[(y * image.width + x) * 4]);
+      }
+      const mean = values.reduce((a, b) => a + b, 0) / values.length;
+      return Math.sqrt(values.reduce((a, b) => a + (b - mean) ** 2, 0) / values.length);
+    };
+    const fft = await openOcean(harness, 'seed=4&t=10&waves=fft&view=heightmap', 320, 180);
+    const at10 = await canvasPng(fft.page);
+    await fft.page.evaluate(() => window.oceano.setTime(14));
+    const at14 = await canvasPng(fft.page);
+    await fft.page.close();
+    const seed = await openOcean(harness, 'seed=4&t=10&view=heightmap', 320, 180);
+    const seedMaps = await canvasPng(seed.page);
+    await seed.page.close();
+    const fromSeed = diffPngs(at10, seedMaps).share;
+    const fromLater = diffPngs(at10, at14).share;
+    console.log(`[oceano] heightmap view grey spread: fft ${spread(at10).toFixed(1)}, seed ${spread(seedMaps).toFixed(1)} levels; pixels changed against the seed's ${(fromSeed * 100).toFixed(1)} %, against t = 14 s ${(fromLater * 100).toFixed(1)} %`);
+    // Measured: the FFT's spread is 43 levels (each map's ±3σ spans black to white); 40 % of
+    // the pixels change against the seed's maps and 44 % four seconds later (pixelmatch's
+    // 0.1 threshold ignores small grey steps; the grey border is the same in all three).
+    expect(spread(at10)).toBeGreaterThan(15);
+    expect(fromSeed).toBeGreaterThan(0.2);
+    expect(fromLater).toBeGreaterThan(0.2);
+  });
+
   it('draws the Fresnel plot only when asked', async () => {
     const { page } = await openOcean(harness, 't=10');
     expect(await page.$('.oceano-fresnel-plot')).toBeNull();

@@ -20,7 +20,9 @@ function foamTarget(n: number): WebGLRenderTarget {
 /**
  * Per cascade, foam accumulated in the texel grid of its FFT tile (two targets, ping-pong):
  * each step keeps the larger of the old foam faded by e^{−Δt/τ} and the foam where this
- * cascade's Jacobian is below the threshold now (shaders/fftFoam.frag).
+ * cascade's Jacobian is below its threshold now (shaders/fftFoam.frag). Each cascade has its
+ * own threshold, from its own Jacobian spread (src/sim/whitecaps.ts foamThresholdForSpread):
+ * one band alone folds less often than the whole sea does.
  */
 export class FftFoam {
   private readonly pairs: [WebGLRenderTarget, WebGLRenderTarget][];
@@ -41,6 +43,7 @@ export class FftFoam {
         uPrevious: { value: null },
         uDecay: { value: 0 },
         uThreshold: { value: 0 },
+        uSoftness: { value: 0.01 },
       },
       depthTest: false,
       depthWrite: false,
@@ -52,13 +55,17 @@ export class FftFoam {
     return this.pairs.map((pair) => pair[this.current].texture);
   }
 
-  /** One step on the GPU's current fields; decay = e^{−Δt/τ} (0 forgets all earlier foam). */
-  step(decay: number, threshold: number): void {
+  /**
+   * One step on the GPU's current fields; decay = e^{−Δt/τ} (0 forgets all earlier foam).
+   * Per cascade its own Jacobian threshold and the half-width of the soft edge around it.
+   */
+  step(decay: number, thresholds: readonly number[], softness: readonly number[]): void {
     const next = 1 - this.current;
     const u = this.material.uniforms;
     u.uDecay.value = decay;
-    u.uThreshold.value = threshold;
     this.gpu.targets.forEach((target, c) => {
+      u.uThreshold.value = thresholds[c];
+      u.uSoftness.value = softness[c];
       u.uDisplacement.value = target.textures[0];
       u.uDerivatives.value = target.textures[1];
       u.uPrevious.value = this.pairs[c][this.current].texture;

@@ -1,13 +1,15 @@
-import { Vector3, type IUniform, type WebGLRenderer } from 'three';
+import { Vector3, type IUniform, type Texture, type WebGLRenderer } from 'three';
 import fftChunk from '../../../shaders/waves/fft.glsl?raw';
 import type { OceanParams } from '../../sim/params';
 import type { FftWaveModel } from '../../sim/fftWaveModel';
-import { foamJacobianThreshold } from '../../sim/whitecaps';
+import { cascadeSpread } from '../../sim/spectralBounds';
+import { foamJacobianThreshold, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../sim/whitecaps';
 import { FftFoam } from '../fft/fftFoam';
 import { GpuFftOcean } from '../fft/gpuFft';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
 import { WorkerFieldSource } from './fftFieldsSource';
-import type { WaveModelView } from './waveModelView';
+import type { HeightmapLayout, WaveModelView } from './waveModelView';
+import type { PassTiming } from '../passTiming';
 
 /** Foam fades as e^{−t/τ}: a whitecap lingers a few seconds after its crest has passed. */
 export const FOAM_FADE_SECONDS = 2.5;
@@ -16,6 +18,16 @@ const FOAM_MAX_STEP = 0.25;
 /** The warm-up: foam at t is built from the sea at t − 3 s, t − 2.4 s, …, t, so a frozen t always draws the same foam. */
 const FOAM_WARMUP_STEPS = 5;
 const FOAM_WARMUP_DT = 0.6;
+/**
+ * Half-width of the foam's soft edge around a Jacobian threshold, as a share of J's spread:
+ * foam goes from none to full over ±¼σ, a crisp edge that the texels still resolve.
+ */
+const FOAM_EDGE = 0.25;
+/**
+ * Share of Monahan's coverage each remembering cascade starts as fresh foam: the rest of the
+ * white is the whole sea's folds now and the foam left behind while it fades.
+ */
+const CASCADE_FOAM_SHARE = 1 / 3;
 /** Step of the fabricated-neighbour normal in the comparison view, m (the finest LOD band's grid step). */
 const FABRICATED_DELTA = 1;
 
@@ -23,7 +35,7 @@ type FftUniforms = Record<
   | 'uFftDisplacement0' | 'uFftDisplacement1' | 'uFftDisplacement2'
   | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
   | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
-  | 'uFftScale' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFabricatedDelta',
+  | 'uFftScale' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta',
   IUniform
 >;
 
@@ -42,6 +54,11 @@ export class FftWaveView implements WaveModelView {
   private time = Number.NaN;
   private foamEnabled = true;
   private foamThreshold = 0.7;
+  /** Per cascade: its Jacobian threshold and soft edge (each band folds less often than the sea). */
+  private cascadeThresholds: number[] = [];
+  private cascadeSoftness: number[] = [];
+  /** The heightmap view's grey scale: each shown cascade's height at 3σ is white. */
+  heightmapLayout: HeightmapLayout = { channel: 1, range: [1, 1] };
 
   constructor(
     readonly model: FftWaveModel,
@@ -63,12 +80,23 @@ export class FftWaveView implements WaveModelView {
       uFftN: { value: 1 },
       uFoamEnabled: { value: 1 },
       uFoamThreshold: { value: this.foamThreshold },
+      uFoamSoftness: { value: 0.03 },
       uFabricatedDelta: { value: FABRICATED_DELTA },
     };
     this.gpu = new GpuFftOcean(renderer, model.ocean.setup);
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
     model.attachSource(new WorkerFieldSource((reply) => model.receive(reply.sea, reply.time, reply.fields)));
+  }
+
+  /**
+   * The heightmap teaching view under waves=fft: the largest cascade's height field (the swell
+   * of the spectral peak, one tile of 8 peak wavelengths) beside the smallest's (the short
+   * waves), as the GPU FFT wrote them this frame.
+   */
+  get heightmapTextures(): [Texture, Texture] {
+    const displacement = this.gpu.displacement;
+    return [displacement[0], displacement[displacement.length - 1]];
   }
 
   /** waveLensHeight reads the smallest cascade alone, so it repeats with that tile. */
@@ -97,13 +125,25 @@ export class FftWaveView implements WaveModelView {
     this.foamThreshold = foamJacobianThreshold(params.windSpeed, params.choppiness, params.foamThreshold);
     this.uniforms.uFoamEnabled.value = params.foam ? 1 : 0;
     this.uniforms.uFoamThreshold.value = this.foamThreshold;
-    if (!this.model.setParams(params)) return;
-    this.foam.dispose();
-    this.gpu.dispose();
-    this.gpu = new GpuFftOcean(this.renderer, this.model.ocean.setup);
-    this.foam = new FftFoam(this.gpu);
-    this.time = Number.NaN;
-    this.bindTextures();
+    this.uniforms.uFoamSoftness.value = FOAM_EDGE * JACOBIAN_SPREAD * params.choppiness;
+    const rebuilt = this.model.setParams(params);
+    const { sea, tiles } = this.model.ocean.setup;
+    const cascadeSpreads = tiles.map((tile) => cascadeSpread(tile, sea.depth));
+    const spreads = cascadeSpreads.map((spread) => sea.choppiness * spread.slope);
+    this.heightmapLayout = { channel: 1, range: [3 * cascadeSpreads[0].height, 3 * cascadeSpreads[cascadeSpreads.length - 1].height] };
+    const thresholds = spreads.map((spread) => foamThresholdForSpread(spread, params.windSpeed, params.foamThreshold, CASCADE_FOAM_SHARE));
+    const changed = thresholds.some((t, c) => t !== this.cascadeThresholds[c]);
+    this.cascadeThresholds = thresholds;
+    this.cascadeSoftness = spreads.map((spread) => FOAM_EDGE * spread);
+    if (rebuilt) {
+      this.foam.dispose();
+      this.gpu.dispose();
+      this.gpu = new GpuFftOcean(this.renderer, this.model.ocean.setup);
+      this.foam = new FftFoam(this.gpu);
+      this.bindTextures();
+    }
+    // New thresholds make other foam: rebuild it from the warm-up at the next update.
+    if (rebuilt || changed) this.time = Number.NaN;
   }
 
   /** FFT passes for every cascade at `time`, then the foam (stepped, or rebuilt after a jump). */
@@ -119,14 +159,35 @@ export class FftWaveView implements WaveModelView {
     const dt = time - previous;
     if (dt > 0 && dt <= FOAM_MAX_STEP) {
       this.gpu.update(time);
-      this.foam.step(Math.exp(-dt / FOAM_FADE_SECONDS), this.foamThreshold);
+      this.foam.step(Math.exp(-dt / FOAM_FADE_SECONDS), this.cascadeThresholds, this.cascadeSoftness);
     } else {
       for (let k = FOAM_WARMUP_STEPS; k >= 0; k--) {
         this.gpu.update(time - k * FOAM_WARMUP_DT);
-        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : Math.exp(-FOAM_WARMUP_DT / FOAM_FADE_SECONDS), this.foamThreshold);
+        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : Math.exp(-FOAM_WARMUP_DT / FOAM_FADE_SECONDS), this.cascadeThresholds, this.cascadeSoftness);
       }
     }
     this.bindFoam();
+  }
+
+  /**
+   * The FFT passes of every cascade at the current time again (same spectrum, same time: same
+   * textures), then one foam step with no fade (max(old, fresh) with fresh already in old:
+   * the foam is unchanged), each group timed between two GPU syncs.
+   */
+  profilePasses(sync: () => void): PassTiming[] {
+    if (Number.isNaN(this.time)) return [];
+    sync();
+    let start = performance.now();
+    this.gpu.update(this.time);
+    sync();
+    const timings: PassTiming[] = [{ name: 'fft', ms: performance.now() - start }];
+    if (!this.foamEnabled) return timings;
+    start = performance.now();
+    this.foam.step(1, this.cascadeThresholds, this.cascadeSoftness);
+    sync();
+    this.bindFoam();
+    timings.push({ name: 'foam', ms: performance.now() - start });
+    return timings;
   }
 
   dispose(): void {

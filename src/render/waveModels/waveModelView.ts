@@ -1,4 +1,5 @@
 import type { IUniform, Texture } from 'three';
+import type { PassTiming } from '../passTiming';
 import type { OceanParams } from '../../sim/params';
 import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
 
@@ -31,11 +32,29 @@ export interface WaveModelView {
   readonly lensPeriod: number | null;
   /** Textures the "heightmap" teaching view shows, where the model has any. */
   readonly heightmapTextures?: readonly [Texture, Texture];
+  /**
+   * Where those textures keep the height and what value the view draws white (its negative
+   * black), per texture. Absent: channel 0 (r), ±1 (the seed's Perlin maps).
+   */
+  readonly heightmapLayout?: HeightmapLayout;
   /** Passes new parameters to the model and re-uploads whatever they changed. */
   setParams(params: OceanParams): void;
   /** Prepares the uniforms (and any GPU passes) for a frame at `time`, seconds. */
   update(time: number): void;
+  /**
+   * For the profiler (oceano.debug.passTimings, `npm run bench`): runs this frame's GPU
+   * passes once more, giving the same textures, calling `sync` (which waits for the GPU)
+   * after each group, and returns each group's time. Absent for models with no GPU passes.
+   */
+  profilePasses?(sync: () => void): PassTiming[];
   dispose(): void;
+}
+
+export interface HeightmapLayout {
+  /** 0: the height is in r; 1: in g (the FFT's (dx, dy, dz, ·) textures). */
+  channel: 0 | 1;
+  /** Height drawn white in each texture, m. */
+  range: readonly [number, number];
 }
 
 /** The include every wave-reading shader writes; see WaveBinding. */
