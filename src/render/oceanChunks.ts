@@ -19,6 +19,7 @@ import { BASE_STEP, CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
 import { chunkGrid, squareGrid } from '../sim/chunkGrid';
 import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../sim/farRings';
 import { classifyBox, OUTSIDE } from '../sim/frustumMath';
+import { morphZones } from '../sim/lodMorph';
 import type { OceanMaterial } from './oceanMaterial';
 
 export interface LodSettings {
@@ -26,6 +27,8 @@ export interface LodSettings {
   lodBands: number;
   lodBruteForce: boolean;
   freezeCulling: boolean;
+  /** Geomorphing between bands (src/sim/lodMorph.ts). */
+  lodMorph: boolean;
 }
 
 export interface ChunkStats {
@@ -90,6 +93,7 @@ export class OceanChunks {
   private readonly skirt: Mesh<BufferGeometry, OceanMaterial>;
   private readonly skirtPoints: Float64Array;
   private readonly edgeScratch = [0, 0, 0, 0];
+  private readonly zones = new Float32Array(MAX_LOD_BANDS * 2);
 
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
@@ -140,6 +144,7 @@ export class OceanChunks {
     input.lodBands = settings.lodBands;
     input.bruteForce = settings.lodBruteForce;
     selector.select(input);
+    this.material.setLodMorph(this.cullCamera, bounds.vertical, morphZones(settings.lodDistance, this.bandsInUse, settings.lodMorph, this.zones));
     this.fill.fill(0);
     const side = selector.side;
     const { originX, originZ } = input;

@@ -189,8 +189,8 @@ export class OceanView {
     if (changed('normalsCompare')) this.material.setNormalsCompare(params.normalsCompare);
     if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
     if (changed('lodColors')) this.material.setLodColors(params.lodColors);
-    if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling')) {
-      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
+    if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
+      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
     if (changed('seaBedDepth')) this.seaBed.setDepth(params.seaBedDepth);
     if (changed('blurStrength')) this.post?.setBlur(params.blurStrength);
