@@ -13,6 +13,12 @@ uniform int uChunkQuads;
 // fade out (src/sim/farRings.ts): 1 on every chunk of the grid, 0 past ring 2.
 uniform vec2 uOceanCenter;
 uniform vec2 uFarFade;
+// Geomorphing (the GLSL twin of src/sim/lodMorph.ts): the camera and wave height the bands
+// were chosen with, and per band the distance where its vertices start to slide towards the
+// next band's grid and 1 / the zone's width.
+uniform vec3 uLodCamera;
+uniform float uLodHeight;
+uniform vec2 uMorphZones[6];
 
 attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, metres per grid unit
 attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
@@ -34,17 +40,36 @@ int snapEdge(int k, int step) {
   return ((k + step / 2) / step) * step;
 }
 
+// A band's vertex step (BAND_STEPS in src/sim/lodBands.ts).
+int bandStep(int band) {
+  return band == 0 ? 1 : band == 1 ? 2 : band == 2 ? 3 : band == 3 ? 6 : band == 4 ? 12 : 24;
+}
+
 void main() {
   ivec2 grid = ivec2(position.xz + 0.5);
-  ivec2 snapped = grid;
-  if (grid.x == 0) snapped.y = snapEdge(grid.y, int(aEdgeSteps.x));
-  else if (grid.x == uChunkQuads) snapped.y = snapEdge(grid.y, int(aEdgeSteps.y));
-  if (grid.y == 0) snapped.x = snapEdge(grid.x, int(aEdgeSteps.z));
-  else if (grid.y == uChunkQuads) snapped.x = snapEdge(grid.x, int(aEdgeSteps.w));
+  int band = int(aChunk.z + 0.5);
+  // Far rings (band >= 6) never morph and always snap their sides.
+  int own = band < 6 ? bandStep(band) : 0;
+  vec2 morphed = vec2(grid);
+  if (band < 5) {
+    // Distance of the unmorphed vertex, measured as the bands measure chunks.
+    // The unmorphed place first (exact, as every chunk sharing the vertex computes it), so
+    // they all get the same factor.
+    vec2 fromCamera = (aChunk.xy + vec2(grid) * aChunk.w) - uLodCamera.xz;
+    float dy = max(uLodCamera.y - uLodHeight, 0.0) + max(-uLodHeight - uLodCamera.y, 0.0);
+    float factor = clamp((length(vec3(fromCamera.x, dy, fromCamera.y)) - uMorphZones[band].x) * uMorphZones[band].y, 0.0, 1.0);
+    int next = bandStep(band + 1);
+    morphed += factor * (vec2(snapEdge(grid.x, next), snapEdge(grid.y, next)) - vec2(grid));
+  }
+  if (grid.x == 0 && int(aEdgeSteps.x) > own) morphed.y = float(snapEdge(grid.y, int(aEdgeSteps.x)));
+  else if (grid.x == uChunkQuads && int(aEdgeSteps.y) > own) morphed.y = float(snapEdge(grid.y, int(aEdgeSteps.y)));
+  if (grid.y == 0 && int(aEdgeSteps.z) > own) morphed.x = float(snapEdge(grid.x, int(aEdgeSteps.z)));
+  else if (grid.y == uChunkQuads && int(aEdgeSteps.w) > own) morphed.x = float(snapEdge(grid.x, int(aEdgeSteps.w)));
 
-  // Corner and step are whole multiples of the base step: the sum is exact in float32, so
-  // two chunks compute bit-identical positions (and heights) for a shared vertex.
-  vec2 gridXZ = vec2(aChunk.x + float(snapped.x) * aChunk.w, aChunk.y + float(snapped.y) * aChunk.w);
+  // Corner and step are whole multiples of the base step: unmorphed, the sum is exact in
+  // float32, and a shared vertex's morph is computed from the same numbers by both chunks,
+  // so they agree bit for bit on its position (and height).
+  vec2 gridXZ = vec2(aChunk.x + morphed.x * aChunk.w, aChunk.y + morphed.y * aChunk.w);
   vec2 fromCenter = abs(gridXZ - uOceanCenter);
   float waves = 1.0 - smoothstep(uFarFade.x, uFarFade.y, max(fromCenter.x, fromCenter.y));
   vec3 d = waveDisplacement(gridXZ);

@@ -15,7 +15,7 @@ const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide'] },
   { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
-  { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'freezeCulling', 'lodBruteForce'] },
+  { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'lodMorph', 'freezeCulling', 'lodBruteForce'] },
   { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'normalsCompare', 'view', 'fresnelPlot'] },
 ];
 

@@ -265,6 +265,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   lodDistance: 'Distancia de LOD L',
   lodBands: 'Bandas de LOD',
   lodColors: 'Colorear parcelas por banda',
+  lodMorph: 'Geomorfismo (transición suave entre bandas)',
   freezeCulling: 'Congelar el recorte',
   lodBruteForce: 'Fuerza bruta (malla completa, sin recorte)',
   blurStrength: 'Desenfoque bajo el agua (σ)',

@@ -19,6 +19,7 @@ import { BASE_STEP, CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
 import { chunkGrid, squareGrid } from '../sim/chunkGrid';
 import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../sim/farRings';
 import { classifyBox, OUTSIDE } from '../sim/frustumMath';
+import { morphZones } from '../sim/lodMorph';
 import type { OceanMaterial } from './oceanMaterial';
 
 export interface LodSettings {
@@ -26,6 +27,8 @@ export interface LodSettings {
   lodBands: number;
   lodBruteForce: boolean;
   freezeCulling: boolean;
+  /** Geomorphing between bands (src/sim/lodMorph.ts). */
+  lodMorph: boolean;
 }
 
 export interface ChunkStats {
@@ -52,8 +55,8 @@ function instancedGrid({ positions, indices }: { positions: Float32Array; indice
   return geometry;
 }
 
-/** 6 planes × 4, the camera (3), the grid's origin (2), the two bounds and three settings. */
-const SELECTION_KEY_LENGTH = 34;
+/** 6 planes × 4, the camera (3), the grid's origin (2), the two bounds and four settings. */
+const SELECTION_KEY_LENGTH = 35;
 
 /**
  * The ocean as chunks: each frame the quadtree picks the chunks in view, each gets its
@@ -96,6 +99,7 @@ export class OceanChunks {
   /** Everything the selection depends on, as of the last frame that selected: the planes, camera, origin, bounds and settings. */
   private readonly lastKey = new Float64Array(SELECTION_KEY_LENGTH).fill(NaN);
   private readonly key = new Float64Array(SELECTION_KEY_LENGTH);
+  private readonly zones = new Float32Array(MAX_LOD_BANDS * 2);
 
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
@@ -149,6 +153,7 @@ export class OceanChunks {
     // selection and uploads stand, and the frame's CPU work is only this comparison.
     if (this.sameSelectionAsLastFrame(settings)) return;
     selector.select(input);
+    this.material.setLodMorph(this.cullCamera, bounds.vertical, morphZones(settings.lodDistance, this.bandsInUse, settings.lodMorph, this.zones));
     this.fill.fill(0);
     const side = selector.side;
     const { originX, originZ } = input;
@@ -204,6 +209,7 @@ export class OceanChunks {
     key[k++] = settings.lodDistance;
     key[k++] = settings.lodBands;
     key[k++] = settings.lodBruteForce ? 1 : 0;
+    key[k++] = settings.lodMorph ? 1 : 0;
     let same = true;
     for (let n = 0; n < SELECTION_KEY_LENGTH; n++) same &&= key[n] === this.lastKey[n];
     this.lastKey.set(key);

@@ -3,6 +3,7 @@ import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import { CHUNK_QUADS } from '../sim/lodBands';
 import { FAR_FADE_END, FAR_FADE_START } from '../sim/farRings';
+import { morphZones } from '../sim/lodMorph';
 import { registerShaderChunks } from './shaderChunks';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
@@ -50,6 +51,9 @@ export class OceanMaterial extends ShaderMaterial {
         uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
         uLodColors: { value: false },
         uWakeOn: { value: false },
+        uLodCamera: { value: new Vector3() },
+        uLodHeight: { value: 0 },
+        uMorphZones: { value: morphZones(1, 1, false) },
       },
     });
     waves.attach(this);
@@ -100,6 +104,16 @@ export class OceanMaterial extends ShaderMaterial {
   /** Whether the fragment shader adds the wake's slope and foam (the vertex shader reads uWakeCount). */
   setWakeOn(on: boolean): void {
     this.uniforms.uWakeOn.value = on;
+  }
+
+  /**
+   * Geomorphing's inputs this frame: the camera and wave height the bands were chosen with,
+   * and each band's morph zone (src/sim/lodMorph.ts morphZones).
+   */
+  setLodMorph(camera: readonly [number, number, number], height: number, zones: Float32Array): void {
+    (this.uniforms.uLodCamera.value as Vector3).fromArray(camera);
+    this.uniforms.uLodHeight.value = height;
+    (this.uniforms.uMorphZones.value as Float32Array).set(zones);
   }
 
   /** The LOD debugger's view: each chunk tinted by its band. */

@@ -213,8 +213,8 @@ export class OceanView {
     }
     if (changed(...LOOK_KEYS)) for (const material of [this.material, ...this.sides.map((s) => s.material)]) applyLook(material, params);
     if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
-    if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling')) {
-      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling };
+    if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
+      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
     if (changed('seaBedDepth')) this.seaBed.setDepth(params.seaBedDepth);
     if (changed('blurStrength')) this.post?.setBlur(params.blurStrength);

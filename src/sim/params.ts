@@ -99,6 +99,8 @@ export const paramDefs = {
   lodDistance: { kind: 'number', default: 100, min: 10, max: 1000, step: 5, unit: 'm', label: 'LOD distance L' },
   lodBands: { kind: 'integer', default: 6, min: 1, max: 6, unit: '', label: 'LOD bands' },
   lodColors: { kind: 'boolean', default: false, label: 'Colour chunks by band' },
+  // CDLOD geomorphing (src/sim/lodMorph.ts); off shows the pops it removes.
+  lodMorph: { kind: 'boolean', default: true, label: 'Geomorphing' },
   freezeCulling: { kind: 'boolean', default: false, label: 'Freeze culling' },
   lodBruteForce: { kind: 'boolean', default: false, label: 'Brute force (full grid, no culling)' },
   blurStrength: { kind: 'number', default: 1.5, min: 0, max: 8, step: 0.1, unit: 'px', label: 'Underwater blur (σ)' },

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
-import { compareWithReference, diffPngs } from './imageCompare';
+import { compareWithOtherReference, compareWithReference, diffPngs } from './imageCompare';
 import { PARITY_HEIGHT_LIMIT, PARITY_NORMAL_LIMIT } from './parity';
 import { PNG } from 'pngjs';
 import { fresnelTable } from '../../src/sim/fresnel';
@@ -38,7 +38,9 @@ describe('the ocean page', () => {
     const { page } = await openOcean(harness, 'seed=1&t=10');
     // Deep water colour #06283a with each channel × 1.03, rounded: #06293c.
     await page.evaluate(() => window.oceano.setParams({ waterColor: '#06293c' }));
-    const brighter = compareWithReference('surface-seed1-t10', await canvasPng(page));
+    // Compared without writing: under UPDATE_REFERENCES=1 compareWithReference would store
+    // the brighter picture as the reference.
+    const brighter = compareWithOtherReference('surface-seed1-t10', await canvasPng(page));
     await page.close();
     console.log(`[oceano] sea colour +3 %: ${brighter.summary}`);
     expect(brighter.matches, brighter.summary).toBe(false);

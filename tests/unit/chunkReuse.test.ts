@@ -7,7 +7,7 @@ import { seededRandom } from '../../src/sim/integerHash';
 
 /** OceanChunks only tells its material where the grid's centre is; the rest is three's scene graph. */
 function chunks(): OceanChunks {
-  return new OceanChunks({ setOceanCenter: () => undefined } as unknown as OceanMaterial);
+  return new OceanChunks({ setOceanCenter: () => undefined, setLodMorph: () => undefined } as unknown as OceanMaterial);
 }
 
 /** What a frame uploads: each drawn mesh's instance count and the used part of its instance data. */
@@ -48,7 +48,7 @@ function walk(seed: number, length: number): Step[] {
     position: [0, 9, 40],
     target: [0, 0, -60],
     fov: 50,
-    settings: { lodDistance: 100, lodBands: 3, lodBruteForce: false, freezeCulling: false },
+    settings: { lodDistance: 100, lodBands: 3, lodBruteForce: false, freezeCulling: false, lodMorph: true },
     bounds: { vertical: 2.5, horizontal: 0 },
   };
   const steps: Step[] = [];
