@@ -41,6 +41,10 @@ export const SCENARIOS: readonly BenchScenario[] = [
   // 60 Hz (every frame evolves the spectra, runs the FFTs and one foam step), and those
   // passes timed alone.
   { name: 'FFT view (waves=fft, clock running)', query: 't=10&waves=fft', passes: true, stepSeconds: 1 / 60 },
+  // Issue 15: the three models side by side against the dearest of them alone, same camera
+  // and wind, both with the clock running (the FFT passes run in both).
+  { name: 'compare-models (seed | gerstner | fft)', query: 't=10&preset=compare-models', stepSeconds: 1 / 60 },
+  { name: 'compare-models camera, fft alone', query: 't=10&preset=compare-models&compare=off&waves=fft', stepSeconds: 1 / 60 },
 ];
 
 /** The ratios the issue's targets are stated in: [label, numerator scenario, denominator scenario or 'floor', target]. */
@@ -51,6 +55,8 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['underwater / default', 'underwater (Snell window, god rays, blur)', 'default view', 2],
   // Issue 12: the spectral sea at most 1.3× the seed's frame, same camera, same run.
   ['FFT view / default', 'FFT view (waves=fft, clock running)', 'default view', 1.3],
+  // Issue 15: a split view costs no more than its dearest model alone.
+  ['compare-models / fft alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, fft alone', 1],
   ['looking up / default', 'looking up', 'default view', null],
   ['looking down / default', 'looking down', 'default view', null],
 ];
