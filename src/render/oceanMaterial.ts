@@ -16,7 +16,7 @@ const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
  * three.js stores cube maps made from images mirrored in x (its flipEnvMap convention),
  * while a cube render target holds each world direction where it is: -1 and +1.
  */
-function skyFlip(sky: CubeTexture): number {
+export function skyFlip(sky: CubeTexture): number {
   return sky.isRenderTargetTexture ? 1 : -1;
 }
 

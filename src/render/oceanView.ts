@@ -23,6 +23,7 @@ import { WaveBinding } from './waveModels/waveBinding';
 import { createWaveModelView } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
 import { SunSky } from './sunSky';
+import { SkyBackground } from './skyBackground';
 import { CompareSide, type OceanMaterialInputs } from './compareSide';
 import { applyWakeUniforms, createWakeUniforms } from './wakeUniforms';
 import { KelvinGuideView } from './kelvinGuideView';
@@ -110,7 +111,7 @@ export class OceanView {
   private heightmapView?: HeightmapView;
   private showHeightmaps = false;
   private readonly nearPoint = new Vector3();
-  private backgroundAbove: Scene['background'] = null;
+  private readonly skyBackground: SkyBackground;
   private readonly syncPixel = new Uint8Array(4);
   /** The sky painted from the sun; absent while a page's own six images are shown. */
   private sunSky: SunSky | null = null;
@@ -147,7 +148,8 @@ export class OceanView {
     if (!customSky) this.sunSky = new SunSky();
     const sky = customSky ?? (this.sunSky as SunSky).texture;
     this.sky = sky;
-    this.scene.background = sky;
+    this.skyBackground = new SkyBackground(sky);
+    this.scene.add(this.skyBackground.mesh);
     this.waveView = createWaveModelView(createWaveModel({ ...params, waves: firstModel(params) }), this.renderer);
     this.waveBinding = new WaveBinding(this.waveView);
     this.fresnelTexture = fresnelTexture(this.fresnelData);
@@ -280,8 +282,7 @@ export class OceanView {
     else this.sky.dispose();
     this.sunSky = null;
     this.sky = sky;
-    if (this.backgroundAbove) this.backgroundAbove = sky;
-    else this.scene.background = sky;
+    this.skyBackground.setSky(sky);
     this.materialInputs.sky = sky;
     this.material.setSky(sky);
     for (const side of this.sides) side.material.setSky(sky);
@@ -349,14 +350,7 @@ export class OceanView {
     this.seaBed.mesh.visible = inWater;
     this.seaBed.follow(this.camera.position);
     // Seen entirely from below, the sky can only show through the surface: skip drawing it.
-    // Whatever background the scene had (the sky, or a test's flat colour) comes back after.
-    if (this.where.submersion === 'below' && this.scene.background !== null) {
-      this.backgroundAbove = this.scene.background;
-      this.scene.background = null;
-    } else if (this.where.submersion !== 'below' && this.backgroundAbove) {
-      this.scene.background = this.backgroundAbove;
-      this.backgroundAbove = null;
-    }
+    this.skyBackground.mesh.visible = this.where.submersion !== 'below';
     this.waterVolume.uCameraDepth.value = Math.max(0, eyeSurface - this.camera.position.y);
   }
 
@@ -554,6 +548,7 @@ export class OceanView {
     this.fresnelFromBelowTexture.dispose();
     if (this.sunSky) this.sunSky.dispose();
     else this.sky.dispose();
+    this.skyBackground.dispose();
     this.renderer.dispose();
   }
 }

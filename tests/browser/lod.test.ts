@@ -52,7 +52,8 @@ function holesBelowHorizon(png: Buffer, position: Vec3, target: Vec3): { holes: 
 async function showMagentaBehindTheSea(page: Page): Promise<void> {
   await page.evaluate(() => {
     const { scene, renderer } = window.oceano.three;
-    scene.background = null;
+    // The sky mesh out of the scene: what the sea does not cover shows the clear colour.
+    scene.getObjectByName('oceano-sky')!.removeFromParent();
     renderer.setClearColor(0xff00ff, 1);
   });
 }

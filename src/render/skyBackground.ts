@@ -1,0 +1,51 @@
+import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, type Camera, type CubeTexture } from 'three';
+import vertexShader from '../../shaders/skyBackground.vert?raw';
+import fragmentShader from '../../shaders/skyBackground.frag?raw';
+import { skyFlip } from './oceanMaterial';
+
+/** What scenes call the sky mesh, so a test can take it out (to see what is behind the sea). */
+export const SKY_BACKGROUND_NAME = 'oceano-sky';
+
+/**
+ * The sky drawn behind the scene: one screen-covering triangle, drawn first, that looks the
+ * sky cube up along each pixel's exact view ray (shaders/skyBackground.*). It replaces
+ * `scene.background`, whose unit box degenerates for a camera looking level along a 45°
+ * diagonal (see the vertex shader).
+ */
+export class SkyBackground {
+  readonly mesh: Mesh<BufferGeometry, ShaderMaterial>;
+  private readonly clipToWorld = new Matrix4();
+
+  constructor(sky: CubeTexture) {
+    const geometry = new BufferGeometry();
+    // One triangle over the whole of clip space [-1, 1]².
+    geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
+    const material = new ShaderMaterial({
+      vertexShader,
+      fragmentShader,
+      uniforms: { uSky: { value: sky }, uSkyFlip: { value: skyFlip(sky) }, uClipToWorldDirection: { value: this.clipToWorld } },
+      depthTest: false,
+      depthWrite: false,
+    });
+    this.mesh = new Mesh(geometry, material);
+    this.mesh.name = SKY_BACKGROUND_NAME;
+    this.mesh.frustumCulled = false;
+    // Drawn before every other opaque object.
+    this.mesh.renderOrder = -Infinity;
+    // The camera of the render in progress (the view's own, a compare strip's, a composer pass's).
+    this.mesh.onBeforeRender = (_renderer, _scene, camera: Camera) => {
+      // Directions only: the camera's rotation without its position, after the inverse projection.
+      this.clipToWorld.extractRotation(camera.matrixWorld).multiply(camera.projectionMatrixInverse);
+    };
+  }
+
+  setSky(sky: CubeTexture): void {
+    this.mesh.material.uniforms.uSky.value = sky;
+    this.mesh.material.uniforms.uSkyFlip.value = skyFlip(sky);
+  }
+
+  dispose(): void {
+    this.mesh.geometry.dispose();
+    this.mesh.material.dispose();
+  }
+}
