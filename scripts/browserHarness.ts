@@ -45,7 +45,10 @@ export async function startHarness(args: string[] = BROWSER_ARGS, connectTo?: st
     baseUrl,
     async close() {
       if (connectTo) {
-        for (const page of await browser.pages()) if (page.url() !== 'about:blank') await page.close();
+        // A page a test left open must not keep the next file's browser busy; one that does
+        // not close within seconds (a hung renderer) is left to the browser's own exit.
+        const closing = (await browser.pages()).filter((page) => page.url() !== 'about:blank').map((page) => page.close().catch(() => undefined));
+        await Promise.race([Promise.all(closing), new Promise((resolve) => setTimeout(resolve, 10_000))]);
         await browser.disconnect();
       } else {
         await browser.close();
