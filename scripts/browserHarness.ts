@@ -53,7 +53,9 @@ export async function startHarness(args: string[] = BROWSER_ARGS, connectTo?: st
       } else {
         await browser.close();
       }
-      await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
+      // Vite's close drops the open keep-alive connections too: a browser that lives on (the
+      // suite's shared one) would otherwise hold the server open until they time out.
+      await server.close();
     },
   };
 }
