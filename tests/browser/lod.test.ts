@@ -1,8 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { PNG } from 'pngjs';
-import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { magentaBelowSlope, showMagentaBehindTheSea, type Vec3 } from './viewRays';
 import { compareWithReference } from './imageCompare';
 import { LOD_COLOUR_VIEWS, viewPng } from './referenceViews';
 import { OCEAN_EXTENT } from '../../src/sim/chunkSelection';
@@ -10,52 +9,18 @@ import { CHUNK_SIZE } from '../../src/sim/lodBands';
 import { maxDisplacement } from '../../src/sim/surface';
 import { defaultParams } from '../../src/sim/params';
 
-const FOV = 55;
-
 const harness = useHarness();
-
-type Vec3 = [number, number, number];
 
 /**
  * Pixels showing the magenta clear colour where the view ray dips steeply enough that it
  * must meet the sea inside the ocean's extent: any such pixel is a hole in the surface.
  */
 function holesBelowHorizon(png: Buffer, position: Vec3, target: Vec3): { holes: number; checked: number } {
-  const image = PNG.sync.read(png);
-  const { width, height, data } = image;
-  const back = position.map((p, k) => p - target[k]) as Vec3;
-  const bl = Math.hypot(...back);
-  const z = back.map((v) => v / bl) as Vec3;
-  const xl = Math.hypot(z[2], z[0]);
-  const x: Vec3 = [z[2] / xl, 0, -z[0] / xl];
-  const y: Vec3 = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]];
-  const t = Math.tan((FOV / 2) * (Math.PI / 180));
   // Nearest edge of the extent, allowing for the camera-following snap; margin ×2 for waves.
   const reach = OCEAN_EXTENT / 2 - CHUNK_SIZE;
   const minSlope = (2 * (position[1] + maxDisplacement(defaultParams()))) / reach;
-  let holes = 0;
-  let checked = 0;
-  for (let py = 0; py < height; py++) {
-    for (let px = 0; px < width; px++) {
-      const cx = ((px + 0.5) / width) * 2 - 1;
-      const cy = 1 - ((py + 0.5) / height) * 2;
-      const dir = [0, 1, 2].map((k) => x[k] * cx * t * (width / height) + y[k] * cy * t - z[k]);
-      if (-dir[1] / Math.hypot(dir[0], dir[2]) < minSlope) continue;
-      checked++;
-      const o = (py * width + px) * 4;
-      if (data[o] > 200 && data[o + 1] < 80 && data[o + 2] > 200) holes++;
-    }
-  }
-  return { holes, checked };
-}
-
-async function showMagentaBehindTheSea(page: Page): Promise<void> {
-  await page.evaluate(() => {
-    const { scene, renderer } = window.oceano.three;
-    // The sky mesh out of the scene: what the sea does not cover shows the clear colour.
-    scene.getObjectByName('oceano-sky')!.removeFromParent();
-    renderer.setClearColor(0xff00ff, 1);
-  });
+  const { magenta, checked } = magentaBelowSlope(png, position, target, () => minSlope);
+  return { holes: magenta, checked };
 }
 
 describe('LOD and culling in the browser', () => {

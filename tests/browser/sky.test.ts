@@ -3,27 +3,10 @@ import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { pixelRay, type Vec3 } from './viewRays';
 import { sunDirection } from '../../src/sim/sun';
 
 const harness = useHarness();
-const FOV = 55;
-type Vec3 = [number, number, number];
-
-/** World direction of the ray through pixel (px, py) of a camera at `position` looking at `target`. */
-function pixelRay(px: number, py: number, width: number, height: number, position: Vec3, target: Vec3): Vec3 {
-  const back = position.map((p, k) => p - target[k]) as Vec3;
-  const bl = Math.hypot(...back);
-  const z = back.map((v) => v / bl) as Vec3;
-  const xl = Math.hypot(z[2], z[0]);
-  const x: Vec3 = [z[2] / xl, 0, -z[0] / xl];
-  const y: Vec3 = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]];
-  const t = Math.tan((FOV / 2) * (Math.PI / 180));
-  const cx = ((px + 0.5) / width) * 2 - 1;
-  const cy = 1 - ((py + 0.5) / height) * 2;
-  const d = [0, 1, 2].map((k) => x[k] * cx * t * (width / height) + y[k] * cy * t - z[k]) as Vec3;
-  const l = Math.hypot(...d);
-  return d.map((v) => v / l) as Vec3;
-}
 
 /**
  * The sun disc in the picture: the centroid of the white pixels (every channel ≥ 250)
