@@ -1,5 +1,7 @@
 import type { Plugin } from 'vite';
+import { readFileSync } from 'node:fs';
 import { defineConfig } from 'vitest/config';
+import { minifyGlsl, SHADER_RAW_IMPORT } from './scripts/glslMinify';
 
 /**
  * The page's Content-Security-Policy: scripts only from this origin (no inline script, no
@@ -47,10 +49,23 @@ function lilGuiFontFile(): Plugin {
   };
 }
 
+/** The build's shader text without comments (scripts/glslMinify.ts); dev and tests read the files as they are. */
+function shaderText(): Plugin {
+  return {
+    name: 'oceano-shader-text',
+    apply: 'build',
+    enforce: 'pre',
+    load(id) {
+      if (!SHADER_RAW_IMPORT.test(id)) return null;
+      return `export default ${JSON.stringify(minifyGlsl(readFileSync(id.replace(/\?raw$/, ''), 'utf8')))};`;
+    },
+  };
+}
+
 export default defineConfig({
   // Relative base: dist/ works when copied under any sub-path of a course site.
   base: './',
-  plugins: [contentSecurityPolicy(), lilGuiFontFile()],
+  plugins: [contentSecurityPolicy(), lilGuiFontFile(), shaderText()],
   /**
    * One build for the page and dist/oceano.js (the <oceano-view> web component): two
    * entries of one bundle, so both import the same minified three.js chunk and the same
