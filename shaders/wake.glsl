@@ -22,19 +22,7 @@ uniform vec2 uWakeTaper;
 // (hull length, hull beam, trail decay s, bow decay s).
 uniform vec4 uWakeFoam;
 
-const float WAKE_TWO_PI = 6.283185307179586;
-
-// sin(2π turns) by folding into a quarter turn and a Taylor series to x^11 (6e-8 over
-// [−π/2, π/2]): the phases reach hundreds of radians and GLSL's own sin only promises
-// about 2^-11 (as shaders/waves/seed.glsl does for the swell).
-float wakeSinTurns(float turns) {
-  float s = fract(turns) - 0.5;
-  float folded = sign(s) * (0.25 - abs(abs(s) - 0.25));
-  float x = WAKE_TWO_PI * folded;
-  float x2 = x * x;
-  float series = 1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0))));
-  return -x * series;
-}
+#include <oceano_sin_turns>
 
 // One source: amplitude τ³/r⁴ · exp(−k²σ²/4) · taper, phase g τ²/(4r) in turns, and the
 // derivatives of phase (radians per metre) and amplitude along x and z.
@@ -47,7 +35,7 @@ void wakeSource(vec2 p, vec4 s, float sigma, float g, out float amplitude, out f
   float hullFilter = exp(-0.25 * k * k * sigma * sigma);
   float taper = 1.0 - smoothstep(uWakeTaper.x, uWakeTaper.y, tau);
   amplitude = tau * tau * tau / (r2 * r2) * hullFilter * taper;
-  turns = k * r / WAKE_TWO_PI;
+  turns = k * r / TURN_RADIANS;
   dPhase = -k * d / r;
   dAmplitude = amplitude * (-4.0 + k * k * sigma * sigma) / r2 * d;
 }
@@ -77,11 +65,11 @@ vec3 wakeHeightAndGradient(vec2 worldXZ) {
     float amplitude = 0.5 * (ampA + ampB) * dt * c;
     float midTurns = 0.5 * (turnsA + turnsB);
     float halfTurns = 0.5 * (turnsB - turnsA);
-    float halfPhase = WAKE_TWO_PI * halfTurns;
-    float sinc = abs(halfPhase) < 1e-4 ? 1.0 - halfPhase * halfPhase / 6.0 : wakeSinTurns(halfTurns) / halfPhase;
-    float wave = wakeSinTurns(midTurns) * sinc;
+    float halfPhase = TURN_RADIANS * halfTurns;
+    float sinc = abs(halfPhase) < 1e-4 ? 1.0 - halfPhase * halfPhase / 6.0 : sinTurns(halfTurns) / halfPhase;
+    float wave = sinTurns(midTurns) * sinc;
     result.x += amplitude * wave;
-    result.yz += amplitude * wakeSinTurns(midTurns + 0.25) * sinc * 0.5 * (dPhaseA + dPhaseB) + 0.5 * dt * c * wave * (dAmpA + dAmpB);
+    result.yz += amplitude * sinTurns(midTurns + 0.25) * sinc * 0.5 * (dPhaseA + dPhaseB) + 0.5 * dt * c * wave * (dAmpA + dAmpB);
     ampA = ampB;
     turnsA = turnsB;
     dPhaseA = dPhaseB;

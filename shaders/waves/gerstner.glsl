@@ -25,22 +25,7 @@ uniform vec4 uGerstnerWaves[GERSTNER_MAX_WAVES];
 // τᵢ in turns, four waves per vec4 (a float array would take a whole vec4 slot per element).
 uniform vec4 uGerstnerPhases[GERSTNER_MAX_WAVES / 4];
 
-const float GERSTNER_TWO_PI = 6.283185307179586;
-
-// GLSL's sin and cos promise only about 2^-11 absolute accuracy (SwiftShader gives just
-// that), which on a 2-m wave is 1e-3 m, ten times the parity budget. So, as in
-// waves/seed.glsl: fold the turn into [-1/4, 1/4] and use the Taylor series to x^11,
-// accurate to 6e-8 over [-π/2, π/2]. Named apart from waves/seed.glsl's sinTurns so both
-// chunks can sit in one program.
-float gerstnerSinTurns(float turns) {
-  float s = fract(turns) - 0.5;
-  float folded = sign(s) * (0.25 - abs(abs(s) - 0.25));
-  float x = GERSTNER_TWO_PI * folded;
-  float x2 = x * x;
-  float series = 1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0))));
-  // sin(2π turns) = −sin(2π s), and folding keeps the sine of s.
-  return -x * series;
-}
+#include <oceano_sin_turns>
 
 float gerstnerTurns(vec4 wave, float tau, vec2 p) {
   return fract(wave.x * p.x) + fract(wave.y * p.y) + tau;
@@ -56,8 +41,8 @@ vec3 waveDisplacement(vec2 gridXZ) {
     if (i >= uGerstnerCount) break;
     vec4 wave = uGerstnerWaves[i];
     float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
-    float s = gerstnerSinTurns(turns);
-    float c = gerstnerSinTurns(turns + 0.25);
+    float s = sinTurns(turns);
+    float c = sinTurns(turns + 0.25);
     vec2 dir = wave.xy / length(wave.xy);
     d.x -= wave.w * dir.x * s;
     d.z -= wave.w * dir.y * s;
@@ -78,9 +63,9 @@ vec3 waveNormal(vec2 gridXZ) {
     if (i >= uGerstnerCount) break;
     vec4 wave = uGerstnerWaves[i];
     float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
-    float s = gerstnerSinTurns(turns);
-    float c = gerstnerSinTurns(turns + 0.25);
-    vec2 k = GERSTNER_TWO_PI * wave.xy;
+    float s = sinTurns(turns);
+    float c = sinTurns(turns + 0.25);
+    vec2 k = TURN_RADIANS * wave.xy;
     float qc = wave.w / length(k) * c;
     dxdx -= qc * k.x * k.x;
     dxdz -= qc * k.x * k.y;
@@ -105,7 +90,7 @@ float waveLensHeight(vec2 worldXZ) {
     if (i >= uGerstnerCount) break;
     vec4 wave = uGerstnerWaves[i];
     if (dot(wave.xy, wave.xy) * GERSTNER_LENS_WAVELENGTH * GERSTNER_LENS_WAVELENGTH < 1.0) continue;
-    h += wave.z * gerstnerSinTurns(gerstnerTurns(wave, gerstnerPhase(i), worldXZ) + 0.25);
+    h += wave.z * sinTurns(gerstnerTurns(wave, gerstnerPhase(i), worldXZ) + 0.25);
   }
   return h;
 }

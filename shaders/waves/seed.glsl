@@ -28,39 +28,16 @@ const float SECOND_SWELL_AMPLITUDE = 0.45;
 const float SECOND_SWELL_FREQUENCY = 1.73;
 const vec2 SECOND_SWELL_DIRECTION = vec2(0.8, 0.6);
 
-const float TWO_PI = 6.283185307179586;
+#include <oceano_sin_turns>
 
-// The swell's angles are counted in turns and taken mod 1 before any trigonometry. The
-// argument k x reaches hundreds of radians far out, and GLSL's sin and cos only promise
-// about 2^-11 absolute accuracy (SwiftShader gives just that: 7e-4 m of swell), so sine is
-// evaluated here: fold the turn into [-1/4, 1/4] and use the Taylor series to x^11,
-// accurate to 6e-8 over [-π/2, π/2], which keeps float32 GPUs within 1e-5 m of the CPU.
+// The swell's angles are counted in turns and taken mod 1 before any trigonometry: the
+// argument k x reaches hundreds of radians far out (sinTurns.glsl says why that matters).
 float swellTurns(float cyclesPerMetre, float x, float phase) {
-  return fract(cyclesPerMetre * x) + phase / TWO_PI;
-}
-
-float sinTurns(float turns) {
-#ifdef OCEANO_NATIVE_SIN
-  // Negative control only (tests/browser/surfaceParity.test.ts defines it): the driver's own
-  // sine, which the parity limits must reject.
-  return sin(TWO_PI * turns);
-#else
-  float s = fract(turns) - 0.5;
-  float folded = sign(s) * (0.25 - abs(abs(s) - 0.25));
-  float x = TWO_PI * folded;
-  float x2 = x * x;
-  float series = 1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0))));
-  // sin(2π turns) = −sin(2π s), and folding keeps the sine of s.
-  return -x * series;
-#endif
-}
-
-float cosTurns(float turns) {
-  return sinTurns(turns + 0.25);
+  return fract(cyclesPerMetre * x) + phase / TURN_RADIANS;
 }
 
 float swellHeight(vec2 p) {
-  float c1 = uSwellFrequency / TWO_PI;
+  float c1 = uSwellFrequency / TURN_RADIANS;
   float first = sinTurns(swellTurns(c1, p.x, uSwellPhase.x)) * cosTurns(swellTurns(c1, p.y, uSwellPhase.y));
   float c2 = c1 * SECOND_SWELL_FREQUENCY;
   float u = SECOND_SWELL_DIRECTION.x * p.x + SECOND_SWELL_DIRECTION.y * p.y;

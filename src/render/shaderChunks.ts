@@ -4,6 +4,7 @@ import waterVolume from '../../shaders/waterVolume.glsl?raw';
 import caustics from '../../shaders/caustics.glsl?raw';
 import waterline from '../../shaders/waterline.glsl?raw';
 import wake from '../../shaders/wake.glsl?raw';
+import sinTurns from '../../shaders/sinTurns.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 
 /**
@@ -14,6 +15,8 @@ import { shaderConstantsChunk } from './shaderConstants';
 const chunks: Record<string, string> = {
   // #defines made from the TypeScript constants the shaders share (index of refraction, …).
   oceano_constants: shaderConstantsChunk(),
+  // Exact sin/cos of phases in turns: the seed's swell, the Gerstner sum and the wake share it.
+  oceano_sin_turns: sinTurns,
   oceano_tiled_heightmap: tiledHeightmap,
   oceano_water_volume: waterVolume,
   // Needs <oceano_waves> included before it; see src/render/causticsUniforms.ts.
