@@ -26,6 +26,10 @@ attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
 varying float vBand;
+// Metres between this chunk's vertices, and the far rings' wave fade (1 on the grid): the
+// fragment shader's per-pixel detail normals fade in where the vertices miss the ripples.
+flat varying float vVertexSpacing;
+varying float vWaveFade;
 // The undisplaced grid point, for models whose normals and foam are evaluated per pixel.
 varying vec2 vGridXZ;
 // The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
@@ -98,5 +102,7 @@ void main() {
   }
   vWorldPosition = world;
   vBand = aChunk.z;
+  vVertexSpacing = aChunk.w * float(band < 6 ? bandStep(band) : 1);
+  vWaveFade = waves;
   gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);
 }

@@ -50,6 +50,7 @@ export class OceanMaterial extends ShaderMaterial {
         uOceanCenter: { value: new Vector2() },
         uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
         uLodColors: { value: false },
+        uDetailNormals: { value: true },
         uWakeOn: { value: false },
         uLodCamera: { value: new Vector3() },
         uLodHeight: { value: 0 },
@@ -114,6 +115,11 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uLodCamera.value as Vector3).fromArray(camera);
     this.uniforms.uLodHeight.value = height;
     (this.uniforms.uMorphZones.value as Float32Array).set(zones);
+  }
+
+  /** Per-pixel detail normals in the far bands; off only for a negative control. */
+  setDetailNormals(on: boolean): void {
+    this.uniforms.uDetailNormals.value = on;
   }
 
   /** The LOD debugger's view: each chunk tinted by its band. */
