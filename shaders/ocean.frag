@@ -23,7 +23,10 @@ uniform float uHazeDensity;
 uniform bool uShowNormals;
 uniform bool uLodColors;
 
-varying vec3 vWorldPosition;
+// The pixel's position and the eye's relative to the render origin (see ocean.vert).
+varying vec3 vRelativePosition;
+uniform vec3 uEyeRelative;
+uniform mat4 uViewRelative;
 varying vec3 vNormal;
 varying float vBand;
 varying vec2 vGridXZ;
@@ -87,7 +90,7 @@ vec3 shadeFromBelow(vec3 v, vec3 n) {
 }
 
 void main() {
-  vec3 toEye = cameraPosition - vWorldPosition;
+  vec3 toEye = uEyeRelative - vRelativePosition;
   float distance = length(toEye);
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
@@ -95,7 +98,7 @@ void main() {
   // Exact normals (spectral slopes, or the Gerstner sum's closed form) at this pixel's own
   // grid point, not interpolated between vertices: the mapping from grid to displaced
   // surface is smooth, so interpolating the grid point is exact to first order.
-  bool fabricatedHalf = uNormalsCompare && (viewMatrix * vec4(vWorldPosition, 1.0)).x > 0.0;
+  bool fabricatedHalf = uNormalsCompare && (uViewRelative * vec4(vRelativePosition, 1.0)).x > 0.0;
   if (!uFlatNormals && !fabricatedHalf) {
     n = waveNormal(vGridXZ);
     // The wake's slope is interpolated from the vertices (its waves are 8 m and longer).

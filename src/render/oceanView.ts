@@ -46,6 +46,8 @@ const NEAR_PLANE_SAMPLES: readonly [number, number][] = [-1, 0, 1].flatMap((x) =
 export interface ShadingFixes {
   /** Per-pixel detail normals in the far bands (shaders/ocean.frag, WAVE_DETAIL_NORMALS). */
   detailNormals: boolean;
+  /** Positions relative to a render origin near the camera on the GPU (OceanMaterial.onBeforeRender). */
+  cameraRelative: boolean;
 }
 
 export interface RenderStats extends ChunkStats {
@@ -499,6 +501,7 @@ export class OceanView {
    */
   setShadingFixes(fixes: Partial<ShadingFixes>): void {
     if (fixes.detailNormals !== undefined) this.material.setDetailNormals(fixes.detailNormals);
+    if (fixes.cameraRelative !== undefined) this.material.absoluteCoordinates = !fixes.cameraRelative;
   }
 
   /**

@@ -8,6 +8,9 @@ const harness = useHarness();
 
 // Measured at 320 × 180: 7.83 with detail normals, 5.95 with vertex normals only (main).
 const MIN_FAR_ENERGY = 7;
+// Measured: 3.05 / 3.07 = 0.99 with camera-relative positions, 5.79 / 3.07 = 1.89 with world
+// coordinates (main). The two spots have different waves, so not 1 exactly.
+const MAX_FAR_GLINT_RATIO = 1.3;
 /** From 60 m up towards the glint point 60 / tan 18° = 184.7 m out at azimuth 20°. */
 const GLINT_VIEW = '0,60,0,63.2,0,-173.6';
 
@@ -56,4 +59,27 @@ describe('shading far away', () => {
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
+
+  it('draws the sun glint 10⁶ m out as smooth as near the origin', async () => {
+    // From 2 m up, 10 m back from the point looked at: the glint fills rows 70–150 of rows 60–179 measured at
+    // 320 × 180. The reference spot is 1.4 km from the origin, away from the boat.
+    const view = (x: number) => ({ position: [x, 2, x + 10] as [number, number, number], target: [x, 0, x] as [number, number, number] });
+    const { page, consoleErrors } = await openOcean(harness, 't=10', 320, 180);
+    await page.evaluate(() => window.oceano.pause());
+    const energyAt = async (x: number) => {
+      await page.evaluate((pose) => window.oceano.setCamera(pose), view(x));
+      return rowBandEnergy(await redraw(page), 60, 179);
+    };
+    const near = await energyAt(1000);
+    const far = await energyAt(999000);
+    // Negative control, and main's picture: world coordinates in float32 on the GPU.
+    await page.evaluate(() => window.oceano.debug.setShadingFixes({ cameraRelative: false }));
+    const absolute = await energyAt(999000);
+    console.log(`[oceano] glint energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, world coordinates ${absolute.toFixed(2)}`);
+    expect(far).toBeLessThan(near * MAX_FAR_GLINT_RATIO);
+    expect(absolute).toBeGreaterThan(near * MAX_FAR_GLINT_RATIO);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
 });
+
