@@ -23,11 +23,19 @@ uniform float uHazeDensity;
 uniform bool uShowNormals;
 uniform bool uLodColors;
 
-varying vec3 vWorldPosition;
+// The pixel's position and the eye's relative to the render origin (see ocean.vert).
+varying vec3 vRelativePosition;
+uniform vec3 uEyeRelative;
+uniform mat4 uViewRelative;
 varying vec3 vNormal;
 varying float vBand;
 varying vec2 vGridXZ;
 varying vec2 vWakeSlope;
+flat varying float vVertexSpacing;
+varying float vWaveFade;
+// Per-pixel detail normals in the far bands (models with WAVE_DETAIL_NORMALS); off only
+// for a negative control (OceanView.setShadingFixes).
+uniform bool uDetailNormals;
 varying float vWakeFoam;
 // The boat's wake is on (its uniforms live in the vertex shader's oceano_wake chunk).
 uniform bool uWakeOn;
@@ -82,7 +90,7 @@ vec3 shadeFromBelow(vec3 v, vec3 n) {
 }
 
 void main() {
-  vec3 toEye = cameraPosition - vWorldPosition;
+  vec3 toEye = uEyeRelative - vRelativePosition;
   float distance = length(toEye);
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
@@ -90,11 +98,42 @@ void main() {
   // Exact normals (spectral slopes, or the Gerstner sum's closed form) at this pixel's own
   // grid point, not interpolated between vertices: the mapping from grid to displaced
   // surface is smooth, so interpolating the grid point is exact to first order.
-  bool fabricatedHalf = uNormalsCompare && (viewMatrix * vec4(vWorldPosition, 1.0)).x > 0.0;
+  bool fabricatedHalf = uNormalsCompare && (uViewRelative * vec4(vRelativePosition, 1.0)).x > 0.0;
   if (!uFlatNormals && !fabricatedHalf) {
     n = waveNormal(vGridXZ);
     // The wake's slope is interpolated from the vertices (its waves are 8 m and longer).
     if (uWakeOn) n = normalize(vec3(n.x - vWakeSlope.x * n.y, n.y, n.z - vWakeSlope.y * n.y));
+  }
+#endif
+#ifdef WAVE_DETAIL_NORMALS
+  // A model whose normals are per vertex loses its short waves where the band's vertices
+  // are farther apart than they are long (48 m in band 5, the ripples are a few metres):
+  // the far sea goes flat. There the normal is evaluated per pixel instead, faded in as
+  // the vertex spacing grows past DETAIL_FROM (flat per chunk, so exactly 0 below it) and out again as the pixel's footprint on
+  // the sea grows past the ripples' length, where the detail could only alias (a normal
+  // map would need mipmapped slopes there). Near the camera, and in the default view
+  // (whose far bands are seen at grazing angles, footprints of tens of metres), the
+  // weight is 0 and the picture is unchanged.
+  // Band 2 (6 m) keeps its vertex normals, band 3 (12 m) and coarser get the full detail.
+  const float DETAIL_FROM = 8.0;
+  const float DETAIL_FULL = 12.0;
+  const float FOOTPRINT_FULL = 2.0;
+  const float FOOTPRINT_NONE = 4.0;
+  const float LONGEST_FULL = 4.0;
+  const float LONGEST_NONE = 8.0;
+  if (uDetailNormals && !uFlatNormals) {
+    // The square root of the pixel's area on the sea: at grazing angles a pixel is long
+    // along the view and narrow across it, and the ripples show across.
+    // Along the view the pixel may still not exceed the longest ripples' half wavelength.
+    float across = length(dFdx(vGridXZ));
+    float along = length(dFdy(vGridXZ));
+    float footprint = sqrt(across * along);
+    float weight = smoothstep(DETAIL_FROM, DETAIL_FULL, vVertexSpacing) * (1.0 - smoothstep(FOOTPRINT_FULL, FOOTPRINT_NONE, footprint))
+      * (1.0 - smoothstep(LONGEST_FULL, LONGEST_NONE, max(across, along)));
+    if (weight > 0.0) {
+      vec3 detail = normalize(mix(vec3(0.0, 1.0, 0.0), waveDetailNormal(vGridXZ), vWaveFade));
+      n = normalize(mix(n, detail, weight));
+    }
   }
 #endif
   if (uShowNormals) {

@@ -23,9 +23,20 @@ uniform vec2 uMorphZones[6];
 attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, metres per grid unit
 attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
 
-varying vec3 vWorldPosition;
+// Positions relative to uRenderOrigin, a point near the camera that float32 holds exactly
+// (see OceanMaterial.onBeforeRender): 10⁶ m from the world's origin a float32 world
+// position is rounded to 6 cm, which moved the vertices and turned the eye vector, and
+// with it the sun glint, into a checkerboard. uViewRelative is the view matrix for these
+// relative positions, made in double precision on the CPU.
+uniform vec2 uRenderOrigin;
+uniform mat4 uViewRelative;
+varying vec3 vRelativePosition;
 varying vec3 vNormal;
 varying float vBand;
+// Metres between this chunk's vertices, and the far rings' wave fade (1 on the grid): the
+// fragment shader's per-pixel detail normals fade in where the vertices miss the ripples.
+flat varying float vVertexSpacing;
+varying float vWaveFade;
 // The undisplaced grid point, for models whose normals and foam are evaluated per pixel.
 varying vec2 vGridXZ;
 // The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
@@ -96,7 +107,13 @@ void main() {
     vWakeSlope = wake.yz;
     vWakeFoam = wakeFoam(world.xz);
   }
-  vWorldPosition = world;
+  // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
+  // the rest is small. So the relative position keeps its bits wherever the camera is.
+  vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
+  vec3 relative = vec3(relativeGrid.x + d.x, world.y, relativeGrid.y + d.z);
+  vRelativePosition = relative;
   vBand = aChunk.z;
-  gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);
+  vVertexSpacing = aChunk.w * float(band < 6 ? bandStep(band) : 1);
+  vWaveFade = waves;
+  gl_Position = projectionMatrix * uViewRelative * vec4(relative, 1.0);
 }

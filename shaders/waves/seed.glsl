@@ -87,6 +87,15 @@ vec3 waveNormal(vec2 gridXZ) {
   return oceanNormal(gridXZ, gridXZ == lastHeightPoint ? lastHeight : oceanHeight(gridXZ));
 }
 
+// Per-pixel detail for the far bands (WAVE_DETAIL_NORMALS, see ocean.frag): the same
+// fabricated normal the vertices get, evaluated at the pixel's own point. Where the band's
+// vertices lie farther apart than the ripples are long, the interpolated vertex normal
+// has lost them; this puts them back.
+#define WAVE_DETAIL_NORMALS
+vec3 waveDetailNormal(vec2 p) {
+  return oceanNormal(p, oceanHeight(p));
+}
+
 // The ripples alone: the swell is too long to focus light within the shafts' few metres.
 float waveLensHeight(vec2 worldXZ) {
   return rippleHeight(worldXZ);

@@ -4,7 +4,7 @@ import type { SurfaceSample } from '../sim/waveModel';
 import type { PhysicsReport } from '../sim/physicsReport';
 import type { ProbeSample } from '../render/surfaceProbe';
 import type { PassTiming } from '../render/underwaterPost';
-import type { OceanView } from '../render/oceanView';
+import type { OceanView, ShadingFixes } from '../render/oceanView';
 import { checkBatches } from './apiChecks';
 
 /**
@@ -52,6 +52,8 @@ export interface OceanoApi {
     lodUpdateMs(batches?: number): number;
     /** Under the water: bake the shaft light as the window generic wave models get, even for the seed. */
     forceShaftLightWindow(on: boolean): void;
+    /** Negative controls: turn off fixes for far views (see OceanView.setShadingFixes). */
+    setShadingFixes(fixes: Partial<ShadingFixes>): void;
     /** How many times the physics estimators have run, once the open panel has drawn. */
     physicsRuns(): Promise<number>;
   };
@@ -97,6 +99,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
       heightmaps: () => (app.debugView().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
       lodUpdateMs: (batches) => app.debugView().timeLodUpdate(checkBatches(batches)),
       forceShaftLightWindow: (on) => app.debugView().forceShaftLightWindow(on === true),
+      setShadingFixes: (fixes) => app.debugView().setShadingFixes(fixes),
       physicsRuns: async () => {
         const panel = started(app.physicsPanel());
         await panel.settled();
@@ -141,7 +144,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     shareUrl: fail,
     activity: fail,
     physics: fail,
-    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, physicsRuns: () => Promise.reject(reason) },
+    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, setShadingFixes: fail, physicsRuns: () => Promise.reject(reason) },
     get three(): never {
       throw reason;
     },

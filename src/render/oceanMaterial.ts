@@ -1,4 +1,5 @@
-import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector2, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
+import { Color, DoubleSide, FrontSide, Matrix4, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture } from 'three';
+import { renderOrigin } from '../sim/renderOrigin';
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import { CHUNK_QUADS } from '../sim/lodBands';
@@ -50,6 +51,10 @@ export class OceanMaterial extends ShaderMaterial {
         uOceanCenter: { value: new Vector2() },
         uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
         uLodColors: { value: false },
+        uDetailNormals: { value: true },
+        uRenderOrigin: { value: new Vector2() },
+        uViewRelative: { value: new Matrix4() },
+        uEyeRelative: { value: new Vector3() },
         uWakeOn: { value: false },
         uLodCamera: { value: new Vector3() },
         uLodHeight: { value: 0 },
@@ -57,6 +62,28 @@ export class OceanMaterial extends ShaderMaterial {
       },
     });
     waves.attach(this);
+  }
+
+  /**
+   * World coordinates on the GPU (origin fixed at 0) instead of camera-relative ones; only
+   * for a negative control: 10⁶ m out the glint turns into a checkerboard.
+   */
+  absoluteCoordinates = false;
+  private readonly originShift = new Matrix4();
+  private readonly eye = new Vector3();
+
+  /**
+   * Before each draw, for the camera drawing it: the render origin near that camera, the
+   * view matrix for positions relative to it and the eye relative to it, all in double
+   * precision here so that the shaders only see small numbers.
+   */
+  override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
+    const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
+    const [x, z] = this.absoluteCoordinates ? [0, 0] : renderOrigin(eye.x, eye.z);
+    (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
+    this.originShift.makeTranslation(x, 0, z);
+    (this.uniforms.uViewRelative.value as Matrix4).multiplyMatrices(camera.matrixWorldInverse, this.originShift);
+    (this.uniforms.uEyeRelative.value as Vector3).set(eye.x - x, eye.y, eye.z - z);
   }
 
   /**
@@ -114,6 +141,11 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uLodCamera.value as Vector3).fromArray(camera);
     this.uniforms.uLodHeight.value = height;
     (this.uniforms.uMorphZones.value as Float32Array).set(zones);
+  }
+
+  /** Per-pixel detail normals in the far bands; off only for a negative control. */
+  setDetailNormals(on: boolean): void {
+    this.uniforms.uDetailNormals.value = on;
   }
 
   /** The LOD debugger's view: each chunk tinted by its band. */

@@ -42,6 +42,14 @@ const WATERLINE_MARGIN = 0.25;
 const CAMERA_FAR = 1e9;
 const NEAR_PLANE_SAMPLES: readonly [number, number][] = [-1, 0, 1].flatMap((x) => [-1, 0, 1].map((y) => [x, y] as [number, number]));
 
+/** The fixes for far views, each on unless a negative control turns it off. */
+export interface ShadingFixes {
+  /** Per-pixel detail normals in the far bands (shaders/ocean.frag, WAVE_DETAIL_NORMALS). */
+  detailNormals: boolean;
+  /** Positions relative to a render origin near the camera on the GPU (OceanMaterial.onBeforeRender). */
+  cameraRelative: boolean;
+}
+
 export interface RenderStats extends ChunkStats {
   drawCalls: number;
   triangles: number;
@@ -485,6 +493,15 @@ export class OceanView {
     this.renderer.render(this.scene, this.camera);
     sync();
     return [...wavePasses, { name: 'scene', ms: performance.now() - start }];
+  }
+
+  /**
+   * Debug, for the negative controls of tests/browser/shading.test.ts: switch off the fixes
+   * for far views, so the tests can show they catch the fault each one removes.
+   */
+  setShadingFixes(fixes: Partial<ShadingFixes>): void {
+    if (fixes.detailNormals !== undefined) this.material.setDetailNormals(fixes.detailNormals);
+    if (fixes.cameraRelative !== undefined) this.material.absoluteCoordinates = !fixes.cameraRelative;
   }
 
   /**

@@ -1,0 +1,85 @@
+import { describe, expect, it } from 'vitest';
+import { PNG } from 'pngjs';
+import type { Page } from 'puppeteer';
+import { canvasPng, openOcean } from './harness';
+import { useHarness } from './useHarness';
+
+const harness = useHarness();
+
+// Measured at 320 × 180: 7.83 with detail normals, 5.95 with vertex normals only (main).
+const MIN_FAR_ENERGY = 7;
+// Measured: 3.05 / 3.07 = 0.99 with camera-relative positions, 5.79 / 3.07 = 1.89 with world
+// coordinates (main). The two spots have different waves, so not 1 exactly.
+const MAX_FAR_GLINT_RATIO = 1.3;
+/** From 60 m up towards the glint point 60 / tan 18° = 184.7 m out at azimuth 20°. */
+const GLINT_VIEW = '0,60,0,63.2,0,-173.6';
+
+/**
+ * High-frequency energy of a band of rows: the mean absolute difference in luminance
+ * (0–255) between each pixel and its right and lower neighbours. A flat, hazed sea scores
+ * near 0; ripples add contrast from pixel to pixel.
+ */
+function rowBandEnergy(png: Buffer, y0: number, y1: number): number {
+  const { width, data } = PNG.sync.read(png);
+  const luma = (x: number, y: number) => {
+    const o = (y * width + x) * 4;
+    return 0.2126 * data[o] + 0.7152 * data[o + 1] + 0.0722 * data[o + 2];
+  };
+  let sum = 0;
+  let count = 0;
+  for (let y = y0; y < y1; y++) {
+    for (let x = 0; x < width - 1; x++) {
+      sum += Math.abs(luma(x, y) - luma(x + 1, y)) + Math.abs(luma(x, y) - luma(x, y + 1));
+      count++;
+    }
+  }
+  return sum / count;
+}
+
+async function redraw(page: Page): Promise<Buffer> {
+  await page.evaluate(() => window.oceano.renderFrame());
+  return canvasPng(page);
+}
+
+describe('shading far away', () => {
+  it('keeps the ripples in the glint where the vertices are 24 m and more apart', async () => {
+    // lodDistance=20 puts bands 4 and 5 (24 and 48 m between vertices) from 160 m out; from
+    // 60 m up the sun's glint (elevation 18°, azimuth 20°) lies 185 m out, where a pixel at
+    // 320 × 180 covers about 1 m across the view and 3.5 m along it. Rows 40–100 hold the
+    // glint in those bands.
+    const { page, consoleErrors } = await openOcean(harness, `t=10&lodDistance=20&cam=${GLINT_VIEW}`, 320, 180);
+    await page.evaluate(() => window.oceano.pause());
+    const detailed = rowBandEnergy(await redraw(page), 40, 100);
+    // Negative control, and main's picture: the interpolated vertex normals alone.
+    await page.evaluate(() => window.oceano.debug.setShadingFixes({ detailNormals: false }));
+    const flat = rowBandEnergy(await redraw(page), 40, 100);
+    console.log(`[oceano] far-band energy: with detail normals ${detailed.toFixed(2)}, vertex normals only ${flat.toFixed(2)}`);
+    expect(detailed).toBeGreaterThan(MIN_FAR_ENERGY);
+    expect(flat).toBeLessThan(MIN_FAR_ENERGY);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('draws the sun glint 10⁶ m out as smooth as near the origin', async () => {
+    // From 2 m up, 10 m back from the point looked at: the glint fills rows 70–150 of rows 60–179 measured at
+    // 320 × 180. The reference spot is 1.4 km from the origin, away from the boat.
+    const view = (x: number) => ({ position: [x, 2, x + 10] as [number, number, number], target: [x, 0, x] as [number, number, number] });
+    const { page, consoleErrors } = await openOcean(harness, 't=10', 320, 180);
+    await page.evaluate(() => window.oceano.pause());
+    const energyAt = async (x: number) => {
+      await page.evaluate((pose) => window.oceano.setCamera(pose), view(x));
+      return rowBandEnergy(await redraw(page), 60, 179);
+    };
+    const near = await energyAt(1000);
+    const far = await energyAt(999000);
+    // Negative control, and main's picture: world coordinates in float32 on the GPU.
+    await page.evaluate(() => window.oceano.debug.setShadingFixes({ cameraRelative: false }));
+    const absolute = await energyAt(999000);
+    console.log(`[oceano] glint energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, world coordinates ${absolute.toFixed(2)}`);
+    expect(far).toBeLessThan(near * MAX_FAR_GLINT_RATIO);
+    expect(absolute).toBeGreaterThan(near * MAX_FAR_GLINT_RATIO);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+});
+
