@@ -45,13 +45,15 @@ export interface OceanoApi {
     fresnelTable(): Float32Array;
     /** The reflectance table seen from under the water (n₁ = 1.333, n₂ = 1). */
     fresnelTableFromBelow(): Float32Array;
-    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water, after 'fft' and 'foam' when waves=fft). */
+    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water, or 'scene <model> strip' per compare strip, after 'fft' and 'foam' when a model is fft). */
     passTimings(): PassTiming[];
     heightmaps(): { size: number; data: Float32Array }[];
     /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
     lodUpdateMs(batches?: number): number;
     /** Under the water: bake the shaft light as the window generic wave models get, even for the seed. */
     forceShaftLightWindow(on: boolean): void;
+    /** compare=: whether each strip skips the waves of vertices whose triangles all fall outside it (on by default; off to measure what that saves). */
+    stripCulling(on: boolean): void;
     /** How many times the physics estimators have run, once the open panel has drawn. */
     physicsRuns(): Promise<number>;
   };
@@ -97,6 +99,9 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
       heightmaps: () => (app.debugView().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
       lodUpdateMs: (batches) => app.debugView().timeLodUpdate(checkBatches(batches)),
       forceShaftLightWindow: (on) => app.debugView().forceShaftLightWindow(on === true),
+      stripCulling: (on) => {
+        app.debugView().stripCulling = on === true;
+      },
       physicsRuns: async () => {
         const panel = started(app.physicsPanel());
         await panel.settled();
@@ -141,7 +146,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     shareUrl: fail,
     activity: fail,
     physics: fail,
-    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, physicsRuns: () => Promise.reject(reason) },
+    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, stripCulling: fail, physicsRuns: () => Promise.reject(reason) },
     get three(): never {
       throw reason;
     },

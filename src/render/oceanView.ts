@@ -1,4 +1,4 @@
-import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
+import { Color, Frustum, Matrix4, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
 import type { OceanParams, ParamKey } from '../sim/params';
 import { paramsChanged } from '../sim/paramChanges';
 import { median } from '../sim/sampleStatistics';
@@ -123,6 +123,10 @@ export class OceanView {
   private readonly bufferSize = new Vector2();
   /** A strip's culling camera (see stripCamera). */
   private readonly cullCamera = new PerspectiveCamera();
+  private readonly stripFrustum = new Frustum();
+  private readonly stripViewProjection = new Matrix4();
+  /** Debug (oceano.debug.stripCulling): whether compare strips skip the waves of vertices outside them. */
+  stripCulling = true;
 
   /**
    * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
@@ -341,8 +345,17 @@ export class OceanView {
       const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
       const chunks = [this.ocean, ...this.sides.map((side) => side.chunks)];
       const bounds = [this.cullingBounds(), ...this.sides.map((side) => side.bounds())];
+      const materials = [this.material, ...this.sides.map((side) => side.material)];
       strips.forEach((strip, i) => {
-        if (strip.x1 > strip.x0) chunks[i].update(this.stripCamera(strip, width), this.lod, bounds[i]);
+        if (strip.x1 <= strip.x0) return;
+        const camera = this.stripCamera(strip, width);
+        chunks[i].update(camera, this.lod, bounds[i]);
+        // Within the chunks that reach the strip, each vertex whose triangles all fall outside
+        // it skips the waves (shaders/ocean.vert stripOutside): a chunk straddling a divider
+        // costs each model only its own side's vertices. Switched on only while drawCompare draws.
+        this.stripFrustum.setFromProjectionMatrix(this.stripViewProjection.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
+        // three's Frustum: planes 0 and 1 are the right and left sides.
+        materials[i].setStripCull([this.stripFrustum.planes[0], this.stripFrustum.planes[1]], bounds[i]);
       });
     }
     const inWater = this.where.submersion !== 'above';
@@ -408,6 +421,10 @@ export class OceanView {
     const ratio = this.renderer.getPixelRatio();
     const groups = [this.ocean.group, ...this.sides.map((side) => side.chunks.group)];
     const names = [this.waveView.name, ...this.sides.map((side) => side.name)];
+    const materials = [this.material, ...this.sides.map((side) => side.material)];
+    // The strip planes set by update() take effect only here: every other draw (the model alone,
+    // below the water, the probe) evaluates every vertex.
+    for (const material of materials) material.uniforms.uStripCull.value = this.stripCulling;
     this.renderer.setScissorTest(true);
     try {
       strips.forEach((strip, i) => {
@@ -421,6 +438,7 @@ export class OceanView {
     } finally {
       this.renderer.setScissorTest(false);
       groups.forEach((group, j) => (group.visible = j === 0));
+      for (const material of materials) material.uniforms.uStripCull.value = false;
     }
   }
 
