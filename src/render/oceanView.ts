@@ -125,7 +125,11 @@ export class OceanView {
   private readonly cullCamera = new PerspectiveCamera();
   private readonly stripFrustum = new Frustum();
   private readonly stripViewProjection = new Matrix4();
-  /** Debug (oceano.debug.stripCulling): whether compare strips skip the waves of vertices outside them. */
+  /**
+   * Debug (oceano.debug.stripCulling): whether a compare strip draws a chunk straddling it as
+   * the tiles that reach it (OceanChunks) and skips the waves of vertices outside it
+   * (shaders/ocean.vert). Off, each strip draws whole chunks, every vertex evaluated.
+   */
   stripCulling = true;
 
   /**
@@ -349,7 +353,7 @@ export class OceanView {
       strips.forEach((strip, i) => {
         if (strip.x1 <= strip.x0) return;
         const camera = this.stripCamera(strip, width);
-        chunks[i].update(camera, this.lod, bounds[i]);
+        chunks[i].update(camera, this.lod, bounds[i], this.stripCulling);
         // Within the chunks that reach the strip, each vertex whose triangles all fall outside
         // it skips the waves (shaders/ocean.vert stripOutside): a chunk straddling a divider
         // costs each model only its own side's vertices. Switched on only while drawCompare draws.
