@@ -19,12 +19,6 @@ uniform vec2 uFarFade;
 uniform vec3 uLodCamera;
 uniform float uLodHeight;
 uniform vec2 uMorphZones[6];
-// compare=: the side planes (world space, normals inward) of the strip this material's model
-// is drawn into, and how far its waves can move a vertex (horizontal, vertical, metres, the
-// wake's height included). Off (the model alone) nothing is skipped. See stripOutside().
-uniform bool uStripCull;
-uniform vec4 uStripPlanes[2];
-uniform vec2 uStripReach;
 
 attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, metres per grid unit
 attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
@@ -50,26 +44,6 @@ int snapEdge(int k, int step) {
 // A band's vertex step (BAND_STEPS in src/sim/lodBands.ts).
 int bandStep(int band) {
   return band == 0 ? 1 : band == 1 ? 2 : band == 2 ? 3 : band == 3 ? 6 : band == 4 ? 12 : 24;
-}
-
-// True when every triangle this vertex belongs to lies wholly outside one of the strip's side
-// planes, so none of them can put a fragment inside the strip's scissor. Those triangles lie
-// within the box around the vertex's own grid point that holds its grid neighbours (one step
-// `own` away, each moved by morphing or edge snapping by at most half a coarser step, so
-// `reachUnits` = own + the largest of those steps, in grid units) grown by the waves' largest
-// displacement. Such a vertex is placed flat at its grid point, inside that box, without
-// evaluating the waves: its triangles stay outside the plane and the strip's pixels are
-// exactly those of the model drawn alone, while the costly wave evaluation (the FFT's texture
-// reads, Gerstner's sum) is spent only where the strip needs it. 5 cm covers float32 rounding
-// of the plane test at 4 km (about 1 mm).
-bool stripOutside(vec2 gridXZ, float reachUnits, float metresPerUnit) {
-  float reach = reachUnits * metresPerUnit + uStripReach.x + 0.05;
-  for (int k = 0; k < 2; k++) {
-    vec4 plane = uStripPlanes[k];
-    float nearest = plane.x * gridXZ.x + plane.z * gridXZ.y + plane.w + (abs(plane.x) + abs(plane.z)) * reach + abs(plane.y) * (uStripReach.y + 0.05);
-    if (nearest < 0.0) return true;
-  }
-  return false;
 }
 
 void main() {
@@ -98,21 +72,6 @@ void main() {
   // float32, and a shared vertex's morph is computed from the same numbers by both chunks,
   // so they agree bit for bit on its position (and height).
   vec2 gridXZ = vec2(aChunk.x + morphed.x * aChunk.w, aChunk.y + morphed.y * aChunk.w);
-  // The grid's bands only (the far rings and the skirt are few vertices, far away).
-  if (uStripCull && band < 6) {
-    float largestEdge = max(max(aEdgeSteps.x, aEdgeSteps.y), max(aEdgeSteps.z, aEdgeSteps.w));
-    float coarser = max(band < 5 ? float(bandStep(band + 1)) : 0.0, largestEdge);
-    if (stripOutside(gridXZ, float(own) + coarser, aChunk.w)) {
-      vWorldPosition = vec3(gridXZ.x, 0.0, gridXZ.y);
-      vNormal = vec3(0.0, 1.0, 0.0);
-      vBand = aChunk.z;
-      vGridXZ = gridXZ;
-      vWakeSlope = vec2(0.0);
-      vWakeFoam = 0.0;
-      gl_Position = projectionMatrix * viewMatrix * vec4(vWorldPosition, 1.0);
-      return;
-    }
-  }
   vec2 fromCenter = abs(gridXZ - uOceanCenter);
   float waves = 1.0 - smoothstep(uFarFade.x, uFarFade.y, max(fromCenter.x, fromCenter.y));
   vec3 d = waveDisplacement(gridXZ);

@@ -52,7 +52,7 @@ export interface OceanoApi {
     lodUpdateMs(batches?: number): number;
     /** Under the water: bake the shaft light as the window generic wave models get, even for the seed. */
     forceShaftLightWindow(on: boolean): void;
-    /** compare=: whether each strip draws only the tiles of its straddling chunks that reach it and skips the waves of vertices whose triangles all fall outside it (on by default; off to measure what that saves). */
+    /** compare=: whether each strip draws a chunk straddling it as only the tiles that reach it (on by default; off to measure what that saves). */
     stripCulling(on: boolean): void;
     /** How many times the physics estimators have run, once the open panel has drawn. */
     physicsRuns(): Promise<number>;

@@ -1,4 +1,4 @@
-import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector2, Vector3, Vector4, type CubeTexture, type IUniform, type Plane, type Texture } from 'three';
+import { Color, DoubleSide, FrontSide, ShaderMaterial, Vector2, Vector3, type CubeTexture, type IUniform, type Texture } from 'three';
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import { CHUNK_QUADS } from '../sim/lodBands';
@@ -54,9 +54,6 @@ export class OceanMaterial extends ShaderMaterial {
         uLodCamera: { value: new Vector3() },
         uLodHeight: { value: 0 },
         uMorphZones: { value: morphZones(1, 1, false) },
-        uStripCull: { value: false },
-        uStripPlanes: { value: [new Vector4(), new Vector4()] },
-        uStripReach: { value: new Vector2() },
       },
     });
     waves.attach(this);
@@ -117,19 +114,6 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uLodCamera.value as Vector3).fromArray(camera);
     this.uniforms.uLodHeight.value = height;
     (this.uniforms.uMorphZones.value as Float32Array).set(zones);
-  }
-
-  /**
-   * compare=: skip the wave evaluation of vertices whose triangles all lie outside one of
-   * `planes` (the strip's side planes, normals inward; see stripOutside in shaders/ocean.vert),
-   * `reach` being how far the waves can move a vertex. null: the model alone, nothing skipped.
-   */
-  setStripCull(planes: readonly [Plane, Plane] | null, reach: { horizontal: number; vertical: number }): void {
-    this.uniforms.uStripCull.value = planes !== null;
-    if (!planes) return;
-    const target = this.uniforms.uStripPlanes.value as Vector4[];
-    planes.forEach((plane, k) => target[k].set(plane.normal.x, plane.normal.y, plane.normal.z, plane.constant));
-    (this.uniforms.uStripReach.value as Vector2).set(reach.horizontal, reach.vertical);
   }
 
   /** The LOD debugger's view: each chunk tinted by its band. */

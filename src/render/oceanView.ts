@@ -1,4 +1,4 @@
-import { Color, Frustum, Matrix4, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
+import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type CubeTexture, type DataTexture, type IUniform, type Object3D } from 'three';
 import type { OceanParams, ParamKey } from '../sim/params';
 import { paramsChanged } from '../sim/paramChanges';
 import { median } from '../sim/sampleStatistics';
@@ -123,12 +123,9 @@ export class OceanView {
   private readonly bufferSize = new Vector2();
   /** A strip's culling camera (see stripCamera). */
   private readonly cullCamera = new PerspectiveCamera();
-  private readonly stripFrustum = new Frustum();
-  private readonly stripViewProjection = new Matrix4();
   /**
    * Debug (oceano.debug.stripCulling): whether a compare strip draws a chunk straddling it as
-   * the tiles that reach it (OceanChunks) and skips the waves of vertices outside it
-   * (shaders/ocean.vert). Off, each strip draws whole chunks, every vertex evaluated.
+   * the tiles that reach it (OceanChunks, TILES). Off, each strip draws its chunks whole.
    */
   stripCulling = true;
 
@@ -349,17 +346,10 @@ export class OceanView {
       const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
       const chunks = [this.ocean, ...this.sides.map((side) => side.chunks)];
       const bounds = [this.cullingBounds(), ...this.sides.map((side) => side.bounds())];
-      const materials = [this.material, ...this.sides.map((side) => side.material)];
+      // A chunk straddling a strip's frustum is drawn as only the tiles that reach the strip
+      // (OceanChunks, TILES): a chunk across a divider costs each model its own side's triangles.
       strips.forEach((strip, i) => {
-        if (strip.x1 <= strip.x0) return;
-        const camera = this.stripCamera(strip, width);
-        chunks[i].update(camera, this.lod, bounds[i], this.stripCulling);
-        // Within the chunks that reach the strip, each vertex whose triangles all fall outside
-        // it skips the waves (shaders/ocean.vert stripOutside): a chunk straddling a divider
-        // costs each model only its own side's vertices. Switched on only while drawCompare draws.
-        this.stripFrustum.setFromProjectionMatrix(this.stripViewProjection.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
-        // three's Frustum: planes 0 and 1 are the right and left sides.
-        materials[i].setStripCull([this.stripFrustum.planes[0], this.stripFrustum.planes[1]], bounds[i]);
+        if (strip.x1 > strip.x0) chunks[i].update(this.stripCamera(strip, width), this.lod, bounds[i], this.stripCulling);
       });
     }
     const inWater = this.where.submersion !== 'above';
@@ -425,10 +415,6 @@ export class OceanView {
     const ratio = this.renderer.getPixelRatio();
     const groups = [this.ocean.group, ...this.sides.map((side) => side.chunks.group)];
     const names = [this.waveView.name, ...this.sides.map((side) => side.name)];
-    const materials = [this.material, ...this.sides.map((side) => side.material)];
-    // The strip planes set by update() take effect only here: every other draw (the model alone,
-    // below the water, the probe) evaluates every vertex.
-    for (const material of materials) material.uniforms.uStripCull.value = this.stripCulling;
     this.renderer.setScissorTest(true);
     try {
       strips.forEach((strip, i) => {
@@ -442,7 +428,6 @@ export class OceanView {
     } finally {
       this.renderer.setScissorTest(false);
       groups.forEach((group, j) => (group.visible = j === 0));
-      for (const material of materials) material.uniforms.uStripCull.value = false;
     }
   }
 
