@@ -22,6 +22,7 @@ uniform vec2 uMorphZones[6];
 
 attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, metres per grid unit
 attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
+attribute vec2 aTile;      // a tile's first grid point inside its chunk (compare strips), else 0
 
 // Positions relative to uRenderOrigin, a point near the camera that float32 holds exactly
 // (see OceanMaterial.onBeforeRender): 10⁶ m from the world's origin a float32 world
@@ -57,7 +58,8 @@ int bandStep(int band) {
 }
 
 void main() {
-  ivec2 grid = ivec2(position.xz + 0.5);
+  // Integer grid coordinates within the chunk: a tile's are the whole chunk's, exactly.
+  ivec2 grid = ivec2(position.xz + 0.5) + ivec2(aTile + 0.5);
   int band = int(aChunk.z + 0.5);
   // Far rings (band >= 6) never morph and always snap their sides.
   int own = band < 6 ? bandStep(band) : 0;

@@ -45,7 +45,7 @@ export interface OceanoApi {
     fresnelTable(): Float32Array;
     /** The reflectance table seen from under the water (n₁ = 1.333, n₂ = 1). */
     fresnelTableFromBelow(): Float32Array;
-    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water, after 'fft' and 'foam' when waves=fft). */
+    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water, or 'scene <model> strip' per compare strip, after 'fft' and 'foam' when a model is fft). */
     passTimings(): PassTiming[];
     heightmaps(): { size: number; data: Float32Array }[];
     /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
@@ -54,6 +54,8 @@ export interface OceanoApi {
     forceShaftLightWindow(on: boolean): void;
     /** Negative controls: turn off fixes for far views (see OceanView.setShadingFixes). */
     setShadingFixes(fixes: Partial<ShadingFixes>): void;
+    /** compare=: whether each strip draws a chunk straddling it as only the tiles that reach it (on by default; off to measure what that saves). */
+    stripCulling(on: boolean): void;
     /** How many times the physics estimators have run, once the open panel has drawn. */
     physicsRuns(): Promise<number>;
   };
@@ -100,6 +102,9 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
       lodUpdateMs: (batches) => app.debugView().timeLodUpdate(checkBatches(batches)),
       forceShaftLightWindow: (on) => app.debugView().forceShaftLightWindow(on === true),
       setShadingFixes: (fixes) => app.debugView().setShadingFixes(fixes),
+      stripCulling: (on) => {
+        app.debugView().stripCulling = on === true;
+      },
       physicsRuns: async () => {
         const panel = started(app.physicsPanel());
         await panel.settled();
@@ -144,7 +149,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     shareUrl: fail,
     activity: fail,
     physics: fail,
-    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, setShadingFixes: fail, physicsRuns: () => Promise.reject(reason) },
+    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, setShadingFixes: fail, stripCulling: fail, physicsRuns: () => Promise.reject(reason) },
     get three(): never {
       throw reason;
     },

@@ -111,20 +111,24 @@ export const PRESETS = {
     camera: { position: [-40, 7, 20], target: [-40, 0, -8] },
   },
   /**
-   * A young, steep wind sea (JONSWAP, 20 m/s over 20 km, long-crested) of 64 Gerstner
-   * trochoids at Q = 1, the steepest the sea may be (Σ Qᵢ kᵢ Aᵢ ≤ 1, see
-   * limitSteepness): crests sharpen towards cusps and troughs flatten. The note: at exactly
-   * Σ Qᵢ kᵢ Aᵢ = 1 a crest where every wave peaks together is a cusp, never a loop.
-   * Compare gerstner-gentle, the same sea and camera at Q = 0.2.
+   * A young wind sea (JONSWAP, 20 m/s over 20 km, long-crested) of 4 Gerstner trochoids at
+   * Q = 1, the steepest the model allows (Qᵢ = 1 while Σ kᵢ Aᵢ ≤ 1, see limitSteepness): crests
+   * sharpen towards cusps and troughs flatten. Four waves, because each then carries a quarter
+   * of the sea's variance, so the shortest (3.9 m long, 0.28 m amplitude, kA = 0.46) is steep
+   * enough for the trochoid's shape to show; with 64, each wave's kA is a few hundredths and
+   * Q changes little the eye can see. The camera stands 1.2 m above the water, away from the
+   * boat, looking across those short crests. Compare gerstner-gentle, the same sea and camera
+   * at Q = 0.2 (tests/unit/gerstnerSteepnessPreset.test.ts measures the crests' curvature
+   * against the troughs': 1.5 times at Q = 0.2, 6.4 at Q = 1).
    */
   'gerstner-steepness': {
-    params: { waves: 'gerstner', gerstnerSteepness: 1, gerstnerCount: 64, windSpeed: 20, spectrum: 'jonswap', fetch: 20, spreading: 32 },
-    camera: { position: [0, 4, 25], target: [0, 0, -20] },
+    params: { waves: 'gerstner', gerstnerSteepness: 1, gerstnerCount: 4, windSpeed: 20, spectrum: 'jonswap', fetch: 20, spreading: 32 },
+    camera: { position: [-30, 1.2, 4], target: [-30, 0.3, -10] },
   },
   /** The same Gerstner sea at Q = 0.2: nearly sinusoidal, round crests. */
   'gerstner-gentle': {
-    params: { waves: 'gerstner', gerstnerSteepness: 0.2, gerstnerCount: 64, windSpeed: 20, spectrum: 'jonswap', fetch: 20, spreading: 32 },
-    camera: { position: [0, 4, 25], target: [0, 0, -20] },
+    params: { waves: 'gerstner', gerstnerSteepness: 0.2, gerstnerCount: 4, windSpeed: 20, spectrum: 'jonswap', fetch: 20, spreading: 32 },
+    camera: { position: [-30, 1.2, 4], target: [-30, 0.3, -10] },
   },
   /**
    * The three wave models side by side on one camera, wind (10 m/s, Pierson–Moskowitz) and

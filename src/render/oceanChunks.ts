@@ -15,10 +15,10 @@ import {
 import type { DisplacementBounds } from '../sim/waveModel';
 import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
-import { BASE_STEP, CHUNK_SIZE, MAX_LOD_BANDS } from '../sim/lodBands';
+import { BAND_STEPS, BASE_STEP, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS, bandQuads } from '../sim/lodBands';
 import { chunkGrid, squareGrid } from '../sim/chunkGrid';
 import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../sim/farRings';
-import { classifyBox, OUTSIDE } from '../sim/frustumMath';
+import { classifyBox, INSIDE, OUTSIDE } from '../sim/frustumMath';
 import { morphZones } from '../sim/lodMorph';
 import type { OceanMaterial } from './oceanMaterial';
 
@@ -51,12 +51,28 @@ function instancedGrid({ positions, indices }: { positions: Float32Array; indice
   geometry.setIndex(new BufferAttribute(indices, 1));
   geometry.setAttribute('aChunk', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
   geometry.setAttribute('aEdgeSteps', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
+  // Where a tile starts inside its chunk, grid units: 0 for whole chunks (see TILES).
+  geometry.setAttribute('aTile', new InstancedBufferAttribute(new Float32Array(capacity * 2), 2).setUsage(DynamicDrawUsage));
   geometry.instanceCount = 0;
   return geometry;
 }
 
-/** 6 planes × 4, the camera (3), the grid's origin (2), the two bounds and four settings. */
-const SELECTION_KEY_LENGTH = 35;
+/**
+ * compare=: a chunk that straddles its strip's frustum is drawn as TILES × TILES tiles, only
+ * those that can reach the strip. A tile is the band's grid cut into squares: the same
+ * integer grid points (offset by aTile inside the chunk, same aChunk), the same triangles in
+ * the same vertex order, so every vertex is computed from the same numbers as in the whole
+ * chunk and the strip's pixels are those of the model alone; a chunk straddling a divider
+ * then costs each model only the tiles on its side (vertices are what SwiftShader spends
+ * most on). Bands whose chunks have fewer than TILES quads a side are drawn whole.
+ */
+const TILES = 4;
+/** Tile instances a band can draw in one frame; past it, straddling chunks are drawn whole. */
+const TILE_CAPACITY = 2048;
+const tiledBand = (band: number) => band < MAX_LOD_BANDS && bandQuads(band) >= TILES && bandQuads(band) % TILES === 0;
+
+/** 6 planes × 4, the camera (3), the grid's origin (2), the two bounds, four settings and whether straddling chunks are tiled. */
+const SELECTION_KEY_LENGTH = 36;
 
 /**
  * The ocean as chunks: each frame the quadtree picks the chunks in view, each gets its
@@ -100,6 +116,9 @@ export class OceanChunks {
   private readonly lastKey = new Float64Array(SELECTION_KEY_LENGTH).fill(NaN);
   private readonly key = new Float64Array(SELECTION_KEY_LENGTH);
   private readonly zones = new Float32Array(MAX_LOD_BANDS * 2);
+  /** Per band: the tile mesh (null where the band is drawn whole), its attributes and how many tiles it draws. */
+  private readonly tileMeshes: (Mesh<InstancedBufferGeometry, OceanMaterial> | null)[] = [];
+  private readonly tileFill = new Array<number>(MAX_LOD_BANDS).fill(0);
 
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
@@ -115,6 +134,17 @@ export class OceanChunks {
       this.chunkData.push(chunk.array as Float32Array);
       this.edgeData.push(edges.array as Float32Array);
     }
+    for (let band = 0; band < MAX_LOD_BANDS; band++) {
+      if (!tiledBand(band)) {
+        this.tileMeshes.push(null);
+        continue;
+      }
+      const mesh = new Mesh(instancedGrid(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), TILE_CAPACITY), material);
+      mesh.frustumCulled = false;
+      mesh.visible = false;
+      this.tileMeshes.push(mesh);
+      this.group.add(mesh);
+    }
     // Every far ring's cell draws one shared grid: one instanced draw for all of them.
     this.farMesh = new Mesh(instancedGrid(squareGrid(RING_OWN_STEP, RING_CELL_QUADS, true), this.farSelector.total), material);
     this.farMesh.frustumCulled = false;
@@ -128,6 +158,7 @@ export class OceanChunks {
     skirtGeometry.setAttribute('position', new BufferAttribute(new Float32Array(count * 3), 3));
     skirtGeometry.setAttribute('aChunk', new BufferAttribute(new Float32Array(count * 4), 4).setUsage(DynamicDrawUsage));
     skirtGeometry.setAttribute('aEdgeSteps', new BufferAttribute(new Float32Array(count * 4).fill(1), 4));
+    skirtGeometry.setAttribute('aTile', new BufferAttribute(new Float32Array(count * 2), 2));
     skirtGeometry.setIndex(new BufferAttribute(indices, 1));
     this.skirt = new Mesh(skirtGeometry, material);
     this.skirt.frustumCulled = false;
@@ -137,8 +168,9 @@ export class OceanChunks {
   /**
    * Chooses and uploads this frame's chunks for `camera` (or the frozen one).
    * `bounds`: how far the waves can move a vertex up or down and sideways (WaveModel.bounds()), metres.
+   * `tiles` (a compare strip's camera): chunks straddling the frustum are drawn as the tiles that reach it (see TILES).
    */
-  update(camera: PerspectiveCamera, settings: LodSettings, bounds: DisplacementBounds): void {
+  update(camera: PerspectiveCamera, settings: LodSettings, bounds: DisplacementBounds, tiles = false): void {
     this.setFrozen(settings.freezeCulling, camera);
     if (!this.frozenHelper) this.captureCullingView(camera);
     this.bandsInUse = settings.lodBruteForce ? 1 : settings.lodBands;
@@ -151,10 +183,11 @@ export class OceanChunks {
     input.bruteForce = settings.lodBruteForce;
     // A still camera over an unchanged sea chooses the same chunks: the last frame's
     // selection and uploads stand, and the frame's CPU work is only this comparison.
-    if (this.sameSelectionAsLastFrame(settings)) return;
+    if (this.sameSelectionAsLastFrame(settings, tiles)) return;
     selector.select(input);
     this.material.setLodMorph(this.cullCamera, bounds.vertical, morphZones(settings.lodDistance, this.bandsInUse, settings.lodMorph, this.zones));
     this.fill.fill(0);
+    this.tileFill.fill(0);
     const side = selector.side;
     const { originX, originZ } = input;
     for (let n = 0; n < selector.count; n++) {
@@ -162,6 +195,7 @@ export class OceanChunks {
       const leaf = selector.leaves[n];
       const i = leaf % side;
       const j = (leaf - i) / side;
+      if (tiles && this.addTiles(band, originX + i * CHUNK_SIZE, originZ + j * CHUNK_SIZE, selector.edgeSteps, n * 4, bounds)) continue;
       const o = this.fill[band]++ * 4;
       const chunk = this.chunkData[band];
       chunk[o] = originX + i * CHUNK_SIZE;
@@ -174,6 +208,20 @@ export class OceanChunks {
       edges[o + 1] = selector.edgeSteps[e + 1];
       edges[o + 2] = selector.edgeSteps[e + 2];
       edges[o + 3] = selector.edgeSteps[e + 3];
+    }
+    for (let band = 0; band < MAX_LOD_BANDS; band++) {
+      const mesh = this.tileMeshes[band];
+      if (!mesh) continue;
+      const count = this.tileFill[band];
+      mesh.geometry.instanceCount = count;
+      mesh.visible = count > 0;
+      if (count === 0) continue;
+      for (const name of ['aChunk', 'aEdgeSteps', 'aTile']) {
+        const attribute = mesh.geometry.getAttribute(name) as InstancedBufferAttribute;
+        attribute.clearUpdateRanges();
+        attribute.addUpdateRange(0, count * attribute.itemSize);
+        attribute.needsUpdate = true;
+      }
     }
     for (let band = 0; band < MAX_LOD_BANDS; band++) {
       const count = this.fill[band];
@@ -189,7 +237,44 @@ export class OceanChunks {
     this.updateFar(originX + OCEAN_EXTENT / 2, originZ + OCEAN_EXTENT / 2, bounds);
   }
 
-  private sameSelectionAsLastFrame(settings: LodSettings): boolean {
+  /**
+   * A chunk of `band` at world corner (x0, z0) that straddles the frustum: adds the tiles that
+   * can reach it to the band's tile mesh and returns true; false (draw it whole) when it lies
+   * wholly inside, its band is not tiled, or the tile mesh is full. A tile's box is grown by
+   * the waves' reach and by how far morphing and edge snapping can move its vertices (half
+   * the coarser of the next band's step and the chunk's edge steps), so no tile left out can
+   * put a triangle inside the frustum.
+   */
+  private addTiles(band: number, x0: number, z0: number, edgeSteps: Uint8Array, e: number, bounds: DisplacementBounds): boolean {
+    const mesh = this.tileMeshes[band];
+    if (!mesh || this.tileFill[band] + TILES * TILES > TILE_CAPACITY) return false;
+    const h = bounds.horizontal;
+    const v = bounds.vertical;
+    if (classifyBox(this.planes, x0 - h, -v, z0 - h, x0 + CHUNK_SIZE + h, v, z0 + CHUNK_SIZE + h) === INSIDE) return false;
+    const next = band + 1 < MAX_LOD_BANDS ? BAND_STEPS[band + 1] : 0;
+    const shift = (Math.max(next, edgeSteps[e], edgeSteps[e + 1], edgeSteps[e + 2], edgeSteps[e + 3]) / 2) * BASE_STEP;
+    const reach = h + shift + 0.05;
+    const tileUnits = CHUNK_QUADS / TILES;
+    const tileSize = tileUnits * BASE_STEP;
+    const chunk = mesh.geometry.getAttribute('aChunk').array as Float32Array;
+    const edges = mesh.geometry.getAttribute('aEdgeSteps').array as Float32Array;
+    const tile = mesh.geometry.getAttribute('aTile').array as Float32Array;
+    for (let tj = 0; tj < TILES; tj++) {
+      for (let ti = 0; ti < TILES; ti++) {
+        const tx = x0 + ti * tileSize;
+        const tz = z0 + tj * tileSize;
+        if (classifyBox(this.planes, tx - reach, -v - 0.05, tz - reach, tx + tileSize + reach, v + 0.05, tz + tileSize + reach) === OUTSIDE) continue;
+        const t = this.tileFill[band]++;
+        chunk.set([x0, z0, band, BASE_STEP], t * 4);
+        edges.set([edgeSteps[e], edgeSteps[e + 1], edgeSteps[e + 2], edgeSteps[e + 3]], t * 4);
+        tile[t * 2] = ti * tileUnits;
+        tile[t * 2 + 1] = tj * tileUnits;
+      }
+    }
+    return true;
+  }
+
+  private sameSelectionAsLastFrame(settings: LodSettings, tiles: boolean): boolean {
     const key = this.key;
     const input = this.selectionInput;
     let k = 0;
@@ -210,6 +295,7 @@ export class OceanChunks {
     key[k++] = settings.lodBands;
     key[k++] = settings.lodBruteForce ? 1 : 0;
     key[k++] = settings.lodMorph ? 1 : 0;
+    key[k++] = tiles ? 1 : 0;
     let same = true;
     for (let n = 0; n < SELECTION_KEY_LENGTH; n++) same &&= key[n] === this.lastKey[n];
     this.lastKey.set(key);
@@ -328,6 +414,7 @@ export class OceanChunks {
 
   dispose(): void {
     for (const mesh of this.meshes) mesh.geometry.dispose();
+    for (const mesh of this.tileMeshes) mesh?.geometry.dispose();
     this.farMesh.geometry.dispose();
     this.skirt.geometry.dispose();
     this.frozenHelper?.dispose();

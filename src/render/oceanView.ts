@@ -131,6 +131,11 @@ export class OceanView {
   private readonly bufferSize = new Vector2();
   /** A strip's culling camera (see stripCamera). */
   private readonly cullCamera = new PerspectiveCamera();
+  /**
+   * Debug (oceano.debug.stripCulling): whether a compare strip draws a chunk straddling it as
+   * the tiles that reach it (OceanChunks, TILES). Off, each strip draws its chunks whole.
+   */
+  stripCulling = true;
 
   /**
    * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
@@ -349,8 +354,10 @@ export class OceanView {
       const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
       const chunks = [this.ocean, ...this.sides.map((side) => side.chunks)];
       const bounds = [this.cullingBounds(), ...this.sides.map((side) => side.bounds())];
+      // A chunk straddling a strip's frustum is drawn as only the tiles that reach the strip
+      // (OceanChunks, TILES): a chunk across a divider costs each model its own side's triangles.
       strips.forEach((strip, i) => {
-        if (strip.x1 > strip.x0) chunks[i].update(this.stripCamera(strip, width), this.lod, bounds[i]);
+        if (strip.x1 > strip.x0) chunks[i].update(this.stripCamera(strip, width), this.lod, bounds[i], this.stripCulling);
       });
     }
     const inWater = this.where.submersion !== 'above';
@@ -411,10 +418,11 @@ export class OceanView {
    * same pixels as that model drawn alone; its fragment work is its strip's share. (Below the
    * water the first model is drawn alone: the underwater passes are not split.)
    */
-  private drawCompare(strips: readonly Strip[]): void {
+  private drawCompare(strips: readonly Strip[], afterStrip?: (model: string) => void): void {
     const size = this.renderer.getDrawingBufferSize(this.bufferSize);
     const ratio = this.renderer.getPixelRatio();
     const groups = [this.ocean.group, ...this.sides.map((side) => side.chunks.group)];
+    const names = [this.waveView.name, ...this.sides.map((side) => side.name)];
     this.renderer.setScissorTest(true);
     try {
       strips.forEach((strip, i) => {
@@ -423,6 +431,7 @@ export class OceanView {
         // three multiplies the scissor by the pixel ratio and rounds: whole buffer pixels come back.
         this.renderer.setScissor(strip.x0 / ratio, 0, (strip.x1 - strip.x0) / ratio, size.y / ratio);
         this.renderer.render(this.scene, this.camera);
+        afterStrip?.(names[i]);
       });
     } finally {
       this.renderer.setScissorTest(false);
@@ -468,8 +477,9 @@ export class OceanView {
 
   /**
    * Draws one frame waiting for the GPU after each pass, and returns each pass's time.
-   * Above the water the frame is the single direct render, reported as 'scene'; a model with
-   * GPU passes of its own (waves=fft: 'fft', 'foam') reports those first.
+   * Above the water the frame is the single direct render, reported as 'scene', or with
+   * compare= one render per strip, 'scene <model> strip'; a model with GPU passes of its own
+   * (waves=fft: 'fft', 'foam'; a compared one's with its name) reports those first.
    */
   profileFrame(time: number): PassTiming[] {
     const gl = this.renderer.getContext();
@@ -488,8 +498,20 @@ export class OceanView {
       if (!post) throw new Error('The underwater passes are still loading: await oceano.ready, or draw a frame below the surface first.');
       return [...wavePasses, ...post.profile(submersion === 'straddling', sync)];
     }
+    // The side models' own GPU passes (a compared fft), then each strip alone ('scene <model>').
+    for (const side of this.sides) wavePasses.push(...(side.view.profilePasses?.(sync) ?? []).map((p) => ({ ...p, name: `${p.name} (${side.name})` })));
     sync();
-    const start = performance.now();
+    let start = performance.now();
+    const strips = this.splitStrips();
+    if (strips) {
+      const passes: PassTiming[] = [];
+      this.drawCompare(strips, (model) => {
+        sync();
+        passes.push({ name: `scene ${model} strip`, ms: performance.now() - start });
+        start = performance.now();
+      });
+      return [...wavePasses, ...passes];
+    }
     this.renderer.render(this.scene, this.camera);
     sync();
     return [...wavePasses, { name: 'scene', ms: performance.now() - start }];
