@@ -2,7 +2,10 @@
 // where the choppy displacement folds or nearly folds, the Jacobian J of the horizontal map
 // x ↦ x + D(x) drops below a threshold (Tessendorf 2001, §4.3: J < 0 where crests loop), and
 // foam appears; elsewhere the foam already there fades as e^{−Δt/τ}. r = foam, g = this
-// cascade's J (for inspection). r is a foam potential: the shader draws foam where r ≥ ~1.
+// cascade's J (for inspection), b = this cascade's ∂Dx/∂x, copied so that the ocean's pixels
+// find everything they need in this texture and the derivatives one, two filtered reads per
+// cascade instead of three (shaders/waves/fft.glsl). r is a foam potential: the shader draws
+// foam where r ≥ ~1.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -27,5 +30,5 @@ void main() {
   // not the texel squares a thresholded value gives; kept while it fades.
   float fresh = clamp((uThreshold - jacobian) / uSoftness + 1.0, 0.0, 4.0);
   float old = texelFetch(uPrevious, texel, 0).r * uDecay;
-  outFoam = vec4(max(old, fresh), jacobian, 0.0, 1.0);
+  outFoam = vec4(max(old, fresh), jacobian, jxx, 1.0);
 }

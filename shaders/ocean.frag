@@ -2,6 +2,9 @@
 // water's own colour, a sun highlight, and haze towards the horizon. From below: the sky
 // refracted through Snell's window, total internal reflection of the water outside it.
 
+// Tells a wave-model chunk it is compiled for the ocean's pixels (normals and foam only), where
+// it may read its fields more cheaply than the vertex stage (shaders/waves/fft.glsl).
+#define WAVE_FRAGMENT_STAGE
 #include <oceano_water_volume>
 #include <oceano_constants>
 #include <oceano_waves>

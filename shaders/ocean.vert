@@ -43,9 +43,8 @@ varying vec2 vGridXZ;
 // The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
 varying vec2 vWakeSlope;
 varying float vWakeFoam;
-#ifdef WAVE_FABRICATED_NORMAL
+// The comparison view (ocean.frag): its right half draws the vertices' normals.
 uniform bool uNormalsCompare;
-#endif
 
 // Integers, so the snapped vertex lands exactly on the neighbour's vertex.
 int snapEdge(int k, int step) {
@@ -86,7 +85,13 @@ void main() {
   vec2 fromCenter = abs(gridXZ - uOceanCenter);
   float waves = 1.0 - smoothstep(uFarFade.x, uFarFade.y, max(fromCenter.x, fromCenter.y));
   vec3 d = waveDisplacement(gridXZ);
-  vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : waveNormal(gridXZ);
+  // A model with WAVE_PIXEL_NORMALS has its normal evaluated per pixel by ocean.frag, which
+  // then reads this one only on the comparison view's right half (or flat): skip its cost.
+  bool normalDrawn = !uFlatNormals;
+#ifdef WAVE_PIXEL_NORMALS
+  normalDrawn = normalDrawn && uNormalsCompare;
+#endif
+  vNormal = normalDrawn ? waveNormal(gridXZ) : vec3(0.0, 1.0, 0.0);
 #ifdef WAVE_FABRICATED_NORMAL
   if (uNormalsCompare && !uFlatNormals) vNormal = waveFabricatedNormal(gridXZ);
 #endif

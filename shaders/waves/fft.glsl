@@ -54,31 +54,91 @@ vec4 fftBilinear(sampler2D map, vec2 p, float scale) {
   return top + (bottom - top) * w.y;
 }
 
-// The last grid point's sums, kept per shader invocation: a pixel asks for the normal and
-// then the foam at the same point, and each costs 24 texel reads; the second is free.
-vec2 fftCachedPoint = vec2(3.0e38);
+// The ocean's pixels (ocean.frag defines WAVE_FRAGMENT_STAGE) read the fields through the
+// texture unit's own bilinear filter when float textures are filterable
+// (OES_texture_float_linear; fftWaveView.ts then defines FFT_FILTERED_FIELDS and makes the
+// targets LINEAR): one filtered read per field instead of four texelFetch and their weights,
+// the pixel's dearest part under SwiftShader. Texel (p, q) sits at the grid point (p, q) L/n,
+// i.e. at texture coordinate (p + ½)/n, hence the half texel. Only normals and foam are read
+// this way; positions (the vertex stage, the boat's twin, caustics) keep the exact reads
+// above, so the 1 mm parity with the CPU twin is untouched. The filter's weights may be
+// coarser than float32 (GPUs commonly keep 8 fractional bits): a slope error of at most 1/256
+// of the change across one texel, invisible in a normal.
+#if defined(FFT_FILTERED_FIELDS) && defined(WAVE_FRAGMENT_STAGE)
+vec4 fftField(sampler2D map, vec2 p, float scale) {
+  return texture(map, (p * scale + 0.5) / uFftN);
+}
+#else
+vec4 fftField(sampler2D map, vec2 p, float scale) {
+  return fftBilinear(map, p, scale);
+}
+#endif
+
+// The last grid point's sums, kept per shader invocation and per texture set: a pixel asks
+// for the normal and then the foam at the same point (the second is free), and a vertex whose
+// normal is not drawn (ocean.vert under WAVE_PIXEL_NORMALS) reads the displacement alone.
+vec2 fftDisplacementPoint = vec2(3.0e38);
+vec2 fftDerivativesPoint = vec2(3.0e38);
 vec4 fftCachedDisplacement;
 vec4 fftCachedDerivatives;
 
-void fftReadFields(vec2 p) {
-  if (p == fftCachedPoint) return;
-  fftCachedPoint = p;
-  fftCachedDisplacement = fftBilinear(uFftDisplacement0, p, uFftScale.x)
-                        + fftBilinear(uFftDisplacement1, p, uFftScale.y)
-                        + fftBilinear(uFftDisplacement2, p, uFftScale.z);
-  fftCachedDerivatives = fftBilinear(uFftDerivatives0, p, uFftScale.x)
-                       + fftBilinear(uFftDerivatives1, p, uFftScale.y)
-                       + fftBilinear(uFftDerivatives2, p, uFftScale.z);
-}
-
 vec4 fftDisplacementFields(vec2 p) {
-  fftReadFields(p);
+  if (p != fftDisplacementPoint) {
+    fftDisplacementPoint = p;
+    fftCachedDisplacement = fftField(uFftDisplacement0, p, uFftScale.x)
+                          + fftField(uFftDisplacement1, p, uFftScale.y)
+                          + fftField(uFftDisplacement2, p, uFftScale.z);
+  }
   return fftCachedDisplacement;
 }
 
 vec4 fftDerivativeFields(vec2 p) {
-  fftReadFields(p);
+  if (p != fftDerivativesPoint) {
+    fftDerivativesPoint = p;
+    fftCachedDerivatives = fftField(uFftDerivatives0, p, uFftScale.x)
+                         + fftField(uFftDerivatives1, p, uFftScale.y)
+                         + fftField(uFftDerivatives2, p, uFftScale.z);
+  }
   return fftCachedDerivatives;
+}
+
+// The pixels' third field: per cascade the foam texture holds (foam potential, J, ∂Dx/∂x)
+// (shaders/fftFoam.frag), so a filtered pixel reads it and the derivatives, not the
+// displacement (of which it needs only ∂Dx/∂x): 6 reads per pixel instead of 8.
+#if defined(FFT_FILTERED_FIELDS) && defined(WAVE_FRAGMENT_STAGE)
+#define FFT_PIXEL_FOAM_FIELDS
+vec2 fftFoamPoint = vec2(3.0e38);
+vec4 fftCachedFoam1;
+vec4 fftCachedFoam2;
+float fftCachedJxx;
+
+void fftReadFoamFields(vec2 p) {
+  if (p == fftFoamPoint) return;
+  fftFoamPoint = p;
+  fftCachedFoam1 = fftField(uFftFoam1, p, uFftScale.y);
+  fftCachedFoam2 = fftField(uFftFoam2, p, uFftScale.z);
+  fftCachedJxx = fftField(uFftFoam0, p, uFftScale.x).b + fftCachedFoam1.b + fftCachedFoam2.b;
+}
+#endif
+
+// ∂Dx/∂x of the whole sea at a grid point.
+float fftJxx(vec2 p) {
+#ifdef FFT_PIXEL_FOAM_FIELDS
+  fftReadFoamFields(p);
+  return fftCachedJxx;
+#else
+  return fftDisplacementFields(p).w;
+#endif
+}
+
+// Each remembering cascade's foam potential at a grid point (cascades 1 and 2).
+vec2 fftFoamPotentials(vec2 p) {
+#ifdef FFT_PIXEL_FOAM_FIELDS
+  fftReadFoamFields(p);
+  return vec2(fftCachedFoam1.r, fftCachedFoam2.r);
+#else
+  return vec2(fftField(uFftFoam1, p, uFftScale.y).r, fftField(uFftFoam2, p, uFftScale.z).r);
+#endif
 }
 
 vec3 waveDisplacement(vec2 gridXZ) {
@@ -88,7 +148,7 @@ vec3 waveDisplacement(vec2 gridXZ) {
 // Normal of P(x, z) = (x + Dx, h, z + Dz): ∂P/∂z × ∂P/∂x with every derivative exact from the
 // spectrum (i k h, −λ k k̂ h), as FftOcean.normalAt.
 vec3 waveNormal(vec2 gridXZ) {
-  float jxx = fftDisplacementFields(gridXZ).w;
+  float jxx = fftJxx(gridXZ);
   vec4 d = fftDerivativeFields(gridXZ);
   vec3 tx = vec3(1.0 + jxx, d.x, d.w);
   vec3 tz = vec3(d.w, d.y, 1.0 + d.z);
@@ -110,14 +170,15 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
 // white at the threshold itself (so Monahan's share of the sea is at least half white) and
 // fully white ¼σ deeper.
 float waveFoam(vec2 gridXZ) {
-  float jxx = fftDisplacementFields(gridXZ).w;
+  float jxx = fftJxx(gridXZ);
   vec4 d = fftDerivativeFields(gridXZ);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
   float now = smoothstep(uFoamThreshold + uFoamSoftness, uFoamThreshold - uFoamSoftness, jacobian);
   // The largest tile's foam is left out: its texels are tens of metres wide (22 m in a gale),
   // which drew soft white blotches; breaking happens at the scale of the shorter waves.
   // Each stores a foam potential (1 at its threshold, shaders/fftFoam.frag): white from 1 on.
-  float potential = max(fftBilinear(uFftFoam1, gridXZ, uFftScale.y).r, fftBilinear(uFftFoam2, gridXZ, uFftScale.z).r);
+  vec2 potentials = fftFoamPotentials(gridXZ);
+  float potential = max(potentials.x, potentials.y);
   // A wide ramp: foam left behind thins out as it fades (translucent, then gone) instead of
   // shrinking as a hard-edged white floe.
   float kept = smoothstep(0.5, 1.5, potential);

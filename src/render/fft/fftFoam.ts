@@ -1,14 +1,16 @@
-import { FloatType, GLSL3, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, WebGLRenderTarget, type Texture } from 'three';
+import { FloatType, GLSL3, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, WebGLRenderTarget, type Texture } from 'three';
 import quadVertex from '../../../shaders/fftQuad.vert?raw';
 import foamFragment from '../../../shaders/fftFoam.frag?raw';
 import type { GpuFftOcean } from './gpuFft';
 
-function foamTarget(n: number): WebGLRenderTarget {
+/** `filtered`: LINEAR, for the ocean's pixels' filtered reads (shaders/waves/fft.glsl). */
+function foamTarget(n: number, filtered: boolean): WebGLRenderTarget {
+  const filter = filtered ? LinearFilter : NearestFilter;
   return new WebGLRenderTarget(n, n, {
     type: FloatType,
     format: RGBAFormat,
-    minFilter: NearestFilter,
-    magFilter: NearestFilter,
+    minFilter: filter,
+    magFilter: filter,
     wrapS: RepeatWrapping,
     wrapT: RepeatWrapping,
     depthBuffer: false,
@@ -31,7 +33,7 @@ export class FftFoam {
 
   constructor(private readonly gpu: GpuFftOcean) {
     const n = gpu.fft.n;
-    this.pairs = gpu.targets.map(() => [foamTarget(n), foamTarget(n)]);
+    this.pairs = gpu.targets.map(() => [foamTarget(n, gpu.filtered), foamTarget(n, gpu.filtered)]);
     this.material = new RawShaderMaterial({
       name: 'FftFoam',
       glslVersion: GLSL3,

@@ -4,6 +4,7 @@ import {
   DataTexture,
   FloatType,
   GLSL3,
+  LinearFilter,
   Mesh,
   NearestFilter,
   OrthographicCamera,
@@ -35,14 +36,18 @@ function dataTexture(data: Float32Array, width: number, height: number, format: 
   return texture;
 }
 
-/** Two RGBA32F colour attachments, written together by every pass (MRT). Needs EXT_color_buffer_float. */
-function mrtTarget(n: number): WebGLRenderTarget {
+/**
+ * Two RGBA32F colour attachments, written together by every pass (MRT). Needs EXT_color_buffer_float.
+ * `filtered`: LINEAR, for the ocean's pixels' filtered reads (shaders/waves/fft.glsl); texelFetch ignores it.
+ */
+function mrtTarget(n: number, filtered = false): WebGLRenderTarget {
+  const filter = filtered ? LinearFilter : NearestFilter;
   const target = new WebGLRenderTarget(n, n, {
     count: 2,
     type: FloatType,
     format: RGBAFormat,
-    minFilter: NearestFilter,
-    magFilter: NearestFilter,
+    minFilter: filter,
+    magFilter: filter,
     wrapS: RepeatWrapping,
     wrapT: RepeatWrapping,
     depthBuffer: false,
@@ -107,9 +112,9 @@ export class GpuInverseFft {
     this.scratch = mrtTarget(n);
   }
 
-  /** A render target the FFT can write its result into. */
-  createTarget(): WebGLRenderTarget {
-    return mrtTarget(this.n);
+  /** A render target the FFT can write its result into (LINEAR-filtered when `filtered`). */
+  createTarget(filtered = false): WebGLRenderTarget {
+    return mrtTarget(this.n, filtered);
   }
 
   /** Draws `material` over every texel of `target` (any size). Leaves the renderer's own target as it was. */
@@ -203,13 +208,17 @@ export class GpuFftOcean {
   private readonly inputs: DataTexture[] = [];
   private readonly evolved: WebGLRenderTarget;
 
-  constructor(renderer: WebGLRenderer, setup: FftOceanSetup) {
+  /**
+   * `filtered`: the result targets are LINEAR-filtered (the caller has checked that float
+   * textures are filterable, OES_texture_float_linear), for the ocean's per-pixel reads.
+   */
+  constructor(renderer: WebGLRenderer, setup: FftOceanSetup, readonly filtered = false) {
     const n = setup.sea.fftSize;
     this.n = n;
     this.fft = new GpuInverseFft(renderer, n);
     this.sizes = setup.cascades.map((c) => c.size);
     this.evolved = this.fft.createTarget();
-    this.targets = setup.tiles.map(() => this.fft.createTarget());
+    this.targets = setup.tiles.map(() => this.fft.createTarget(filtered));
     this.spectrumMaterials = setup.tiles.map((tile) => {
       const { h0, cycles } = spectrumTextures(tile);
       this.inputs.push(h0, cycles);

@@ -51,6 +51,8 @@ export class FftWaveView implements WaveModelView {
   readonly uniforms: FftUniforms;
   private gpu: GpuFftOcean;
   private foam: FftFoam;
+  /** Whether the result textures are LINEAR and the chunk reads them filtered per pixel. */
+  private readonly filtered: boolean;
   private time = Number.NaN;
   private foamEnabled = true;
   private foamThreshold = 0.7;
@@ -64,7 +66,10 @@ export class FftWaveView implements WaveModelView {
     readonly model: FftWaveModel,
     private readonly renderer: WebGLRenderer,
   ) {
-    registerChunk(this.chunkName, fftChunk);
+    // Float textures filterable: the ocean's pixels read normals and foam through the texture
+    // unit's bilinear filter (see shaders/waves/fft.glsl); otherwise by hand, as the vertices.
+    this.filtered = renderer.extensions.has('OES_texture_float_linear');
+    registerChunk(this.chunkName, (this.filtered ? '#define FFT_FILTERED_FIELDS\n' : '') + fftChunk);
     registerShaderChunks();
     this.uniforms = {
       uFftDisplacement0: { value: null },
@@ -83,7 +88,7 @@ export class FftWaveView implements WaveModelView {
       uFoamSoftness: { value: 0.03 },
       uFabricatedDelta: { value: FABRICATED_DELTA },
     };
-    this.gpu = new GpuFftOcean(renderer, model.ocean.setup);
+    this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
     model.attachSource(new WorkerFieldSource((reply) => model.receive(reply.sea, reply.time, reply.fields)));
@@ -121,6 +126,9 @@ export class FftWaveView implements WaveModelView {
   }
 
   setParams(params: OceanParams): void {
+    // Foam switched on starts from the warm-up (the picture of a frozen t does not depend on
+    // whether foam was off before), see update.
+    const foamToggled = params.foam !== this.foamEnabled;
     this.foamEnabled = params.foam;
     this.foamThreshold = foamJacobianThreshold(params.windSpeed, params.choppiness, params.foamThreshold);
     this.uniforms.uFoamEnabled.value = params.foam ? 1 : 0;
@@ -138,12 +146,12 @@ export class FftWaveView implements WaveModelView {
     if (rebuilt) {
       this.foam.dispose();
       this.gpu.dispose();
-      this.gpu = new GpuFftOcean(this.renderer, this.model.ocean.setup);
+      this.gpu = new GpuFftOcean(this.renderer, this.model.ocean.setup, this.filtered);
       this.foam = new FftFoam(this.gpu);
       this.bindTextures();
     }
     // New thresholds make other foam: rebuild it from the warm-up at the next update.
-    if (rebuilt || changed) this.time = Number.NaN;
+    if (rebuilt || changed || foamToggled) this.time = Number.NaN;
   }
 
   /** FFT passes for every cascade at `time`, then the foam (stepped, or rebuilt after a jump). */
@@ -153,7 +161,11 @@ export class FftWaveView implements WaveModelView {
     this.time = time;
     this.model.prefetch(time);
     if (!this.foamEnabled) {
+      // The foam pass runs anyway, fresh (decay 0): its texture also carries ∂Dx/∂x for the
+      // ocean's pixels (shaders/fftFoam.frag); uFoamEnabled hides the foam itself.
       this.gpu.update(time);
+      this.foam.step(0, this.cascadeThresholds, this.cascadeSoftness);
+      this.bindFoam();
       return;
     }
     const dt = time - previous;
@@ -181,9 +193,9 @@ export class FftWaveView implements WaveModelView {
     this.gpu.update(this.time);
     sync();
     const timings: PassTiming[] = [{ name: 'fft', ms: performance.now() - start }];
-    if (!this.foamEnabled) return timings;
     start = performance.now();
-    this.foam.step(1, this.cascadeThresholds, this.cascadeSoftness);
+    // Foam off, the pass still runs fresh (it carries ∂Dx/∂x for the pixels, see update).
+    this.foam.step(this.foamEnabled ? 1 : 0, this.cascadeThresholds, this.cascadeSoftness);
     sync();
     this.bindFoam();
     timings.push({ name: 'foam', ms: performance.now() - start });

@@ -1,0 +1,91 @@
+/**
+ * Where the FFT view's frame goes (a benchmark: prints numbers, asserts nothing). On a machine
+ * shared with other jobs wall times swing by 2×, so beside the median wall time of a frame it
+ * prints the CPU time Chromium's processes spent on it (SwiftShader draws on the CPU, in the
+ * GPU process: its CPU time is the frame's cost, whatever else the machine runs), for:
+ *   paused:   the clock still (the scene alone: no FFT passes, no Worker),
+ *   stepping: the clock moved 1/60 s before each frame, as the bench's FFT row (FFT passes,
+ *             foam, the CPU twin's Worker in the renderer process),
+ * and the default view beside it. `PROBE_BUILDS=dist-sub,...` also probes builds put under
+ * dist/ (vite build --outDir dist/NAME), to compare variants in one run.
+ * Run after `vite build`: npx tsx scripts/fftFrameProbe.ts [frames] [queries, ;-separated]
+ */
+import { readdirSync, readFileSync } from 'node:fs';
+import { openOcean, startHarness } from './browserHarness';
+
+const frames = Number(process.argv[2] ?? 8);
+const queries = (process.argv[3] ?? 't=10;t=10&waves=fft').split(';');
+const builds = ['', ...(process.env.PROBE_BUILDS ?? '').split(',').filter(Boolean).map((b) => `${b}/`)];
+const TICK_MS = 10; // USER_HZ = 100 on Linux
+
+/** CPU ms (user + system) of every process below `root`, by kind: gpu, renderer, other. */
+function cpuByKind(root: number): Record<string, number> {
+  const parents = new Map<number, number>();
+  const ticks = new Map<number, number>();
+  for (const entry of readdirSync('/proc')) {
+    if (!/^\d+$/.test(entry)) continue;
+    try {
+      const stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
+      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+      parents.set(Number(entry), Number(fields[1]));
+      ticks.set(Number(entry), Number(fields[11]) + Number(fields[12]));
+    } catch {
+      // the process ended meanwhile
+    }
+  }
+  const below = (pid: number): boolean => pid === root || (parents.has(pid) && pid !== 1 && below(parents.get(pid) as number));
+  const out: Record<string, number> = { gpu: 0, renderer: 0, other: 0 };
+  for (const [pid, t] of ticks) {
+    if (!below(pid)) continue;
+    let cmd = '';
+    try {
+      cmd = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
+    } catch {
+      continue;
+    }
+    const kind = cmd.includes('--type=gpu-process') ? 'gpu' : cmd.includes('--type=renderer') ? 'renderer' : 'other';
+    out[kind] += t * TICK_MS;
+  }
+  return out;
+}
+
+const harness = await startHarness();
+const root = harness.browser.process()?.pid;
+if (root === undefined) throw new Error('No browser process to measure.');
+try {
+  for (const build of builds) {
+    for (const query of queries) {
+      const { page } = await openOcean(harness, query, 1280, 720, build, 600_000);
+      for (const step of process.env.PROBE_PAUSED_ONLY ? [0] : [0, 1 / 60]) {
+        // A string, not a function: tsx would wrap named helpers in a `__name` the page lacks.
+        const run = (count: number) => page.evaluate(`(() => {
+          const o = window.oceano;
+          o.pause();
+          const gl = o.three.renderer.getContext();
+          const pixel = new Uint8Array(4);
+          const times = [];
+          for (let i = 0; i < ${count}; i++) {
+            if (${step} > 0) o.setTime(10 + (window.__probeFrame = (window.__probeFrame ?? 0) + 1) * ${step});
+            const start = performance.now();
+            o.renderFrame();
+            gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+            times.push(performance.now() - start);
+          }
+          times.sort((a, b) => a - b);
+          return { median: times[Math.floor(times.length / 2)], cpuMs: o.stats().cpuMs };
+        })()`) as Promise<{ median: number; cpuMs: number }>;
+        await run(2);
+        const before = cpuByKind(root);
+        const { median, cpuMs } = await run(frames);
+        const after = cpuByKind(root);
+        const per = (k: string) => ((after[k] - before[k]) / frames).toFixed(0);
+        console.log(`${build || 'dist/'} ${query} ${step ? 'stepping' : 'paused  '}: wall median ${median.toFixed(0)} ms; CPU per frame: gpu ${per('gpu')} ms, renderer ${per('renderer')} ms; app cpuMs ${cpuMs.toFixed(2)}`);
+      }
+      const passes = (await page.evaluate(`window.oceano.debug.passTimings()`)) as { name: string; ms: number }[];
+      console.log(`${build || 'dist/'} ${query} passes (wall, one frame): ${passes.map((p) => `${p.name} ${p.ms.toFixed(1)} ms`).join(', ')}`);
+      await page.close();
+    }
+  }
+} finally {
+  await harness.close();
+}
