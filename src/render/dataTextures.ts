@@ -1,8 +1,8 @@
 import { ClampToEdgeWrapping, DataTexture, FloatType, NearestFilter, RedFormat, RGBAFormat, RepeatWrapping } from 'three';
 import type { Heightmap } from '../sim/perlinNoise';
 
-/** Single-channel float texture read with texelFetch; filtering is done in the shaders. */
-function floatTexture(
+/** A float texture read with texelFetch (unfiltered: the shaders interpolate by hand, as the CPU twins do). */
+export function floatTexture(
   data: Float32Array,
   width: number,
   height: number,

@@ -23,18 +23,7 @@ import stageFragment from '../../../shaders/fftStage.frag?raw';
 import { timeInPeriod } from '../../sim/dispersion';
 import type { FftOceanSetup } from '../../sim/fftOcean';
 import { REPEAT_PERIOD, type SpectralTile } from '../../sim/initialSpectrum';
-
-/** An n × n float texture read with texelFetch (no filtering: the ocean shader interpolates itself, as the CPU twin does). */
-function dataTexture(data: Float32Array, width: number, height: number, format: typeof RGBAFormat): DataTexture {
-  const texture = new DataTexture(data, width, height, format, FloatType);
-  texture.minFilter = NearestFilter;
-  texture.magFilter = NearestFilter;
-  texture.wrapS = RepeatWrapping;
-  texture.wrapT = RepeatWrapping;
-  texture.generateMipmaps = false;
-  texture.needsUpdate = true;
-  return texture;
-}
+import { floatTexture } from '../dataTextures';
 
 /**
  * Two RGBA32F colour attachments, written together by every pass (MRT). Needs EXT_color_buffer_float.
@@ -64,7 +53,7 @@ function twiddleTable(n: number): DataTexture {
     data[4 * m] = Math.cos((2 * Math.PI * m) / n);
     data[4 * m + 1] = Math.sin((2 * Math.PI * m) / n);
   }
-  return dataTexture(data, n / 2, 1, RGBAFormat);
+  return floatTexture(data, n / 2, 1, RGBAFormat, RepeatWrapping);
 }
 
 /**
@@ -177,7 +166,7 @@ function spectrumTextures(tile: SpectralTile): { h0: DataTexture; cycles: DataTe
       cycles[4 * i + 2] = m;
     }
   }
-  return { h0: dataTexture(pairs, n, n, RGBAFormat), cycles: dataTexture(cycles, n, n, RGBAFormat) };
+  return { h0: floatTexture(pairs, n, n, RGBAFormat, RepeatWrapping), cycles: floatTexture(cycles, n, n, RGBAFormat, RepeatWrapping) };
 }
 
 /**
