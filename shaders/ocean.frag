@@ -120,10 +120,10 @@ void main() {
   // Band 2 (6 m) keeps its vertex normals, band 3 (12 m) and coarser get the full detail.
   const float DETAIL_FROM = 8.0;
   const float DETAIL_FULL = 12.0;
-  const float FOOTPRINT_FULL = 2.0;
-  const float FOOTPRINT_NONE = 4.0;
-  const float LONGEST_FULL = 4.0;
-  const float LONGEST_NONE = 8.0;
+  const float FOOTPRINT_FULL = 1.0;
+  const float FOOTPRINT_NONE = 2.0;
+  const float LONGEST_FULL = 2.0;
+  const float LONGEST_NONE = 4.0;
   if (uDetailNormals && !uFlatNormals) {
     // The square root of the pixel's area on the sea: at grazing angles a pixel is long
     // along the view and narrow across it, and the ripples show across.
