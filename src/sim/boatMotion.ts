@@ -77,7 +77,10 @@ export class BoatMotion {
 
   constructor(
     start: readonly [number, number] = BOAT_START,
-    private readonly maxStep = 0.1,
+    // Longer than any step the frame loop's clock takes (at most 0.1 s a frame,
+    // src/app/simulationClock.ts), with room for float64 sums of those steps, so every
+    // drawn frame sails however slow the renderer; only a jump with setTime is longer.
+    private readonly maxStep = 0.25,
   ) {
     this.x = clampToExtent(start[0]);
     this.z = clampToExtent(start[1]);

@@ -329,7 +329,8 @@ describe('share link and the boat', () => {
     it(`reopens a ${steered ? 'steered' : 'free-running'} boat where it was, pixel for pixel`, async () => {
       const { page } = await openOcean(harness, 'seed=3', 640, 360);
       if (steered) {
-        // Under SwiftShader frames come slowly; a frame longer than 0.1 s does not sail, so start at speed.
+        // Under SwiftShader a frame takes 0.1 s of simulated time at most (the clock clamps it),
+        // so a second of keys moves the boat only metres: start at speed.
         await page.evaluate(() => window.oceano.setParams({ boatSpeed: 6 }));
         await page.keyboard.down('KeyW');
         await settle(page, 1500);

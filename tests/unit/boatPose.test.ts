@@ -189,4 +189,22 @@ describe('BoatMotion', () => {
     for (let i = 2; i < 5000; i++) state = motion.update(i * 0.1, { heading: Math.PI / 2, speed: 10, response: 0.25 }, HULL, () => 0);
     expect(state.pose.x).toBe(BOAT_EXTENT);
   });
+
+  it('sails on every frame of a slow renderer, whose frames the clock clamps to 0.1 s each', () => {
+    // SimulationClock advances at most 0.1 s a frame: under SwiftShader at 1280×720 every
+    // frame is that long. Summed in float64 those steps differ from 0.1 by an ulp either
+    // way, so a jump threshold of exactly 0.1 s held the boat still on some of them (the
+    // first at t ≈ 16 s): on a slow machine the boat barely sailed.
+    const motion = new BoatMotion([0, 0]);
+    const controls = { heading: Math.PI / 2, speed: 5, response: 0.25 };
+    let t = 10;
+    let x = motion.update(t, controls, HULL, () => 0).pose.x;
+    for (let frame = 0; frame < 100; frame++) {
+      const before = t;
+      t += 0.1; // a 300-ms frame, clamped
+      const after = motion.update(t, controls, HULL, () => 0).pose.x;
+      expect(after - x, `frame ${frame}`).toBeCloseTo(5 * (t - before), 9);
+      x = after;
+    }
+  });
 });
