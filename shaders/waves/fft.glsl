@@ -74,6 +74,11 @@ vec4 fftField(sampler2D map, vec2 p, float scale) {
 }
 #endif
 
+// One field of the whole sea: the three cascades' tiles, each read at its own scale, summed.
+vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, vec2 p) {
+  return fftField(cascade0, p, uFftScale.x) + fftField(cascade1, p, uFftScale.y) + fftField(cascade2, p, uFftScale.z);
+}
+
 // The last grid point's sums, kept per shader invocation and per texture set: a pixel asks
 // for the normal and then the foam at the same point (the second is free), and a vertex whose
 // normal is not drawn (ocean.vert under WAVE_PIXEL_NORMALS) reads the displacement alone.
@@ -85,9 +90,7 @@ vec4 fftCachedDerivatives;
 vec4 fftDisplacementFields(vec2 p) {
   if (p != fftDisplacementPoint) {
     fftDisplacementPoint = p;
-    fftCachedDisplacement = fftField(uFftDisplacement0, p, uFftScale.x)
-                          + fftField(uFftDisplacement1, p, uFftScale.y)
-                          + fftField(uFftDisplacement2, p, uFftScale.z);
+    fftCachedDisplacement = fftCascadeSum(uFftDisplacement0, uFftDisplacement1, uFftDisplacement2, p);
   }
   return fftCachedDisplacement;
 }
@@ -95,9 +98,7 @@ vec4 fftDisplacementFields(vec2 p) {
 vec4 fftDerivativeFields(vec2 p) {
   if (p != fftDerivativesPoint) {
     fftDerivativesPoint = p;
-    fftCachedDerivatives = fftField(uFftDerivatives0, p, uFftScale.x)
-                         + fftField(uFftDerivatives1, p, uFftScale.y)
-                         + fftField(uFftDerivatives2, p, uFftScale.z);
+    fftCachedDerivatives = fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p);
   }
   return fftCachedDerivatives;
 }
