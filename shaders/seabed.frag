@@ -6,6 +6,7 @@
 #include <oceano_tiled_heightmap>
 #include <oceano_water_volume>
 #include <oceano_caustics>
+#include <oceano_waterline>
 
 uniform vec3 uSandColor;
 // The mottling heightmap (the second Perlin ripple map of the noise seed) and its tiling.
@@ -15,6 +16,8 @@ uniform float uSandMottleSize;
 uniform vec3 uSunColor;
 uniform vec3 uRefractedSun;
 uniform float uSunTransmission;
+// Off only for a negative control (OceanView.setShadingFixes): the sand then writes alpha 1.
+uniform bool uMarkUnderWater;
 
 varying vec3 vWorldPosition;
 
@@ -31,6 +34,7 @@ void main() {
     direct = uSunColor * uSunTransmission * cosSun * reach * causticLight(vWorldPosition);
   }
   vec3 ambient = uWaterScatter * exp(-DEPTH_DARKENING * depth);
-  gl_FragColor = vec4(albedo * (direct + ambient), 1.0);
+  // Alpha marks the sand for the waterline test (shaders/waterline.glsl): always under the water.
+  gl_FragColor = vec4(albedo * (direct + ambient), uMarkUnderWater ? SEA_BED_ALPHA : 1.0);
   #include <colorspace_fragment>
 }

@@ -52,7 +52,7 @@ export interface OceanoApi {
     lodUpdateMs(batches?: number): number;
     /** Under the water: bake the shaft light as the window generic wave models get, even for the seed. */
     forceShaftLightWindow(on: boolean): void;
-    /** Negative controls: turn off fixes for far views (see OceanView.setShadingFixes). */
+    /** Negative controls: turn off fixes for far and very close views (see OceanView.setShadingFixes). */
     setShadingFixes(fixes: Partial<ShadingFixes>): void;
     /** compare=: whether each strip draws a chunk straddling it as only the tiles that reach it (on by default; off to measure what that saves). */
     stripCulling(on: boolean): void;

@@ -48,6 +48,8 @@ export interface ShadingFixes {
   detailNormals: boolean;
   /** Positions relative to a render origin near the camera on the GPU (OceanMaterial.onBeforeRender). */
   cameraRelative: boolean;
+  /** The sea bed marks itself as under the water for the waterline test (shaders/waterline.glsl). */
+  seaBedMark: boolean;
 }
 
 export interface RenderStats extends ChunkStats {
@@ -518,12 +520,14 @@ export class OceanView {
   }
 
   /**
-   * Debug, for the negative controls of tests/browser/shading.test.ts: switch off the fixes
-   * for far views, so the tests can show they catch the fault each one removes.
+   * Debug, for the negative controls of tests/browser/shading.test.ts and waterline.test.ts:
+   * switch off the fixes for far and very close views, so the tests can show they catch the
+   * fault each one removes.
    */
   setShadingFixes(fixes: Partial<ShadingFixes>): void {
     if (fixes.detailNormals !== undefined) this.material.setDetailNormals(fixes.detailNormals);
     if (fixes.cameraRelative !== undefined) this.material.absoluteCoordinates = !fixes.cameraRelative;
+    if (fixes.seaBedMark !== undefined) this.seaBed.setWaterMark(fixes.seaBedMark);
   }
 
   /**

@@ -36,6 +36,7 @@ export class SeaBed {
           uSandMottle: { value: null },
           uSandMottleTile: { value: RIPPLE_TILE_SIZE },
           uSandMottleSize: { value: HEIGHTMAP_SIZE },
+          uMarkUnderWater: { value: true },
         },
       }),
     );
@@ -56,6 +57,11 @@ export class SeaBed {
     this.mottle?.dispose();
     this.mottle = heightmapTexture(generateHeightmap(HEIGHTMAP_SIZE, { ...defaultNoiseSettings, seed: seed * 2 + 1 }));
     this.material.uniforms.uSandMottle.value = this.mottle;
+  }
+
+  /** Debug (a negative control): false writes alpha 1, as before the sand marked itself for the waterline test. */
+  setWaterMark(on: boolean): void {
+    this.material.uniforms.uMarkUnderWater.value = on;
   }
 
   setDepth(depth: number): void {
