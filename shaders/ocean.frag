@@ -33,6 +33,7 @@ uniform mat4 uViewRelative;
 varying vec3 vNormal;
 varying float vBand;
 varying vec2 vGridXZ;
+varying vec2 vRelativeGridXZ;
 varying vec2 vWakeSlope;
 flat varying float vVertexSpacing;
 varying float vWaveFade;
@@ -103,7 +104,13 @@ void main() {
   // surface is smooth, so interpolating the grid point is exact to first order.
   bool fabricatedHalf = uNormalsCompare && (uViewRelative * vec4(vRelativePosition, 1.0)).x > 0.0;
   if (!uFlatNormals && !fabricatedHalf) {
+    // At the grid point relative to the render origin (exact 10⁶ m out, where vGridXZ moves
+    // in 6 cm steps); WAVE_ABSOLUTE_PIXELS only for a negative control.
+#ifdef WAVE_ABSOLUTE_PIXELS
     n = waveNormal(vGridXZ);
+#else
+    n = waveNormalNear(vRelativeGridXZ);
+#endif
     // The wake's slope is interpolated from the vertices (its waves are 8 m and longer).
     if (uWakeOn) n = normalize(vec3(n.x - vWakeSlope.x * n.y, n.y, n.z - vWakeSlope.y * n.y));
   }
@@ -170,7 +177,11 @@ void main() {
 
   float foam = 0.0;
 #ifdef WAVE_FOAM
+#ifdef WAVE_ABSOLUTE_PIXELS
   foam = waveFoam(vGridXZ);
+#else
+  foam = waveFoamNear(vRelativeGridXZ);
+#endif
 #endif
   // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
   if (uWakeOn) foam = max(foam, vWakeFoam);

@@ -40,6 +40,9 @@ flat varying float vVertexSpacing;
 varying float vWaveFade;
 // The undisplaced grid point, for models whose normals and foam are evaluated per pixel.
 varying vec2 vGridXZ;
+// The same relative to uRenderOrigin: a few km at most, so interpolated it keeps its bits
+// (vGridXZ 10⁶ m out moves in 6 cm steps). Models with WAVE_PIXEL_NORMALS shade from it.
+varying vec2 vRelativeGridXZ;
 // The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
 varying vec2 vWakeSlope;
 varying float vWakeFoam;
@@ -119,6 +122,7 @@ void main() {
   vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
   vec3 relative = vec3(relativeGrid.x + d.x, world.y, relativeGrid.y + d.z);
   vRelativePosition = relative;
+  vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;
   vVertexSpacing = aChunk.w * float(band < 6 ? bandStep(band) : 1);
   vWaveFade = waves;

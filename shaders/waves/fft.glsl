@@ -31,6 +31,11 @@ uniform sampler2D uFftFoam0;
 uniform sampler2D uFftFoam1;
 uniform sampler2D uFftFoam2;
 uniform vec3 uFftScale;      // n / L per cascade: texels per metre
+// Per cascade, where the render origin falls in its tile, in texels, within [0, n) (reduced in
+// double precision, src/sim/originPhases.ts): the pixels read their fields at grid points
+// relative to the render origin (waveNormalNear, waveFoamNear), since an absolute float32
+// grid point 10⁶ m out is rounded to 6 cm and its normals came in 6 cm blocks.
+uniform vec2 uFftNearOffset[3];
 uniform float uFftN;
 uniform float uFoamEnabled;  // 0 or 1
 uniform float uFoamThreshold;
@@ -38,8 +43,10 @@ uniform float uFoamSoftness;   // half-width of the soft edge around the thresho
 uniform float uFabricatedDelta;
 
 // The CPU twin's bilinear read: u = x n/L, texel floor(u) mod n and the next, weights fract(u).
-vec4 fftBilinear(sampler2D map, vec2 p, float scale) {
-  vec2 u = p * scale;
+// `offset` (texels) is 0 for an absolute grid point, the cascade's uFftNearOffset for one
+// relative to the render origin.
+vec4 fftBilinear(sampler2D map, vec2 p, float scale, vec2 offset) {
+  vec2 u = p * scale + offset;
   vec2 f = floor(u);
   vec2 w = u - f;
   int n = int(uFftN);
@@ -65,40 +72,49 @@ vec4 fftBilinear(sampler2D map, vec2 p, float scale) {
 // coarser than float32 (GPUs commonly keep 8 fractional bits): a slope error of at most 1/256
 // of the change across one texel, invisible in a normal.
 #if defined(FFT_FILTERED_FIELDS) && defined(WAVE_FRAGMENT_STAGE)
-vec4 fftField(sampler2D map, vec2 p, float scale) {
-  return texture(map, (p * scale + 0.5) / uFftN);
+vec4 fftField(sampler2D map, vec2 p, float scale, vec2 offset) {
+  return texture(map, (p * scale + offset + 0.5) / uFftN);
 }
 #else
-vec4 fftField(sampler2D map, vec2 p, float scale) {
-  return fftBilinear(map, p, scale);
+vec4 fftField(sampler2D map, vec2 p, float scale, vec2 offset) {
+  return fftBilinear(map, p, scale, offset);
 }
 #endif
 
+// Cascade c's texel offset for a point that is absolute (near false) or relative to the render origin.
+vec2 fftOffset(int c, bool near) {
+  return near ? uFftNearOffset[c] : vec2(0.0);
+}
+
 // One field of the whole sea: the three cascades' tiles, each read at its own scale, summed.
-vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, vec2 p) {
-  return fftField(cascade0, p, uFftScale.x) + fftField(cascade1, p, uFftScale.y) + fftField(cascade2, p, uFftScale.z);
+vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, vec2 p, bool near) {
+  return fftField(cascade0, p, uFftScale.x, fftOffset(0, near)) + fftField(cascade1, p, uFftScale.y, fftOffset(1, near))
+    + fftField(cascade2, p, uFftScale.z, fftOffset(2, near));
 }
 
 // The last grid point's sums, kept per shader invocation and per texture set: a pixel asks
 // for the normal and then the foam at the same point (the second is free), and a vertex whose
 // normal is not drawn (ocean.vert under WAVE_PIXEL_NORMALS) reads the displacement alone.
-vec2 fftDisplacementPoint = vec2(3.0e38);
-vec2 fftDerivativesPoint = vec2(3.0e38);
+// The key is the point and whether it is relative to the render origin (z: 1) or not (0).
+vec3 fftDisplacementPoint = vec3(3.0e38);
+vec3 fftDerivativesPoint = vec3(3.0e38);
 vec4 fftCachedDisplacement;
 vec4 fftCachedDerivatives;
 
-vec4 fftDisplacementFields(vec2 p) {
-  if (p != fftDisplacementPoint) {
-    fftDisplacementPoint = p;
-    fftCachedDisplacement = fftCascadeSum(uFftDisplacement0, uFftDisplacement1, uFftDisplacement2, p);
+vec4 fftDisplacementFields(vec2 p, bool near) {
+  vec3 key = vec3(p, near ? 1.0 : 0.0);
+  if (key != fftDisplacementPoint) {
+    fftDisplacementPoint = key;
+    fftCachedDisplacement = fftCascadeSum(uFftDisplacement0, uFftDisplacement1, uFftDisplacement2, p, near);
   }
   return fftCachedDisplacement;
 }
 
-vec4 fftDerivativeFields(vec2 p) {
-  if (p != fftDerivativesPoint) {
-    fftDerivativesPoint = p;
-    fftCachedDerivatives = fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p);
+vec4 fftDerivativeFields(vec2 p, bool near) {
+  vec3 key = vec3(p, near ? 1.0 : 0.0);
+  if (key != fftDerivativesPoint) {
+    fftDerivativesPoint = key;
+    fftCachedDerivatives = fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
   }
   return fftCachedDerivatives;
 }
@@ -108,52 +124,62 @@ vec4 fftDerivativeFields(vec2 p) {
 // displacement (of which it needs only ∂Dx/∂x): 6 reads per pixel instead of 8.
 #if defined(FFT_FILTERED_FIELDS) && defined(WAVE_FRAGMENT_STAGE)
 #define FFT_PIXEL_FOAM_FIELDS
-vec2 fftFoamPoint = vec2(3.0e38);
+vec3 fftFoamPoint = vec3(3.0e38);
 vec4 fftCachedFoam1;
 vec4 fftCachedFoam2;
 float fftCachedJxx;
 
-void fftReadFoamFields(vec2 p) {
-  if (p == fftFoamPoint) return;
-  fftFoamPoint = p;
-  fftCachedFoam1 = fftField(uFftFoam1, p, uFftScale.y);
-  fftCachedFoam2 = fftField(uFftFoam2, p, uFftScale.z);
-  fftCachedJxx = fftField(uFftFoam0, p, uFftScale.x).b + fftCachedFoam1.b + fftCachedFoam2.b;
+void fftReadFoamFields(vec2 p, bool near) {
+  vec3 key = vec3(p, near ? 1.0 : 0.0);
+  if (key == fftFoamPoint) return;
+  fftFoamPoint = key;
+  fftCachedFoam1 = fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near));
+  fftCachedFoam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
+  fftCachedJxx = fftField(uFftFoam0, p, uFftScale.x, fftOffset(0, near)).b + fftCachedFoam1.b + fftCachedFoam2.b;
 }
 #endif
 
 // ∂Dx/∂x of the whole sea at a grid point.
-float fftJxx(vec2 p) {
+float fftJxx(vec2 p, bool near) {
 #ifdef FFT_PIXEL_FOAM_FIELDS
-  fftReadFoamFields(p);
+  fftReadFoamFields(p, near);
   return fftCachedJxx;
 #else
-  return fftDisplacementFields(p).w;
+  return fftDisplacementFields(p, near).w;
 #endif
 }
 
 // Each remembering cascade's foam potential at a grid point (cascades 1 and 2).
-vec2 fftFoamPotentials(vec2 p) {
+vec2 fftFoamPotentials(vec2 p, bool near) {
 #ifdef FFT_PIXEL_FOAM_FIELDS
-  fftReadFoamFields(p);
+  fftReadFoamFields(p, near);
   return vec2(fftCachedFoam1.r, fftCachedFoam2.r);
 #else
-  return vec2(fftField(uFftFoam1, p, uFftScale.y).r, fftField(uFftFoam2, p, uFftScale.z).r);
+  return vec2(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r);
 #endif
 }
 
 vec3 waveDisplacement(vec2 gridXZ) {
-  return fftDisplacementFields(gridXZ).xyz;
+  return fftDisplacementFields(gridXZ, false).xyz;
 }
 
 // Normal of P(x, z) = (x + Dx, h, z + Dz): ∂P/∂z × ∂P/∂x with every derivative exact from the
 // spectrum (i k h, −λ k k̂ h), as FftOcean.normalAt.
-vec3 waveNormal(vec2 gridXZ) {
-  float jxx = fftJxx(gridXZ);
-  vec4 d = fftDerivativeFields(gridXZ);
+vec3 fftNormal(vec2 p, bool near) {
+  float jxx = fftJxx(p, near);
+  vec4 d = fftDerivativeFields(p, near);
   vec3 tx = vec3(1.0 + jxx, d.x, d.w);
   vec3 tz = vec3(d.w, d.y, 1.0 + d.z);
   return normalize(cross(tz, tx));
+}
+
+vec3 waveNormal(vec2 gridXZ) {
+  return fftNormal(gridXZ, false);
+}
+
+// The normal at the grid point uRenderOrigin + relativeXZ (the render origin is ocean.vert's).
+vec3 waveNormalNear(vec2 relativeXZ) {
+  return fftNormal(relativeXZ, true);
 }
 
 // The seed's way on this sea: neighbours a small step away, their displaced positions
@@ -170,15 +196,15 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
 // against its own band's threshold) and where the whole sea's Jacobian folds right now, half
 // white at the threshold itself (so Monahan's share of the sea is at least half white) and
 // fully white ¼σ deeper.
-float waveFoam(vec2 gridXZ) {
-  float jxx = fftJxx(gridXZ);
-  vec4 d = fftDerivativeFields(gridXZ);
+float fftFoamAt(vec2 p, bool near) {
+  float jxx = fftJxx(p, near);
+  vec4 d = fftDerivativeFields(p, near);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
   float now = smoothstep(uFoamThreshold + uFoamSoftness, uFoamThreshold - uFoamSoftness, jacobian);
   // The largest tile's foam is left out: its texels are tens of metres wide (22 m in a gale),
   // which drew soft white blotches; breaking happens at the scale of the shorter waves.
   // Each stores a foam potential (1 at its threshold, shaders/fftFoam.frag): white from 1 on.
-  vec2 potentials = fftFoamPotentials(gridXZ);
+  vec2 potentials = fftFoamPotentials(p, near);
   float potential = max(potentials.x, potentials.y);
   // A wide ramp: foam left behind thins out as it fades (translucent, then gone) instead of
   // shrinking as a hard-edged white floe.
@@ -186,7 +212,16 @@ float waveFoam(vec2 gridXZ) {
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 
+float waveFoam(vec2 gridXZ) {
+  return fftFoamAt(gridXZ, false);
+}
+
+// Foam at the grid point uRenderOrigin + relativeXZ.
+float waveFoamNear(vec2 relativeXZ) {
+  return fftFoamAt(relativeXZ, true);
+}
+
 // The shortest cascade's height: metre-scale bumps that focus sunlight into shafts.
 float waveLensHeight(vec2 worldXZ) {
-  return fftBilinear(uFftDisplacement2, worldXZ, uFftScale.z).y;
+  return fftBilinear(uFftDisplacement2, worldXZ, uFftScale.z, vec2(0.0)).y;
 }

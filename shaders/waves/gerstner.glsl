@@ -8,7 +8,9 @@
 //   float waveLensHeight(vec2 worldXZ)  the short waves' height, whose bumps focus sunlight
 //                                       into the underwater shafts (god rays)
 // and, because the normal is closed-form and cheap, it asks ocean.frag to evaluate
-// waveNormal per pixel at the interpolated grid point (WAVE_PIXEL_NORMALS).
+// waveNormalNear per pixel at the interpolated grid point (WAVE_PIXEL_NORMALS), given
+// relative to the render origin (src/sim/renderOrigin.ts): an absolute float32 grid point
+// 10⁶ m out is rounded to 6 cm, which put the glint in 6 cm blocks.
 //
 // Wave i moves grid point p to p + (−QᵢAᵢ k̂ᵢ sin θᵢ, Aᵢ cos θᵢ), θᵢ = kᵢ·p − ωᵢt + φᵢ.
 // Angles are in turns. The time part τᵢ = fract(φᵢ − ωᵢt/2π) arrives already reduced in
@@ -24,6 +26,9 @@ uniform int uGerstnerCount;
 uniform vec4 uGerstnerWaves[GERSTNER_MAX_WAVES];
 // τᵢ in turns, four waves per vec4 (a float array would take a whole vec4 slot per element).
 uniform vec4 uGerstnerPhases[GERSTNER_MAX_WAVES / 4];
+// τᵢ′ = fract(τᵢ + cₓ oₓ + c_z o_z), the phases at the render origin o, reduced in double
+// precision (src/sim/originPhases.ts): the angle at o + r is fract(cₓ rₓ) + fract(c_z r_z) + τᵢ′.
+uniform vec4 uGerstnerNearPhases[GERSTNER_MAX_WAVES / 4];
 
 #include <oceano_sin_turns>
 
@@ -33,6 +38,10 @@ float gerstnerTurns(vec4 wave, float tau, vec2 p) {
 
 float gerstnerPhase(int i) {
   return uGerstnerPhases[i >> 2][i & 3];
+}
+
+float gerstnerNearPhase(int i) {
+  return uGerstnerNearPhases[i >> 2][i & 3];
 }
 
 vec3 waveDisplacement(vec2 gridXZ) {
@@ -52,8 +61,9 @@ vec3 waveDisplacement(vec2 gridXZ) {
 }
 
 // Closed-form derivatives (see gerstnerDerivativesAt): the tangents ∂P/∂x, ∂P/∂z of the
-// displaced surface P = (x + dx, dy, z + dz), and their cross product.
-vec3 waveNormal(vec2 gridXZ) {
+// displaced surface P = (x + dx, dy, z + dz), and their cross product. `near`: p is relative
+// to the render origin (a constant at each call, so the choice folds away).
+vec3 gerstnerNormal(vec2 p, bool near) {
   float dxdx = 0.0;
   float dxdz = 0.0;
   float dzdz = 0.0;
@@ -62,7 +72,7 @@ vec3 waveNormal(vec2 gridXZ) {
   for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
     if (i >= uGerstnerCount) break;
     vec4 wave = uGerstnerWaves[i];
-    float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
+    float turns = gerstnerTurns(wave, near ? gerstnerNearPhase(i) : gerstnerPhase(i), p);
     float s = sinTurns(turns);
     float c = sinTurns(turns + 0.25);
     vec2 k = TURN_RADIANS * wave.xy;
@@ -77,6 +87,15 @@ vec3 waveNormal(vec2 gridXZ) {
   vec3 tx = vec3(1.0 + dxdx, dydx, dxdz);
   vec3 tz = vec3(dxdz, dydz, 1.0 + dzdz);
   return normalize(cross(tz, tx));
+}
+
+vec3 waveNormal(vec2 gridXZ) {
+  return gerstnerNormal(gridXZ, false);
+}
+
+// The normal at the grid point uRenderOrigin + relativeXZ (the render origin is ocean.vert's).
+vec3 waveNormalNear(vec2 relativeXZ) {
+  return gerstnerNormal(relativeXZ, true);
 }
 
 // Waves shorter than this focus sunlight within the god-ray shafts' few metres; longer ones

@@ -23,7 +23,7 @@ export function skyFlip(sky: CubeTexture): number {
 
 export class OceanMaterial extends ShaderMaterial {
   constructor(
-    waves: WaveBinding,
+    private readonly waves: WaveBinding,
     fresnelTables: { fromAbove: Texture; fromBelow: Texture },
     sky: CubeTexture,
     shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>,
@@ -81,6 +81,7 @@ export class OceanMaterial extends ShaderMaterial {
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
     const [x, z] = this.absoluteCoordinates ? [0, 0] : renderOrigin(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
+    this.waves.model.setRenderOrigin?.(x, z);
     this.originShift.makeTranslation(x, 0, z);
     (this.uniforms.uViewRelative.value as Matrix4).multiplyMatrices(camera.matrixWorldInverse, this.originShift);
     (this.uniforms.uEyeRelative.value as Vector3).set(eye.x - x, eye.y, eye.z - z);
@@ -141,6 +142,18 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uLodCamera.value as Vector3).fromArray(camera);
     this.uniforms.uLodHeight.value = height;
     (this.uniforms.uMorphZones.value as Float32Array).set(zones);
+  }
+
+  /**
+   * Per-pixel normals and foam (Gerstner, FFT) at absolute grid points, as before they were
+   * taken relative to the render origin; only for a negative control: 10⁶ m out the glint
+   * comes in 6 cm blocks.
+   */
+  setAbsolutePixelNormals(on: boolean): void {
+    if (('WAVE_ABSOLUTE_PIXELS' in this.defines) === on) return;
+    if (on) this.defines.WAVE_ABSOLUTE_PIXELS = '';
+    else delete this.defines.WAVE_ABSOLUTE_PIXELS;
+    this.needsUpdate = true;
   }
 
   /** Per-pixel detail normals in the far bands; off only for a negative control. */

@@ -50,6 +50,8 @@ export interface ShadingFixes {
   cameraRelative: boolean;
   /** The sea bed marks itself as under the water for the waterline test (shaders/waterline.glsl). */
   seaBedMark: boolean;
+  /** Gerstner's and FFT's per-pixel normals and foam at grid points relative to the render origin (ocean.frag). */
+  relativePixelNormals: boolean;
 }
 
 export interface RenderStats extends ChunkStats {
@@ -528,6 +530,7 @@ export class OceanView {
     if (fixes.detailNormals !== undefined) this.material.setDetailNormals(fixes.detailNormals);
     if (fixes.cameraRelative !== undefined) this.material.absoluteCoordinates = !fixes.cameraRelative;
     if (fixes.seaBedMark !== undefined) this.seaBed.setWaterMark(fixes.seaBedMark);
+    if (fixes.relativePixelNormals !== undefined) this.material.setAbsolutePixelNormals(!fixes.relativePixelNormals);
   }
 
   /**

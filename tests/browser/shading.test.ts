@@ -11,6 +11,12 @@ const MIN_FAR_ENERGY = 4.3;
 // Measured: 3.05 / 3.07 = 0.99 with camera-relative positions, 5.79 / 3.07 = 1.89 with world
 // coordinates (main). The two spots have different waves, so not 1 exactly.
 const MAX_FAR_GLINT_RATIO = 1.3;
+// Second-difference energy of the glint view at 640 × 360, 10⁶ m out over near the origin
+// (spots 1.4 km and 10⁶ m out, different waves). Measured with normals at grid points
+// relative to the render origin: Gerstner 2.32 / 2.37 = 0.98, FFT 15.87 / 12.53 = 1.27; at
+// absolute grid points (main): Gerstner 3.41 / 2.37 = 1.44, FFT 26.74 / 12.53 = 2.13. FFT's
+// spots differ more (the glint's ridges fill more of the view 10⁶ m out), hence its bound.
+const MAX_PIXEL_NORMAL_RATIO: Record<'gerstner' | 'fft', number> = { gerstner: 1.2, fft: 1.6 };
 /** From 60 m up towards the glint point 60 / tan 18° = 184.7 m out at azimuth 20°. */
 const GLINT_VIEW = '0,60,0,63.2,0,-173.6';
 
@@ -30,6 +36,29 @@ function rowBandEnergy(png: Buffer, y0: number, y1: number): number {
   for (let y = y0; y < y1; y++) {
     for (let x = 0; x < width - 1; x++) {
       sum += Math.abs(luma(x, y) - luma(x + 1, y)) + Math.abs(luma(x, y) - luma(x, y + 1));
+      count++;
+    }
+  }
+  return sum / count;
+}
+
+/**
+ * Mean absolute second difference in luminance along rows and columns over rows y0–y1: a
+ * smooth glint scores low even where it is bright and steep; a glint made of 6 cm blocks
+ * (a step at every block's edge) scores high.
+ */
+function blockEnergy(png: Buffer, y0: number, y1: number): number {
+  const { width, data } = PNG.sync.read(png);
+  const luma = (x: number, y: number) => {
+    const o = (y * width + x) * 4;
+    return 0.2126 * data[o] + 0.7152 * data[o + 1] + 0.0722 * data[o + 2];
+  };
+  let sum = 0;
+  let count = 0;
+  for (let y = y0 + 1; y < y1 - 1; y++) {
+    for (let x = 1; x < width - 1; x++) {
+      const c = 2 * luma(x, y);
+      sum += Math.abs(luma(x - 1, y) - c + luma(x + 1, y)) + Math.abs(luma(x, y - 1) - c + luma(x, y + 1));
       count++;
     }
   }
@@ -78,6 +107,34 @@ describe('shading far away', () => {
     console.log(`[oceano] glint energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, world coordinates ${absolute.toFixed(2)}`);
     expect(far).toBeLessThan(near * MAX_FAR_GLINT_RATIO);
     expect(absolute).toBeGreaterThan(near * MAX_FAR_GLINT_RATIO);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('shades Gerstner and FFT per pixel as smoothly 10⁶ m out as near the origin', async () => {
+    // The same 2 m-high view of the glint at 640 × 360, where a pixel near the glint covers
+    // about 1.5 cm: the 6 cm blocks of normals at absolute float32 grid points span 4 pixels.
+    const view = (x: number) => ({ position: [x, 2, x + 10] as [number, number, number], target: [x, 0, x] as [number, number, number] });
+    const { page, consoleErrors } = await openOcean(harness, 't=10&waves=gerstner', 640, 360);
+    await page.evaluate(() => window.oceano.pause());
+    const energyAt = async (x: number) => {
+      await page.evaluate((pose) => window.oceano.setCamera(pose), view(x));
+      return blockEnergy(await redraw(page), 120, 359);
+    };
+    for (const waves of ['gerstner', 'fft'] as const) {
+      await page.evaluate((w) => {
+        window.oceano.setParams({ waves: w });
+        window.oceano.debug.setShadingFixes({ relativePixelNormals: true });
+      }, waves);
+      const near = await energyAt(1000);
+      const far = await energyAt(999000);
+      // Negative control, and main's picture: normals and foam at absolute grid points.
+      await page.evaluate(() => window.oceano.debug.setShadingFixes({ relativePixelNormals: false }));
+      const absolute = await energyAt(999000);
+      console.log(`[oceano] ${waves} glint block energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, absolute grid points ${absolute.toFixed(2)}`);
+      expect(far).toBeLessThan(near * MAX_PIXEL_NORMAL_RATIO[waves]);
+      expect(absolute).toBeGreaterThan(near * MAX_PIXEL_NORMAL_RATIO[waves]);
+    }
     expect(consoleErrors).toEqual([]);
     await page.close();
   });

@@ -1,9 +1,10 @@
-import { Vector3, type IUniform, type Texture, type WebGLRenderer } from 'three';
+import { Vector2, Vector3, type IUniform, type Texture, type WebGLRenderer } from 'three';
 import fftChunk from '../../../shaders/waves/fft.glsl?raw';
 import type { OceanParams } from '../../sim/params';
 import type { FftWaveModel } from '../../sim/fftWaveModel';
 import { cascadeSpread } from '../../sim/spectralBounds';
 import { foamJacobianThreshold, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../sim/whitecaps';
+import { tileOriginTexels } from '../../sim/originPhases';
 import { FftFoam } from '../fft/fftFoam';
 import { GpuFftOcean } from '../fft/gpuFft';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
@@ -35,7 +36,7 @@ type FftUniforms = Record<
   | 'uFftDisplacement0' | 'uFftDisplacement1' | 'uFftDisplacement2'
   | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
   | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
-  | 'uFftScale' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta',
+  | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta',
   IUniform
 >;
 
@@ -54,6 +55,7 @@ export class FftWaveView implements WaveModelView {
   /** Whether the result textures are LINEAR and the chunk reads them filtered per pixel. */
   private readonly filtered: boolean;
   private time = Number.NaN;
+  private origin: [number, number] = [0, 0];
   private foamEnabled = true;
   private foamThreshold = 0.7;
   /** Per cascade: its Jacobian threshold and soft edge (each band folds less often than the sea). */
@@ -82,6 +84,7 @@ export class FftWaveView implements WaveModelView {
       uFftFoam1: { value: null },
       uFftFoam2: { value: null },
       uFftScale: { value: new Vector3() },
+      uFftNearOffset: { value: [new Vector2(), new Vector2(), new Vector2()] },
       uFftN: { value: 1 },
       uFoamEnabled: { value: 1 },
       uFoamThreshold: { value: this.foamThreshold },
@@ -118,7 +121,22 @@ export class FftWaveView implements WaveModelView {
     this.gpu.derivatives.forEach((t, c) => (u[`uFftDerivatives${c}` as 'uFftDerivatives0'].value = t));
     (u.uFftScale.value as Vector3).set(n / setup.cascades[0].size, n / setup.cascades[1].size, n / setup.cascades[2].size);
     u.uFftN.value = n;
+    this.placeNearOffsets();
     this.bindFoam();
+  }
+
+  /** The render origin the pixels' relative grid points are measured from (OceanMaterial.onBeforeRender). */
+  setRenderOrigin(x: number, z: number): void {
+    if (x === this.origin[0] && z === this.origin[1]) return;
+    this.origin = [x, z];
+    this.placeNearOffsets();
+  }
+
+  /** Where the render origin falls in each cascade's tile, in texels (src/sim/originPhases.ts). */
+  private placeNearOffsets(): void {
+    const { sea, cascades } = this.model.ocean.setup;
+    const offsets = this.uniforms.uFftNearOffset.value as Vector2[];
+    cascades.forEach((cascade, c) => offsets[c].fromArray(tileOriginTexels(cascade.size, sea.fftSize, this.origin[0], this.origin[1])));
   }
 
   private bindFoam(): void {

@@ -34,6 +34,10 @@ export class GerstnerWaveView implements WaveModelView {
     this.table.update(time);
   }
 
+  setRenderOrigin(x: number, z: number): void {
+    this.table.setRenderOrigin(x, z);
+  }
+
   dispose(): void {
     this.table.dispose();
   }

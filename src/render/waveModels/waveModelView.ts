@@ -15,6 +15,9 @@ import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
  *   vec3 waveNormal(vec2 gridXZ);        // unit normal of the displaced surface there
  *   float waveLensHeight(vec2 worldXZ);  // short waves' height: focuses the god-ray shafts
  * and nothing else that other shaders may rely on (helpers stay private by convention).
+ * A chunk that defines WAVE_PIXEL_NORMALS also defines, for ocean.frag's pixels,
+ *   vec3 waveNormalNear(vec2 relativeXZ); // waveNormal at the render origin + relativeXZ
+ * (and with WAVE_FOAM, waveFoamNear), fed the origin by setRenderOrigin.
  */
 export interface WaveModelView {
   readonly name: WavesChoice;
@@ -41,6 +44,12 @@ export interface WaveModelView {
   setParams(params: OceanParams): void;
   /** Prepares the uniforms (and any GPU passes) for a frame at `time`, seconds. */
   update(time: number): void;
+  /**
+   * The render origin (src/sim/renderOrigin.ts) the ocean's pixels measure their grid points
+   * from, before each draw (OceanMaterial.onBeforeRender): a model with per-pixel normals
+   * folds it into its phases in double precision. Absent where nothing is evaluated per pixel.
+   */
+  setRenderOrigin?(x: number, z: number): void;
   /**
    * For the profiler (oceano.debug.passTimings, `npm run bench`): runs this frame's GPU
    * passes once more, giving the same textures, calling `sync` (which waits for the GPU)
