@@ -114,6 +114,8 @@ export class OceanChunks {
   private readonly edgeScratch = [0, 0, 0, 0];
   /** Everything the selection depends on, as of the last frame that selected: the planes, camera, origin, bounds and settings. */
   private readonly lastKey = new Float64Array(SELECTION_KEY_LENGTH).fill(NaN);
+  /** The camera's world and projection matrices at the last culling capture (NaN: none yet). */
+  private readonly lastCameraMatrices = new Float64Array(32).fill(NaN);
   private readonly key = new Float64Array(SELECTION_KEY_LENGTH);
   private readonly zones = new Float32Array(MAX_LOD_BANDS * 2);
   /** Per band: the tile mesh (null where the band is drawn whole), its attributes and how many tiles it draws. */
@@ -305,6 +307,7 @@ export class OceanChunks {
   /** Makes the next frame select again (after the GPU buffers were lost, for one). */
   forgetSelection(): void {
     this.lastKey.fill(NaN);
+    this.lastCameraMatrices.fill(NaN);
   }
 
   /** The far rings' cells in view, and the skirt, around the grid's centre. */
@@ -367,6 +370,8 @@ export class OceanChunks {
 
   private captureCullingView(camera: PerspectiveCamera): void {
     camera.updateMatrixWorld();
+    // A camera that has not moved since the last capture has the same frustum and origin.
+    if (this.sameCameraMatrices(camera)) return;
     this.viewProjection.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
     this.frustum.setFromProjectionMatrix(this.viewProjection);
     this.frustum.planes.forEach((plane, k) => {
@@ -376,8 +381,21 @@ export class OceanChunks {
       target.nz = plane.normal.z;
       target.d = plane.constant;
     });
-    camera.getWorldPosition(this.cameraPosition).toArray(this.cullCamera);
+    this.cameraPosition.setFromMatrixPosition(camera.matrixWorld).toArray(this.cullCamera);
     [this.selectionInput.originX, this.selectionInput.originZ] = oceanOrigin(this.cullCamera[0], this.cullCamera[2]);
+  }
+
+  private sameCameraMatrices(camera: PerspectiveCamera): boolean {
+    const last = this.lastCameraMatrices;
+    const world = camera.matrixWorld.elements;
+    const projection = camera.projectionMatrix.elements;
+    let same = true;
+    for (let i = 0; i < 16; i++) {
+      same &&= last[i] === world[i] && last[16 + i] === projection[i];
+      last[i] = world[i];
+      last[16 + i] = projection[i];
+    }
+    return same;
   }
 
   /**

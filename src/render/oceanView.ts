@@ -92,6 +92,7 @@ export class OceanView {
   private readonly wake = createWakeUniforms();
   /** How far the wake can raise or lower the surface this frame (wakeHeightBound), metres. */
   private wakeBound = 0;
+  private appliedWake: WakeUniformData | null = null;
   private readonly kelvinGuide: KelvinGuideView;
   private readonly light: Record<'uRefractedSun' | 'uSunColor', IUniform> = {
     uRefractedSun: { value: new Vector3() },
@@ -269,7 +270,9 @@ export class OceanView {
    * bound that grows the culling boxes, and the ±19.47° teaching guide at the boat.
    */
   setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
-    applyWakeUniforms(this.wake, data);
+    // The same packed data as last frame (a paused view, or the wake off) is already uploaded.
+    if (data !== this.appliedWake) applyWakeUniforms(this.wake, data);
+    this.appliedWake = data;
     this.material.setWakeOn(data.count >= 2);
     this.wakeBound = bound;
     this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);

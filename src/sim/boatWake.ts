@@ -24,6 +24,8 @@ export const WAKE_HULL = { length: 8, beam: 2.6 } as const;
 export const REPLAY_SECONDS = 80;
 /** Replay step, seconds: chords of a 6 °/s turn at 12 m/s then stray 1 mm from the arc. */
 const REPLAY_STEP = 0.1;
+/** The uniforms of a wake switched off: nothing to draw, and nothing the twin adds. */
+const WAKE_OFF = packWakeUniforms([], 0, { strength: 0, hullLength: WAKE_HULL.length, gravity: GRAVITY }, WAKE_HULL.beam);
 
 /** What the boat does at an instant: the inputs the wake is made from. */
 export interface WakeControls {
@@ -117,10 +119,14 @@ export class BoatWake {
   /** Records the boat at `time` (every frame); a fresh track is replayed first (see above). */
   record(time: number, c: WakeControls): void {
     const head = this.trackState.fine.latest();
+    // A paused view drawn again with the boat where it was: the track, and so the packed
+    // uniforms, stand (recording would change nothing but cost the repacking).
+    const r = this.replayed;
+    const replayStands = r === null || r.time !== time || (r.heading === c.heading && r.speed === c.speed && r.turnRate === c.turnRate);
+    if (head !== null && head.time === time && head.x === c.x && head.z === c.z && head.speed === c.speed && replayStands) return;
     const fresh = head === null || !(time >= head.time) || time - head.time > TRACK_MAX_GAP;
     // Paused on a replayed track and given new controls (a slider, the API): replay them, so
     // a frozen view shows the wake of what it now says the boat does.
-    const r = this.replayed;
     const changed = r !== null && r.time === time && (r.x !== c.x || r.z !== c.z || r.heading !== c.heading || r.speed !== c.speed || r.turnRate !== c.turnRate);
     if (fresh || changed) this.replay(time, c);
     else if (time !== r?.time) this.replayed = null;
@@ -141,6 +147,8 @@ export class BoatWake {
 
   /** The uniforms of shaders/wake.glsl at `time` (cached per time and settings). */
   uniforms(time: number, settings: WakeSettings): WakeUniformData {
+    // Off (the default), the shaders skip the wake and the twin adds nothing: no track to pack.
+    if (!settings.enabled) return WAKE_OFF;
     const p = this.packed;
     if (p && p.time === time && p.settings.enabled === settings.enabled && p.settings.strength === settings.strength) return p.data;
     const data = packWakeUniforms(this.trackState.points(), time, this.params(settings), WAKE_HULL.beam);
