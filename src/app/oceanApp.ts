@@ -19,6 +19,8 @@ import { checkCameraPose, checkProbe, checkSurfacePoint, checkTime } from './api
 import { loadBoatOrNotify, loadCustomSky } from './assetFallbacks';
 import { ContextWatch } from './contextLoss';
 import { AppControls } from './appControls';
+import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waveModels/registry';
+import { COMPARE_OFF } from '../sim/compareLayout';
 
 export type { OceanAppOptions } from './appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -46,6 +48,8 @@ export class OceanApp {
   private resizeObserver?: ResizeObserver;
   private readonly frameStats = new FrameStats();
   private readonly loop: FrameLoop;
+  /** The code of wave models asked for at run time, while it is on its way (showParams). */
+  private modelLoad?: Promise<void>;
   private started = false;
   private disposed = false;
 
@@ -77,7 +81,7 @@ export class OceanApp {
    */
   async start(): Promise<void> {
     const { state, showPanel, skyBase } = this.options, { loading } = this.scaffold;
-    const sky = await loadCustomSky(skyBase, state.sky, this.notify);
+    const [sky] = await Promise.all([loadCustomSky(skyBase, state.sky, this.notify), this.loadStartModels()]);
     loading.begin('firstFrame');
     await loading.painted();
     if (this.disposed) return sky?.dispose();
@@ -96,7 +100,7 @@ export class OceanApp {
       redraw: () => (this.view.contextRestored(), this.resize(), this.renderFrame()),
     });
     const physics = { model: () => this.view.waves, params: () => this.params, time: () => this.clock.time };
-    this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics }, this, {
+    this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics, panelFailed: () => this.notify(message('panelLoadFailed')) }, this, {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => this.setPlaying(playing),
       onShare: () => void this.share(),
@@ -109,11 +113,71 @@ export class OceanApp {
     this.renderFrame(true);
     this.frameStats.markFirstFrame();
     this.loop.start();
-    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded()]);
+    // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
+    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel()]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
     loading.finish();
+  }
+
+  /**
+   * The code of the models the starting parameters draw (waves=fft, gerstner, compare=), in
+   * parallel with a page's own sky. Where it cannot be fetched: a notice, and the seed's sea.
+   */
+  private async loadStartModels(): Promise<void> {
+    const wanted = modelsDrawn(this.params);
+    try {
+      await loadWaveModels(wanted);
+    } catch (error) {
+      console.warn('Oceano: a wave model\'s code could not be loaded.', error);
+      this.notify(message('modelLoadFailed', { name: modelsMissing(wanted).join(', '), fallback: 'seed' }));
+      this.params = { ...this.params, waves: 'seed', compare: COMPARE_OFF };
+    }
+  }
+
+  /**
+   * Shows the parameters. A model whose code has not arrived yet is fetched first: meanwhile
+   * the view keeps the models it shows and takes every other change now; if the code cannot
+   * be had, a notice says so and the parameters go back to the models shown.
+   */
+  private showParams(): void {
+    const missing = modelsMissing(modelsDrawn(this.params));
+    if (missing.length === 0) {
+      this.modelLoad = undefined;
+      this.view.applyParams(this.params);
+      return;
+    }
+    const shown = this.view.shownModels();
+    this.view.applyParams({ ...this.params, ...shown });
+    const load: Promise<void> = loadWaveModels(missing).then(
+      () => {
+        if (this.modelLoad !== load || this.disposed) return;
+        this.modelLoad = undefined;
+        this.view.applyParams(this.params);
+        this.loop.requestRender();
+      },
+      (error: unknown) => {
+        if (this.modelLoad !== load || this.disposed) return;
+        this.modelLoad = undefined;
+        console.warn('Oceano: a wave model\'s code could not be loaded.', error);
+        this.notify(message('modelLoadFailed', { name: missing.join(', '), fallback: modelsDrawn(shown).join(', ') }));
+        this.params = { ...this.params, ...shown };
+        labelCanvas(this.canvas, this.tr, this.params);
+        this.controls?.sync(this.params, this.clock.playing);
+        this.loop.requestRender();
+      },
+    );
+    this.modelLoad = load;
+  }
+
+  /**
+   * Settles once every part fetched on first use has arrived (a wave model's code asked for by
+   * setParams, the underwater passes) and is in the view.
+   */
+  async whenPartsLoaded(): Promise<void> {
+    while (this.modelLoad) await this.modelLoad;
+    await this.view.whenPartsLoaded();
   }
 
   /** Stops the frame loop while the tab is hidden or the view is scrolled away; a page of many views stays light. */
@@ -149,7 +213,7 @@ export class OceanApp {
     const startsFollowing = valid.boatFollow === true && !this.params.boatFollow;
     this.params = { ...this.params, ...valid };
     if (startsFollowing) this.boatMotion.startFollowing(this.orbit.target);
-    this.view.applyParams(this.params);
+    this.showParams();
     labelCanvas(this.canvas, this.tr, this.params);
     this.controls?.sync(this.params, this.clock.playing);
     this.loop.requestRender();
@@ -175,7 +239,7 @@ export class OceanApp {
     shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time) });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (checkSurfacePoint(x, z), this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params));
-  probeGpu = (points: unknown, time?: number): ProbeSample[] => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
+  probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   stats = (): OceanStats => this.frameStats.summary(this.view.stats());
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */
   debugView = (): OceanView => this.view;

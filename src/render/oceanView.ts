@@ -2,7 +2,7 @@ import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type 
 import type { OceanParams, ParamKey } from '../sim/params';
 import { paramsChanged } from '../sim/paramChanges';
 import { median } from '../sim/sampleStatistics';
-import { createWaveModel, type LiveWaveModel, type WavesChoice } from '../sim/waveModels';
+import type { LiveWaveModel, WavesChoice } from '../sim/waveModels';
 import { compareModelNames, compareStrips, type Strip } from '../sim/compareLayout';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { SUN_LIGHT_COLOR, sunDirection } from '../sim/sun';
@@ -15,12 +15,12 @@ import type { PassTiming, UnderwaterPost } from './underwaterPost';
 import { OceanMaterial } from './oceanMaterial';
 import { OceanChunks, type ChunkStats, type LodSettings } from './oceanChunks';
 import { fresnelTexture } from './dataTextures';
-import { SurfaceProbe, type ProbeSample } from './surfaceProbe';
+import type { ProbeSample, SurfaceProbe } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
 import { lightWithCaustics } from './hullCaustics';
 import { WaveBinding } from './waveModels/waveBinding';
-import { createWaveModelView } from './waveModels/registry';
+import { createWaveModelView, modelsDrawn, modelsMissing } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
 import { SunSky } from './sunSky';
 import { SkyBackground } from './skyBackground';
@@ -163,7 +163,7 @@ export class OceanView {
     this.sky = sky;
     this.skyBackground = new SkyBackground(sky);
     this.scene.add(this.skyBackground.mesh);
-    this.waveView = createWaveModelView(createWaveModel({ ...params, waves: firstModel(params) }), this.renderer);
+    this.waveView = createWaveModelView({ ...params, waves: firstModel(params) }, this.renderer);
     this.waveBinding = new WaveBinding(this.waveView);
     this.fresnelTexture = fresnelTexture(this.fresnelData);
     this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
@@ -185,6 +185,11 @@ export class OceanView {
     this.applyParams(params);
   }
 
+  /** The models on screen: `waves` and `compare` as last applied. */
+  shownModels(): Pick<OceanParams, 'waves' | 'compare'> {
+    return { waves: this.params.waves, compare: this.params.compare };
+  }
+
   /** The CPU twin of the waves on screen: the boat, the underwater switch and the API sample it. */
   get waves(): LiveWaveModel {
     return this.waveView.model;
@@ -196,6 +201,9 @@ export class OceanView {
    * not rebuild blur kernels or re-upload anything the view already has.
    */
   applyParams(params: OceanParams): void {
+    // The caller loads every drawn model's code first (OceanApp, loadWaveModels): the view never waits.
+    const missing = modelsMissing(modelsDrawn(params));
+    if (missing.length > 0) throw new Error(`Wave model code not loaded: ${missing.join(', ')}.`);
     const before = this.applied;
     const changed = (...keys: ParamKey[]) => paramsChanged(before, params, keys);
     this.applied = { ...params };
@@ -203,7 +211,7 @@ export class OceanView {
     const first = firstModel(params);
     if (first !== this.waveView.name) {
       const previous = this.waveView;
-      this.waveView = createWaveModelView(createWaveModel({ ...params, waves: first }), this.renderer);
+      this.waveView = createWaveModelView({ ...params, waves: first }, this.renderer);
       this.waveBinding.setModel(this.waveView);
       previous.dispose();
     }
@@ -535,8 +543,12 @@ export class OceanView {
     if (this.post) this.post.forceShaftLightWindow = on;
   }
 
-  /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
-  probeSurface(points: readonly (readonly [number, number])[], time: number): ProbeSample[] {
+  /**
+   * The active model's GPU chunk evaluated at grid points (x, z) and a time. The probe's code
+   * is fetched on first use (tests and the API use it, the picture never does).
+   */
+  async probeSurface(points: readonly (readonly [number, number])[], time: number): Promise<ProbeSample[]> {
+    const { SurfaceProbe } = await import('./surfaceProbe');
     this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding, this.wake);
     this.waveView.update(time);
     try {
