@@ -85,7 +85,9 @@ export class OceanApp {
     loading.begin('firstFrame');
     await loading.painted();
     if (this.disposed) return sky?.dispose();
+    performance.mark('oceano:view-start');
     this.view = new OceanView(this.canvas, sky, this.params, this.loop.requestRender);
+    performance.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
@@ -107,11 +109,13 @@ export class OceanApp {
       onDive: () => this.orbit.dive(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
     });
+    performance.mark('oceano:controls');
     this.resize();
     (this.resizeObserver = new ResizeObserver(() => this.resize())).observe(this.canvas);
     this.started = true;
-    this.renderFrame(true);
+    this.renderFrame(true, true);
     this.frameStats.markFirstFrame();
+    performance.mark('oceano:first-frame');
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
     const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel()]);
@@ -193,14 +197,17 @@ export class OceanApp {
   }
 
   /** Draws one frame at the clock's time; `sync` waits for the GPU so frameMs counts GPU work (see FrameStats). */
-  renderFrame(sync = this.frameStats.loopShouldSync()): void {
+  renderFrame(sync = this.frameStats.loopShouldSync(), first = false): void {
     if (this.context?.lost) return;
     const start = performance.now();
     this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view);
     const boatEnd = performance.now();
+    if (first) performance.mark('oceano:first-boat-update');
     this.view.update(this.clock.time);
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
+    if (first) performance.mark('oceano:first-update');
     this.view.draw();
+    if (first) performance.mark('oceano:first-draw-submitted');
     this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());
     if (!sync) return;
     this.view.waitForGpu();

@@ -158,13 +158,16 @@ export class OceanView {
     this.camera.position.fromArray(DEFAULT_CAMERA.position);
     this.camera.lookAt(...DEFAULT_CAMERA.target);
 
+    performance.mark('oceano:renderer');
     if (!customSky) this.sunSky = new SunSky();
+    performance.mark('oceano:sky-clouds');
     const sky = customSky ?? (this.sunSky as SunSky).texture;
     this.sky = sky;
     this.skyBackground = new SkyBackground(sky);
     this.scene.add(this.skyBackground.mesh);
     this.waveView = createWaveModelView({ ...params, waves: firstModel(params) }, this.renderer);
     this.waveBinding = new WaveBinding(this.waveView);
+    performance.mark('oceano:wave-model');
     this.fresnelTexture = fresnelTexture(this.fresnelData);
     this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
     this.materialInputs = {
@@ -182,7 +185,9 @@ export class OceanView {
     this.lights = new SceneLights(this.scene);
     this.kelvinGuide = new KelvinGuideView(this.scene);
     this.params = params;
+    performance.mark('oceano:scene');
     this.applyParams(params);
+    performance.mark('oceano:sky-painted');
   }
 
   /** The models on screen: `waves` and `compare` as last applied. */
