@@ -2,7 +2,7 @@ import type { OceanParams } from '../sim/params';
 import { BoatSteering } from './boatSteering';
 import { CameraKeys } from './cameraKeys';
 import type { CameraPose } from './cameraPose';
-import { ControlPanel, type ControlPanelHooks, type LiveCounts } from './controlPanel';
+import type { ControlPanel, ControlPanelHooks, LiveCounts } from './controlPanel';
 import { FresnelPlot } from './fresnelPlot';
 import type { Translator } from './i18n';
 import { PhysicsPanel, type PhysicsSource } from './physicsPanel';
@@ -25,7 +25,12 @@ export interface KeyedApp {
  * panel, kept in step with the parameters.
  */
 export class AppControls {
-  private readonly panel?: ControlPanel;
+  /** Built by loadPanel, once lil-gui's code has arrived. */
+  private panel?: ControlPanel;
+  private panelLoad?: Promise<void>;
+  /** What the panel shows when it is built: the last sync's. */
+  private shown: { params: OceanParams; playing: boolean };
+  private disposed = false;
   private readonly steering: BoatSteering;
   private readonly cameraKeys: CameraKeys;
   private readonly tr: Translator;
@@ -36,11 +41,11 @@ export class AppControls {
   constructor(
     private readonly container: HTMLElement,
     private readonly fresnelData: Float32Array,
-    state: { showPanel: boolean; params: OceanParams; playing: boolean; tr: Translator; physics: PhysicsSource },
+    private readonly state: { showPanel: boolean; params: OceanParams; playing: boolean; tr: Translator; physics: PhysicsSource; panelFailed: () => void },
     app: KeyedApp,
-    hooks: ControlPanelHooks,
+    private readonly hooks: ControlPanelHooks,
   ) {
-    if (state.showPanel) this.panel = new ControlPanel(container, state.params, state.playing, hooks, state.tr);
+    this.shown = { params: state.params, playing: state.playing };
     // The full page steers from anywhere; an embedded figure only when it has the focus.
     const keyTarget: Window | HTMLElement = state.showPanel ? window : container;
     this.steering = new BoatSteering(keyTarget, (change) => app.setParams(change), () => app.getParams());
@@ -52,12 +57,34 @@ export class AppControls {
     this.sync(state.params, state.playing);
   }
 
+  /**
+   * Builds the lil-gui panel (full page only). Its code (lil-gui is about 14 KB gzipped) is a
+   * chunk of its own, fetched after the first frame (OceanApp.start) so the sea does not wait
+   * for it; where it cannot be fetched the ocean runs without a panel and says so.
+   */
+  loadPanel(): Promise<void> {
+    if (!this.state.showPanel) return Promise.resolve();
+    this.panelLoad ??= import('./controlPanel').then(
+      ({ ControlPanel }) => {
+        if (this.disposed) return;
+        this.panel = new ControlPanel(this.container, this.shown.params, this.shown.playing, this.hooks, this.tr);
+        this.panel.sync(this.shown.params, this.shown.playing);
+      },
+      (error: unknown) => {
+        console.warn('Oceano: the control panel\'s code could not be loaded.', error);
+        if (!this.disposed) this.state.panelFailed();
+      },
+    );
+    return this.panelLoad;
+  }
+
   /** Applies held steering keys for `seconds` of the loop. */
   steer(seconds: number): void {
     this.steering.apply(seconds);
   }
 
   sync(params: OceanParams, playing: boolean): void {
+    this.shown = { params, playing };
     // The plot is made the first time it is asked for: most figures never show it.
     if (params.fresnelPlot) this.fresnelPlot ??= new FresnelPlot(this.container, this.fresnelData, this.tr);
     this.fresnelPlot?.setVisible(params.fresnelPlot);
@@ -75,6 +102,7 @@ export class AppControls {
   }
 
   dispose(): void {
+    this.disposed = true;
     this.steering.dispose();
     this.cameraKeys.dispose();
     this.panel?.dispose();

@@ -15,8 +15,9 @@ export interface OceanoApi {
   /** Resolves once the first frame is drawn and the boat is in it (or a notice says why it is not). */
   ready: Promise<void>;
   /**
-   * Settles once every part loaded on first use that the view has asked for (the underwater
-   * passes, on the first frame below the surface) has arrived, and a frame with it is drawn.
+   * Settles once every part loaded on first use that the view has asked for (a wave model's
+   * code after setParams({ waves }) or { compare }; the underwater passes, on the first frame
+   * below the surface) has arrived, and a frame with it is drawn.
    */
   loaded(): Promise<void>;
   setTime(seconds: number): void;
@@ -34,8 +35,12 @@ export interface OceanoApi {
   /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boatPose.ts). */
   boat(): BoatInfo;
   stats(): OceanStats;
-  /** The running sea measured through its CPU twin against theory (the physics panel's figures). Takes seconds. */
-  physics(): PhysicsReport;
+  /**
+   * The running sea measured through its CPU twin against theory (the physics panel's
+   * figures), from the time of the call. Takes seconds; async because the estimators' code
+   * is fetched on first use.
+   */
+  physics(): Promise<PhysicsReport>;
   notices(): string[];
   /** The link that reopens this view exactly (what the share button copies). */
   shareUrl(): string;
@@ -81,7 +86,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     play: () => app.play(),
     pause: () => app.pause(),
     renderFrame: () => app.renderFrame(true),
-    loaded: () => app.debugView().whenPartsLoaded().then(() => app.renderFrame(true)),
+    loaded: () => app.whenPartsLoaded().then(() => app.renderFrame(true)),
     getParams: () => app.getParams(),
     setParams: (partial) => app.setParams(partial),
     setCamera: (pose) => app.setCamera(pose),
@@ -90,7 +95,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     probeGpu: async (points, t) => app.probeGpu(points, t),
     boat: () => app.boat(),
     stats: () => app.stats(),
-    physics: () => started(app.physicsPanel()).measure(),
+    physics: async () => started(app.physicsPanel()).measure(),
     notices: () => app.notices.messages(),
     shareUrl: () => app.shareUrl(),
     activity: () => app.activity(),
@@ -148,7 +153,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     notices: fail,
     shareUrl: fail,
     activity: fail,
-    physics: fail,
+    physics: () => Promise.reject(reason),
     debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, setShadingFixes: fail, stripCulling: fail, physicsRuns: () => Promise.reject(reason) },
     get three(): never {
       throw reason;

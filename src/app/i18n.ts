@@ -59,6 +59,8 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     boatNoGeometry: (v) => `The boat model "${v.url}" has no geometry to float. The ocean runs without the boat.`,
     boatStateInvalid: (v) => `"boatState=${v.text}" is not ten finite numbers within the boat's area; the boat starts afresh.`,
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" is not a recorded track; the wake is replayed from the boat's present course.`,
+    modelLoadFailed: (v) => `The code of the "${v.name}" waves could not be downloaded; still showing "${v.fallback}". Choose it again later, or reload the page.`,
+    panelLoadFailed: () => 'The control panel could not be downloaded; the ocean runs without it. Reload the page to try again.',
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -91,6 +93,8 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     boatNoGeometry: (v) => `El modelo del barco "${v.url}" no tiene geometría que pueda flotar. El océano sigue sin él.`,
     boatStateInvalid: (v) => `"boatState=${v.text}" no son diez números finitos dentro de la zona del barco; el barco empieza de nuevo.`,
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" no es una derrota grabada; la estela se reconstruye con el rumbo actual del barco.`,
+    modelLoadFailed: (v) => `No se pudo descargar el código de las olas "${v.name}"; se sigue mostrando "${v.fallback}". Vuelve a elegirlas más tarde o recarga la página.`,
+    panelLoadFailed: () => 'No se pudo descargar el panel de controles; el océano sigue sin él. Recarga la página para intentarlo de nuevo.',
   },
 };
 

@@ -12,6 +12,7 @@ import { parseUrlState } from './urlState';
 
 /** The page bootstrap: reads the URL and the browser's preferences and hands them to one OceanApp. */
 function boot(): void {
+  performance.mark('oceano:script');
   const container = document.getElementById('oceano-page') as HTMLElement;
   const state = parseUrlState(window.location.search);
   const language = state.language ?? preferredLanguage(navigator.languages);

@@ -19,6 +19,8 @@ import { checkCameraPose, checkProbe, checkSurfacePoint, checkTime } from './api
 import { loadBoatOrNotify, loadCustomSky } from './assetFallbacks';
 import { ContextWatch } from './contextLoss';
 import { AppControls } from './appControls';
+import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waveModels/registry';
+import { COMPARE_OFF } from '../sim/compareLayout';
 
 export type { OceanAppOptions } from './appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -46,6 +48,8 @@ export class OceanApp {
   private resizeObserver?: ResizeObserver;
   private readonly frameStats = new FrameStats();
   private readonly loop: FrameLoop;
+  /** The code of wave models asked for at run time, while it is on its way (showParams). */
+  private modelLoad?: Promise<void>;
   private started = false;
   private disposed = false;
 
@@ -77,11 +81,13 @@ export class OceanApp {
    */
   async start(): Promise<void> {
     const { state, showPanel, skyBase } = this.options, { loading } = this.scaffold;
-    const sky = await loadCustomSky(skyBase, state.sky, this.notify);
+    const [sky] = await Promise.all([loadCustomSky(skyBase, state.sky, this.notify), this.loadStartModels()]);
     loading.begin('firstFrame');
     await loading.painted();
     if (this.disposed) return sky?.dispose();
+    performance.mark('oceano:view-start');
     this.view = new OceanView(this.canvas, sky, this.params, this.loop.requestRender);
+    performance.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
@@ -96,24 +102,86 @@ export class OceanApp {
       redraw: () => (this.view.contextRestored(), this.resize(), this.renderFrame()),
     });
     const physics = { model: () => this.view.waves, params: () => this.params, time: () => this.clock.time };
-    this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics }, this, {
+    this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics, panelFailed: () => this.notify(message('panelLoadFailed')) }, this, {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => this.setPlaying(playing),
       onShare: () => void this.share(),
       onDive: () => this.orbit.dive(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
     });
+    performance.mark('oceano:controls');
     this.resize();
     (this.resizeObserver = new ResizeObserver(() => this.resize())).observe(this.canvas);
     this.started = true;
-    this.renderFrame(true);
+    this.renderFrame(true, true);
     this.frameStats.markFirstFrame();
+    performance.mark('oceano:first-frame');
     this.loop.start();
-    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded()]);
+    // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
+    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel()]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
     loading.finish();
+  }
+
+  /**
+   * The code of the models the starting parameters draw (waves=fft, gerstner, compare=), in
+   * parallel with a page's own sky. Where it cannot be fetched: a notice, and the seed's sea.
+   */
+  private async loadStartModels(): Promise<void> {
+    const wanted = modelsDrawn(this.params);
+    try {
+      await loadWaveModels(wanted);
+    } catch (error) {
+      console.warn('Oceano: a wave model\'s code could not be loaded.', error);
+      this.notify(message('modelLoadFailed', { name: modelsMissing(wanted).join(', '), fallback: 'seed' }));
+      this.params = { ...this.params, waves: 'seed', compare: COMPARE_OFF };
+    }
+  }
+
+  /**
+   * Shows the parameters. A model whose code has not arrived yet is fetched first: meanwhile
+   * the view keeps the models it shows and takes every other change now; if the code cannot
+   * be had, a notice says so and the parameters go back to the models shown.
+   */
+  private showParams(): void {
+    const missing = modelsMissing(modelsDrawn(this.params));
+    if (missing.length === 0) {
+      this.modelLoad = undefined;
+      this.view.applyParams(this.params);
+      return;
+    }
+    const shown = this.view.shownModels();
+    this.view.applyParams({ ...this.params, ...shown });
+    const load: Promise<void> = loadWaveModels(missing).then(
+      () => {
+        if (this.modelLoad !== load || this.disposed) return;
+        this.modelLoad = undefined;
+        this.view.applyParams(this.params);
+        this.loop.requestRender();
+      },
+      (error: unknown) => {
+        if (this.modelLoad !== load || this.disposed) return;
+        this.modelLoad = undefined;
+        console.warn('Oceano: a wave model\'s code could not be loaded.', error);
+        this.notify(message('modelLoadFailed', { name: missing.join(', '), fallback: modelsDrawn(shown).join(', ') }));
+        this.params = { ...this.params, ...shown };
+        labelCanvas(this.canvas, this.tr, this.params);
+        this.controls?.sync(this.params, this.clock.playing);
+        this.loop.requestRender();
+      },
+    );
+    this.modelLoad = load;
+  }
+
+  /**
+   * Settles once every part fetched on first use has arrived (a wave model's code asked for by
+   * setParams, the underwater passes) and is in the view.
+   */
+  async whenPartsLoaded(): Promise<void> {
+    while (this.modelLoad) await this.modelLoad;
+    await this.view.whenPartsLoaded();
   }
 
   /** Stops the frame loop while the tab is hidden or the view is scrolled away; a page of many views stays light. */
@@ -129,14 +197,17 @@ export class OceanApp {
   }
 
   /** Draws one frame at the clock's time; `sync` waits for the GPU so frameMs counts GPU work (see FrameStats). */
-  renderFrame(sync = this.frameStats.loopShouldSync()): void {
+  renderFrame(sync = this.frameStats.loopShouldSync(), first = false): void {
     if (this.context?.lost) return;
     const start = performance.now();
     this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view);
     const boatEnd = performance.now();
+    if (first) performance.mark('oceano:first-boat-update');
     this.view.update(this.clock.time);
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
+    if (first) performance.mark('oceano:first-update');
     this.view.draw();
+    if (first) performance.mark('oceano:first-draw-submitted');
     this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());
     if (!sync) return;
     this.view.waitForGpu();
@@ -149,7 +220,7 @@ export class OceanApp {
     const startsFollowing = valid.boatFollow === true && !this.params.boatFollow;
     this.params = { ...this.params, ...valid };
     if (startsFollowing) this.boatMotion.startFollowing(this.orbit.target);
-    this.view.applyParams(this.params);
+    this.showParams();
     labelCanvas(this.canvas, this.tr, this.params);
     this.controls?.sync(this.params, this.clock.playing);
     this.loop.requestRender();
@@ -175,7 +246,7 @@ export class OceanApp {
     shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time) });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (checkSurfacePoint(x, z), this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params));
-  probeGpu = (points: unknown, time?: number): ProbeSample[] => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
+  probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   stats = (): OceanStats => this.frameStats.summary(this.view.stats());
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */
   debugView = (): OceanView => this.view;

@@ -1,5 +1,5 @@
 import type { OceanParams } from '../sim/params';
-import { measurePhysics, type MeasuredSea, type PhysicsReport } from '../sim/physicsReport';
+import type { MeasuredSea, PhysicsReport } from '../sim/physicsReport';
 import { seaStateFromParams } from '../sim/seaState';
 import type { LiveWaveModel } from '../sim/waveModels';
 
@@ -19,6 +19,8 @@ export function measuredSea(model: LiveWaveModel, params: OceanParams): Measured
 
 /** What the lazily loaded plots module exports (src/app/physicsPlots.ts). */
 type PlotsModule = typeof import('./physicsPlots');
+/** The estimators (with fft.js), also fetched on first use: the default first frame needs none of them. */
+type ReportModule = typeof import('../sim/physicsReport');
 type PhysicsView = InstanceType<PlotsModule['PhysicsView']>;
 
 /**
@@ -32,16 +34,31 @@ export class PhysicsPanel {
   private open = false;
   private view?: PhysicsView;
   private loading?: Promise<void>;
+  private report?: ReportModule;
+  private reportLoad?: Promise<ReportModule>;
 
   constructor(
     private readonly container: HTMLElement,
     private readonly source: PhysicsSource,
   ) {}
 
-  /** Measures now, from the current time on (a few seconds of CPU: only on demand). */
-  measure(): PhysicsReport {
+  /**
+   * Measures from the current time on (a few seconds of CPU: only on demand), once the
+   * estimators' code has arrived (the first call fetches it).
+   */
+  async measure(): Promise<PhysicsReport> {
+    const time = this.source.time();
+    return this.measureNow(await this.loadReport(), time);
+  }
+
+  private loadReport(): Promise<ReportModule> {
+    this.reportLoad ??= import('../sim/physicsReport').then((code) => (this.report = code));
+    return this.reportLoad;
+  }
+
+  private measureNow(code: ReportModule, time = this.source.time()): PhysicsReport {
     this.runs++;
-    return measurePhysics(measuredSea(this.source.model(), this.source.params()), this.source.time());
+    return code.measurePhysics(measuredSea(this.source.model(), this.source.params()), time);
   }
 
   setOpen(open: boolean): void {
@@ -51,13 +68,13 @@ export class PhysicsPanel {
       this.view?.setVisible(false);
       return;
     }
-    if (this.view) {
+    if (this.view && this.report) {
       this.view.setVisible(true);
-      this.view.show(this.measure());
+      this.view.show(this.measureNow(this.report));
       return;
     }
-    this.loading ??= import('./physicsPlots').then((plots) => {
-      this.view = new plots.PhysicsView(this.container, () => this.measure());
+    this.loading ??= Promise.all([import('./physicsPlots'), this.loadReport()]).then(([plots, code]) => {
+      this.view = new plots.PhysicsView(this.container, () => this.measureNow(code));
       this.view.setVisible(this.open);
       if (this.open) this.view.refresh();
     });

@@ -1,7 +1,7 @@
 import type { CubeTexture, IUniform, Texture, WebGLRenderer } from 'three';
 import type { OceanParams } from '../sim/params';
 import type { DisplacementBounds } from '../sim/waveModel';
-import { createWaveModel, type WavesChoice } from '../sim/waveModels';
+import type { WavesChoice } from '../sim/waveModels';
 import { OceanMaterial } from './oceanMaterial';
 import { OceanChunks } from './oceanChunks';
 import { WaveBinding } from './waveModels/waveBinding';
@@ -32,7 +32,7 @@ export class CompareSide {
   private readonly binding: WaveBinding;
 
   constructor(name: WavesChoice, params: OceanParams, renderer: WebGLRenderer, inputs: OceanMaterialInputs) {
-    this.view = createWaveModelView(createWaveModel({ ...params, waves: name }), renderer);
+    this.view = createWaveModelView({ ...params, waves: name }, renderer);
     this.binding = new WaveBinding(this.view);
     this.material = new OceanMaterial(this.binding, inputs.fresnelTables, inputs.sky, inputs.shared);
     this.chunks = new OceanChunks(this.material);

@@ -2,7 +2,7 @@ import { Color, PerspectiveCamera, Scene, Vector2, Vector3, WebGLRenderer, type 
 import type { OceanParams, ParamKey } from '../sim/params';
 import { paramsChanged } from '../sim/paramChanges';
 import { median } from '../sim/sampleStatistics';
-import { createWaveModel, type LiveWaveModel, type WavesChoice } from '../sim/waveModels';
+import type { LiveWaveModel, WavesChoice } from '../sim/waveModels';
 import { compareModelNames, compareStrips, type Strip } from '../sim/compareLayout';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fresnel';
 import { SUN_LIGHT_COLOR, sunDirection } from '../sim/sun';
@@ -15,12 +15,12 @@ import type { PassTiming, UnderwaterPost } from './underwaterPost';
 import { OceanMaterial } from './oceanMaterial';
 import { OceanChunks, type ChunkStats, type LodSettings } from './oceanChunks';
 import { fresnelTexture } from './dataTextures';
-import { SurfaceProbe, type ProbeSample } from './surfaceProbe';
+import type { ProbeSample, SurfaceProbe } from './surfaceProbe';
 import { HeightmapView } from './heightmapView';
 import { SceneLights } from './sceneLights';
 import { lightWithCaustics } from './hullCaustics';
 import { WaveBinding } from './waveModels/waveBinding';
-import { createWaveModelView } from './waveModels/registry';
+import { createWaveModelView, modelsDrawn, modelsMissing } from './waveModels/registry';
 import type { WaveModelView } from './waveModels/waveModelView';
 import { SunSky } from './sunSky';
 import { SkyBackground } from './skyBackground';
@@ -163,13 +163,16 @@ export class OceanView {
     this.camera.position.fromArray(DEFAULT_CAMERA.position);
     this.camera.lookAt(...DEFAULT_CAMERA.target);
 
+    performance.mark('oceano:renderer');
     if (!customSky) this.sunSky = new SunSky();
+    performance.mark('oceano:sky-clouds');
     const sky = customSky ?? (this.sunSky as SunSky).texture;
     this.sky = sky;
     this.skyBackground = new SkyBackground(sky);
     this.scene.add(this.skyBackground.mesh);
-    this.waveView = createWaveModelView(createWaveModel({ ...params, waves: firstModel(params) }), this.renderer);
+    this.waveView = createWaveModelView({ ...params, waves: firstModel(params) }, this.renderer);
     this.waveBinding = new WaveBinding(this.waveView);
+    performance.mark('oceano:wave-model');
     this.fresnelTexture = fresnelTexture(this.fresnelData);
     this.fresnelFromBelowTexture = fresnelTexture(this.fresnelFromBelowData);
     this.materialInputs = {
@@ -187,7 +190,14 @@ export class OceanView {
     this.lights = new SceneLights(this.scene);
     this.kelvinGuide = new KelvinGuideView(this.scene);
     this.params = params;
+    performance.mark('oceano:scene');
     this.applyParams(params);
+    performance.mark('oceano:sky-painted');
+  }
+
+  /** The models on screen: `waves` and `compare` as last applied. */
+  shownModels(): Pick<OceanParams, 'waves' | 'compare'> {
+    return { waves: this.params.waves, compare: this.params.compare };
   }
 
   /** The CPU twin of the waves on screen: the boat, the underwater switch and the API sample it. */
@@ -201,6 +211,9 @@ export class OceanView {
    * not rebuild blur kernels or re-upload anything the view already has.
    */
   applyParams(params: OceanParams): void {
+    // The caller loads every drawn model's code first (OceanApp, loadWaveModels): the view never waits.
+    const missing = modelsMissing(modelsDrawn(params));
+    if (missing.length > 0) throw new Error(`Wave model code not loaded: ${missing.join(', ')}.`);
     const before = this.applied;
     const changed = (...keys: ParamKey[]) => paramsChanged(before, params, keys);
     this.applied = { ...params };
@@ -208,7 +221,7 @@ export class OceanView {
     const first = firstModel(params);
     if (first !== this.waveView.name) {
       const previous = this.waveView;
-      this.waveView = createWaveModelView(createWaveModel({ ...params, waves: first }), this.renderer);
+      this.waveView = createWaveModelView({ ...params, waves: first }, this.renderer);
       this.waveBinding.setModel(this.waveView);
       previous.dispose();
     }
@@ -545,8 +558,12 @@ export class OceanView {
     if (this.post) this.post.forceShaftLightWindow = on;
   }
 
-  /** The active model's GPU chunk evaluated at grid points (x, z) and a time. */
-  probeSurface(points: readonly (readonly [number, number])[], time: number): ProbeSample[] {
+  /**
+   * The active model's GPU chunk evaluated at grid points (x, z) and a time. The probe's code
+   * is fetched on first use (tests and the API use it, the picture never does).
+   */
+  async probeSurface(points: readonly (readonly [number, number])[], time: number): Promise<ProbeSample[]> {
+    const { SurfaceProbe } = await import('./surfaceProbe');
     this.probe ??= new SurfaceProbe(this.renderer, this.waveBinding, this.wake);
     this.waveView.update(time);
     try {

@@ -33,6 +33,8 @@ export const MESSAGE_IDS = [
   'boatNoGeometry',
   'boatStateInvalid',
   'wakeTrackInvalid',
+  'modelLoadFailed',
+  'panelLoadFailed',
 ] as const;
 
 export type MessageId = (typeof MESSAGE_IDS)[number];

@@ -32,8 +32,8 @@ describe('physics panel', () => {
 
   it('fresh breeze (PM, U₁₀ = 10 m/s), Gerstner: dispersion, ωp, Tp and Hs within tolerance of theory', async () => {
     const { page, consoleErrors } = await openOcean(harness, 'waves=gerstner&windSpeed=10&spectrum=pierson-moskowitz&t=100', 320, 180);
-    const r = await page.evaluate(() => {
-      const p = window.oceano.physics();
+    const r = await page.evaluate(async () => {
+      const p = await window.oceano.physics();
       return { fit: p.dispersion.fitRatio, peak: p.peak, tp: p.peakPeriod, hs: p.hs };
     });
     console.log(`[oceano] physics, fresh breeze: ${JSON.stringify(r)}`);
@@ -50,8 +50,8 @@ describe('physics panel', () => {
 
   it('the seed model: the panel says its ripples follow no dispersion law and gives no spectrum theory', async () => {
     const { page } = await openOcean(harness, 't=10', 320, 180);
-    const r = await page.evaluate(() => {
-      const p = window.oceano.physics();
+    const r = await page.evaluate(async () => {
+      const p = await window.oceano.physics();
       return { notes: p.notes, theory: p.spectrum.theory, hs: p.hs.spectral };
     });
     expect(r.notes.join(' ')).toMatch(/ω = √\(g k\).*follow no dispersion law/);

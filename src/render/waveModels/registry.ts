@@ -1,33 +1,72 @@
-import type { LiveWaveModel, WavesChoice } from '../../sim/waveModels';
-import { FftWaveModel } from '../../sim/fftWaveModel';
+import type { WebGLRenderer } from 'three';
+import type { OceanParams } from '../../sim/params';
+import type { WavesChoice } from '../../sim/waveModels';
 import { SeedWaveModel } from '../../sim/seedWaveModel';
-import { FftWaveView } from './fftWaveView';
+import { compareModelNames } from '../../sim/compareLayout';
 import type { WaveModelView } from './waveModelView';
 import { SeedWaveView } from './seedWaveView';
-import { GerstnerLiveModel } from '../../sim/gerstnerLiveModel';
-import { GerstnerWaveView } from './gerstnerWaveView';
-import type { WebGLRenderer } from 'three';
+
+/** Makes one model's CPU twin and GPU half for these parameters. */
+export type WaveModelMaker = (params: OceanParams, renderer: WebGLRenderer) => WaveModelView;
 
 /**
- * The render side of each model, keyed like src/sim/waveModels.ts: adding a model to the
- * `waves` parameter makes the compiler ask for an entry here. A view gets the renderer for
- * models that run GPU passes of their own (an FFT); the seed's needs none.
+ * How the render side gets each model's code, keyed like src/sim/waveModels.ts: adding a
+ * model to the `waves` parameter makes the compiler ask for an entry here. The seed's is in
+ * the page's own chunk (the default first frame draws it); every other model's code is a
+ * chunk of its own, fetched the first time a view needs it (issue 14: the page's JavaScript
+ * before its first frame). A maker gets the renderer for models that run GPU passes of their
+ * own (an FFT).
  */
-const VIEWS: { [K in WavesChoice]: (model: LiveWaveModel, renderer: WebGLRenderer) => WaveModelView } = {
-  seed: (model) => {
-    if (!(model instanceof SeedWaveModel)) throw new TypeError(`The seed wave view needs a SeedWaveModel, got '${model.name}'.`);
-    return new SeedWaveView(model);
-  },
-  fft: (model, renderer) => {
-    if (!(model instanceof FftWaveModel)) throw new TypeError(`The FFT wave view needs an FftWaveModel, got '${model.name}'.`);
-    return new FftWaveView(model, renderer);
-  },
-  gerstner: (model) => {
-    if (!(model instanceof GerstnerLiveModel)) throw new TypeError(`The Gerstner wave view needs a GerstnerLiveModel, got '${model.name}'.`);
-    return new GerstnerWaveView(model);
-  },
+const LOADERS: { [K in WavesChoice]: () => Promise<WaveModelMaker> } = {
+  seed: () => Promise.resolve(makeSeedWaveView),
+  fft: () => import('./fftModelCode').then((code) => code.makeFftWaveView),
+  gerstner: () => import('./gerstnerModelCode').then((code) => code.makeGerstnerWaveView),
 };
 
-export function createWaveModelView(model: LiveWaveModel, renderer: WebGLRenderer): WaveModelView {
-  return VIEWS[model.name](model, renderer);
+function makeSeedWaveView(params: OceanParams): WaveModelView {
+  return new SeedWaveView(new SeedWaveModel(params));
+}
+
+const makers = new Map<WavesChoice, WaveModelMaker>([['seed', makeSeedWaveView]]);
+const loads = new Map<WavesChoice, Promise<void>>();
+
+/** Every model these parameters draw: `waves`, or each of a comparison's. */
+export function modelsDrawn(params: Pick<OceanParams, 'waves' | 'compare'>): WavesChoice[] {
+  const compared = compareModelNames<WavesChoice>(params.compare);
+  return compared.length > 0 ? compared : [params.waves];
+}
+
+/** Those of `names` whose code has not arrived yet. */
+export function modelsMissing(names: readonly WavesChoice[]): WavesChoice[] {
+  return names.filter((name) => !makers.has(name));
+}
+
+/**
+ * Fetches the code of every named model not loaded yet. Rejects when one cannot be fetched
+ * (the network, a stale deploy); a later call tries that one again.
+ */
+export function loadWaveModels(names: readonly WavesChoice[]): Promise<void> {
+  return Promise.all(
+    modelsMissing(names).map((name) => {
+      let load = loads.get(name);
+      if (!load) {
+        load = LOADERS[name]().then(
+          (maker) => void makers.set(name, maker),
+          (error: unknown) => {
+            loads.delete(name);
+            throw error;
+          },
+        );
+        loads.set(name, load);
+      }
+      return load;
+    }),
+  ).then(() => undefined);
+}
+
+/** A view of `params.waves`; its code must have been loaded (loadWaveModels). */
+export function createWaveModelView(params: OceanParams, renderer: WebGLRenderer): WaveModelView {
+  const make = makers.get(params.waves);
+  if (!make) throw new Error(`The code of wave model '${params.waves}' has not been loaded: call loadWaveModels first.`);
+  return make(params, renderer);
 }
