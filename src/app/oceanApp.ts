@@ -136,6 +136,7 @@ export class OceanApp {
     const boatEnd = performance.now();
     this.view.update(this.clock.time);
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
+    this.frameStats.recordTwin(this.view.waves.takeMainThreadMs?.() ?? null);
     this.view.draw();
     this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());
     if (!sync) return;

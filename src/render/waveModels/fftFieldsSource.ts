@@ -22,14 +22,20 @@ export class WorkerFieldSource implements FieldSource {
   private busy = false;
   private pending: FieldsRequest | null = null;
 
-  constructor(deliver: (reply: FieldsReply) => void) {
+  /**
+   * `spent(ms)` hears how long each reply kept the main thread: reading the message (Chromium
+   * deserialises `data` on first access) and `deliver`.
+   */
+  constructor(deliver: (reply: FieldsReply) => void, spent: (ms: number) => void = () => {}) {
     let worker: Worker | null = null;
     try {
       worker = new Worker(new URL('./fftFieldsWorker.ts', import.meta.url), { type: 'module' });
       worker.onmessage = (event: MessageEvent<FieldsReply>) => {
+        const start = performance.now();
         this.busy = false;
         deliver(event.data);
         this.flush();
+        spent(performance.now() - start);
       };
       worker.onerror = () => {
         this.worker?.terminate();
