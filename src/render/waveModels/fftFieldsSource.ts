@@ -20,6 +20,8 @@ export interface FieldsReply extends FieldsRequest {
 export class WorkerFieldSource implements FieldSource {
   private readonly worker: Worker | null;
   private busy = false;
+  /** The request the Worker is working on (null when idle). */
+  private inFlight: FieldsRequest | null = null;
   private pending: FieldsRequest | null = null;
 
   /**
@@ -33,6 +35,7 @@ export class WorkerFieldSource implements FieldSource {
       worker.onmessage = (event: MessageEvent<FieldsReply>) => {
         const start = performance.now();
         this.busy = false;
+        this.inFlight = null;
         deliver(event.data);
         this.flush();
         spent(performance.now() - start);
@@ -51,6 +54,12 @@ export class WorkerFieldSource implements FieldSource {
 
   request(sea: SeaState, time: number): void {
     if (!this.worker || this.failed) return;
+    // A frame asks twice for its time (prefetch, then the surface questions): the Worker is
+    // already on it, and a second answer would only cost the main thread another receipt.
+    if (this.inFlight && this.inFlight.sea === sea && this.inFlight.time === time) {
+      this.pending = null;
+      return;
+    }
     this.pending = { sea, time };
     if (!this.busy) this.flush();
   }
@@ -58,6 +67,7 @@ export class WorkerFieldSource implements FieldSource {
   private flush(): void {
     if (!this.worker || !this.pending || this.failed) return;
     this.busy = true;
+    this.inFlight = this.pending;
     this.worker.postMessage(this.pending);
     this.pending = null;
   }
