@@ -1,4 +1,4 @@
-// Time evolution of every cascade's spectrum, the GPU half of src/sim/spectralFields.ts:
+// Time evolution of one cascade's spectrum, the GPU half of src/sim/spectralFields.ts:
 // h̃(k,t) = h₀(k) e^{iωt} + conj(h₀(−k)) e^{−iωt} (Tessendorf 2001, eq. 26), then the eight
 // fields packed two real fields per complex number (see spectralFields.ts for the signs):
 //   out0 = (Dx + i h,      Dz + i ∂xDx)      out1 = (∂xh + i ∂zh,   ∂zDz + i ∂xDz)
@@ -6,8 +6,6 @@
 // §3.2.1), and the phase is 2π·fract(m·τ/T). A float32 τ/T alone would cost m·τ/T·6e-8 cycles
 // (1e-3 rad for m = 10⁴), so τ/T comes split in three, t1 + t2 + t3 (12 bits, 12 bits, rest),
 // and m in two, 4096·mh + ml (12 bits each): every partial product below is exact in float32.
-// The cascades lie side by side along x, one block of n columns each (src/render/fft/gpuFft.ts),
-// so one draw evolves them all.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -15,7 +13,7 @@ precision highp sampler2D;
 uniform sampler2D uH0;       // (Re h₀(k), Im h₀(k), Re h₀(−k), Im h₀(−k))
 uniform sampler2D uCycles;   // (4096·mh, ml, m): m = ω/ω₀ = 4096·mh + ml, whole cycles per repeat period T
 uniform vec3 uTauOverT;      // (t mod T) / T = x + y + z, reduced and split in float64 on the CPU
-uniform vec3 uTileSize;      // L of cascades 0, 1, 2, m
+uniform float uTileSize;     // L, m
 uniform float uChoppiness;   // λ
 uniform int uN;
 
@@ -43,12 +41,9 @@ vec2 cosSinTurns(float c) {
 }
 
 void main() {
-  ivec2 wide = ivec2(gl_FragCoord.xy);
-  int cascade = wide.x / uN;
-  ivec2 texel = ivec2(wide.x - cascade * uN, wide.y);
-  float tileSize = cascade == 0 ? uTileSize.x : (cascade == 1 ? uTileSize.y : uTileSize.z);
-  vec4 h0 = texelFetch(uH0, wide, 0);
-  vec3 m = texelFetch(uCycles, wide, 0).rgb;
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  vec4 h0 = texelFetch(uH0, texel, 0);
+  vec3 m = texelFetch(uCycles, texel, 0).rgb;
   vec3 t = uTauOverT;
   float cycles = fract(m.x * t.x) + fract(m.x * t.y) + fract(m.y * t.x) + fract(m.y * t.y) + m.z * t.z;
   vec2 cs = cosSinTurns(cycles);
@@ -60,7 +55,7 @@ void main() {
   vec2 h = a + b;
 
   ivec2 signedIndex = texel - ivec2(greaterThanEqual(texel, ivec2(uN / 2))) * uN;
-  vec2 k = vec2(signedIndex) * (6.283185307179586 / tileSize);
+  vec2 k = vec2(signedIndex) * (6.283185307179586 / uTileSize);
   float kLength = length(k);
   vec2 u = kLength > 0.0 ? k / kLength : vec2(0.0);
 

@@ -4,12 +4,6 @@
 //   out[o] = in[j] + (−1)^r · e^{+iπk/Ns} · in[j + n/2]
 // (Govindaraju et al. 2008; the same indexing, tested against fft.js, is in
 // src/sim/stockhamFft.ts). The twiddles come from a table computed in float64 on the CPU.
-//
-// The input may hold several n × n grids side by side along x (the cascades, one block of n
-// columns each: src/render/fft/gpuFft.ts), so one draw transforms them all: a stage only ever
-// combines texels of the same row or column of one block. uBlock < 0: the output is as wide
-// as the input, each output texel's block is its own; uBlock = b ≥ 0: the output is one n × n
-// grid, block b of the input.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -20,7 +14,6 @@ uniform sampler2D uTwiddle;   // n/2 × 1: (cos, sin) of 2π m/n
 uniform int uN;
 uniform int uHalfSize;        // Ns = 2^stage
 uniform bool uVertical;       // false: along x (texel column), true: along z (texel row)
-uniform int uBlock;           // see above
 
 layout(location = 0) out vec4 out0;
 layout(location = 1) out vec4 out1;
@@ -29,15 +22,13 @@ vec2 mul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * 
 
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  int base = uBlock < 0 ? (texel.x / uN) * uN : uBlock * uN;
-  int x = uBlock < 0 ? texel.x - base : texel.x;
-  int o = uVertical ? texel.y : x;
+  int o = uVertical ? texel.y : texel.x;
   int k = o % uHalfSize;
   int j = (o / (2 * uHalfSize)) * uHalfSize + k;
   float sign = ((o / uHalfSize) % 2 == 0) ? 1.0 : -1.0;
   vec2 w = sign * texelFetch(uTwiddle, ivec2(k * uN / (2 * uHalfSize), 0), 0).xy;
-  ivec2 ia = uVertical ? ivec2(base + x, j) : ivec2(base + j, texel.y);
-  ivec2 ib = uVertical ? ivec2(base + x, j + uN / 2) : ivec2(base + j + uN / 2, texel.y);
+  ivec2 ia = uVertical ? ivec2(texel.x, j) : ivec2(j, texel.y);
+  ivec2 ib = uVertical ? ivec2(texel.x, j + uN / 2) : ivec2(j + uN / 2, texel.y);
   vec4 a0 = texelFetch(uInput0, ia, 0);
   vec4 b0 = texelFetch(uInput0, ib, 0);
   vec4 a1 = texelFetch(uInput1, ia, 0);

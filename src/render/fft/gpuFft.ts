@@ -29,9 +29,9 @@ import { floatTexture } from '../dataTextures';
  * Two RGBA32F colour attachments, written together by every pass (MRT). Needs EXT_color_buffer_float.
  * `filtered`: LINEAR, for the ocean's pixels' filtered reads (shaders/waves/fft.glsl); texelFetch ignores it.
  */
-function mrtTarget(width: number, height: number, filtered = false): WebGLRenderTarget {
+function mrtTarget(n: number, filtered = false): WebGLRenderTarget {
   const filter = filtered ? LinearFilter : NearestFilter;
-  const target = new WebGLRenderTarget(width, height, {
+  const target = new WebGLRenderTarget(n, n, {
     count: 2,
     type: FloatType,
     format: RGBAFormat,
@@ -57,33 +57,25 @@ function twiddleTable(n: number): DataTexture {
 }
 
 /**
- * GPU inverse 2-D FFTs of `blocks` n × n grids at once, four complex signals each (two RGBA32F
- * textures), by 2·log₂n Stockham passes. The grids lie side by side along x in the inputs
- * (blocks·n × n), so each pass is ONE draw for all of them: under SwiftShader a pass costs
- * about as much per draw as per texel (fftSize 64 and 128 took the same time), so the three
- * cascades' 42 passes of 128² became 14. All passes but the last ping-pong between two wide
- * MRT targets; the last writes each grid into its own n × n target, so readers keep one
- * texture per cascade (repeating, filterable).
+ * GPU inverse 2-D FFTs of n × n grids, four complex signals at a time (two RGBA32F textures),
+ * by 2·log₂n Stockham passes ping-ponging between two MRT render targets. The result lands in
+ * `target` (the pass count is even), so callers can keep its textures bound.
  */
 export class GpuInverseFft {
   readonly n: number;
-  readonly blocks: number;
   private readonly scene = new Scene();
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly mesh: Mesh;
   private readonly stage: RawShaderMaterial;
   private readonly twiddle: DataTexture;
-  /** Two (blocks·n) × n targets; the first also takes the spectrum pass's output (see `input`). */
-  private readonly scratch: [WebGLRenderTarget, WebGLRenderTarget];
+  private readonly scratch: WebGLRenderTarget;
 
   constructor(
     private readonly renderer: WebGLRenderer,
     n: number,
-    blocks = 1,
   ) {
     if (!renderer.extensions.has('EXT_color_buffer_float')) throw new Error('The spectral ocean needs WebGL2 float render targets (EXT_color_buffer_float).');
     this.n = n;
-    this.blocks = blocks;
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
     this.twiddle = twiddleTable(n);
@@ -99,7 +91,6 @@ export class GpuInverseFft {
         uN: { value: n },
         uHalfSize: { value: 1 },
         uVertical: { value: false },
-        uBlock: { value: -1 },
       },
       depthTest: false,
       depthWrite: false,
@@ -107,17 +98,12 @@ export class GpuInverseFft {
     this.mesh = new Mesh(geometry, this.stage);
     this.mesh.frustumCulled = false;
     this.scene.add(this.mesh);
-    this.scratch = [mrtTarget(blocks * n, n), mrtTarget(blocks * n, n)];
+    this.scratch = mrtTarget(n);
   }
 
-  /** A (blocks·n) × n target to draw the transform's input into (it is also a scratch target: transform overwrites it). */
-  get input(): WebGLRenderTarget {
-    return this.scratch[0];
-  }
-
-  /** An n × n render target a block's result can be written into (LINEAR-filtered when `filtered`). */
+  /** A render target the FFT can write its result into (LINEAR-filtered when `filtered`). */
   createTarget(filtered = false): WebGLRenderTarget {
-    return mrtTarget(this.n, this.n, filtered);
+    return mrtTarget(this.n, filtered);
   }
 
   /** Draws `material` over every texel of `target` (any size). Leaves the renderer's own target as it was. */
@@ -132,74 +118,55 @@ export class GpuInverseFft {
     this.renderer.autoClear = autoClear;
   }
 
-  /**
-   * Inverse-transforms the two (blocks·n) × n textures (rows, then columns), block b into
-   * targets[b]. The inputs may be `input`'s own textures.
-   */
-  transform(input0: Texture, input1: Texture, targets: readonly WebGLRenderTarget[]): void {
-    if (targets.length !== this.blocks) throw new RangeError(`Expected ${this.blocks} result targets, got ${targets.length}.`);
+  /** Inverse-transforms the two textures (rows, then columns) into `target`. */
+  transform(input0: Texture, input1: Texture, target: WebGLRenderTarget): void {
     const u = this.stage.uniforms;
-    const passes: { vertical: boolean; half: number }[] = [];
-    for (const vertical of [false, true]) for (let half = 1; half < this.n; half *= 2) passes.push({ vertical, half });
     let source: [Texture, Texture] = [input0, input1];
-    passes.forEach(({ vertical, half }, i) => {
-      u.uInput0.value = source[0];
-      u.uInput1.value = source[1];
-      u.uHalfSize.value = half;
-      u.uVertical.value = vertical;
-      if (i < passes.length - 1) {
-        const write = source[0] === this.scratch[0].textures[0] ? this.scratch[1] : this.scratch[0];
-        u.uBlock.value = -1;
+    let write = this.scratch;
+    for (const vertical of [false, true]) {
+      for (let half = 1; half < this.n; half *= 2) {
+        u.uInput0.value = source[0];
+        u.uInput1.value = source[1];
+        u.uHalfSize.value = half;
+        u.uVertical.value = vertical;
         this.draw(this.stage, write);
         source = [write.textures[0], write.textures[1]];
-      } else {
-        targets.forEach((target, b) => {
-          u.uBlock.value = b;
-          this.draw(this.stage, target);
-        });
+        write = write === this.scratch ? target : this.scratch;
       }
-    });
+    }
   }
 
   dispose(): void {
     this.stage.dispose();
     this.twiddle.dispose();
-    for (const t of this.scratch) t.dispose();
+    this.scratch.dispose();
     this.mesh.geometry.dispose();
   }
 }
 
-/**
- * Every cascade's h₀(k) and h₀(−k), and ω as whole cycles m per repeat period (split as in
- * fftSpectrum.frag: 4096·mh, ml, m), as float32 textures of the tiles side by side along x
- * (tile c in columns c·n … c·n + n − 1).
- */
-function spectrumTextures(tiles: readonly SpectralTile[]): { h0: DataTexture; cycles: DataTexture } {
-  const n = tiles[0].n;
-  const width = tiles.length * n;
-  const pairs = new Float32Array(4 * width * n);
-  const cycles = new Float32Array(4 * width * n);
+/** h₀(k) and h₀(−k) side by side, and ω as whole cycles m per repeat period (split as in fftSpectrum.frag: 4096·mh, ml, m), as float32 textures. */
+function spectrumTextures(tile: SpectralTile): { h0: DataTexture; cycles: DataTexture } {
+  const n = tile.n;
+  const pairs = new Float32Array(4 * n * n);
+  const cycles = new Float32Array(4 * n * n);
   const omega0 = (2 * Math.PI) / REPEAT_PERIOD;
-  tiles.forEach((tile, c) => {
-    for (let b = 0; b < n; b++) {
-      for (let a = 0; a < n; a++) {
-        const i = b * n + a;
-        const j = ((n - b) % n) * n + ((n - a) % n);
-        const o = b * width + c * n + a;
-        pairs[4 * o] = tile.h0[2 * i];
-        pairs[4 * o + 1] = tile.h0[2 * i + 1];
-        pairs[4 * o + 2] = tile.h0[2 * j];
-        pairs[4 * o + 3] = tile.h0[2 * j + 1];
-        const m = Math.round(tile.omega[i] / omega0);
-        if (m >= 2 ** 24) throw new Error('A wave too fast for the float32 phase split (m ≥ 2²⁴).');
-        const low = m % 4096;
-        cycles[4 * o] = m - low;
-        cycles[4 * o + 1] = low;
-        cycles[4 * o + 2] = m;
-      }
+  for (let b = 0; b < n; b++) {
+    for (let a = 0; a < n; a++) {
+      const i = b * n + a;
+      const j = ((n - b) % n) * n + ((n - a) % n);
+      pairs[4 * i] = tile.h0[2 * i];
+      pairs[4 * i + 1] = tile.h0[2 * i + 1];
+      pairs[4 * i + 2] = tile.h0[2 * j];
+      pairs[4 * i + 3] = tile.h0[2 * j + 1];
+      const m = Math.round(tile.omega[i] / omega0);
+      if (m >= 2 ** 24) throw new Error('A wave too fast for the float32 phase split (m ≥ 2²⁴).');
+      const low = m % 4096;
+      cycles[4 * i] = m - low;
+      cycles[4 * i + 1] = low;
+      cycles[4 * i + 2] = m;
     }
-  });
-  return { h0: floatTexture(pairs, width, n, RGBAFormat, RepeatWrapping), cycles: floatTexture(cycles, width, n, RGBAFormat, RepeatWrapping) };
+  }
+  return { h0: floatTexture(pairs, n, n, RGBAFormat, RepeatWrapping), cycles: floatTexture(cycles, n, n, RGBAFormat, RepeatWrapping) };
 }
 
 /**
@@ -213,10 +180,9 @@ export function splitFraction(f: number): [number, number, number] {
 }
 
 /**
- * The spectral ocean on the GPU: h₀ of every cascade uploaded once (drawn on the CPU from the
+ * The spectral ocean on the GPU: per cascade, h₀ uploaded once (drawn on the CPU from the
  * seed, the same numbers as the CPU twin), then each update(t) one time-evolution pass and
- * 2·log₂n FFT passes, each one draw for all cascades (laid side by side, see GpuInverseFft),
- * except the last, one draw per cascade. After update, per cascade c:
+ * 2·log₂n FFT passes. After update, per cascade c:
  *   displacement[c]: RGBA32F n × n, (dx, dy, dz, ∂Dx/∂x)
  *   derivatives[c]:  RGBA32F n × n, (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)
  * Texel (p, q) is the grid point x = p·L/n, z = q·L/n of a tile of side L = sizes[c], repeating.
@@ -227,8 +193,9 @@ export class GpuFftOcean {
   readonly targets: WebGLRenderTarget[];
   /** The pass runner, shared with passes that read the results (foam). */
   readonly fft: GpuInverseFft;
-  private readonly spectrumMaterial: RawShaderMaterial;
-  private readonly inputs: DataTexture[];
+  private readonly spectrumMaterials: RawShaderMaterial[];
+  private readonly inputs: DataTexture[] = [];
+  private readonly evolved: WebGLRenderTarget;
 
   /**
    * `filtered`: the result targets are LINEAR-filtered (the caller has checked that float
@@ -236,28 +203,30 @@ export class GpuFftOcean {
    */
   constructor(renderer: WebGLRenderer, setup: FftOceanSetup, readonly filtered = false) {
     const n = setup.sea.fftSize;
-    if (setup.tiles.length !== 3) throw new RangeError(`shaders/fftSpectrum.frag evolves 3 cascades, the sea has ${setup.tiles.length}.`);
     this.n = n;
-    this.fft = new GpuInverseFft(renderer, n, setup.tiles.length);
+    this.fft = new GpuInverseFft(renderer, n);
     this.sizes = setup.cascades.map((c) => c.size);
+    this.evolved = this.fft.createTarget();
     this.targets = setup.tiles.map(() => this.fft.createTarget(filtered));
-    const { h0, cycles } = spectrumTextures(setup.tiles);
-    this.inputs = [h0, cycles];
-    this.spectrumMaterial = new RawShaderMaterial({
-      name: 'FftSpectrum',
-      glslVersion: GLSL3,
-      vertexShader: quadVertex,
-      fragmentShader: spectrumFragment,
-      uniforms: {
-        uH0: { value: h0 },
-        uCycles: { value: cycles },
-        uTauOverT: { value: new Vector3() },
-        uTileSize: { value: new Vector3(...this.sizes) },
-        uChoppiness: { value: setup.sea.choppiness },
-        uN: { value: n },
-      },
-      depthTest: false,
-      depthWrite: false,
+    this.spectrumMaterials = setup.tiles.map((tile) => {
+      const { h0, cycles } = spectrumTextures(tile);
+      this.inputs.push(h0, cycles);
+      return new RawShaderMaterial({
+        name: 'FftSpectrum',
+        glslVersion: GLSL3,
+        vertexShader: quadVertex,
+        fragmentShader: spectrumFragment,
+        uniforms: {
+          uH0: { value: h0 },
+          uCycles: { value: cycles },
+          uTauOverT: { value: new Vector3() },
+          uTileSize: { value: tile.cascade.size },
+          uChoppiness: { value: setup.sea.choppiness },
+          uN: { value: n },
+        },
+        depthTest: false,
+        depthWrite: false,
+      });
     });
   }
 
@@ -272,16 +241,18 @@ export class GpuFftOcean {
   /** Evolves every cascade to time t (s) and transforms it. t is reduced mod T in float64 here. */
   update(time: number): void {
     const [x, y, z] = splitFraction(timeInPeriod(time, REPEAT_PERIOD) / REPEAT_PERIOD);
-    (this.spectrumMaterial.uniforms.uTauOverT.value as Vector3).set(x, y, z);
-    const evolved = this.fft.input;
-    this.fft.draw(this.spectrumMaterial, evolved);
-    this.fft.transform(evolved.textures[0], evolved.textures[1], this.targets);
+    this.spectrumMaterials.forEach((material, c) => {
+      (material.uniforms.uTauOverT.value as Vector3).set(x, y, z);
+      this.fft.draw(material, this.evolved);
+      this.fft.transform(this.evolved.textures[0], this.evolved.textures[1], this.targets[c]);
+    });
   }
 
   dispose(): void {
     this.fft.dispose();
+    this.evolved.dispose();
     for (const t of this.targets) t.dispose();
-    this.spectrumMaterial.dispose();
+    for (const m of this.spectrumMaterials) m.dispose();
     for (const t of this.inputs) t.dispose();
   }
 }
