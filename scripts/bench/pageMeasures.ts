@@ -40,6 +40,28 @@ export function timeOceanFrames(frames: number, warmup: number, stepSeconds = 0,
   return { frameTimes, cpuMs: stats.cpuMs, drawCalls: stats.drawCalls, triangles: stats.triangles, ttffMs: stats.ttffMs, canvas: [canvas.width, canvas.height] };
 }
 
+/**
+ * The wave model's CPU twin's main-thread ms per frame (oceano.stats().twinMs) with the clock
+ * playing in the app's own frame loop, so the Worker's replies arrive between frames as on a
+ * live page (the timed frames above run in one task: no reply can arrive). Waits for
+ * `frames` looped frames (the stats' window), then pauses. null where the model does not measure it.
+ */
+export async function loopTwinMs(frames: number): Promise<number | null> {
+  const oceano = window.oceano;
+  const first = oceano.activity().framesDrawn;
+  oceano.play();
+  // No named helper (see above): an anonymous interval callback.
+  await new Promise<void>((resolve) => {
+    const timer = setInterval(() => {
+      if (oceano.activity().framesDrawn - first < frames) return;
+      clearInterval(timer);
+      resolve();
+    }, 50);
+  });
+  oceano.pause();
+  return oceano.stats().twinMs;
+}
+
 export interface FloorFrames {
   frameTimes: number[];
   renderer: string;

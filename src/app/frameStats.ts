@@ -13,6 +13,14 @@ export interface OceanStats extends RenderStats {
   cpuMs: number;
   /** Median CPU time of the boat's share of the update step (five surface samples, damping, pose), ms. */
   boatMs: number;
+  /**
+   * Mean main-thread time per frame of the wave model's CPU twin, where the model measures it
+   * (waves=fft: the surface questions of the boat and the underwater switch, the Worker
+   * requests and receiving its fields), ms; null for other models. A mean, not a median: the
+   * parts are microseconds each, timed with a clock coarsened to 0.1 ms, whose jittered
+   * readings are right on average only.
+   */
+  twinMs: number | null;
   /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */
   ttffMs: number | null;
 }
@@ -31,6 +39,7 @@ export class FrameStats {
   private readonly frameTimes: number[] = [];
   private readonly updateTimes: number[] = [];
   private readonly boatTimes: number[] = [];
+  private readonly twinTimes: number[] = [];
   private firstFrameAt: number | null = null;
   private timingWanted = false;
   framesDrawn = 0;
@@ -46,6 +55,12 @@ export class FrameStats {
     keep(this.updateTimes, updateMs);
   }
 
+  /** The wave model's CPU twin's main-thread ms since the last frame; null where the model does not measure it. */
+  recordTwin(ms: number | null): void {
+    if (ms === null) this.twinTimes.length = 0;
+    else keep(this.twinTimes, ms);
+  }
+
   /** A frame whose GPU work was waited for: from its start to the end of the wait, ms. */
   recordSyncedFrame(ms: number): void {
     keep(this.frameTimes, ms);
@@ -59,6 +74,7 @@ export class FrameStats {
   summary(render: RenderStats): OceanStats {
     this.timingWanted = true;
     const med = (samples: number[]) => (samples.length ? median(samples) : 0);
-    return { frameMs: med(this.frameTimes), cpuMs: med(this.updateTimes), boatMs: med(this.boatTimes), ...render, ttffMs: this.firstFrameAt };
+    const twinMs = this.twinTimes.length ? this.twinTimes.reduce((a, b) => a + b, 0) / this.twinTimes.length : null;
+    return { frameMs: med(this.frameTimes), cpuMs: med(this.updateTimes), boatMs: med(this.boatTimes), twinMs, ...render, ttffMs: this.firstFrameAt };
   }
 }

@@ -206,6 +206,7 @@ export class OceanApp {
     this.view.update(this.clock.time);
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
     if (first) performance.mark('oceano:first-update');
+    this.frameStats.recordTwin(this.view.waves.takeMainThreadMs?.() ?? null);
     this.view.draw();
     if (first) performance.mark('oceano:first-draw-submitted');
     this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());

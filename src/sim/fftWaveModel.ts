@@ -56,8 +56,17 @@ export class FftWaveModel implements LiveWaveModel {
   private key: string;
   private source: FieldSource | null = null;
   private lastFrameTime = Number.NaN;
+  /** Milliseconds the calling thread spent in this model (and in work reported by addMainThreadMs) since takeMainThreadMs. */
+  private busyMs = 0;
 
-  constructor(params: FftWaveParams) {
+  /**
+   * `now`: the clock that times the calling thread's work (ms), performance.now() unless a
+   * test gives another. The issue's budget is ≤ 0.1 ms per frame on the main thread.
+   */
+  constructor(
+    params: FftWaveParams,
+    private readonly now: () => number = () => performance.now(),
+  ) {
     const sea = seaStateFromParams(params);
     this.key = seaKey(sea);
     this.ocean = new FftOcean(sea);
@@ -107,11 +116,32 @@ export class FftWaveModel implements LiveWaveModel {
 
   /** Asks the Worker (if any) for the fields at `time` ahead of use: called once per frame. */
   prefetch(time: number): void {
+    const start = this.now();
     if (this.source && time !== this.ocean.fieldsTime) this.source.request(this.sea, time);
+    this.busyMs += this.now() - start;
+  }
+
+  /** Counts work done for this model outside its methods (receiving the Worker's message: FieldSource). */
+  addMainThreadMs(ms: number): void {
+    this.busyMs += ms;
+  }
+
+  /**
+   * The calling thread's time in this model since the last call (ms), and starts counting
+   * afresh: surface questions (height, sample, displacement), the Worker requests, and the
+   * replies reported through addMainThreadMs. The app takes it once per frame (stats().twinMs).
+   */
+  takeMainThreadMs(): number {
+    const ms = this.busyMs;
+    this.busyMs = 0;
+    return ms;
   }
 
   displacement(x: number, z: number, time: number): [number, number, number] {
-    return this.ocean.displacement(x, z, this.fieldsFor(time, true));
+    const start = this.now();
+    const d = this.ocean.displacement(x, z, this.fieldsFor(time, true));
+    this.busyMs += this.now() - start;
+    return d;
   }
 
   /**
@@ -131,13 +161,19 @@ export class FftWaveModel implements LiveWaveModel {
 
   /** The height alone (the inversion without the normal); lags while playing, see the class comment. */
   height(x: number, z: number, time: number): number {
-    return this.invert(x, z, this.fieldsFor(time, false)).height;
+    const start = this.now();
+    const h = this.invert(x, z, this.fieldsFor(time, false)).height;
+    this.busyMs += this.now() - start;
+    return h;
   }
 
   sample(x: number, z: number, time: number): SurfaceSample {
+    const start = this.now();
     const at = this.fieldsFor(time, true);
     const p = this.invert(x, z, at);
-    return { height: p.height, normal: this.ocean.normalAt(p.x, p.z, at) };
+    const s = { height: p.height, normal: this.ocean.normalAt(p.x, p.z, at) };
+    this.busyMs += this.now() - start;
+    return s;
   }
 
   bounds(): DisplacementBounds {

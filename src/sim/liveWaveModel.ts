@@ -15,6 +15,11 @@ export interface LiveWaveModel extends WaveModel {
   setParams(params: OceanParams): boolean;
   /** Height of the displaced surface above the world point (x, z), metres. */
   height(x: number, z: number, time: number): number;
+  /**
+   * Where the model times its CPU twin's work on the calling thread: the ms spent since the
+   * last call, counting afresh (FftWaveModel, whose twin has a ≤ 0.1 ms per frame budget).
+   */
+  takeMainThreadMs?(): number;
   /** Heightmaps the "heightmap" teaching view shows and the API returns, where the model has any. */
   readonly heightmaps?: readonly Heightmap[];
 }

@@ -33,6 +33,16 @@ describe('FrameStats', () => {
     stats.recordSyncedFrame(7);
     expect(stats.summary(RENDER)).toMatchObject({ frameMs: 7, cpuMs: 3, boatMs: 0.3 });
   });
+
+  it('reports the wave twin\'s mean main-thread ms per frame, null where the model does not measure it', () => {
+    const stats = new FrameStats();
+    expect(stats.summary(RENDER).twinMs).toBeNull();
+    for (const ms of [0, 0.1, 0, 0.3]) stats.recordTwin(ms);
+    expect(stats.summary(RENDER).twinMs).toBeCloseTo(0.1, 12);
+    // Switched to a model that does not measure it: no figure, rather than the old model's.
+    stats.recordTwin(null);
+    expect(stats.summary(RENDER).twinMs).toBeNull();
+  });
 });
 
 describe('paramsChanged', () => {

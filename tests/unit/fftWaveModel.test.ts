@@ -53,3 +53,34 @@ describe('FftWaveModel: when the twin is exact', () => {
     expect(model.ocean.fieldsTime).toBe(20);
   });
 });
+
+describe('FftWaveModel: the main thread time it reports (stats().twinMs)', () => {
+  it('counts each surface question, each Worker request and each reported reply once, and starts afresh when taken', () => {
+    // A clock that moves 1 ms at every reading: each timed section reads it twice, so counts 1 ms.
+    let clock = 0;
+    const model = new FftWaveModel(params, () => clock++);
+    const requests: number[] = [];
+    model.attachSource({ request: (_sea, t) => requests.push(t), dispose: () => {} });
+    expect(model.takeMainThreadMs()).toBe(0);
+    model.height(1, 2, 10);
+    model.sample(1, 2, 10);
+    model.displacement(1, 2, 10);
+    model.prefetch(10.016);
+    model.addMainThreadMs(0.25); // a Worker reply, timed by the FieldSource
+    expect(requests).toEqual([10.016]);
+    expect(model.takeMainThreadMs()).toBe(4.25);
+    expect(model.takeMainThreadMs()).toBe(0);
+    // Negative control: with a clock that stands still nothing is counted, so the 4 above
+    // came from the clock readings around the work, not from a fixed charge per call.
+    const still = new FftWaveModel(params, () => 7);
+    still.height(1, 2, 10);
+    still.sample(1, 2, 10);
+    expect(still.takeMainThreadMs()).toBe(0);
+  });
+
+  it('measures real work with the default clock: a jump computes the fields on the calling thread (milliseconds)', () => {
+    const model = new FftWaveModel(params);
+    model.height(1, 2, 123.4);
+    expect(model.takeMainThreadMs()).toBeGreaterThan(0);
+  });
+});

@@ -1,12 +1,13 @@
-import { FloatType, GLSL3, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, WebGLRenderTarget, type Texture } from 'three';
+import { FloatType, GLSL3, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, Vector3, WebGLRenderTarget, type Texture } from 'three';
 import quadVertex from '../../../shaders/fftQuad.vert?raw';
 import foamFragment from '../../../shaders/fftFoam.frag?raw';
 import type { GpuFftOcean } from './gpuFft';
 
-/** `filtered`: LINEAR, for the ocean's pixels' filtered reads (shaders/waves/fft.glsl). */
-function foamTarget(n: number, filtered: boolean): WebGLRenderTarget {
+/** One texture per cascade (MRT). `filtered`: LINEAR, for the ocean's pixels' filtered reads (shaders/waves/fft.glsl). */
+function foamTarget(n: number, cascades: number, filtered: boolean): WebGLRenderTarget {
   const filter = filtered ? LinearFilter : NearestFilter;
   return new WebGLRenderTarget(n, n, {
+    count: cascades,
     type: FloatType,
     format: RGBAFormat,
     minFilter: filter,
@@ -20,32 +21,40 @@ function foamTarget(n: number, filtered: boolean): WebGLRenderTarget {
 }
 
 /**
- * Per cascade, foam accumulated in the texel grid of its FFT tile (two targets, ping-pong):
+ * Per cascade, foam accumulated in the texel grid of its FFT tile (two targets of one texture
+ * per cascade, ping-pong; one draw steps every cascade):
  * each step keeps the larger of the old foam faded by e^{−Δt/τ} and the foam where this
  * cascade's Jacobian is below its threshold now (shaders/fftFoam.frag). Each cascade has its
  * own threshold, from its own Jacobian spread (src/sim/whitecaps.ts foamThresholdForSpread):
  * one band alone folds less often than the whole sea does.
  */
 export class FftFoam {
-  private readonly pairs: [WebGLRenderTarget, WebGLRenderTarget][];
+  private readonly pair: [WebGLRenderTarget, WebGLRenderTarget];
   private readonly material: RawShaderMaterial;
   private current = 0;
 
   constructor(private readonly gpu: GpuFftOcean) {
     const n = gpu.fft.n;
-    this.pairs = gpu.targets.map(() => [foamTarget(n, gpu.filtered), foamTarget(n, gpu.filtered)]);
+    if (gpu.targets.length !== 3) throw new RangeError(`shaders/fftFoam.frag steps 3 cascades, the sea has ${gpu.targets.length}.`);
+    this.pair = [foamTarget(n, 3, gpu.filtered), foamTarget(n, 3, gpu.filtered)];
     this.material = new RawShaderMaterial({
       name: 'FftFoam',
       glslVersion: GLSL3,
       vertexShader: quadVertex,
       fragmentShader: foamFragment,
       uniforms: {
-        uDisplacement: { value: null },
-        uDerivatives: { value: null },
-        uPrevious: { value: null },
+        uDisplacement0: { value: gpu.displacement[0] },
+        uDisplacement1: { value: gpu.displacement[1] },
+        uDisplacement2: { value: gpu.displacement[2] },
+        uDerivatives0: { value: gpu.derivatives[0] },
+        uDerivatives1: { value: gpu.derivatives[1] },
+        uDerivatives2: { value: gpu.derivatives[2] },
+        uPrevious0: { value: null },
+        uPrevious1: { value: null },
+        uPrevious2: { value: null },
         uDecay: { value: 0 },
-        uThreshold: { value: 0 },
-        uSoftness: { value: 0.01 },
+        uThreshold: { value: new Vector3() },
+        uSoftness: { value: new Vector3(0.01, 0.01, 0.01) },
       },
       depthTest: false,
       depthWrite: false,
@@ -54,7 +63,7 @@ export class FftFoam {
 
   /** The foam now, one texture per cascade (r channel). */
   get textures(): Texture[] {
-    return this.pairs.map((pair) => pair[this.current].texture);
+    return this.pair[this.current].textures.slice();
   }
 
   /**
@@ -65,19 +74,18 @@ export class FftFoam {
     const next = 1 - this.current;
     const u = this.material.uniforms;
     u.uDecay.value = decay;
-    this.gpu.targets.forEach((target, c) => {
-      u.uThreshold.value = thresholds[c];
-      u.uSoftness.value = softness[c];
-      u.uDisplacement.value = target.textures[0];
-      u.uDerivatives.value = target.textures[1];
-      u.uPrevious.value = this.pairs[c][this.current].texture;
-      this.gpu.fft.draw(this.material, this.pairs[c][next]);
-    });
+    (u.uThreshold.value as Vector3).set(thresholds[0], thresholds[1], thresholds[2]);
+    (u.uSoftness.value as Vector3).set(softness[0], softness[1], softness[2]);
+    const previous = this.pair[this.current].textures;
+    u.uPrevious0.value = previous[0];
+    u.uPrevious1.value = previous[1];
+    u.uPrevious2.value = previous[2];
+    this.gpu.fft.draw(this.material, this.pair[next]);
     this.current = next;
   }
 
   dispose(): void {
     this.material.dispose();
-    for (const pair of this.pairs) for (const t of pair) t.dispose();
+    for (const t of this.pair) t.dispose();
   }
 }

@@ -94,7 +94,12 @@ export class FftWaveView implements WaveModelView {
     this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
-    model.attachSource(new WorkerFieldSource((reply) => model.receive(reply.sea, reply.time, reply.fields)));
+    model.attachSource(
+      new WorkerFieldSource(
+        (reply) => model.receive(reply.sea, reply.time, reply.fields),
+        (ms) => model.addMainThreadMs(ms),
+      ),
+    );
   }
 
   /**
