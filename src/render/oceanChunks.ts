@@ -15,7 +15,7 @@ import {
 import type { DisplacementBounds } from '../sim/waveModel';
 import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
-import { BAND_STEPS, BASE_STEP, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS, bandQuads } from '../sim/lodBands';
+import { BAND_STEPS, BASE_STEP, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS, bandHasDetailNormals, bandQuads } from '../sim/lodBands';
 import { chunkGrid, squareGrid } from '../sim/chunkGrid';
 import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../sim/farRings';
 import { classifyBox, INSIDE, OUTSIDE } from '../sim/frustumMath';
@@ -38,6 +38,11 @@ export interface ChunkStats {
   farCellsVisible: number;
   /** Visible chunks per band, nearest band first. */
   lodCounts: number[];
+}
+
+/** The material a grid band draws with (see bandHasDetailNormals). */
+function bandMaterial(material: OceanMaterial, band: number): OceanMaterial {
+  return bandHasDetailNormals(band) ? material : material.near;
 }
 
 /** A band's shared grid with room for `capacity` chunk instances. */
@@ -123,7 +128,9 @@ export class OceanChunks {
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
     for (let band = 0; band < MAX_LOD_BANDS; band++) {
-      const mesh = new Mesh(bandGeometry(band, capacity), material);
+      // Bands whose vertex normals keep their waves draw with the material compiled without
+      // per-pixel detail normals (the same picture: their weight there is exactly 0).
+      const mesh = new Mesh(bandGeometry(band, capacity), bandMaterial(material, band));
       // The quadtree has already culled; three's test would use a stale, origin-sized sphere.
       mesh.frustumCulled = false;
       this.meshes.push(mesh);
@@ -139,7 +146,7 @@ export class OceanChunks {
         this.tileMeshes.push(null);
         continue;
       }
-      const mesh = new Mesh(instancedGrid(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), TILE_CAPACITY), material);
+      const mesh = new Mesh(instancedGrid(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), TILE_CAPACITY), bandMaterial(material, band));
       mesh.frustumCulled = false;
       mesh.visible = false;
       this.tileMeshes.push(mesh);
