@@ -21,6 +21,7 @@ import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_R
 import { classifyBox, INSIDE, OUTSIDE } from '../sim/frustumMath';
 import { morphZones } from '../sim/lodMorph';
 import type { OceanMaterial } from './oceanMaterial';
+import { SKY_RENDER_ORDER } from './skyBackground';
 
 export interface LodSettings {
   lodDistance: number;
@@ -39,6 +40,13 @@ export interface ChunkStats {
   /** Visible chunks per band, nearest band first. */
   lodCounts: number[];
 }
+
+/**
+ * The grid bands' draw order: before the sky (skyBackground.ts SKY_RENDER_ORDER), so that the
+ * sky is not shaded under them. Their depth is well below the far plane's (the grid reaches a
+ * few kilometres).
+ */
+const NEAR_SEA_RENDER_ORDER = SKY_RENDER_ORDER - 1;
 
 /** The material a grid band draws with (see bandHasDetailNormals). */
 function bandMaterial(material: OceanMaterial, band: number): OceanMaterial {
@@ -133,6 +141,7 @@ export class OceanChunks {
       const mesh = new Mesh(bandGeometry(band, capacity), bandMaterial(material, band));
       // The quadtree has already culled; three's test would use a stale, origin-sized sphere.
       mesh.frustumCulled = false;
+      mesh.renderOrder = NEAR_SEA_RENDER_ORDER;
       this.meshes.push(mesh);
       this.group.add(mesh);
       const chunk = mesh.geometry.getAttribute('aChunk') as InstancedBufferAttribute;
@@ -148,6 +157,7 @@ export class OceanChunks {
       }
       const mesh = new Mesh(instancedGrid(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), TILE_CAPACITY), bandMaterial(material, band));
       mesh.frustumCulled = false;
+      mesh.renderOrder = NEAR_SEA_RENDER_ORDER;
       mesh.visible = false;
       this.tileMeshes.push(mesh);
       this.group.add(mesh);
