@@ -71,6 +71,10 @@ float fresnelLookup(sampler2D table, float cosIncidence) {
   return mix(a, b, x - float(i));
 }
 
+// The underside's shading is compiled in only while the view may be under the water
+// (OceanMaterial.setSeenFromBelow; otherwise only front faces are drawn): SwiftShader runs
+// both sides of a branch, so an untaken gl_FrontFacing branch would still cost every pixel.
+#ifdef OCEAN_SEEN_FROM_BELOW
 const float WATER_OVER_AIR = WATER_IOR;
 
 // v points from the surface down to the eye; n is the surface normal (facing the air).
@@ -92,6 +96,7 @@ vec3 shadeFromBelow(vec3 v, vec3 n) {
   vec3 mirrored = waterVolumeColor(reflect(-v, towardsWater));
   return mix(through, mirrored, reflectance);
 }
+#endif
 
 void main() {
   vec3 toEye = uEyeRelative - vRelativePosition;
@@ -115,7 +120,10 @@ void main() {
     if (uWakeOn) n = normalize(vec3(n.x - vWakeSlope.x * n.y, n.y, n.z - vWakeSlope.y * n.y));
   }
 #endif
-#ifdef WAVE_DETAIL_NORMALS
+// OCEAN_NEAR_BANDS: the material of the bands whose vertices lie at most DETAIL_FROM apart,
+// where the weight below is exactly 0 (OceanMaterial.near): SwiftShader would run the block
+// for every pixel even where `weight > 0.0` is false, so it is left out there.
+#if defined(WAVE_DETAIL_NORMALS) && !defined(OCEAN_NEAR_BANDS)
   // A model whose normals are per vertex loses its short waves where the band's vertices
   // are farther apart than they are long (48 m in band 5, the ripples are a few metres):
   // the far sea goes flat. There the normal is evaluated per pixel instead, faded in as
@@ -125,7 +133,7 @@ void main() {
   // (whose far bands are seen at grazing angles, footprints of tens of metres), the
   // weight is 0 and the picture is unchanged.
   // Band 2 (6 m) keeps its vertex normals, band 3 (12 m) and coarser get the full detail.
-  const float DETAIL_FROM = 8.0;
+  const float DETAIL_FROM = DETAIL_NORMALS_FROM;
   const float DETAIL_FULL = 12.0;
   const float FOOTPRINT_FULL = 1.0;
   const float FOOTPRINT_NONE = 2.0;
@@ -152,12 +160,14 @@ void main() {
   }
   // With uMarkSides, alpha tells the underwater pass which side of this very mesh the line
   // of sight came from: 0.5 from below, 0 from above. Drawn straight to the canvas it is 1.
+#ifdef OCEAN_SEEN_FROM_BELOW
   if (!gl_FrontFacing) {
     gl_FragColor = vec4(shadeFromBelow(v, n), uMarkSides ? 0.5 : 1.0);
     #include <tonemapping_fragment>
     #include <colorspace_fragment>
     return;
   }
+#endif
   float cosIncidence = max(dot(n, v), 0.0);
 
   float reflectance = uFresnelEnabled ? fresnelLookup(uFresnelTable, cosIncidence) : 0.5;

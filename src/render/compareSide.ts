@@ -50,7 +50,7 @@ export class CompareSide {
   dispose(): void {
     this.chunks.group.removeFromParent();
     this.chunks.dispose();
-    this.binding.detach(this.material);
+    this.material.detachFrom(this.binding);
     this.material.dispose();
     this.view.dispose();
   }

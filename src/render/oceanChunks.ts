@@ -15,12 +15,13 @@ import {
 import type { DisplacementBounds } from '../sim/waveModel';
 import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
-import { BAND_STEPS, BASE_STEP, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS, bandQuads } from '../sim/lodBands';
+import { BAND_STEPS, BASE_STEP, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS, bandHasDetailNormals, bandQuads } from '../sim/lodBands';
 import { chunkGrid, squareGrid } from '../sim/chunkGrid';
 import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../sim/farRings';
 import { classifyBox, INSIDE, OUTSIDE } from '../sim/frustumMath';
 import { morphZones } from '../sim/lodMorph';
 import type { OceanMaterial } from './oceanMaterial';
+import { SKY_RENDER_ORDER } from './skyBackground';
 
 export interface LodSettings {
   lodDistance: number;
@@ -38,6 +39,18 @@ export interface ChunkStats {
   farCellsVisible: number;
   /** Visible chunks per band, nearest band first. */
   lodCounts: number[];
+}
+
+/**
+ * The grid bands' draw order: before the sky (skyBackground.ts SKY_RENDER_ORDER), so that the
+ * sky is not shaded under them. Their depth is well below the far plane's (the grid reaches a
+ * few kilometres).
+ */
+const NEAR_SEA_RENDER_ORDER = SKY_RENDER_ORDER - 1;
+
+/** The material a grid band draws with (see bandHasDetailNormals). */
+function bandMaterial(material: OceanMaterial, band: number): OceanMaterial {
+  return bandHasDetailNormals(band) ? material : material.near;
 }
 
 /** A band's shared grid with room for `capacity` chunk instances. */
@@ -125,9 +138,12 @@ export class OceanChunks {
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
     for (let band = 0; band < MAX_LOD_BANDS; band++) {
-      const mesh = new Mesh(bandGeometry(band, capacity), material);
+      // Bands whose vertex normals keep their waves draw with the material compiled without
+      // per-pixel detail normals (the same picture: their weight there is exactly 0).
+      const mesh = new Mesh(bandGeometry(band, capacity), bandMaterial(material, band));
       // The quadtree has already culled; three's test would use a stale, origin-sized sphere.
       mesh.frustumCulled = false;
+      mesh.renderOrder = NEAR_SEA_RENDER_ORDER;
       this.meshes.push(mesh);
       this.group.add(mesh);
       const chunk = mesh.geometry.getAttribute('aChunk') as InstancedBufferAttribute;
@@ -141,8 +157,9 @@ export class OceanChunks {
         this.tileMeshes.push(null);
         continue;
       }
-      const mesh = new Mesh(instancedGrid(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), TILE_CAPACITY), material);
+      const mesh = new Mesh(instancedGrid(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), TILE_CAPACITY), bandMaterial(material, band));
       mesh.frustumCulled = false;
+      mesh.renderOrder = NEAR_SEA_RENDER_ORDER;
       mesh.visible = false;
       this.tileMeshes.push(mesh);
       this.group.add(mesh);

@@ -22,11 +22,22 @@ export function skyFlip(sky: CubeTexture): number {
 }
 
 export class OceanMaterial extends ShaderMaterial {
+  /**
+   * The material of the grid bands whose vertices lie close enough together that ocean.frag's
+   * per-pixel detail normals have weight 0 there (bandHasDetailNormals): compiled without that
+   * block (OCEAN_NEAR_BANDS), since SwiftShader runs both sides of a branch, it shares this
+   * material's uniforms object, so every setter here reaches it. It is itself for that material.
+   */
+  readonly near: OceanMaterial;
+  /** The material whose uniforms `near` shares; null for the main one. */
+  private readonly main: OceanMaterial | null;
+
   constructor(
     private readonly waves: WaveBinding,
     fresnelTables: { fromAbove: Texture; fromBelow: Texture },
     sky: CubeTexture,
     shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>,
+    main: OceanMaterial | null = null,
   ) {
     registerShaderChunks();
     super({
@@ -61,7 +72,29 @@ export class OceanMaterial extends ShaderMaterial {
         uMorphZones: { value: morphZones(1, 1, false) },
       },
     });
+    this.main = main;
+    if (main) {
+      this.uniforms = main.uniforms;
+      this.defines.OCEAN_NEAR_BANDS = '';
+    }
     waves.attach(this);
+    this.near = main ? this : new OceanMaterial(waves, fresnelTables, sky, shared, this);
+  }
+
+  /** The binding's switches reach both programs; a caller detaching this one detaches both. */
+  detachFrom(waves: WaveBinding): void {
+    waves.detach(this);
+    if (this.near !== this) waves.detach(this.near);
+  }
+
+  override dispose(): void {
+    super.dispose();
+    if (this.near !== this) this.near.dispose();
+  }
+
+  setWireframe(on: boolean): void {
+    this.wireframe = on;
+    this.near.wireframe = on;
   }
 
   /**
@@ -79,7 +112,7 @@ export class OceanMaterial extends ShaderMaterial {
    */
   override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
-    const [x, z] = this.absoluteCoordinates ? [0, 0] : renderOrigin(eye.x, eye.z);
+    const [x, z] = (this.main ?? this).absoluteCoordinates ? [0, 0] : renderOrigin(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
     this.waves.model.setRenderOrigin?.(x, z);
     this.originShift.makeTranslation(x, 0, z);
@@ -92,8 +125,15 @@ export class OceanMaterial extends ShaderMaterial {
    * each face marks its side in alpha for the underwater passes.
    */
   setSeenFromBelow(fromBelow: boolean): void {
-    this.side = fromBelow ? DoubleSide : FrontSide;
     this.uniforms.uMarkSides.value = fromBelow;
+    for (const material of this.near === this ? [this] : [this, this.near]) {
+      material.side = fromBelow ? DoubleSide : FrontSide;
+      // Front faces only: the underside's shading is left out of the program (ocean.frag).
+      if ('OCEAN_SEEN_FROM_BELOW' in material.defines === fromBelow) continue;
+      if (fromBelow) material.defines.OCEAN_SEEN_FROM_BELOW = '';
+      else delete material.defines.OCEAN_SEEN_FROM_BELOW;
+      material.needsUpdate = true;
+    }
   }
 
   setSky(sky: CubeTexture): void {

@@ -631,7 +631,7 @@ function applyLook(material: OceanMaterial, params: OceanParams): void {
   material.setWaterColor(params.waterColor);
   material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
   material.setFresnelEnabled(params.fresnel);
-  material.wireframe = params.wireframe;
+  material.setWireframe(params.wireframe);
   material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
   material.setNormalsCompare(params.normalsCompare);
   material.setLodColors(params.lodColors);

@@ -1,6 +1,6 @@
 import { WATER_IOR } from '../sim/fresnel';
 import { BLUR_MAX_TAPS } from '../sim/gaussianKernel';
-import { LOD_BAND_COLORS } from '../sim/lodBands';
+import { DETAIL_NORMALS_FROM, LOD_BAND_COLORS } from '../sim/lodBands';
 import { GOD_RAY_RANGE } from '../sim/shaftLightTile';
 
 /** A GLSL float literal: always with a decimal point, since GLSL ES will not take `1` as a float. */
@@ -26,6 +26,7 @@ export function shaderConstantsChunk(): string {
     `#define WATER_IOR ${glslFloat(WATER_IOR)}`,
     `#define BLUR_MAX_TAPS ${BLUR_MAX_TAPS}`,
     `#define GOD_RAY_RANGE ${glslFloat(GOD_RAY_RANGE)}`,
+    `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
     `#define LOD_BAND_COUNT ${LOD_BAND_COLORS.length}`,
     `#define LOD_BAND_COLORS vec3[${LOD_BAND_COLORS.length}](${LOD_BAND_COLORS.map(glslVec3).join(', ')})`,
     '#endif',

@@ -7,7 +7,17 @@ import { skyFlip } from './oceanMaterial';
 export const SKY_BACKGROUND_NAME = 'oceano-sky';
 
 /**
- * The sky drawn behind the scene: one screen-covering triangle, drawn first, that looks the
+ * Where the sky falls in the draw order: after the grid bands of the sea (OceanChunks, at
+ * NEAR_SEA_RENDER_ORDER), before everything else. It is drawn at the far plane with the depth
+ * test on, so the pixels those bands already cover are rejected before its shader runs, where
+ * drawn first it was shaded under the whole sea. Everything that may lie at the far plane
+ * itself (the far rings and the skirt, out to 10⁸ m, whose depth rounds to 1, the cleared
+ * value) is still drawn after it, as before.
+ */
+export const SKY_RENDER_ORDER = -1;
+
+/**
+ * The sky drawn behind the scene: one screen-covering triangle that looks the
  * sky cube up along each pixel's exact view ray (shaders/skyBackground.*). It replaces
  * `scene.background`, whose unit box degenerates for a camera looking level along a 45°
  * diagonal (see the vertex shader).
@@ -24,14 +34,12 @@ export class SkyBackground {
       vertexShader,
       fragmentShader,
       uniforms: { uSky: { value: sky }, uSkyFlip: { value: skyFlip(sky) }, uClipToWorldDirection: { value: this.clipToWorld } },
-      depthTest: false,
       depthWrite: false,
     });
     this.mesh = new Mesh(geometry, material);
     this.mesh.name = SKY_BACKGROUND_NAME;
     this.mesh.frustumCulled = false;
-    // Drawn before every other opaque object.
-    this.mesh.renderOrder = -Infinity;
+    this.mesh.renderOrder = SKY_RENDER_ORDER;
     // The camera of the render in progress (the view's own, a compare strip's, a composer pass's).
     this.mesh.onBeforeRender = (_renderer, _scene, camera: Camera) => {
       // Directions only: the camera's rotation without its position, after the inverse projection.

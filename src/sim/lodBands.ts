@@ -49,6 +49,18 @@ export function bandQuads(band: number): number {
   return CHUNK_QUADS / BAND_STEPS[band];
 }
 
+/**
+ * Vertex spacing, metres, up to which a band's vertex normals keep its waves: ocean.frag fades
+ * per-pixel detail normals in from here (smoothstep from DETAIL_NORMALS_FROM, so exactly 0 at
+ * or below it). The bands at or below it are drawn without that code (OceanMaterial.near).
+ */
+export const DETAIL_NORMALS_FROM = 8;
+
+/** Whether a grid band's vertices lie far enough apart for ocean.frag's detail normals. */
+export function bandHasDetailNormals(band: number): boolean {
+  return BAND_STEPS[band] * BASE_STEP > DETAIL_NORMALS_FROM;
+}
+
 export function bandTriangles(band: number): number {
   return 2 * bandQuads(band) ** 2;
 }
