@@ -86,7 +86,7 @@ export class OceanApp {
     await loading.painted();
     if (this.disposed) return sky?.dispose();
     performance.mark('oceano:view-start');
-    this.view = new OceanView(this.canvas, sky, this.params, this.loop.requestRender);
+    this.view = new OceanView(this.canvas, sky, this.params, this.loop.requestRender, () => this.notify(message('underwaterLoadFailed')));
     performance.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);

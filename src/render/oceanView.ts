@@ -104,6 +104,8 @@ export class OceanView {
   private post?: UnderwaterPost;
   private underwaterCode?: typeof import('./underwaterPost');
   private underwaterLoad?: Promise<void>;
+  /** The underwater passes' code could not be fetched: frames below the surface are drawn without them. */
+  private underwaterFailed = false;
   private shaftLightWindowForced = false;
   private params: OceanParams;
   /** The parameters as last applied, to apply only what changes; null before the first time. */
@@ -145,16 +147,16 @@ export class OceanView {
   /**
    * `sky`: a page's own cube map (whose sun stays where it was painted), or null for the
    * default sky, painted from the sun parameters and repainted whenever they change.
-   */
-  /**
    * `redraw`: asks the app for a frame, once a part loaded on first use (the underwater
-   * passes) has arrived.
+   * passes) has arrived. `partFailed`: that part could not be fetched (the view then draws
+   * without it).
    */
   constructor(
     canvas: HTMLCanvasElement,
     customSky: CubeTexture | null,
     params: OceanParams,
     private readonly redraw: () => void = () => undefined,
+    private readonly partFailed: () => void = () => undefined,
   ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
@@ -404,10 +406,20 @@ export class OceanView {
       this.post.setGodRays(this.params.godRays ? this.params.godRaysIntensity : 0);
       this.post.forceShaftLightWindow = this.shaftLightWindowForced;
     }
-    this.underwaterLoad ??= import('./underwaterPost').then((code) => {
-      this.underwaterCode = code;
-      this.redraw();
-    });
+    this.underwaterLoad ??= import('./underwaterPost').then(
+      (code) => {
+        this.underwaterCode = code;
+        this.redraw();
+      },
+      () => {
+        // The sea is still drawn from below, plainly (no water fog, god rays or blur), rather
+        // than the canvas keeping its last frame above water. The browser keeps a failed
+        // module import failed, so only a reload tries again.
+        this.underwaterFailed = true;
+        this.partFailed();
+        this.redraw();
+      },
+    );
     return this.post;
   }
 
@@ -424,6 +436,7 @@ export class OceanView {
     if (this.showHeightmaps) this.heightmapView = this.drawHeightmaps();
     else if (submersion === 'above' && this.sides.length > 0) this.drawCompare(this.splitStrips() ?? []);
     else if (submersion === 'above') this.renderer.render(this.scene, this.camera);
+    else if (this.underwaterFailed) this.renderer.render(this.scene, this.camera);
     else composerPasses = this.underwaterPost()?.render(submersion === 'straddling') ?? 0;
     const info = this.renderer.info.render;
     // Wireframe draws each ocean triangle as three line segments (three.js's wireframe index), counted as lines.

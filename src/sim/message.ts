@@ -35,6 +35,7 @@ export const MESSAGE_IDS = [
   'wakeTrackInvalid',
   'modelLoadFailed',
   'panelLoadFailed',
+  'underwaterLoadFailed',
 ] as const;
 
 export type MessageId = (typeof MESSAGE_IDS)[number];

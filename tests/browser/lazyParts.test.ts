@@ -122,4 +122,22 @@ describe('parts fetched on use', () => {
     expect(errors).toEqual([]);
     await page.close();
   });
+
+  it('a dive whose underwater passes are refused: a notice, and the sea drawn from below without them, not the last frame above', async () => {
+    const { page, errors } = await open('t=10', ['underwaterPost']);
+    const above = await page.evaluate(() => window.oceano.stats().underwater);
+    await page.evaluate(() => window.oceano.setCamera({ position: [0, -8, 20], target: [0, 5, -20] }));
+    await page.evaluate(() => window.oceano.loaded());
+    await page.evaluate(() => window.oceano.renderFrame());
+    const state = await page.evaluate(() => ({ stats: window.oceano.stats(), notices: window.oceano.notices() }));
+    expect(above).toBe(false);
+    expect(state.stats.underwater).toBe(true);
+    expect(state.stats.composerPasses).toBe(0);
+    // Drawn this frame: the surface from below, so draw calls and triangles were submitted.
+    expect(state.stats.triangles).toBeGreaterThan(1000);
+    expect(state.notices).toHaveLength(1);
+    expect(state.notices[0]).toMatch(/underwater effects .* could not be downloaded/);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
 });
