@@ -28,6 +28,7 @@ import { CompareSide, type OceanMaterialInputs } from './compareSide';
 import { applyWakeUniforms, createWakeUniforms } from './wakeUniforms';
 import { KelvinGuideView } from './kelvinGuideView';
 import type { WakeUniformData } from '../sim/wakeUniformData';
+import { DEFAULT_NEAR, nearForClearance } from '../sim/nearPlane';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -52,6 +53,8 @@ export interface ShadingFixes {
   seaBedMark: boolean;
   /** Gerstner's and FFT's per-pixel normals and foam at grid points relative to the render origin (ocean.frag). */
   relativePixelNormals: boolean;
+  /** The near plane brought in for an eye less than about a metre above the water (src/sim/nearPlane.ts). */
+  clearanceNear: boolean;
 }
 
 export interface RenderStats extends ChunkStats {
@@ -126,6 +129,9 @@ export class OceanView {
   private heightmapView?: HeightmapView;
   private showHeightmaps = false;
   private readonly nearPoint = new Vector3();
+  /** Debug (a negative control): false keeps the fixed 0.5 m near plane however low the eye. */
+  private clearanceNear = true;
+  private readonly axis = new Vector3();
   private readonly skyBackground: SkyBackground;
   private readonly syncPixel = new Uint8Array(4);
   /** The sky painted from the sun; absent while a page's own six images are shown. */
@@ -161,7 +167,7 @@ export class OceanView {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
-    this.camera = new PerspectiveCamera(55, 16 / 9, 0.5, CAMERA_FAR);
+    this.camera = new PerspectiveCamera(55, 16 / 9, DEFAULT_NEAR, CAMERA_FAR);
     this.camera.position.fromArray(DEFAULT_CAMERA.position);
     this.camera.lookAt(...DEFAULT_CAMERA.target);
 
@@ -334,6 +340,35 @@ export class OceanView {
   }
 
   /**
+   * Brings the near plane in for an eye less than about a metre above the surface under it,
+   * so that it stays above the water and the lower frame shows the surface from above
+   * (src/sim/nearPlane.ts); 0.5 m otherwise. The projection is remade only on a change, so
+   * a view that keeps its near plane keeps its culling capture.
+   */
+  private fitNearPlane(time: number): void {
+    const camera = this.camera;
+    let near = DEFAULT_NEAR;
+    // An eye this high over the highest crest keeps 0.5 m whichever way it looks
+    // (nearPlane.ts needs at most 3.7 m of clearance per metre of near distance).
+    if (this.clearanceNear && camera.position.y < this.bounds.vertical + 2) {
+      const clearance = camera.position.y - this.waveView.model.height(camera.position.x, camera.position.z, time);
+      camera.updateMatrixWorld();
+      const e = camera.matrixWorld.elements;
+      near = nearForClearance(clearance, {
+        forwardY: -e[9] / this.axis.set(e[8], e[9], e[10]).length(),
+        upY: e[5] / this.axis.set(e[4], e[5], e[6]).length(),
+        rightY: e[1] / this.axis.set(e[0], e[1], e[2]).length(),
+        tanHalfFov: Math.tan((camera.fov * Math.PI) / 360),
+        aspect: camera.aspect,
+      });
+    }
+    if (near !== camera.near) {
+      camera.near = near;
+      camera.updateProjectionMatrix();
+    }
+  }
+
+  /**
    * Where the view starts: 'above' and 'below' when the eye and the whole near plane are
    * clear of the surface on one side, else 'straddling' (the waterline may cross the frame).
    */
@@ -345,14 +380,17 @@ export class OceanView {
     // The near plane lies within `reach` of the eye: far above the highest crest, no sampling needed.
     const nearHalfHeight = this.camera.near * Math.tan((this.camera.fov * Math.PI) / 360);
     const reach = Math.hypot(this.camera.near, nearHalfHeight, nearHalfHeight * this.camera.aspect);
-    if (eye.y - reach > this.bounds.vertical + WATERLINE_MARGIN) return { underwater, submersion: 'above', eyeSurface };
+    // The samples are spaced in proportion to the near distance, and so is what the surface
+    // can do between them: 0.25 m at the default 0.5 m.
+    const margin = WATERLINE_MARGIN * (this.camera.near / DEFAULT_NEAR);
+    if (eye.y - reach > this.bounds.vertical + margin) return { underwater, submersion: 'above', eyeSurface };
     this.camera.updateMatrixWorld();
     const points = [{ y: eye.y, surface: eyeSurface }];
     for (const [x, y] of NEAR_PLANE_SAMPLES) {
       const p = this.nearPoint.set(x, y, -1).unproject(this.camera);
       points.push({ y: p.y, surface: waves.height(p.x, p.z, time) });
     }
-    return { underwater, submersion: classifyNearPlane(points, WATERLINE_MARGIN), eyeSurface };
+    return { underwater, submersion: classifyNearPlane(points, margin), eyeSurface };
   }
 
   /**
@@ -364,6 +402,7 @@ export class OceanView {
     this.frameTime = time;
     this.waveView.update(time);
     for (const side of this.sides) side.view.update(time);
+    this.fitNearPlane(time);
     const { eyeSurface, ...where } = this.submersionAt(time);
     this.where = where;
     const strips = this.splitStrips();
@@ -560,6 +599,7 @@ export class OceanView {
     if (fixes.cameraRelative !== undefined) this.material.absoluteCoordinates = !fixes.cameraRelative;
     if (fixes.seaBedMark !== undefined) this.seaBed.setWaterMark(fixes.seaBedMark);
     if (fixes.relativePixelNormals !== undefined) this.material.setAbsolutePixelNormals(!fixes.relativePixelNormals);
+    if (fixes.clearanceNear !== undefined) this.clearanceNear = fixes.clearanceNear;
   }
 
   /**

@@ -91,7 +91,10 @@ describe('under the water', () => {
   });
 
   it('shows air above and water below the waterline of a straddling camera', async () => {
-    const { page } = await openOcean(harness, 'seed=1&t=10&cam=0,1.7,40,0,1.5,-20&blurStrength=0');
+    // The eye 7 cm under the surface there (1.62 m): the near plane's upper half is in the
+    // air. (1.7 m, 8 cm above it, used to straddle with the fixed 0.5 m near plane; the near
+    // plane fitted to the eye's clearance now keeps it above the water: src/sim/nearPlane.ts.)
+    const { page } = await openOcean(harness, 'seed=1&t=10&cam=0,1.55,40,0,1.5,-20&blurStrength=0');
     const png = PNG.sync.read(await canvasPng(page));
     expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('straddling');
     const mean = (y0: number, y1: number) => {
