@@ -89,14 +89,16 @@ describe('shading far away', () => {
     await page.close();
   });
 
+  /** From 2 m up, 10 m back from the point (x, 0, x) looked at: the sun's glint, at any distance from the origin. */
+  const glintView = (x: number) => ({ position: [x, 2, x + 10] as [number, number, number], target: [x, 0, x] as [number, number, number] });
+
   it('draws the sun glint 10⁶ m out as smooth as near the origin', async () => {
     // From 2 m up, 10 m back from the point looked at: the glint fills rows 70–150 of rows 60–179 measured at
     // 320 × 180. The reference spot is 1.4 km from the origin, away from the boat.
-    const view = (x: number) => ({ position: [x, 2, x + 10] as [number, number, number], target: [x, 0, x] as [number, number, number] });
     const { page, consoleErrors } = await openOcean(harness, 't=10', 320, 180);
     await page.evaluate(() => window.oceano.pause());
     const energyAt = async (x: number) => {
-      await page.evaluate((pose) => window.oceano.setCamera(pose), view(x));
+      await page.evaluate((pose) => window.oceano.setCamera(pose), glintView(x));
       return rowBandEnergy(await redraw(page), 60, 179);
     };
     const near = await energyAt(1000);
@@ -114,11 +116,10 @@ describe('shading far away', () => {
   it('shades Gerstner and FFT per pixel as smoothly 10⁶ m out as near the origin', async () => {
     // The same 2 m-high view of the glint at 640 × 360, where a pixel near the glint covers
     // about 1.5 cm: the 6 cm blocks of normals at absolute float32 grid points span 4 pixels.
-    const view = (x: number) => ({ position: [x, 2, x + 10] as [number, number, number], target: [x, 0, x] as [number, number, number] });
     const { page, consoleErrors } = await openOcean(harness, 't=10&waves=gerstner', 640, 360);
     await page.evaluate(() => window.oceano.pause());
     const energyAt = async (x: number) => {
-      await page.evaluate((pose) => window.oceano.setCamera(pose), view(x));
+      await page.evaluate((pose) => window.oceano.setCamera(pose), glintView(x));
       return blockEnergy(await redraw(page), 120, 359);
     };
     for (const waves of ['gerstner', 'fft'] as const) {
