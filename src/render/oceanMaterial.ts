@@ -126,12 +126,17 @@ export class OceanMaterial extends ShaderMaterial {
    */
   setSeenFromBelow(fromBelow: boolean): void {
     this.uniforms.uMarkSides.value = fromBelow;
+    this.near.side = this.side = fromBelow ? DoubleSide : FrontSide;
+    // Front faces only: the underside's shading is left out of the program (ocean.frag).
+    this.setDefine('OCEAN_SEEN_FROM_BELOW', fromBelow);
+  }
+
+  /** Compiles a define in or out of both programs (this one and `near`), which must draw alike. */
+  private setDefine(name: string, on: boolean): void {
     for (const material of this.near === this ? [this] : [this, this.near]) {
-      material.side = fromBelow ? DoubleSide : FrontSide;
-      // Front faces only: the underside's shading is left out of the program (ocean.frag).
-      if ('OCEAN_SEEN_FROM_BELOW' in material.defines === fromBelow) continue;
-      if (fromBelow) material.defines.OCEAN_SEEN_FROM_BELOW = '';
-      else delete material.defines.OCEAN_SEEN_FROM_BELOW;
+      if (name in material.defines === on) continue;
+      if (on) material.defines[name] = '';
+      else delete material.defines[name];
       material.needsUpdate = true;
     }
   }
@@ -190,10 +195,7 @@ export class OceanMaterial extends ShaderMaterial {
    * comes in 6 cm blocks.
    */
   setAbsolutePixelNormals(on: boolean): void {
-    if (('WAVE_ABSOLUTE_PIXELS' in this.defines) === on) return;
-    if (on) this.defines.WAVE_ABSOLUTE_PIXELS = '';
-    else delete this.defines.WAVE_ABSOLUTE_PIXELS;
-    this.needsUpdate = true;
+    this.setDefine('WAVE_ABSOLUTE_PIXELS', on);
   }
 
   /** Per-pixel detail normals in the far bands; off only for a negative control. */
