@@ -274,14 +274,14 @@ describe('packaging', () => {
       expect(chunk, lazy).toBeDefined();
       expect(loaded.has(chunk!), lazy).toBe(false);
     }
-    // Measured 194.3 KB for the page and 1.9 KB more for oceano.js (three.js's core alone
-    // 142 KB); 218.2 KB before the FFT and Gerstner models, lil-gui, the physics estimators
+    // Measured 195.8 KB for the page and 1.9 KB more for oceano.js (three.js's core alone
+    // 142 KB); 194.3 KB before the near-bands program and the fitted near plane joined; 218.2 KB before the FFT and Gerstner models, lil-gui, the physics estimators
     // and the GPU probe became chunks fetched on use (issue 14's target: 200); 216.7 KB
     // before the latest joined; before the shaders' comments were left out of the build, 226.6 KB for the page;
     // 218 KB before the wake, the compare view and geomorphing joined; before the glTF loader
     // and the underwater passes moved out, 237 KB; before one shared build, 205 + 283 KB.
     // Issue 14's targets are 200 and 20.
-    expect(sizes.pageKB).toBeLessThan(196);
+    expect(sizes.pageKB).toBeLessThanOrEqual(200);
     expect(sizes.componentExtraKB).toBeLessThan(20);
     // The shaders arrive without their comments (scripts/glslMinify.ts) but with their code.
     const shaderCode = sizes.pageFiles.map(text).join('\n');
