@@ -119,16 +119,15 @@ export class BoatWake {
   /** Records the boat at `time` (every frame); a fresh track is replayed first (see above). */
   record(time: number, c: WakeControls): void {
     const head = this.trackState.fine.latest();
-    // A paused view drawn again with the boat where it was: the track, and so the packed
-    // uniforms, stand (recording would change nothing but cost the repacking).
     const r = this.replayed;
-    const replayStands = r === null || r.time !== time || (r.heading === c.heading && r.speed === c.speed && r.turnRate === c.turnRate);
-    if (head !== null && head.time === time && head.x === c.x && head.z === c.z && head.speed === c.speed && replayStands) return;
     const fresh = head === null || !(time >= head.time) || time - head.time > TRACK_MAX_GAP;
     // Paused on a replayed track and given new controls (a slider, the API): replay them, so
     // a frozen view shows the wake of what it now says the boat does.
     const changed = r !== null && r.time === time && (r.x !== c.x || r.z !== c.z || r.heading !== c.heading || r.speed !== c.speed || r.turnRate !== c.turnRate);
     if (fresh || changed) this.replay(time, c);
+    // A paused view drawn again with the boat where it was: the track, and so the packed
+    // uniforms, stand (recording would change nothing but cost the repacking).
+    else if (head !== null && head.time === time && head.x === c.x && head.z === c.z && head.speed === c.speed) return;
     else if (time !== r?.time) this.replayed = null;
     this.trackState.record(time, c.x, c.z, c.speed);
     this.packed = null;

@@ -20,17 +20,25 @@ const MAX_PIXEL_NORMAL_RATIO: Record<'gerstner' | 'fft', number> = { gerstner: 1
 /** From 60 m up towards the glint point 60 / tan 18° = 184.7 m out at azimuth 20°. */
 const GLINT_VIEW = '0,60,0,63.2,0,-173.6';
 
+/** The picture's width and its luminance (0–255, Rec. 709 weights) at a pixel. */
+function lumaOf(png: Buffer): { width: number; luma: (x: number, y: number) => number } {
+  const { width, data } = PNG.sync.read(png);
+  return {
+    width,
+    luma: (x, y) => {
+      const o = (y * width + x) * 4;
+      return 0.2126 * data[o] + 0.7152 * data[o + 1] + 0.0722 * data[o + 2];
+    },
+  };
+}
+
 /**
  * High-frequency energy of a band of rows: the mean absolute difference in luminance
  * (0–255) between each pixel and its right and lower neighbours. A flat, hazed sea scores
  * near 0; ripples add contrast from pixel to pixel.
  */
 function rowBandEnergy(png: Buffer, y0: number, y1: number): number {
-  const { width, data } = PNG.sync.read(png);
-  const luma = (x: number, y: number) => {
-    const o = (y * width + x) * 4;
-    return 0.2126 * data[o] + 0.7152 * data[o + 1] + 0.0722 * data[o + 2];
-  };
+  const { width, luma } = lumaOf(png);
   let sum = 0;
   let count = 0;
   for (let y = y0; y < y1; y++) {
@@ -48,11 +56,7 @@ function rowBandEnergy(png: Buffer, y0: number, y1: number): number {
  * (a step at every block's edge) scores high.
  */
 function blockEnergy(png: Buffer, y0: number, y1: number): number {
-  const { width, data } = PNG.sync.read(png);
-  const luma = (x: number, y: number) => {
-    const o = (y * width + x) * 4;
-    return 0.2126 * data[o] + 0.7152 * data[o + 1] + 0.0722 * data[o + 2];
-  };
+  const { width, luma } = lumaOf(png);
   let sum = 0;
   let count = 0;
   for (let y = y0 + 1; y < y1 - 1; y++) {
