@@ -7,7 +7,9 @@
  *   stepping: the clock moved 1/60 s before each frame, as the bench's FFT row (FFT passes,
  *             foam, the CPU twin's Worker in the renderer process),
  * and the default view beside it. `PROBE_BUILDS=dist-sub,...` also probes builds put under
- * dist/ (vite build --outDir dist/NAME), to compare variants in one run.
+ * dist/ (vite build --outDir dist/NAME), to compare variants in one run; `PROBE_ROUNDS=k` probes
+ * every build k times, interleaved (A B A B …), and ends with each row's median GPU-process CPU
+ * time over the rounds: on a loaded machine one round's figure moves by 15 % from minute to minute.
  * Run after `vite build`: npx tsx scripts/fftFrameProbe.ts [frames] [queries, ;-separated]
  */
 import { readdirSync, readFileSync } from 'node:fs';
@@ -17,6 +19,9 @@ const frames = Number(process.argv[2] ?? 8);
 const queries = (process.argv[3] ?? 't=10;t=10&waves=fft').split(';');
 const builds = ['', ...(process.env.PROBE_BUILDS ?? '').split(',').filter(Boolean).map((b) => `${b}/`)];
 const TICK_MS = 10; // USER_HZ = 100 on Linux
+const rounds = Math.max(1, Number(process.env.PROBE_ROUNDS ?? 1));
+/** Per row (build, query, paused or stepping): the GPU process's CPU ms per frame of each round. */
+const gpuByRow = new Map<string, number[]>();
 
 /** CPU ms (user + system) of every process below `root`, by kind: gpu, renderer, other. */
 function cpuByKind(root: number): Record<string, number> {
@@ -53,7 +58,7 @@ const harness = await startHarness();
 const root = harness.browser.process()?.pid;
 if (root === undefined) throw new Error('No browser process to measure.');
 try {
-  for (const build of builds) {
+  for (let round = 0; round < rounds; round++) for (const build of builds) {
     for (const query of queries) {
       const { page } = await openOcean(harness, query, 1280, 720, build, 600_000);
       for (const step of process.env.PROBE_PAUSED_ONLY ? [0] : [0, 1 / 60]) {
@@ -79,11 +84,20 @@ try {
         const { median, cpuMs } = await run(frames);
         const after = cpuByKind(root);
         const per = (k: string) => ((after[k] - before[k]) / frames).toFixed(0);
+        const row = `${build || 'dist/'} ${query} ${step ? 'stepping' : 'paused  '}`;
+        gpuByRow.set(row, [...(gpuByRow.get(row) ?? []), (after.gpu - before.gpu) / frames]);
         console.log(`${build || 'dist/'} ${query} ${step ? 'stepping' : 'paused  '}: wall median ${median.toFixed(0)} ms; CPU per frame: gpu ${per('gpu')} ms, renderer ${per('renderer')} ms; app cpuMs ${cpuMs.toFixed(2)}`);
       }
       const passes = (await page.evaluate(`window.oceano.debug.passTimings()`)) as { name: string; ms: number }[];
       console.log(`${build || 'dist/'} ${query} passes (wall, one frame): ${passes.map((p) => `${p.name} ${p.ms.toFixed(1)} ms`).join(', ')}`);
       await page.close();
+    }
+  }
+  if (rounds > 1) {
+    console.log(`GPU-process CPU ms per frame, median of ${rounds} rounds (each round's figure in brackets):`);
+    for (const [row, values] of gpuByRow) {
+      const sorted = [...values].sort((a, b) => a - b);
+      console.log(`  ${row}: ${sorted[Math.floor(sorted.length / 2)].toFixed(0)} [${values.map((v) => v.toFixed(0)).join(', ')}]`);
     }
   }
 } finally {
