@@ -103,6 +103,14 @@ void main() {
   float distance = length(toEye);
   vec3 v = toEye / distance;
   vec3 n = normalize(vNormal);
+#ifdef WAVE_PIXEL_FIELDS
+  // The model's per-pixel fields, read once here, outside every branch (shaders/waves/fft.glsl).
+#ifdef WAVE_ABSOLUTE_PIXELS
+  wavePixelFields(vGridXZ, false);
+#else
+  wavePixelFields(vRelativeGridXZ, true);
+#endif
+#endif
 #ifdef WAVE_PIXEL_NORMALS
   // Exact normals (spectral slopes, or the Gerstner sum's closed form) at this pixel's own
   // grid point, not interpolated between vertices: the mapping from grid to displaced

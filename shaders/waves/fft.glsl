@@ -92,14 +92,54 @@ vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, v
     + fftField(cascade2, p, uFftScale.z, fftOffset(2, near));
 }
 
-// The last grid point's sums, kept per shader invocation and per texture set: a pixel asks
-// for the normal and then the foam at the same point (the second is free), and a vertex whose
-// normal is not drawn (ocean.vert under WAVE_PIXEL_NORMALS) reads the displacement alone.
+#ifdef WAVE_FRAGMENT_STAGE
+// The ocean's pixels: every field a pixel needs is read once, at the top of ocean.frag's main
+// (wavePixelFields), outside any branch, and the normal and foam below only combine them.
+// SwiftShader runs a branch's instructions for every pixel of a quad (the untaken side under a
+// mask), so a "read only if not cached" branch read its textures again on the foam's call.
+// Per cascade: the derivatives texture (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z) and the foam texture
+// (foam potential, J, ∂Dx/∂x) (shaders/fftFoam.frag): 6 reads per pixel.
+#define WAVE_PIXEL_FIELDS
+vec4 fftPixelDerivatives;
+float fftPixelJxx;
+vec2 fftPixelPotentials;
+
+void fftReadPixelFields(vec2 p, bool near) {
+  fftPixelDerivatives = fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
+  vec4 foam0 = fftField(uFftFoam0, p, uFftScale.x, fftOffset(0, near));
+  vec4 foam1 = fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near));
+  vec4 foam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
+  fftPixelJxx = foam0.b + foam1.b + foam2.b;
+  fftPixelPotentials = vec2(foam1.r, foam2.r);
+}
+
+// ocean.frag's hook: p is the pixel's grid point relative to the render origin (near) or absolute.
+void wavePixelFields(vec2 p, bool near) {
+  fftReadPixelFields(p, near);
+}
+
+// The point arguments are those wavePixelFields was given (ocean.frag passes the same).
+vec4 fftDerivativeFields(vec2 p, bool near) {
+  return fftPixelDerivatives;
+}
+
+float fftJxx(vec2 p, bool near) {
+  return fftPixelJxx;
+}
+
+vec2 fftFoamPotentials(vec2 p, bool near) {
+  return fftPixelPotentials;
+}
+
+vec4 fftDisplacementFields(vec2 p, bool near) {
+  return fftCascadeSum(uFftDisplacement0, uFftDisplacement1, uFftDisplacement2, p, near);
+}
+#else
+// The vertices: the last grid point's displacement sums, kept per shader invocation, so a
+// vertex that asks for the displacement and then the normal (comparison view) reads once.
 // The key is the point and whether it is relative to the render origin (z: 1) or not (0).
 vec3 fftDisplacementPoint = vec3(3.0e38);
-vec3 fftDerivativesPoint = vec3(3.0e38);
 vec4 fftCachedDisplacement;
-vec4 fftCachedDerivatives;
 
 vec4 fftDisplacementFields(vec2 p, bool near) {
   vec3 key = vec3(p, near ? 1.0 : 0.0);
@@ -111,53 +151,19 @@ vec4 fftDisplacementFields(vec2 p, bool near) {
 }
 
 vec4 fftDerivativeFields(vec2 p, bool near) {
-  vec3 key = vec3(p, near ? 1.0 : 0.0);
-  if (key != fftDerivativesPoint) {
-    fftDerivativesPoint = key;
-    fftCachedDerivatives = fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
-  }
-  return fftCachedDerivatives;
+  return fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
 }
-
-// The pixels' third field: per cascade the foam texture holds (foam potential, J, ∂Dx/∂x)
-// (shaders/fftFoam.frag), so a filtered pixel reads it and the derivatives, not the
-// displacement (of which it needs only ∂Dx/∂x): 6 reads per pixel instead of 8.
-#if defined(FFT_FILTERED_FIELDS) && defined(WAVE_FRAGMENT_STAGE)
-#define FFT_PIXEL_FOAM_FIELDS
-vec3 fftFoamPoint = vec3(3.0e38);
-vec4 fftCachedFoam1;
-vec4 fftCachedFoam2;
-float fftCachedJxx;
-
-void fftReadFoamFields(vec2 p, bool near) {
-  vec3 key = vec3(p, near ? 1.0 : 0.0);
-  if (key == fftFoamPoint) return;
-  fftFoamPoint = key;
-  fftCachedFoam1 = fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near));
-  fftCachedFoam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
-  fftCachedJxx = fftField(uFftFoam0, p, uFftScale.x, fftOffset(0, near)).b + fftCachedFoam1.b + fftCachedFoam2.b;
-}
-#endif
 
 // ∂Dx/∂x of the whole sea at a grid point.
 float fftJxx(vec2 p, bool near) {
-#ifdef FFT_PIXEL_FOAM_FIELDS
-  fftReadFoamFields(p, near);
-  return fftCachedJxx;
-#else
   return fftDisplacementFields(p, near).w;
-#endif
 }
 
 // Each remembering cascade's foam potential at a grid point (cascades 1 and 2).
 vec2 fftFoamPotentials(vec2 p, bool near) {
-#ifdef FFT_PIXEL_FOAM_FIELDS
-  fftReadFoamFields(p, near);
-  return vec2(fftCachedFoam1.r, fftCachedFoam2.r);
-#else
   return vec2(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r);
-#endif
 }
+#endif
 
 vec3 waveDisplacement(vec2 gridXZ) {
   return fftDisplacementFields(gridXZ, false).xyz;
