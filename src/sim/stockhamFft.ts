@@ -37,3 +37,53 @@ export function stockhamInverse(input: Float64Array, n: number): Float64Array {
   for (let half = 1; half < n; half *= 2) data = stockhamStage(data, n, half);
   return data;
 }
+
+/**
+ * The radices of the stages of one n-point transform as the GPU runs them: radix 4 wherever it
+ * fits (one radix-4 pass does the work of two radix-2 passes: half the passes and half the
+ * render-target writes), and one radix-2 stage first when log₂n is odd. 128 → [2, 4, 4, 4].
+ */
+export function stockhamRadices(n: number): number[] {
+  const log2 = Math.log2(n);
+  if (!Number.isInteger(log2) || log2 < 1) throw new RangeError(`n must be a power of two ≥ 2, got ${n}.`);
+  return [...(log2 % 2 === 1 ? [2] : []), ...new Array<number>(Math.floor(log2 / 2)).fill(4)];
+}
+
+/**
+ * One mixed-radix Stockham stage of radix R with Ns the product of the radices before it
+ * (Govindaraju et al. 2008): output o takes k = o mod Ns, j = ⌊o/(R·Ns)⌋·Ns + k,
+ * r = ⌊o/Ns⌋ mod R, and out[o] = Σ_{m<R} e^{2πi·m·r/R} · e^{2πi·m·k/(R·Ns)} · in[j + m·n/R].
+ * With R = 2 it is stockhamStage. The CPU mirror of shaders/fftStage.frag (RADIX_4 or not).
+ */
+export function stockhamRadixStage(input: Float64Array, n: number, halfSize: number, radix: number): Float64Array {
+  const out = new Float64Array(2 * n);
+  for (let o = 0; o < n; o++) {
+    const k = o % halfSize;
+    const j = Math.floor(o / (radix * halfSize)) * halfSize + k;
+    const r = Math.floor(o / halfSize) % radix;
+    let re = 0;
+    let im = 0;
+    for (let m = 0; m < radix; m++) {
+      // The twiddle e^{2πi·q/n} of the table (q = m·k·n/(R·Ns) < n), then the DFT's e^{2πi·m·r/R}.
+      const angle = (2 * Math.PI * ((m * k * n) / (radix * halfSize))) / n + (2 * Math.PI * m * r) / radix;
+      const ar = input[2 * (j + (m * n) / radix)];
+      const ai = input[2 * (j + (m * n) / radix) + 1];
+      re += Math.cos(angle) * ar - Math.sin(angle) * ai;
+      im += Math.cos(angle) * ai + Math.sin(angle) * ar;
+    }
+    out[2 * o] = re;
+    out[2 * o + 1] = im;
+  }
+  return out;
+}
+
+/** The whole 1-D inverse DFT by the stages of stockhamRadices(n), as the GPU runs it. */
+export function stockhamMixedInverse(input: Float64Array, n: number, radices: readonly number[] = stockhamRadices(n)): Float64Array {
+  let data = input;
+  let halfSize = 1;
+  for (const radix of radices) {
+    data = stockhamRadixStage(data, n, halfSize, radix);
+    halfSize *= radix;
+  }
+  return data;
+}

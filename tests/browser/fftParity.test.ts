@@ -138,6 +138,21 @@ describe('GPU FFT against fft.js', () => {
   }
 });
 
+describe('GPU FFT stages: radix 4 and radix 2', () => {
+  // The passes run radix 4 wherever it fits (stockhamRadices); the radix-2 stage runs alone for
+  // odd log₂n (128 = 2·4³), so here the radix-2 pass is also checked on its own, every stage.
+  for (const radices of [[2, 2, 2, 2, 2, 2, 2], [4, 4, 4, 2]]) {
+    it(`seeded random spectra, n = 128, stages ${radices.join(', ')}: within 1e-4 relative`, async () => {
+      const n = 128;
+      const [a, b] = cases[cases.length - 1].input(n);
+      const [ga, gb] = await gpu('inverse', n, a, b, radices);
+      const errors = [relativeError(ga, cpuInverse(n, a)), relativeError(gb, cpuInverse(n, b))];
+      console.log(`GPU FFT stages ${radices.join(', ')}: relative error ${errors.map((e) => e.toExponential(2)).join(', ')}`);
+      for (const e of errors) expect(e).toBeLessThan(1e-4);
+    });
+  }
+});
+
 describe('GPU spectral ocean against its CPU twin', () => {
   for (const [name, sea] of [
     ['fresh breeze, PM, 64²', { ...DEFAULT_SEA_STATE, fftSize: 64, windSpeed: 10 }],

@@ -21,6 +21,7 @@ import quadVertex from '../../../shaders/fftQuad.vert?raw';
 import spectrumFragment from '../../../shaders/fftSpectrum.frag?raw';
 import stageFragment from '../../../shaders/fftStage.frag?raw';
 import { timeInPeriod } from '../../sim/dispersion';
+import { stockhamRadices } from '../../sim/stockhamFft';
 import type { FftOceanSetup } from '../../sim/fftOcean';
 import { REPEAT_PERIOD, type SpectralTile } from '../../sim/initialSpectrum';
 import { floatTexture } from '../dataTextures';
@@ -46,56 +47,69 @@ function mrtTarget(n: number, filtered = false): WebGLRenderTarget {
   return target;
 }
 
-/** (cos, sin) of 2π m/n for m < n/2, in float64 then rounded once to float32. */
+/** (cos, sin) of 2π q/n for q < n (a radix-4 stage reads up to 3·(n/4 − 1)), in float64 then rounded once to float32. */
 function twiddleTable(n: number): DataTexture {
-  const data = new Float32Array(2 * n);
-  for (let m = 0; m < n / 2; m++) {
-    data[4 * m] = Math.cos((2 * Math.PI * m) / n);
-    data[4 * m + 1] = Math.sin((2 * Math.PI * m) / n);
+  const data = new Float32Array(4 * n);
+  for (let q = 0; q < n; q++) {
+    data[4 * q] = Math.cos((2 * Math.PI * q) / n);
+    data[4 * q + 1] = Math.sin((2 * Math.PI * q) / n);
   }
-  return floatTexture(data, n / 2, 1, RGBAFormat, RepeatWrapping);
+  return floatTexture(data, n, 1, RGBAFormat, RepeatWrapping);
 }
 
 /**
  * GPU inverse 2-D FFTs of n × n grids, four complex signals at a time (two RGBA32F textures),
- * by 2·log₂n Stockham passes ping-ponging between two MRT render targets. The result lands in
- * `target` (the pass count is even), so callers can keep its textures bound.
+ * by Stockham passes ping-ponging between two MRT render targets: per axis the stages of
+ * stockhamRadices(n) (src/sim/stockhamFft.ts, its CPU mirror), radix 4 where it fits and one
+ * radix-2 stage for odd log₂n: 8 passes for 128² instead of 14 radix-2 passes. The result lands
+ * in `target` (the same number of passes per axis, so the count is even), so callers can keep
+ * its textures bound.
  */
 export class GpuInverseFft {
   readonly n: number;
   private readonly scene = new Scene();
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly mesh: Mesh;
-  private readonly stage: RawShaderMaterial;
+  /** The stage material of each radix (shaders/fftStage.frag, RADIX_4 for 4): compiled apart, since SwiftShader would run both sides of a branch on the radix. */
+  private readonly stages: Map<number, RawShaderMaterial>;
+  private readonly radices: number[];
   private readonly twiddle: DataTexture;
   private readonly scratch: WebGLRenderTarget;
 
+  /** `radices`: the stages per axis, stockhamRadices(n) unless a test asks for others (all 2: the radix-2 passes). */
   constructor(
     private readonly renderer: WebGLRenderer,
     n: number,
+    radices?: readonly number[],
   ) {
     if (!renderer.extensions.has('EXT_color_buffer_float')) throw new Error('The spectral ocean needs WebGL2 float render targets (EXT_color_buffer_float).');
     this.n = n;
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
     this.twiddle = twiddleTable(n);
-    this.stage = new RawShaderMaterial({
-      name: 'FftStage',
-      glslVersion: GLSL3,
-      vertexShader: quadVertex,
-      fragmentShader: stageFragment,
-      uniforms: {
-        uInput0: { value: null },
-        uInput1: { value: null },
-        uTwiddle: { value: this.twiddle },
-        uN: { value: n },
-        uHalfSize: { value: 1 },
-        uVertical: { value: false },
-      },
-      depthTest: false,
-      depthWrite: false,
-    });
-    this.mesh = new Mesh(geometry, this.stage);
+    this.radices = [...(radices ?? stockhamRadices(n))];
+    if (this.radices.reduce((a, b) => a * b, 1) !== n) throw new RangeError(`The radices ${this.radices.join(', ')} do not multiply to ${n}.`);
+    const twiddle = this.twiddle;
+    const stage = (radix: number): RawShaderMaterial =>
+      new RawShaderMaterial({
+        name: `FftStageRadix${radix}`,
+        glslVersion: GLSL3,
+        vertexShader: quadVertex,
+        fragmentShader: stageFragment,
+        defines: radix === 4 ? { RADIX_4: '' } : {},
+        uniforms: {
+          uInput0: { value: null },
+          uInput1: { value: null },
+          uTwiddle: { value: twiddle },
+          uN: { value: n },
+          uHalfSize: { value: 1 },
+          uVertical: { value: false },
+        },
+        depthTest: false,
+        depthWrite: false,
+      });
+    this.stages = new Map([...new Set(this.radices)].map((radix) => [radix, stage(radix)]));
+    this.mesh = new Mesh(geometry, this.stages.get(this.radices[0]));
     this.mesh.frustumCulled = false;
     this.scene.add(this.mesh);
     this.scratch = mrtTarget(n);
@@ -120,16 +134,19 @@ export class GpuInverseFft {
 
   /** Inverse-transforms the two textures (rows, then columns) into `target`. */
   transform(input0: Texture, input1: Texture, target: WebGLRenderTarget): void {
-    const u = this.stage.uniforms;
     let source: [Texture, Texture] = [input0, input1];
     let write = this.scratch;
     for (const vertical of [false, true]) {
-      for (let half = 1; half < this.n; half *= 2) {
+      let halfSize = 1;
+      for (const radix of this.radices) {
+        const stage = this.stages.get(radix) as RawShaderMaterial;
+        const u = stage.uniforms;
         u.uInput0.value = source[0];
         u.uInput1.value = source[1];
-        u.uHalfSize.value = half;
+        u.uHalfSize.value = halfSize;
         u.uVertical.value = vertical;
-        this.draw(this.stage, write);
+        this.draw(stage, write);
+        halfSize *= radix;
         source = [write.textures[0], write.textures[1]];
         write = write === this.scratch ? target : this.scratch;
       }
@@ -137,7 +154,7 @@ export class GpuInverseFft {
   }
 
   dispose(): void {
-    this.stage.dispose();
+    for (const stage of this.stages.values()) stage.dispose();
     this.twiddle.dispose();
     this.scratch.dispose();
     this.mesh.geometry.dispose();
@@ -182,7 +199,7 @@ export function splitFraction(f: number): [number, number, number] {
 /**
  * The spectral ocean on the GPU: per cascade, h₀ uploaded once (drawn on the CPU from the
  * seed, the same numbers as the CPU twin), then each update(t) one time-evolution pass and
- * 2·log₂n FFT passes. After update, per cascade c:
+ * the FFT passes (2·⌈log₂n / 2⌉: radix 4, GpuInverseFft). After update, per cascade c:
  *   displacement[c]: RGBA32F n × n, (dx, dy, dz, ∂Dx/∂x)
  *   derivatives[c]:  RGBA32F n × n, (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)
  * Texel (p, q) is the grid point x = p·L/n, z = q·L/n of a tile of side L = sizes[c], repeating.
