@@ -67,6 +67,36 @@ describe('under the water', () => {
     await page.close();
   });
 
+  it('draws the same picture with the underwater shortcuts (back faces only, no above-the-surface caustics test) as without', async () => {
+    // The dive view: the underside over the upper half, the sea bed and its caustics below.
+    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
+    expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('below');
+    const fast = await canvasPng(page);
+    const full = async () => {
+      await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: false }));
+      const png = await canvasPng(page);
+      await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: true }));
+      return png;
+    };
+    const same = measureDifference(fast, await full());
+    console.log(`[oceano] underwater shortcuts on vs off: ${describeDifference(same)}`);
+    expect(withinTolerance(same), describeDifference(same)).toBe(true);
+    // Negative controls: the same comparison sees a change of the underside's shading (its
+    // Fresnel weights off: inside Snell's window all sky, outside all mirrored water) and of
+    // the bed's caustics (25 % stronger), the two things the shortcuts leave out code from.
+    const params = await page.evaluate(() => window.oceano.getParams());
+    await page.evaluate(() => window.oceano.setParams({ fresnel: false }));
+    const noFresnel = measureDifference(fast, await canvasPng(page));
+    console.log(`[oceano] control, underside without Fresnel: ${describeDifference(noFresnel)}`);
+    expect(withinTolerance(noFresnel)).toBe(false);
+    await page.evaluate((p) => window.oceano.setParams({ fresnel: true, causticsIntensity: 1.25 * p.causticsIntensity }), params);
+    const strongerCaustics = measureDifference(fast, await canvasPng(page));
+    console.log(`[oceano] control, caustics 25 % stronger: ${describeDifference(strongerCaustics)}`);
+    expect(withinTolerance(strongerCaustics)).toBe(false);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
   it('flips underwater exactly at the CPU surface height under the camera', async () => {
     const { page } = await openOcean(harness, 'seed=1&t=10');
     const result = await page.evaluate(() => {
