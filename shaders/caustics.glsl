@@ -31,7 +31,11 @@ float causticLight(vec3 p) {
   if (uCausticsSunDirection.y <= 0.0 || uCausticsStrength <= 0.0) return 1.0;
   // Above the surface (the grid point under p stands for the world point: exact for models
   // that only lift points, within the horizontal displacement's reach for choppy ones).
+  // CAUSTICS_BELOW_WAVES: the caller's points all lie below the deepest trough (the sea bed
+  // deeper than the model's bound, src/render/seaBed.ts), and the test is compiled out.
+#ifndef CAUSTICS_BELOW_WAVES
   if (p.y >= waveDisplacement(p.xz).y) return 1.0;
+#endif
   vec3 light = -uCausticsSunDirection;
   vec3 flatRay = uCausticsRefractedSun;
   // The surface point above p along the ray a flat sea would send there.

@@ -131,7 +131,11 @@ void main() {
 // OCEAN_NEAR_BANDS: the material of the bands whose vertices lie at most DETAIL_FROM apart,
 // where the weight below is exactly 0 (OceanMaterial.near): SwiftShader would run the block
 // for every pixel even where `weight > 0.0` is false, so it is left out there.
-#if defined(WAVE_DETAIL_NORMALS) && !defined(OCEAN_NEAR_BANDS)
+// OCEAN_ONLY_FROM_BELOW: seen from under the water the far bands lie at grazing angles behind
+// the fog, outside Snell's window, where the mirrored water colour hardly depends on the normal:
+// the block is left out there too (its effect on the underwater references is measured in
+// tests/browser/underwater.test.ts).
+#if defined(WAVE_DETAIL_NORMALS) && !defined(OCEAN_NEAR_BANDS) && !defined(OCEAN_ONLY_FROM_BELOW)
   // A model whose normals are per vertex loses its short waves where the band's vertices
   // are farther apart than they are long (48 m in band 5, the ripples are a few metres):
   // the far sea goes flat. There the normal is evaluated per pixel instead, faded in as
@@ -168,6 +172,14 @@ void main() {
   }
   // With uMarkSides, alpha tells the underwater pass which side of this very mesh the line
   // of sight came from: 0.5 from below, 0 from above. Drawn straight to the canvas it is 1.
+#if defined(OCEAN_ONLY_FROM_BELOW)
+  // The whole view is under the water (OceanMaterial.setSeenFromBelow('below')): a line of
+  // sight from an eye in the water meets the surface from below first, so only back faces
+  // are drawn and the shading from above is left out of the program below.
+  gl_FragColor = vec4(shadeFromBelow(v, n), uMarkSides ? 0.5 : 1.0);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+#else
 #ifdef OCEAN_SEEN_FROM_BELOW
   if (!gl_FrontFacing) {
     gl_FragColor = vec4(shadeFromBelow(v, n), uMarkSides ? 0.5 : 1.0);
@@ -217,4 +229,5 @@ void main() {
   gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+#endif
 }

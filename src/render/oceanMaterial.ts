@@ -1,5 +1,6 @@
-import { Color, DoubleSide, FrontSide, Matrix4, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture } from 'three';
+import { BackSide, Color, DoubleSide, FrontSide, Matrix4, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture } from 'three';
 import { renderOrigin } from '../sim/renderOrigin';
+import type { Submersion } from '../sim/underwater';
 import vertexShader from '../../shaders/ocean.vert?raw';
 import fragmentShader from '../../shaders/ocean.frag?raw';
 import { CHUNK_QUADS } from '../sim/lodBands';
@@ -121,14 +122,21 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   /**
-   * Both faces once the view may be under the water: the underside is shaded from below, and
-   * each face marks its side in alpha for the underwater passes.
+   * Which faces are drawn, and shaded how, for where the view starts (OceanView's
+   * submersion test). Above: front faces only, and the underside's shading is left out of the
+   * program (ocean.frag). Straddling: both faces, the underside shaded from below, each face
+   * marking its side in alpha for the underwater passes. Below (the eye and the whole near
+   * plane in the water): a line of sight first meets the surface from below, where a front
+   * face could only show behind a back face, so back faces only, and the shading from above
+   * is left out of the program (OCEAN_ONLY_FROM_BELOW): SwiftShader would otherwise run it
+   * for every pixel of the underside too (issue 14).
    */
-  setSeenFromBelow(fromBelow: boolean): void {
-    this.uniforms.uMarkSides.value = fromBelow;
-    this.near.side = this.side = fromBelow ? DoubleSide : FrontSide;
-    // Front faces only: the underside's shading is left out of the program (ocean.frag).
-    this.setDefine('OCEAN_SEEN_FROM_BELOW', fromBelow);
+  setSeenFromBelow(where: Submersion): void {
+    const inWater = where !== 'above';
+    this.uniforms.uMarkSides.value = inWater;
+    this.near.side = this.side = where === 'below' ? BackSide : inWater ? DoubleSide : FrontSide;
+    this.setDefine('OCEAN_SEEN_FROM_BELOW', inWater);
+    this.setDefine('OCEAN_ONLY_FROM_BELOW', where === 'below');
   }
 
   /** Compiles a define in or out of both programs (this one and `near`), which must draw alike. */

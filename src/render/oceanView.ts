@@ -55,6 +55,13 @@ export interface ShadingFixes {
   relativePixelNormals: boolean;
   /** The near plane brought in for an eye less than about a metre above the water (src/sim/nearPlane.ts). */
   clearanceNear: boolean;
+  /**
+   * Whole view under the water: the sea drawn from below only (back faces, the shading from
+   * above compiled out: OceanMaterial.setSeenFromBelow) and the sea bed's caustics without
+   * their above-the-surface test when the bed lies below every trough (SeaBed.setDepth).
+   * Off, both faces and both shadings are drawn and the test runs, as before (issue 14).
+   */
+  underwaterShortcuts: boolean;
 }
 
 export interface RenderStats extends ChunkStats {
@@ -131,6 +138,8 @@ export class OceanView {
   private readonly nearPoint = new Vector3();
   /** Debug (a negative control): false keeps the fixed 0.5 m near plane however low the eye. */
   private clearanceNear = true;
+  /** Debug (a negative control's switch): see ShadingFixes.underwaterShortcuts. */
+  private underwaterShortcuts = true;
   private readonly axis = new Vector3();
   private readonly skyBackground: SkyBackground;
   private readonly syncPixel = new Uint8Array(4);
@@ -257,7 +266,8 @@ export class OceanView {
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
       this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
-    if (changed('seaBedDepth')) this.seaBed.setDepth(params.seaBedDepth);
+    // The wave bound too: a bed below every trough skips the caustics' above-the-surface test.
+    this.seaBed.setDepth(params.seaBedDepth, this.underwaterShortcuts ? this.bounds.vertical : Infinity);
     if (changed('blurStrength')) this.post?.setBlur(params.blurStrength);
     if (changed('godRays', 'godRaysIntensity')) this.post?.setGodRays(params.godRays ? params.godRaysIntensity : 0);
   }
@@ -422,7 +432,7 @@ export class OceanView {
       });
     }
     const inWater = this.where.submersion !== 'above';
-    this.material.setSeenFromBelow(inWater);
+    this.material.setSeenFromBelow(this.where.submersion === 'below' && !this.underwaterShortcuts ? 'straddling' : this.where.submersion);
     this.seaBed.mesh.visible = inWater;
     this.seaBed.follow(this.camera.position);
     // Seen entirely from below, the sky can only show through the surface: skip drawing it.
@@ -600,6 +610,10 @@ export class OceanView {
     if (fixes.seaBedMark !== undefined) this.seaBed.setWaterMark(fixes.seaBedMark);
     if (fixes.relativePixelNormals !== undefined) this.material.setAbsolutePixelNormals(!fixes.relativePixelNormals);
     if (fixes.clearanceNear !== undefined) this.clearanceNear = fixes.clearanceNear;
+    if (fixes.underwaterShortcuts !== undefined) {
+      this.underwaterShortcuts = fixes.underwaterShortcuts;
+      this.seaBed.setDepth(this.params.seaBedDepth, this.underwaterShortcuts ? this.bounds.vertical : Infinity);
+    }
   }
 
   /**

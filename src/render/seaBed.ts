@@ -64,8 +64,25 @@ export class SeaBed {
     this.material.uniforms.uMarkUnderWater.value = on;
   }
 
-  setDepth(depth: number): void {
+  /**
+   * The bed's depth under the mean sea level, and the waves' vertical reach (the model's
+   * bound): a bed deeper than every trough is always under the water, so caustics.glsl's
+   * test of whether a point is above the surface (one full evaluation of the displacement per
+   * pixel) is compiled out (CAUSTICS_BELOW_WAVES); SwiftShader would run it for nothing.
+   */
+  setDepth(depth: number, waveReach: number): void {
     this.mesh.position.y = -depth;
+    const below = depth > waveReach;
+    if (below !== ('CAUSTICS_BELOW_WAVES' in this.material.defines)) {
+      if (below) this.material.defines.CAUSTICS_BELOW_WAVES = '';
+      else delete this.material.defines.CAUSTICS_BELOW_WAVES;
+      this.material.needsUpdate = true;
+    }
+  }
+
+  /** Whether the bed's program leaves out the caustics' above-the-surface test (for tests). */
+  get belowWaves(): boolean {
+    return 'CAUSTICS_BELOW_WAVES' in this.material.defines;
   }
 
   /** Share of the sunlight a flat sea lets through (1 − Fresnel reflectance at the sun's angle). */

@@ -67,6 +67,43 @@ describe('under the water', () => {
     await page.close();
   });
 
+  it('draws the same pictures with the underwater shortcuts (back faces only, no above-the-surface caustics test) as without', async () => {
+    // The dive view (the underside over the upper half, outside Snell's window; the sea bed and
+    // its caustics below), then looking up into Snell's window (the bench's underwater camera).
+    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
+    const shortcutsAgainstFull = async (label: string) => {
+      expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('below');
+      const fast = await canvasPng(page);
+      await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: false }));
+      const full = await canvasPng(page);
+      await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: true }));
+      const same = measureDifference(fast, full);
+      // Measured: largest difference 0 levels in both views (the left-out code changed no pixel).
+      console.log(`[oceano] underwater shortcuts on vs off, ${label}: ${describeDifference(same)}`);
+      expect(withinTolerance(same), describeDifference(same)).toBe(true);
+      return fast;
+    };
+    const dive = await shortcutsAgainstFull('dive view');
+    // Negative control: the comparison sees the bed's caustics 25 % stronger.
+    const params = await page.evaluate(() => window.oceano.getParams());
+    await page.evaluate((p) => window.oceano.setParams({ causticsIntensity: 1.25 * p.causticsIntensity }), params);
+    const strongerCaustics = measureDifference(dive, await canvasPng(page));
+    console.log(`[oceano] control, caustics 25 % stronger: ${describeDifference(strongerCaustics)}`);
+    expect(withinTolerance(strongerCaustics)).toBe(false);
+    await page.evaluate((p) => window.oceano.setParams({ causticsIntensity: p.causticsIntensity }), params);
+
+    await page.evaluate(() => window.oceano.setCamera({ position: [0, -8, 20], target: [0, 5, -20] }));
+    const up = await shortcutsAgainstFull('looking up');
+    // Negative control: the comparison sees the underside's shading change (its Fresnel
+    // weights off: Snell's window then ends in a hard step instead of fading into the mirror).
+    await page.evaluate(() => window.oceano.setParams({ fresnel: false }));
+    const noFresnel = measureDifference(up, await canvasPng(page));
+    console.log(`[oceano] control, underside without Fresnel: ${describeDifference(noFresnel)}`);
+    expect(withinTolerance(noFresnel)).toBe(false);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
   it('flips underwater exactly at the CPU surface height under the camera', async () => {
     const { page } = await openOcean(harness, 'seed=1&t=10');
     const result = await page.evaluate(() => {
