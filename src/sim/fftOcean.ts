@@ -73,12 +73,15 @@ export class FftOcean implements WaveModel {
 
   /**
    * Takes fields computed elsewhere for time t: a Worker running setTime(t) on an FftOcean of
-   * the same SeaState (same seed, hence the same h₀) gives bit-identical arrays.
+   * the same SeaState (same seed, hence the same h₀) gives bit-identical arrays. Returns the
+   * arrays it held before, which this ocean no longer reads (a Worker may fill them again).
    */
-  adoptFields(time: number, fields: readonly CascadeFields[]): void {
+  adoptFields(time: number, fields: readonly CascadeFields[]): CascadeFields[] {
     if (fields.length !== this.fields.length) throw new RangeError(`Expected ${this.fields.length} cascades of fields, got ${fields.length}.`);
+    const replaced = this.fields.slice();
     fields.forEach((f, c) => (this.fields[c] = f));
     this.time = time;
+    return replaced;
   }
 
   /** Evolves to time t (s). Only t mod T matters (quantised dispersion), reduced here in float64. */
