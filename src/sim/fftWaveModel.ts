@@ -106,7 +106,8 @@ export class FftWaveModel implements LiveWaveModel {
     const refused = seaKey(sea) !== this.key || (!Number.isNaN(held) && time <= held);
     // The arrays no longer read (the reply refused, or the fields it replaces) go back to the
     // source to be filled again; the model keeps no reference to them.
-    this.source?.recycle?.(refused ? fields : this.ocean.adoptFields(time, fields));
+    const unread = refused ? fields : this.ocean.adoptFields(time, fields);
+    this.source?.recycle?.(unread);
   }
 
   /** The time whose fields answer a question about `time` (see the class comment). */
