@@ -8,6 +8,9 @@ import { evolveSpectra } from './spectralFields';
 import { directionalSpectrum, frequencySpectrum, peakWavelength } from './waveSpectrum';
 import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample, type WaveModel } from './waveModel';
 
+/** Revisions of every FftOcean's fields, from one counter, so no two oceans' fields share one. */
+let fieldRevisions = 0;
+
 /**
  * The spatial fields of one cascade at one time, laid out as the GPU's two RGBA textures:
  * n × n texels, texel (p, q) at index 4(q·n + p), p along x, q along z.
@@ -47,6 +50,8 @@ export class FftOcean implements WaveModel {
   readonly setup: FftOceanSetup;
   readonly fields: CascadeFields[];
   private time = Number.NaN;
+  /** Changes whenever the fields change (computed or adopted): FftWaveModel.surfaceRevision. */
+  fieldsRevision = ++fieldRevisions;
   private readonly fft: InverseFft2d;
   private readonly spectra: Float64Array[][];
   private readonly bound: DisplacementBounds;
@@ -81,6 +86,7 @@ export class FftOcean implements WaveModel {
     const replaced = this.fields.slice();
     fields.forEach((f, c) => (this.fields[c] = f));
     this.time = time;
+    this.fieldsRevision = ++fieldRevisions;
     return replaced;
   }
 
@@ -88,6 +94,7 @@ export class FftOcean implements WaveModel {
   setTime(time: number): void {
     if (time === this.time) return;
     this.time = time;
+    this.fieldsRevision = ++fieldRevisions;
     const tau = timeInPeriod(time, REPEAT_PERIOD);
     const n = this.setup.sea.fftSize;
     this.setup.tiles.forEach((tile, c) => {

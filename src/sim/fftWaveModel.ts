@@ -85,6 +85,11 @@ export class FftWaveModel implements LiveWaveModel {
     return this.ocean.setup.sea;
   }
 
+  /** See LiveWaveModel: the fields' revision (a new sea is a new FftOcean, whose fields have a revision of their own). */
+  get surfaceRevision(): number {
+    return this.ocean.fieldsRevision;
+  }
+
   /** Returns true when the sea changed (a new h₀: the GPU spectrum textures must be made again). */
   setParams(params: FftWaveParams): boolean {
     const sea = seaStateFromParams(params);

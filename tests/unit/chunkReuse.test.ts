@@ -99,3 +99,31 @@ describe('a still camera reuses the last selection', () => {
     expect(attribute.version).toBeGreaterThan(version);
   });
 });
+
+describe('a camera moved in place is captured again', () => {
+  it('one camera object moved as OrbitCamera moves it (no updateMatrixWorld by the caller) uploads what a fresh selection would (seed 12)', () => {
+    // The capture skips the camera's matrix update while its position, rotation, scale and
+    // projection are those of the last capture. Negative control: a pose check that ignores
+    // the rotation (or the position) uploads a stale selection here.
+    const reused = chunks();
+    const moved = new PerspectiveCamera(50, 16 / 9, 0.1, 20000);
+    let changedFrames = 0;
+    let previousFresh = '';
+    for (const step of walk(12, 60)) {
+      moved.position.set(...step.position);
+      moved.lookAt(...step.target); // three updates the world matrix first, with the old rotation
+      if (moved.fov !== step.fov) {
+        moved.fov = step.fov;
+        moved.updateProjectionMatrix();
+      }
+      reused.update(moved, step.settings, step.bounds);
+      const fresh = chunks();
+      fresh.update(camera(step), step.settings, step.bounds);
+      const expected = uploaded(fresh);
+      expect(uploaded(reused)).toBe(expected);
+      if (expected !== previousFresh) changedFrames++;
+      previousFresh = expected;
+    }
+    expect(changedFrames).toBeGreaterThan(30);
+  });
+});
