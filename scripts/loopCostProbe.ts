@@ -19,6 +19,8 @@ const queries = (process.argv[3] ?? 't=10&waves=fft;t=10').split(';');
 // PROBE_ROOT=0 leaves out dist/ itself.
 const builds = [...(process.env.PROBE_ROOT === '0' ? [] : ['']), ...(process.env.PROBE_BUILDS ?? '').split(',').filter(Boolean).map((b) => `${b}/`)];
 const BLOCK = 30;
+// PROBE_SIZE=640x360: a smaller canvas, for a loaded machine (the update step and the twin do not depend on it).
+const [WIDTH, HEIGHT] = (process.env.PROBE_SIZE ?? '1280x720').split('x').map(Number);
 const COOP_COEP = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
 
 const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false, headers: COOP_COEP }, logLevel: 'error' });
@@ -58,7 +60,7 @@ const median = (v: number[]) => [...v].sort((a, b) => a - b)[v.length >> 1];
 try {
   console.log(`load average at start: ${loadavg().map((l) => l.toFixed(2)).join(' ')}`);
   for (const query of queries) {
-    const pages = await Promise.all(builds.map((build) => openOcean(harness, query, 1280, 720, build, 600_000).then((o) => o.page)));
+    const pages = await Promise.all(builds.map((build) => openOcean(harness, query, WIDTH, HEIGHT, build, 600_000).then((o) => o.page)));
     const twin: number[][] = builds.map(() => []);
     const cpu: number[][] = builds.map(() => []);
     const paused: number[][] = builds.map(() => []);
