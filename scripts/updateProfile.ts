@@ -28,7 +28,7 @@ interface Profile {
 
 const harness = await startHarness();
 try {
-  const { page } = await openOcean(harness, query, 1280, 720, `${build}/`, 600_000);
+  const { page } = await openOcean(harness, query, 640, 360, `${build}/`, 600_000);
   await page.evaluate(`(() => { const o = window.oceano; o.pause(); for (let i = 0; i < 30; i++) o.renderFrame(); })()`);
   const session = await page.createCDPSession();
   await session.send('Profiler.enable');
