@@ -69,6 +69,7 @@ export class BoatController {
       { heading: params.boatHeading * DEG, speed: params.boatSpeed, response: params.boatResponse },
       this.hull,
       (x, z) => waves.height(x, z, time),
+      waves,
     );
     const pose = this.state.pose;
     this.view.setPose(pose);

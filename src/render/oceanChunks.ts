@@ -127,8 +127,8 @@ export class OceanChunks {
   private readonly edgeScratch = [0, 0, 0, 0];
   /** Everything the selection depends on, as of the last frame that selected: the planes, camera, origin, bounds and settings. */
   private readonly lastKey = new Float64Array(SELECTION_KEY_LENGTH).fill(NaN);
-  /** The camera's world and projection matrices at the last culling capture (NaN: none yet). */
-  private readonly lastCameraMatrices = new Float64Array(32).fill(NaN);
+  /** The camera's position, quaternion, scale and projection matrix at the last culling capture (NaN: none yet). */
+  private readonly lastCameraPose = new Float64Array(26).fill(NaN);
   private readonly key = new Float64Array(SELECTION_KEY_LENGTH);
   private readonly zones = new Float32Array(MAX_LOD_BANDS * 2);
   /** Per band: the tile mesh (null where the band is drawn whole), its attributes and how many tiles it draws. */
@@ -324,7 +324,7 @@ export class OceanChunks {
   /** Makes the next frame select again (after the GPU buffers were lost, for one). */
   forgetSelection(): void {
     this.lastKey.fill(NaN);
-    this.lastCameraMatrices.fill(NaN);
+    this.lastCameraPose.fill(NaN);
   }
 
   /** The far rings' cells in view, and the skirt, around the grid's centre. */
@@ -386,9 +386,12 @@ export class OceanChunks {
   }
 
   private captureCullingView(camera: PerspectiveCamera): void {
+    // A camera that has not moved since the last capture has the same frustum and origin, and
+    // its world matrix is the one that capture made: the matrices need not be made again
+    // (three's camera.updateMatrixWorld composes, decomposes and inverts: a sixth of the
+    // paused default view's update step).
+    if (this.sameCameraPose(camera)) return;
     camera.updateMatrixWorld();
-    // A camera that has not moved since the last capture has the same frustum and origin.
-    if (this.sameCameraMatrices(camera)) return;
     this.viewProjection.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
     this.frustum.setFromProjectionMatrix(this.viewProjection);
     this.frustum.planes.forEach((plane, k) => {
@@ -402,15 +405,25 @@ export class OceanChunks {
     [this.selectionInput.originX, this.selectionInput.originZ] = oceanOrigin(this.cullCamera[0], this.cullCamera[2]);
   }
 
-  private sameCameraMatrices(camera: PerspectiveCamera): boolean {
-    const last = this.lastCameraMatrices;
-    const world = camera.matrixWorld.elements;
+  /**
+   * Whether the camera's own transform and projection are those of the last capture; records
+   * them. A camera with a parent (whose world matrix also depends on the parent's) never counts
+   * as unmoved.
+   */
+  private sameCameraPose(camera: PerspectiveCamera): boolean {
+    const last = this.lastCameraPose;
+    const { position: p, quaternion: q, scale: s } = camera;
     const projection = camera.projectionMatrix.elements;
-    let same = true;
+    let same = camera.parent === null &&
+      last[0] === p.x && last[1] === p.y && last[2] === p.z &&
+      last[3] === q.x && last[4] === q.y && last[5] === q.z && last[6] === q.w &&
+      last[7] === s.x && last[8] === s.y && last[9] === s.z;
+    last[0] = p.x; last[1] = p.y; last[2] = p.z;
+    last[3] = q.x; last[4] = q.y; last[5] = q.z; last[6] = q.w;
+    last[7] = s.x; last[8] = s.y; last[9] = s.z;
     for (let i = 0; i < 16; i++) {
-      same &&= last[i] === world[i] && last[16 + i] === projection[i];
-      last[i] = world[i];
-      last[16 + i] = projection[i];
+      same &&= last[10 + i] === projection[i];
+      last[10 + i] = projection[i];
     }
     return same;
   }

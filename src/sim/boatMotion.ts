@@ -43,6 +43,28 @@ export interface BoatMotionState {
   target: BoatPose;
 }
 
+/**
+ * Which surface `heightAt` reads, for keeping the target pose of a paused view: the wave model
+ * itself (compared by identity) with its surface revision (LiveWaveModel.surfaceRevision, read
+ * after the heights were taken, since taking them may compute the model's data). The same
+ * model and revision at the same time answer every height alike.
+ */
+export interface SurfaceKey {
+  readonly surfaceRevision: number;
+}
+
+/** What the last target pose was taken from. */
+interface TargetKey {
+  time: number;
+  x: number;
+  z: number;
+  heading: number;
+  length: number;
+  beam: number;
+  model: object;
+  revision: number;
+}
+
 const clampTo = (state: FollowerState, target: number, band: number): FollowerState =>
   state.value > target + band ? { value: target + band, velocity: 0 } : state.value < target - band ? { value: target - band, velocity: 0 } : state;
 const clampToExtent = (v: number) => Math.min(BOAT_EXTENT, Math.max(-BOAT_EXTENT, v));
@@ -74,6 +96,9 @@ export class BoatMotion {
   private current: BoatMotionState | null = null;
   /** The heading commanded at the last update; null after a restore, which does not know it. */
   private command: number | null = null;
+  /** The last target pose and what it was taken from (only when update was given a SurfaceKey). */
+  private targetKey: TargetKey | null = null;
+  private lastTarget: BoatPose | null = null;
 
   constructor(
     start: readonly [number, number] = BOAT_START,
@@ -86,7 +111,12 @@ export class BoatMotion {
     this.z = clampToExtent(start[1]);
   }
 
-  update(time: number, controls: BoatControls, hull: HullSize, heightAt: HeightAt): BoatMotionState {
+  /**
+   * `surface`, where given, says which surface `heightAt` reads: a paused view drawn again
+   * (same time, place, heading, hull and surface) keeps the last target pose instead of
+   * sampling the surface five times again.
+   */
+  update(time: number, controls: BoatControls, hull: HullSize, heightAt: HeightAt, surface?: SurfaceKey): BoatMotionState {
     const dt = this.lastTime === null ? NaN : time - this.lastTime;
     this.lastTime = time;
     const stepping = dt > 0 && dt <= this.maxStep;
@@ -106,7 +136,7 @@ export class BoatMotion {
       this.heading = { value: controls.heading, velocity: 0 };
     }
     const heading = this.heading.value - TWO_PI * Math.floor(this.heading.value / TWO_PI);
-    const target = targetPose(heightAt, this.x, this.z, heading, hull);
+    const target = this.targetAt(time, heading, hull, heightAt, surface);
     if (stepping) {
       const omega = 1 / controls.response;
       this.heave = followStep(this.heave, target.y, dt, omega, HEAVE_BAND);
@@ -126,6 +156,21 @@ export class BoatMotion {
       target,
     };
     return this.current;
+  }
+
+  private targetAt(time: number, heading: number, hull: HullSize, heightAt: HeightAt, surface?: SurfaceKey): BoatPose {
+    const k = this.targetKey;
+    if (
+      surface && this.lastTarget && k &&
+      k.time === time && k.x === this.x && k.z === this.z && k.heading === heading && k.length === hull.length && k.beam === hull.beam &&
+      k.model === surface && k.revision === surface.surfaceRevision
+    ) {
+      return this.lastTarget;
+    }
+    const target = targetPose(heightAt, this.x, this.z, heading, hull);
+    this.lastTarget = target;
+    this.targetKey = surface ? { time, x: this.x, z: this.z, heading, length: hull.length, beam: hull.beam, model: surface, revision: surface.surfaceRevision } : null;
+    return target;
   }
 
   state(): BoatMotionState | null {

@@ -8,6 +8,9 @@ import { evolveSpectra } from './spectralFields';
 import { directionalSpectrum, frequencySpectrum, peakWavelength } from './waveSpectrum';
 import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample, type WaveModel } from './waveModel';
 
+/** Revisions of every FftOcean's fields, from one counter, so no two oceans' fields share one. */
+let fieldRevisions = 0;
+
 /**
  * The spatial fields of one cascade at one time, laid out as the GPU's two RGBA textures:
  * n × n texels, texel (p, q) at index 4(q·n + p), p along x, q along z.
@@ -47,6 +50,8 @@ export class FftOcean implements WaveModel {
   readonly setup: FftOceanSetup;
   readonly fields: CascadeFields[];
   private time = Number.NaN;
+  /** Changes whenever the fields change (computed or adopted): FftWaveModel.surfaceRevision. */
+  fieldsRevision = ++fieldRevisions;
   private readonly fft: InverseFft2d;
   private readonly spectra: Float64Array[][];
   private readonly bound: DisplacementBounds;
@@ -73,18 +78,23 @@ export class FftOcean implements WaveModel {
 
   /**
    * Takes fields computed elsewhere for time t: a Worker running setTime(t) on an FftOcean of
-   * the same SeaState (same seed, hence the same h₀) gives bit-identical arrays.
+   * the same SeaState (same seed, hence the same h₀) gives bit-identical arrays. Returns the
+   * arrays it held before, which this ocean no longer reads (a Worker may fill them again).
    */
-  adoptFields(time: number, fields: readonly CascadeFields[]): void {
+  adoptFields(time: number, fields: readonly CascadeFields[]): CascadeFields[] {
     if (fields.length !== this.fields.length) throw new RangeError(`Expected ${this.fields.length} cascades of fields, got ${fields.length}.`);
+    const replaced = this.fields.slice();
     fields.forEach((f, c) => (this.fields[c] = f));
     this.time = time;
+    this.fieldsRevision = ++fieldRevisions;
+    return replaced;
   }
 
   /** Evolves to time t (s). Only t mod T matters (quantised dispersion), reduced here in float64. */
   setTime(time: number): void {
     if (time === this.time) return;
     this.time = time;
+    this.fieldsRevision = ++fieldRevisions;
     const tau = timeInPeriod(time, REPEAT_PERIOD);
     const n = this.setup.sea.fftSize;
     this.setup.tiles.forEach((tile, c) => {

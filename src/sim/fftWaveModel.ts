@@ -25,15 +25,24 @@ export function seaKey(sea: SeaState): string {
  */
 export interface FieldSource {
   request(sea: SeaState, time: number): void;
+  /**
+   * Arrays the model no longer reads (fields it replaced or refused), for the source to fill
+   * again: a Worker gets them back (transferred) instead of allocating new ones for every reply.
+   */
+  recycle?(fields: CascadeFields[]): void;
   dispose(): void;
 }
 
 /**
  * The largest step between two successive frame times that still counts as playing. A larger
  * jump (a seek, a paused setTime, the first frame) is computed at once on the calling thread,
- * so a frozen time is always exact.
+ * so a frozen time is always exact. Longer than any step the frame loop's clock takes (at most
+ * 0.1 s a frame, src/app/simulationClock.ts), with room for float64 sums of those steps, as
+ * BoatMotion's maxStep: at exactly 0.1, a loop slower than 10 frames/s (SwiftShader: every
+ * frame) took steps of 0.1 plus an ulp on 70 % of frames, and each computed all the cascades'
+ * FFTs on the main thread (tens of ms) instead of asking the Worker.
  */
-export const MAX_FRAME_STEP = 0.1;
+export const MAX_FRAME_STEP = 0.25;
 
 /** Fields older than this are not used even while playing (a Worker that died or fell far behind): compute instead. */
 export const MAX_LAG_SECONDS = 1;
@@ -76,6 +85,11 @@ export class FftWaveModel implements LiveWaveModel {
     return this.ocean.setup.sea;
   }
 
+  /** See LiveWaveModel: the fields' revision (a new sea is a new FftOcean, whose fields have a revision of their own). */
+  get surfaceRevision(): number {
+    return this.ocean.fieldsRevision;
+  }
+
   /** Returns true when the sea changed (a new h₀: the GPU spectrum textures must be made again). */
   setParams(params: FftWaveParams): boolean {
     const sea = seaStateFromParams(params);
@@ -93,10 +107,12 @@ export class FftWaveModel implements LiveWaveModel {
 
   /** Fields a FieldSource computed for `sea` at `time`; ignored if the sea changed meanwhile or they are older than those held. */
   receive(sea: SeaState, time: number, fields: CascadeFields[]): void {
-    if (seaKey(sea) !== this.key) return;
     const held = this.ocean.fieldsTime;
-    if (!Number.isNaN(held) && time <= held) return;
-    this.ocean.adoptFields(time, fields);
+    const refused = seaKey(sea) !== this.key || (!Number.isNaN(held) && time <= held);
+    // The arrays no longer read (the reply refused, or the fields it replaces) go back to the
+    // source to be filled again; the model keeps no reference to them.
+    const unread = refused ? fields : this.ocean.adoptFields(time, fields);
+    this.source?.recycle?.(unread);
   }
 
   /** The time whose fields answer a question about `time` (see the class comment). */

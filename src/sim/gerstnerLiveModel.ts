@@ -57,6 +57,8 @@ export class GerstnerLiveModel implements LiveWaveModel {
   readonly name = 'gerstner';
   private key = '';
   private twin: GerstnerWaveModel;
+  /** See LiveWaveModel: the wave table is remade exactly when the surface changes. */
+  surfaceRevision = 0;
 
   constructor(params: GerstnerSeaParams) {
     this.twin = new GerstnerWaveModel([]);
@@ -77,6 +79,7 @@ export class GerstnerLiveModel implements LiveWaveModel {
     const key = SEA_KEYS.map((k) => String(params[k])).join('|');
     if (key === this.key) return false;
     this.key = key;
+    this.surfaceRevision++;
     this.twin = new GerstnerWaveModel(gerstnerWavesFor(params));
     return true;
   }

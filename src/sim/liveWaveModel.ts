@@ -16,6 +16,13 @@ export interface LiveWaveModel extends WaveModel {
   /** Height of the displaced surface above the world point (x, z), metres. */
   height(x: number, z: number, time: number): number;
   /**
+   * Changes whenever the surface the model answers with may change for any reason but the
+   * time asked: its parameters, or data it reads (the FFT twin's fields, computed here or
+   * delivered by its Worker). Equal revisions of one model: height(x, z, t) gives the same
+   * answer for the same (x, z, t), so a caller may keep it (the boat's pose on a paused view).
+   */
+  readonly surfaceRevision: number;
+  /**
    * Where the model times its CPU twin's work on the calling thread: the ms spent since the
    * last call, counting afresh (FftWaveModel, whose twin has a ≤ 0.1 ms per frame budget).
    */

@@ -21,6 +21,8 @@ export class SeedWaveModel implements WaveModel {
   // underwater switch), and each state costs two square roots and seven reductions.
   private stateTime = Number.NaN;
   private state: SurfaceState | null = null;
+  /** See LiveWaveModel: every setParams may change the surface (any of its parameters). */
+  surfaceRevision = 0;
 
   constructor(params: SeedWaveParams) {
     this.params = params;
@@ -32,6 +34,7 @@ export class SeedWaveModel implements WaveModel {
   setParams(params: SeedWaveParams): boolean {
     this.params = params;
     this.state = null;
+    this.surfaceRevision++;
     if (params.seed === this.seed) return false;
     this.seed = params.seed;
     this.heightmaps = generateRippleHeightmaps(params.seed, HEIGHTMAP_SIZE);

@@ -2,6 +2,12 @@ import { describe, expect, it } from 'vitest';
 import { forwardOf, poseAxes, starboardOf, targetPose, type HullSize } from '../../src/sim/boatPose';
 import { followStep, type FollowerState } from '../../src/sim/dampedFollower';
 import { ANGLE_BAND, BOAT_EXTENT, BoatMotion, HEAVE_BAND } from '../../src/sim/boatMotion';
+import { FftOcean } from '../../src/sim/fftOcean';
+import { FftWaveModel } from '../../src/sim/fftWaveModel';
+import { SeedWaveModel } from '../../src/sim/seedWaveModel';
+import { GerstnerLiveModel } from '../../src/sim/gerstnerLiveModel';
+import { defaultParams } from '../../src/sim/params';
+import type { LiveWaveModel } from '../../src/sim/waveModels';
 import { seededRandom } from '../../src/sim/integerHash';
 
 const HULL: HullSize = { length: 8, beam: 2.6 };
@@ -208,3 +214,78 @@ describe('BoatMotion', () => {
     }
   });
 });
+
+describe('BoatMotion keeps the target pose of a paused view only while the surface is the same', () => {
+  const still = { heading: 0.3, speed: 0, response: 0.25 };
+  /** The boat on `model` at `time`, as BoatController floats it. */
+  const float = (motion: BoatMotion, model: LiveWaveModel, time: number) => motion.update(time, still, HULL, (x, z) => model.height(x, z, time), model);
+  /** The target a boat that keeps nothing would take there now. */
+  const fresh = (model: LiveWaveModel, time: number, at: { x: number; z: number }) => targetPose((x, z) => model.height(x, z, time), at.x, at.z, still.heading, HULL);
+
+  it('samples the surface once for a paused view drawn again, and again for another time, place or model', () => {
+    const model = new SeedWaveModel(defaultParams());
+    let samples = 0;
+    const motion = new BoatMotion([3, -7]);
+    const heightAt = (t: number) => (x: number, z: number) => (samples++, model.height(x, z, t));
+    motion.update(10, still, HULL, heightAt(10), model);
+    expect(samples).toBe(5);
+    motion.update(10, still, HULL, heightAt(10), model);
+    motion.update(10, still, HULL, heightAt(10), model);
+    expect(samples).toBe(5);
+    motion.update(10.016, still, HULL, heightAt(10.016), model);
+    expect(samples).toBe(10);
+    motion.update(10.016, still, HULL, heightAt(10.016), new SeedWaveModel(defaultParams()));
+    expect(samples).toBe(15);
+    // Without a surface key nothing is kept (scripts, tests).
+    motion.update(10.016, still, HULL, heightAt(10.016));
+    expect(samples).toBe(20);
+  });
+
+  // Each case changes the surface at a paused time; the kept pose must follow. Negative
+  // controls: a model whose setParams (seed, gerstner) or whose adopted or computed fields
+  // (fft) leave surfaceRevision unchanged fails here, as does a cache that ignores it.
+  it('the seed sea: new parameters at the same time', () => {
+    const model = new SeedWaveModel(defaultParams());
+    const motion = new BoatMotion([3, -7]);
+    const before = float(motion, model, 10).target;
+    model.setParams({ ...defaultParams(), swellAmplitude: 2.5 });
+    const after = float(motion, model, 10).target;
+    expect(after).toEqual(fresh(model, 10, after));
+    expect(Math.abs(after.y - before.y)).toBeGreaterThan(1e-3);
+  });
+
+  it('the Gerstner sea: new parameters at the same time', () => {
+    const model = new GerstnerLiveModel(defaultParams());
+    const motion = new BoatMotion([3, -7]);
+    const before = float(motion, model, 10).target;
+    model.setParams({ ...defaultParams(), windSpeed: 16 });
+    const after = float(motion, model, 10).target;
+    expect(after).toEqual(fresh(model, 10, after));
+    expect(Math.abs(after.y - before.y)).toBeGreaterThan(1e-3);
+  });
+
+  it('the FFT sea: the Worker\'s fields for the paused time arrive after a lagged frame', () => {
+    const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
+    const model = new FftWaveModel(params);
+    model.attachSource({ request: () => {}, dispose: () => {} });
+    const motion = new BoatMotion([3, -7]);
+    float(motion, model, 10); // a jump: computed at once
+    const lagged = float(motion, model, 10.016).target; // playing: the fields of t = 10
+    expect(float(motion, model, 10.016).target).toBe(lagged); // paused there: kept
+    const worker = new FftOcean(model.sea);
+    worker.setTime(10.016);
+    model.receive(model.sea, 10.016, worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));
+    const after = float(motion, model, 10.016).target;
+    expect(after).toEqual(fresh(model, 10.016, after));
+    expect(Math.abs(after.y - lagged.y)).toBeGreaterThan(1e-4);
+    // Fields computed on the calling thread for the paused time: the next frame lags again,
+    // and there the API's sampleSurface (always exact) computes that time's fields.
+    const laggedAgain = float(motion, model, 10.033).target;
+    expect(float(motion, model, 10.033).target).toBe(laggedAgain);
+    model.sample(0, 0, 10.033);
+    const exact = float(motion, model, 10.033).target;
+    expect(exact).toEqual(fresh(model, 10.033, exact));
+    expect(Math.abs(exact.y - laggedAgain.y)).toBeGreaterThan(1e-4);
+  });
+});
+

@@ -99,3 +99,35 @@ describe('a still camera reuses the last selection', () => {
     expect(attribute.version).toBeGreaterThan(version);
   });
 });
+
+describe('a camera moved in place is captured again', () => {
+  it('one camera object moved as OrbitCamera moves it (no updateMatrixWorld by the caller) uploads what a fresh selection would (seed 12)', () => {
+    // The capture skips the camera's matrix update while its position, rotation, scale and
+    // projection are those of the last capture. Negative control: a pose check that ignores
+    // the rotation, or the position, uploads a stale selection here.
+    const reused = chunks();
+    const moved = new PerspectiveCamera(50, 16 / 9, 0.1, 20000);
+    let changedFrames = 0;
+    let previousFresh = '';
+    for (const [n, walked] of walk(12, 60).entries()) {
+      // Every third frame the eye and its target move together (the boat carrying a following
+      // camera): a new position, the same rotation.
+      const shift = 40 * Math.floor(n / 3) * (n % 3 === 0 ? 1 : 0);
+      const step = { ...walked, position: [walked.position[0] + shift, walked.position[1], walked.position[2]] as [number, number, number], target: [walked.target[0] + shift, walked.target[1], walked.target[2]] as [number, number, number] };
+      moved.position.set(...step.position);
+      moved.lookAt(...step.target); // three updates the world matrix first, with the old rotation
+      if (moved.fov !== step.fov) {
+        moved.fov = step.fov;
+        moved.updateProjectionMatrix();
+      }
+      reused.update(moved, step.settings, step.bounds);
+      const fresh = chunks();
+      fresh.update(camera(step), step.settings, step.bounds);
+      const expected = uploaded(fresh);
+      expect(uploaded(reused)).toBe(expected);
+      if (expected !== previousFresh) changedFrames++;
+      previousFresh = expected;
+    }
+    expect(changedFrames).toBeGreaterThan(30);
+  });
+});

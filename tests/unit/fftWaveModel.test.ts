@@ -1,7 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { FftOcean } from '../../src/sim/fftOcean';
+import { FftOcean, type CascadeFields } from '../../src/sim/fftOcean';
 import { FftWaveModel, type FieldSource } from '../../src/sim/fftWaveModel';
 import { defaultParams } from '../../src/sim/params';
+import { SimulationClock } from '../../src/app/simulationClock';
+import { copyFields } from '../../src/render/waveModels/fftFieldsSource';
 
 const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
 
@@ -42,6 +44,30 @@ describe('FftWaveModel: when the twin is exact', () => {
     expect(model.height(1, 2, 500)).toBe(reference.height(1, 2, 500));
   });
 
+  it('a slow loop, whose frames the clock clamps to 0.1 s each, still asks the Worker on every frame', () => {
+    // Under SwiftShader every frame is longer than 0.1 s, so the clock steps by its clamp, and
+    // float64 sums of 0.1 exceed 0.1 by an ulp on most frames: with a playing threshold of
+    // exactly 0.1 s those frames counted as jumps and computed every cascade's FFTs on the main
+    // thread (stats().twinMs several ms). Negative control: MAX_FRAME_STEP = 0.1 fails here
+    // (at frame 0).
+    const { model, requests } = withSource();
+    const worker = new FftOcean(model.sea);
+    // From t = 16 s (between 16 and 32 a float64 ulp is 3.6e-15): most steps come out over 0.1.
+    const clock = new SimulationClock(16, true);
+    model.height(1, 2, clock.time); // the first frame: a jump, computed at once
+    for (let frame = 0; frame < 12; frame++) {
+      clock.advance(0.4); // a 400-ms frame
+      const held = model.ocean.fieldsTime;
+      model.height(1, 2, clock.time);
+      // Not computed here (that would hold this frame's time): the Worker was asked.
+      expect(model.ocean.fieldsTime, `frame ${frame}`).toBe(held);
+      expect(requests.at(-1), `frame ${frame}`).toBe(clock.time);
+      // The Worker answers before the next frame.
+      worker.setTime(clock.time);
+      model.receive(model.sea, clock.time, worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));
+    }
+  });
+
   it('ignores fields for another sea or older than those held', () => {
     const { model } = withSource();
     model.height(0, 0, 20);
@@ -51,6 +77,59 @@ describe('FftWaveModel: when the twin is exact', () => {
     expect(model.ocean.fieldsTime).toBe(20);
     model.receive(model.sea, 5, other.fields);
     expect(model.ocean.fieldsTime).toBe(20);
+  });
+});
+
+describe('FftWaveModel: the Worker refills the arrays the model hands back', () => {
+  const copy = (fields: readonly CascadeFields[]) => fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() }));
+
+  it('hands back only arrays it no longer reads: the replaced fields, or a refused reply', () => {
+    const model = new FftWaveModel(params);
+    const recycled: CascadeFields[][] = [];
+    model.attachSource({ request: () => {}, recycle: (fields) => recycled.push(fields), dispose: () => {} });
+    const reference = new FftWaveModel(params);
+    const worker = new FftOcean(model.sea);
+    model.height(1, 2, 10); // computed at once: the model's own arrays
+    const own = model.ocean.fields.slice();
+    for (const t of [10.016, 10.033, 10.05]) {
+      worker.setTime(t);
+      model.receive(model.sea, t, copy(worker.fields));
+      // The Worker overwrites what it got back (here with garbage) while the model reads on.
+      for (const f of recycled.at(-1) ?? []) {
+        f.displacement.fill(Number.NaN);
+        f.derivatives.fill(Number.NaN);
+      }
+      expect(model.sample(1, 2, t).height).toBe(reference.sample(1, 2, t).height);
+    }
+    expect(recycled).toHaveLength(3);
+    expect(recycled[0]).toEqual(own.map(() => expect.anything()));
+    own.forEach((f, c) => expect(recycled[0][c]).toBe(f));
+    // A refused reply (older than the fields held) goes straight back.
+    worker.setTime(5);
+    const stale = copy(worker.fields);
+    model.receive(model.sea, 5, stale);
+    expect(recycled.at(-1)).toBe(stale);
+    expect(model.ocean.fieldsTime).toBe(10.05);
+  });
+
+  it('the Worker writes into the arrays it got back where they fit, and into new ones where they do not', () => {
+    const { ocean } = new FftWaveModel(params);
+    ocean.setTime(12);
+    const spare = ocean.fields.map((f) => ({ displacement: new Float64Array(f.displacement.length), derivatives: new Float64Array(f.derivatives.length) }));
+    const filled = copyFields(ocean.fields, spare);
+    expect(filled).toBe(spare);
+    // Element by element (toEqual on 65 536 floats takes seconds).
+    const same = (a: Float64Array, b: Float64Array) => a !== b && a.length === b.length && a.every((v, i) => v === b[i]);
+    filled.forEach((f, c) => {
+      expect(same(f.displacement, ocean.fields[c].displacement)).toBe(true);
+      expect(same(f.derivatives, ocean.fields[c].derivatives)).toBe(true);
+    });
+    // Arrays of another size (the sea's fftSize changed meanwhile) are not used.
+    const small = [{ displacement: new Float64Array(4), derivatives: new Float64Array(4) }, ...spare.slice(1)];
+    const fresh = copyFields(ocean.fields, small);
+    expect(fresh === small).toBe(false); // not .not.toBe: its message would print both sets of arrays
+    expect(same(fresh[0].displacement, ocean.fields[0].displacement)).toBe(true);
+    expect(same(copyFields(ocean.fields, null)[2].derivatives, ocean.fields[2].derivatives)).toBe(true);
   });
 });
 

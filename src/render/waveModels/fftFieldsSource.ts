@@ -5,10 +5,35 @@ import type { SeaState } from '../../sim/seaState';
 export interface FieldsRequest {
   sea: SeaState;
   time: number;
+  /**
+   * Arrays the main thread no longer reads (FieldSource.recycle), transferred back for the
+   * Worker to fill: with them, replies reuse the same few buffers instead of allocating 6
+   * arrays of 4n² float64 (3 MB at n = 128) for every frame, whose garbage the main thread
+   * then collected (single slow frames of stats().twinMs).
+   */
+  spare: CascadeFields[] | null;
 }
 
-export interface FieldsReply extends FieldsRequest {
+export interface FieldsReply {
+  sea: SeaState;
+  time: number;
   fields: CascadeFields[];
+}
+
+/** The buffers a message carries, to be transferred (moved, not copied). */
+export function fieldBuffers(fields: readonly CascadeFields[]): ArrayBuffer[] {
+  return fields.flatMap((f) => [f.displacement.buffer as ArrayBuffer, f.derivatives.buffer as ArrayBuffer]);
+}
+
+/** The ocean's fields copied into `spare` where its arrays fit (same cascades, same size), else into new arrays. */
+export function copyFields(from: readonly CascadeFields[], spare: CascadeFields[] | null): CascadeFields[] {
+  const fits = spare !== null && spare.length === from.length && spare.every((f, c) => f.displacement.length === from[c].displacement.length);
+  if (!fits) return from.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() }));
+  spare.forEach((f, c) => {
+    f.displacement.set(from[c].displacement);
+    f.derivatives.set(from[c].derivatives);
+  });
+  return spare;
 }
 
 /**
@@ -21,8 +46,10 @@ export class WorkerFieldSource implements FieldSource {
   private readonly worker: Worker | null;
   private busy = false;
   /** The request the Worker is working on (null when idle). */
-  private inFlight: FieldsRequest | null = null;
-  private pending: FieldsRequest | null = null;
+  private inFlight: Omit<FieldsRequest, 'spare'> | null = null;
+  private pending: Omit<FieldsRequest, 'spare'> | null = null;
+  /** Arrays handed back by the model, sent to the Worker with the next request. */
+  private spare: CascadeFields[] | null = null;
 
   /**
    * `spent(ms)` hears how long each reply kept the main thread: reading the message (Chromium
@@ -64,11 +91,19 @@ export class WorkerFieldSource implements FieldSource {
     if (!this.busy) this.flush();
   }
 
+  recycle(fields: CascadeFields[]): void {
+    // One set in hand is enough: one request is in flight at a time, so the Worker fills at
+    // most one set between two replies (and a set it cannot use, another sea's size, it drops).
+    this.spare = fields;
+  }
+
   private flush(): void {
     if (!this.worker || !this.pending || this.failed) return;
     this.busy = true;
     this.inFlight = this.pending;
-    this.worker.postMessage(this.pending);
+    const request: FieldsRequest = { ...this.pending, spare: this.spare };
+    this.spare = null;
+    this.worker.postMessage(request, request.spare ? fieldBuffers(request.spare) : []);
     this.pending = null;
   }
 

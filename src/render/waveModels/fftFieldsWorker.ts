@@ -1,11 +1,12 @@
 /**
  * The CPU twin's FFTs off the main thread: a Worker holding an FftOcean of the sea it is
  * sent, answering each { sea, time } with the float64 fields at that time (transferred, not
- * copied). FftWaveModel adopts them; see src/sim/fftWaveModel.ts for when it waits for them.
+ * copied), written into the arrays the request brought back when it brought some.
+ * FftWaveModel adopts them; see src/sim/fftWaveModel.ts for when it waits for them.
  */
 import { FftOcean } from '../../sim/fftOcean';
 import { seaKey } from '../../sim/fftWaveModel';
-import type { FieldsReply, FieldsRequest } from './fftFieldsSource';
+import { copyFields, fieldBuffers, type FieldsReply, type FieldsRequest } from './fftFieldsSource';
 
 interface WorkerScope {
   onmessage: ((event: MessageEvent<FieldsRequest>) => void) | null;
@@ -17,16 +18,13 @@ let ocean: FftOcean | null = null;
 let key = '';
 
 scope.onmessage = (event) => {
-  const { sea, time } = event.data;
+  const { sea, time, spare } = event.data;
   const k = seaKey(sea);
   if (!ocean || k !== key) {
     ocean = new FftOcean(sea);
     key = k;
   }
   ocean.setTime(time);
-  const fields = ocean.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() }));
-  scope.postMessage(
-    { sea, time, fields },
-    fields.flatMap((f) => [f.displacement.buffer, f.derivatives.buffer]),
-  );
+  const fields = copyFields(ocean.fields, spare);
+  scope.postMessage({ sea, time, fields }, fieldBuffers(fields));
 };
