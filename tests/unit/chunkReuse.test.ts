@@ -66,20 +66,30 @@ function walk(seed: number, length: number): Step[] {
   return steps;
 }
 
+/**
+ * Runs `update` (which moves `reused` to the step) over the steps and checks that after each
+ * one `reused` uploads exactly what a fresh OceanChunks selecting for that step does.
+ * Returns how many steps changed the fresh selection (the check's power).
+ */
+function uploadsAsFresh(steps: Step[], update: (step: Step) => void, reused: OceanChunks): number {
+  let changedFrames = 0;
+  let previousFresh = '';
+  for (const step of steps) {
+    update(step);
+    const fresh = chunks();
+    fresh.update(camera(step), step.settings, step.bounds);
+    const expected = uploaded(fresh);
+    expect(uploaded(reused)).toBe(expected);
+    if (expected !== previousFresh) changedFrames++;
+    previousFresh = expected;
+  }
+  return changedFrames;
+}
+
 describe('a still camera reuses the last selection', () => {
   it('uploads exactly what a fresh selection would, over a seeded walk of still and moving frames (seed 14)', () => {
     const reused = chunks();
-    let changedFrames = 0;
-    let previousFresh = '';
-    for (const step of walk(14, 60)) {
-      reused.update(camera(step), step.settings, step.bounds);
-      const fresh = chunks();
-      fresh.update(camera(step), step.settings, step.bounds);
-      const expected = uploaded(fresh);
-      expect(uploaded(reused)).toBe(expected);
-      if (expected !== previousFresh) changedFrames++;
-      previousFresh = expected;
-    }
+    const changedFrames = uploadsAsFresh(walk(14, 60), (step) => reused.update(camera(step), step.settings, step.bounds), reused);
     // Power of the check: most frames change the selection, so a reuse that missed one of
     // the inputs (position, height, aim, field of view, LOD distance, bounds) would upload a stale one.
     expect(changedFrames).toBeGreaterThan(30);
@@ -107,13 +117,13 @@ describe('a camera moved in place is captured again', () => {
     // the rotation, or the position, uploads a stale selection here.
     const reused = chunks();
     const moved = new PerspectiveCamera(50, 16 / 9, 0.1, 20000);
-    let changedFrames = 0;
-    let previousFresh = '';
-    for (const [n, walked] of walk(12, 60).entries()) {
-      // Every third frame the eye and its target move together (the boat carrying a following
-      // camera): a new position, the same rotation.
+    // Every third frame the eye and its target move together (the boat carrying a following
+    // camera): a new position, the same rotation.
+    const steps = walk(12, 60).map((walked, n) => {
       const shift = 40 * Math.floor(n / 3) * (n % 3 === 0 ? 1 : 0);
-      const step = { ...walked, position: [walked.position[0] + shift, walked.position[1], walked.position[2]] as [number, number, number], target: [walked.target[0] + shift, walked.target[1], walked.target[2]] as [number, number, number] };
+      return { ...walked, position: [walked.position[0] + shift, walked.position[1], walked.position[2]] as [number, number, number], target: [walked.target[0] + shift, walked.target[1], walked.target[2]] as [number, number, number] };
+    });
+    const changedFrames = uploadsAsFresh(steps, (step) => {
       moved.position.set(...step.position);
       moved.lookAt(...step.target); // three updates the world matrix first, with the old rotation
       if (moved.fov !== step.fov) {
@@ -121,13 +131,7 @@ describe('a camera moved in place is captured again', () => {
         moved.updateProjectionMatrix();
       }
       reused.update(moved, step.settings, step.bounds);
-      const fresh = chunks();
-      fresh.update(camera(step), step.settings, step.bounds);
-      const expected = uploaded(fresh);
-      expect(uploaded(reused)).toBe(expected);
-      if (expected !== previousFresh) changedFrames++;
-      previousFresh = expected;
-    }
+    }, reused);
     expect(changedFrames).toBeGreaterThan(30);
   });
 });
