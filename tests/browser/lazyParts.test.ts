@@ -127,6 +127,10 @@ describe('parts fetched on use', () => {
     const { page, errors } = await open('t=10', ['underwaterPost']);
     const above = await page.evaluate(() => window.oceano.stats().underwater);
     await page.evaluate(() => window.oceano.setCamera({ position: [0, -8, 20], target: [0, 5, -20] }));
+    // The first frame under the water asks for the passes (until they settle the canvas keeps
+    // its last frame); drawn here, not left to the loop, so loaded() always has a fetch to wait
+    // for (in a slow full-suite run the loop had drawn no frame yet, and the check saw 0 triangles).
+    await page.evaluate(() => window.oceano.renderFrame());
     await page.evaluate(() => window.oceano.loaded());
     await page.evaluate(() => window.oceano.renderFrame());
     const state = await page.evaluate(() => ({ stats: window.oceano.stats(), notices: window.oceano.notices() }));
