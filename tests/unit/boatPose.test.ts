@@ -244,21 +244,14 @@ describe('BoatMotion keeps the target pose of a paused view only while the surfa
   // Each case changes the surface at a paused time; the kept pose must follow. Negative
   // controls: a model whose setParams (seed, gerstner) or whose adopted or computed fields
   // (fft) leave surfaceRevision unchanged fails here, as does a cache that ignores it.
-  it('the seed sea: new parameters at the same time', () => {
-    const model = new SeedWaveModel(defaultParams());
+  it.each([
+    ['the seed sea', () => new SeedWaveModel(defaultParams()), { swellAmplitude: 2.5 }],
+    ['the Gerstner sea', () => new GerstnerLiveModel(defaultParams()), { windSpeed: 16 }],
+  ] as const)('%s: new parameters at the same time', (_name, makeModel, change) => {
+    const model = makeModel();
     const motion = new BoatMotion([3, -7]);
     const before = float(motion, model, 10).target;
-    model.setParams({ ...defaultParams(), swellAmplitude: 2.5 });
-    const after = float(motion, model, 10).target;
-    expect(after).toEqual(fresh(model, 10, after));
-    expect(Math.abs(after.y - before.y)).toBeGreaterThan(1e-3);
-  });
-
-  it('the Gerstner sea: new parameters at the same time', () => {
-    const model = new GerstnerLiveModel(defaultParams());
-    const motion = new BoatMotion([3, -7]);
-    const before = float(motion, model, 10).target;
-    model.setParams({ ...defaultParams(), windSpeed: 16 });
+    model.setParams({ ...defaultParams(), ...change });
     const after = float(motion, model, 10).target;
     expect(after).toEqual(fresh(model, 10, after));
     expect(Math.abs(after.y - before.y)).toBeGreaterThan(1e-3);
