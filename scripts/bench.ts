@@ -1,7 +1,7 @@
 /**
  * `npm run bench`: what the ocean costs, measured the same way every time. Serves the
  * built dist/ on loopback, drives headless Chromium at 1280×720 and a device pixel ratio
- * of 1, prints one JSON object and writes the same figures to bench/results.md.
+ * of 1, prints one JSON object and writes the same figures to scripts/bench/results.md.
  * It prints figures and asserts nothing: machines are too noisy for timed thresholds.
  *
  * BENCH_GPU=1 insists on the GPU, BENCH_GPU=0 on SwiftShader; unset, the GPU is tried and
@@ -29,10 +29,10 @@ if (!Number.isInteger(FRAMES) || FRAMES < 5) throw new Error(`BENCH_FRAMES must 
 const WARMUP = 5;
 const PASS_FRAMES = 5;
 // BENCH_ONLY=name,name runs only the scenarios whose names contain one of those words (e.g.
-// BENCH_ONLY="default view,FFT view" for the FFT ratio) and writes bench/results-subset.md, so
-// the full run's bench/results.md is not replaced by a partial one.
+// BENCH_ONLY="default view,FFT view" for the FFT ratio) and writes scripts/bench/results-subset.md, so
+// the full run's scripts/bench/results.md is not replaced by a partial one.
 const ONLY = (process.env.BENCH_ONLY ?? '').split(',').map((word) => word.trim()).filter(Boolean);
-const RESULTS_FILE = ONLY.length ? 'bench/results-subset.md' : 'bench/results.md';
+const RESULTS_FILE = ONLY.length ? 'scripts/bench/results-subset.md' : 'scripts/bench/results.md';
 // The targets of issue 14, for the 2-core SwiftShader machine.
 const TARGETS = { ratio: 20, cpuMs: 0.1, twinMs: 0.1, ttffMs: 800, pageKB: 200, componentExtraKB: 20 };
 /** Looped frames for a scenario's twinMs: the stats' whole window (FrameStats keeps 30). */
