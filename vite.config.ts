@@ -92,7 +92,11 @@ export default defineConfig({
   test: {
     projects: [
       {
-        test: { name: 'unit', include: ['tests/unit/**/*.test.ts'], environment: 'node' },
+        // 60 s per test rather than vitest's 5: `npm test` runs the type check and the build
+        // beside the unit tests (scripts/runTests.mjs), and on a loaded 2-core machine a test
+        // measured at 0.5 s quiet took 6.1 s (fftSpectra's Hasselmann m₀, 11:20 UTC, load 8).
+        // A timeout is no check of the results; the assertions are.
+        test: { name: 'unit', include: ['tests/unit/**/*.test.ts'], environment: 'node', testTimeout: 60_000 },
       },
       {
         test: {

@@ -3,15 +3,24 @@ import { readFileSync } from 'node:fs';
 import type { HTTPRequest } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { sharedPage } from './sharedPage';
 import { diffPngs } from './imageCompare';
 import { PARITY_HEIGHT_LIMIT } from './parity';
 import { ANGLE_BAND, HEAVE_BAND } from '../../src/sim/boatMotion';
 
 const harness = useHarness();
 
+/**
+ * The default view, and the same view whose boat model is missing, each loaded once for the
+ * tests that only read them (each boot costs seconds of SwiftShader work). The sailing test,
+ * which moves the boat for good, loads its own.
+ */
+const withBoat = sharedPage(harness, 'seed=1&t=10');
+const withoutBoat = sharedPage(harness, 'seed=1&t=10&boat=models/missing.glb');
+
 describe('the boat', () => {
   it('is loaded by oceano.ready and sits on the CPU surface at its centre, which the GPU draws', async () => {
-    const { page, consoleErrors } = await openOcean(harness, 'seed=1&t=10');
+    const { page, consoleErrors } = await withBoat.opened();
     const result = await page.evaluate(async () => {
       const boat = window.oceano.boat();
       const [x, , z] = boat.position;
@@ -32,7 +41,6 @@ describe('the boat', () => {
     expect(Math.abs(result.boat.position[1] - result.gpu)).toBeLessThan(PARITY_HEIGHT_LIMIT);
     expect(result.boat.heading).toBeCloseTo((290 * Math.PI) / 180, 12);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('floats within its band of the surface while time runs, through an abrupt swell change', async () => {
@@ -104,14 +112,10 @@ describe('the boat', () => {
   });
 
   it('is visible in the default view: the picture without the boat differs around it', async () => {
-    const withBoat = await openOcean(harness, 'seed=1&t=10');
-    const a = await canvasPng(withBoat.page);
-    await withBoat.page.close();
-    const without = await openOcean(harness, 'seed=1&t=10&boat=models/missing.glb');
-    // The notice about the missing model lies over the canvas: dismiss it as a user would.
-    await without.page.$$eval('.oceano-notice button', (buttons) => buttons.forEach((b) => (b as HTMLButtonElement).click()));
-    const b = await canvasPng(without.page);
-    await without.page.close();
+    const a = await canvasPng(await withBoat.page());
+    // The notice about the missing model lies over the canvas; canvasPng hides the notices
+    // while it takes the picture (the next test reads that notice, so it is not dismissed).
+    const b = await canvasPng(await withoutBoat.page());
     const diff = diffPngs(a, b);
     // At 640×360 the boat covers about 1400 pixels; nothing else in the frame changes.
     expect(diff.differentPixels).toBeGreaterThan(800);
@@ -121,12 +125,11 @@ describe('the boat', () => {
 
 describe('bad boat models', () => {
   it('a missing model leaves the ocean running with a notice', async () => {
-    const { page } = await openOcean(harness, 'seed=1&t=10&boat=models/missing.glb');
+    const page = await withoutBoat.page();
     const state = await page.evaluate(() => ({ notices: window.oceano.notices(), boat: window.oceano.boat(), stats: window.oceano.stats() }));
     expect(state.notices.join('\n')).toMatch(/boat model "models\/missing\.glb" (is missing|was not found).*runs without the boat/);
     expect(state.boat.model).toBe('failed');
     expect(state.stats.triangles).toBeGreaterThan(10_000);
-    await page.close();
   });
 
   it('a file that is not a glTF leaves the ocean running with a notice', async () => {

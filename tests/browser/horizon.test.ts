@@ -1,6 +1,6 @@
-import { describe, expect, it } from 'vitest';
+import { afterAll, describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
-import { canvasPng, openOcean } from './harness';
+import { canvasPng, openOcean, type OpenedPage } from './harness';
 import { useHarness } from './useHarness';
 import { magentaBelowSlope, pixelAngle, showMagentaBehindTheSea, type Vec3 } from './viewRays';
 
@@ -31,10 +31,24 @@ function pose(height: number, pitch: number): { position: Vec3; target: Vec3 } {
   return { position, target };
 }
 
+/**
+ * One t=10 page at 480×270 with the sky taken out, for both tests (each boot costs seconds of
+ * SwiftShader work). The control, which hides the far rings and the skirt for good, comes
+ * last in the file; run alone (-t) it opens the page itself.
+ */
+let magentaPage: Promise<OpenedPage> | undefined;
+const openMagentaPage = () =>
+  (magentaPage ??= openOcean(harness, 't=10', 480, 270).then(async (opened) => {
+    await showMagentaBehindTheSea(opened.page);
+    return opened;
+  }));
+afterAll(async () => {
+  if (magentaPage) await (await magentaPage).page.close();
+});
+
 describe('the sea reaches the horizon', () => {
   it('leaves no row below the horizon without sea, from 2 m to 10 km up, looking level and 20° down', async () => {
-    const { page, consoleErrors } = await openOcean(harness, 't=10', 480, 270);
-    await showMagentaBehindTheSea(page);
+    const { page, consoleErrors } = await openMagentaPage();
     const found: string[] = [];
     for (const height of HEIGHTS) {
       for (const pitch of PITCHES) {
@@ -46,12 +60,10 @@ describe('the sea reaches the horizon', () => {
     }
     expect(found).toEqual([]);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   }, 240_000);
 
   it('finds the gap when the far rings and the skirt are hidden (the check can fail)', async () => {
-    const { page } = await openOcean(harness, 't=10', 480, 270);
-    await showMagentaBehindTheSea(page);
+    const { page } = await openMagentaPage();
     await page.evaluate(() => {
       window.oceano.three.scene.traverse((o) => {
         const mesh = o as unknown as { geometry?: { isInstancedBufferGeometry?: boolean; getAttribute?: (n: string) => { count: number } | undefined }; material?: { uniforms?: Record<string, unknown> }; visible: boolean };
@@ -67,6 +79,5 @@ describe('the sea reaches the horizon', () => {
     const { position, target } = pose(500, 0);
     const { magenta } = skyBelowHorizon(await lookFrom(page, position, target), position, target);
     expect(magenta).toBeGreaterThan(1000);
-    await page.close();
   });
 });

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { sharedPage } from './sharedPage';
 import { magentaBelowSlope, showMagentaBehindTheSea, type Vec3 } from './viewRays';
 import { compareWithReference } from './imageCompare';
 import { LOD_COLOUR_VIEWS, viewPng } from './referenceViews';
@@ -10,6 +11,12 @@ import { maxDisplacement } from '../../src/sim/surface';
 import { defaultParams } from '../../src/sim/params';
 
 const harness = useHarness();
+
+/**
+ * The default view loaded once for the tests that only read its counts or move its camera
+ * (each boot costs seconds of SwiftShader work); what they change is put back (sharedPage.ts).
+ */
+const shared = sharedPage(harness, 'seed=1&t=10');
 
 /**
  * Pixels showing the magenta clear colour where the view ray dips steeply enough that it
@@ -25,7 +32,7 @@ function holesBelowHorizon(png: Buffer, position: Vec3, target: Vec3): { holes: 
 
 describe('LOD and culling in the browser', () => {
   it('reports chunk counts in stats(), and the brute-force flag draws every chunk at full resolution', async () => {
-    const { page, consoleErrors } = await openOcean(harness, 'seed=1&t=10');
+    const { page, consoleErrors } = await shared.opened();
     const stats = await page.evaluate(() => window.oceano.stats());
     expect(stats.chunksTotal).toBe(84 * 84);
     expect(stats.chunksVisible).toBeGreaterThan(100);
@@ -73,23 +80,22 @@ describe('LOD and culling in the browser', () => {
     expect(brute.triangles).toBeLessThanOrEqual(oceanAndSky + boatTriangles);
     expect(stats.triangles).toBeLessThan(brute.triangles / 10);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('draws no ocean chunk when the camera looks straight up', async () => {
-    const { page } = await openOcean(harness, 'seed=1&t=10');
-    const stats = await page.evaluate(() => {
-      const { camera } = window.oceano.three;
-      camera.position.set(0, 10, 0);
-      camera.lookAt(0, 1000, 0);
-      window.oceano.renderFrame();
-      return window.oceano.stats();
-    });
+    const stats = await shared.restoring((page) =>
+      page.evaluate(() => {
+        const { camera } = window.oceano.three;
+        camera.position.set(0, 10, 0);
+        camera.lookAt(0, 1000, 0);
+        window.oceano.renderFrame();
+        return window.oceano.stats();
+      }),
+    );
     expect(stats.chunksVisible).toBe(0);
     expect(stats.lodCounts.every((n) => n === 0)).toBe(true);
     // Only the sky box is drawn.
     expect(stats.drawCalls).toBe(1);
-    await page.close();
   });
 
   const crackViews: { name: string; query: string; position: Vec3; target: Vec3; size: [number, number] }[] = [
@@ -137,8 +143,11 @@ describe('LOD and culling in the browser', () => {
   }
 
   it('keeps the frozen selection while the camera orbits away', async () => {
-    const { page } = await openOcean(harness, 'seed=1&t=10&freezeCulling=1');
-    const result = await page.evaluate(() => {
+    // The selection frozen from the loaded camera (as freezeCulling=1 in the URL freezes it;
+    // the frustum-culling preset's reference covers that path).
+    const result = await shared.restoring((page) => page.evaluate(() => {
+      window.oceano.setParams({ freezeCulling: true });
+      window.oceano.renderFrame();
       const before = window.oceano.stats();
       window.oceano.setCamera({ position: [-900, 1400, 1300], target: [0, 0, -500] });
       window.oceano.renderFrame();
@@ -146,10 +155,9 @@ describe('LOD and culling in the browser', () => {
       window.oceano.setParams({ freezeCulling: false });
       window.oceano.renderFrame();
       return { before, frozen, live: window.oceano.stats() };
-    });
+    }));
     expect(result.frozen.chunksVisible).toBe(result.before.chunksVisible);
     expect(result.frozen.lodCounts).toEqual(result.before.lodCounts);
     expect(result.live.lodCounts).not.toEqual(result.before.lodCounts);
-    await page.close();
   });
 });

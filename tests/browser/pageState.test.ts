@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
+import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { compareWithOtherReference, compareWithReference, diffPngs } from './imageCompare';
@@ -181,8 +182,9 @@ describe('presets', () => {
       expect(own.matches, own.summary).toBe(true);
       // Negative control: the comparison tells this figure from every other one (normals-wrong
       // from normals-right above all: telling those apart is what that pair teaches).
+      const decoded = PNG.sync.read(png);
       for (const other of presetViews.filter((v) => v.name !== view.name)) {
-        const confused = compareWithOtherReference(other.name, png);
+        const confused = compareWithOtherReference(other.name, decoded);
         expect(confused.matches, `preset ${view.name} passed ${confused.summary}`).toBe(false);
       }
     });

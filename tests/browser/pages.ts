@@ -53,6 +53,9 @@ export async function recordedPage(harness: Harness, width: number, height: numb
     }
   });
   await page.setViewport({ width, height, deviceScaleFactor: 1 });
+  // As openOcean does: a loaded 2-core machine can take longer than puppeteer's 30 s (the
+  // ten-figure page's viewsReady waited past 30 s at load 9 in the 11:41 UTC suite run).
+  page.setDefaultTimeout(120_000);
   return { page, consoleErrors, requests, violations };
 }
 

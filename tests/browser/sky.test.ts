@@ -3,10 +3,31 @@ import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { sharedPage } from './sharedPage';
 import { pixelRay, type Vec3 } from './viewRays';
 import { sunDirection } from '../../src/sim/sun';
 
 const harness = useHarness();
+
+/**
+ * One t=10 page at 640×360 for the tests that set the sun and the camera through the API
+ * (each boot costs seconds of SwiftShader work; the cube is repainted whenever the sun moves,
+ * as the paint-count test below checks). Each test puts back what it changed (sharedPage.ts).
+ */
+const shared = sharedPage(harness, 't=10');
+
+/** The shared page with the sun at (elevation, azimuth) and the camera facing it. */
+async function facingSun(page: Page, elevation: number, azimuth: number): Promise<void> {
+  const { position, target } = cameraFacingSun(elevation, azimuth);
+  await page.evaluate(
+    (sun, pose) => {
+      window.oceano.setParams({ sunElevation: sun[0], sunAzimuth: sun[1] });
+      window.oceano.setCamera(pose);
+    },
+    [elevation, azimuth],
+    { position, target },
+  );
+}
 
 /**
  * The sun disc in the picture: the centroid of the white pixels (every channel ≥ 250)
@@ -60,13 +81,14 @@ describe('the sky painted from the sun', () => {
     [62, 200],
   ]) {
     it(`puts its sun disc where the sun is (elevation ${elevation}°, azimuth ${azimuth}°)`, async () => {
-      const { query } = cameraFacingSun(elevation, azimuth);
-      const { page, consoleErrors } = await openOcean(harness, `t=10&sunElevation=${elevation}&sunAzimuth=${azimuth}&${query}`);
-      const { degrees, count } = await sunOffset(page, elevation, azimuth);
+      const { consoleErrors } = await shared.opened();
+      const { degrees, count } = await shared.restoring(async (page) => {
+        await facingSun(page, elevation, azimuth);
+        return sunOffset(page, elevation, azimuth);
+      });
       expect(count).toBeGreaterThan(3);
       expect(degrees).toBeLessThan(MAX_OFFSET_DEG);
       expect(consoleErrors).toEqual([]);
-      await page.close();
     });
   }
 
@@ -80,34 +102,34 @@ describe('the sky painted from the sun', () => {
   });
 
   it('shows no disc and a darker dusk sky with the sun below the horizon', async () => {
-    const { query, position, target } = cameraFacingSun(3, 20);
-    const { page } = await openOcean(harness, `t=10&sunElevation=3&sunAzimuth=20&${query}`);
-    const dayCount = whiteCentroid(await canvasPng(page), position, target).count;
-    const brightness = async () => {
-      const { width, height, data } = PNG.sync.read(await canvasPng(page));
-      let sum = 0;
-      for (let py = 0; py < height / 4; py++) for (let px = 0; px < width; px++) sum += data[(py * width + px) * 4 + 2];
-      return sum / ((width * height) / 4);
-    };
-    const dayBlue = await brightness();
-    await page.evaluate(() => window.oceano.setParams({ sunElevation: -10 }));
-    await page.evaluate(() => new Promise(requestAnimationFrame));
-    expect(dayCount).toBeGreaterThan(3);
-    expect(whiteCentroid(await canvasPng(page), position, target).count).toBe(0);
-    // Top quarter of the frame, blue channel: the night blue is well under the day's.
-    expect(await brightness()).toBeLessThan(dayBlue * 0.6);
-    await page.close();
+    const { position, target } = cameraFacingSun(3, 20);
+    await shared.restoring(async (page) => {
+      await facingSun(page, 3, 20);
+      const dayCount = whiteCentroid(await canvasPng(page), position, target).count;
+      const brightness = async () => {
+        const { width, height, data } = PNG.sync.read(await canvasPng(page));
+        let sum = 0;
+        for (let py = 0; py < height / 4; py++) for (let px = 0; px < width; px++) sum += data[(py * width + px) * 4 + 2];
+        return sum / ((width * height) / 4);
+      };
+      const dayBlue = await brightness();
+      await page.evaluate(() => window.oceano.setParams({ sunElevation: -10 }));
+      await page.evaluate(() => new Promise(requestAnimationFrame));
+      expect(dayCount).toBeGreaterThan(3);
+      expect(whiteCentroid(await canvasPng(page), position, target).count).toBe(0);
+      // Top quarter of the frame, blue channel: the night blue is well under the day's.
+      expect(await brightness()).toBeLessThan(dayBlue * 0.6);
+    });
   });
 
   it('paints the cube only when the sun moves, never per frame', async () => {
-    const { page } = await openOcean(harness, 't=10');
-    const paints = await page.evaluate(async () => {
+    const paints = await shared.restoring((page) => page.evaluate(async () => {
       const { renderer, scene } = window.oceano.three;
       let other = 0;
-      const render = renderer.render.bind(renderer);
+      const render = renderer.render;
       renderer.render = (s, c) => {
         if (s !== scene) other++;
-        render(s, c);
+        render.call(renderer, s, c);
       };
       const frames = () => new Promise<void>((done) => requestAnimationFrame(() => requestAnimationFrame(() => requestAnimationFrame(() => done()))));
       window.oceano.setParams({ waterColor: '#103050' });
@@ -115,12 +137,12 @@ describe('the sky painted from the sun', () => {
       const still = other;
       window.oceano.setParams({ sunAzimuth: 90 });
       await frames();
+      renderer.render = render;
       return { still, moved: other - still };
-    });
+    }));
     expect(paints.still).toBe(0);
     // One repaint: the cube camera's six faces.
     expect(paints.moved).toBe(6);
-    await page.close();
   });
 
   /**

@@ -1,12 +1,19 @@
 import { describe, expect, it } from 'vitest';
-import { openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { sharedPage } from './sharedPage';
 
 const harness = useHarness();
 
+/**
+ * One t=10 page for both tests (a boot costs seconds of SwiftShader work), small: neither
+ * figure depends on the canvas size (ttffMs is a time, cpuMs the update step before any
+ * draw), and the second test draws 64 frames. The first test reads it as loaded.
+ */
+const shared = sharedPage(harness, 't=10', 160, 90);
+
 describe('oceano.stats() start-up and CPU figures', () => {
   it('records the time to first frame once: after the script arrived, before ready, unchanged by later frames', async () => {
-    const { page, consoleErrors } = await openOcean(harness, 't=10');
+    const { page, consoleErrors } = await shared.opened();
     const atReady = await page.evaluate(() => {
       const script = performance
         .getEntriesByType('resource')
@@ -22,12 +29,10 @@ describe('oceano.stats() start-up and CPU figures', () => {
     await page.evaluate(() => window.oceano.renderFrame());
     expect(await page.evaluate(() => window.oceano.stats().ttffMs)).toBe(atReady.ttffMs);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('counts the update step in cpuMs: within frameMs, above boatMs, and 20 ms more when the update does 20 ms more', async () => {
-    const { page } = await openOcean(harness, 't=10', 320, 180);
-    const figures = await page.evaluate(() => {
+    const figures = await shared.restoring((page) => page.evaluate(() => {
       const o = window.oceano;
       // Enough frames to fill the 30-frame window the medians are taken over. The camera moves
       // a millimetre before each, as a user's would: an unmoved camera's matrices are not
@@ -53,7 +58,7 @@ describe('oceano.stats() start-up and CPU figures', () => {
       const loaded = frames();
       camera.remove(slow);
       return { plain, loaded };
-    });
+    }));
     console.log(`[oceano] stats: plain cpuMs ${figures.plain.cpuMs.toFixed(2)}, boatMs ${figures.plain.boatMs.toFixed(2)}, frameMs ${figures.plain.frameMs.toFixed(1)}; with 20 ms planted in the update: cpuMs ${figures.loaded.cpuMs.toFixed(2)}`);
     for (const f of [figures.plain, figures.loaded]) {
       // Each frame's update is part of that frame and the boat part of the update, so their medians keep that order.
@@ -66,6 +71,5 @@ describe('oceano.stats() start-up and CPU figures', () => {
     expect(figures.loaded.cpuMs - figures.plain.cpuMs).toBeGreaterThan(15);
     // The planted work is in the update, not in the boat's share of it.
     expect(figures.loaded.boatMs).toBeLessThan(figures.plain.boatMs + 5);
-    await page.close();
   });
 });

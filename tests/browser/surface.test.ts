@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { sharedPage } from './sharedPage';
 import { compareWithOtherReference, compareWithReference, diffPngs } from './imageCompare';
 import { PARITY_HEIGHT_LIMIT, PARITY_NORMAL_LIMIT } from './parity';
 import { PNG } from 'pngjs';
@@ -10,22 +11,27 @@ import { HEIGHTMAP_SIZE } from '../../src/sim/surface';
 
 const harness = useHarness();
 
+/**
+ * The default view (seed=1&t=10, 640×360) loaded once for every test here that needs no
+ * fresh load of its own; what a test changes through the API is put back (sharedPage.ts).
+ */
+const shared = sharedPage(harness, 'seed=1&t=10');
+const defaultPage = shared.page;
+const restoring = shared.restoring;
+
 describe('the ocean page', () => {
   it('loads with no console error and resolves oceano.ready after drawing', async () => {
-    const { page, consoleErrors } = await openOcean(harness, 'seed=1&t=10');
+    const { page, consoleErrors } = await shared.opened();
     const stats = await page.evaluate(() => window.oceano.stats());
     expect(stats.triangles).toBeGreaterThan(10_000);
     expect(stats.drawCalls).toBeGreaterThanOrEqual(2);
     expect(stats.frameMs).toBeGreaterThan(0);
     expect(await page.evaluate(() => window.oceano.notices())).toEqual([]);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('draws the same picture on a second load, matching the committed reference', async () => {
-    const first = await openOcean(harness, 'seed=1&t=10');
-    const a = await canvasPng(first.page);
-    await first.page.close();
+    const a = await canvasPng(await defaultPage());
     const second = await openOcean(harness, 'seed=1&t=10');
     const b = await canvasPng(second.page);
     await second.page.close();
@@ -35,21 +41,28 @@ describe('the ocean page', () => {
   });
 
   it('fails the reference comparison when the sea colour is 3 % brighter (negative control)', async () => {
-    const { page } = await openOcean(harness, 'seed=1&t=10');
-    // Deep water colour #06283a with each channel × 1.03, rounded: #06293c.
-    await page.evaluate(() => window.oceano.setParams({ waterColor: '#06293c' }));
-    // Compared without writing: under UPDATE_REFERENCES=1 compareWithReference would store
-    // the brighter picture as the reference.
-    const brighter = compareWithOtherReference('surface-seed1-t10', await canvasPng(page));
-    await page.close();
+    const brighter = await restoring(async (page) => {
+      // Deep water colour #06283a with each channel × 1.03, rounded: #06293c.
+      await page.evaluate(() => window.oceano.setParams({ waterColor: '#06293c' }));
+      // Compared without writing: under UPDATE_REFERENCES=1 compareWithReference would store
+      // the brighter picture as the reference.
+      return compareWithOtherReference('surface-seed1-t10', await canvasPng(page));
+    });
     console.log(`[oceano] sea colour +3 %: ${brighter.summary}`);
     expect(brighter.matches, brighter.summary).toBe(false);
   });
 
   it('changes the picture when t changes and when the seed changes', async () => {
-    const base = await canvasPng((await openOcean(harness, 'seed=1&t=10')).page);
-    const later = await canvasPng((await openOcean(harness, 'seed=1&t=20')).page);
-    const reseeded = await canvasPng((await openOcean(harness, 'seed=2&t=10')).page);
+    const [base, later, reseeded] = await restoring(async (page) => {
+      const atTen = await canvasPng(page);
+      await page.evaluate(() => window.oceano.setTime(20));
+      const atTwenty = await canvasPng(page);
+      await page.evaluate(() => {
+        window.oceano.setTime(10);
+        window.oceano.setParams({ seed: 2 });
+      });
+      return [atTen, atTwenty, await canvasPng(page)];
+    });
     // The sky fills half the frame and does not move: the sea's half must change.
     expect(diffPngs(base, later).share).toBeGreaterThan(0.03);
     expect(diffPngs(base, reseeded).share).toBeGreaterThan(0.03);
@@ -98,7 +111,7 @@ describe('bad input', () => {
   });
 
   it('rejects a bad setParams call, naming the key, and applies nothing of it', async () => {
-    const { page } = await openOcean(harness, 't=1');
+    const page = await defaultPage();
     const result = await page.evaluate(() => {
       const before = window.oceano.getParams();
       const messages: string[] = [];
@@ -117,28 +130,31 @@ describe('bad input', () => {
     expect(result.messages[2]).toMatch(/seed/);
     expect(result.messages[3]).toMatch(/waterColor/);
     expect(result.unchanged).toBe(true);
-    await page.close();
   });
 });
 
 describe('automation API', () => {
   it('exposes the uploaded Fresnel table and heightmaps, equal to the CPU modules', async () => {
-    const { page } = await openOcean(harness, 'seed=3&t=0');
-    const data = await page.evaluate(() => ({
-      fresnel: Array.from(window.oceano.debug.fresnelTable()),
-      maps: window.oceano.debug.heightmaps().map((m) => ({ size: m.size, data: Array.from(m.data.slice(0, 64)) })),
-    }));
+    const data = await restoring((page) =>
+      page.evaluate(() => {
+        window.oceano.setParams({ seed: 3 });
+        return {
+          fresnel: Array.from(window.oceano.debug.fresnelTable()),
+          maps: window.oceano.debug.heightmaps().map((m) => ({ size: m.size, data: Array.from(m.data.slice(0, 64)) })),
+        };
+      }),
+    );
     expect(data.fresnel).toEqual(Array.from(fresnelTable(256)));
     const [a, b] = generateRippleHeightmaps(3, HEIGHTMAP_SIZE);
     expect(data.maps[0].size).toBe(HEIGHTMAP_SIZE);
     expect(data.maps[0].data).toEqual(Array.from(a.data.slice(0, 64)));
     expect(data.maps[1].data).toEqual(Array.from(b.data.slice(0, 64)));
-    await page.close();
   });
 
   it('samples the CPU surface in agreement with the GPU shader (swell and ripples)', async () => {
-    const { page } = await openOcean(harness, 'seed=5&t=37');
-    const worst = await page.evaluate(async () => {
+    const worst = await restoring((page) => page.evaluate(async () => {
+      window.oceano.setParams({ seed: 5 });
+      window.oceano.setTime(37);
       const points: [number, number][] = [];
       for (let i = 0; i < 64; i++) points.push([Math.sin(i * 12.9898) * 300, Math.cos(i * 78.233) * 300]);
       const gpu = await window.oceano.probeGpu(points);
@@ -150,27 +166,27 @@ describe('automation API', () => {
         for (let c = 0; c < 3; c++) normal = Math.max(normal, Math.abs(cpu.normal[c] - gpu[i].normal[c]));
       });
       return { height, normal };
-    });
+    }));
     expect(worst.height).toBeLessThan(PARITY_HEIGHT_LIMIT);
     expect(worst.normal).toBeLessThan(PARITY_NORMAL_LIMIT);
-    await page.close();
   });
 
   it('moves the camera with setCamera and changes the picture; pause and setTime freeze and move time', async () => {
-    const { page } = await openOcean(harness, 't=5');
-    const before = await canvasPng(page);
-    await page.evaluate(() => window.oceano.setCamera({ position: [30, 25, 30], target: [0, 0, -40] }));
-    const moved = await canvasPng(page);
-    expect(diffPngs(before, moved).share).toBeGreaterThan(0.05);
-    const camera = await page.evaluate(() => window.oceano.getCamera());
-    camera.position.forEach((c, i) => expect(c).toBeCloseTo([30, 25, 30][i], 9));
-    const h = await page.evaluate(() => {
-      window.oceano.pause();
-      window.oceano.setTime(100);
-      return window.oceano.sampleSurface(0, 0).height;
+    await restoring(async (page) => {
+      await page.evaluate(() => window.oceano.setTime(5));
+      const before = await canvasPng(page);
+      await page.evaluate(() => window.oceano.setCamera({ position: [30, 25, 30], target: [0, 0, -40] }));
+      const moved = await canvasPng(page);
+      expect(diffPngs(before, moved).share).toBeGreaterThan(0.05);
+      const camera = await page.evaluate(() => window.oceano.getCamera());
+      camera.position.forEach((c, i) => expect(c).toBeCloseTo([30, 25, 30][i], 9));
+      const h = await page.evaluate(() => {
+        window.oceano.pause();
+        window.oceano.setTime(100);
+        return window.oceano.sampleSurface(0, 0).height;
+      });
+      await new Promise((r) => setTimeout(r, 300));
+      expect(await page.evaluate(() => window.oceano.sampleSurface(0, 0).height)).toBe(h);
     });
-    await new Promise((r) => setTimeout(r, 300));
-    expect(await page.evaluate(() => window.oceano.sampleSurface(0, 0).height)).toBe(h);
-    await page.close();
   });
 });

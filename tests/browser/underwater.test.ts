@@ -2,12 +2,20 @@ import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { sharedPage } from './sharedPage';
 import { compareWithReference, describeDifference, diffPngs, measureDifference, withinTolerance } from './imageCompare';
 import { DIVE_QUERY } from './referenceViews';
 import { highFrequencyEnergy } from '../support/imageEnergy';
 
 
 const harness = useHarness();
+
+/**
+ * The dive view loaded once for the tests that look at it through the API (each boot costs
+ * seconds of SwiftShader work); what a test changes is put back (sharedPage.ts). The
+ * reference test comes first, on the page as loaded.
+ */
+const dive = sharedPage(harness, DIVE_QUERY);
 
 function energyOf(png: Buffer): number {
   const image = PNG.sync.read(png);
@@ -16,7 +24,7 @@ function energyOf(png: Buffer): number {
 
 describe('under the water', () => {
   it('draws the dive view through the composer, matching the committed reference', async () => {
-    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
+    const { page, consoleErrors } = await dive.opened();
     const png = await canvasPng(page);
     const stats = await page.evaluate(() => window.oceano.stats());
     expect(stats.underwater).toBe(true);
@@ -28,85 +36,89 @@ describe('under the water', () => {
     const reference = compareWithReference('underwater-seed1-t10', png);
     expect(reference.matches, reference.summary).toBe(true);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('lowers the high-frequency energy of the same frame when the blur is on', async () => {
-    const { page } = await openOcean(harness, `${DIVE_QUERY}&blurStrength=0`);
-    const sharp = energyOf(await canvasPng(page));
-    // Blur off: scene, shafts, water at full resolution, output.
-    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(4);
-    await page.evaluate(() => window.oceano.setParams({ blurStrength: 3 }));
-    const blurred = energyOf(await canvasPng(page));
-    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(6);
+    const [sharp, blurred] = await dive.restoring(async (page) => {
+      await page.evaluate(() => window.oceano.setParams({ blurStrength: 0 }));
+      const blurOff = energyOf(await canvasPng(page));
+      // Blur off: scene, shafts, water at full resolution, output.
+      expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(4);
+      await page.evaluate(() => window.oceano.setParams({ blurStrength: 3 }));
+      const blurOn = energyOf(await canvasPng(page));
+      expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(6);
+      return [blurOff, blurOn];
+    });
     console.log(`[oceano] high-frequency energy: blur off ${sharp.toFixed(2)}, blur σ = 3 px ${blurred.toFixed(2)}`);
     expect(sharp).toBeGreaterThan(0);
     expect(blurred).toBeLessThan(sharp * 0.5);
-    await page.close();
   });
 
   it('draws the same shafts from the window generic wave models get as from the seed\'s repeating tile', async () => {
-    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
-    const tile = await canvasPng(page);
-    await page.evaluate(() => {
-      window.oceano.debug.forceShaftLightWindow(true);
-      window.oceano.renderFrame();
+    const { consoleErrors } = await dive.opened();
+    await dive.restoring(async (page) => {
+      const tile = await canvasPng(page);
+      await page.evaluate(() => {
+        window.oceano.debug.forceShaftLightWindow(true);
+        window.oceano.renderFrame();
+      });
+      const windowed = await canvasPng(page);
+      // The window's corner is on the tile's texel lattice, so both bakes hold the lens at the
+      // same points and the god rays read the same values (src/sim/shaftLightTile.ts).
+      const same = measureDifference(tile, windowed);
+      console.log(`[oceano] shaft light, window vs tile: ${describeDifference(same)}`);
+      expect(withinTolerance(same), describeDifference(same)).toBe(true);
+      // Negative control: the same comparison sees the shafts' share of the picture, here made
+      // 25 % brighter, which a window baked at the wrong place or with the wrong lens would move.
+      await page.evaluate(() => window.oceano.setParams({ godRaysIntensity: 1.25 * window.oceano.getParams().godRaysIntensity }));
+      const brighter = measureDifference(tile, await canvasPng(page));
+      expect(withinTolerance(brighter), describeDifference(brighter)).toBe(false);
+      await page.evaluate(() => window.oceano.debug.forceShaftLightWindow(false));
     });
-    const windowed = await canvasPng(page);
-    // The window's corner is on the tile's texel lattice, so both bakes hold the lens at the
-    // same points and the god rays read the same values (src/sim/shaftLightTile.ts).
-    const same = measureDifference(tile, windowed);
-    console.log(`[oceano] shaft light, window vs tile: ${describeDifference(same)}`);
-    expect(withinTolerance(same), describeDifference(same)).toBe(true);
-    // Negative control: the same comparison sees the shafts' share of the picture, here made
-    // 25 % brighter, which a window baked at the wrong place or with the wrong lens would move.
-    await page.evaluate(() => window.oceano.setParams({ godRaysIntensity: 1.25 * window.oceano.getParams().godRaysIntensity }));
-    const brighter = measureDifference(tile, await canvasPng(page));
-    expect(withinTolerance(brighter), describeDifference(brighter)).toBe(false);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('draws the same pictures with the underwater shortcuts (back faces only, no above-the-surface caustics test) as without', async () => {
     // The dive view (the underside over the upper half, outside Snell's window; the sea bed and
     // its caustics below), then looking up into Snell's window (the bench's underwater camera).
-    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY);
-    const shortcutsAgainstFull = async (label: string) => {
-      expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('below');
-      const fast = await canvasPng(page);
-      await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: false }));
-      const full = await canvasPng(page);
-      await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: true }));
-      const same = measureDifference(fast, full);
-      // Measured: largest difference 0 levels in both views (the left-out code changed no pixel).
-      console.log(`[oceano] underwater shortcuts on vs off, ${label}: ${describeDifference(same)}`);
-      expect(withinTolerance(same), describeDifference(same)).toBe(true);
-      return fast;
-    };
-    const dive = await shortcutsAgainstFull('dive view');
-    // Negative control: the comparison sees the bed's caustics 25 % stronger.
-    const params = await page.evaluate(() => window.oceano.getParams());
-    await page.evaluate((p) => window.oceano.setParams({ causticsIntensity: 1.25 * p.causticsIntensity }), params);
-    const strongerCaustics = measureDifference(dive, await canvasPng(page));
-    console.log(`[oceano] control, caustics 25 % stronger: ${describeDifference(strongerCaustics)}`);
-    expect(withinTolerance(strongerCaustics)).toBe(false);
-    await page.evaluate((p) => window.oceano.setParams({ causticsIntensity: p.causticsIntensity }), params);
+    const { consoleErrors } = await dive.opened();
+    await dive.restoring(async (page) => {
+      const shortcutsAgainstFull = async (label: string) => {
+        expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('below');
+        const fast = await canvasPng(page);
+        await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: false }));
+        const full = await canvasPng(page);
+        await page.evaluate(() => window.oceano.debug.setShadingFixes({ underwaterShortcuts: true }));
+        const same = measureDifference(fast, full);
+        // Measured: largest difference 0 levels in both views (the left-out code changed no pixel).
+        console.log(`[oceano] underwater shortcuts on vs off, ${label}: ${describeDifference(same)}`);
+        expect(withinTolerance(same), describeDifference(same)).toBe(true);
+        return fast;
+      };
+      const divePicture = await shortcutsAgainstFull('dive view');
+      // Negative control: the comparison sees the bed's caustics 25 % stronger.
+      const params = await page.evaluate(() => window.oceano.getParams());
+      await page.evaluate((p) => window.oceano.setParams({ causticsIntensity: 1.25 * p.causticsIntensity }), params);
+      const strongerCaustics = measureDifference(divePicture, await canvasPng(page));
+      console.log(`[oceano] control, caustics 25 % stronger: ${describeDifference(strongerCaustics)}`);
+      expect(withinTolerance(strongerCaustics)).toBe(false);
+      await page.evaluate((p) => window.oceano.setParams({ causticsIntensity: p.causticsIntensity }), params);
 
-    await page.evaluate(() => window.oceano.setCamera({ position: [0, -8, 20], target: [0, 5, -20] }));
-    const up = await shortcutsAgainstFull('looking up');
-    // Negative control: the comparison sees the underside's shading change (its Fresnel
-    // weights off: Snell's window then ends in a hard step instead of fading into the mirror).
-    await page.evaluate(() => window.oceano.setParams({ fresnel: false }));
-    const noFresnel = measureDifference(up, await canvasPng(page));
-    console.log(`[oceano] control, underside without Fresnel: ${describeDifference(noFresnel)}`);
-    expect(withinTolerance(noFresnel)).toBe(false);
+      await page.evaluate(() => window.oceano.setCamera({ position: [0, -8, 20], target: [0, 5, -20] }));
+      const up = await shortcutsAgainstFull('looking up');
+      // Negative control: the comparison sees the underside's shading change (its Fresnel
+      // weights off: Snell's window then ends in a hard step instead of fading into the mirror).
+      await page.evaluate(() => window.oceano.setParams({ fresnel: false }));
+      const noFresnel = measureDifference(up, await canvasPng(page));
+      console.log(`[oceano] control, underside without Fresnel: ${describeDifference(noFresnel)}`);
+      expect(withinTolerance(noFresnel)).toBe(false);
+    });
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('flips underwater exactly at the CPU surface height under the camera', async () => {
-    const { page } = await openOcean(harness, 'seed=1&t=10');
-    const result = await page.evaluate(() => {
+    // The dive page's sea is seed=1&t=10's; the camera is placed here, then put back.
+    const result = await dive.restoring((page) => page.evaluate(() => {
       const o = window.oceano;
       const [x, z] = [12.5, -30.25];
       const h = o.sampleSurface(x, z).height;
@@ -116,7 +128,7 @@ describe('under the water', () => {
         return { y: o.getCamera().position[1], ...o.stats() };
       };
       return { h, above: at(h + 1e-3), below: at(h - 1e-3) };
-    });
+    }));
     expect(result.above.y).toBeCloseTo(result.h + 1e-3, 9);
     expect(result.below.y).toBeCloseTo(result.h - 1e-3, 9);
     expect(result.above.underwater).toBe(false);
@@ -124,7 +136,6 @@ describe('under the water', () => {
     // A millimetre from the surface the near plane crosses it: both frames decide per pixel.
     expect(result.above.submersion).toBe('straddling');
     expect(result.below.submersion).toBe('straddling');
-    await page.close();
   });
 
   it('shows air above and water below the waterline of a straddling camera', async () => {
@@ -176,15 +187,14 @@ describe('under the water', () => {
     // Beside the hull, looking up at it; the sea bed pushed out of sight, blur and god rays off,
     // so only the hull can change with the caustics' intensity.
     const view = 'seed=1&t=10&cam=12,-1.2,-14,7,-0.2,-5&seaBedDepth=200&blurStrength=0&godRays=0';
-    // One page at a time: a page left in the background does not produce screenshots.
+    // One page, the intensity then turned down through the API (a second boot cost seconds).
     const lit = await openOcean(harness, `${view}&causticsIntensity=2`);
     expect(await lit.page.evaluate(() => window.oceano.boat().model)).toBe('loaded');
     const litPng = await canvasPng(lit.page);
     expect(lit.consoleErrors).toEqual([]);
+    await lit.page.evaluate(() => window.oceano.setParams({ causticsIntensity: 0 }));
+    const difference = diffPngs(litPng, await canvasPng(lit.page), 0);
     await lit.page.close();
-    const flat = await openOcean(harness, `${view}&causticsIntensity=0`);
-    const difference = diffPngs(litPng, await canvasPng(flat.page), 0);
-    await flat.page.close();
     expect(difference.differentPixels).toBeGreaterThan(50);
     // The hull covers a small part of the frame: the rest (surface, fog) is the same.
     expect(difference.share).toBeLessThan(0.1);

@@ -47,9 +47,10 @@ async function viewFromJustAbove(page: Page, x: number, z: number, clearance = E
   const submersion = await page.evaluate(async (x, z, clearance) => {
     const eyeY = window.oceano.sampleSurface(x, z).height + clearance;
     window.oceano.setCamera({ position: [x, eyeY, z], target: [x, eyeY, z - 100] });
+    // This frame asks for any part the view needs (the underwater passes); loaded() draws
+    // again once they are there, and that frame's stats are read (canvasPng draws the picture).
     window.oceano.renderFrame();
     await window.oceano.loaded();
-    window.oceano.renderFrame();
     return window.oceano.stats().submersion;
   }, x, z, clearance);
   return { png: await canvasPng(page), submersion };

@@ -1,8 +1,8 @@
-import { describe, expect, it } from 'vitest';
+import { afterAll, describe, expect, it } from 'vitest';
 import { canvasPng, openOcean, screenshotCanvas } from './harness';
 import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
-import { elementCanvasPng, recordedPage, viewsReady } from './pages';
+import { elementCanvasPng, recordedPage, viewsReady, type RecordedPage } from './pages';
 
 const harness = useHarness();
 
@@ -99,10 +99,27 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     await page.close();
   });
 
+  /**
+   * far-apart.html (two figures, one scrolled far below the other) loaded once for the two
+   * tests that look at it: each boot of its two figures costs seconds of SwiftShader work.
+   */
+  let farApart: Promise<RecordedPage> | undefined;
+  const openFarApart = async () => {
+    const recorded = await (farApart ??= recordedPage(harness, 400, 400).then(async (opened) => {
+      await opened.page.goto(`${harness.baseUrl}fixtures/far-apart.html`, { waitUntil: 'load' });
+      await viewsReady(opened.page);
+      return opened;
+    }));
+    // Pages opened since leave this one in the background, where no frames are drawn.
+    await recorded.page.bringToFront();
+    return recorded;
+  };
+  afterAll(async () => {
+    if (farApart) await (await farApart).page.close();
+  });
+
   it('pauses a figure scrolled out of view and resumes it when it comes back', async () => {
-    const { page, consoleErrors } = await recordedPage(harness, 400, 400);
-    await page.goto(`${harness.baseUrl}fixtures/far-apart.html`, { waitUntil: 'load' });
-    await viewsReady(page);
+    const { page, consoleErrors } = await openFarApart();
     const activity = () =>
       page.evaluate(() => ({
         near: (document.querySelector('#near') as ViewElement).oceano!.activity(),
@@ -123,7 +140,6 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     await page.waitForFunction((n) => (document.querySelector('#far') as ViewElement).oceano!.activity().framesDrawn > n, {}, farFrames);
     expect((await activity()).near.looping).toBe(false);
     expect(consoleErrors).toEqual([]);
-    await page.close();
   });
 
   it('runs no frame loop for a frozen figure (t given) until it is played', async () => {
@@ -142,10 +158,11 @@ describe('<oceano-view> (dist/oceano.js)', () => {
   });
 
   it('pauses every figure while the tab is hidden', async () => {
-    const { page } = await recordedPage(harness, 400, 400);
-    await page.goto(`${harness.baseUrl}fixtures/far-apart.html`, { waitUntil: 'load' });
-    await viewsReady(page);
+    const { page } = await openFarApart();
     const looping = () => page.evaluate(() => (document.querySelector('#near') as ViewElement).oceano!.activity().looping);
+    // The page as loaded: the near figure in view (the scrolling test above leaves the far one there).
+    await page.evaluate(() => document.querySelector('#near')!.scrollIntoView());
+    await page.waitForFunction(() => (document.querySelector('#near') as ViewElement).oceano!.activity().looping);
     expect(await looping()).toBe(true);
     const setHidden = (hidden: boolean) =>
       page.evaluate((h) => {
@@ -156,7 +173,6 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     expect(await looping()).toBe(false);
     await setHidden(false);
     expect(await looping()).toBe(true);
-    await page.close();
   });
 
   it('releases the WebGL context and its API when the element is removed', async () => {
