@@ -3,7 +3,8 @@ import { FftOcean, type CascadeFields } from '../../src/sim/fftOcean';
 import { FftWaveModel, type FieldSource } from '../../src/sim/fftWaveModel';
 import { defaultParams } from '../../src/sim/params';
 import { SimulationClock } from '../../src/app/simulationClock';
-import { copyFields } from '../../src/render/waveModels/fftFieldsSource';
+import { copyFields, fieldBuffers } from '../../src/render/waveModels/fftFieldsSource';
+import { seededRandom } from '../../src/sim/integerHash';
 
 const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
 
@@ -130,6 +131,23 @@ describe('FftWaveModel: the Worker refills the arrays the model hands back', () 
     expect(fresh === small).toBe(false); // not .not.toBe: its message would print both sets of arrays
     expect(same(fresh[0].displacement, ocean.fields[0].displacement)).toBe(true);
     expect(same(copyFields(ocean.fields, null)[2].derivatives, ocean.fields[2].derivatives)).toBe(true);
+  });
+});
+
+describe('FftWaveModel: the frame loop\'s height question', () => {
+  it('is the inversion\'s height bit for bit, reading only the channels it uses (FftOcean.heightAt)', () => {
+    // A choppy gale (the inversion's slowest convergence) and a calm sea, at t = 10 and 10⁶.
+    const random = seededRandom(41);
+    for (const sea of [{ ...params, windSpeed: 20, choppiness: 1.2 }, { ...params, windSpeed: 5 }]) {
+      const model = new FftWaveModel(sea);
+      for (const t of [10, 1e6 + 0.37]) {
+        for (let i = 0; i < 200; i++) {
+          const x = (random() - 0.5) * 2000;
+          const z = (random() - 0.5) * 2000;
+          expect(model.height(x, z, t)).toBe(model.invert(x, z, t).height);
+        }
+      }
+    }
   });
 });
 
