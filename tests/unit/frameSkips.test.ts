@@ -6,6 +6,9 @@ import { WaveBinding } from '../../src/render/waveModels/waveBinding';
 import type { WaveModelView } from '../../src/render/waveModels/waveModelView';
 import type { Submersion } from '../../src/sim/underwater';
 import type { BoatPose } from '../../src/sim/boatPose';
+import { SeedWaveView } from '../../src/render/waveModels/seedWaveView';
+import { SeedWaveModel } from '../../src/sim/seedWaveModel';
+import { defaultParams } from '../../src/sim/params';
 
 /**
  * The update step's setters that skip a frame's repeat of the last frame's values
@@ -66,6 +69,35 @@ describe('BoatView.setPose: the same pose again leaves the group as it is', () =
       expect(a.quaternion.toArray()).toEqual(b.quaternion.toArray());
       expect(a.rotation.toArray()).toEqual(b.rotation.toArray());
       expect(Object.is(a.rotation.y, b.rotation.y)).toBe(true);
+    }
+  });
+});
+
+describe('SeedWaveView.update: the state already applied is not applied again', () => {
+  /** The per-frame uniforms' values, as plain numbers (vectors as arrays; the heightmap textures left out). */
+  const values = (view: SeedWaveView) =>
+    Object.fromEntries(
+      Object.entries(view.uniforms)
+        .filter(([, u]) => !(u.value instanceof Texture))
+        .map(([k, u]) => [k, u.value && typeof u.value === 'object' && 'toArray' in u.value ? (u.value as { toArray(): number[] }).toArray() : u.value]),
+    );
+
+  it('repeats set nothing; a new time or new parameters at the same time give a fresh view\'s uniforms', () => {
+    const params = defaultParams();
+    const view = new SeedWaveView(new SeedWaveModel(params));
+    view.update(10);
+    const offset = vi.spyOn(view.uniforms.uRippleOffset.value as { fromArray(a: number[]): unknown }, 'fromArray');
+    view.update(10);
+    expect(offset).not.toHaveBeenCalled();
+    const steps: [number, Partial<typeof params>][] = [[10, { swellAmplitude: 0.9 }], [10, { rippleStrength: 0.2 }], [10.5, {}], [10.5, {}], [10.5, { rippleBlendSpeed: 0.3 }]];
+    let current = params;
+    for (const [time, change] of steps) {
+      current = { ...current, ...change };
+      view.setParams(current);
+      view.update(time);
+      const fresh = new SeedWaveView(new SeedWaveModel(current));
+      fresh.update(time);
+      expect(values(view)).toEqual(values(fresh));
     }
   });
 });
