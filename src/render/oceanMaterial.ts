@@ -32,6 +32,8 @@ export class OceanMaterial extends ShaderMaterial {
   readonly near: OceanMaterial;
   /** The material whose uniforms `near` shares; null for the main one. */
   private readonly main: OceanMaterial | null;
+  /** The last setSeenFromBelow's answer; null before the first. */
+  private seenFrom: Submersion | null = null;
 
   constructor(
     private readonly waves: WaveBinding,
@@ -132,6 +134,10 @@ export class OceanMaterial extends ShaderMaterial {
    * for every pixel of the underside too (issue 14).
    */
   setSeenFromBelow(where: Submersion): void {
+    // Called every frame with, almost always, last frame's answer: nothing else writes these
+    // (the side, uMarkSides, the two defines), so the same answer leaves them as they are.
+    if (where === this.seenFrom) return;
+    this.seenFrom = where;
     const inWater = where !== 'above';
     this.uniforms.uMarkSides.value = inWater;
     this.near.side = this.side = where === 'below' ? BackSide : inWater ? DoubleSide : FrontSide;

@@ -29,6 +29,7 @@ import { applyWakeUniforms, createWakeUniforms } from './wakeUniforms';
 import { KelvinGuideView } from './kelvinGuideView';
 import type { WakeUniformData } from '../sim/wakeUniformData';
 import { DEFAULT_NEAR, nearForClearance } from '../sim/nearPlane';
+import { SurfaceHeightMemo } from '../sim/surfaceHeightMemo';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -136,6 +137,8 @@ export class OceanView {
   private heightmapView?: HeightmapView;
   private showHeightmaps = false;
   private readonly nearPoint = new Vector3();
+  /** The surface's height under the eye (asked by the near plane's fit and the submersion test). */
+  private readonly eyeSurface = new SurfaceHeightMemo();
   /** Debug (a negative control): false keeps the fixed 0.5 m near plane however low the eye. */
   private clearanceNear = true;
   /** Debug (a negative control's switch): see ShadingFixes.underwaterShortcuts. */
@@ -361,7 +364,7 @@ export class OceanView {
     // An eye this high over the highest crest keeps 0.5 m whichever way it looks
     // (nearPlane.ts needs at most 3.7 m of clearance per metre of near distance).
     if (this.clearanceNear && camera.position.y < this.bounds.vertical + 2) {
-      const clearance = camera.position.y - this.waveView.model.height(camera.position.x, camera.position.z, time);
+      const clearance = camera.position.y - this.eyeSurface.height(this.waveView.model, camera.position.x, camera.position.z, time);
       camera.updateMatrixWorld();
       const e = camera.matrixWorld.elements;
       near = nearForClearance(clearance, {
@@ -385,7 +388,7 @@ export class OceanView {
   private submersionAt(time: number): { underwater: boolean; submersion: Submersion; eyeSurface: number } {
     const waves = this.waveView.model;
     const eye = this.camera.position;
-    const eyeSurface = waves.height(eye.x, eye.z, time);
+    const eyeSurface = this.eyeSurface.height(waves, eye.x, eye.z, time);
     const underwater = eye.y < eyeSurface;
     // The near plane lies within `reach` of the eye: far above the highest crest, no sampling needed.
     const nearHalfHeight = this.camera.near * Math.tan((this.camera.fov * Math.PI) / 360);

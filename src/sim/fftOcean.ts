@@ -129,8 +129,32 @@ export class FftOcean implements WaveModel {
     return { sx: r[0], sz: r[1], jxx, jzz: r[2], jxz: r[3] };
   }
 
-  /** Bilinear read of one RGBA field of every cascade, summed, into this.acc (reused: no allocation per call). */
-  private accumulate(x: number, z: number, which: keyof CascadeFields): Float64Array {
+  /**
+   * The height of the surface above the world point (x, z) at `time`: the same fixed-point
+   * inversion as undoHorizontalDisplacement over displacement() with `steps` steps, then the
+   * height there, bit for bit (each channel's sum is the same arithmetic in the same order).
+   * But it reads only the channels each step uses (x and z while inverting, the height at the
+   * end), allocates nothing, and skips the residual: the frame loop asks this about ten
+   * times a frame (the boat, the underwater switch), and the full reads were half its cost.
+   */
+  heightAt(x: number, z: number, time: number, steps: number): number {
+    this.setTime(time);
+    const acc = this.acc;
+    let px = x;
+    let pz = z;
+    for (let i = 0; i < steps; i++) {
+      this.accumulate(px, pz, 'displacement', 0, 2);
+      px = x - acc[0];
+      pz = z - acc[2];
+    }
+    return this.accumulate(px, pz, 'displacement', 1, 4)[1];
+  }
+
+  /**
+   * Bilinear read of one RGBA field of every cascade, summed, into this.acc (reused: no
+   * allocation per call). Only channels first, first + stride, … below 4 are read; the others are 0.
+   */
+  private accumulate(x: number, z: number, which: keyof CascadeFields, first = 0, stride = 1): Float64Array {
     const acc = this.acc;
     acc.fill(0);
     const n = this.setup.sea.fftSize;
@@ -150,7 +174,7 @@ export class FftOcean implements WaveModel {
       const i10 = 4 * (q0 * n + p1);
       const i01 = 4 * (q1 * n + p0);
       const i11 = 4 * (q1 * n + p1);
-      for (let ch = 0; ch < 4; ch++) {
+      for (let ch = first; ch < 4; ch += stride) {
         const top = f[i00 + ch] + (f[i10 + ch] - f[i00 + ch]) * wx;
         const bottom = f[i01 + ch] + (f[i11 + ch] - f[i01 + ch]) * wx;
         acc[ch] += top + (bottom - top) * wz;

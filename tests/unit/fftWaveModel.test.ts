@@ -3,7 +3,8 @@ import { FftOcean, type CascadeFields } from '../../src/sim/fftOcean';
 import { FftWaveModel, type FieldSource } from '../../src/sim/fftWaveModel';
 import { defaultParams } from '../../src/sim/params';
 import { SimulationClock } from '../../src/app/simulationClock';
-import { copyFields } from '../../src/render/waveModels/fftFieldsSource';
+import { copyFields, fieldBuffers, packedFields } from '../../src/render/waveModels/fftFieldsSource';
+import { seededRandom } from '../../src/sim/integerHash';
 
 const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
 
@@ -115,9 +116,11 @@ describe('FftWaveModel: the Worker refills the arrays the model hands back', () 
   it('the Worker writes into the arrays it got back where they fit, and into new ones where they do not', () => {
     const { ocean } = new FftWaveModel(params);
     ocean.setTime(12);
-    const spare = ocean.fields.map((f) => ({ displacement: new Float64Array(f.displacement.length), derivatives: new Float64Array(f.derivatives.length) }));
+    const spare = packedFields(ocean.fields);
     const filled = copyFields(ocean.fields, spare);
     expect(filled).toBe(spare);
+    // One buffer carries every cascade's fields: a reply transfers one, not six.
+    expect(fieldBuffers(filled)).toHaveLength(1);
     // Element by element (toEqual on 65 536 floats takes seconds).
     const same = (a: Float64Array, b: Float64Array) => a !== b && a.length === b.length && a.every((v, i) => v === b[i]);
     filled.forEach((f, c) => {
@@ -130,6 +133,31 @@ describe('FftWaveModel: the Worker refills the arrays the model hands back', () 
     expect(fresh === small).toBe(false); // not .not.toBe: its message would print both sets of arrays
     expect(same(fresh[0].displacement, ocean.fields[0].displacement)).toBe(true);
     expect(same(copyFields(ocean.fields, null)[2].derivatives, ocean.fields[2].derivatives)).toBe(true);
+    // Arrays of the right sizes but in separate buffers (the main thread's first fields, computed
+    // by its own FftOcean) are not reused: the reply would carry six buffers again, for good.
+    const separate = ocean.fields.map((f) => ({ displacement: new Float64Array(f.displacement.length), derivatives: new Float64Array(f.derivatives.length) }));
+    const repacked = copyFields(ocean.fields, separate);
+    expect(repacked === separate).toBe(false);
+    expect(fieldBuffers(repacked)).toHaveLength(1);
+    expect(fieldBuffers(separate)).toHaveLength(6);
+    expect(same(repacked[1].derivatives, ocean.fields[1].derivatives)).toBe(true);
+  });
+});
+
+describe('FftWaveModel: the frame loop\'s height question', () => {
+  it('is the inversion\'s height bit for bit, reading only the channels it uses (FftOcean.heightAt)', () => {
+    // A choppy gale (the inversion's slowest convergence) and a calm sea, at t = 10 and 10⁶.
+    const random = seededRandom(41);
+    for (const sea of [{ ...params, windSpeed: 20, choppiness: 1.2 }, { ...params, windSpeed: 5 }]) {
+      const model = new FftWaveModel(sea);
+      for (const t of [10, 1e6 + 0.37]) {
+        for (let i = 0; i < 200; i++) {
+          const x = (random() - 0.5) * 2000;
+          const z = (random() - 0.5) * 2000;
+          expect(model.height(x, z, t)).toBe(model.invert(x, z, t).height);
+        }
+      }
+    }
   });
 });
 

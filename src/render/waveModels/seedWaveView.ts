@@ -2,7 +2,7 @@ import type { DataTexture } from 'three';
 import seedChunk from '../../../shaders/waves/seed.glsl?raw';
 import type { OceanParams } from '../../sim/params';
 import type { SeedWaveModel } from '../../sim/seedWaveModel';
-import { RIPPLE_TILE_SIZE } from '../../sim/surface';
+import { RIPPLE_TILE_SIZE, type SurfaceState } from '../../sim/surface';
 import { heightmapTexture } from '../dataTextures';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
 import type { WaveModelView } from './waveModelView';
@@ -16,6 +16,8 @@ export class SeedWaveView implements WaveModelView {
   readonly lensPeriod = RIPPLE_TILE_SIZE;
   readonly uniforms: SurfaceUniforms;
   heightmapTextures: [DataTexture, DataTexture];
+  /** The surface state the uniforms hold (SeedWaveModel.stateAt's object); null before the first update. */
+  private applied: SurfaceState | null = null;
 
   constructor(readonly model: SeedWaveModel) {
     registerChunk(this.chunkName, seedChunk);
@@ -32,7 +34,12 @@ export class SeedWaveView implements WaveModelView {
   }
 
   update(time: number): void {
-    applySurfaceState(this.uniforms, this.model.stateAt(time));
+    // The model keeps one state per time and parameters (a new object when either changes),
+    // and only this writes these uniforms: the state already applied is there already.
+    const state = this.model.stateAt(time);
+    if (state === this.applied) return;
+    this.applied = state;
+    applySurfaceState(this.uniforms, state);
   }
 
   dispose(): void {

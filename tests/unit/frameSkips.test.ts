@@ -1,0 +1,103 @@
+import { describe, expect, it, vi } from 'vitest';
+import { BackSide, CubeTexture, DoubleSide, FrontSide, Group, Scene, Texture, type IUniform } from 'three';
+import { OceanMaterial } from '../../src/render/oceanMaterial';
+import { BoatView } from '../../src/render/boatView';
+import { WaveBinding } from '../../src/render/waveModels/waveBinding';
+import type { WaveModelView } from '../../src/render/waveModels/waveModelView';
+import type { Submersion } from '../../src/sim/underwater';
+import type { BoatPose } from '../../src/sim/boatPose';
+import { SeedWaveView } from '../../src/render/waveModels/seedWaveView';
+import { SeedWaveModel } from '../../src/sim/seedWaveModel';
+import { defaultParams } from '../../src/sim/params';
+
+/**
+ * The update step's setters that skip a frame's repeat of the last frame's values
+ * (stats().cpuMs, issue 14): skipping must leave the same state as setting.
+ */
+
+function material(): OceanMaterial {
+  const view = { name: 'seed', chunkName: 'oceano_waves_test', uniforms: {} } as unknown as WaveModelView;
+  const shared = { uSunColor: { value: null } } as unknown as ConstructorParameters<typeof OceanMaterial>[3];
+  return new OceanMaterial(new WaveBinding(view), { fromAbove: new Texture(), fromBelow: new Texture() }, new CubeTexture(), shared);
+}
+
+/** What setSeenFromBelow decides, for both programs. */
+function seen(m: OceanMaterial) {
+  const defines = (x: OceanMaterial) => Object.keys(x.defines).sort().join();
+  return { side: m.side, nearSide: m.near.side, defines: defines(m), nearDefines: defines(m.near), marks: (m.uniforms.uMarkSides as IUniform<boolean>).value };
+}
+
+describe('OceanMaterial.setSeenFromBelow: the same answer again changes nothing', () => {
+  it('walks every change between the three answers and leaves each as a fresh material set once would', () => {
+    const walk: Submersion[] = ['above', 'above', 'straddling', 'straddling', 'below', 'below', 'above', 'below', 'straddling', 'above', 'straddling', 'below', 'below'];
+    const m = material();
+    let previous: Submersion | null = null;
+    for (const where of walk) {
+      const versions = [m.version, m.near.version];
+      m.setSeenFromBelow(where);
+      const fresh = material();
+      fresh.setSeenFromBelow(where);
+      expect(seen(m)).toEqual(seen(fresh));
+      expect(m.side).toBe(where === 'below' ? BackSide : where === 'above' ? FrontSide : DoubleSide);
+      // A repeat recompiles nothing (needsUpdate bumps the version).
+      if (where === previous) expect([m.version, m.near.version]).toEqual(versions);
+      previous = where;
+    }
+  });
+});
+
+describe('BoatView.setPose: the same pose again leaves the group as it is', () => {
+  const pose = (p: Partial<BoatPose>): BoatPose => ({ x: 7, y: 0.3, z: -5, heading: 0.4, pitch: 0.02, roll: -0.05, ...p });
+  const group = (scene: Scene) => scene.getObjectByName('Boat') as Group;
+
+  it('does not set a repeated pose, and sets any one coordinate that changed as a fresh view would', () => {
+    const scene = new Scene();
+    const view = new BoatView(scene);
+    view.setPose(pose({}));
+    const rotationSet = vi.spyOn(group(scene).rotation, 'set');
+    const positionSet = vi.spyOn(group(scene).position, 'set');
+    view.setPose(pose({}));
+    expect(rotationSet).not.toHaveBeenCalled();
+    expect(positionSet).not.toHaveBeenCalled();
+    for (const change of [{ x: 7.001 }, { y: 0.31 }, { z: -5.2 }, { heading: 0.41 }, { pitch: 0.03 }, { roll: -0.04 }, { heading: -0 }, { heading: 0 }]) {
+      view.setPose(pose(change));
+      const freshScene = new Scene();
+      new BoatView(freshScene).setPose(pose(change));
+      const a = group(scene);
+      const b = group(freshScene);
+      expect(a.position.toArray()).toEqual(b.position.toArray());
+      expect(a.quaternion.toArray()).toEqual(b.quaternion.toArray());
+      expect(a.rotation.toArray()).toEqual(b.rotation.toArray());
+      expect(Object.is(a.rotation.y, b.rotation.y)).toBe(true);
+    }
+  });
+});
+
+describe('SeedWaveView.update: the state already applied is not applied again', () => {
+  /** The per-frame uniforms' values, as plain numbers (vectors as arrays; the heightmap textures left out). */
+  const values = (view: SeedWaveView) =>
+    Object.fromEntries(
+      Object.entries(view.uniforms)
+        .filter(([, u]) => !(u.value instanceof Texture))
+        .map(([k, u]) => [k, u.value && typeof u.value === 'object' && 'toArray' in u.value ? (u.value as { toArray(): number[] }).toArray() : u.value]),
+    );
+
+  it('repeats set nothing; a new time or new parameters at the same time give a fresh view\'s uniforms', () => {
+    const params = defaultParams();
+    const view = new SeedWaveView(new SeedWaveModel(params));
+    view.update(10);
+    const offset = vi.spyOn(view.uniforms.uRippleOffset.value as { fromArray(a: number[]): unknown }, 'fromArray');
+    view.update(10);
+    expect(offset).not.toHaveBeenCalled();
+    const steps: [number, Partial<typeof params>][] = [[10, { swellAmplitude: 0.9 }], [10, { rippleStrength: 0.2 }], [10.5, {}], [10.5, {}], [10.5, { rippleBlendSpeed: 0.3 }]];
+    let current = params;
+    for (const [time, change] of steps) {
+      current = { ...current, ...change };
+      view.setParams(current);
+      view.update(time);
+      const fresh = new SeedWaveView(new SeedWaveModel(current));
+      fresh.update(time);
+      expect(values(view)).toEqual(values(fresh));
+    }
+  });
+});
