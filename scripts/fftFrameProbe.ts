@@ -12,47 +12,15 @@
  * time over the rounds: on a loaded machine one round's figure moves by 15 % from minute to minute.
  * Run after `vite build`: npx tsx scripts/fftFrameProbe.ts [frames] [queries, ;-separated]
  */
-import { readdirSync, readFileSync } from 'node:fs';
 import { openOcean, startHarness } from './browserHarness';
+import { cpuByKind } from './procCpu';
 
 const frames = Number(process.argv[2] ?? 8);
 const queries = (process.argv[3] ?? 't=10;t=10&waves=fft').split(';');
 const builds = ['', ...(process.env.PROBE_BUILDS ?? '').split(',').filter(Boolean).map((b) => `${b}/`)];
-const TICK_MS = 10; // USER_HZ = 100 on Linux
 const rounds = Math.max(1, Number(process.env.PROBE_ROUNDS ?? 1));
 /** Per row (build, query, paused or stepping): the GPU process's CPU ms per frame of each round. */
 const gpuByRow = new Map<string, number[]>();
-
-/** CPU ms (user + system) of every process below `root`, by kind: gpu, renderer, other. */
-function cpuByKind(root: number): Record<string, number> {
-  const parents = new Map<number, number>();
-  const ticks = new Map<number, number>();
-  for (const entry of readdirSync('/proc')) {
-    if (!/^\d+$/.test(entry)) continue;
-    try {
-      const stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
-      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-      parents.set(Number(entry), Number(fields[1]));
-      ticks.set(Number(entry), Number(fields[11]) + Number(fields[12]));
-    } catch {
-      // the process ended meanwhile
-    }
-  }
-  const below = (pid: number): boolean => pid === root || (parents.has(pid) && pid !== 1 && below(parents.get(pid) as number));
-  const out: Record<string, number> = { gpu: 0, renderer: 0, other: 0 };
-  for (const [pid, t] of ticks) {
-    if (!below(pid)) continue;
-    let cmd = '';
-    try {
-      cmd = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
-    } catch {
-      continue;
-    }
-    const kind = cmd.includes('--type=gpu-process') ? 'gpu' : cmd.includes('--type=renderer') ? 'renderer' : 'other';
-    out[kind] += t * TICK_MS;
-  }
-  return out;
-}
 
 const harness = await startHarness();
 const root = harness.browser.process()?.pid;
