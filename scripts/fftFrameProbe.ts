@@ -10,6 +10,10 @@
  * dist/ (vite build --outDir dist/NAME), to compare variants in one run; `PROBE_ROUNDS=k` probes
  * every build k times, interleaved (A B A B …), and ends with each row's median GPU-process CPU
  * time over the rounds: on a loaded machine one round's figure moves by 15 % from minute to minute.
+ * Caveat: each setTime also asks the app's loop for a redraw, drawn at the next animation frame
+ * after the evaluate, so a stepping row's CPU figures may carry one more frame than they divide
+ * by (+1/frames of a frame: measured +60 to +170 ms GPU CPU on the default view); fftGapProbe.ts
+ * divides by the frames the app drew.
  * Run after `vite build`: npx tsx scripts/fftFrameProbe.ts [frames] [queries, ;-separated]
  */
 import { openOcean, startHarness } from './browserHarness';
