@@ -1,7 +1,7 @@
 /**
  * Where the FFT view's frame goes beyond its profiled passes (issue 12; a benchmark: prints
- * numbers, asserts nothing). In ONE page per build and view it interleaves blocks of frames,
- * so a load that drifts from minute to minute moves every kind alike:
+ * numbers, asserts nothing). With one page per build and view open at once, it goes round them
+ * in blocks of frames, so a load that drifts from minute to minute moves every build and kind alike:
  *   paused:   renderFrame at an unchanged time (update + scene; the bench's default row),
  *   stepping: the clock moved 1/60 s before each renderFrame (the bench's FFT row),
  *   draw:     three's render of the scene alone, no update (what passTimings calls 'scene'),
@@ -18,6 +18,7 @@
  * `PROBE_KINDS=draw,stepping` probes only those kinds.
  * Run after `vite build`: npx tsx scripts/fftGapProbe.ts [framesPerBlock] [rounds] [queries, ;-separated]
  */
+import type { Page } from 'puppeteer';
 import { openOcean, startHarness } from './browserHarness';
 import { cpuByKind } from './procCpu';
 
@@ -35,66 +36,69 @@ const harness = await startHarness();
 const root = harness.browser.process()?.pid;
 if (root === undefined) throw new Error('No browser process to measure.');
 try {
+  // Every build's page is opened first and the rounds go round all of them, so a load that
+  // drifts between minutes moves every build alike (pages probed one after another differed
+  // by 30 % on the same shader).
+  const pages: { page: Page; name: string }[] = [];
   for (const build of builds) {
-    for (const query of queries) {
-      const { page } = await openOcean(harness, query, 1280, 720, build, 600_000);
-      // A string, not a function: tsx would wrap named helpers in a `__name` the page lacks.
-      const block = (kind: string, count: number) => page.evaluate(`(async () => {
-        const o = window.oceano;
-        o.pause();
-        const gl = o.three.renderer.getContext();
-        const pixel = new Uint8Array(4);
-        const times = [];
-        const passes = {};
-        const drawn = o.activity().framesDrawn;
-        for (let i = 0; i < ${count}; i++) {
-          const start = performance.now();
-          if ('${kind}' === 'draw') {
-            o.three.renderer.render(o.three.scene, o.three.camera);
-            gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-          } else if ('${kind}' === 'profile') {
-            let sum = 0;
-            for (const p of o.debug.passTimings()) {
-              (passes[p.name] ??= []).push(p.ms);
-              sum += p.ms;
-            }
-            times.push(sum);
-            continue;
-          } else {
-            if ('${kind}' === 'stepping') o.setTime(10 + (window.__gapFrame = (window.__gapFrame ?? 0) + 1) / 60);
-            o.renderFrame();
-          }
-          times.push(performance.now() - start);
-        }
-        // The redraw setTime asked the loop for, then a GPU sync: its cost lands in this block.
-        await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    for (const query of queries) pages.push({ page: (await openOcean(harness, query, 1280, 720, build, 600_000)).page, name: `${build || 'dist/'} ${query}` });
+  }
+  const block = (page: Page, kind: string, count: number) => page.evaluate(`(async () => {
+    const o = window.oceano;
+    o.pause();
+    const gl = o.three.renderer.getContext();
+    const pixel = new Uint8Array(4);
+    const times = [];
+    const passes = {};
+    const drawn = o.activity().framesDrawn;
+    for (let i = 0; i < ${count}; i++) {
+      const start = performance.now();
+      if ('${kind}' === 'draw') {
+        o.three.renderer.render(o.three.scene, o.three.camera);
         gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-        const frames = Math.max(${count}, o.activity().framesDrawn - drawn);
-        times.sort((a, b) => a - b);
-        return { median: times[Math.floor(times.length / 2)], frames, passes };
-      })()`) as Promise<{ median: number; frames: number; passes: Record<string, number[]> }>;
-      for (const kind of kinds) await block(kind, 1);
-      for (let round = 0; round < rounds; round++) {
-        for (const kind of kinds) {
-          // One untimed frame first: the first stepping frame after a paused block is a jump (no Worker), as is the reverse.
-          await block(kind, 1);
-          const before = cpuByKind(root);
-          const { median, frames: drawn, passes } = await block(kind, frames);
-          const after = cpuByKind(root);
-          const row = `${build || 'dist/'} ${query} ${kind}`;
-          const r = rows.get(row) ?? { wall: [], gpu: [], renderer: [] };
-          r.wall.push(median);
-          r.gpu.push((after.gpu - before.gpu) / drawn);
-          r.renderer.push((after.renderer - before.renderer) / drawn);
-          rows.set(row, r);
-          const p = passesByRow.get(row) ?? {};
-          for (const [name, ms] of Object.entries(passes)) (p[name] ??= []).push(...ms);
-          passesByRow.set(row, p);
+      } else if ('${kind}' === 'profile') {
+        let sum = 0;
+        for (const p of o.debug.passTimings()) {
+          (passes[p.name] ??= []).push(p.ms);
+          sum += p.ms;
         }
+        times.push(sum);
+        continue;
+      } else {
+        if ('${kind}' === 'stepping') o.setTime(10 + (window.__gapFrame = (window.__gapFrame ?? 0) + 1) / 60);
+        o.renderFrame();
       }
-      await page.close();
+      times.push(performance.now() - start);
+    }
+    // The redraw setTime asked the loop for, then a GPU sync: its cost lands in this block.
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    const frames = Math.max(${count}, o.activity().framesDrawn - drawn);
+    times.sort((a, b) => a - b);
+    return { median: times[Math.floor(times.length / 2)], frames, passes };
+  })()`) as Promise<{ median: number; frames: number; passes: Record<string, number[]> }>;
+  for (const { page } of pages) for (const kind of kinds) await block(page, kind, 1);
+  for (let round = 0; round < rounds; round++) {
+    for (const { page, name } of pages) {
+      for (const kind of kinds) {
+        // One untimed frame first: the first stepping frame after a paused block is a jump (no Worker), as is the reverse.
+        await block(page, kind, 1);
+        const before = cpuByKind(root);
+        const { median, frames: drawn, passes } = await block(page, kind, frames);
+        const after = cpuByKind(root);
+        const row = `${name} ${kind}`;
+        const r = rows.get(row) ?? { wall: [], gpu: [], renderer: [] };
+        r.wall.push(median);
+        r.gpu.push((after.gpu - before.gpu) / drawn);
+        r.renderer.push((after.renderer - before.renderer) / drawn);
+        rows.set(row, r);
+        const p = passesByRow.get(row) ?? {};
+        for (const [pass, ms] of Object.entries(passes)) (p[pass] ??= []).push(...ms);
+        passesByRow.set(row, p);
+      }
     }
   }
+  for (const { page } of pages) await page.close();
   const med = (v: number[]) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
   console.log(`median of ${rounds} interleaved blocks of ${frames} frames (each block's figure in brackets):`);
   for (const [row, r] of rows) {
