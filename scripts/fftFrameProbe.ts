@@ -10,49 +10,21 @@
  * dist/ (vite build --outDir dist/NAME), to compare variants in one run; `PROBE_ROUNDS=k` probes
  * every build k times, interleaved (A B A B …), and ends with each row's median GPU-process CPU
  * time over the rounds: on a loaded machine one round's figure moves by 15 % from minute to minute.
+ * Caveat: each setTime also asks the app's loop for a redraw, drawn at the next animation frame
+ * after the evaluate, so a stepping row's CPU figures may carry one more frame than they divide
+ * by (+1/frames of a frame: measured +60 to +170 ms GPU CPU on the default view); fftGapProbe.ts
+ * divides by the frames the app drew.
  * Run after `vite build`: npx tsx scripts/fftFrameProbe.ts [frames] [queries, ;-separated]
  */
-import { readdirSync, readFileSync } from 'node:fs';
 import { openOcean, startHarness } from './browserHarness';
+import { cpuByKind } from './procCpu';
 
 const frames = Number(process.argv[2] ?? 8);
 const queries = (process.argv[3] ?? 't=10;t=10&waves=fft').split(';');
 const builds = ['', ...(process.env.PROBE_BUILDS ?? '').split(',').filter(Boolean).map((b) => `${b}/`)];
-const TICK_MS = 10; // USER_HZ = 100 on Linux
 const rounds = Math.max(1, Number(process.env.PROBE_ROUNDS ?? 1));
 /** Per row (build, query, paused or stepping): the GPU process's CPU ms per frame of each round. */
 const gpuByRow = new Map<string, number[]>();
-
-/** CPU ms (user + system) of every process below `root`, by kind: gpu, renderer, other. */
-function cpuByKind(root: number): Record<string, number> {
-  const parents = new Map<number, number>();
-  const ticks = new Map<number, number>();
-  for (const entry of readdirSync('/proc')) {
-    if (!/^\d+$/.test(entry)) continue;
-    try {
-      const stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
-      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-      parents.set(Number(entry), Number(fields[1]));
-      ticks.set(Number(entry), Number(fields[11]) + Number(fields[12]));
-    } catch {
-      // the process ended meanwhile
-    }
-  }
-  const below = (pid: number): boolean => pid === root || (parents.has(pid) && pid !== 1 && below(parents.get(pid) as number));
-  const out: Record<string, number> = { gpu: 0, renderer: 0, other: 0 };
-  for (const [pid, t] of ticks) {
-    if (!below(pid)) continue;
-    let cmd = '';
-    try {
-      cmd = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
-    } catch {
-      continue;
-    }
-    const kind = cmd.includes('--type=gpu-process') ? 'gpu' : cmd.includes('--type=renderer') ? 'renderer' : 'other';
-    out[kind] += t * TICK_MS;
-  }
-  return out;
-}
 
 const harness = await startHarness();
 const root = harness.browser.process()?.pid;
