@@ -12,7 +12,7 @@ import { cpus, loadavg } from 'node:os';
 import puppeteer, { type Browser } from 'puppeteer';
 import { preview, type PreviewServer } from 'vite';
 import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
-import { openOcean, type Harness } from './browserHarness';
+import { COOP_COEP, openOcean, type Harness } from './browserHarness';
 import { scriptSizes, type ScriptSizes } from './distScripts';
 import { median, percentile } from '../src/sim/sampleStatistics';
 import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
@@ -39,7 +39,6 @@ const TARGETS = { ratio: 20, cpuMs: 0.1, twinMs: 0.1, ttffMs: 800, pageKB: 200, 
 const TWIN_FRAMES = 30;
 // A page load on a machine shared by several jobs can take minutes; puppeteer's 30 s is too short.
 const PAGE_TIMEOUT_MS = 300_000;
-const COOP_COEP = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
 
 interface Timing {
   median: number;

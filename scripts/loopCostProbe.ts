@@ -10,9 +10,8 @@
  *   PROBE_BUILDS=NAME npx tsx scripts/loopCostProbe.ts [blocks] ["query;query"]
  */
 import { loadavg } from 'node:os';
-import puppeteer, { type Page } from 'puppeteer';
-import { preview } from 'vite';
-import { BROWSER_ARGS, findBrowser, openOcean, type Harness } from './browserHarness';
+import type { Page } from 'puppeteer';
+import { openOcean, startIsolatedHarness } from './browserHarness';
 
 const blocks = Number(process.argv[2] ?? 4);
 const queries = (process.argv[3] ?? 't=10&waves=fft;t=10').split(';');
@@ -21,13 +20,7 @@ const builds = [...(process.env.PROBE_ROOT === '0' ? [] : ['']), ...(process.env
 const BLOCK = 30;
 // PROBE_SIZE=640x360: a smaller canvas, for a loaded machine (the update step and the twin do not depend on it).
 const [WIDTH, HEIGHT] = (process.env.PROBE_SIZE ?? '1280x720').split('x').map(Number);
-const COOP_COEP = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
-
-const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false, headers: COOP_COEP }, logLevel: 'error' });
-const address = server.httpServer.address();
-if (!address || typeof address === 'string') throw new Error('No TCP address.');
-const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true, protocolTimeout: 3_600_000 });
-const harness: Harness = { browser, baseUrl: `http://127.0.0.1:${address.port}/`, close: async () => undefined };
+const harness = await startIsolatedHarness();
 
 /** Plays the loop for one block of frames; then the stats of exactly those frames. */
 const loopBlock = (page: Page) =>
@@ -82,6 +75,5 @@ try {
   }
   console.log(`load average at end: ${loadavg().map((l) => l.toFixed(2)).join(' ')}`);
 } finally {
-  await browser.close();
-  await server.close();
+  await harness.close();
 }

@@ -10,20 +10,13 @@
  * event.data, adopting the fields, and posting the next request.
  */
 import { loadavg } from 'node:os';
-import puppeteer from 'puppeteer';
-import { preview } from 'vite';
-import { BROWSER_ARGS, findBrowser, openOcean, type Harness } from './browserHarness';
+import { openOcean, startIsolatedHarness } from './browserHarness';
 
 const blocks = Number(process.argv[2] ?? 3);
 const build = `${process.env.PROBE_BUILD ?? 'instr'}/`;
 const query = process.env.PROBE_QUERY ?? 't=10&waves=fft';
 const [WIDTH, HEIGHT] = (process.env.PROBE_SIZE ?? '1280x720').split('x').map(Number);
-const COOP_COEP = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
-const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false, headers: COOP_COEP }, logLevel: 'error' });
-const address = server.httpServer.address();
-if (!address || typeof address === 'string') throw new Error('No TCP address.');
-const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true, protocolTimeout: 3_600_000 });
-const harness: Harness = { browser, baseUrl: `http://127.0.0.1:${address.port}/`, close: async () => undefined };
+const harness = await startIsolatedHarness();
 try {
   console.log(`load ${loadavg().map((l) => l.toFixed(2)).join(' ')}`);
   const { page } = await openOcean(harness, query, WIDTH, HEIGHT, build, 600_000);
@@ -47,6 +40,5 @@ try {
   }
   console.log(`load ${loadavg().map((l) => l.toFixed(2)).join(' ')}`);
 } finally {
-  await browser.close();
-  await server.close();
+  await harness.close();
 }
