@@ -9,6 +9,7 @@ import { FftFoam } from '../fft/fftFoam';
 import { GpuFftOcean } from '../fft/gpuFft';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
 import { WorkerFieldSource } from './fftFieldsSource';
+import { SharedFieldSource, sharedMemoryAvailable } from './sharedFieldSource';
 import type { HeightmapLayout, WaveModelView } from './waveModelView';
 import type { PassTiming } from '../passTiming';
 
@@ -94,11 +95,15 @@ export class FftWaveView implements WaveModelView {
     this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
+    // Cross-origin isolated: fields over shared memory, no message per frame (issue 12's
+    // twinMs); elsewhere the Worker's messages, as before.
     model.attachSource(
-      new WorkerFieldSource(
-        (reply) => model.receive(reply.sea, reply.time, reply.fields),
-        (ms) => model.addMainThreadMs(ms),
-      ),
+      sharedMemoryAvailable()
+        ? new SharedFieldSource((sea, time, fields) => model.receive(sea, time, fields))
+        : new WorkerFieldSource(
+            (reply) => model.receive(reply.sea, reply.time, reply.fields),
+            (ms) => model.addMainThreadMs(ms),
+          ),
     );
   }
 
