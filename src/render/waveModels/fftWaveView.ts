@@ -10,6 +10,16 @@ import { GpuFftOcean } from '../fft/gpuFft';
 import { registerChunk, registerShaderChunks } from '../shaderChunks';
 import { WorkerFieldSource } from './fftFieldsSource';
 import { SharedFieldSource, sharedMemoryAvailable } from './sharedFieldSource';
+
+/**
+ * Whether a cross-origin isolated page uses SharedFieldSource. Off: built and unit-tested, but
+ * in the browser (scripts/loopCostProbe.ts, isolated, 4 blocks of 30 looped frames, load
+ * 0.3 -> 2.3) it measured twinMs 28.95 ms (blocks 42.1, 28.4, 24.5, 20.8) against 0.359 for the
+ * messages. Instrumented: publications are adopted (deliveries accepted, slots rotate) and
+ * only two frames computed FFTs on the main thread, and float64 reads of shared memory cost
+ * no more than unshared ones; where the rest of the time goes was not found.
+ */
+const USE_SHARED_FIELDS = false;
 import type { HeightmapLayout, WaveModelView } from './waveModelView';
 import type { PassTiming } from '../passTiming';
 
@@ -96,9 +106,9 @@ export class FftWaveView implements WaveModelView {
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
     // Cross-origin isolated: fields over shared memory, no message per frame (issue 12's
-    // twinMs); elsewhere the Worker's messages, as before.
+    // twinMs); elsewhere the Worker's messages, as before. OFF for now: see USE_SHARED_FIELDS.
     model.attachSource(
-      sharedMemoryAvailable()
+      USE_SHARED_FIELDS && sharedMemoryAvailable()
         ? new SharedFieldSource((sea, time, fields) => model.receive(sea, time, fields))
         : new WorkerFieldSource(
             (reply) => model.receive(reply.sea, reply.time, reply.fields),
