@@ -128,8 +128,11 @@ export class FftWaveModel implements LiveWaveModel {
     if (time === held) return time;
     const playing = !exact && this.source !== null && Math.abs(time - previous) <= MAX_FRAME_STEP && Math.abs(time - held) <= MAX_LAG_SECONDS;
     if (playing) {
+      // A source may deliver inside request (SharedFieldSource adopts the newest published
+      // fields there): answer from the fields held after it, or the question would ask the
+      // ocean for the older time and recompute every cascade's FFTs on this thread.
       this.source?.request(this.sea, time);
-      return held;
+      return this.ocean.fieldsTime;
     }
     this.ocean.setTime(time);
     return time;

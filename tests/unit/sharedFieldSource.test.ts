@@ -67,3 +67,27 @@ describe('SharedFieldSource: per frame no message; the newest publication adopte
     model.dispose();
   });
 });
+
+describe('FftWaveModel with a source that delivers inside request', () => {
+  it('answers from the delivered fields, computing no FFT on the calling thread', () => {
+    const model = new FftWaveModel({ ...defaultParams(), fftSize: '64' as const, windSpeed: 12 });
+    const worker = new FftWaveModel({ ...defaultParams(), fftSize: '64' as const, windSpeed: 12 });
+    model.height(1, 2, 10); // the first frame: computed here
+    model.attachSource({
+      request: (sea, time) => {
+        worker.ocean.setTime(time - 0.016);
+        model.receive(sea, time - 0.016, worker.ocean.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));
+      },
+      dispose: () => {},
+    });
+    let computed = 0;
+    const setTime = model.ocean.setTime.bind(model.ocean);
+    model.ocean.setTime = (t: number) => {
+      if (t !== model.ocean.fieldsTime) computed++;
+      setTime(t);
+    };
+    for (let frame = 1; frame <= 5; frame++) model.height(1, 2, 10 + frame * 0.016);
+    expect(model.ocean.fieldsTime).toBeCloseTo(10 + 4 * 0.016, 9);
+    expect(computed).toBe(0);
+  });
+});
