@@ -12,14 +12,12 @@ import { WorkerFieldSource } from './fftFieldsSource';
 import { SharedFieldSource, sharedMemoryAvailable } from './sharedFieldSource';
 
 /**
- * Whether a cross-origin isolated page uses SharedFieldSource. Off: built and unit-tested, but
- * in the browser (scripts/loopCostProbe.ts, isolated, 4 blocks of 30 looped frames, load
- * 0.3 -> 2.3) it measured twinMs 28.95 ms (blocks 42.1, 28.4, 24.5, 20.8) against 0.359 for the
- * messages. Instrumented: publications are adopted (deliveries accepted, slots rotate) and
- * only two frames computed FFTs on the main thread, and float64 reads of shared memory cost
- * no more than unshared ones; where the rest of the time goes was not found.
+ * Whether a cross-origin isolated page uses SharedFieldSource (a constant, to turn it off for
+ * an A/B). Measured (scripts/loopCostProbe.ts, isolated, 4 interleaved blocks of 30 looped
+ * frames, t = 10, load 1.75 -> 2.30): twinMs mean 0.132 (blocks 0.209 0.105 0.136 0.079)
+ * against 0.353 (0.466 0.346 0.384 0.218) for the messages.
  */
-const USE_SHARED_FIELDS = false;
+const USE_SHARED_FIELDS = true;
 import type { HeightmapLayout, WaveModelView } from './waveModelView';
 import type { PassTiming } from '../passTiming';
 
@@ -106,7 +104,7 @@ export class FftWaveView implements WaveModelView {
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
     // Cross-origin isolated: fields over shared memory, no message per frame (issue 12's
-    // twinMs); elsewhere the Worker's messages, as before. OFF for now: see USE_SHARED_FIELDS.
+    // twinMs); elsewhere the Worker's messages, as before (USE_SHARED_FIELDS).
     model.attachSource(
       USE_SHARED_FIELDS && sharedMemoryAvailable()
         ? new SharedFieldSource((sea, time, fields) => model.receive(sea, time, fields))
