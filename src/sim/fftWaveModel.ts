@@ -105,14 +105,19 @@ export class FftWaveModel implements LiveWaveModel {
     this.source = source;
   }
 
-  /** Fields a FieldSource computed for `sea` at `time`; ignored if the sea changed meanwhile or they are older than those held. */
-  receive(sea: SeaState, time: number, fields: CascadeFields[]): void {
+  /**
+   * Fields a FieldSource computed for `sea` at `time`; ignored if the sea changed meanwhile or
+   * they are older than those held. Returns whether they were adopted (a shared-memory source
+   * keeps a slot marked read only while the model reads it: SharedFieldSource).
+   */
+  receive(sea: SeaState, time: number, fields: CascadeFields[]): boolean {
     const held = this.ocean.fieldsTime;
     const refused = seaKey(sea) !== this.key || (!Number.isNaN(held) && time <= held);
     // The arrays no longer read (the reply refused, or the fields it replaces) go back to the
     // source to be filled again; the model keeps no reference to them.
     const unread = refused ? fields : this.ocean.adoptFields(time, fields);
     this.source?.recycle?.(unread);
+    return !refused;
   }
 
   /** The time whose fields answer a question about `time` (see the class comment). */
@@ -123,8 +128,11 @@ export class FftWaveModel implements LiveWaveModel {
     if (time === held) return time;
     const playing = !exact && this.source !== null && Math.abs(time - previous) <= MAX_FRAME_STEP && Math.abs(time - held) <= MAX_LAG_SECONDS;
     if (playing) {
+      // A source may deliver inside request (SharedFieldSource adopts the newest published
+      // fields there): answer from the fields held after it, or the question would ask the
+      // ocean for the older time and recompute every cascade's FFTs on this thread.
       this.source?.request(this.sea, time);
-      return held;
+      return this.ocean.fieldsTime;
     }
     this.ocean.setTime(time);
     return time;

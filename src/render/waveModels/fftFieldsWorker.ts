@@ -7,10 +7,11 @@
  */
 import { FftOcean } from '../../sim/fftOcean';
 import { seaKey } from '../../sim/fftWaveModel';
+import { chooseWriteSlot, controlViews, fieldsOn, publish, readRequest, type ChannelMessage, type SharedControl } from '../../sim/sharedFieldsProtocol';
 import { copyFields, fieldBuffers, type FieldsReply, type FieldsRequest } from './fftFieldsSource';
 
 interface WorkerScope {
-  onmessage: ((event: MessageEvent<FieldsRequest>) => void) | null;
+  onmessage: ((event: MessageEvent<FieldsRequest | ChannelMessage>) => void) | null;
   postMessage(message: FieldsReply, transfer: Transferable[]): void;
 }
 
@@ -33,22 +34,73 @@ let scheduled = false;
  */
 const REPLY_DELAY_MS = 2;
 
-function answer(): void {
-  scheduled = false;
-  if (!next) return;
-  const { sea, time, spare } = next;
-  next = null;
+function oceanAt(sea: FftOcean['setup']['sea'], time: number): FftOcean {
   const k = seaKey(sea);
   if (!ocean || k !== key) {
     ocean = new FftOcean(sea);
     key = k;
   }
   ocean.setTime(time);
+  return ocean;
+}
+
+function answer(): void {
+  scheduled = false;
+  if (!next) return;
+  const { sea, time, spare } = next;
+  next = null;
+  const ocean = oceanAt(sea, time);
   const fields = copyFields(ocean.fields, spare);
   scope.postMessage({ sea, time, fields }, fieldBuffers(fields));
 }
 
+/**
+ * The shared-memory channel (SharedFieldSource, a cross-origin isolated page): no message per
+ * frame; the Worker polls the requested time on its own timer, POLL_MS while requests come,
+ * IDLE_POLL_MS after IDLE_AFTER_MS without one (a paused page). Polling rather than being
+ * notified keeps the main thread from waking the Worker onto its own core (REPLY_DELAY_MS).
+ */
+const POLL_MS = 2;
+const IDLE_POLL_MS = 50;
+const IDLE_AFTER_MS = 500;
+let channel: { sea: ChannelMessage['sea']; generation: number; control: SharedControl; slots: ReturnType<typeof fieldsOn>[]; seen: number } | null = null;
+let polling = false;
+let lastRequestAt = 0;
+
+function poll(): void {
+  const c = channel;
+  if (!c) {
+    polling = false;
+    return;
+  }
+  const request = readRequest(c.control, c.seen);
+  if (request) {
+    c.seen = request.seq;
+    lastRequestAt = performance.now();
+    const fields = oceanAt(c.sea, request.time).fields;
+    const slot = chooseWriteSlot(c.control);
+    copyFields(fields, c.slots[slot]);
+    publish(c.control, slot, request.time, c.generation);
+  }
+  setTimeout(poll, performance.now() - lastRequestAt > IDLE_AFTER_MS ? IDLE_POLL_MS : POLL_MS);
+}
+
+function openChannel(message: ChannelMessage): void {
+  const n = message.sea.fftSize;
+  const cascades = message.slots[0].byteLength / (2 * 4 * n * n * 8);
+  channel = { sea: message.sea, generation: message.generation, control: controlViews(message.control), slots: message.slots.map((s) => fieldsOn(s, cascades, n)), seen: 0 };
+  lastRequestAt = performance.now();
+  if (!polling) {
+    polling = true;
+    setTimeout(poll, POLL_MS);
+  }
+}
+
 scope.onmessage = (event) => {
+  if ('kind' in event.data) {
+    openChannel(event.data);
+    return;
+  }
   // A newer request replaces one not yet started (keeping the arrays the older one brought).
   next = { ...event.data, spare: event.data.spare ?? next?.spare ?? null };
   if (scheduled) return;
