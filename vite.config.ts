@@ -23,6 +23,16 @@ export const CONTENT_SECURITY_POLICY = [
   "form-action 'none'",
 ].join('; ');
 
+/**
+ * Headers that make the page cross-origin isolated (COOP + COEP), sent by `npm start` and
+ * `vite preview`: SharedArrayBuffer is then available, and the FFT twin's Worker hands its
+ * fields over shared memory with no message per frame (src/render/waveModels/
+ * sharedFieldSource.ts; issue 12's 0.1 ms budget). Everything the page loads is its own
+ * origin's, so require-corp refuses nothing. A host that sends no such headers (a static copy
+ * of dist/ on a course site) still runs the page: the twin then uses messages.
+ */
+export const CROSS_ORIGIN_ISOLATION = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
+
 function contentSecurityPolicy(): Plugin {
   return {
     name: 'oceano-content-security-policy',
@@ -87,8 +97,8 @@ export default defineConfig({
       },
     },
   },
-  server: { host: '127.0.0.1', port: 5173 },
-  preview: { host: '127.0.0.1', port: 4173 },
+  server: { host: '127.0.0.1', port: 5173, headers: CROSS_ORIGIN_ISOLATION },
+  preview: { host: '127.0.0.1', port: 4173, headers: CROSS_ORIGIN_ISOLATION },
   test: {
     projects: [
       {

@@ -14,7 +14,7 @@ const FRAMES = 240;
 for (const windSpeed of [10, 20]) {
   const params = { ...defaultParams(), waves: 'fft' as const, windSpeed };
   const model = new FftWaveModel(params);
-  const source: FieldSource = { request: () => {}, dispose: () => {} };
+  const source: FieldSource = { transport: 'messages', request: () => {}, dispose: () => {} };
   model.attachSource(source);
   const worker = new FftOcean(model.sea);
   const replies = Array.from({ length: FRAMES }, (_, f) => {

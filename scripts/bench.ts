@@ -12,7 +12,8 @@ import { cpus, loadavg } from 'node:os';
 import puppeteer, { type Browser } from 'puppeteer';
 import { preview, type PreviewServer } from 'vite';
 import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
-import { COOP_COEP, openOcean, type Harness } from './browserHarness';
+import { openOcean, type Harness } from './browserHarness';
+import { CROSS_ORIGIN_ISOLATION } from '../vite.config';
 import { scriptSizes, type ScriptSizes } from './distScripts';
 import { median, percentile } from '../src/sim/sampleStatistics';
 import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
@@ -68,20 +69,12 @@ const medianOfEach = (samples: Record<string, number[]>): Record<string, number>
 const timing = (samples: number[]): Timing => ({ median: round(median(samples), 3), p95: round(percentile(samples, 95), 3) });
 
 /**
- * Cross-origin isolation (COOP + COEP) makes Chromium's performance.now() fine-grained
- * (microseconds instead of 0.1 ms), which a per-frame CPU time of a fraction of a
- * millisecond needs.
+ * The preview server is cross-origin isolated (vite.config.ts's CROSS_ORIGIN_ISOLATION, as
+ * `npm start`), which also makes Chromium's performance.now() fine-grained (microseconds
+ * instead of 0.1 ms), as a per-frame CPU time of a fraction of a millisecond needs.
  */
 async function startServer(): Promise<{ server: PreviewServer; baseUrl: string }> {
-  const server = await preview({
-    preview: {
-      port: 0,
-      host: '127.0.0.1',
-      strictPort: false,
-      headers: COOP_COEP,
-    },
-    logLevel: 'error',
-  });
+  const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'error' });
   const address = server.httpServer.address();
   if (!address || typeof address === 'string') throw new Error('The preview server has no TCP address.');
   return { server, baseUrl: `http://127.0.0.1:${address.port}/` };
@@ -138,7 +131,7 @@ async function main(): Promise<void> {
   const loadAverage = round(loadavg()[0], 1);
   const sizes = scriptSizes('dist');
   const { server, baseUrl } = await startServer();
-  const example = await serveThreejsOceanExample(COOP_COEP);
+  const example = await serveThreejsOceanExample(CROSS_ORIGIN_ISOLATION);
   const exampleBaseUrl = example.baseUrl;
   const { browser, backend, gpuStartupMs } = await launchBrowser();
   const harness: Harness = { browser, baseUrl, close: async () => undefined };

@@ -31,6 +31,8 @@ export interface Harness {
  * WebSocket endpoint), drives that browser instead: the test suite shares one browser
  * across its files so that its GPU process keeps the shader programs it has compiled.
  * Closing a harness that connected closes the pages it left open and disconnects.
+ * The preview server sends vite.config.ts's CROSS_ORIGIN_ISOLATION headers, as `npm start`
+ * does: the tests see the page a user of the app's own servers gets.
  */
 export async function startHarness(args: string[] = BROWSER_ARGS, connectTo?: string): Promise<Harness> {
   const server: PreviewServer = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'error' });
@@ -60,16 +62,14 @@ export async function startHarness(args: string[] = BROWSER_ARGS, connectTo?: st
   };
 }
 
-/** Headers that make a page cross-origin isolated: fine-grained timers (5 µs, not 100 µs) for the probes and the bench. */
-export const COOP_COEP = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
-
 /**
- * A preview server sending COOP_COEP and a fresh browser with an hour's protocol timeout: the
- * harness of the timing probes (scripts/loopCostProbe.ts, twinBreakdown.ts), whose pages run
- * long evaluations. Closing it closes both.
+ * A preview server (cross-origin isolated, as every preview: vite.config.ts) and a fresh
+ * browser with an hour's protocol timeout: the harness of the timing probes
+ * (scripts/loopCostProbe.ts, twinBreakdown.ts), whose pages run long evaluations. Closing it
+ * closes both.
  */
-export async function startIsolatedHarness(): Promise<Harness> {
-  const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false, headers: COOP_COEP }, logLevel: 'error' });
+export async function startLongHarness(): Promise<Harness> {
+  const server = await preview({ preview: { port: 0, host: '127.0.0.1', strictPort: false }, logLevel: 'error' });
   const address = server.httpServer.address();
   if (!address || typeof address === 'string') throw new Error('The preview server has no TCP address.');
   const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true, protocolTimeout: 3_600_000 });

@@ -11,7 +11,7 @@
  */
 import { loadavg } from 'node:os';
 import type { Page } from 'puppeteer';
-import { openOcean, startIsolatedHarness } from './browserHarness';
+import { openOcean, startLongHarness } from './browserHarness';
 
 const blocks = Number(process.argv[2] ?? 4);
 const queries = (process.argv[3] ?? 't=10&waves=fft;t=10').split(';');
@@ -20,7 +20,7 @@ const builds = [...(process.env.PROBE_ROOT === '0' ? [] : ['']), ...(process.env
 const BLOCK = 30;
 // PROBE_SIZE=640x360: a smaller canvas, for a loaded machine (the update step and the twin do not depend on it).
 const [WIDTH, HEIGHT] = (process.env.PROBE_SIZE ?? '1280x720').split('x').map(Number);
-const harness = await startIsolatedHarness();
+const harness = await startLongHarness();
 
 /** Plays the loop for one block of frames; then the stats of exactly those frames. */
 const loopBlock = (page: Page) =>

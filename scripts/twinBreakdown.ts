@@ -10,13 +10,13 @@
  * event.data, adopting the fields, and posting the next request.
  */
 import { loadavg } from 'node:os';
-import { openOcean, startIsolatedHarness } from './browserHarness';
+import { openOcean, startLongHarness } from './browserHarness';
 
 const blocks = Number(process.argv[2] ?? 3);
 const build = `${process.env.PROBE_BUILD ?? 'instr'}/`;
 const query = process.env.PROBE_QUERY ?? 't=10&waves=fft';
 const [WIDTH, HEIGHT] = (process.env.PROBE_SIZE ?? '1280x720').split('x').map(Number);
-const harness = await startIsolatedHarness();
+const harness = await startLongHarness();
 try {
   console.log(`load ${loadavg().map((l) => l.toFixed(2)).join(' ')}`);
   const { page } = await openOcean(harness, query, WIDTH, HEIGHT, build, 600_000);

@@ -1,5 +1,6 @@
 import { median } from '../sim/sampleStatistics';
 import type { RenderStats } from '../render/oceanView';
+import type { TwinStatus } from '../sim/liveWaveModel';
 
 /** Frames kept for each median. */
 const FRAME_SAMPLES = 30;
@@ -21,6 +22,8 @@ export interface OceanStats extends RenderStats {
    * readings are right on average only.
    */
   twinMs: number | null;
+  /** Where the wave model's CPU twin gets its data from a Worker (how, how much, of which time); null for models without one. */
+  twin: TwinStatus | null;
   /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */
   ttffMs: number | null;
 }
@@ -71,10 +74,10 @@ export class FrameStats {
     this.firstFrameAt ??= performance.now();
   }
 
-  summary(render: RenderStats): OceanStats {
+  summary(render: RenderStats, twin: TwinStatus | null): OceanStats {
     this.timingWanted = true;
     const med = (samples: number[]) => (samples.length ? median(samples) : 0);
     const twinMs = this.twinTimes.length ? this.twinTimes.reduce((a, b) => a + b, 0) / this.twinTimes.length : null;
-    return { frameMs: med(this.frameTimes), cpuMs: med(this.updateTimes), boatMs: med(this.boatTimes), twinMs, ...render, ttffMs: this.firstFrameAt };
+    return { frameMs: med(this.frameTimes), cpuMs: med(this.updateTimes), boatMs: med(this.boatTimes), twinMs, twin, ...render, ttffMs: this.firstFrameAt };
   }
 }

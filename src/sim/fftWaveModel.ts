@@ -1,5 +1,5 @@
 import { FftOcean, type CascadeFields } from './fftOcean';
-import type { LiveWaveModel } from './liveWaveModel';
+import type { LiveWaveModel, TwinStatus, TwinTransport } from './liveWaveModel';
 import type { OceanParams } from './params';
 import { seaStateFromParams, type SeaState } from './seaState';
 import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample } from './waveModel';
@@ -24,6 +24,8 @@ export function seaKey(sea: SeaState): string {
  * the fields at t; the answer arrives later through FftWaveModel.receive.
  */
 export interface FieldSource {
+  /** How its Worker hands the fields over; null once it has none (it could not start or failed: the model then computes on the calling thread). */
+  readonly transport: TwinTransport | null;
   request(sea: SeaState, time: number): void;
   /**
    * Arrays the model no longer reads (fields it replaced or refused), for the source to fill
@@ -65,6 +67,8 @@ export class FftWaveModel implements LiveWaveModel {
   private key: string;
   private source: FieldSource | null = null;
   private lastFrameTime = Number.NaN;
+  /** Fields adopted from the source since it was attached (twinStatus). */
+  private fieldsReceived = 0;
   /** Milliseconds the calling thread spent in this model (and in work reported by addMainThreadMs) since takeMainThreadMs. */
   private busyMs = 0;
 
@@ -103,6 +107,12 @@ export class FftWaveModel implements LiveWaveModel {
   attachSource(source: FieldSource | null): void {
     this.source?.dispose();
     this.source = source;
+    this.fieldsReceived = 0;
+  }
+
+  /** See LiveWaveModel.twinStatus. */
+  twinStatus(): TwinStatus {
+    return { transport: this.source?.transport ?? null, fieldsReceived: this.fieldsReceived, fieldsTime: this.ocean.fieldsTime };
   }
 
   /**
@@ -117,6 +127,7 @@ export class FftWaveModel implements LiveWaveModel {
     // source to be filled again; the model keeps no reference to them.
     const unread = refused ? fields : this.ocean.adoptFields(time, fields);
     this.source?.recycle?.(unread);
+    if (!refused) this.fieldsReceived++;
     return !refused;
   }
 

@@ -2,6 +2,23 @@ import type { Heightmap } from './perlinNoise';
 import type { OceanParams } from './params';
 import type { WaveModel } from './waveModel';
 
+/**
+ * How a CPU twin's Worker hands its data to the main thread. 'shared-memory': on a
+ * cross-origin isolated page, no message per frame (SharedFieldSource); 'messages': anywhere
+ * else, a request and a reply per frame (WorkerFieldSource).
+ */
+export type TwinTransport = 'shared-memory' | 'messages';
+
+/** A CPU twin fed by a Worker, as seen from the main thread (stats().twin). */
+export interface TwinStatus {
+  /** How the Worker hands its data over; null when there is no Worker (the twin computes on the main thread). */
+  transport: TwinTransport | null;
+  /** Data sets adopted from the Worker since it started. */
+  fieldsReceived: number;
+  /** The time of the data the twin holds now (s); NaN before any. */
+  fieldsTime: number;
+}
+
 /** The `waves` parameter's values: one per registered model. */
 export type WavesChoice = OceanParams['waves'];
 
@@ -27,6 +44,8 @@ export interface LiveWaveModel extends WaveModel {
    * last call, counting afresh (FftWaveModel, whose twin has a ≤ 0.1 ms per frame budget).
    */
   takeMainThreadMs?(): number;
+  /** Where the model's CPU twin gets its data from a Worker: how, and how much has arrived (FftWaveModel). */
+  twinStatus?(): TwinStatus;
   /** Heightmaps the "heightmap" teaching view shows and the API returns, where the model has any. */
   readonly heightmaps?: readonly Heightmap[];
 }

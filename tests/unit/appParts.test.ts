@@ -22,26 +22,28 @@ describe('FrameStats', () => {
       return n;
     };
     expect(syncs(64)).toBe(0);
-    stats.summary(RENDER);
+    stats.summary(RENDER, null);
     expect(syncs(64)).toBe(8);
   });
 
   it('reports medians of the recorded samples (0 before any)', () => {
     const stats = new FrameStats();
-    expect(stats.summary(RENDER)).toMatchObject({ frameMs: 0, cpuMs: 0, boatMs: 0, ttffMs: null, triangles: 10 });
+    expect(stats.summary(RENDER, null)).toMatchObject({ frameMs: 0, cpuMs: 0, boatMs: 0, ttffMs: null, triangles: 10 });
     for (const ms of [5, 1, 3]) stats.recordUpdate(ms / 10, ms);
     stats.recordSyncedFrame(7);
-    expect(stats.summary(RENDER)).toMatchObject({ frameMs: 7, cpuMs: 3, boatMs: 0.3 });
+    expect(stats.summary(RENDER, null)).toMatchObject({ frameMs: 7, cpuMs: 3, boatMs: 0.3 });
   });
 
   it('reports the wave twin\'s mean main-thread ms per frame, null where the model does not measure it', () => {
     const stats = new FrameStats();
-    expect(stats.summary(RENDER).twinMs).toBeNull();
+    expect(stats.summary(RENDER, null).twinMs).toBeNull();
     for (const ms of [0, 0.1, 0, 0.3]) stats.recordTwin(ms);
-    expect(stats.summary(RENDER).twinMs).toBeCloseTo(0.1, 12);
+    expect(stats.summary(RENDER, null).twinMs).toBeCloseTo(0.1, 12);
     // Switched to a model that does not measure it: no figure, rather than the old model's.
     stats.recordTwin(null);
-    expect(stats.summary(RENDER).twinMs).toBeNull();
+    expect(stats.summary(RENDER, null).twinMs).toBeNull();
+    const twin = { transport: 'messages' as const, fieldsReceived: 3, fieldsTime: 10.05 };
+    expect(stats.summary(RENDER, twin).twin).toEqual(twin);
   });
 });
 

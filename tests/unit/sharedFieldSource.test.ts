@@ -74,6 +74,7 @@ describe('FftWaveModel with a source that delivers inside request', () => {
     const worker = new FftWaveModel({ ...defaultParams(), fftSize: '64' as const, windSpeed: 12 });
     model.height(1, 2, 10); // the first frame: computed here
     model.attachSource({
+      transport: 'shared-memory',
       request: (sea, time) => {
         worker.ocean.setTime(time - 0.016);
         model.receive(sea, time - 0.016, worker.ocean.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));

@@ -109,6 +109,10 @@ export class WorkerFieldSource implements FieldSource {
 
   private failed = false;
 
+  get transport(): 'messages' | null {
+    return this.worker && !this.failed ? 'messages' : null;
+  }
+
   request(sea: SeaState, time: number): void {
     if (!this.worker || this.failed) return;
     // A frame asks twice for its time (prefetch, then the surface questions): the Worker is

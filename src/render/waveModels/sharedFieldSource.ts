@@ -50,6 +50,10 @@ export class SharedFieldSource implements FieldSource {
     this.worker = worker;
   }
 
+  get transport(): 'shared-memory' | null {
+    return this.worker && !this.failed ? 'shared-memory' : null;
+  }
+
   request(sea: SeaState, time: number): void {
     if (!this.worker || this.failed) return;
     let channel = this.channel;

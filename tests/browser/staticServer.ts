@@ -1,0 +1,43 @@
+import { createServer, type Server } from 'node:http';
+import { readFile } from 'node:fs/promises';
+import { extname, join, normalize } from 'node:path';
+
+const DIST = join(import.meta.dirname, '..', '..', 'dist');
+const SUB_PATH = '/courses/graphics/week-3/ocean/';
+const TYPES: Record<string, string> = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+  '.png': 'image/png',
+  '.svg': 'image/svg+xml',
+  '.glb': 'model/gltf-binary',
+};
+
+/**
+ * A plain static file server that puts dist/ under a deep sub-path, as a course site would:
+ * content types and nothing else, so no cross-origin isolation headers either (the page's
+ * FFT twin then uses messages, not shared memory).
+ */
+export function serveUnderSubPath(): Promise<{ server: Server; url: string }> {
+  const server = createServer(async (request, response) => {
+    const path = decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname);
+    if (!path.startsWith(SUB_PATH)) {
+      response.writeHead(404).end();
+      return;
+    }
+    const relative = normalize(path.slice(SUB_PATH.length) || 'index.html');
+    try {
+      const body = await readFile(join(DIST, relative));
+      response.writeHead(200, { 'content-type': TYPES[extname(relative)] ?? 'application/octet-stream' }).end(body);
+    } catch {
+      response.writeHead(404).end();
+    }
+  });
+  return new Promise((resolve) =>
+    server.listen(0, '127.0.0.1', () => {
+      const address = server.address();
+      const port = typeof address === 'object' && address ? address.port : 0;
+      resolve({ server, url: `http://127.0.0.1:${port}${SUB_PATH}` });
+    }),
+  );
+}
