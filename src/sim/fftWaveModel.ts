@@ -122,7 +122,11 @@ export class FftWaveModel implements LiveWaveModel {
    */
   receive(sea: SeaState, time: number, fields: CascadeFields[]): boolean {
     const held = this.ocean.fieldsTime;
-    const refused = seaKey(sea) !== this.key || (!Number.isNaN(held) && time <= held);
+    // The source hands back the sea object it was asked about: the same object is the same sea,
+    // with no key string built (garbage every frame, so a share of the collections would start
+    // inside the twin's timed work).
+    const sameSea = sea === this.sea || seaKey(sea) === this.key;
+    const refused = !sameSea || (!Number.isNaN(held) && time <= held);
     // The arrays no longer read (the reply refused, or the fields it replaces) go back to the
     // source to be filled again; the model keeps no reference to them.
     const unread = refused ? fields : this.ocean.adoptFields(time, fields);

@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { GRAVITY, quantiseFrequency } from '../../src/sim/dispersion';
 import { InverseFft2d } from '../../src/sim/fft2d';
-import { FftOcean, fftOceanSetup } from '../../src/sim/fftOcean';
+import { FftOcean, fftOceanSetup, wrapTexel } from '../../src/sim/fftOcean';
+import { seededRandom } from '../../src/sim/integerHash';
 import { REPEAT_PERIOD, signedIndex, type SpectralTile } from '../../src/sim/initialSpectrum';
 import { windAt19_5 } from '../../src/sim/piersonMoskowitz';
 import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/seaState';
@@ -222,6 +223,21 @@ describe('the CPU twin', { timeout: 120_000 }, () => {
         expect(Math.abs(f.displacement[i + 1])).toBeLessThanOrEqual(vertical);
         expect(Math.max(Math.abs(f.displacement[i]), Math.abs(f.displacement[i + 2]))).toBeLessThanOrEqual(horizontal);
       }
+    }
+  });
+});
+
+describe('wrapTexel', () => {
+  // Control: i % n alone (negative for negative i) fails.
+  it('is i mod n in [0, n) for integers of either sign, inside int32 and beyond it', () => {
+    const random = seededRandom(1122);
+    for (const n of [64, 128, 256]) {
+      for (let k = 0; k < 2000; k++) {
+        const scale = [1e3, 3e9, 1e14][k % 3];
+        const i = Math.floor((random() - 0.5) * 2 * scale);
+        expect(wrapTexel(i, n)).toBe(((i % n) + n) % n);
+      }
+      for (const i of [0, -1, n - 1, n, -n, 2147483647, -2147483648, 2147483648, -2147483649]) expect(wrapTexel(i, n)).toBe(((i % n) + n) % n);
     }
   });
 });
