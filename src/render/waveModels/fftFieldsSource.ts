@@ -67,6 +67,24 @@ export function copyFields(from: readonly CascadeFields[], spare: CascadeFields[
 }
 
 /**
+ * The twin's Worker (fftFieldsWorker.ts), or null where it cannot start (a
+ * Content-Security-Policy without worker-src for the bundled web component, say). One that
+ * fails later is terminated and `failed` is told.
+ */
+export function startFieldsWorker(failed: () => void): Worker | null {
+  try {
+    const worker = new Worker(new URL('./fftFieldsWorker.ts', import.meta.url), { type: 'module' });
+    worker.onerror = () => {
+      worker.terminate();
+      failed();
+    };
+    return worker;
+  } catch {
+    return null;
+  }
+}
+
+/**
  * A FieldSource backed by fftFieldsWorker.ts. One request in flight at a time; a newer request
  * replaces one still waiting, so a slow Worker is never asked for stale times.
  * If the Worker cannot start (a Content-Security-Policy without worker-src for the bundled
@@ -86,25 +104,16 @@ export class WorkerFieldSource implements FieldSource {
    * deserialises `data` on first access) and `deliver`.
    */
   constructor(deliver: (reply: FieldsReply) => void, spent: (ms: number) => void = () => {}) {
-    let worker: Worker | null = null;
-    try {
-      worker = new Worker(new URL('./fftFieldsWorker.ts', import.meta.url), { type: 'module' });
-      worker.onmessage = (event: MessageEvent<FieldsReply>) => {
-        const start = performance.now();
-        this.busy = false;
-        this.inFlight = null;
-        deliver(event.data);
-        this.flush();
-        spent(performance.now() - start);
-      };
-      worker.onerror = () => {
-        this.worker?.terminate();
-        this.failed = true;
-      };
-    } catch {
-      worker = null;
-    }
-    this.worker = worker;
+    this.worker = startFieldsWorker(() => (this.failed = true));
+    if (!this.worker) return;
+    this.worker.onmessage = (event: MessageEvent<FieldsReply>) => {
+      const start = performance.now();
+      this.busy = false;
+      this.inFlight = null;
+      deliver(event.data);
+      this.flush();
+      spent(performance.now() - start);
+    };
   }
 
   private failed = false;

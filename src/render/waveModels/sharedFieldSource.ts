@@ -1,6 +1,7 @@
 import { cascadeLayout } from '../../sim/cascades';
 import type { CascadeFields } from '../../sim/fftOcean';
 import { seaKey, type FieldSource } from '../../sim/fftWaveModel';
+import { startFieldsWorker } from './fftFieldsSource';
 import type { SeaState } from '../../sim/seaState';
 import { controlViews, CONTROL_BYTES, fieldsOn, release, SLOTS, takePublication, writeRequest, type ChannelMessage, type SharedControl } from '../../sim/sharedFieldsProtocol';
 import { peakWavelength } from '../../sim/waveSpectrum';
@@ -37,17 +38,7 @@ export class SharedFieldSource implements FieldSource {
   private generation = 0;
 
   constructor(private readonly deliver: (sea: SeaState, time: number, fields: CascadeFields[]) => boolean) {
-    let worker: Worker | null = null;
-    try {
-      worker = new Worker(new URL('./fftFieldsWorker.ts', import.meta.url), { type: 'module' });
-      worker.onerror = () => {
-        this.worker?.terminate();
-        this.failed = true;
-      };
-    } catch {
-      worker = null;
-    }
-    this.worker = worker;
+    this.worker = startFieldsWorker(() => (this.failed = true));
   }
 
   get transport(): 'shared-memory' | null {
