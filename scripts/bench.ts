@@ -36,8 +36,21 @@ const ONLY = (process.env.BENCH_ONLY ?? '').split(',').map((word) => word.trim()
 const RESULTS_FILE = ONLY.length ? 'scripts/bench/results-subset.md' : 'scripts/bench/results.md';
 // The targets of issue 14, for the 2-core SwiftShader machine.
 const TARGETS = { ratio: 20, cpuMs: 0.1, twinMs: 0.1, ttffMs: 800, pageKB: 200, componentExtraKB: 20 };
+/** The mean of the figures, null if any is null (a model that does not measure it). */
+function meanOrNull(values: (number | null)[]): number | null {
+  if (values.some((v) => v === null)) return null;
+  return (values as number[]).reduce((a, b) => a + b, 0) / values.length;
+}
+
 /** Looped frames for a scenario's twinMs: the stats' whole window (FrameStats keeps 30). */
 const TWIN_FRAMES = 30;
+/**
+ * Windows of TWIN_FRAMES whose means are averaged: the mean over 120 frames. One frame of a few
+ * ms (a collection, or the machine preempting the main thread inside a timed section) moves a
+ * 30-frame mean by 0.1 ms, the whole budget; more frames weigh such frames as often as they
+ * happen rather than as one in thirty.
+ */
+const TWIN_WINDOWS = 4;
 // A page load on a machine shared by several jobs can take minutes; puppeteer's 30 s is too short.
 const PAGE_TIMEOUT_MS = 300_000;
 
@@ -59,6 +72,8 @@ interface ScenarioResult {
   cpuMs: number;
   /** The wave twin's main-thread ms per frame, clock playing (scenarios with `twin`). */
   twinMs?: number | null;
+  /** The mean of each window of TWIN_FRAMES looped frames (twinMs is their mean). */
+  twinMsWindows?: (number | null)[];
   ttffMs: number | null;
 }
 
@@ -152,7 +167,9 @@ async function main(): Promise<void> {
       const environment = await page.evaluate(pageEnvironment);
       const frames = await page.evaluate(timeOceanFrames, scenario.frames ?? FRAMES, scenario.frames ? 1 : WARMUP, scenario.stepSeconds ?? 0, Number(new URLSearchParams(scenario.query).get('t') ?? 0));
       const passesMs = scenario.passes ? medianOfEach(await page.evaluate(passTimeSamples, PASS_FRAMES)) : undefined;
-      const twinMs = scenario.twin ? await page.evaluate(loopTwinMs, TWIN_FRAMES) : undefined;
+      const twinWindows: (number | null)[] = [];
+      for (let w = 0; scenario.twin && w < TWIN_WINDOWS; w++) twinWindows.push(await page.evaluate(loopTwinMs, TWIN_FRAMES));
+      const twinMs = scenario.twin ? meanOrNull(twinWindows) : undefined;
       if (frames.canvas[0] !== WIDTH || frames.canvas[1] !== HEIGHT) {
         throw new Error(`Scenario "${scenario.name}": the canvas is ${frames.canvas.join('×')}, not ${WIDTH}×${HEIGHT}.`);
       }
@@ -176,7 +193,7 @@ async function main(): Promise<void> {
         cpuMs: round(frames.cpuMs, 4),
         ttffMs: frames.ttffMs === null ? null : round(frames.ttffMs, 1),
         ...(passesMs ? { passesMs } : {}),
-        ...(twinMs !== undefined ? { twinMs: twinMs === null ? null : round(twinMs, 4) } : {}),
+        ...(twinMs !== undefined ? { twinMs: twinMs === null ? null : round(twinMs, 4), twinMsWindows: twinWindows.map((ms) => (ms === null ? null : round(ms, 4))) } : {}),
       });
     }
     const floorMs = timing(floorTimes);
@@ -287,7 +304,7 @@ function resultsMarkdown(report: Report, when: Date): string {
   const targets = [
     ...report.comparisons.map((c) => [c.label, formatFigure(c.ratio, 2), c.target === null ? '—' : `≤ ${c.target}`]),
     ['cpuMs', formatFigure(report.cpuMs, 3), `≤ ${TARGETS.cpuMs}`],
-    ...report.scenarios.filter((s) => s.twinMs !== undefined).map((s) => [`twinMs: the wave twin's main thread per frame (${s.name})`, formatFigure(s.twinMs ?? Number.NaN, 3), `≤ ${TARGETS.twinMs}`]),
+    ...report.scenarios.filter((s) => s.twinMs !== undefined).map((s) => [`twinMs: the wave twin's main thread per frame (${s.name}; mean of ${TWIN_WINDOWS}×${TWIN_FRAMES} looped frames, windows ${(s.twinMsWindows ?? []).map((ms) => formatFigure(ms ?? Number.NaN, 3)).join(', ')})`, formatFigure(s.twinMs ?? Number.NaN, 3), `≤ ${TARGETS.twinMs}`]),
     ['ttffMs', formatFigure(report.ttffMs, 0), `≤ ${TARGETS.ttffMs}`],
     ['page JavaScript before the first frame (KB gzipped)', formatFigure(report.jsKB.pageKB, 1), `≤ ${TARGETS.pageKB}`],
     ['oceano.js beyond the page\'s code (KB gzipped)', formatFigure(report.jsKB.componentExtraKB, 1), `≤ ${TARGETS.componentExtraKB}`],
