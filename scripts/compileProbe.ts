@@ -119,7 +119,7 @@ if (mode === 'capture') {
         return mark(name, options);
       };
     })()`);
-    await page.goto(`${harness.baseUrl}?${query}`, { waitUntil: 'load' });
+    await page.goto(`${harness.baseUrl}${process.env.PROBE_BUILD ? `${process.env.PROBE_BUILD}/` : ""}?${query}`, { waitUntil: 'load' });
     await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
     await page.evaluate(() => window.oceano.ready);
     const captured = (await page.evaluate(`(() => ({ draws: window.__probe.draws, programs: [...window.__probe.programs.values()] }))()`)) as {
