@@ -1,7 +1,7 @@
 import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { BROWSER_ARGS, startHarness } from './browserHarness';
-import { cpuByKind, processCpu } from './processCpu';
+import { cpuByKind } from './procCpu';
 
 /**
  * Where the time to first frame goes (issue 14's ttffMs): loads the app in a fresh headless
@@ -28,11 +28,16 @@ const withCpu = process.env.PROBE_CPU === '1';
 /** The CPU readings of the load under way, by mark; filled by the mark server. */
 let cpuAtMarks: Record<string, number> = {};
 let cpuRoot = 0;
-let cpuStart: ReturnType<typeof processCpu> | undefined;
+/** The browser's processes' CPU ms by kind when the load started (the same browser throughout a load). */
+let cpuStart: Record<string, number> | undefined;
+const cpuSince = (root: number, start: Record<string, number>) => {
+  const now = cpuByKind(root);
+  return { gpu: now.gpu - start.gpu, renderer: now.renderer - start.renderer };
+};
 const markServer = createServer((request, response) => {
   const name = decodeURIComponent((request.url ?? '').replace(/^\/\??/, ''));
   if (cpuStart) {
-    const cpu = cpuByKind(cpuRoot, cpuStart);
+    const cpu = cpuSince(cpuRoot, cpuStart);
     cpuAtMarks[`gpu:${name}`] = cpu.gpu;
     cpuAtMarks[`renderer:${name}`] = cpu.renderer;
   }
@@ -69,12 +74,12 @@ async function loadOnce(path: string): Promise<Record<string, number>> {
       })()`);
       cpuRoot = harness.browser.process()?.pid ?? 0;
       cpuAtMarks = {};
-      cpuStart = processCpu(cpuRoot);
+      cpuStart = cpuByKind(cpuRoot);
     }
     await page.goto(`${harness.baseUrl}${path}`, { waitUntil: 'load' });
     await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
     await page.evaluate(() => window.oceano.ready);
-    const cpuReady = withCpu ? cpuByKind(cpuRoot, cpuStart) : undefined;
+    const cpuReady = withCpu && cpuStart ? cpuSince(cpuRoot, cpuStart) : undefined;
     cpuStart = undefined;
     const out = await page.evaluate(() => {
       const out: Record<string, number> = {};
