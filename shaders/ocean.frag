@@ -41,7 +41,8 @@ varying float vWaveFade;
 // for a negative control (OceanView.setShadingFixes).
 uniform bool uDetailNormals;
 varying float vWakeFoam;
-// The boat's wake is on (its uniforms live in the vertex shader's oceano_wake chunk).
+// The boat's wake is on (its uniforms live in the vertex shader's oceano_wake chunk). Its
+// code is compiled in only with OCEAN_WAKE (OceanMaterial.setWakeOn).
 uniform bool uWakeOn;
 uniform bool uFlatNormals;
 // waves=fft teaching view: slope normals per pixel on the left half of the screen, the
@@ -125,7 +126,9 @@ void main() {
     n = waveNormalNear(vRelativeGridXZ);
 #endif
     // The wake's slope is interpolated from the vertices (its waves are 8 m and longer).
+#ifdef OCEAN_WAKE
     if (uWakeOn) n = normalize(vec3(n.x - vWakeSlope.x * n.y, n.y, n.z - vWakeSlope.y * n.y));
+#endif
   }
 #endif
 // OCEAN_NEAR_BANDS: the material of the bands whose vertices lie at most DETAIL_FROM apart,
@@ -214,7 +217,9 @@ void main() {
 #endif
 #endif
   // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
+#ifdef OCEAN_WAKE
   if (uWakeOn) foam = max(foam, vWakeFoam);
+#endif
   if (foam > 0.0) {
     float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
     color = mix(color, FOAM_COLOR * foamLight, foam);

@@ -3,8 +3,11 @@
 // neighbour's edge (the GLSL twin of src/sim/edgeSnap.ts), then displaced by the active wave
 // model's chunk (waveDisplacement / waveNormal, see shaders/waves/).
 #include <oceano_waves>
-// The boat's Kelvin wake, added to whichever model is active (src/sim/boatWake.ts).
+// The boat's Kelvin wake, added to whichever model is active (src/sim/boatWake.ts); compiled
+// in only while the wake is on (OceanMaterial.setWakeOn).
+#ifdef OCEAN_WAKE
 #include <oceano_wake>
+#endif
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
@@ -110,6 +113,7 @@ void main() {
   // model's plus the wake's there, as the CPU twin adds them (addWake). Off, nothing changes.
   vWakeSlope = vec2(0.0);
   vWakeFoam = 0.0;
+#ifdef OCEAN_WAKE
   if (uWakeCount >= 2) {
     vec3 wake = wakeHeightAndGradient(world.xz);
     world.y += wake.x;
@@ -117,6 +121,7 @@ void main() {
     vWakeSlope = wake.yz;
     vWakeFoam = wakeFoam(world.xz);
   }
+#endif
   // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
   // the rest is small. So the relative position keeps its bits wherever the camera is.
   vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;

@@ -76,6 +76,8 @@ export class OceanMaterial extends ShaderMaterial {
       },
     });
     this.main = main;
+    // The wake's code is compiled in until setWakeOn says the wake is off (see there).
+    this.defines.OCEAN_WAKE = '';
     if (main) {
       this.uniforms = main.uniforms;
       this.defines.OCEAN_NEAR_BANDS = '';
@@ -188,9 +190,18 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uOceanCenter.value as Vector2).set(x, z);
   }
 
-  /** Whether the fragment shader adds the wake's slope and foam (the vertex shader reads uWakeCount). */
+  /**
+   * Whether the boat's wake is drawn (uWakeCount ≥ 2): the fragment shader then adds its slope
+   * and foam, and the wake's code is compiled into both programs (OCEAN_WAKE). Off (the
+   * default view), that code is left out: the vertex shader would skip it anyway, but
+   * SwiftShader compiles each program to machine code on its first draw, and the wake's two
+   * loops were about 120 ms of GPU-process CPU of each ocean program's 330 ms vertex stage
+   * (scripts/compileProbe.ts, issue 14's ttffMs). Turning the wake on or off builds the
+   * other programs once, on the next draw.
+   */
   setWakeOn(on: boolean): void {
     this.uniforms.uWakeOn.value = on;
+    this.setDefine('OCEAN_WAKE', on);
   }
 
   /**

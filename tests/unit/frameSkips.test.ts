@@ -46,6 +46,26 @@ describe('OceanMaterial.setSeenFromBelow: the same answer again changes nothing'
   });
 });
 
+describe('OceanMaterial.setWakeOn: the wake compiled in only while on, and a repeat recompiles nothing', () => {
+  it('follows every change of the answer in both programs, and leaves the versions alone on a repeat', () => {
+    const m = material();
+    // Compiled in until told otherwise: a material nobody calls setWakeOn on keeps today's program.
+    expect('OCEAN_WAKE' in m.defines && 'OCEAN_WAKE' in m.near.defines).toBe(true);
+    let previous: boolean | null = null;
+    for (const on of [false, false, true, true, false, true, false, false]) {
+      const versions = [m.version, m.near.version];
+      m.setWakeOn(on);
+      expect('OCEAN_WAKE' in m.defines).toBe(on);
+      expect('OCEAN_WAKE' in m.near.defines).toBe(on);
+      expect((m.uniforms.uWakeOn as IUniform<boolean>).value).toBe(on);
+      // setWakeOn runs every frame: a repeat must not rebuild the programs.
+      if (on === previous) expect([m.version, m.near.version]).toEqual(versions);
+      else expect(m.version).toBeGreaterThan(versions[0]);
+      previous = on;
+    }
+  });
+});
+
 describe('BoatView.setPose: the same pose again leaves the group as it is', () => {
   const pose = (p: Partial<BoatPose>): BoatPose => ({ x: 7, y: 0.3, z: -5, heading: 0.4, pitch: 0.02, roll: -0.05, ...p });
   const group = (scene: Scene) => scene.getObjectByName('Boat') as Group;

@@ -1,0 +1,89 @@
+import { describe, expect, it } from 'vitest';
+import { openOcean } from './harness';
+import { useHarness } from './useHarness';
+
+const harness = useHarness();
+
+/**
+ * The ocean's programs carry the boat wake's code only while the wake is on (OCEAN_WAKE, set
+ * by OceanMaterial.setWakeOn; issue 14's ttffMs: SwiftShader compiles a program on its first
+ * draw, and the wake's loops were a third of the vertex stage). Turning the wake on must
+ * compile it back into both ocean programs, so that the sea drawn shows the wake; turning it
+ * off and on again must give the very same picture.
+ *
+ * Measured (320×180, SwiftShader, 2026-11-22): the wake moves 6.8 % of the pixels by more than
+ * 2 levels (the boat's picture is the same: it floats on the waves alone, and the ±19.47°
+ * guide is off); with the control (setWakeOn never compiling the code in) 0.05 % (the wake's
+ * bound grows the culling boxes, which may pick other chunks).
+ */
+const QUERY = 'wake=0&wakeGuide=0&boatSpeed=4&boatHeading=270&boatTurnRate=3&t=10';
+/** Share of pixels the wake must move by more than 2 levels: 1 %, between the control's 0.05 % and the measured 6.8 %. */
+const WAKE_SHARE = 0.01;
+
+describe('the wake compiled into the ocean only while it is on', () => {
+  it('shows the wake on the drawn sea once turned on, the same picture each time; the control (never compiled in) does not', async () => {
+    const { page, consoleErrors } = await openOcean(harness, QUERY, 320, 180);
+    try {
+      const result = await page.evaluate(() => {
+        const o = window.oceano;
+        const gl = o.three.renderer.getContext();
+        const picture = (wake: boolean) => {
+          o.setParams({ wake });
+          o.renderFrame();
+          const pixels = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
+          gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+          return pixels;
+        };
+        const shareMoved = (a: Uint8Array, b: Uint8Array) => {
+          let moved = 0;
+          for (let i = 0; i < a.length; i += 4) if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 2) moved++;
+          return moved / (a.length / 4);
+        };
+        const same = (a: Uint8Array, b: Uint8Array) => a.every((v, i) => v === b[i]);
+        // Both ocean programs (the far bands' material and its near twin), by their uniforms.
+        type Material = { defines: Record<string, string>; uniforms: Record<string, { value: unknown }>; setWakeOn(on: boolean): void };
+        const materials = new Set<Material>();
+        o.three.scene.traverse((object) => {
+          const m = (object as unknown as { material?: Material }).material;
+          if (m?.uniforms?.uWakeOn) materials.add(m);
+        });
+        const compiledIn = () => [...materials].map((m) => 'OCEAN_WAKE' in m.defines);
+        const off = picture(false);
+        const offDefines = compiledIn();
+        const on = picture(true);
+        const onDefines = compiledIn();
+        const offAgain = picture(false);
+        const onAgain = picture(true);
+        // The control: setWakeOn sets the fragment's switch but never compiles the code in.
+        const original = Object.getPrototypeOf([...materials][0]).setWakeOn as (this: Material, on: boolean) => void;
+        for (const m of materials) m.setWakeOn = function (this: Material, wakeOn: boolean) {
+          original.call(this, false);
+          this.uniforms.uWakeOn.value = wakeOn;
+        };
+        picture(false);
+        const faulty = picture(true);
+        for (const m of materials) delete (m as Partial<Material>).setWakeOn;
+        return {
+          materials: materials.size,
+          offDefines,
+          onDefines,
+          moved: shareMoved(off, on),
+          sameOff: same(off, offAgain),
+          sameOn: same(on, onAgain),
+          controlMoved: shareMoved(off, faulty),
+        };
+      });
+      console.log(`[oceano] the wake on the drawn sea: ${(100 * result.moved).toFixed(2)} % of pixels moved by more than 2 levels; control (never compiled in) ${(100 * result.controlMoved).toFixed(2)} %`);
+      expect(result.materials).toBe(2);
+      expect(result.offDefines).toEqual([false, false]);
+      expect(result.onDefines).toEqual([true, true]);
+      expect(result.moved).toBeGreaterThan(WAKE_SHARE);
+      expect(result.sameOff).toBe(true);
+      expect(result.sameOn).toBe(true);
+      expect(result.controlMoved).toBeLessThan(WAKE_SHARE);
+      expect(consoleErrors).toEqual([]);
+    } finally {
+      await page.close();
+    }
+  });
+});
