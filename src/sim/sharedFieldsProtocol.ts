@@ -27,6 +27,11 @@ export interface ChannelMessage {
   slots: SharedArrayBuffer[];
 }
 
+/** Bytes of one slot: `cascades` cascades of two RGBA float64 fields of n × n texels (fieldsOn's layout). */
+export function slotBytes(cascades: number, n: number): number {
+  return cascades * 2 * 4 * n * n * Float64Array.BYTES_PER_ELEMENT;
+}
+
 /**
  * Float64 fields of `cascades` cascades of n × n texels, views of ONE buffer in packedFields'
  * layout (cascade by cascade, displacement then derivatives), so the Worker's copyFields

@@ -13,6 +13,7 @@ import {
   release,
   SLOTS,
   takePublication,
+  slotBytes,
   writeRequest,
   type ChannelMessage,
   type SharedControl,
@@ -148,7 +149,7 @@ describe('fftFieldsWorker over shared memory, with FftWaveModel', () => {
     const cascades = model.ocean.fields.length;
     const n = sea.fftSize;
     const control = new SharedArrayBuffer(CONTROL_BYTES);
-    const slots = Array.from({ length: SLOTS }, () => new SharedArrayBuffer(cascades * 2 * 4 * n * n * 8));
+    const slots = Array.from({ length: SLOTS }, () => new SharedArrayBuffer(slotBytes(cascades, n)));
     const c = controlViews(control, 4);
     const views = slots.map((s) => fieldsOn(s, cascades, n));
     scope.onmessage?.({ data: { kind: 'channel', sea, generation: 4, control, slots } } as MessageEvent<ChannelMessage>);

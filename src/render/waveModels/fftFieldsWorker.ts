@@ -7,7 +7,7 @@
  */
 import { FftOcean } from '../../sim/fftOcean';
 import { seaKey } from '../../sim/fftWaveModel';
-import { chooseWriteSlot, controlViews, fieldsOn, publish, readRequest, type ChannelMessage, type SharedControl } from '../../sim/sharedFieldsProtocol';
+import { chooseWriteSlot, controlViews, fieldsOn, publish, readRequest, slotBytes, type ChannelMessage, type SharedControl } from '../../sim/sharedFieldsProtocol';
 import { copyFields, fieldBuffers, type FieldsReply, type FieldsRequest } from './fftFieldsSource';
 
 interface WorkerScope {
@@ -87,7 +87,7 @@ function poll(): void {
 
 function openChannel(message: ChannelMessage): void {
   const n = message.sea.fftSize;
-  const cascades = message.slots[0].byteLength / (2 * 4 * n * n * 8);
+  const cascades = message.slots[0].byteLength / slotBytes(1, n);
   channel = { sea: message.sea, generation: message.generation, control: controlViews(message.control), slots: message.slots.map((s) => fieldsOn(s, cascades, n)), seen: 0 };
   lastRequestAt = performance.now();
   if (!polling) {

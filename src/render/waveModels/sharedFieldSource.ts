@@ -3,7 +3,7 @@ import type { CascadeFields } from '../../sim/fftOcean';
 import { seaKey, type FieldSource } from '../../sim/fftWaveModel';
 import { startFieldsWorker } from './fftFieldsSource';
 import type { SeaState } from '../../sim/seaState';
-import { controlViews, CONTROL_BYTES, fieldsOn, release, SLOTS, takePublication, writeRequest, type ChannelMessage, type SharedControl } from '../../sim/sharedFieldsProtocol';
+import { controlViews, CONTROL_BYTES, fieldsOn, release, slotBytes, SLOTS, takePublication, writeRequest, type ChannelMessage, type SharedControl } from '../../sim/sharedFieldsProtocol';
 import { peakWavelength } from '../../sim/waveSpectrum';
 
 /** Whether this page may share memory with a Worker (cross-origin isolated: COOP + COEP headers). */
@@ -68,7 +68,7 @@ export class SharedFieldSource implements FieldSource {
     const n = sea.fftSize;
     const cascades = cascadeLayout(peakWavelength(sea), n).length;
     const control = new SharedArrayBuffer(CONTROL_BYTES);
-    const slots = Array.from({ length: SLOTS }, () => new SharedArrayBuffer(cascades * 2 * 4 * n * n * 8));
+    const slots = Array.from({ length: SLOTS }, () => new SharedArrayBuffer(slotBytes(cascades, n)));
     // Initialised before the Worker can see it.
     const views = controlViews(control, generation);
     const message: ChannelMessage = { kind: 'channel', sea, generation, control, slots };
