@@ -22,9 +22,10 @@ uniform vec3 uFacingTint;
 uniform vec3 uSunDirection;
 uniform vec3 uSunColor;
 uniform float uHazeDensity;
-// Teaching view: the normal itself as a colour, (n + 1) / 2, written without tone mapping.
-uniform bool uShowNormals;
-uniform bool uLodColors;
+// The teaching view of the normal itself as a colour (OCEAN_SHOW_NORMALS) and the LOD
+// debugger's band tint (OCEAN_LOD_COLORS) are compiled in only while shown: SwiftShader runs
+// a branch's body for every pixel even when a uniform says no, and the tint's indexed
+// constant array alone was about 10 of the default view's 218 ms (scripts/shaderVariantProbe.ts).
 
 // The pixel's position and the eye's relative to the render origin (see ocean.vert).
 varying vec3 vRelativePosition;
@@ -52,9 +53,11 @@ uniform bool uNormalsCompare;
 // A spectral sea's foam is sea water whipped with air: white, lit by sun and sky.
 const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 
+#ifdef OCEAN_LOD_COLORS
 // The LOD debugger's band colours, near to far; the far rings and the skirt (bands past
 // the grid's) take the last one.
 const vec3 BAND_COLORS[LOD_BAND_COUNT] = LOD_BAND_COLORS;
+#endif
 
 vec3 skyColor(vec3 direction) {
   return textureCube(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z)).rgb;
@@ -169,10 +172,11 @@ void main() {
     }
   }
 #endif
-  if (uShowNormals) {
-    gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
-    return;
-  }
+#ifdef OCEAN_SHOW_NORMALS
+  // (n + 1) / 2, written without tone mapping.
+  gl_FragColor = vec4(n * 0.5 + 0.5, 1.0);
+  return;
+#endif
   // With uMarkSides, alpha tells the underwater pass which side of this very mesh the line
   // of sight came from: 0.5 from below, 0 from above. Drawn straight to the canvas it is 1.
 #if defined(OCEAN_ONLY_FROM_BELOW)
@@ -229,7 +233,9 @@ void main() {
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
 
-  if (uLodColors) color = mix(color, BAND_COLORS[min(int(vBand + 0.5), LOD_BAND_COUNT - 1)], 0.7);
+#ifdef OCEAN_LOD_COLORS
+  color = mix(color, BAND_COLORS[min(int(vBand + 0.5), LOD_BAND_COUNT - 1)], 0.7);
+#endif
 
   gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>

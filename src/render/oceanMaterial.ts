@@ -59,12 +59,10 @@ export class OceanMaterial extends ShaderMaterial {
         uSunDirection: { value: new Vector3(0, 1, 0) },
         uHazeDensity: { value: 0.0012 },
         uFlatNormals: { value: false },
-        uShowNormals: { value: false },
         uNormalsCompare: { value: false },
         uChunkQuads: { value: CHUNK_QUADS },
         uOceanCenter: { value: new Vector2() },
         uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
-        uLodColors: { value: false },
         uDetailNormals: { value: true },
         uRenderOrigin: { value: new Vector2() },
         uViewRelative: { value: new Matrix4() },
@@ -173,7 +171,7 @@ export class OceanMaterial extends ShaderMaterial {
 
   setTeachingViews(flatNormals: boolean, showNormals: boolean): void {
     this.uniforms.uFlatNormals.value = flatNormals;
-    this.uniforms.uShowNormals.value = showNormals;
+    this.setDefine('OCEAN_SHOW_NORMALS', showNormals);
   }
 
   /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */
@@ -228,8 +226,8 @@ export class OceanMaterial extends ShaderMaterial {
     this.uniforms.uDetailNormals.value = on;
   }
 
-  /** The LOD debugger's view: each chunk tinted by its band. */
+  /** The LOD debugger's view: each chunk tinted by its band (compiled in only while shown, see ocean.frag). */
   setLodColors(enabled: boolean): void {
-    this.uniforms.uLodColors.value = enabled;
+    this.setDefine('OCEAN_LOD_COLORS', enabled);
   }
 }

@@ -66,6 +66,27 @@ describe('OceanMaterial.setWakeOn: the wake compiled in only while on, and a rep
   });
 });
 
+describe('OceanMaterial debug views: the LOD tint and the normal-as-colour view compiled in only while shown', () => {
+  it('puts each define in both programs and takes it out again; a repeat recompiles nothing', () => {
+    const m = material();
+    const both = (name: string) => [name in m.defines, name in m.near.defines];
+    expect(both('OCEAN_LOD_COLORS')).toEqual([false, false]);
+    expect(both('OCEAN_SHOW_NORMALS')).toEqual([false, false]);
+    m.setLodColors(true);
+    m.setTeachingViews(false, true);
+    expect(both('OCEAN_LOD_COLORS')).toEqual([true, true]);
+    expect(both('OCEAN_SHOW_NORMALS')).toEqual([true, true]);
+    const versions = [m.version, m.near.version];
+    m.setLodColors(true);
+    m.setTeachingViews(false, true);
+    expect([m.version, m.near.version]).toEqual(versions);
+    m.setLodColors(false);
+    m.setTeachingViews(true, false);
+    expect(both('OCEAN_LOD_COLORS')).toEqual([false, false]);
+    expect(both('OCEAN_SHOW_NORMALS')).toEqual([false, false]);
+  });
+});
+
 describe('BoatView.setPose: the same pose again leaves the group as it is', () => {
   const pose = (p: Partial<BoatPose>): BoatPose => ({ x: 7, y: 0.3, z: -5, heading: 0.4, pitch: 0.02, roll: -0.05, ...p });
   const group = (scene: Scene) => scene.getObjectByName('Boat') as Group;
