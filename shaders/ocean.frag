@@ -32,6 +32,9 @@ varying vec3 vRelativePosition;
 uniform vec3 uEyeRelative;
 uniform mat4 uViewRelative;
 varying vec3 vNormal;
+#ifdef OCEAN_NEAR_BANDS
+varying vec3 vHorizon;
+#endif
 varying float vBand;
 varying vec2 vGridXZ;
 varying vec2 vRelativeGridXZ;
@@ -229,7 +232,18 @@ void main() {
     color = mix(color, FOAM_COLOR * foamLight, foam);
   }
 
+  // The haze's colour is the sky at the horizon beyond the pixel. In the near bands (vertices
+  // 2-6 m apart, OCEAN_NEAR_BANDS) it is looked up per vertex and interpolated: where the haze
+  // weighs anything (300 m and more: 1 - exp(-0.36) = 0.3) a triangle spans about a degree of
+  // azimuth, too little for the sky's colour to bend; every reference view moved by at most
+  // 0.042 levels on average. The cube lookup per pixel was about 16 of the default view's
+  // 218 ms (scripts/shaderVariantProbe.ts). The far bands, rings and skirt, whose cells span
+  // kilometres where the haze is near 1, keep the exact lookup per pixel.
+#ifdef OCEAN_NEAR_BANDS
+  vec3 horizon = vHorizon;
+#else
   vec3 horizon = skyColor(normalize(vec3(-v.x, 0.0, -v.z)));
+#endif
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);
 

@@ -35,6 +35,13 @@ attribute vec2 aTile;      // a tile's first grid point inside its chunk (compar
 uniform vec2 uRenderOrigin;
 uniform mat4 uViewRelative;
 varying vec3 vRelativePosition;
+#ifdef OCEAN_NEAR_BANDS
+// The near bands' haze colour: the sky at the horizon beyond the vertex (see ocean.frag).
+uniform samplerCube uSky;
+uniform float uSkyFlip;
+uniform vec3 uEyeRelative;
+varying vec3 vHorizon;
+#endif
 varying vec3 vNormal;
 varying float vBand;
 // Metres between this chunk's vertices, and the far rings' wave fade (1 on the grid): the
@@ -127,6 +134,12 @@ void main() {
   vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
   vec3 relative = vec3(relativeGrid.x + d.x, world.y, relativeGrid.y + d.z);
   vRelativePosition = relative;
+#ifdef OCEAN_NEAR_BANDS
+  // A cube lookup needs a non-zero direction, not a unit one: a vertex right under the eye
+  // gets the +x horizon (the haze's weight is 0 there).
+  vec2 away = relative.xz - uEyeRelative.xz + vec2(1e-20, 0.0);
+  vHorizon = texture(uSky, vec3(uSkyFlip * away.x, 0.0, away.y)).rgb;
+#endif
   vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;
   vVertexSpacing = aChunk.w * float(band < 6 ? bandStep(band) : 1);
