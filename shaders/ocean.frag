@@ -49,9 +49,9 @@ varying float vWakeFoam;
 // code is compiled in only with OCEAN_WAKE (OceanMaterial.setWakeOn).
 uniform bool uWakeOn;
 uniform bool uFlatNormals;
-// waves=fft teaching view: slope normals per pixel on the left half of the screen, the
-// fabricated normals per vertex (interpolated, from ocean.vert) on the right.
-uniform bool uNormalsCompare;
+// waves=fft teaching view (OCEAN_NORMALS_COMPARE, compiled in only while shown): slope normals
+// per pixel on the left half of the screen, the fabricated normals per vertex (interpolated,
+// from ocean.vert) on the right.
 
 // A spectral sea's foam is sea water whipped with air: white, lit by sun and sky.
 const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
@@ -122,7 +122,11 @@ void main() {
   // Exact normals (spectral slopes, or the Gerstner sum's closed form) at this pixel's own
   // grid point, not interpolated between vertices: the mapping from grid to displaced
   // surface is smooth, so interpolating the grid point is exact to first order.
-  bool fabricatedHalf = uNormalsCompare && (uViewRelative * vec4(vRelativePosition, 1.0)).x > 0.0;
+#ifdef OCEAN_NORMALS_COMPARE
+  bool fabricatedHalf = (uViewRelative * vec4(vRelativePosition, 1.0)).x > 0.0;
+#else
+  const bool fabricatedHalf = false;
+#endif
   if (!uFlatNormals && !fabricatedHalf) {
     // At the grid point relative to the render origin (exact 10⁶ m out, where vGridXZ moves
     // in 6 cm steps); WAVE_ABSOLUTE_PIXELS only for a negative control.

@@ -57,7 +57,6 @@ varying vec2 vRelativeGridXZ;
 varying vec2 vWakeSlope;
 varying float vWakeFoam;
 // The comparison view (ocean.frag): its right half draws the vertices' normals.
-uniform bool uNormalsCompare;
 
 // Integers, so the snapped vertex lands exactly on the neighbour's vertex.
 int snapEdge(int k, int step) {
@@ -99,14 +98,17 @@ void main() {
   float waves = 1.0 - smoothstep(uFarFade.x, uFarFade.y, max(fromCenter.x, fromCenter.y));
   vec3 d = waveDisplacement(gridXZ);
   // A model with WAVE_PIXEL_NORMALS has its normal evaluated per pixel by ocean.frag, which
-  // then reads this one only on the comparison view's right half (or flat): skip its cost.
-  bool normalDrawn = !uFlatNormals;
-#ifdef WAVE_PIXEL_NORMALS
-  normalDrawn = normalDrawn && uNormalsCompare;
+  // then reads this one only on the comparison view's right half (OCEAN_NORMALS_COMPARE) or
+  // flat: it is left out of the program otherwise. Not a uniform branch: SwiftShader runs a
+  // branch's body for every vertex whatever the uniform says, and for the FFT sea the
+  // normal and the fabricated one were 36 texelFetch a vertex beside the displacement's 12.
+#if defined(WAVE_PIXEL_NORMALS) && !defined(OCEAN_NORMALS_COMPARE)
+  vNormal = vec3(0.0, 1.0, 0.0);
+#else
+  vNormal = uFlatNormals ? vec3(0.0, 1.0, 0.0) : waveNormal(gridXZ);
 #endif
-  vNormal = normalDrawn ? waveNormal(gridXZ) : vec3(0.0, 1.0, 0.0);
-#ifdef WAVE_FABRICATED_NORMAL
-  if (uNormalsCompare && !uFlatNormals) vNormal = waveFabricatedNormal(gridXZ);
+#if defined(WAVE_FABRICATED_NORMAL) && defined(OCEAN_NORMALS_COMPARE)
+  if (!uFlatNormals) vNormal = waveFabricatedNormal(gridXZ);
 #endif
   vGridXZ = gridXZ;
   // The fade scales the model's whole displacement (horizontal too, so the far rings'

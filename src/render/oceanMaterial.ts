@@ -59,7 +59,6 @@ export class OceanMaterial extends ShaderMaterial {
         uSunDirection: { value: new Vector3(0, 1, 0) },
         uHazeDensity: { value: 0.0012 },
         uFlatNormals: { value: false },
-        uNormalsCompare: { value: false },
         uChunkQuads: { value: CHUNK_QUADS },
         uOceanCenter: { value: new Vector2() },
         uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
@@ -176,7 +175,7 @@ export class OceanMaterial extends ShaderMaterial {
 
   /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */
   setNormalsCompare(enabled: boolean): void {
-    this.uniforms.uNormalsCompare.value = enabled;
+    this.setDefine('OCEAN_NORMALS_COMPARE', enabled);
   }
 
   setFresnelEnabled(enabled: boolean): void {
