@@ -21,6 +21,7 @@ import { loopTwinMs, passTimeSamples, pageEnvironment, timeFloorFrames, timeOcea
 import { COMPARISONS, SCENARIOS, type BenchScenario } from './bench/scenarios';
 import { serveThreejsOceanExample } from './bench/threejsOceanServer';
 import { formatFigure, markdownTable } from './bench/resultsTable';
+import { sideBySideRatios, type SideBySideRatio } from './bench/sideBySide';
 
 const WIDTH = 1280;
 const HEIGHT = 720;
@@ -28,6 +29,8 @@ const HEIGHT = 720;
 const FRAMES = Number(process.env.BENCH_FRAMES ?? 40);
 if (!Number.isInteger(FRAMES) || FRAMES < 5) throw new Error(`BENCH_FRAMES must be an integer ≥ 5, got "${process.env.BENCH_FRAMES}".`);
 const WARMUP = 5;
+// The side-by-side ratios (scripts/bench/sideBySide.ts): rounds, each a block of frames per row.
+const SIDE_BY_SIDE = { rounds: Number(process.env.BENCH_ROUNDS ?? 8), framesPerBlock: 5 };
 const PASS_FRAMES = 5;
 // BENCH_ONLY=name,name runs only the scenarios whose names contain one of those words (e.g.
 // BENCH_ONLY="default view,FFT view" for the FFT ratio) and writes scripts/bench/results-subset.md, so
@@ -204,6 +207,7 @@ async function main(): Promise<void> {
     });
     // A subset run (BENCH_ONLY) prints only the ratios whose two rows it ran.
     const comparisonsRun = comparisons.filter((c) => ONLY.length === 0 || Number.isFinite(c.ratio));
+    const sideBySide = await sideBySideRatios(browser, harness, exampleBaseUrl, scenarios, { width: WIDTH, height: HEIGHT, ...SIDE_BY_SIDE, pageTimeoutMs: PAGE_TIMEOUT_MS });
     const [headline] = results;
     const report = {
       renderer,
@@ -222,6 +226,7 @@ async function main(): Promise<void> {
       cpuMs: headline.cpuMs,
       ttffMs: headline.ttffMs,
       comparisons: comparisonsRun,
+      sideBySide,
       gpuStartupMs: round(gpuStartupMs, 1),
       jsKB: { pageKB: round(sizes.pageKB, 1), componentExtraKB: round(sizes.componentExtraKB, 1), allKB: round(sizes.allKB, 1) },
       scenarios: results,
@@ -286,6 +291,7 @@ interface Report {
   gpuStartupMs: number;
   jsKB: Omit<ScriptSizes, 'pageFiles'>;
   comparisons: { label: string; ratio: number; target: number | null }[];
+  sideBySide: SideBySideRatio[];
   scenarios: ScenarioResult[];
 }
 
@@ -331,6 +337,13 @@ function resultsMarkdown(report: Report, when: Date): string {
     `Headline (${report.scenarios[0].name}) and the ratios between rows against the targets of issues 14 and 12 (FFT view / default ≤ 1.3), set for the 2-core SwiftShader machine:`,
     '',
     markdownTable(['figure', 'measured', 'target'], targets),
+    '',
+    `The same ratios measured side by side: every row's page open at once, ${SIDE_BY_SIDE.rounds} rounds, each timing a block of ${SIDE_BY_SIDE.framesPerBlock} frames on every page in turn; a round's ratio is of its two blocks' medians, the figure the median over the rounds (a load that drifts between minutes moves both rows alike):`,
+    '',
+    markdownTable(
+      ['figure', 'median of the rounds', 'lowest round', 'highest round', 'target'],
+      report.sideBySide.map((c) => [c.label, formatFigure(c.ratio, 2), formatFigure(c.min, 2), formatFigure(c.max, 2), c.target === null ? '—' : `≤ ${c.target}`]),
+    ),
     '',
   ].join('\n');
 }
