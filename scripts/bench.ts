@@ -19,7 +19,7 @@ import { median, percentile } from '../src/sim/sampleStatistics';
 import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
 import { loopTwinMs, passTimeSamples, pageEnvironment, timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './bench/pageMeasures';
 import { COMPARISONS, SCENARIOS, type BenchScenario } from './bench/scenarios';
-import { serveThreejsOceanExample } from './bench/threejsOceanServer';
+import { openThreejsOceanExample, serveThreejsOceanExample } from './bench/threejsOceanServer';
 import { formatFigure, markdownTable } from './bench/resultsTable';
 import { sideBySideRatios, type SideBySideRatio } from './bench/sideBySide';
 
@@ -246,16 +246,7 @@ async function main(): Promise<void> {
 
 /** One row from the copy of three.js's ocean example, timed like Oceano's frames. */
 async function timeThreejsExample(browser: Browser, baseUrl: string, scenario: BenchScenario): Promise<ScenarioResult> {
-  const page = await browser.newPage();
-  page.setDefaultTimeout(PAGE_TIMEOUT_MS);
-  const errors: string[] = [];
-  page.on('console', (message) => {
-    if (message.type() === 'error') errors.push(message.text());
-  });
-  page.on('pageerror', (error) => errors.push(String(error)));
-  await page.setViewport({ width: WIDTH, height: HEIGHT, deviceScaleFactor: 1 });
-  await page.goto(`${baseUrl}${scenario.query ? `?${scenario.query}` : ''}`, { waitUntil: 'load' });
-  await page.waitForFunction(() => (window as { threejsOcean?: unknown }).threejsOcean !== undefined);
+  const { page, errors } = await openThreejsOceanExample(browser, baseUrl, scenario.query, WIDTH, HEIGHT, PAGE_TIMEOUT_MS);
   const frames = await page.evaluate(timeThreejsExampleFrames, FRAMES, WARMUP);
   await page.close();
   if (errors.length) throw new Error(`Scenario "${scenario.name}" logged errors: ${errors.join(' / ')}`);

@@ -3,6 +3,7 @@ import { median } from '../../src/sim/sampleStatistics';
 import { openOcean, type Harness } from '../browserHarness';
 import { timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './pageMeasures';
 import { COMPARISONS, type BenchScenario } from './scenarios';
+import { openThreejsOceanExample } from './threejsOceanServer';
 
 /** One target ratio measured with its two rows interleaved: the median of the rounds' ratios and their range. */
 export interface SideBySideRatio {
@@ -45,11 +46,7 @@ export async function sideBySideRatios(
       if (name === 'floor') continue;
       const scenario = scenarios.find((s) => s.name === name) as BenchScenario;
       if (scenario.page === 'threejs-ocean') {
-        const page = await browser.newPage();
-        page.setDefaultTimeout(options.pageTimeoutMs);
-        await page.setViewport({ width, height, deviceScaleFactor: 1 });
-        await page.goto(`${exampleBaseUrl}${scenario.query ? `?${scenario.query}` : ''}`, { waitUntil: 'load' });
-        await page.waitForFunction(() => (window as { threejsOcean?: unknown }).threejsOcean !== undefined);
+        const { page } = await openThreejsOceanExample(browser, exampleBaseUrl, scenario.query, width, height, options.pageTimeoutMs);
         pages.set(name, { page, time: async () => (await page.evaluate(timeThreejsExampleFrames, framesPerBlock, 1)).frameTimes });
       } else {
         const { page } = await openOcean(harness, scenario.query, width, height, '', options.pageTimeoutMs);

@@ -1,6 +1,7 @@
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import type { Browser, Page } from 'puppeteer';
 import { build, preview } from 'vite';
 
 /** Where the copy of three.js's ocean example lives (see its main.ts for what it is and is not). */
@@ -30,4 +31,22 @@ export async function serveThreejsOceanExample(headers: Record<string, string>):
       rmSync(outDir, { recursive: true, force: true });
     },
   };
+}
+
+/**
+ * Opens the example page (`query`: '' or e.g. 'bloom=0') at `width`×`height` and waits for its
+ * `window.threejsOcean`; `errors` collects what the page logs as an error from then on.
+ */
+export async function openThreejsOceanExample(browser: Browser, baseUrl: string, query: string, width: number, height: number, timeoutMs: number): Promise<{ page: Page; errors: string[] }> {
+  const page = await browser.newPage();
+  page.setDefaultTimeout(timeoutMs);
+  const errors: string[] = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(message.text());
+  });
+  page.on('pageerror', (error) => errors.push(String(error)));
+  await page.setViewport({ width, height, deviceScaleFactor: 1 });
+  await page.goto(`${baseUrl}${query ? `?${query}` : ''}`, { waitUntil: 'load' });
+  await page.waitForFunction(() => (window as { threejsOcean?: unknown }).threejsOcean !== undefined);
+  return { page, errors };
 }
