@@ -3,6 +3,8 @@
 // timed; rounds go round the variants so a drifting load moves them alike. Medians of 7
 // frames per round, then the median over rounds. Prints figures, asserts nothing.
 // Usage: npx vite build && npx tsx scripts/shaderVariantProbe.ts VARIANTS.json ["query"] [rounds]
+// PROBE_STAGE=vertex edits the vertex shader instead; PROBE_ONE_PIXEL=1 times every frame with
+// a 1×1 scissor, so what is left is the vertices' and the draws' work.
 // VARIANTS.json: { "name": [["text to find", "replacement"], ...], ... } (a missing text is an error).
 import { readFileSync } from 'node:fs';
 import { openOcean, startHarness } from './browserHarness';
@@ -10,6 +12,8 @@ import { openOcean, startHarness } from './browserHarness';
 const variants = JSON.parse(readFileSync(process.argv[2], 'utf8')) as Record<string, [string, string][]>;
 const query = process.argv[3] ?? 't=10';
 const rounds = Number(process.argv[4] ?? 5);
+const stage = process.env.PROBE_STAGE === 'vertex' ? 'vertexShader' : 'fragmentShader';
+const onePixel = process.env.PROBE_ONE_PIXEL === '1';
 
 // Runs in the page. A string: tsx would wrap named arrows in a helper the page lacks.
 const inPage = `(() => {
@@ -17,7 +21,8 @@ const inPage = `(() => {
   const variants = ${JSON.stringify(variants)};
   const group = o.three.scene.children.find((c) => c.type === 'Group');
   const materials = [...new Set(group.children.map((c) => c.material))];
-  const originals = materials.map((m) => m.fragmentShader);
+  const originals = materials.map((m) => m.${stage});
+  if (${onePixel}) { o.three.renderer.setScissorTest(true); o.three.renderer.setScissor(0, 0, 1, 1); }
   const time = (frames) => {
     const ts = [];
     for (let i = 0; i < frames; i++) { const s = performance.now(); o.renderFrame(); ts.push(performance.now() - s); }
@@ -30,7 +35,7 @@ const inPage = `(() => {
       if (!text.includes(from)) throw new Error('not in the shader: ' + from);
       text = text.split(from).join(to);
     }
-    m.fragmentShader = text;
+    m.${stage} = text;
     m.needsUpdate = true;
   });
   const names = ['base', ...Object.keys(variants)];
@@ -43,6 +48,7 @@ const inPage = `(() => {
     }
   }
   apply([]);
+  o.three.renderer.setScissorTest(false);
   const med = (a) => a.slice().sort((x, y) => x - y)[Math.floor(a.length / 2)];
   return Object.fromEntries(names.map((n) => [n, Math.round(med(samples[n]) * 10) / 10]));
 })()`;

@@ -4,14 +4,13 @@ import {
   DynamicDrawUsage,
   Frustum,
   Group,
-  InstancedBufferAttribute,
   BufferGeometry,
-  InstancedBufferGeometry,
   Matrix4,
   Mesh,
   Vector3,
   type PerspectiveCamera,
 } from 'three';
+import { ChunkBatch } from './chunkBatch';
 import type { DisplacementBounds } from '../sim/waveModel';
 import { ChunkSelector, OCEAN_EXTENT, oceanOrigin, type SelectionInput } from '../sim/chunkSelection';
 import type { Plane } from '../sim/frustumMath';
@@ -53,21 +52,13 @@ function bandMaterial(material: OceanMaterial, band: number): OceanMaterial {
   return bandHasDetailNormals(band) ? material : material.near;
 }
 
-/** A band's shared grid with room for `capacity` chunk instances. */
-function bandGeometry(band: number, capacity: number): InstancedBufferGeometry {
-  return instancedGrid(chunkGrid(band), capacity);
-}
-
-function instancedGrid({ positions, indices }: { positions: Float32Array; indices: Uint16Array }, capacity: number): InstancedBufferGeometry {
-  const geometry = new InstancedBufferGeometry();
-  geometry.setAttribute('position', new BufferAttribute(positions, 3));
-  geometry.setIndex(new BufferAttribute(indices, 1));
-  geometry.setAttribute('aChunk', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
-  geometry.setAttribute('aEdgeSteps', new InstancedBufferAttribute(new Float32Array(capacity * 4), 4).setUsage(DynamicDrawUsage));
-  // Where a tile starts inside its chunk, grid units: 0 for whole chunks (see TILES).
-  geometry.setAttribute('aTile', new InstancedBufferAttribute(new Float32Array(capacity * 2), 2).setUsage(DynamicDrawUsage));
-  geometry.instanceCount = 0;
-  return geometry;
+/** A batch drawn with the grid bands' order (before the sky), culled by the quadtree, not by three. */
+function seaBatch(grid: { positions: Float32Array; indices: Uint16Array }, material: OceanMaterial, maxChunks: number): ChunkBatch<OceanMaterial> {
+  const batch = new ChunkBatch(grid, material, maxChunks);
+  // The quadtree has already culled; three's test would use a stale, origin-sized sphere.
+  batch.mesh.frustumCulled = false;
+  batch.mesh.renderOrder = NEAR_SEA_RENDER_ORDER;
+  return batch;
 }
 
 /**
@@ -89,14 +80,16 @@ const SELECTION_KEY_LENGTH = 36;
 
 /**
  * The ocean as chunks: each frame the quadtree picks the chunks in view, each gets its
- * band, and every band is drawn as one instanced mesh of its shared grid (one draw call
- * per band in use). No mesh, geometry or buffer is created per frame: the instance buffers
- * are sized for every chunk once and only their used part is uploaded.
+ * band, and every band is drawn as one batch of its shared grid (one draw call per band in
+ * use; see ChunkBatch). No mesh, geometry or buffer is created per frame (an expanded batch
+ * grows, rarely, when a frame needs more room than it had): only the used part of the
+ * records is uploaded.
  */
 export class OceanChunks {
   readonly group = new Group();
   private readonly selector = new ChunkSelector();
-  private readonly meshes: Mesh<InstancedBufferGeometry, OceanMaterial>[] = [];
+  /** Per band, its chunks drawn whole. */
+  private readonly batches: ChunkBatch<OceanMaterial>[] = [];
   private readonly frustum = new Frustum();
   private readonly viewProjection = new Matrix4();
   private readonly planes: Plane[] = Array.from({ length: 6 }, () => ({ nx: 0, ny: 0, nz: 1, d: 0 }));
@@ -115,13 +108,9 @@ export class OceanChunks {
     bruteForce: false,
   };
   private frozenHelper: CameraHelper | null = null;
-  private readonly fill = new Array<number>(MAX_LOD_BANDS).fill(0);
-  /** Per band: the instance attributes and their arrays, looked up once. */
-  private readonly instanceAttributes: InstancedBufferAttribute[][] = [];
-  private readonly chunkData: Float32Array[] = [];
-  private readonly edgeData: Float32Array[] = [];
   private readonly farSelector = new FarRingSelector(OCEAN_EXTENT / 2);
-  private readonly farMesh: Mesh<InstancedBufferGeometry, OceanMaterial>;
+  /** Every far ring's cell draws one shared grid: one draw for all of them. */
+  private readonly farCells: ChunkBatch<OceanMaterial>;
   private readonly skirt: Mesh<BufferGeometry, OceanMaterial>;
   private readonly skirtPoints: Float64Array;
   private readonly edgeScratch = [0, 0, 0, 0];
@@ -131,43 +120,31 @@ export class OceanChunks {
   private readonly lastCameraPose = new Float64Array(26).fill(NaN);
   private readonly key = new Float64Array(SELECTION_KEY_LENGTH);
   private readonly zones = new Float32Array(MAX_LOD_BANDS * 2);
-  /** Per band: the tile mesh (null where the band is drawn whole), its attributes and how many tiles it draws. */
-  private readonly tileMeshes: (Mesh<InstancedBufferGeometry, OceanMaterial> | null)[] = [];
-  private readonly tileFill = new Array<number>(MAX_LOD_BANDS).fill(0);
+  /** Per band: its tiles of chunks straddling a compare strip (null where the band is drawn whole). */
+  private readonly tileBatches: (ChunkBatch<OceanMaterial> | null)[] = [];
 
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
     for (let band = 0; band < MAX_LOD_BANDS; band++) {
       // Bands whose vertex normals keep their waves draw with the material compiled without
       // per-pixel detail normals (the same picture: their weight there is exactly 0).
-      const mesh = new Mesh(bandGeometry(band, capacity), bandMaterial(material, band));
-      // The quadtree has already culled; three's test would use a stale, origin-sized sphere.
-      mesh.frustumCulled = false;
-      mesh.renderOrder = NEAR_SEA_RENDER_ORDER;
-      this.meshes.push(mesh);
-      this.group.add(mesh);
-      const chunk = mesh.geometry.getAttribute('aChunk') as InstancedBufferAttribute;
-      const edges = mesh.geometry.getAttribute('aEdgeSteps') as InstancedBufferAttribute;
-      this.instanceAttributes.push([chunk, edges]);
-      this.chunkData.push(chunk.array as Float32Array);
-      this.edgeData.push(edges.array as Float32Array);
+      const batch = seaBatch(chunkGrid(band), bandMaterial(material, band), capacity);
+      this.batches.push(batch);
+      this.group.add(batch.mesh);
     }
     for (let band = 0; band < MAX_LOD_BANDS; band++) {
       if (!tiledBand(band)) {
-        this.tileMeshes.push(null);
+        this.tileBatches.push(null);
         continue;
       }
-      const mesh = new Mesh(instancedGrid(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), TILE_CAPACITY), bandMaterial(material, band));
-      mesh.frustumCulled = false;
-      mesh.renderOrder = NEAR_SEA_RENDER_ORDER;
-      mesh.visible = false;
-      this.tileMeshes.push(mesh);
-      this.group.add(mesh);
+      const batch = seaBatch(squareGrid(BAND_STEPS[band], bandQuads(band) / TILES), bandMaterial(material, band), TILE_CAPACITY);
+      batch.mesh.visible = false;
+      this.tileBatches.push(batch);
+      this.group.add(batch.mesh);
     }
-    // Every far ring's cell draws one shared grid: one instanced draw for all of them.
-    this.farMesh = new Mesh(instancedGrid(squareGrid(RING_OWN_STEP, RING_CELL_QUADS, true), this.farSelector.total), material);
-    this.farMesh.frustumCulled = false;
-    this.group.add(this.farMesh);
+    this.farCells = new ChunkBatch(squareGrid(RING_OWN_STEP, RING_CELL_QUADS, true), material, this.farSelector.total);
+    this.farCells.mesh.frustumCulled = false;
+    this.group.add(this.farCells.mesh);
     // The skirt's vertices carry their world place in aChunk (grid position 0), updated as the grid moves.
     const rings = this.farSelector.rings;
     const { points, indices } = skirtMesh(rings[rings.length - 1]);
@@ -205,8 +182,8 @@ export class OceanChunks {
     if (this.sameSelectionAsLastFrame(settings, tiles)) return;
     selector.select(input);
     this.material.setLodMorph(this.cullCamera, bounds.vertical, morphZones(settings.lodDistance, this.bandsInUse, settings.lodMorph, this.zones));
-    this.fill.fill(0);
-    this.tileFill.fill(0);
+    for (const batch of this.batches) batch.clear();
+    for (const batch of this.tileBatches) batch?.clear();
     const side = selector.side;
     const { originX, originZ } = input;
     for (let n = 0; n < selector.count; n++) {
@@ -214,45 +191,13 @@ export class OceanChunks {
       const leaf = selector.leaves[n];
       const i = leaf % side;
       const j = (leaf - i) / side;
-      if (tiles && this.addTiles(band, originX + i * CHUNK_SIZE, originZ + j * CHUNK_SIZE, selector.edgeSteps, n * 4, bounds)) continue;
-      const o = this.fill[band]++ * 4;
-      const chunk = this.chunkData[band];
-      chunk[o] = originX + i * CHUNK_SIZE;
-      chunk[o + 1] = originZ + j * CHUNK_SIZE;
-      chunk[o + 2] = band;
-      chunk[o + 3] = BASE_STEP;
-      const edges = this.edgeData[band];
-      const e = n * 4;
-      edges[o] = selector.edgeSteps[e];
-      edges[o + 1] = selector.edgeSteps[e + 1];
-      edges[o + 2] = selector.edgeSteps[e + 2];
-      edges[o + 3] = selector.edgeSteps[e + 3];
+      const x = originX + i * CHUNK_SIZE;
+      const z = originZ + j * CHUNK_SIZE;
+      if (tiles && this.addTiles(band, x, z, selector.edgeSteps, n * 4, bounds)) continue;
+      this.batches[band].add(x, z, band, BASE_STEP, selector.edgeSteps, n * 4);
     }
-    for (let band = 0; band < MAX_LOD_BANDS; band++) {
-      const mesh = this.tileMeshes[band];
-      if (!mesh) continue;
-      const count = this.tileFill[band];
-      mesh.geometry.instanceCount = count;
-      mesh.visible = count > 0;
-      if (count === 0) continue;
-      for (const name of ['aChunk', 'aEdgeSteps', 'aTile']) {
-        const attribute = mesh.geometry.getAttribute(name) as InstancedBufferAttribute;
-        attribute.clearUpdateRanges();
-        attribute.addUpdateRange(0, count * attribute.itemSize);
-        attribute.needsUpdate = true;
-      }
-    }
-    for (let band = 0; band < MAX_LOD_BANDS; band++) {
-      const count = this.fill[band];
-      this.meshes[band].geometry.instanceCount = count;
-      this.meshes[band].visible = count > 0;
-      if (count === 0) continue;
-      for (const attribute of this.instanceAttributes[band]) {
-        attribute.clearUpdateRanges();
-        attribute.addUpdateRange(0, count * 4);
-        attribute.needsUpdate = true;
-      }
-    }
+    for (const batch of this.tileBatches) batch?.commit();
+    for (const batch of this.batches) batch.commit();
     this.updateFar(originX + OCEAN_EXTENT / 2, originZ + OCEAN_EXTENT / 2, bounds);
   }
 
@@ -265,8 +210,8 @@ export class OceanChunks {
    * put a triangle inside the frustum.
    */
   private addTiles(band: number, x0: number, z0: number, edgeSteps: Uint8Array, e: number, bounds: DisplacementBounds): boolean {
-    const mesh = this.tileMeshes[band];
-    if (!mesh || this.tileFill[band] + TILES * TILES > TILE_CAPACITY) return false;
+    const batch = this.tileBatches[band];
+    if (!batch || batch.count + TILES * TILES > batch.maxChunks) return false;
     const h = bounds.horizontal;
     const v = bounds.vertical;
     if (classifyBox(this.planes, x0 - h, -v, z0 - h, x0 + CHUNK_SIZE + h, v, z0 + CHUNK_SIZE + h) === INSIDE) return false;
@@ -275,19 +220,12 @@ export class OceanChunks {
     const reach = h + shift + 0.05;
     const tileUnits = CHUNK_QUADS / TILES;
     const tileSize = tileUnits * BASE_STEP;
-    const chunk = mesh.geometry.getAttribute('aChunk').array as Float32Array;
-    const edges = mesh.geometry.getAttribute('aEdgeSteps').array as Float32Array;
-    const tile = mesh.geometry.getAttribute('aTile').array as Float32Array;
     for (let tj = 0; tj < TILES; tj++) {
       for (let ti = 0; ti < TILES; ti++) {
         const tx = x0 + ti * tileSize;
         const tz = z0 + tj * tileSize;
         if (classifyBox(this.planes, tx - reach, -v - 0.05, tz - reach, tx + tileSize + reach, v + 0.05, tz + tileSize + reach) === OUTSIDE) continue;
-        const t = this.tileFill[band]++;
-        chunk.set([x0, z0, band, BASE_STEP], t * 4);
-        edges.set([edgeSteps[e], edgeSteps[e + 1], edgeSteps[e + 2], edgeSteps[e + 3]], t * 4);
-        tile[t * 2] = ti * tileUnits;
-        tile[t * 2 + 1] = tj * tileUnits;
+        batch.add(x0, z0, band, BASE_STEP, edgeSteps, e, ti * tileUnits, tj * tileUnits);
       }
     }
     return true;
@@ -333,36 +271,19 @@ export class OceanChunks {
     const far = this.farSelector;
     const rings = far.rings;
     const count = far.select(this.planes, centerX, centerZ, -bounds.vertical, bounds.vertical, bounds.horizontal);
-    const geometry = this.farMesh.geometry;
-    const chunkAttribute = geometry.getAttribute('aChunk') as InstancedBufferAttribute;
-    const edgeAttribute = geometry.getAttribute('aEdgeSteps') as InstancedBufferAttribute;
-    const chunk = chunkAttribute.array as Float32Array;
-    const edges = edgeAttribute.array as Float32Array;
+    const cells = this.farCells;
     const steps = this.edgeScratch;
+    cells.clear();
     for (let n = 0; n < count; n++) {
       const r = far.ringOf[n];
       const ring = rings[r];
       const i = far.cellI[n];
       const j = far.cellJ[n];
-      const o = n * 4;
-      chunk[o] = centerX - ring.outer + i * ring.cellSize;
-      chunk[o + 1] = centerZ - ring.outer + j * ring.cellSize;
-      // Band index past the grid's six, for the LOD colours (the shader clamps to its last colour).
-      chunk[o + 2] = MAX_LOD_BANDS + r;
-      chunk[o + 3] = ring.unit;
       ringEdgeSteps(ring, i, j, r === rings.length - 1, steps);
-      edges[o] = steps[0];
-      edges[o + 1] = steps[1];
-      edges[o + 2] = steps[2];
-      edges[o + 3] = steps[3];
+      // Band index past the grid's six, for the LOD colours (the shader clamps to its last colour).
+      cells.add(centerX - ring.outer + i * ring.cellSize, centerZ - ring.outer + j * ring.cellSize, MAX_LOD_BANDS + r, ring.unit, steps, 0);
     }
-    geometry.instanceCount = count;
-    this.farMesh.visible = count > 0;
-    for (const attribute of [chunkAttribute, edgeAttribute]) {
-      attribute.clearUpdateRanges();
-      attribute.addUpdateRange(0, count * 4);
-      attribute.needsUpdate = true;
-    }
+    cells.commit();
     // The skirt is drawn when the box of any of its four sides is in view.
     const e = rings[rings.length - 1].outer;
     const R = SKIRT_RADIUS;
@@ -451,6 +372,12 @@ export class OceanChunks {
     }
   }
 
+  /** What each batch draws (bands, their tiles, then the far cells): its chunks' records (ChunkBatch.record), for tests. */
+  drawnRecords(): number[][][] {
+    const batches = [...this.batches, ...this.tileBatches, this.farCells];
+    return batches.flatMap((batch) => (batch && batch.mesh.visible ? [Array.from({ length: batch.count }, (_, n) => batch.record(n))] : []));
+  }
+
   stats(): ChunkStats {
     return {
       chunksTotal: this.selector.total,
@@ -461,9 +388,9 @@ export class OceanChunks {
   }
 
   dispose(): void {
-    for (const mesh of this.meshes) mesh.geometry.dispose();
-    for (const mesh of this.tileMeshes) mesh?.geometry.dispose();
-    this.farMesh.geometry.dispose();
+    for (const batch of this.batches) batch.dispose();
+    for (const batch of this.tileBatches) batch?.dispose();
+    this.farCells.dispose();
     this.skirt.geometry.dispose();
     this.frozenHelper?.dispose();
   }
