@@ -48,6 +48,8 @@ export class ChunkBatch<M extends Material> {
   private chunkData!: Float32Array;
   private edgeData!: Float32Array;
   private tileData!: Float32Array;
+  /** Whether a tile place other than (0, 0) was ever added; until then the tile data are all 0. */
+  private tilesPlaced = false;
 
   /** `maxChunks`: the most a frame may add (add() says no past it). */
   constructor(private readonly grid: ChunkGridData, material: M, readonly maxChunks: number) {
@@ -69,18 +71,27 @@ export class ChunkBatch<M extends Material> {
     const first = this.count * copies;
     const chunk = this.chunkData;
     const edge = this.edgeData;
-    const tile = this.tileData;
+    // Tile places stay 0 in every batch but the compare strips' tile batches: zeros need no writing there.
+    if (tileX !== 0 || tileZ !== 0) this.tilesPlaced = true;
+    const tile = this.tilesPlaced ? this.tileData : null;
+    const e0 = edges[e];
+    const e1 = edges[e + 1];
+    const e2 = edges[e + 2];
+    const e3 = edges[e + 3];
     for (let v = first; v < first + copies; v++) {
-      chunk[v * 4] = x;
-      chunk[v * 4 + 1] = z;
-      chunk[v * 4 + 2] = band;
-      chunk[v * 4 + 3] = unit;
-      edge[v * 4] = edges[e];
-      edge[v * 4 + 1] = edges[e + 1];
-      edge[v * 4 + 2] = edges[e + 2];
-      edge[v * 4 + 3] = edges[e + 3];
-      tile[v * 2] = tileX;
-      tile[v * 2 + 1] = tileZ;
+      const o = v * 4;
+      chunk[o] = x;
+      chunk[o + 1] = z;
+      chunk[o + 2] = band;
+      chunk[o + 3] = unit;
+      edge[o] = e0;
+      edge[o + 1] = e1;
+      edge[o + 2] = e2;
+      edge[o + 3] = e3;
+      if (tile) {
+        tile[v * 2] = tileX;
+        tile[v * 2 + 1] = tileZ;
+      }
     }
     this.count++;
     return true;
