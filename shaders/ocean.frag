@@ -9,9 +9,7 @@
 #include <oceano_constants>
 #include <oceano_waves>
 
-uniform samplerCube uSky;
-// -1 for a cube map made from images (three mirrors those in x), +1 for a cube render target.
-uniform float uSkyFlip;
+#include <oceano_sky_cube>
 uniform sampler2D uFresnelTable;
 uniform sampler2D uFresnelFromBelow;
 uniform bool uFresnelEnabled;
@@ -62,10 +60,6 @@ const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 const vec3 BAND_COLORS[LOD_BAND_COUNT] = LOD_BAND_COLORS;
 #endif
 
-vec3 skyColor(vec3 direction) {
-  return textureCube(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z)).rgb;
-}
-
 // Linear interpolation between table entries done by hand: float textures are not
 // filterable everywhere in WebGL2.
 float fresnelLookup(sampler2D table, float cosIncidence) {
@@ -96,7 +90,7 @@ vec3 shadeFromBelow(vec3 v, vec3 n) {
   vec3 through = vec3(0.0);
   if (!totalReflection) {
     vec3 t = normalize(up);
-    through = skyColor(t);
+    through = skyCubeColor(t);
     float sunVisible = step(0.0, uSunDirection.y);
     through += uSunColor * pow(max(dot(t, uSunDirection), 0.0), 700.0) * 30.0 * sunVisible;
   }
@@ -209,7 +203,7 @@ void main() {
   vec3 r = reflect(-v, n);
   // A reflected ray that points below the horizon would see the sea, not the sky.
   r.y = max(r.y, 0.0);
-  vec3 sky = skyColor(normalize(r));
+  vec3 sky = skyCubeColor(normalize(r));
 
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
   vec3 color = mix(water, sky, reflectance);
@@ -246,7 +240,7 @@ void main() {
 #ifdef OCEAN_NEAR_BANDS
   vec3 horizon = vHorizon;
 #else
-  vec3 horizon = skyColor(normalize(vec3(-v.x, 0.0, -v.z)));
+  vec3 horizon = skyCubeColor(normalize(vec3(-v.x, 0.0, -v.z)));
 #endif
   float haze = 1.0 - exp(-distance * uHazeDensity);
   color = mix(color, horizon, haze);

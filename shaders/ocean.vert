@@ -37,8 +37,7 @@ uniform mat4 uViewRelative;
 varying vec3 vRelativePosition;
 #ifdef OCEAN_NEAR_BANDS
 // The near bands' haze colour: the sky at the horizon beyond the vertex (see ocean.frag).
-uniform samplerCube uSky;
-uniform float uSkyFlip;
+#include <oceano_sky_cube>
 uniform vec3 uEyeRelative;
 varying vec3 vHorizon;
 #endif
@@ -140,7 +139,7 @@ void main() {
   // A cube lookup needs a non-zero direction, not a unit one: a vertex right under the eye
   // gets the +x horizon (the haze's weight is 0 there).
   vec2 away = relative.xz - uEyeRelative.xz + vec2(1e-20, 0.0);
-  vHorizon = texture(uSky, vec3(uSkyFlip * away.x, 0.0, away.y)).rgb;
+  vHorizon = skyCubeColor(vec3(away.x, 0.0, away.y));
 #endif
   vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;

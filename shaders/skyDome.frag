@@ -66,5 +66,6 @@ void main() {
   // No disc once the sun's centre is below the horizon.
   float sunDisc = smoothstep(0.99985, 0.99992, cosSun) * step(0.0, sun.y);
   color = mix(color, vec3(1.0), sunDisc);
-  gl_FragColor = vec4(srgbToLinear(clamp(color, 0.0, 1.0)), 1.0);
+  // Stored as the square root of the linear colour, in 8 bits (see skyCube.glsl).
+  gl_FragColor = vec4(sqrt(srgbToLinear(clamp(color, 0.0, 1.0))), 1.0);
 }

@@ -22,6 +22,14 @@ export function skyFlip(sky: CubeTexture): number {
   return sky.isRenderTargetTexture ? 1 : -1;
 }
 
+/** Marks a cube whose texels hold the square root of the colour (shaders/skyCube.glsl). */
+export const SQUARE_ROOT_SKY = 'oceanoSquareRootSky';
+
+/** 1 where the cube holds square roots (the default sky's, src/render/sunSky.ts), 0 for image cubes. */
+export function skySquared(sky: CubeTexture): number {
+  return sky.userData[SQUARE_ROOT_SKY] === true ? 1 : 0;
+}
+
 export class OceanMaterial extends ShaderMaterial {
   /**
    * The material of the grid bands whose vertices lie close enough together that ocean.frag's
@@ -50,6 +58,7 @@ export class OceanMaterial extends ShaderMaterial {
         ...shared,
         uSky: { value: sky },
         uSkyFlip: { value: skyFlip(sky) },
+        uSkySquared: { value: skySquared(sky) },
         uFresnelTable: { value: fresnelTables.fromAbove },
         uFresnelFromBelow: { value: fresnelTables.fromBelow },
         uFresnelEnabled: { value: true },
@@ -157,6 +166,7 @@ export class OceanMaterial extends ShaderMaterial {
   setSky(sky: CubeTexture): void {
     this.uniforms.uSky.value = sky;
     this.uniforms.uSkyFlip.value = skyFlip(sky);
+    this.uniforms.uSkySquared.value = skySquared(sky);
   }
 
   setWaterColor(hex: string): void {

@@ -5,6 +5,7 @@ import caustics from '../../shaders/caustics.glsl?raw';
 import waterline from '../../shaders/waterline.glsl?raw';
 import wake from '../../shaders/wake.glsl?raw';
 import sinTurns from '../../shaders/sinTurns.glsl?raw';
+import skyCube from '../../shaders/skyCube.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 
 /**
@@ -18,6 +19,8 @@ const chunks: Record<string, string> = {
   // Exact sin/cos of phases in turns: the seed's swell, the Gerstner sum and the wake share it.
   oceano_sin_turns: sinTurns,
   oceano_tiled_heightmap: tiledHeightmap,
+  // The sky cube's sampler and its decoding (the default sky's cube holds square roots).
+  oceano_sky_cube: skyCube,
   oceano_water_volume: waterVolume,
   // Needs <oceano_waves> included before it; see src/render/causticsUniforms.ts.
   oceano_caustics: caustics,

@@ -4,7 +4,6 @@ import {
   Color,
   CubeCamera,
   DataTexture,
-  HalfFloatType,
   LinearFilter,
   LinearSRGBColorSpace,
   Mesh,
@@ -21,6 +20,7 @@ import {
 import vertexShader from '../../shaders/skyDome.vert?raw';
 import fragmentShader from '../../shaders/skyDome.frag?raw';
 import { BELOW_HORIZON, CLOUD_LIT, CLOUD_SHADE, DUSK_HORIZON, DUSK_ZENITH, HORIZON, NIGHT_HORIZON, NIGHT_ZENITH, SUN, ZENITH, cloudDensityTile } from '../sim/skyPainter';
+import { SQUARE_ROOT_SKY } from './oceanMaterial';
 
 /**
  * Texels along one side of the baked cloud tile: about 10 per cell of the finest octave
@@ -48,8 +48,10 @@ export class SunSky {
   paintCount = 0;
 
   constructor(size = 512) {
-    this.target = new WebGLCubeRenderTarget(size, { type: HalfFloatType, generateMipmaps: false, minFilter: LinearFilter, magFilter: LinearFilter });
+    // 8 bits a channel holding the colour's square root (shaders/skyCube.glsl says why).
+    this.target = new WebGLCubeRenderTarget(size, { type: UnsignedByteType, generateMipmaps: false, minFilter: LinearFilter, magFilter: LinearFilter });
     this.target.texture.colorSpace = LinearSRGBColorSpace;
+    this.target.texture.userData[SQUARE_ROOT_SKY] = true;
     const density = cloudDensityTile(CLOUD_TILE_SIZE);
     const bytes = new Uint8Array(density.length);
     // Density lies in [-1, 1]; one byte per texel is finer than the cloud edge's width (0.3).
