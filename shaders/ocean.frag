@@ -60,6 +60,21 @@ const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 const vec3 BAND_COLORS[LOD_BAND_COUNT] = LOD_BAND_COLORS;
 #endif
 
+// x⁹⁰⁰, the sun's highlight, by squaring (900 = 512 + 256 + 128 + 4): eleven products cost
+// SwiftShader less than pow's log and exp (the default view about 3 % less,
+// scripts/shaderVariantProbe.ts), and agree with pow to float32 rounding.
+float power900(float x) {
+  float x4 = x * x;
+  x4 *= x4;
+  float x128 = x4 * x4;
+  x128 *= x128;
+  x128 *= x128;
+  x128 *= x128;
+  x128 *= x128;
+  float x256 = x128 * x128;
+  return x256 * x256 * x256 * x128 * x4;
+}
+
 // Linear interpolation between table entries done by hand: float textures are not
 // filterable everywhere in WebGL2.
 float fresnelLookup(sampler2D table, float cosIncidence) {
@@ -210,7 +225,7 @@ void main() {
 
   vec3 halfway = normalize(uSunDirection + v);
   float sunVisible = step(0.0, uSunDirection.y);
-  float specular = pow(max(dot(n, halfway), 0.0), 900.0) * 40.0;
+  float specular = power900(max(dot(n, halfway), 0.0)) * 40.0;
   color += uSunColor * specular * reflectance * sunVisible;
 
   float foam = 0.0;
