@@ -141,30 +141,30 @@ export class ChunkBatch<M extends Material> {
     this.chunkData = new Float32Array(records * 4);
     this.edgeData = new Float32Array(records * 4);
     this.tileData = new Float32Array(records * 2);
-    if (!this.expanded) {
-      const geometry = new InstancedBufferGeometry();
-      geometry.setAttribute('position', new BufferAttribute(positions, 3));
-      geometry.setIndex(new BufferAttribute(indices, 1));
-      geometry.setAttribute('aChunk', new InstancedBufferAttribute(this.chunkData, 4).setUsage(DynamicDrawUsage));
-      geometry.setAttribute('aEdgeSteps', new InstancedBufferAttribute(this.edgeData, 4).setUsage(DynamicDrawUsage));
-      geometry.setAttribute('aTile', new InstancedBufferAttribute(this.tileData, 2).setUsage(DynamicDrawUsage));
-      geometry.instanceCount = 0;
-      return geometry;
+    let geometry: BufferGeometry;
+    if (this.expanded) {
+      const vertices = this.verticesPerChunk;
+      const repeated = new Float32Array(records * 3);
+      const repeatedIndices = records > 65536 ? new Uint32Array(this.capacity * indices.length) : new Uint16Array(this.capacity * indices.length);
+      for (let c = 0; c < this.capacity; c++) {
+        repeated.set(positions, c * vertices * 3);
+        for (let k = 0; k < indices.length; k++) repeatedIndices[c * indices.length + k] = indices[k] + c * vertices;
+      }
+      geometry = new BufferGeometry();
+      geometry.setAttribute('position', new BufferAttribute(repeated, 3));
+      geometry.setIndex(new BufferAttribute(repeatedIndices, 1));
+      geometry.setDrawRange(0, 0);
+    } else {
+      const instanced = new InstancedBufferGeometry();
+      instanced.setAttribute('position', new BufferAttribute(positions, 3));
+      instanced.setIndex(new BufferAttribute(indices, 1));
+      instanced.instanceCount = 0;
+      geometry = instanced;
     }
-    const vertices = this.verticesPerChunk;
-    const repeated = new Float32Array(records * 3);
-    const repeatedIndices = records > 65536 ? new Uint32Array(this.capacity * indices.length) : new Uint16Array(this.capacity * indices.length);
-    for (let c = 0; c < this.capacity; c++) {
-      repeated.set(positions, c * vertices * 3);
-      for (let k = 0; k < indices.length; k++) repeatedIndices[c * indices.length + k] = indices[k] + c * vertices;
-    }
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(repeated, 3));
-    geometry.setIndex(new BufferAttribute(repeatedIndices, 1));
-    geometry.setAttribute('aChunk', new BufferAttribute(this.chunkData, 4).setUsage(DynamicDrawUsage));
-    geometry.setAttribute('aEdgeSteps', new BufferAttribute(this.edgeData, 4).setUsage(DynamicDrawUsage));
-    geometry.setAttribute('aTile', new BufferAttribute(this.tileData, 2).setUsage(DynamicDrawUsage));
-    geometry.setDrawRange(0, 0);
+    const Record = this.expanded ? BufferAttribute : InstancedBufferAttribute;
+    geometry.setAttribute('aChunk', new Record(this.chunkData, 4).setUsage(DynamicDrawUsage));
+    geometry.setAttribute('aEdgeSteps', new Record(this.edgeData, 4).setUsage(DynamicDrawUsage));
+    geometry.setAttribute('aTile', new Record(this.tileData, 2).setUsage(DynamicDrawUsage));
     return geometry;
   }
 }
