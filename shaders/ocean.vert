@@ -1,4 +1,5 @@
-// One ocean chunk instance: a band's shared grid (integer grid coordinates in
+// One ocean chunk (an instance, or one copy of the grid in an expanded batch: chunkBatch.ts),
+// a band's shared grid (integer grid coordinates in
 // position.xz), placed at its world corner, with edge vertices snapped onto a coarser
 // neighbour's edge (the GLSL twin of src/sim/edgeSnap.ts), then displaced by the active wave
 // model's chunk (waveDisplacement / waveNormal, see shaders/waves/).
