@@ -106,7 +106,8 @@ export class ChunkBatch<M extends Material> {
     else (geometry as InstancedBufferGeometry).instanceCount = count;
     if (count === 0) return;
     const records = count * (this.expanded ? this.verticesPerChunk : 1);
-    for (const name of ['aChunk', 'aEdgeSteps', 'aTile']) {
+    // Tile places never written are the zeros the buffer was made with: nothing to upload.
+    for (const name of this.tilesPlaced ? ['aChunk', 'aEdgeSteps', 'aTile'] : ['aChunk', 'aEdgeSteps']) {
       const attribute = geometry.getAttribute(name) as BufferAttribute;
       attribute.clearUpdateRanges();
       attribute.addUpdateRange(0, records * attribute.itemSize);

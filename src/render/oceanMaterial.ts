@@ -10,25 +10,10 @@ import { registerShaderChunks } from './shaderChunks';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 import type { WakeUniforms } from './wakeUniforms';
+import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
-
-/**
- * three.js stores cube maps made from images mirrored in x (its flipEnvMap convention),
- * while a cube render target holds each world direction where it is: -1 and +1.
- */
-export function skyFlip(sky: CubeTexture): number {
-  return sky.isRenderTargetTexture ? 1 : -1;
-}
-
-/** Marks a cube whose texels hold the square root of the colour (shaders/skyCube.glsl). */
-export const SQUARE_ROOT_SKY = 'oceanoSquareRootSky';
-
-/** 1 where the cube holds square roots (the default sky's, src/render/sunSky.ts), 0 for image cubes. */
-export function skySquared(sky: CubeTexture): number {
-  return sky.userData[SQUARE_ROOT_SKY] === true ? 1 : 0;
-}
 
 export class OceanMaterial extends ShaderMaterial {
   /**
@@ -56,9 +41,7 @@ export class OceanMaterial extends ShaderMaterial {
       fragmentShader,
       uniforms: {
         ...shared,
-        uSky: { value: sky },
-        uSkyFlip: { value: skyFlip(sky) },
-        uSkySquared: { value: skySquared(sky) },
+        ...createSkyCubeUniforms(sky),
         uFresnelTable: { value: fresnelTables.fromAbove },
         uFresnelFromBelow: { value: fresnelTables.fromBelow },
         uFresnelEnabled: { value: true },
@@ -164,9 +147,7 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   setSky(sky: CubeTexture): void {
-    this.uniforms.uSky.value = sky;
-    this.uniforms.uSkyFlip.value = skyFlip(sky);
-    this.uniforms.uSkySquared.value = skySquared(sky);
+    setSkyCube(this.uniforms as SkyCubeUniforms, sky);
   }
 
   setWaterColor(hex: string): void {

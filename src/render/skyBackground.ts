@@ -1,7 +1,7 @@
 import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, type Camera, type CubeTexture } from 'three';
 import vertexShader from '../../shaders/skyBackground.vert?raw';
 import fragmentShader from '../../shaders/skyBackground.frag?raw';
-import { skyFlip, skySquared } from './oceanMaterial';
+import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
 
 /** What scenes call the sky mesh, so a test can take it out (to see what is behind the sea). */
 export const SKY_BACKGROUND_NAME = 'oceano-sky';
@@ -33,7 +33,7 @@ export class SkyBackground {
     const material = new ShaderMaterial({
       vertexShader,
       fragmentShader,
-      uniforms: { uSky: { value: sky }, uSkyFlip: { value: skyFlip(sky) }, uSkySquared: { value: skySquared(sky) }, uClipToWorldDirection: { value: this.clipToWorld } },
+      uniforms: { ...createSkyCubeUniforms(sky), uClipToWorldDirection: { value: this.clipToWorld } },
       depthWrite: false,
     });
     this.mesh = new Mesh(geometry, material);
@@ -48,9 +48,7 @@ export class SkyBackground {
   }
 
   setSky(sky: CubeTexture): void {
-    this.mesh.material.uniforms.uSky.value = sky;
-    this.mesh.material.uniforms.uSkyFlip.value = skyFlip(sky);
-    this.mesh.material.uniforms.uSkySquared.value = skySquared(sky);
+    setSkyCube(this.mesh.material.uniforms as SkyCubeUniforms, sky);
   }
 
   dispose(): void {

@@ -20,7 +20,7 @@ import {
 import vertexShader from '../../shaders/skyDome.vert?raw';
 import fragmentShader from '../../shaders/skyDome.frag?raw';
 import { BELOW_HORIZON, CLOUD_LIT, CLOUD_SHADE, DUSK_HORIZON, DUSK_ZENITH, HORIZON, NIGHT_HORIZON, NIGHT_ZENITH, SUN, ZENITH, cloudDensityTile } from '../sim/skyPainter';
-import { SQUARE_ROOT_SKY } from './oceanMaterial';
+import { SQUARE_ROOT_SKY } from './skyCubeUniforms';
 
 /**
  * Texels along one side of the baked cloud tile: about 10 per cell of the finest octave

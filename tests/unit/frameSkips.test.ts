@@ -69,27 +69,21 @@ describe('OceanMaterial.setWakeOn: the wake compiled in only while on, and a rep
 describe('OceanMaterial teaching and debug views: the LOD tint, the normal as colour and the normals comparison compiled in only while shown', () => {
   it('puts each define in both programs and takes it out again; a repeat recompiles nothing', () => {
     const m = material();
-    const both = (name: string) => [name in m.defines, name in m.near.defines];
-    expect(both('OCEAN_LOD_COLORS')).toEqual([false, false]);
-    expect(both('OCEAN_SHOW_NORMALS')).toEqual([false, false]);
-    expect(both('OCEAN_NORMALS_COMPARE')).toEqual([false, false]);
-    m.setLodColors(true);
-    m.setTeachingViews(false, true);
-    m.setNormalsCompare(true);
-    expect(both('OCEAN_LOD_COLORS')).toEqual([true, true]);
-    expect(both('OCEAN_SHOW_NORMALS')).toEqual([true, true]);
-    expect(both('OCEAN_NORMALS_COMPARE')).toEqual([true, true]);
+    // Each view's define, in the material and in its near-band twin.
+    const defines = () => ['OCEAN_LOD_COLORS', 'OCEAN_SHOW_NORMALS', 'OCEAN_NORMALS_COMPARE'].map((name) => [name in m.defines, name in m.near.defines]);
+    const show = (on: boolean) => {
+      m.setLodColors(on);
+      m.setTeachingViews(!on, on);
+      m.setNormalsCompare(on);
+    };
+    expect(defines()).toEqual([[false, false], [false, false], [false, false]]);
+    show(true);
+    expect(defines()).toEqual([[true, true], [true, true], [true, true]]);
     const versions = [m.version, m.near.version];
-    m.setLodColors(true);
-    m.setTeachingViews(false, true);
-    m.setNormalsCompare(true);
+    show(true);
     expect([m.version, m.near.version]).toEqual(versions);
-    m.setLodColors(false);
-    m.setTeachingViews(true, false);
-    m.setNormalsCompare(false);
-    expect(both('OCEAN_LOD_COLORS')).toEqual([false, false]);
-    expect(both('OCEAN_SHOW_NORMALS')).toEqual([false, false]);
-    expect(both('OCEAN_NORMALS_COMPARE')).toEqual([false, false]);
+    show(false);
+    expect(defines()).toEqual([[false, false], [false, false], [false, false]]);
   });
 });
 

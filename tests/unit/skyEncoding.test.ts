@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { CubeTexture, UnsignedByteType } from 'three';
 import { SunSky } from '../../src/render/sunSky';
-import { skyFlip, skySquared } from '../../src/render/oceanMaterial';
+import { skyFlip, skySquared } from '../../src/render/skyCubeUniforms';
 import { paintedSkyCube } from '../../src/render/skyCube';
 
 describe('how each sky cube is read (shaders/skyCube.glsl)', () => {
