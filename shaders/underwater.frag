@@ -4,7 +4,7 @@
 // blur softens it anyway, and writes premultiplied colour for the blur: (colour, 1) where
 // the pixel's line of sight starts in the water, (0, 0, 0, 0) where it starts in the air;
 // the full-resolution composite puts the sharp air side back. With the blur off it runs at
-// full resolution and writes the final colour.
+// full resolution and writes the final colour onto the canvas.
 
 #include <packing>
 #include <oceano_constants>
@@ -12,6 +12,7 @@
 #include <oceano_tiled_heightmap>
 #include <oceano_water_volume>
 #include <oceano_waterline>
+#include <oceano_scene_decode>
 
 uniform sampler2D tDiffuse;
 // shaders/shaftLight.frag's bake of the shaft light, linearly filtered: one period of the
@@ -115,19 +116,24 @@ void main() {
   // sides of a branch, so what a frame does not need is compiled out.
 #ifdef PER_PIXEL_WATERLINE
   if (startsInAir(scene.a, depthSample, nearWorld)) {
-    gl_FragColor = uWriteMask ? vec4(0.0) : vec4(scene.rgb, 1.0);
-    return;
-  }
+    gl_FragColor = uWriteMask ? vec4(0.0) : vec4(sceneColor(scene), 1.0);
+  } else {
 #endif
-
   float distance = 1e6;
   if (depthSample < 1.0) {
     float viewZ = perspectiveDepthToViewZ(depthSample, uNear, uFar);
     distance = length(nearView.xyz * (viewZ / nearView.z));
   }
-  vec3 color = throughWater(scene.rgb, direction, distance);
+  vec3 color = throughWater(sceneColor(scene), direction, distance);
 #ifdef GOD_RAYS
   color += godRays(uEye, direction, distance);
 #endif
   gl_FragColor = vec4(color, 1.0);
+#ifdef PER_PIXEL_WATERLINE
+  }
+#endif
+  // Into the half-resolution target (blur on) three.js makes these nothing; onto the canvas
+  // (blur off, the last pass) they are the output's tone mapping and colour space.
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
 }

@@ -7,6 +7,7 @@
 #include <oceano_waves>
 #include <oceano_water_volume>
 #include <oceano_waterline>
+#include <oceano_scene_decode>
 
 uniform sampler2D tDiffuse;
 uniform sampler2D tDepth;
@@ -38,7 +39,7 @@ void main() {
   vec4 blurred = texture2D(tBlurred, vUv);
   vec3 color;
   if (startsInAir(scene.a, depthSample, nearWorld)) {
-    color = scene.rgb;
+    color = sceneColor(scene);
   } else if (blurred.a >= MIN_WATER_SHARE) {
     color = blurred.rgb / blurred.a;
   } else {
@@ -48,7 +49,7 @@ void main() {
       float viewZ = perspectiveDepthToViewZ(depthSample, uNear, uFar);
       distance = length(nearView.xyz * (viewZ / nearView.z));
     }
-    color = throughWater(scene.rgb, normalize(nearWorld - uEye), distance);
+    color = throughWater(sceneColor(scene), normalize(nearWorld - uEye), distance);
   }
   gl_FragColor = vec4(color, 1.0);
 #else

@@ -7,6 +7,7 @@ import wake from '../../shaders/wake.glsl?raw';
 import sinTurns from '../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../shaders/skyCube.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
+import { ENCODING_COLORSPACE_FRAGMENT, SCENE_DECODE_CHUNK } from './sceneEncoding';
 
 /**
  * Shared GLSL pieces are registered as three.js shader chunks, so every shader that needs
@@ -28,6 +29,10 @@ const chunks: Record<string, string> = {
   oceano_waterline: waterline,
   // The boat's Kelvin wake and its foam, added to whichever wave model is active; uniforms in src/render/wakeUniforms.ts.
   oceano_wake: wake,
+  // The underwater passes' reading of their scene target; see src/render/sceneEncoding.ts.
+  oceano_scene_decode: SCENE_DECODE_CHUNK,
+  // three.js's own chunk, ending every material, with the scene target's encoding appended.
+  colorspace_fragment: ENCODING_COLORSPACE_FRAGMENT,
 };
 
 /** ShaderChunk is typed with three's own chunk names only; ours are added beside them. */

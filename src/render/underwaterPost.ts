@@ -18,7 +18,6 @@ import {
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
-import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { FullScreenQuad, Pass } from 'three/addons/postprocessing/Pass.js';
 import fullscreenVertex from '../../shaders/fullscreen.vert?raw';
 import underwaterFragment from '../../shaders/underwater.frag?raw';
@@ -28,6 +27,7 @@ import compositeFragment from '../../shaders/underwaterComposite.frag?raw';
 import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel } from '../sim/gaussianKernel';
 import { planShaftLightTile, type ShaftLightTile } from '../sim/shaftLightTile';
 import { registerShaderChunks } from './shaderChunks';
+import { encodeSceneAsSquareRoots } from './sceneEncoding';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 
@@ -124,7 +124,7 @@ function blurMaterial(name: string, step: Vector2): ShaderMaterial {
  * tone-maps. The water pass and the blur run at half resolution when the blur is on: the
  * blur softens that detail anyway, and they were three quarters of the frame's cost at
  * full resolution (issue 14). With the blur off, the water pass runs at full resolution
- * and an OutputPass tone-maps. Only used while some of the view is under the water; above
+ * and tone-maps onto the canvas itself. Only used while some of the view is under the water; above
  * it, the view renders directly.
  */
 export class UnderwaterPost {
@@ -135,7 +135,6 @@ export class UnderwaterPost {
   private readonly blurH: QuadPass;
   private readonly blurV: QuadPass;
   private readonly compositePass: QuadPass;
-  private readonly outputPass: OutputPass;
   private readonly named: [string, Pass][];
   /** The baked shaft light; remade when the tile's kind or size changes (a switch of wave model). */
   private shaftTarget: WebGLRenderTarget;
@@ -149,14 +148,16 @@ export class UnderwaterPost {
 
   constructor(
     private readonly renderer: WebGLRenderer,
-    scene: Scene,
+    private readonly scene: Scene,
     private readonly camera: PerspectiveCamera,
     private readonly waves: WaveBinding,
     shared: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
   ) {
     registerShaderChunks();
     const size = renderer.getDrawingBufferSize(new Vector2());
-    const target = new WebGLRenderTarget(size.x, size.y, { type: HalfFloatType, depthTexture: new DepthTexture(size.x, size.y) });
+    // The scene in RGBA8 as square roots (src/render/sceneEncoding.ts): SwiftShader wrote the
+    // half-float target this was at about a quarter of the underwater frame's cost.
+    const target = new WebGLRenderTarget(size.x, size.y, { type: UnsignedByteType, depthTexture: new DepthTexture(size.x, size.y) });
     const halfOptions = { type: HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false };
     this.halfA = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
     this.halfB = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
@@ -215,7 +216,6 @@ export class UnderwaterPost {
         return 'composer';
       },
     );
-    this.outputPass = new OutputPass();
     this.named = [
       ['scene', this.scenePass],
       ['shafts', this.shaftPass],
@@ -223,7 +223,6 @@ export class UnderwaterPost {
       ['blurH', this.blurH],
       ['blurV', this.blurV],
       ['composite', this.compositePass],
-      ['output', this.outputPass],
     ];
     for (const [, pass] of this.named) this.composer.addPass(pass);
     this.setBlur(0);
@@ -244,7 +243,6 @@ export class UnderwaterPost {
     const kernel = linearSampledKernel(halfResolutionSigma(sigma), BLUR_MAX_RADIUS, BLUR_MAX_TAPS);
     this.volumePass.uniforms.uWriteMask.value = this.blurOn;
     for (const pass of [this.blurH, this.blurV, this.compositePass]) pass.enabled = this.blurOn;
-    this.outputPass.enabled = !this.blurOn;
     for (const pass of [this.blurH, this.blurV]) {
       pass.uniforms.uOffsets.value = Array.from(kernel.offsets);
       pass.uniforms.uWeights.value = Array.from(kernel.weights);
@@ -261,6 +259,7 @@ export class UnderwaterPost {
 
 /** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
   render(perPixelWaterline: boolean, afterEachPass?: (name: string) => void): number {
+    encodeSceneAsSquareRoots(this.scene, true);
     const u = this.volumePass.uniforms; // the view uniforms are shared with the composite
     this.camera.updateMatrixWorld();
     (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);

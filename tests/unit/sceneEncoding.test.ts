@@ -1,0 +1,53 @@
+import { describe, expect, it } from 'vitest';
+import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial } from 'three';
+import { encodeSceneAsSquareRoots, SCENE_HEADROOM } from '../../src/render/sceneEncoding';
+import { registerShaderChunks } from '../../src/render/shaderChunks';
+
+const DEFINE = 'OCEANO_SCENE_HEADROOM';
+
+function sceneOfEveryKind() {
+  const scene = new Scene();
+  const shader = new ShaderMaterial({ defines: { KEEP: '' } });
+  const standard = new MeshStandardMaterial();
+  const pair = [new MeshStandardMaterial(), new MeshStandardMaterial()];
+  const line = new LineBasicMaterial();
+  const nested = new Group();
+  nested.add(new Mesh(new BoxGeometry(), pair));
+  scene.add(new Mesh(new BoxGeometry(), shader), new Mesh(new BoxGeometry(), standard), new LineSegments(new BoxGeometry(), line), nested);
+  return { scene, materials: [shader, standard, ...pair, line] };
+}
+
+describe("the underwater passes' scene encoding (src/render/sceneEncoding.ts)", () => {
+  it('defines the headroom on every material in the scene, nested and multi-material ones included, and removes it again', () => {
+    const { scene, materials } = sceneOfEveryKind();
+    encodeSceneAsSquareRoots(scene, true);
+    for (const m of materials) expect(m.defines?.[DEFINE]).toBe(`${SCENE_HEADROOM}.0`);
+    encodeSceneAsSquareRoots(scene, false);
+    for (const m of materials) expect(m.defines && DEFINE in m.defines).toBe(false);
+    expect((materials[0] as ShaderMaterial).defines.KEEP).toBe('');
+  });
+
+  it('recompiles a material only when its encoding changes', () => {
+    const { scene, materials } = sceneOfEveryKind();
+    const versions = () => materials.map((m) => m.version);
+    const start = versions();
+    encodeSceneAsSquareRoots(scene, false);
+    expect(versions()).toEqual(start);
+    encodeSceneAsSquareRoots(scene, true);
+    const encoded = versions();
+    expect(encoded).toEqual(start.map((v) => v + 1));
+    encodeSceneAsSquareRoots(scene, true);
+    expect(versions()).toEqual(encoded);
+  });
+
+  it("ends three.js's colour-space chunk with the encoding, and keeps three's own text", () => {
+    const three = ShaderChunk.colorspace_fragment;
+    registerShaderChunks();
+    registerShaderChunks();
+    const chunk = ShaderChunk.colorspace_fragment;
+    expect(chunk.startsWith(three.split('\n')[0])).toBe(true);
+    expect(chunk.match(/#ifdef OCEANO_SCENE_HEADROOM/g)).toHaveLength(1);
+    expect(chunk.indexOf('linearToOutputTexel')).toBeLessThan(chunk.indexOf('sqrt('));
+    expect((ShaderChunk as unknown as Record<string, string>).oceano_scene_decode).toContain(`SCENE_HEADROOM = ${SCENE_HEADROOM}.0`);
+  });
+});
