@@ -22,5 +22,13 @@ void main() {
     vec2 offset = uStep * uOffsets[i];
     sum += uWeights[i] * (texture2D(tDiffuse, vUv + offset) + texture2D(tDiffuse, vUv - offset));
   }
+#ifdef ENCODE_ROOT
+  // The last pass, into RGBA8 for the composite: the square root of the water colour (which
+  // spends 8 bits about as the output's sRGB does), premultiplied again so that the
+  // composite's bilinear upsample still weighs each texel by its share of water.
+  vec3 root = sqrt(clamp(sum.rgb / max(sum.a, 1e-6), 0.0, 1.0));
+  gl_FragColor = vec4(root * sum.a, sum.a);
+#else
   gl_FragColor = sum;
+#endif
 }

@@ -1,5 +1,7 @@
 // The underwater passes' reading of the scene target (shaders/sceneEncode.glsl wrote it):
-// the stored square root of the colour's share of SCENE_HEADROOM, back to linear colour.
+// the square root below SCENE_LOW_SHARE, the logarithmic shoulder above, back to linear colour.
 vec3 sceneColor(vec4 stored) {
-  return stored.rgb * stored.rgb * SCENE_HEADROOM;
+  vec3 low = stored.rgb / SCENE_LOW_SHARE;
+  vec3 high = exp2((stored.rgb - SCENE_LOW_SHARE) / (1.0 - SCENE_LOW_SHARE) * log2(SCENE_BRIGHTEST));
+  return mix(low * low, high, step(SCENE_LOW_SHARE + 0.5 / 255.0, stored.rgb));
 }

@@ -1,10 +1,15 @@
 // Appended to three.js's colorspace_fragment (src/render/sceneEncoding.ts), so it ends every
-// material's shader, ours and three's (the boat's). When the scene is drawn for the underwater
-// passes, OCEANO_SCENE_HEADROOM is defined on its materials: the linear colour is stored in an
-// RGBA8 target as the square root of its share of the headroom. SwiftShader writes and reads
-// 8-bit targets far faster than half floats; the square root spends the 8 bits about as the
-// output's sRGB levels do, so the dark water does not band; the headroom keeps highlights
-// that the water fog will dim (the sun's glint seen from below) from clipping before it does.
-#ifdef OCEANO_SCENE_HEADROOM
-gl_FragColor.rgb = sqrt(clamp(gl_FragColor.rgb * (1.0 / OCEANO_SCENE_HEADROOM), 0.0, 1.0));
+// material's shader, ours and three's (the boat's). While the scene is drawn for the underwater
+// passes, OCEANO_SCENE_ENCODE is defined on its materials and the linear colour is stored in an
+// RGBA8 target (SwiftShader writes and reads 8-bit targets far faster than half floats): up to
+// 1, its square root in the codes below SCENE_LOW_SHARE, which spends them about as the
+// output's sRGB levels do, so neither the dark water nor the sky seen through the waterline
+// bands; from 1 to SCENE_BRIGHTEST, a logarithmic shoulder in the codes above, for highlights
+// the water fog will dim before the output clips them (the sun seen from below).
+#ifdef OCEANO_SCENE_ENCODE
+{
+  vec3 c = max(gl_FragColor.rgb, 0.0);
+  gl_FragColor.rgb = sqrt(min(c, 1.0)) * SCENE_LOW_SHARE
+    + (1.0 - SCENE_LOW_SHARE) * log2(clamp(c, 1.0, SCENE_BRIGHTEST)) / log2(SCENE_BRIGHTEST);
+}
 #endif

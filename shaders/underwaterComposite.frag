@@ -11,7 +11,8 @@
 
 uniform sampler2D tDiffuse;
 uniform sampler2D tDepth;
-// Premultiplied: rgb is the blurred water colour times the share of water under the kernel, in a.
+// Premultiplied: rgb is the square root of the blurred water colour times the share of water
+// under the kernel, in a (shaders/gaussianBlur.frag, ENCODE_ROOT).
 uniform sampler2D tBlurred;
 uniform mat4 uProjectionInverse;
 uniform mat4 uCameraWorld;
@@ -42,6 +43,7 @@ void main() {
     color = sceneColor(scene);
   } else if (blurred.a >= MIN_WATER_SHARE) {
     color = blurred.rgb / blurred.a;
+    color *= color;
   } else {
     // Fog alone, unblurred, for the few water pixels with no water beside them at half resolution.
     float distance = 1e6;
@@ -54,7 +56,8 @@ void main() {
   gl_FragColor = vec4(color, 1.0);
 #else
   vec4 blurred = texture2D(tBlurred, vUv);
-  gl_FragColor = vec4(blurred.rgb / max(blurred.a, MIN_WATER_SHARE), 1.0);
+  vec3 root = blurred.rgb / max(blurred.a, MIN_WATER_SHARE);
+  gl_FragColor = vec4(root * root, 1.0);
 #endif
   #include <tonemapping_fragment>
   #include <colorspace_fragment>

@@ -4,28 +4,39 @@ import sceneDecode from '../../shaders/sceneDecode.glsl?raw';
 import { glslFloat } from './shaderConstants';
 
 /**
- * The brightest linear colour the underwater passes' scene target keeps. Seen from below, the
- * sun's glint on a spectral sea reaches 29 (waves=fft, 20 m/s); the fog then dims it, and the
- * output clips at 1. Within 4 the picture is that of a half-float target (see README,
- * Performance, tenth stop).
+ * The scene target's codes for colours up to 1 (their square roots), out of 255: the other 16
+ * hold a logarithmic shoulder up to SCENE_BRIGHTEST. Seen from below, the sun's glint on a
+ * spectral sea reaches 29 (waves=fft, 20 m/s); the fog then dims it and the output clips at 1,
+ * so the shoulder keeps it white. A square root over [0, 4] instead (every code) had steps of
+ * 2 levels in the sky seen across a waterline; over [0, 1] it dimmed the sun seen from below
+ * to pale blue (README, Performance, tenth stop).
  */
-export const SCENE_HEADROOM = 4;
-const DEFINE = 'OCEANO_SCENE_HEADROOM';
+export const SCENE_LOW_CODES = 239;
+export const SCENE_BRIGHTEST = 8;
+const DEFINE = 'OCEANO_SCENE_ENCODE';
+/** Macros, not constants: the encoding runs inside main(), after whatever the shader declared. */
+const CONSTANTS = [
+  '#ifndef SCENE_LOW_SHARE',
+  `#define SCENE_LOW_SHARE ${glslFloat(SCENE_LOW_CODES / 255)}`,
+  `#define SCENE_BRIGHTEST ${glslFloat(SCENE_BRIGHTEST)}`,
+  '#endif',
+  '',
+].join('\n');
 const THREE_COLORSPACE_FRAGMENT = ShaderChunk.colorspace_fragment;
 
 /**
  * three.js's colorspace_fragment with the encoding appended (shaders/sceneEncode.glsl), so
  * every material's last chunk can encode; shaderChunks.ts puts it in place of three's.
  */
-export const ENCODING_COLORSPACE_FRAGMENT = `${THREE_COLORSPACE_FRAGMENT}\n${sceneEncode}`;
+export const ENCODING_COLORSPACE_FRAGMENT = `${THREE_COLORSPACE_FRAGMENT}\n${CONSTANTS}${sceneEncode}`;
 
 /** `#include <oceano_scene_decode>`: the passes that read the target (shaders/sceneDecode.glsl). */
-export const SCENE_DECODE_CHUNK = `const float SCENE_HEADROOM = ${glslFloat(SCENE_HEADROOM)};\n${sceneDecode}`;
+export const SCENE_DECODE_CHUNK = `${CONSTANTS}${sceneDecode}`;
 
 function setEncoding(material: Material, on: boolean): void {
   const defines = (material.defines ??= {}) as Record<string, string>;
   if (DEFINE in defines === on) return;
-  if (on) defines[DEFINE] = glslFloat(SCENE_HEADROOM);
+  if (on) defines[DEFINE] = '';
   else delete defines[DEFINE];
   material.needsUpdate = true;
 }

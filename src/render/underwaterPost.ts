@@ -101,9 +101,10 @@ function setDefine(material: ShaderMaterial, name: string, on: boolean): void {
   material.needsUpdate = true;
 }
 
-function blurMaterial(name: string, step: Vector2): ShaderMaterial {
+function blurMaterial(name: string, step: Vector2, encodeRoot = false): ShaderMaterial {
   return new ShaderMaterial({
     name,
+    defines: encodeRoot ? { ENCODE_ROOT: '' } : {},
     vertexShader: fullscreenVertex,
     fragmentShader: blurFragment,
     uniforms: {
@@ -141,9 +142,16 @@ export class UnderwaterPost {
   private shaftTile: ShaftLightTile = { kind: 'tile', origin: [0, 0], extent: 1, size: 1 };
   /** Debug: bake a window even for a model whose lens repeats (tests compare the two). */
   forceShaftLightWindow = false;
-  /** Half-resolution premultiplied water, ping-ponged by the blur: water → A, blurH → B, blurV → A. */
+  /** Half-resolution premultiplied water: water → A, blurH → B, blurV → blurred. */
   private readonly halfA: WebGLRenderTarget;
   private readonly halfB: WebGLRenderTarget;
+  /**
+   * The blur's result, which the composite upsamples: RGBA8 holding the square root of the
+   * water colour, premultiplied (shaders/gaussianBlur.frag, ENCODE_ROOT). The two passes before
+   * it keep half floats: three roundings to 8 bits grained the smooth water (neighbouring pixels
+   * one level apart in 45 % of the deep view instead of 25 %); one, as here, does not.
+   */
+  private readonly blurred: WebGLRenderTarget;
   private blurOn = false;
 
   constructor(
@@ -161,6 +169,7 @@ export class UnderwaterPost {
     const halfOptions = { type: HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false };
     this.halfA = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
     this.halfB = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
+    this.blurred = new WebGLRenderTarget(half(size.x), half(size.y), { ...halfOptions, type: UnsignedByteType });
     this.shaftTarget = shaftLightTarget(this.shaftTile);
     this.composer = new EffectComposer(renderer, target);
     this.scenePass = new RenderPass(scene, camera);
@@ -199,16 +208,16 @@ export class UnderwaterPost {
       this.blurH.uniforms.tDiffuse.value = this.halfA.texture;
       return this.halfB;
     });
-    this.blurV = new QuadPass(blurMaterial('BlurVertical', stepV), () => {
+    this.blurV = new QuadPass(blurMaterial('BlurVertical', stepV, true), () => {
       this.blurV.uniforms.tDiffuse.value = this.halfB.texture;
-      return this.halfA;
+      return this.blurred;
     });
     this.compositePass = new QuadPass(
       waves.attach(new ShaderMaterial({
         name: 'UnderwaterComposite',
         vertexShader: fullscreenVertex,
         fragmentShader: compositeFragment,
-        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.halfA.texture } },
+        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.blurred.texture } },
       })),
       (readBuffer) => {
         this.compositePass.uniforms.tDiffuse.value = readBuffer.texture;
@@ -232,7 +241,7 @@ export class UnderwaterPost {
     this.composer.setPixelRatio(pixelRatio);
     this.composer.setSize(width, height);
     const size = this.renderer.getDrawingBufferSize(new Vector2());
-    for (const target of [this.halfA, this.halfB]) target.setSize(half(size.x), half(size.y));
+    for (const target of [this.halfA, this.halfB, this.blurred]) target.setSize(half(size.x), half(size.y));
     (this.blurH.uniforms.uStep.value as Vector2).set(1 / half(size.x), 0);
     (this.blurV.uniforms.uStep.value as Vector2).set(0, 1 / half(size.y));
   }
@@ -324,7 +333,7 @@ export class UnderwaterPost {
   dispose(): void {
     for (const pass of [this.shaftPass, this.volumePass, this.compositePass]) this.waves.detach(pass.material);
     for (const [, pass] of this.named) pass.dispose();
-    for (const target of [this.shaftTarget, this.halfA, this.halfB]) target.dispose();
+    for (const target of [this.shaftTarget, this.halfA, this.halfB, this.blurred]) target.dispose();
     this.composer.dispose();
   }
 }

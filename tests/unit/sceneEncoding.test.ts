@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial } from 'three';
-import { encodeSceneAsSquareRoots, SCENE_HEADROOM } from '../../src/render/sceneEncoding';
+import { encodeSceneAsSquareRoots, SCENE_BRIGHTEST, SCENE_LOW_CODES } from '../../src/render/sceneEncoding';
 import { registerShaderChunks } from '../../src/render/shaderChunks';
 
-const DEFINE = 'OCEANO_SCENE_HEADROOM';
+const DEFINE = 'OCEANO_SCENE_ENCODE';
 
 function sceneOfEveryKind() {
   const scene = new Scene();
@@ -18,10 +18,10 @@ function sceneOfEveryKind() {
 }
 
 describe("the underwater passes' scene encoding (src/render/sceneEncoding.ts)", () => {
-  it('defines the headroom on every material in the scene, nested and multi-material ones included, and removes it again', () => {
+  it('defines the encoding on every material in the scene, nested and multi-material ones included, and removes it again', () => {
     const { scene, materials } = sceneOfEveryKind();
     encodeSceneAsSquareRoots(scene, true);
-    for (const m of materials) expect(m.defines?.[DEFINE]).toBe(`${SCENE_HEADROOM}.0`);
+    for (const m of materials) expect(m.defines?.[DEFINE]).toBe('');
     encodeSceneAsSquareRoots(scene, false);
     for (const m of materials) expect(m.defines && DEFINE in m.defines).toBe(false);
     expect((materials[0] as ShaderMaterial).defines.KEEP).toBe('');
@@ -46,8 +46,10 @@ describe("the underwater passes' scene encoding (src/render/sceneEncoding.ts)", 
     registerShaderChunks();
     const chunk = ShaderChunk.colorspace_fragment;
     expect(chunk.startsWith(three.split('\n')[0])).toBe(true);
-    expect(chunk.match(/#ifdef OCEANO_SCENE_HEADROOM/g)).toHaveLength(1);
+    expect(chunk.match(/#ifdef OCEANO_SCENE_ENCODE/g)).toHaveLength(1);
     expect(chunk.indexOf('linearToOutputTexel')).toBeLessThan(chunk.indexOf('sqrt('));
-    expect((ShaderChunk as unknown as Record<string, string>).oceano_scene_decode).toContain(`SCENE_HEADROOM = ${SCENE_HEADROOM}.0`);
+    const decode = (ShaderChunk as unknown as Record<string, string>).oceano_scene_decode;
+    expect(decode).toContain(`#define SCENE_LOW_SHARE ${SCENE_LOW_CODES / 255}`);
+    expect(decode).toContain(`#define SCENE_BRIGHTEST ${SCENE_BRIGHTEST}.0`);
   });
 });
