@@ -6,9 +6,9 @@ uniform vec3 uWaterScatter;
 uniform float uFogDensity;
 uniform float uCameraDepth;
 
-// Per-channel extinction relative to uFogDensity (pure water absorbs red about 2.5 times
-// as fast as green).
-const vec3 WATER_EXTINCTION = vec3(2.5, 1.0, 0.8);
+// Per-channel extinction relative to uFogDensity, WATER_EXTINCTION: <oceano_constants>, from
+// src/sim/waterFog.ts, which also tells how far the fog lets anything be seen.
+#include <oceano_constants>
 // How fast daylight fades with depth, per metre, per channel.
 const vec3 DEPTH_DARKENING = vec3(0.12, 0.045, 0.03);
 

@@ -29,6 +29,7 @@ import { applyWakeUniforms, createWakeUniforms } from './wakeUniforms';
 import { KelvinGuideView } from './kelvinGuideView';
 import type { WakeUniformData } from '../sim/wakeUniformData';
 import { DEFAULT_NEAR, nearForClearance } from '../sim/nearPlane';
+import { fogHidingDistance } from '../sim/waterFog';
 import { SurfaceHeightMemo } from '../sim/surfaceHeightMemo';
 import { encodeSceneAsSquareRoots } from './sceneEncoding';
 
@@ -60,8 +61,9 @@ export interface ShadingFixes {
   /**
    * Whole view under the water: the sea drawn from below only (back faces, the shading from
    * above compiled out: OceanMaterial.setSeenFromBelow) and the sea bed's caustics without
-   * their above-the-surface test when the bed lies below every trough (SeaBed.setDepth).
-   * Off, both faces and both shadings are drawn and the test runs, as before (issue 14).
+   * their above-the-surface test when the bed lies below every trough (SeaBed.setDepth), and
+   * the far plane at the distance the fog hides (OceanView.fitFarPlane). Off, both faces and
+   * both shadings are drawn, the test runs and the far plane stays out, as before (issue 14).
    */
   underwaterShortcuts: boolean;
 }
@@ -383,6 +385,22 @@ export class OceanView {
   }
 
   /**
+   * Wholly under the water, the far plane comes in to where the fog hides everything
+   * (src/sim/waterFog.ts: 396 m at the default density): the chunks beyond are culled and
+   * their pixels, left empty, get the water's colour from the underwater pass, as a surface
+   * that far would (within half an output level). Looking up from below, the surface's far
+   * bands out to the horizon were most of the frame's vertex work.
+   */
+  private fitFarPlane(): void {
+    const below = this.where.submersion === 'below' && this.underwaterShortcuts;
+    const far = below ? Math.min(CAMERA_FAR, fogHidingDistance(this.waterVolume.uFogDensity.value)) : CAMERA_FAR;
+    if (far !== this.camera.far) {
+      this.camera.far = far;
+      this.camera.updateProjectionMatrix();
+    }
+  }
+
+  /**
    * Where the view starts: 'above' and 'below' when the eye and the whole near plane are
    * clear of the surface on one side, else 'straddling' (the waterline may cross the frame).
    */
@@ -419,6 +437,7 @@ export class OceanView {
     this.fitNearPlane(time);
     const { eyeSurface, ...where } = this.submersionAt(time);
     this.where = where;
+    this.fitFarPlane();
     const strips = this.splitStrips();
     if (!strips) {
       this.ocean.update(this.camera, this.lod, this.cullingBounds());
