@@ -51,12 +51,15 @@ float marchJitter(vec2 pixel) {
   return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-// Light let through the surface at s relative to a flat sea (shaders/shaftLight.frag).
-float shaftLight(vec2 s) {
+// Where the march starts reading the bake, in units of its side: the surface point s relative
+// to the window's corner, or within one period of the repeating lens. Only the start is reduced:
+// the march then adds steps of at most GOD_RAY_RANGE in these units, and the texture unit
+// wraps a repeating bake itself, so each step is one filtered fetch and no arithmetic.
+vec2 shaftLightCoordinate(vec2 s) {
 #ifdef SHAFT_LIGHT_WINDOW
-  return texture2D(tShaftLight, (s - uShaftOrigin) / uShaftExtent).r;
+  return (s - uShaftOrigin) / uShaftExtent;
 #else
-  return texture2D(tShaftLight, wrapToTile(s, uShaftExtent) / uShaftExtent).r;
+  return wrapToTile(s, uShaftExtent) / uShaftExtent;
 #endif
 }
 
@@ -74,7 +77,8 @@ vec3 godRays(vec3 origin, vec3 direction, float distance) {
   float depth = -(origin.y + direction.y * t);
   float depthStep = -direction.y * stepLength;
   vec2 s = origin.xz + direction.xz * t - uRefractedSun.xz * ((origin.y + direction.y * t) / uRefractedSun.y);
-  vec2 sStep = (direction.xz - uRefractedSun.xz * (direction.y / uRefractedSun.y)) * stepLength;
+  vec2 sStep = (direction.xz - uRefractedSun.xz * (direction.y / uRefractedSun.y)) * (stepLength / uShaftExtent);
+  vec2 shaft = shaftLightCoordinate(s);
   // contrast · reach = exp(-depth / SHAFT_FADE_DEPTH) · waterTransmittance(t + depth / -uRefractedSun.y)
   vec3 extinction = uFogDensity * WATER_EXTINCTION;
   vec3 weight = exp(-depth / SHAFT_FADE_DEPTH - extinction * (t - depth / uRefractedSun.y));
@@ -83,9 +87,9 @@ vec3 godRays(vec3 origin, vec3 direction, float distance) {
   for (int i = 0; i < GOD_RAY_STEPS; i++) {
     // Points above the surface (a line of sight leaving the water) add nothing; their
     // weight can be large (up to e^70 at the densest fog), so it is not multiplied by 0.
-    if (depth > 0.0) sum += weight * shaftLight(s);
+    if (depth > 0.0) sum += weight * texture2D(tShaftLight, shaft).r;
     depth += depthStep;
-    s += sStep;
+    shaft += sStep;
     weight *= weightStep;
   }
   // Forward scattering: the shafts glow most when looking towards the sun.
