@@ -1,4 +1,5 @@
-// One direction of a separable Gaussian blur at half resolution, on premultiplied colour:
+// One direction of a separable Gaussian blur at half resolution (or, with ONE_PASS, a blur
+// within 1 texel in both directions), on premultiplied colour:
 // the water pass writes (colour, 1) where the line of sight starts in the water and
 // (0, 0, 0, 0) where it starts in the air, so air pixels add nothing and the blurred alpha
 // is the share of water under the kernel (the composite divides by it). Premultiplied,
@@ -16,12 +17,19 @@ uniform int uTaps;
 varying vec2 vUv;
 
 void main() {
+#ifdef ONE_PASS
+  // Both directions at once for a kernel within 1 texel (src/sim/gaussianKernel.ts,
+  // onePassBlurOffset): four bilinear taps at (±o, ±o), uStep being (o / width, o / height).
+  vec4 sum = 0.25 * (texture2D(tDiffuse, vUv + uStep) + texture2D(tDiffuse, vUv - uStep)
+    + texture2D(tDiffuse, vUv + vec2(uStep.x, -uStep.y)) + texture2D(tDiffuse, vUv - vec2(uStep.x, -uStep.y)));
+#else
   vec4 sum = uWeights[0] * texture2D(tDiffuse, vUv);
   for (int i = 1; i < BLUR_MAX_TAPS; i++) {
     if (i >= uTaps) break;
     vec2 offset = uStep * uOffsets[i];
     sum += uWeights[i] * (texture2D(tDiffuse, vUv + offset) + texture2D(tDiffuse, vUv - offset));
   }
+#endif
 #ifdef ENCODE_ROOT
   // The last pass, into RGBA8 for the composite: the square root of the water colour (which
   // spends 8 bits about as the output's sRGB does), premultiplied again so that the

@@ -24,7 +24,7 @@ import underwaterFragment from '../../shaders/underwater.frag?raw';
 import blurFragment from '../../shaders/gaussianBlur.frag?raw';
 import shaftLightFragment from '../../shaders/shaftLight.frag?raw';
 import compositeFragment from '../../shaders/underwaterComposite.frag?raw';
-import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel } from '../sim/gaussianKernel';
+import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel, onePassBlurOffset } from '../sim/gaussianKernel';
 import { planShaftLightTile, type ShaftLightTile } from '../sim/shaftLightTile';
 import { registerShaderChunks } from './shaderChunks';
 import { encodeSceneAsSquareRoots } from './sceneEncoding';
@@ -142,7 +142,7 @@ export class UnderwaterPost {
   private shaftTile: ShaftLightTile = { kind: 'tile', origin: [0, 0], extent: 1, size: 1 };
   /** Debug: bake a window even for a model whose lens repeats (tests compare the two). */
   forceShaftLightWindow = false;
-  /** Half-resolution premultiplied water: water → A, blurH → B, blurV → blurred. */
+  /** Half-resolution premultiplied water: water → A, blurH → B, blurV → blurred (one pass: A → blurred). */
   private readonly halfA: WebGLRenderTarget;
   private readonly halfB: WebGLRenderTarget;
   /**
@@ -153,6 +153,8 @@ export class UnderwaterPost {
    */
   private readonly blurred: WebGLRenderTarget;
   private blurOn = false;
+  /** The one-pass blur's tap offset in texels (src/sim/gaussianKernel.ts), or null: two passes. */
+  private onePassOffset: number | null = null;
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -209,7 +211,7 @@ export class UnderwaterPost {
       return this.halfB;
     });
     this.blurV = new QuadPass(blurMaterial('BlurVertical', stepV, true), () => {
-      this.blurV.uniforms.tDiffuse.value = this.halfB.texture;
+      this.blurV.uniforms.tDiffuse.value = (this.blurH.enabled ? this.halfB : this.halfA).texture;
       return this.blurred;
     });
     this.compositePass = new QuadPass(
@@ -242,16 +244,31 @@ export class UnderwaterPost {
     this.composer.setSize(width, height);
     const size = this.renderer.getDrawingBufferSize(new Vector2());
     for (const target of [this.halfA, this.halfB, this.blurred]) target.setSize(half(size.x), half(size.y));
-    (this.blurH.uniforms.uStep.value as Vector2).set(1 / half(size.x), 0);
-    (this.blurV.uniforms.uStep.value as Vector2).set(0, 1 / half(size.y));
+    this.placeBlurSteps();
+  }
+
+  /** The blur passes' texel steps: one texel across, then down; or the one-pass blur's diagonal tap. */
+  private placeBlurSteps(): void {
+    const size = this.renderer.getDrawingBufferSize(new Vector2());
+    const width = half(size.x);
+    const height = half(size.y);
+    const o = this.onePassOffset;
+    (this.blurH.uniforms.uStep.value as Vector2).set(1 / width, 0);
+    (this.blurV.uniforms.uStep.value as Vector2).set(o === null ? 0 : o / width, o === null ? 1 / height : o / height);
   }
 
   /** Blur σ in screen pixels; 0 switches the blur, and the half-resolution water, off. */
   setBlur(sigma: number): void {
     this.blurOn = sigma > 0;
     const kernel = linearSampledKernel(halfResolutionSigma(sigma), BLUR_MAX_RADIUS, BLUR_MAX_TAPS);
+    // The default σ's kernel lies within 1 texel: one pass of four taps instead of two passes
+    // (the frame about 17 ms cheaper under SwiftShader, README Performance, tenth stop).
+    this.onePassOffset = this.blurOn ? onePassBlurOffset(halfResolutionSigma(sigma)) : null;
     this.volumePass.uniforms.uWriteMask.value = this.blurOn;
-    for (const pass of [this.blurH, this.blurV, this.compositePass]) pass.enabled = this.blurOn;
+    for (const pass of [this.blurV, this.compositePass]) pass.enabled = this.blurOn;
+    this.blurH.enabled = this.blurOn && this.onePassOffset === null;
+    setDefine(this.blurV.material, 'ONE_PASS', this.onePassOffset !== null);
+    this.placeBlurSteps();
     for (const pass of [this.blurH, this.blurV]) {
       pass.uniforms.uOffsets.value = Array.from(kernel.offsets);
       pass.uniforms.uWeights.value = Array.from(kernel.weights);
@@ -285,7 +302,7 @@ export class UnderwaterPost {
         restore.push([pass, original]);
         pass.render = (...args: Parameters<Pass['render']>) => {
           original.apply(pass, args);
-          afterEachPass(name);
+          afterEachPass(pass === this.blurV && this.onePassOffset !== null ? 'blur' : name);
         };
       }
     }

@@ -81,3 +81,28 @@ export function linearSampledKernel(sigma: number, maxRadius: number, maxTaps: n
   }
   return { offsets, weights, taps };
 }
+
+/**
+ * The largest share of a kernel's mass on one side past 1 texel that the one-pass blur below
+ * may leave out. Left out, the ring past 1 texel (about four such shares) goes back to the
+ * 3×3 centre, so a pixel moves by at most 4/512 of the contrast around it: 2 levels next to a
+ * black-to-white edge, nothing in the water's smooth gradients (tests/unit/onePassBlur.test.ts).
+ */
+export const ONE_PASS_TAIL = 1 / 512;
+
+/**
+ * A Gaussian that hardly reaches past 1 texel, the default underwater blur's (σ = 1.5 px on
+ * screen, 0.56 texels at half resolution), in one pass of four bilinear taps instead of two
+ * separable passes: a tap at offset o between texels 0 and 1 reads (1 − o) t₀ + o t₁, so the
+ * mean of the taps at ±o is (1 − o) t₀ + (o / 2)(t₋₁ + t₁), the kernel [a, b, a] (normalised
+ * over 1 texel) when o = 2a / (b + 2a); the four taps at (±o, ±o) read its product in x and y,
+ * the same 3×3 kernel the two passes convolve. Returns o, or null when more than ONE_PASS_TAIL
+ * of the kernel lies past 1 texel on a side (then the two passes run).
+ */
+export function onePassBlurOffset(sigma: number): number | null {
+  const kernel = gaussianKernel(sigma, 2);
+  if (kernel[2] > ONE_PASS_TAIL) return null;
+  const a = kernel[1];
+  const b = kernel[0];
+  return (2 * a) / (b + 2 * a);
+}
