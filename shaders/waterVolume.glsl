@@ -4,13 +4,15 @@
 
 uniform vec3 uWaterScatter;
 uniform float uFogDensity;
-uniform float uCameraDepth;
+// uWaterScatter times the daylight left at the eye's depth (exp(-DEPTH_DARKENING · depth)),
+// made on the CPU once a frame (src/render/waterVolumeUniforms.ts): per pixel it was three
+// exponentials of the same uniform, 14 of the underwater frame's 196 ms under SwiftShader.
+uniform vec3 uWaterAtEye;
 
-// Per-channel extinction relative to uFogDensity, WATER_EXTINCTION: <oceano_constants>, from
-// src/sim/waterFog.ts, which also tells how far the fog lets anything be seen.
+// Per-channel extinction relative to uFogDensity (WATER_EXTINCTION) and the daylight's fading
+// with depth per metre (DEPTH_DARKENING): <oceano_constants>, from src/sim/waterFog.ts, which
+// also tells how far the fog lets anything be seen.
 #include <oceano_constants>
-// How fast daylight fades with depth, per metre, per channel.
-const vec3 DEPTH_DARKENING = vec3(0.12, 0.045, 0.03);
 
 vec3 waterTransmittance(float distance) {
   return exp(-uFogDensity * WATER_EXTINCTION * distance);
@@ -20,7 +22,7 @@ vec3 waterTransmittance(float distance) {
 vec3 waterVolumeColor(vec3 direction) {
   float up = 0.5 + 0.5 * direction.y;
   float fromAbove = mix(0.22, 1.0, up * up);
-  return uWaterScatter * fromAbove * exp(-DEPTH_DARKENING * max(uCameraDepth, 0.0));
+  return uWaterAtEye * fromAbove;
 }
 
 vec3 throughWater(vec3 color, vec3 direction, float distance) {

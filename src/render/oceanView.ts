@@ -8,7 +8,7 @@ import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../sim/fre
 import { SUN_LIGHT_COLOR, sunDirection } from '../sim/sun';
 import { DEFAULT_CAMERA } from '../sim/defaultCamera';
 import { classifyNearPlane, fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../sim/underwater';
-import { createWaterVolumeUniforms, applyWaterVolume, type WaterVolumeUniforms } from './waterVolumeUniforms';
+import { createWaterVolumeUniforms, applyWaterVolume, setEyeDepth, type WaterVolumeUniforms } from './waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from './causticsUniforms';
 import { SeaBed } from './seaBed';
 import type { PassTiming, UnderwaterPost } from './underwaterPost';
@@ -460,7 +460,7 @@ export class OceanView {
     this.seaBed.follow(this.camera.position);
     // Seen entirely from below, the sky can only show through the surface: skip drawing it.
     this.skyBackground.mesh.visible = this.where.submersion !== 'below';
-    this.waterVolume.uCameraDepth.value = Math.max(0, eyeSurface - this.camera.position.y);
+    setEyeDepth(this.waterVolume, eyeSurface - this.camera.position.y);
   }
 
   /**

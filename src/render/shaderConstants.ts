@@ -2,7 +2,7 @@ import { WATER_IOR } from '../sim/fresnel';
 import { BLUR_MAX_TAPS } from '../sim/gaussianKernel';
 import { DETAIL_NORMALS_FROM, LOD_BAND_COLORS } from '../sim/lodBands';
 import { GOD_RAY_RANGE } from '../sim/shaftLightTile';
-import { WATER_EXTINCTION } from '../sim/waterFog';
+import { DEPTH_DARKENING, WATER_EXTINCTION } from '../sim/waterFog';
 
 /** A GLSL float literal: always with a decimal point, since GLSL ES will not take `1` as a float. */
 export function glslFloat(value: number): string {
@@ -28,6 +28,7 @@ export function shaderConstantsChunk(): string {
     `#define BLUR_MAX_TAPS ${BLUR_MAX_TAPS}`,
     `#define GOD_RAY_RANGE ${glslFloat(GOD_RAY_RANGE)}`,
     `#define WATER_EXTINCTION ${glslVec3(WATER_EXTINCTION)}`,
+    `#define DEPTH_DARKENING ${glslVec3(DEPTH_DARKENING)}`,
     `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
     `#define LOD_BAND_COUNT ${LOD_BAND_COLORS.length}`,
     `#define LOD_BAND_COLORS vec3[${LOD_BAND_COLORS.length}](${LOD_BAND_COLORS.map(glslVec3).join(', ')})`,

@@ -7,6 +7,15 @@
 /** Per-channel extinction relative to fogDensity: pure water absorbs red about 2.5 times as fast as green. */
 export const WATER_EXTINCTION = [2.5, 1.0, 0.8] as const;
 
+/** How fast daylight fades with depth, per metre, per channel (red first, as the extinction). */
+export const DEPTH_DARKENING = [0.12, 0.045, 0.03] as const;
+
+/** The share of the daylight, per channel, left at `depth` metres under the surface (1 at or above it). */
+export function daylightAtDepth(depth: number): [number, number, number] {
+  const d = Math.max(depth, 0);
+  return [Math.exp(-DEPTH_DARKENING[0] * d), Math.exp(-DEPTH_DARKENING[1] * d), Math.exp(-DEPTH_DARKENING[2] * d)];
+}
+
 /**
  * The transmittance below which what lies behind the water no longer shows: the brightest
  * colour the underwater scene keeps (8, src/render/sceneEncoding.ts) times this is 1/8192 of
