@@ -8,6 +8,7 @@
  * SwiftShader used when it turns out to be software. The renderer string says which ran.
  */
 import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname } from 'node:path';
 import { cpus, loadavg } from 'node:os';
 import puppeteer, { type Browser } from 'puppeteer';
 import { preview, type PreviewServer } from 'vite';
@@ -234,7 +235,7 @@ async function main(): Promise<void> {
       benchSeconds: round((performance.now() - started) / 1000, 1),
     };
     console.log(JSON.stringify(report, null, 2));
-    mkdirSync('bench', { recursive: true });
+    mkdirSync(dirname(RESULTS_FILE), { recursive: true });
     writeFileSync(RESULTS_FILE, resultsMarkdown(report, new Date()));
     console.error(`[bench] figures written to ${RESULTS_FILE}`);
   } finally {
