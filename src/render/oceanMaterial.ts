@@ -11,6 +11,7 @@ import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 import type { WakeUniforms } from './wakeUniforms';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
+import { setMaterialDefine } from './materialDefines';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
@@ -138,12 +139,7 @@ export class OceanMaterial extends ShaderMaterial {
 
   /** Compiles a define in or out of both programs (this one and `near`), which must draw alike. */
   private setDefine(name: string, on: boolean): void {
-    for (const material of this.near === this ? [this] : [this, this.near]) {
-      if (name in material.defines === on) continue;
-      if (on) material.defines[name] = '';
-      else delete material.defines[name];
-      material.needsUpdate = true;
-    }
+    for (const material of this.near === this ? [this] : [this, this.near]) setMaterialDefine(material, name, on);
   }
 
   setSky(sky: CubeTexture): void {

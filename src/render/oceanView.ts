@@ -31,7 +31,7 @@ import type { WakeUniformData } from '../sim/wakeUniformData';
 import { DEFAULT_NEAR, nearForClearance } from '../sim/nearPlane';
 import { fogHidingDistance } from '../sim/waterFog';
 import { SurfaceHeightMemo } from '../sim/surfaceHeightMemo';
-import { encodeSceneAsSquareRoots } from './sceneEncoding';
+import { encodeSceneForPost } from './sceneEncoding';
 
 /**
  * How far from the surface a near-plane sample must be to decide the whole near plane,
@@ -505,7 +505,7 @@ export class OceanView {
     this.renderer.info.reset();
     const { underwater, submersion } = this.where;
     let composerPasses = 0;
-    if (this.post && (submersion === 'above' || this.showHeightmaps || this.underwaterFailed)) encodeSceneAsSquareRoots(this.scene, false);
+    if (this.post && (submersion === 'above' || this.showHeightmaps || this.underwaterFailed)) encodeSceneForPost(this.scene, false);
     if (this.showHeightmaps) this.heightmapView = this.drawHeightmaps();
     else if (submersion === 'above' && this.sides.length > 0) this.drawCompare(this.splitStrips() ?? []);
     else if (submersion === 'above') this.renderer.render(this.scene, this.camera);
@@ -604,7 +604,7 @@ export class OceanView {
       if (!post) throw new Error('The underwater passes are still loading: await oceano.ready, or draw a frame below the surface first.');
       return [...wavePasses, ...post.profile(submersion === 'straddling', sync)];
     }
-    if (this.post) encodeSceneAsSquareRoots(this.scene, false);
+    if (this.post) encodeSceneForPost(this.scene, false);
     // The side models' own GPU passes (a compared fft), then each strip alone ('scene <model>').
     for (const side of this.sides) wavePasses.push(...(side.view.profilePasses?.(sync) ?? []).map((p) => ({ ...p, name: `${p.name} (${side.name})` })));
     sync();

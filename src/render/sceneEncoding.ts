@@ -2,6 +2,7 @@ import { ShaderChunk, type Material, type Object3D } from 'three';
 import sceneEncode from '../../shaders/sceneEncode.glsl?raw';
 import sceneDecode from '../../shaders/sceneDecode.glsl?raw';
 import { glslFloat } from './shaderConstants';
+import { setMaterialDefine } from './materialDefines';
 
 /**
  * The scene target's codes for colours up to 1 (their square roots), out of 255: the other 16
@@ -33,24 +34,15 @@ export const ENCODING_COLORSPACE_FRAGMENT = `${THREE_COLORSPACE_FRAGMENT}\n${CON
 /** `#include <oceano_scene_decode>`: the passes that read the target (shaders/sceneDecode.glsl). */
 export const SCENE_DECODE_CHUNK = `${CONSTANTS}${sceneDecode}`;
 
-function setEncoding(material: Material, on: boolean): void {
-  const defines = (material.defines ??= {}) as Record<string, string>;
-  if (DEFINE in defines === on) return;
-  if (on) defines[DEFINE] = '';
-  else delete defines[DEFINE];
-  material.needsUpdate = true;
-}
-
 /**
- * On: every material in the scene writes square roots (for the underwater passes' RGBA8
+ * On: every material in the scene writes the encoding (for the underwater passes' RGBA8
  * target); off: plain linear colour (the canvas). Flips only the materials whose state
  * differs, so calling it every frame costs a traversal; three.js keeps both compiled variants.
  */
-export function encodeSceneAsSquareRoots(scene: Object3D, on: boolean): void {
+export function encodeSceneForPost(scene: Object3D, on: boolean): void {
   scene.traverse((object) => {
     const material = (object as Object3D & { material?: Material | Material[] }).material;
     if (!material) return;
-    if (Array.isArray(material)) for (const m of material) setEncoding(m, on);
-    else setEncoding(material, on);
+    for (const m of Array.isArray(material) ? material : [material]) setMaterialDefine(m, DEFINE, on);
   });
 }

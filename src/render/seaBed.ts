@@ -2,6 +2,7 @@ import { Color, Mesh, PlaneGeometry, ShaderMaterial, Vector3, type DataTexture, 
 import vertexShader from '../../shaders/seabed.vert?raw';
 import fragmentShader from '../../shaders/seabed.frag?raw';
 import { registerShaderChunks } from './shaderChunks';
+import { setMaterialDefine } from './materialDefines';
 import { generateHeightmap, defaultNoiseSettings } from '../sim/perlinNoise';
 import { HEIGHTMAP_SIZE, RIPPLE_TILE_SIZE } from '../sim/surface';
 import { heightmapTexture } from './dataTextures';
@@ -72,12 +73,7 @@ export class SeaBed {
    */
   setDepth(depth: number, waveReach: number): void {
     this.mesh.position.y = -depth;
-    const below = depth > waveReach;
-    if (below !== ('CAUSTICS_BELOW_WAVES' in this.material.defines)) {
-      if (below) this.material.defines.CAUSTICS_BELOW_WAVES = '';
-      else delete this.material.defines.CAUSTICS_BELOW_WAVES;
-      this.material.needsUpdate = true;
-    }
+    setMaterialDefine(this.material, 'CAUSTICS_BELOW_WAVES', depth > waveReach);
   }
 
   /** Whether the bed's program leaves out the caustics' above-the-surface test (for tests). */

@@ -27,7 +27,8 @@ import compositeFragment from '../../shaders/underwaterComposite.frag?raw';
 import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel, onePassBlurOffset } from '../sim/gaussianKernel';
 import { planShaftLightTile, type ShaftLightTile } from '../sim/shaftLightTile';
 import { registerShaderChunks } from './shaderChunks';
-import { encodeSceneAsSquareRoots } from './sceneEncoding';
+import { encodeSceneForPost } from './sceneEncoding';
+import { setMaterialDefine } from './materialDefines';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 
@@ -87,18 +88,6 @@ class QuadPass extends Pass {
     this.material.dispose();
     this.quad.dispose();
   }
-}
-
-/**
- * Switches a #define: a frame's case (god rays or not, a waterline across the view or not)
- * is compiled in, not branched on, because SwiftShader runs both sides of a branch. three.js
- * keeps each compiled variant, so switching back and forth compiles each once.
- */
-function setDefine(material: ShaderMaterial, name: string, on: boolean): void {
-  if (name in material.defines === on) return;
-  if (on) material.defines[name] = '';
-  else delete material.defines[name];
-  material.needsUpdate = true;
 }
 
 function blurMaterial(name: string, step: Vector2, encodeRoot = false): ShaderMaterial {
@@ -267,7 +256,7 @@ export class UnderwaterPost {
     this.volumePass.uniforms.uWriteMask.value = this.blurOn;
     for (const pass of [this.blurV, this.compositePass]) pass.enabled = this.blurOn;
     this.blurH.enabled = this.blurOn && this.onePassOffset === null;
-    setDefine(this.blurV.material, 'ONE_PASS', this.onePassOffset !== null);
+    setMaterialDefine(this.blurV.material, 'ONE_PASS', this.onePassOffset !== null);
     this.placeBlurSteps();
     for (const pass of [this.blurH, this.blurV]) {
       pass.uniforms.uOffsets.value = Array.from(kernel.offsets);
@@ -278,14 +267,14 @@ export class UnderwaterPost {
 
   setGodRays(intensity: number): void {
     this.volumePass.uniforms.uGodRays.value = intensity;
-    setDefine(this.volumePass.material, 'GOD_RAYS', intensity > 0);
+    setMaterialDefine(this.volumePass.material, 'GOD_RAYS', intensity > 0);
     // No god rays, nothing reads the shaft light.
     this.shaftPass.enabled = intensity > 0;
   }
 
 /** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
   render(perPixelWaterline: boolean, afterEachPass?: (name: string) => void): number {
-    encodeSceneAsSquareRoots(this.scene, true);
+    encodeSceneForPost(this.scene, true);
     const u = this.volumePass.uniforms; // the view uniforms are shared with the composite
     this.camera.updateMatrixWorld();
     (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);
@@ -294,7 +283,7 @@ export class UnderwaterPost {
     u.uNear.value = this.camera.near;
     u.uFar.value = this.camera.far;
     if (this.shaftPass.enabled) this.placeShaftLight();
-    for (const pass of [this.volumePass, this.compositePass]) setDefine(pass.material, 'PER_PIXEL_WATERLINE', perPixelWaterline);
+    for (const pass of [this.volumePass, this.compositePass]) setMaterialDefine(pass.material, 'PER_PIXEL_WATERLINE', perPixelWaterline);
     const restore: [Pass, Pass['render']][] = [];
     if (afterEachPass) {
       for (const [name, pass] of this.named) {
@@ -330,7 +319,7 @@ export class UnderwaterPost {
     const u = this.volumePass.uniforms;
     (u.uShaftOrigin.value as Vector2).fromArray(tile.origin);
     u.uShaftExtent.value = tile.extent;
-    setDefine(this.volumePass.material, 'SHAFT_LIGHT_WINDOW', tile.kind === 'window');
+    setMaterialDefine(this.volumePass.material, 'SHAFT_LIGHT_WINDOW', tile.kind === 'window');
   }
 
   /** Each enabled pass's cost in one frame, with the GPU waited for after each. */

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial } from 'three';
-import { encodeSceneAsSquareRoots, SCENE_BRIGHTEST, SCENE_LOW_CODES } from '../../src/render/sceneEncoding';
+import { encodeSceneForPost, SCENE_BRIGHTEST, SCENE_LOW_CODES } from '../../src/render/sceneEncoding';
 import { registerShaderChunks } from '../../src/render/shaderChunks';
 
 const DEFINE = 'OCEANO_SCENE_ENCODE';
@@ -20,9 +20,9 @@ function sceneOfEveryKind() {
 describe("the underwater passes' scene encoding (src/render/sceneEncoding.ts)", () => {
   it('defines the encoding on every material in the scene, nested and multi-material ones included, and removes it again', () => {
     const { scene, materials } = sceneOfEveryKind();
-    encodeSceneAsSquareRoots(scene, true);
+    encodeSceneForPost(scene, true);
     for (const m of materials) expect(m.defines?.[DEFINE]).toBe('');
-    encodeSceneAsSquareRoots(scene, false);
+    encodeSceneForPost(scene, false);
     for (const m of materials) expect(m.defines && DEFINE in m.defines).toBe(false);
     expect((materials[0] as ShaderMaterial).defines.KEEP).toBe('');
   });
@@ -31,12 +31,12 @@ describe("the underwater passes' scene encoding (src/render/sceneEncoding.ts)", 
     const { scene, materials } = sceneOfEveryKind();
     const versions = () => materials.map((m) => m.version);
     const start = versions();
-    encodeSceneAsSquareRoots(scene, false);
+    encodeSceneForPost(scene, false);
     expect(versions()).toEqual(start);
-    encodeSceneAsSquareRoots(scene, true);
+    encodeSceneForPost(scene, true);
     const encoded = versions();
     expect(encoded).toEqual(start.map((v) => v + 1));
-    encodeSceneAsSquareRoots(scene, true);
+    encodeSceneForPost(scene, true);
     expect(versions()).toEqual(encoded);
   });
 
