@@ -8,17 +8,13 @@
 #include <oceano_water_volume>
 #include <oceano_waterline>
 #include <oceano_scene_decode>
+#include <oceano_line_of_sight>
 
 uniform sampler2D tDiffuse;
 uniform sampler2D tDepth;
 // Premultiplied: rgb is the square root of the blurred water colour times the share of water
 // under the kernel, in a (shaders/gaussianBlur.frag, ENCODE_ROOT).
 uniform sampler2D tBlurred;
-uniform mat4 uProjectionInverse;
-uniform mat4 uCameraWorld;
-uniform vec3 uEye;
-uniform float uNear;
-uniform float uFar;
 
 varying vec2 vUv;
 
@@ -33,9 +29,8 @@ const float MIN_WATER_SHARE = 1.0 / 512.0;
 void main() {
 #ifdef PER_PIXEL_WATERLINE
   vec4 scene = texture2D(tDiffuse, vUv);
-  vec4 nearView = uProjectionInverse * vec4(vUv * 2.0 - 1.0, -1.0, 1.0);
-  nearView /= nearView.w;
-  vec3 nearWorld = (uCameraWorld * nearView).xyz;
+  vec4 nearView = nearViewPoint(vUv * 2.0 - 1.0);
+  vec3 nearWorld = nearWorldPoint(nearView);
   float depthSample = texture2D(tDepth, vUv).x;
   vec4 blurred = texture2D(tBlurred, vUv);
   vec3 color;
@@ -46,12 +41,7 @@ void main() {
     color *= color;
   } else {
     // Fog alone, unblurred, for the few water pixels with no water beside them at half resolution.
-    float distance = 1e6;
-    if (depthSample < 1.0) {
-      float viewZ = perspectiveDepthToViewZ(depthSample, uNear, uFar);
-      distance = length(nearView.xyz * (viewZ / nearView.z));
-    }
-    color = throughWater(sceneColor(scene), normalize(nearWorld - uEye), distance);
+    color = throughWater(sceneColor(scene), normalize(nearWorld - uEye), sightDistance(nearView, depthSample));
   }
   gl_FragColor = vec4(color, 1.0);
 #else

@@ -14,7 +14,8 @@ import { setMaterialDefine } from './materialDefines';
  */
 export const SCENE_LOW_CODES = 239;
 export const SCENE_BRIGHTEST = 8;
-const DEFINE = 'OCEANO_SCENE_ENCODE';
+/** Defined on a material, its colorspace_fragment writes the encoding (the god-ray pass's material is built with it). */
+export const SCENE_ENCODE_DEFINE = 'OCEANO_SCENE_ENCODE';
 /** Macros, not constants: the encoding runs inside main(), after whatever the shader declared. */
 const CONSTANTS = [
   '#ifndef SCENE_LOW_SHARE',
@@ -43,6 +44,6 @@ export function encodeSceneForPost(scene: Object3D, on: boolean): void {
   scene.traverse((object) => {
     const material = (object as Object3D & { material?: Material | Material[] }).material;
     if (!material) return;
-    for (const m of Array.isArray(material) ? material : [material]) setMaterialDefine(m, DEFINE, on);
+    for (const m of Array.isArray(material) ? material : [material]) setMaterialDefine(m, SCENE_ENCODE_DEFINE, on);
   });
 }

@@ -3,6 +3,7 @@ import tiledHeightmap from '../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../shaders/waterVolume.glsl?raw';
 import caustics from '../../shaders/caustics.glsl?raw';
 import waterline from '../../shaders/waterline.glsl?raw';
+import lineOfSight from '../../shaders/lineOfSight.glsl?raw';
 import wake from '../../shaders/wake.glsl?raw';
 import sinTurns from '../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../shaders/skyCube.glsl?raw';
@@ -27,6 +28,8 @@ const chunks: Record<string, string> = {
   oceano_caustics: caustics,
   // Needs <oceano_waves> included before it: the underwater passes' waterline test.
   oceano_waterline: waterline,
+  // A full-screen pass's line of sight from the eye and the depth buffer (needs <packing> first).
+  oceano_line_of_sight: lineOfSight,
   // The boat's Kelvin wake and its foam, added to whichever wave model is active; uniforms in src/render/wakeUniforms.ts.
   oceano_wake: wake,
   // The underwater passes' reading of their scene target; see src/render/sceneEncoding.ts.

@@ -23,11 +23,12 @@ import fullscreenVertex from '../../shaders/fullscreen.vert?raw';
 import underwaterFragment from '../../shaders/underwater.frag?raw';
 import blurFragment from '../../shaders/gaussianBlur.frag?raw';
 import shaftLightFragment from '../../shaders/shaftLight.frag?raw';
+import godRaysFragment from '../../shaders/godRays.frag?raw';
 import compositeFragment from '../../shaders/underwaterComposite.frag?raw';
 import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel, onePassBlurOffset } from '../sim/gaussianKernel';
 import { planShaftLightTile, type ShaftLightTile } from '../sim/shaftLightTile';
 import { registerShaderChunks } from './shaderChunks';
-import { encodeSceneForPost } from './sceneEncoding';
+import { encodeSceneForPost, SCENE_ENCODE_DEFINE } from './sceneEncoding';
 import { setMaterialDefine } from './materialDefines';
 import type { WaveBinding } from './waveModels/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
@@ -56,6 +57,14 @@ function shaftLightTarget(tile: ShaftLightTile): WebGLRenderTarget {
 
 /** Half of a drawing-buffer size, rounded up so the half-resolution image covers every pixel. */
 const half = (pixels: number) => Math.max(1, Math.ceil(pixels / 2));
+
+/**
+ * The god rays' target: RGBA8 in the scene target's encoding (src/render/sceneEncoding.ts),
+ * linearly filtered for the water pass's upsample.
+ */
+function godRaysTarget(): WebGLRenderTarget {
+  return new WebGLRenderTarget(1, 1, { type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+}
 
 /**
  * A full-screen draw of one material into a target chosen when the frame runs: its own
@@ -121,6 +130,7 @@ export class UnderwaterPost {
   private readonly composer: EffectComposer;
   private readonly scenePass: RenderPass;
   private readonly shaftPass: QuadPass;
+  private readonly raysPass: QuadPass;
   private readonly volumePass: QuadPass;
   private readonly blurH: QuadPass;
   private readonly blurV: QuadPass;
@@ -141,6 +151,8 @@ export class UnderwaterPost {
    * one level apart in 45 % of the deep view instead of 25 %); one, as here, does not.
    */
   private readonly blurred: WebGLRenderTarget;
+  /** The god rays, at half the water pass's resolution (a quarter of the canvas's with the blur on). */
+  private readonly rays = godRaysTarget();
   private blurOn = false;
   /** The one-pass blur's tap offset in texels (src/sim/gaussianKernel.ts), or null: two passes. */
   private onePassOffset: number | null = null;
@@ -180,12 +192,27 @@ export class UnderwaterPost {
       uNear: { value: 0.1 },
       uFar: { value: 1000 },
     };
+    // The god rays' march, at half the water pass's resolution: the shafts are soft there, and
+    // marching at the water pass's own was about 40 of the underwater frame's 190 ms (SwiftShader).
+    this.raysPass = new QuadPass(
+      new ShaderMaterial({
+        name: 'UnderwaterGodRays',
+        defines: { [SCENE_ENCODE_DEFINE]: '' },
+        vertexShader: fullscreenVertex,
+        fragmentShader: godRaysFragment,
+        uniforms: { ...shared, ...view, ...tile, tShaftLight: { value: this.shaftTarget.texture }, uGodRays: { value: 0 } },
+      }),
+      (readBuffer) => {
+        view.tDepth.value = readBuffer.depthTexture;
+        return this.rays;
+      },
+    );
     this.volumePass = new QuadPass(
       waves.attach(new ShaderMaterial({
         name: 'UnderwaterVolume',
         vertexShader: fullscreenVertex,
         fragmentShader: underwaterFragment,
-        uniforms: { ...shared, ...view, ...tile, tDiffuse: { value: null }, tShaftLight: { value: this.shaftTarget.texture }, uGodRays: { value: 0 }, uWriteMask: { value: false } },
+        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tGodRays: { value: this.rays.texture }, uWriteMask: { value: false } },
       })),
       (readBuffer) => {
         this.volumePass.uniforms.tDiffuse.value = readBuffer.texture;
@@ -219,6 +246,7 @@ export class UnderwaterPost {
     this.named = [
       ['scene', this.scenePass],
       ['shafts', this.shaftPass],
+      ['rays', this.raysPass],
       ['water', this.volumePass],
       ['blurH', this.blurH],
       ['blurV', this.blurV],
@@ -234,6 +262,14 @@ export class UnderwaterPost {
     const size = this.renderer.getDrawingBufferSize(new Vector2());
     for (const target of [this.halfA, this.halfB, this.blurred]) target.setSize(half(size.x), half(size.y));
     this.placeBlurSteps();
+    this.sizeGodRays();
+  }
+
+  /** The god rays' target: half the water pass's size (which is half the canvas's with the blur on). */
+  private sizeGodRays(): void {
+    const size = this.renderer.getDrawingBufferSize(new Vector2());
+    const water = this.blurOn ? new Vector2(half(size.x), half(size.y)) : size;
+    this.rays.setSize(half(water.x), half(water.y));
   }
 
   /** The blur passes' texel steps: one texel across, then down; or the one-pass blur's diagonal tap. */
@@ -258,6 +294,7 @@ export class UnderwaterPost {
     this.blurH.enabled = this.blurOn && this.onePassOffset === null;
     setMaterialDefine(this.blurV.material, 'ONE_PASS', this.onePassOffset !== null);
     this.placeBlurSteps();
+    this.sizeGodRays();
     for (const pass of [this.blurH, this.blurV]) {
       pass.uniforms.uOffsets.value = Array.from(kernel.offsets);
       pass.uniforms.uWeights.value = Array.from(kernel.weights);
@@ -266,16 +303,17 @@ export class UnderwaterPost {
   }
 
   setGodRays(intensity: number): void {
-    this.volumePass.uniforms.uGodRays.value = intensity;
+    this.raysPass.uniforms.uGodRays.value = intensity;
     setMaterialDefine(this.volumePass.material, 'GOD_RAYS', intensity > 0);
-    // No god rays, nothing reads the shaft light.
+    // No god rays, nothing reads the shaft light, and no march.
     this.shaftPass.enabled = intensity > 0;
+    this.raysPass.enabled = intensity > 0;
   }
 
 /** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
   render(perPixelWaterline: boolean, afterEachPass?: (name: string) => void): number {
     encodeSceneForPost(this.scene, true);
-    const u = this.volumePass.uniforms; // the view uniforms are shared with the composite
+    const u = this.volumePass.uniforms; // the view uniforms are shared with the god rays and the composite
     this.camera.updateMatrixWorld();
     (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);
     (u.uCameraWorld.value as Matrix4).copy(this.camera.matrixWorld);
@@ -307,19 +345,19 @@ export class UnderwaterPost {
   private placeShaftLight(): void {
     const model = this.waves.model;
     const eye = this.camera.position;
-    const sun = this.volumePass.uniforms.uRefractedSun.value as Vector3;
+    const sun = this.raysPass.uniforms.uRefractedSun.value as Vector3;
     const period = this.forceShaftLightWindow ? null : model.lensPeriod;
     const tile = planShaftLightTile(period, [eye.x, eye.y, eye.z], [sun.x, sun.y, sun.z]);
     if (tile.kind !== this.shaftTile.kind || tile.size !== this.shaftTile.size) {
       this.shaftTarget.dispose();
       this.shaftTarget = shaftLightTarget(tile);
-      this.volumePass.uniforms.tShaftLight.value = this.shaftTarget.texture;
+      this.raysPass.uniforms.tShaftLight.value = this.shaftTarget.texture;
     }
     this.shaftTile = tile;
-    const u = this.volumePass.uniforms;
+    const u = this.raysPass.uniforms;
     (u.uShaftOrigin.value as Vector2).fromArray(tile.origin);
     u.uShaftExtent.value = tile.extent;
-    setMaterialDefine(this.volumePass.material, 'SHAFT_LIGHT_WINDOW', tile.kind === 'window');
+    setMaterialDefine(this.raysPass.material, 'SHAFT_LIGHT_WINDOW', tile.kind === 'window');
   }
 
   /** Each enabled pass's cost in one frame, with the GPU waited for after each. */
@@ -339,7 +377,7 @@ export class UnderwaterPost {
   dispose(): void {
     for (const pass of [this.shaftPass, this.volumePass, this.compositePass]) this.waves.detach(pass.material);
     for (const [, pass] of this.named) pass.dispose();
-    for (const target of [this.shaftTarget, this.halfA, this.halfB, this.blurred]) target.dispose();
+    for (const target of [this.shaftTarget, this.halfA, this.halfB, this.blurred, this.rays]) target.dispose();
     this.composer.dispose();
   }
 }

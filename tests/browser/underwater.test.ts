@@ -29,11 +29,12 @@ describe('under the water', () => {
     const stats = await page.evaluate(() => window.oceano.stats());
     expect(stats.underwater).toBe(true);
     expect(stats.submersion).toBe('below');
-    expect(stats.composerPasses).toBe(5);
+    expect(stats.composerPasses).toBe(6);
     const timings = await page.evaluate(() => window.oceano.debug.passTimings());
-    // The water and the blur at half resolution (the default σ's kernel within 1 texel: one
-    // pass, src/sim/gaussianKernel.ts); the composite also tone-maps, so no output pass.
-    expect(timings.map((t) => t.name)).toEqual(['scene', 'shafts', 'water', 'blur', 'composite']);
+    // The god rays at a quarter of the resolution, the water and the blur at half (the default
+    // σ's kernel within 1 texel: one pass, src/sim/gaussianKernel.ts); the composite also
+    // tone-maps, so no output pass.
+    expect(timings.map((t) => t.name)).toEqual(['scene', 'shafts', 'rays', 'water', 'blur', 'composite']);
     const reference = compareWithReference('underwater-seed1-t10', png);
     expect(reference.matches, reference.summary).toBe(true);
     expect(consoleErrors).toEqual([]);
@@ -43,12 +44,12 @@ describe('under the water', () => {
     const [sharp, blurred] = await dive.restoring(async (page) => {
       await page.evaluate(() => window.oceano.setParams({ blurStrength: 0 }));
       const blurOff = energyOf(await canvasPng(page));
-      // Blur off: scene, shafts, water at full resolution onto the canvas.
-      expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(3);
+      // Blur off: scene, shafts, god rays at half resolution, water at full resolution onto the canvas.
+      expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(4);
       await page.evaluate(() => window.oceano.setParams({ blurStrength: 3 }));
       const blurOn = energyOf(await canvasPng(page));
       // σ = 3 px reaches past 1 texel at half resolution: the two separable passes.
-      expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(6);
+      expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(7);
       return [blurOff, blurOn];
     });
     console.log(`[oceano] high-frequency energy: blur off ${sharp.toFixed(2)}, blur σ = 3 px ${blurred.toFixed(2)}`);
