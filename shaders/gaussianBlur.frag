@@ -30,12 +30,14 @@ void main() {
     sum += uWeights[i] * (texture2D(tDiffuse, vUv + offset) + texture2D(tDiffuse, vUv - offset));
   }
 #endif
-#ifdef ENCODE_ROOT
-  // The last pass, into RGBA8 for the composite: the square root of the water colour (which
-  // spends 8 bits about as the output's sRGB does), premultiplied again so that the
-  // composite's bilinear upsample still weighs each texel by its share of water.
-  vec3 root = sqrt(clamp(sum.rgb / max(sum.a, 1e-6), 0.0, 1.0));
-  gl_FragColor = vec4(root * sum.a, sum.a);
+#ifdef ENCODE_OUTPUT
+  // The last pass, into RGBA8 for the composite: the water colour already as the canvas will
+  // hold it (sRGB, clipped at 1 as the canvas clips it; no tone mapping, as the renderer has
+  // none), premultiplied again so that the composite's bilinear upsample still weighs each
+  // texel by its share of water. The composite then only divides: the encoding's pow ran for
+  // every canvas pixel there, four times as many as here.
+  vec3 water = clamp(sum.rgb / max(sum.a, 1e-6), 0.0, 1.0);
+  gl_FragColor = vec4(sRGBTransferOETF(vec4(water, 1.0)).rgb * sum.a, sum.a);
 #else
   gl_FragColor = sum;
 #endif

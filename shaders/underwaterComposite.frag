@@ -1,7 +1,7 @@
 // The last underwater pass at full resolution, with the blur on: the blurred water from
 // half resolution where the pixel's line of sight starts in the water, the scene, sharp,
 // where it starts in the air, then tone mapping and the output colour space (what
-// OutputPass would do in a pass of its own).
+// OutputPass would do in a pass of its own), which the blur has already done for the water.
 
 #include <packing>
 #include <oceano_waves>
@@ -12,8 +12,8 @@
 
 uniform sampler2D tDiffuse;
 uniform sampler2D tDepth;
-// Premultiplied: rgb is the square root of the blurred water colour times the share of water
-// under the kernel, in a (shaders/gaussianBlur.frag, ENCODE_ROOT).
+// Premultiplied: rgb is the blurred water colour as the canvas holds it (sRGB) times the share
+// of water under the kernel, in a (shaders/gaussianBlur.frag, ENCODE_OUTPUT).
 uniform sampler2D tBlurred;
 
 varying vec2 vUv;
@@ -23,9 +23,19 @@ varying vec2 vUv;
 // half resolution, which the fog alone then colours.
 const float MIN_WATER_SHARE = 1.0 / 512.0;
 
+// A linear colour as the canvas holds it: what three's tonemapping_fragment and
+// colorspace_fragment do at the end of a shader, for the branches below that need it.
+vec3 toCanvas(vec3 linear) {
+#ifdef TONE_MAPPING
+  linear = toneMapping(linear);
+#endif
+  return linearToOutputTexel(vec4(linear, 1.0)).rgb;
+}
+
 // Without PER_PIXEL_WATERLINE (the near plane is wholly under the water) every pixel is
-// water and has water all around it: the blurred colour alone. The cases are compiled
-// apart rather than branched on a uniform: SwiftShader runs both sides of a branch.
+// water and has water all around it: the blurred colour alone, which the blur already wrote
+// as the canvas holds it (sRGB, shaders/gaussianBlur.frag, ENCODE_OUTPUT). The cases are
+// compiled apart rather than branched on a uniform: SwiftShader runs both sides of a branch.
 void main() {
 #ifdef PER_PIXEL_WATERLINE
   vec4 scene = texture2D(tDiffuse, vUv);
@@ -35,20 +45,16 @@ void main() {
   vec4 blurred = texture2D(tBlurred, vUv);
   vec3 color;
   if (startsInAir(scene.a, depthSample, nearWorld)) {
-    color = sceneColor(scene);
+    color = toCanvas(sceneColor(scene));
   } else if (blurred.a >= MIN_WATER_SHARE) {
     color = blurred.rgb / blurred.a;
-    color *= color;
   } else {
     // Fog alone, unblurred, for the few water pixels with no water beside them at half resolution.
-    color = throughWater(sceneColor(scene), normalize(nearWorld - uEye), sightDistance(nearView, depthSample));
+    color = toCanvas(throughWater(sceneColor(scene), normalize(nearWorld - uEye), sightDistance(nearView, depthSample)));
   }
   gl_FragColor = vec4(color, 1.0);
 #else
   vec4 blurred = texture2D(tBlurred, vUv);
-  vec3 root = blurred.rgb / max(blurred.a, MIN_WATER_SHARE);
-  gl_FragColor = vec4(root * root, 1.0);
+  gl_FragColor = vec4(blurred.rgb / max(blurred.a, MIN_WATER_SHARE), 1.0);
 #endif
-  #include <tonemapping_fragment>
-  #include <colorspace_fragment>
 }

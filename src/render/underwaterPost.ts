@@ -99,10 +99,10 @@ class QuadPass extends Pass {
   }
 }
 
-function blurMaterial(name: string, step: Vector2, encodeRoot = false): ShaderMaterial {
+function blurMaterial(name: string, step: Vector2, encodeOutput = false): ShaderMaterial {
   return new ShaderMaterial({
     name,
-    defines: encodeRoot ? { ENCODE_ROOT: '' } : {},
+    defines: encodeOutput ? { ENCODE_OUTPUT: '' } : {},
     vertexShader: fullscreenVertex,
     fragmentShader: blurFragment,
     uniforms: {
@@ -145,8 +145,8 @@ export class UnderwaterPost {
   private readonly halfA: WebGLRenderTarget;
   private readonly halfB: WebGLRenderTarget;
   /**
-   * The blur's result, which the composite upsamples: RGBA8 holding the square root of the
-   * water colour, premultiplied (shaders/gaussianBlur.frag, ENCODE_ROOT). The two passes before
+   * The blur's result, which the composite upsamples: RGBA8 holding the water colour as the
+   * canvas will (sRGB), premultiplied (shaders/gaussianBlur.frag, ENCODE_OUTPUT). The two passes before
    * it keep half floats: three roundings to 8 bits grained the smooth water (neighbouring pixels
    * one level apart in 45 % of the deep view instead of 25 %); one, as here, does not.
    */
