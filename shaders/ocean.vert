@@ -37,10 +37,13 @@ uniform vec2 uRenderOrigin;
 uniform mat4 uViewRelative;
 varying vec3 vRelativePosition;
 #ifdef OCEAN_NEAR_BANDS
-// The near bands' haze colour: the sky at the horizon beyond the vertex (see ocean.frag).
+// The near bands' haze: its colour, the sky at the horizon beyond the vertex, and its weight
+// by the vertex's distance from the eye (see ocean.frag).
 #include <oceano_sky_cube>
 uniform vec3 uEyeRelative;
+uniform float uHazeDensity;
 varying vec3 vHorizon;
+varying float vHaze;
 #endif
 varying vec3 vNormal;
 varying float vBand;
@@ -141,6 +144,7 @@ void main() {
   // gets the +x horizon (the haze's weight is 0 there).
   vec2 away = relative.xz - uEyeRelative.xz + vec2(1e-20, 0.0);
   vHorizon = skyCubeColor(vec3(away.x, 0.0, away.y));
+  vHaze = 1.0 - exp(-length(uEyeRelative - relative) * uHazeDensity);
 #endif
   vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;
