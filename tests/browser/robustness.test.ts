@@ -7,6 +7,7 @@ import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 import { recordedPage } from './pages';
+import { DIVE_QUERY } from './referenceViews';
 
 const harness = useHarness();
 
@@ -64,6 +65,24 @@ describe('WebGL context loss', () => {
     await page.close();
   });
 
+  it('under the water too: after a restore the composer passes and their targets draw the same picture', async () => {
+    const { page, consoleErrors } = await openOcean(harness, DIVE_QUERY, 320, 180);
+    const before = await canvasPng(page);
+    expect(await page.evaluate(() => window.oceano.stats().composerPasses)).toBe(6);
+    const framesBefore = await page.evaluate(() => window.oceano.activity().framesDrawn);
+    await page.evaluate(() => {
+      const extension = window.oceano.three.renderer.getContext().getExtension('WEBGL_lose_context')!;
+      extension.loseContext();
+      setTimeout(() => extension.restoreContext(), 200);
+    });
+    await page.waitForFunction(() => window.oceano.notices().length === 1);
+    await page.waitForFunction(() => window.oceano.notices().length === 0);
+    await page.waitForFunction((n) => window.oceano.activity().framesDrawn > n, {}, framesBefore);
+    expect(diffPngs(before, await canvasPng(page), 0).differentPixels).toBe(0);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
   it('keeps animating after a restore when it was running', async () => {
     const { page } = await openOcean(harness, 'seed=2', 160, 90);
     await page.evaluate(() => {
@@ -80,6 +99,21 @@ describe('WebGL context loss', () => {
 });
 
 describe('resizing', () => {
+  it('under the water, a resized view draws what a view opened at that size draws (the half- and quarter-resolution targets follow)', async () => {
+    const { page: resized, consoleErrors } = await openOcean(harness, DIVE_QUERY, 320, 180);
+    await resized.setViewport({ width: 400, height: 224, deviceScaleFactor: 1 });
+    await resized.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    await resized.evaluate(() => window.oceano.renderFrame());
+    expect(await resized.evaluate(() => [document.querySelector('canvas')!.width, document.querySelector('canvas')!.height])).toEqual([400, 224]);
+    // Screenshot before the next page opens: a page behind another draws no screenshots.
+    const after = await canvasPng(resized);
+    expect(consoleErrors).toEqual([]);
+    await resized.close();
+    const { page: fresh } = await openOcean(harness, DIVE_QUERY, 400, 224);
+    expect(diffPngs(await canvasPng(fresh), after, 0).differentPixels).toBe(0);
+    await fresh.close();
+  });
+
   it('survives repeated resizes, including the container at 0×0, and ends at the right size', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=5', 320, 180);
     for (const [w, h] of [
