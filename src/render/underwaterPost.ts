@@ -259,27 +259,23 @@ export class UnderwaterPost {
   setSize(width: number, height: number, pixelRatio: number): void {
     this.composer.setPixelRatio(pixelRatio);
     this.composer.setSize(width, height);
-    const size = this.renderer.getDrawingBufferSize(new Vector2());
-    for (const target of [this.halfA, this.halfB, this.blurred]) target.setSize(half(size.x), half(size.y));
-    this.placeBlurSteps();
-    this.sizeGodRays();
+    this.fitTargets();
   }
 
-  /** The god rays' target: half the water pass's size (which is half the canvas's with the blur on). */
-  private sizeGodRays(): void {
-    const size = this.renderer.getDrawingBufferSize(new Vector2());
-    const water = this.blurOn ? new Vector2(half(size.x), half(size.y)) : size;
-    this.rays.setSize(half(water.x), half(water.y));
-  }
-
-  /** The blur passes' texel steps: one texel across, then down; or the one-pass blur's diagonal tap. */
-  private placeBlurSteps(): void {
+  /**
+   * What follows the drawing buffer's size and the blur: the half-resolution targets, the blur
+   * passes' texel steps (one texel across, then down; or the one-pass blur's diagonal tap), and
+   * the god rays' target at half the water pass's size (half the canvas's with the blur on).
+   */
+  private fitTargets(): void {
     const size = this.renderer.getDrawingBufferSize(new Vector2());
     const width = half(size.x);
     const height = half(size.y);
+    for (const target of [this.halfA, this.halfB, this.blurred]) target.setSize(width, height);
     const o = this.onePassOffset;
     (this.blurH.uniforms.uStep.value as Vector2).set(1 / width, 0);
     (this.blurV.uniforms.uStep.value as Vector2).set(o === null ? 0 : o / width, o === null ? 1 / height : o / height);
+    this.rays.setSize(half(this.blurOn ? width : size.x), half(this.blurOn ? height : size.y));
   }
 
   /** Blur σ in screen pixels; 0 switches the blur, and the half-resolution water, off. */
@@ -293,8 +289,7 @@ export class UnderwaterPost {
     for (const pass of [this.blurV, this.compositePass]) pass.enabled = this.blurOn;
     this.blurH.enabled = this.blurOn && this.onePassOffset === null;
     setMaterialDefine(this.blurV.material, 'ONE_PASS', this.onePassOffset !== null);
-    this.placeBlurSteps();
-    this.sizeGodRays();
+    this.fitTargets();
     for (const pass of [this.blurH, this.blurV]) {
       pass.uniforms.uOffsets.value = Array.from(kernel.offsets);
       pass.uniforms.uWeights.value = Array.from(kernel.weights);
