@@ -6,9 +6,9 @@
 // adopt it, ask for the next time, and the ten surface heights a frame asks for (five under the
 // boat, the eye, four near-plane points). The app measures the same work live as
 // oceano.stats().twinMs (the bench's FFT row).
-import { FftOcean } from '../src/sim/fftOcean';
-import { FftWaveModel, type FieldSource } from '../src/sim/fftWaveModel';
-import { defaultParams } from '../src/sim/params';
+import { FftOcean } from '../src/sim/waves/fft/fftOcean';
+import { FftWaveModel, type FieldSource } from '../src/sim/waves/fft/fftWaveModel';
+import { defaultParams } from '../src/sim/params/params';
 
 const FRAMES = 240;
 for (const windSpeed of [10, 20]) {

@@ -16,7 +16,7 @@ import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
 import { openOcean, type Harness } from './browserHarness';
 import { CROSS_ORIGIN_ISOLATION } from '../vite.config';
 import { scriptSizes, type ScriptSizes } from './distScripts';
-import { median, percentile } from '../src/sim/sampleStatistics';
+import { median, percentile } from '../src/sim/physics/sampleStatistics';
 import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
 import { loopTwinMs, passTimeSamples, pageEnvironment, timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './bench/pageMeasures';
 import { COMPARISONS, SCENARIOS, type BenchScenario } from './bench/scenarios';

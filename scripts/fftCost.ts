@@ -4,8 +4,8 @@
  * it is too slow for the main thread) and sample() (the boat's per-frame reads).
  * Run: npx tsx scripts/fftCost.ts
  */
-import { FftOcean } from '../src/sim/fftOcean';
-import { DEFAULT_SEA_STATE } from '../src/sim/seaState';
+import { FftOcean } from '../src/sim/waves/fft/fftOcean';
+import { DEFAULT_SEA_STATE } from '../src/sim/waves/spectra/seaState';
 
 for (const fftSize of [64, 128, 256] as const) {
   const ocean = new FftOcean({ ...DEFAULT_SEA_STATE, fftSize });

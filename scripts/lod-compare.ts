@@ -5,7 +5,7 @@
  * LOD update. Prints figures; asserts nothing. Other processes share the CPU: repeat runs.
  * Usage: npx vite build && npx tsx scripts/lod-compare.ts [query] [frames] [bruteFrames]
  */
-import { median } from '../src/sim/sampleStatistics';
+import { median } from '../src/sim/physics/sampleStatistics';
 import { openOcean, startHarness } from './browserHarness';
 
 const query = process.argv[2] ?? 'seed=1&t=10';

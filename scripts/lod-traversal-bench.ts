@@ -3,14 +3,14 @@
  * selection for the default view and for seeded random views. Prints figures; asserts nothing.
  * Usage: npx tsx scripts/lod-traversal-bench.ts
  */
-import { median } from '../src/sim/sampleStatistics';
+import { median } from '../src/sim/physics/sampleStatistics';
 import { Matrix4, PerspectiveCamera } from 'three';
-import { ChunkSelector, oceanOrigin, type SelectionInput } from '../src/sim/chunkSelection';
-import { planesFromMatrix } from '../src/sim/frustumMath';
-import { seededRandom } from '../src/sim/integerHash';
-import { bandTriangles, CHUNK_QUADS } from '../src/sim/lodBands';
-import { defaultParams } from '../src/sim/params';
-import { maxDisplacement } from '../src/sim/surface';
+import { ChunkSelector, oceanOrigin, type SelectionInput } from '../src/sim/lod/chunkSelection';
+import { planesFromMatrix } from '../src/sim/lod/frustumMath';
+import { seededRandom } from '../src/sim/noise/integerHash';
+import { bandTriangles, CHUNK_QUADS } from '../src/sim/lod/lodBands';
+import { defaultParams } from '../src/sim/params/params';
+import { maxDisplacement } from '../src/sim/waves/seed/seedSurface';
 
 const params = defaultParams();
 const selector = new ChunkSelector();

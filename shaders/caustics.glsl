@@ -32,7 +32,7 @@ float causticLight(vec3 p) {
   // Above the surface (the grid point under p stands for the world point: exact for models
   // that only lift points, within the horizontal displacement's reach for choppy ones).
   // CAUSTICS_BELOW_WAVES: the caller's points all lie below the deepest trough (the sea bed
-  // deeper than the model's bound, src/render/seaBed.ts), and the test is compiled out.
+  // deeper than the model's bound, src/render/underwater/seaBed.ts), and the test is compiled out.
 #ifndef CAUSTICS_BELOW_WAVES
   if (p.y >= waveDisplacement(p.xz).y) return 1.0;
 #endif

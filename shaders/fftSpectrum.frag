@@ -1,4 +1,4 @@
-// Time evolution of one cascade's spectrum, the GPU half of src/sim/spectralFields.ts:
+// Time evolution of one cascade's spectrum, the GPU half of src/sim/waves/fft/spectralFields.ts:
 // h̃(k,t) = h₀(k) e^{iωt} + conj(h₀(−k)) e^{−iωt} (Tessendorf 2001, eq. 26), then the eight
 // fields packed two real fields per complex number (see spectralFields.ts for the signs):
 //   out0 = (Dx + i h,      Dz + i ∂xDx)      out1 = (∂xh + i ∂zh,   ∂zDz + i ∂xDz)

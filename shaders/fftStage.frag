@@ -7,7 +7,7 @@
 //   out[o] = Σ_{m<R} e^{2πi·m·r/R} · e^{i·m·θ} · in[j + m·n/R]
 // (Govindaraju et al. 2008, "High performance discrete Fourier transforms on graphics
 // processors", the mixed-radix Stockham formulation; with R = 2 it is the radix-2 indexing of
-// src/sim/stockhamFft.ts, tested against fft.js). The twiddles e^{2πi·q/n} come from a table
+// src/sim/waves/fft/stockhamFft.ts, tested against fft.js). The twiddles e^{2πi·q/n} come from a table
 // computed in float64 on the CPU (m·k·n/(R·Ns) < n).
 precision highp float;
 precision highp int;

@@ -4,7 +4,7 @@
 // (0, 0, 0, 0) where it starts in the air, so air pixels add nothing and the blurred alpha
 // is the share of water under the kernel (the composite divides by it). Premultiplied,
 // every tap is linear in the texels, so pairs of texels are read as one bilinear tap
-// (src/sim/gaussianKernel.ts: linearSampledKernel) and the sum is still the exact Gaussian.
+// (src/render/underwater/gaussianKernel.ts: linearSampledKernel) and the sum is still the exact Gaussian.
 
 #include <oceano_constants>
 
@@ -18,7 +18,7 @@ varying vec2 vUv;
 
 void main() {
 #ifdef ONE_PASS
-  // Both directions at once for a kernel within 1 texel (src/sim/gaussianKernel.ts,
+  // Both directions at once for a kernel within 1 texel (src/render/underwater/gaussianKernel.ts,
   // onePassBlurOffset): four bilinear taps at (±o, ±o), uStep being (o / width, o / height).
   vec4 sum = 0.25 * (texture2D(tDiffuse, vUv + uStep) + texture2D(tDiffuse, vUv - uStep)
     + texture2D(tDiffuse, vUv + vec2(uStep.x, -uStep.y)) + texture2D(tDiffuse, vUv - vec2(uStep.x, -uStep.y)));

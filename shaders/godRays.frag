@@ -4,7 +4,7 @@
 // with the blur on), since the shafts are soft at that scale, and read back by the water pass
 // with one filtered fetch (shaders/underwater.frag). Under SwiftShader the march was about 40 of
 // the underwater frame's 190 ms at the water pass's own resolution. Written with the scene
-// target's encoding (src/render/sceneEncoding.ts): RGBA8, square roots up to 1, a shoulder above.
+// target's encoding (src/render/underwater/sceneEncoding.ts): RGBA8, square roots up to 1, a shoulder above.
 
 #include <packing>
 #include <oceano_constants>
@@ -32,7 +32,7 @@ varying vec2 vUv;
 // levels then, 0.35 with 20 steps here, 0.28 with 40).
 const int GOD_RAY_STEPS = 40;
 // Shafts are followed GOD_RAY_RANGE metres along the line of sight (<oceano_constants>,
-// from src/sim/shaftLightTile.ts, which sizes the bake's window by it); fog hides what is beyond.
+// from src/render/underwater/shaftLightTile.ts, which sizes the bake's window by it); fog hides what is beyond.
 // Depth over which the shafts' contrast fades as their focus blurs, metres.
 const float SHAFT_FADE_DEPTH = 30.0;
 // Brightness of the shafts at intensity 1: in-scattering made visible on an 8-bit screen.

@@ -1,10 +1,10 @@
 // One ocean chunk (an instance, or one copy of the grid in an expanded batch: chunkBatch.ts),
 // a band's shared grid (integer grid coordinates in
 // position.xz), placed at its world corner, with edge vertices snapped onto a coarser
-// neighbour's edge (the GLSL twin of src/sim/edgeSnap.ts), then displaced by the active wave
+// neighbour's edge (the GLSL twin of src/sim/lod/edgeSnap.ts), then displaced by the active wave
 // model's chunk (waveDisplacement / waveNormal, see shaders/waves/).
 #include <oceano_waves>
-// The boat's Kelvin wake, added to whichever model is active (src/sim/boatWake.ts); compiled
+// The boat's Kelvin wake, added to whichever model is active (src/sim/wake/boatWake.ts); compiled
 // in only while the wake is on (OceanMaterial.setWakeOn).
 #ifdef OCEAN_WAKE
 #include <oceano_wake>
@@ -14,10 +14,10 @@
 uniform bool uFlatNormals;
 uniform int uChunkQuads;
 // The grid's centre and the Chebyshev distances from it over which the far rings' waves
-// fade out (src/sim/farRings.ts): 1 on every chunk of the grid, 0 past ring 2.
+// fade out (src/sim/lod/farRings.ts): 1 on every chunk of the grid, 0 past ring 2.
 uniform vec2 uOceanCenter;
 uniform vec2 uFarFade;
-// Geomorphing (the GLSL twin of src/sim/lodMorph.ts): the camera and wave height the bands
+// Geomorphing (the GLSL twin of src/sim/lod/lodMorph.ts): the camera and wave height the bands
 // were chosen with, and per band the distance where its vertices start to slide towards the
 // next band's grid and 1 / the zone's width.
 uniform vec3 uLodCamera;
@@ -66,7 +66,7 @@ int snapEdge(int k, int step) {
   return ((k + step / 2) / step) * step;
 }
 
-// A band's vertex step (BAND_STEPS in src/sim/lodBands.ts).
+// A band's vertex step (BAND_STEPS in src/sim/lod/lodBands.ts).
 int bandStep(int band) {
   return band == 0 ? 1 : band == 1 ? 2 : band == 2 ? 3 : band == 3 ? 6 : band == 4 ? 12 : 24;
 }

@@ -1,4 +1,4 @@
-// Appended to three.js's colorspace_fragment (src/render/sceneEncoding.ts), so it ends every
+// Appended to three.js's colorspace_fragment (src/render/underwater/sceneEncoding.ts), so it ends every
 // material's shader, ours and three's (the boat's). While the scene is drawn for the underwater
 // passes, OCEANO_SCENE_ENCODE is defined on its materials and the linear colour is stored in an
 // RGBA8 target (SwiftShader writes and reads 8-bit targets far faster than half floats): up to

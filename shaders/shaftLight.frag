@@ -2,7 +2,7 @@
 // god rays to read with one filtered fetch per step instead of four lens heights. It depends
 // on the surface position only. Where the wave model's lens height repeats on a small tile
 // (the seed's ripples: 96 m) one period is baked and read repeating; otherwise a window
-// around everything the god rays read this frame (src/sim/shaftLightTile.ts). Either way the
+// around everything the god rays read this frame (src/render/underwater/shaftLightTile.ts). Either way the
 // texel (i, j) holds s = uShaftOrigin + (i + 1/2, j + 1/2) · uShaftExtent / size.
 
 #include <oceano_waves>

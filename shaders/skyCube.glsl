@@ -1,4 +1,4 @@
-// The sky cube as every shader reads it. The default sky's cube (src/render/sunSky.ts) holds
+// The sky cube as every shader reads it. The default sky's cube (src/render/sky/sunSky.ts) holds
 // the square root of the linear colour in 8 bits a channel: SwiftShader filters RGBA8 far
 // faster than the RGBA16F it had (the default view's frame about 13 % less), and the square
 // root spends the 8 bits where the eye sees them, steps of about one output level, as sRGB

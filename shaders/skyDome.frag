@@ -1,4 +1,4 @@
-// The sky of src/sim/skyPainter.ts painted on the GPU for any sun: the same gradient, glow,
+// The sky of src/sim/optics/skyPainter.ts painted on the GPU for any sun: the same gradient, glow,
 // disc and cloud layer (its Perlin density baked once into uClouds), plus a dusk that the
 // PNG faces never had. Written as linear colour into a half-float cube render target;
 // the painter's constants are sRGB, so the result is decoded once at the end.

@@ -13,7 +13,7 @@ vec2 wrapToTile(vec2 p, float tileSize) {
 
 // Bilinear with wrap by hand: texel (i, j) sits at world offset (i, j) * tile / size.
 // Each texel holds its own height and those of its +x, +z and diagonal neighbours
-// (wrapped; see gatheredHeightmap in src/render/dataTextures.ts), so one fetch gives the
+// (wrapped; see gatheredHeightmap in src/render/optics/dataTextures.ts), so one fetch gives the
 // four corners and no modulo is needed. The offset is added after the point is brought
 // into its tile, where the sum rounds at small magnitude.
 float sampleTiledHeightmap(sampler2D map, vec2 p, vec2 offset, float tileSize, float mapSize) {

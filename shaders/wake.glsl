@@ -1,7 +1,7 @@
-// The boat's Kelvin wake and its foam: the GLSL twin of src/sim/kelvinWake.ts and
-// src/sim/wakeFoam.ts (read the method and its sources there). Keep the files in step. The
-// uniforms are packed by packWakeUniforms (src/sim/wakeUniformData.ts) and uploaded by
-// src/render/wakeUniforms.ts.
+// The boat's Kelvin wake and its foam: the GLSL twin of src/sim/wake/kelvinWake.ts and
+// src/sim/wake/wakeFoam.ts (read the method and its sources there). Keep the files in step. The
+// uniforms are packed by packWakeUniforms (src/sim/wake/wakeUniformData.ts) and uploaded by
+// src/render/wake/wakeUniforms.ts.
 //
 // Cost: a vertex within uWakeParams.z of the boat runs the loop over uWakeCount ≤ 64 track
 // points (one sqrt, one exp, one division per point; two polynomial sines and one cosine
@@ -118,7 +118,7 @@ float wakeFoam(vec2 worldXZ) {
 }
 
 // The normal of y = h_model + η from the model's unit normal n and the wake's slope
-// (∂η/∂x, ∂η/∂z): the twin of addWake in src/sim/boatWake.ts.
+// (∂η/∂x, ∂η/∂z): the twin of addWake in src/sim/wake/boatWake.ts.
 vec3 wakeTiltNormal(vec3 n, vec2 slope) {
   return normalize(vec3(n.x - slope.x * n.y, n.y, n.z - slope.y * n.y));
 }

@@ -5,12 +5,12 @@
 uniform vec3 uWaterScatter;
 uniform float uFogDensity;
 // uWaterScatter times the daylight left at the eye's depth (exp(-DEPTH_DARKENING · depth)),
-// made on the CPU once a frame (src/render/waterVolumeUniforms.ts): per pixel it was three
+// made on the CPU once a frame (src/render/underwater/waterVolumeUniforms.ts): per pixel it was three
 // exponentials of the same uniform, 14 of the underwater frame's 196 ms under SwiftShader.
 uniform vec3 uWaterAtEye;
 
 // Per-channel extinction relative to uFogDensity (WATER_EXTINCTION) and the daylight's fading
-// with depth per metre (DEPTH_DARKENING): <oceano_constants>, from src/sim/waterFog.ts, which
+// with depth per metre (DEPTH_DARKENING): <oceano_constants>, from src/sim/underwater/waterFog.ts, which
 // also tells how far the fog lets anything be seen.
 #include <oceano_constants>
 

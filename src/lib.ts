@@ -1,5 +1,5 @@
-import widgetStyles from './app/widgets.css?inline';
-import { OceanoViewElement } from './app/oceanoViewElement';
+import widgetStyles from './app/panel/widgets.css?inline';
+import { OceanoViewElement } from './app/element/oceanoViewElement';
 
 /**
  * The library build (dist/oceano.js): registers <oceano-view>. The sky images are looked
@@ -22,4 +22,4 @@ if (!customElements.get('oceano-view')) {
 }
 
 export { OceanoViewElement };
-export type { OceanoApi } from './app/automationApi';
+export type { OceanoApi } from './app/api/automationApi';

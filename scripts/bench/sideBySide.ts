@@ -1,5 +1,5 @@
 import type { Browser, Page } from 'puppeteer';
-import { median } from '../../src/sim/sampleStatistics';
+import { median } from '../../src/sim/physics/sampleStatistics';
 import { openOcean, type Harness } from '../browserHarness';
 import { timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './pageMeasures';
 import { COMPARISONS, type BenchScenario } from './scenarios';

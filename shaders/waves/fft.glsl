@@ -1,11 +1,11 @@
 // The spectral sea as a wave-model chunk (`#include <oceano_waves>` resolves here when
-// waves=fft; see src/render/waveModels/fftWaveView.ts). Three cascades (FFT tiles of
-// different sizes, src/sim/cascades.ts), each two RGBA32F textures written by the GPU FFT
-// (src/render/fft/gpuFft.ts):
+// waves=fft; see src/render/waves/fft/fftWaveView.ts). Three cascades (FFT tiles of
+// different sizes, src/sim/waves/fft/cascades.ts), each two RGBA32F textures written by the GPU FFT
+// (src/render/waves/fft/gpuFft.ts):
 //   uFftDisplacementC: (dx, dy, dz, ∂Dx/∂x)    uFftDerivativesC: (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)
 // Texel (p, q) of a tile of side L is the grid point (p L/n, q L/n); tiles repeat. Each field
 // is read bilinearly by hand (texelFetch: float textures need not be filterable), exactly as
-// the CPU twin src/sim/fftOcean.ts reads its float64 arrays: a parity test holds them together.
+// the CPU twin src/sim/waves/fft/fftOcean.ts reads its float64 arrays: a parity test holds them together.
 //
 // The contract every model's chunk meets:
 //   vec3 waveDisplacement(vec2 gridXZ)  where the undisplaced grid point goes, (dx, dy, dz)
@@ -32,7 +32,7 @@ uniform sampler2D uFftFoam1;
 uniform sampler2D uFftFoam2;
 uniform vec3 uFftScale;      // n / L per cascade: texels per metre
 // Per cascade, where the render origin falls in its tile, in texels, within [0, n) (reduced in
-// double precision, src/sim/originPhases.ts): the pixels read their fields at grid points
+// double precision, src/sim/waves/originPhases.ts): the pixels read their fields at grid points
 // relative to the render origin (waveNormalNear, waveFoamNear), since an absolute float32
 // grid point 10⁶ m out is rounded to 6 cm and its normals came in 6 cm blocks.
 uniform vec2 uFftNearOffset[3];
@@ -198,7 +198,7 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
   return normalize(cross(pz - p0, px - p0));
 }
 
-// Foam: what each cascade accumulated (fading over seconds, src/render/fft/fftFoam.ts, each
+// Foam: what each cascade accumulated (fading over seconds, src/render/waves/fft/fftFoam.ts, each
 // against its own band's threshold) and where the whole sea's Jacobian folds right now, half
 // white at the threshold itself (so Monahan's share of the sea is at least half white) and
 // fully white ¼σ deeper.

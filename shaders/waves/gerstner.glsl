@@ -1,5 +1,5 @@
 // The Gerstner sea as a wave-model chunk (`#include <oceano_waves>` resolves here when
-// waves=gerstner; see src/render/waveModels/): the GLSL twin of src/sim/gerstnerWaves.ts
+// waves=gerstner; see src/render/waves/): the GLSL twin of src/sim/waves/gerstner/gerstnerWaves.ts
 // (gerstnerDisplacementAt, gerstnerNormalAt). Keep the two in step: parity tests compare them.
 //
 // The contract every model's chunk meets:
@@ -9,7 +9,7 @@
 //                                       into the underwater shafts (god rays)
 // and, because the normal is closed-form and cheap, it asks ocean.frag to evaluate
 // waveNormalNear per pixel at the interpolated grid point (WAVE_PIXEL_NORMALS), given
-// relative to the render origin (src/sim/renderOrigin.ts): an absolute float32 grid point
+// relative to the render origin (src/render/ocean/renderOrigin.ts): an absolute float32 grid point
 // 10⁶ m out is rounded to 6 cm, which put the glint in 6 cm blocks.
 //
 // Wave i moves grid point p to p + (−QᵢAᵢ k̂ᵢ sin θᵢ, Aᵢ cos θᵢ), θᵢ = kᵢ·p − ωᵢt + φᵢ.
@@ -27,7 +27,7 @@ uniform vec4 uGerstnerWaves[GERSTNER_MAX_WAVES];
 // τᵢ in turns, four waves per vec4 (a float array would take a whole vec4 slot per element).
 uniform vec4 uGerstnerPhases[GERSTNER_MAX_WAVES / 4];
 // τᵢ′ = fract(τᵢ + cₓ oₓ + c_z o_z), the phases at the render origin o, reduced in double
-// precision (src/sim/originPhases.ts): the angle at o + r is fract(cₓ rₓ) + fract(c_z r_z) + τᵢ′.
+// precision (src/sim/waves/originPhases.ts): the angle at o + r is fract(cₓ rₓ) + fract(c_z r_z) + τᵢ′.
 uniform vec4 uGerstnerNearPhases[GERSTNER_MAX_WAVES / 4];
 
 #include <oceano_sin_turns>

@@ -1,6 +1,6 @@
 // The seed's waves as a wave-model chunk (`#include <oceano_waves>` resolves here when
-// waves=seed; see src/render/waveModels/). M(x, z), the ocean's displacement: the GLSL twin
-// of src/sim/surface.ts and src/sim/seedWaveModel.ts. Every phase and offset arrives already
+// waves=seed; see src/render/waves/). M(x, z), the ocean's displacement: the GLSL twin
+// of src/sim/waves/seed/seedSurface.ts and src/sim/waves/seed/seedWaveModel.ts. Every phase and offset arrives already
 // reduced (see surfaceStateAt), so float32 stays exact far from the origin and late in time.
 // Keep the files in step: a parity test compares them.
 //

@@ -2,13 +2,13 @@
 // by path, because the package's exports name no stylesheet.
 import '../../node_modules/lil-gui/dist/lil-gui.css';
 import './style.css';
-import './widgets.css';
-import { message } from '../sim/message';
+import './panel/widgets.css';
+import { message } from '../sim/params/message';
 import { DEFAULT_BOAT_MODEL, OceanApp } from './oceanApp';
-import { createAutomationApi, createFailedApi } from './automationApi';
-import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './bootSupport';
-import { preferredLanguage, Translator } from './i18n';
-import { parseUrlState } from './urlState';
+import { createAutomationApi, createFailedApi } from './api/automationApi';
+import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './boot/bootSupport';
+import { preferredLanguage, Translator } from './language/i18n';
+import { parseUrlState } from './url/urlState';
 
 /** The page bootstrap: reads the URL and the browser's preferences and hands them to one OceanApp. */
 function boot(): void {

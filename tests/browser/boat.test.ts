@@ -6,7 +6,7 @@ import { useHarness } from './useHarness';
 import { sharedPage } from './sharedPage';
 import { diffPngs } from './imageCompare';
 import { PARITY_HEIGHT_LIMIT } from './parity';
-import { ANGLE_BAND, HEAVE_BAND } from '../../src/sim/boatMotion';
+import { ANGLE_BAND, HEAVE_BAND } from '../../src/sim/boat/boatMotion';
 
 const harness = useHarness();
 

@@ -3,7 +3,7 @@ import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
-import { compareStrips } from '../../src/sim/compareLayout';
+import { compareStrips } from '../../src/sim/compare/compareLayout';
 
 /**
  * compare=seed,gerstner,fft: every strip of the split view holds exactly the pixels of its

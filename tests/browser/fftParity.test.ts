@@ -4,10 +4,10 @@ import { build } from 'vite';
 import { join } from 'node:path';
 import { BROWSER_ARGS } from './harness';
 import { findBrowser } from './harness';
-import { InverseFft2d } from '../../src/sim/fft2d';
-import { FftOcean } from '../../src/sim/fftOcean';
-import { seededRandom } from '../../src/sim/integerHash';
-import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/seaState';
+import { InverseFft2d } from '../../src/sim/waves/fft/fft2d';
+import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/waves/spectra/seaState';
 import type { FftParityApi } from './fixtures/fftParity';
 
 /**

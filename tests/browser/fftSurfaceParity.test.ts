@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
-import { seededRandom } from '../../src/sim/integerHash';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 /**
  * waves=fft: the drawn mesh against the CPU twin. The GPU probe runs the real chunk

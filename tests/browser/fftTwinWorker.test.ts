@@ -3,10 +3,10 @@ import type { Page } from 'puppeteer';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { serveUnderSubPath } from './staticServer';
-import { FftWaveModel } from '../../src/sim/fftWaveModel';
-import { seededRandom } from '../../src/sim/integerHash';
-import type { OceanParams } from '../../src/sim/params';
-import type { TwinStatus } from '../../src/sim/liveWaveModel';
+import { FftWaveModel } from '../../src/sim/waves/fft/fftWaveModel';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import type { OceanParams } from '../../src/sim/params/params';
+import type { TwinStatus } from '../../src/sim/waves/fft/twinStatus';
 
 /**
  * waves=fft with the clock playing: the CPU twin's fields come from its Worker, not from the

@@ -3,9 +3,9 @@ import puppeteer, { type Browser } from 'puppeteer';
 import { readFileSync } from 'node:fs';
 import { BROWSER_ARGS } from './harness';
 import { findBrowser } from './harness';
-import { gerstnerSea } from '../../src/sim/gerstnerSpectrum';
-import { GerstnerWaveModel, gerstnerTimePhases } from '../../src/sim/gerstnerWaves';
-import { seededRandom } from '../../src/sim/integerHash';
+import { gerstnerSea } from '../../src/sim/waves/gerstner/gerstnerSpectrum';
+import { GerstnerWaveModel, gerstnerTimePhases } from '../../src/sim/waves/gerstner/gerstnerWaves';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 import { cosineSquared, piersonMoskowitz } from '../unit/testSeas';
 
 /**

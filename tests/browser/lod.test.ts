@@ -5,10 +5,10 @@ import { sharedPage } from './sharedPage';
 import { magentaBelowSlope, showMagentaBehindTheSea, type Vec3 } from './viewRays';
 import { compareWithReference } from './imageCompare';
 import { LOD_COLOUR_VIEWS, viewPng } from './referenceViews';
-import { OCEAN_EXTENT } from '../../src/sim/chunkSelection';
-import { CHUNK_SIZE } from '../../src/sim/lodBands';
-import { maxDisplacement } from '../../src/sim/surface';
-import { defaultParams } from '../../src/sim/params';
+import { OCEAN_EXTENT } from '../../src/sim/lod/chunkSelection';
+import { CHUNK_SIZE } from '../../src/sim/lod/lodBands';
+import { maxDisplacement } from '../../src/sim/waves/seed/seedSurface';
+import { defaultParams } from '../../src/sim/params/params';
 
 const harness = useHarness();
 
@@ -43,7 +43,7 @@ describe('LOD and culling in the browser', () => {
     expect(stats.triangles).toBeLessThan(60_000);
     // One draw per non-empty band (three still culls the boat's parts itself, so the total
     // also holds the sky and whichever of those are in view): instanced for the bands of large
-    // chunks, one plain draw of the repeated grid for the small ones (src/render/chunkBatch.ts).
+    // chunks, one plain draw of the repeated grid for the small ones (src/render/ocean/chunkBatch.ts).
     const seaDraws = await page.evaluate(() => {
       let count = 0;
       const sea = window.oceano.three.scene.children.find((c) => c.type === 'Group');

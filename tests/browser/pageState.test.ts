@@ -5,7 +5,7 @@ import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { compareWithOtherReference, compareWithReference, diffPngs } from './imageCompare';
 import { presetView, viewPng } from './referenceViews';
-import { presetNames } from '../../src/app/presets';
+import { presetNames } from '../../src/app/url/presets';
 import { recordedPage } from './pages';
 
 const harness = useHarness();

@@ -2,7 +2,7 @@ import type { Page } from 'puppeteer';
 import type { Harness } from './harness';
 
 /**
- * How far the CPU twin (src/sim/surface.ts) and the displacement shader may disagree, just
+ * How far the CPU twin (src/sim/waves/seed/seedSurface.ts) and the displacement shader may disagree, just
  * above what surfaceParity.test.ts measures on SwiftShader (1280 seeded points out to 3 km,
  * t up to 1e6 s; the figures are deterministic from run to run):
  * - default parameters: max |Δheight| 2.08e-5 m, max |Δnormal| 2.45e-5;

@@ -1,6 +1,6 @@
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean, type Harness } from './harness';
-import { presetNames } from '../../src/app/presets';
+import { presetNames } from '../../src/app/url/presets';
 
 type Vec3 = [number, number, number];
 

@@ -5,7 +5,7 @@ import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { sharedPage } from './sharedPage';
 import { pixelRay, type Vec3 } from './viewRays';
-import { sunDirection } from '../../src/sim/sun';
+import { sunDirection } from '../../src/sim/optics/sun';
 
 const harness = useHarness();
 

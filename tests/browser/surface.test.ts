@@ -5,9 +5,9 @@ import { sharedPage } from './sharedPage';
 import { compareWithOtherReference, compareWithReference, diffPngs } from './imageCompare';
 import { PARITY_HEIGHT_LIMIT, PARITY_NORMAL_LIMIT } from './parity';
 import { PNG } from 'pngjs';
-import { fresnelTable } from '../../src/sim/fresnel';
-import { generateRippleHeightmaps } from '../../src/sim/perlinNoise';
-import { HEIGHTMAP_SIZE } from '../../src/sim/surface';
+import { fresnelTable } from '../../src/sim/optics/fresnel';
+import { generateRippleHeightmaps } from '../../src/sim/noise/perlinNoise';
+import { HEIGHTMAP_SIZE } from '../../src/sim/waves/seed/seedSurface';
 
 const harness = useHarness();
 

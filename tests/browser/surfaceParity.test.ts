@@ -3,7 +3,7 @@ import type { Page } from 'puppeteer';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { openWithNativeSin, PARITY_LIMITS } from './parity';
-import { seededRandom } from '../../src/sim/integerHash';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 /**
  * The CPU twin against the real shader, far from the origin and late in time: the cases

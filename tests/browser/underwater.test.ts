@@ -32,7 +32,7 @@ describe('under the water', () => {
     expect(stats.composerPasses).toBe(6);
     const timings = await page.evaluate(() => window.oceano.debug.passTimings());
     // The god rays at a quarter of the resolution, the water and the blur at half (the default
-    // σ's kernel within 1 texel: one pass, src/sim/gaussianKernel.ts); the composite also
+    // σ's kernel within 1 texel: one pass, src/render/underwater/gaussianKernel.ts); the composite also
     // tone-maps, so no output pass.
     expect(timings.map((t) => t.name)).toEqual(['scene', 'shafts', 'rays', 'water', 'blur', 'composite']);
     const reference = compareWithReference('underwater-seed1-t10', png);
@@ -67,7 +67,7 @@ describe('under the water', () => {
       });
       const windowed = await canvasPng(page);
       // The window's corner is on the tile's texel lattice, so both bakes hold the lens at the
-      // same points and the god rays read the same values (src/sim/shaftLightTile.ts).
+      // same points and the god rays read the same values (src/render/underwater/shaftLightTile.ts).
       const same = measureDifference(tile, windowed);
       console.log(`[oceano] shaft light, window vs tile: ${describeDifference(same)}`);
       expect(withinTolerance(same), describeDifference(same)).toBe(true);
@@ -151,7 +151,7 @@ describe('under the water', () => {
   it('shows air above and water below the waterline of a straddling camera', async () => {
     // The eye 7 cm under the surface there (1.62 m): the near plane's upper half is in the
     // air. (1.7 m, 8 cm above it, used to straddle with the fixed 0.5 m near plane; the near
-    // plane fitted to the eye's clearance now keeps it above the water: src/sim/nearPlane.ts.)
+    // plane fitted to the eye's clearance now keeps it above the water: src/render/ocean/nearPlane.ts.)
     const { page } = await openOcean(harness, 'seed=1&t=10&cam=0,1.55,40,0,1.5,-20&blurStrength=0');
     const png = PNG.sync.read(await canvasPng(page));
     expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('straddling');

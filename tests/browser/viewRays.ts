@@ -1,7 +1,7 @@
 import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer';
 
-/** The app's vertical field of view, degrees (src/render/oceanView.ts). */
+/** The app's vertical field of view, degrees (src/render/ocean/oceanView.ts). */
 export const FOV = 55;
 export type Vec3 = [number, number, number];
 

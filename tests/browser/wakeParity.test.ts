@@ -4,14 +4,14 @@ import { canvasPng, openOcean } from './harness';
 import { describeDifference, diffPngs, measureDifference, withinTolerance } from './imageCompare';
 import { useHarness } from './useHarness';
 import { PARITY_LIMITS } from './parity';
-import { seededRandom } from '../../src/sim/integerHash';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 /**
  * The boat's Kelvin wake in the running app: the GPU probe runs the active model's chunk and
  * adds shaders/wake.glsl exactly as ocean.vert does (at the displaced point q = p + Dₕ(p));
  * sampleSurface(q) must give the same height and normal from the CPU twin (the model's sample
  * plus BoatWake's wake from the same track). The boat holds a turn, so the track is curved;
- * each time is a jump, so the track is the deterministic replay (src/sim/boatWake.ts). Most
+ * each time is a jump, so the track is the deterministic replay (src/sim/wake/boatWake.ts). Most
  * points lie within 150 m of the boat, where the wake is; the rest anywhere out to 3 km.
  *
  * Controls (each must break the limits): the CPU twin without the wake, and on a calm sea

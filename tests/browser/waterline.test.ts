@@ -60,7 +60,7 @@ describe('the waterline seen from just above the water', () => {
   it('draws no band of bright sand along the waterline with the camera 5 cm up', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=10', 640, 360);
     await page.evaluate(() => window.oceano.pause());
-    // With the near plane fitted to the eye's clearance (src/sim/nearPlane.ts) the frame is
+    // With the near plane fitted to the eye's clearance (src/render/ocean/nearPlane.ts) the frame is
     // drawn from above and the sea bed is not drawn at all.
     const fitted: number[] = [];
     for (const [x, z] of SPOTS) {

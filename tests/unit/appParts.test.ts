@@ -1,12 +1,12 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { FrameStats } from '../../src/app/frameStats';
-import { FrameLoop } from '../../src/app/frameLoop';
-import { paramsChanged } from '../../src/sim/paramChanges';
-import { defaultParams } from '../../src/sim/params';
-import type { RenderStats } from '../../src/render/oceanView';
-import { shareUrl } from '../../src/app/sharing';
-import { parseUrlState } from '../../src/app/urlState';
-import type { BoatSnapshot } from '../../src/sim/boatMotion';
+import { FrameStats } from '../../src/app/time/frameStats';
+import { FrameLoop } from '../../src/app/time/frameLoop';
+import { paramsChanged } from '../../src/sim/params/paramChanges';
+import { defaultParams } from '../../src/sim/params/params';
+import type { RenderStats } from '../../src/render/ocean/oceanView';
+import { shareUrl } from '../../src/app/url/sharing';
+import { parseUrlState } from '../../src/app/url/urlState';
+import type { BoatSnapshot } from '../../src/sim/boat/boatMotion';
 
 const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, farCellsVisible: 5, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
 

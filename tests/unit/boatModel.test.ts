@@ -2,7 +2,7 @@ import { afterEach, describe, expect, it, vi } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { Box3, Mesh, type MeshStandardMaterial } from 'three';
 import { GLTFLoader, type GLTF } from 'three/addons/loaders/GLTFLoader.js';
-import { loadBoatModel } from '../../src/render/boatModel';
+import { loadBoatModel } from '../../src/render/boat/boatModel';
 
 const GLB = readFileSync(new URL('../../public/models/boat.glb', import.meta.url));
 

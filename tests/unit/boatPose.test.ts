@@ -1,14 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { forwardOf, poseAxes, starboardOf, targetPose, type HullSize } from '../../src/sim/boatPose';
-import { followStep, type FollowerState } from '../../src/sim/dampedFollower';
-import { ANGLE_BAND, BOAT_EXTENT, BoatMotion, HEAVE_BAND } from '../../src/sim/boatMotion';
-import { FftOcean } from '../../src/sim/fftOcean';
-import { FftWaveModel } from '../../src/sim/fftWaveModel';
-import { SeedWaveModel } from '../../src/sim/seedWaveModel';
-import { GerstnerLiveModel } from '../../src/sim/gerstnerLiveModel';
-import { defaultParams } from '../../src/sim/params';
-import type { LiveWaveModel } from '../../src/sim/waveModels';
-import { seededRandom } from '../../src/sim/integerHash';
+import { forwardOf, poseAxes, starboardOf, targetPose, type HullSize } from '../../src/sim/boat/boatPose';
+import { followStep, type FollowerState } from '../../src/sim/boat/dampedFollower';
+import { ANGLE_BAND, BOAT_EXTENT, BoatMotion, HEAVE_BAND } from '../../src/sim/boat/boatMotion';
+import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
+import { FftWaveModel } from '../../src/sim/waves/fft/fftWaveModel';
+import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
+import { GerstnerLiveModel } from '../../src/sim/waves/gerstner/gerstnerLiveModel';
+import { defaultParams } from '../../src/sim/params/params';
+import type { LiveWaveModel } from '../../src/sim/waves/waveModel';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 const HULL: HullSize = { length: 8, beam: 2.6 };
 const dot = (a: number[], b: number[]) => a.reduce((s, v, i) => s + v * b[i], 0);

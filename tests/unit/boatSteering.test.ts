@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { defaultParams, type OceanParams } from '../../src/sim/params';
-import { BoatSteering, onStep } from '../../src/app/boatSteering';
+import { defaultParams, type OceanParams } from '../../src/sim/params/params';
+import { BoatSteering, onStep } from '../../src/app/boat/boatSteering';
 
 /** A key event as the browser sends it, for node's EventTarget (no KeyboardEvent there). */
 function key(type: 'keydown' | 'keyup', code: string): Event {

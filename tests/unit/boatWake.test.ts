@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { addWake, BoatWake, replayedPosition, wakeHeightBound, type WakeControls } from '../../src/sim/boatWake';
-import { forwardOf, starboardOf } from '../../src/sim/boatPose';
-import type { WakeUniformData } from '../../src/sim/wakeUniformData';
+import { addWake, BoatWake, replayedPosition, wakeHeightBound, type WakeControls } from '../../src/sim/wake/boatWake';
+import { forwardOf, starboardOf } from '../../src/sim/boat/boatPose';
+import type { WakeUniformData } from '../../src/sim/wake/wakeUniformData';
 
 const ON = { enabled: true, strength: 1 };
 const DEG = Math.PI / 180;
@@ -100,8 +100,8 @@ describe('the boat wake as the app keeps it', () => {
 
 describe('the wake in a share link', () => {
   it('a link made while sailing restores the very track, bit for bit: the reopened view does not replay it', async () => {
-    const { parseSettings, formatUrlState } = await import('../../src/app/urlState');
-    const { defaultParams } = await import('../../src/sim/params');
+    const { parseSettings, formatUrlState } = await import('../../src/app/url/urlState');
+    const { defaultParams } = await import('../../src/sim/params/params');
     const live = new BoatWake();
     // Sailing and steering: a track no replay of the present course would make.
     let x = 0;

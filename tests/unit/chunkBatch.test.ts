@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { BufferAttribute, InstancedBufferGeometry, MeshBasicMaterial } from 'three';
-import { ChunkBatch, EXPANDED_UP_TO_VERTICES } from '../../src/render/chunkBatch';
-import { chunkGrid, squareGrid } from '../../src/sim/chunkGrid';
-import { seededRandom } from '../../src/sim/integerHash';
+import { ChunkBatch, EXPANDED_UP_TO_VERTICES } from '../../src/render/ocean/chunkBatch';
+import { chunkGrid, squareGrid } from '../../src/sim/lod/chunkGrid';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 type Vertex = number[];
 

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { BufferAttribute, Mesh, PerspectiveCamera } from 'three';
-import { OceanChunks, type LodSettings } from '../../src/render/oceanChunks';
-import type { OceanMaterial } from '../../src/render/oceanMaterial';
-import type { DisplacementBounds } from '../../src/sim/waveModel';
-import { seededRandom } from '../../src/sim/integerHash';
+import { OceanChunks, type LodSettings } from '../../src/render/ocean/oceanChunks';
+import type { OceanMaterial } from '../../src/render/ocean/oceanMaterial';
+import type { DisplacementBounds } from '../../src/sim/waves/waveModel';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 /** OceanChunks only tells its material where the grid's centre is; the rest is three's scene graph. */
 function chunks(): OceanChunks {

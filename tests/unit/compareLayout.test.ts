@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { COMPARE_OFF, compareModelNames, compareOrderings, compareStrips, dividerPositions } from '../../src/sim/compareLayout';
-import { paramDefs, validateParam, ParamError } from '../../src/sim/params';
-import { parseSettings } from '../../src/app/urlState';
-import { Translator } from '../../src/app/i18n';
+import { COMPARE_OFF, compareModelNames, compareOrderings, compareStrips, dividerPositions } from '../../src/sim/compare/compareLayout';
+import { paramDefs, validateParam, ParamError } from '../../src/sim/params/params';
+import { parseSettings } from '../../src/app/url/urlState';
+import { Translator } from '../../src/app/language/i18n';
 
 describe('compare: which models, in which order', () => {
   it('lists every ordered pair and triple of distinct models, and nothing else', () => {

@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { BAND_STEPS, BASE_STEP, DETAIL_NORMALS_FROM, bandHasDetailNormals } from '../../src/sim/lodBands';
+import { BAND_STEPS, BASE_STEP, DETAIL_NORMALS_FROM, bandHasDetailNormals } from '../../src/sim/lod/lodBands';
 
 // ocean.frag fades the far bands' per-pixel detail normals in with
 // smoothstep(DETAIL_FROM, DETAIL_FULL, vertexSpacing); the bands drawn without that code

@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { viewProjection } from '../support/cameraMath';
-import { chunkGrid, squareGrid } from '../../src/sim/chunkGrid';
-import { BORDER_STEP, OCEAN_CHUNKS_PER_SIDE, OCEAN_EXTENT } from '../../src/sim/chunkSelection';
-import { snapGridVertex } from '../../src/sim/edgeSnap';
-import { FAR_FADE_END, FAR_RING_COUNT, FarRingSelector, farRings, inRingHole, RING_CELL_QUADS, RING_OWN_STEP, ringCellOutside, ringEdgeSteps, skirtMesh, type FarRing } from '../../src/sim/farRings';
-import { planesFromMatrix } from '../../src/sim/frustumMath';
-import { seededRandom } from '../../src/sim/integerHash';
-import { BASE_STEP, CHUNK_QUADS, MAX_LOD_BANDS } from '../../src/sim/lodBands';
+import { chunkGrid, squareGrid } from '../../src/sim/lod/chunkGrid';
+import { BORDER_STEP, OCEAN_CHUNKS_PER_SIDE, OCEAN_EXTENT } from '../../src/sim/lod/chunkSelection';
+import { snapGridVertex } from '../../src/sim/lod/edgeSnap';
+import { FAR_FADE_END, FAR_RING_COUNT, FarRingSelector, farRings, inRingHole, RING_CELL_QUADS, RING_OWN_STEP, ringCellOutside, ringEdgeSteps, skirtMesh, type FarRing } from '../../src/sim/lod/farRings';
+import { planesFromMatrix } from '../../src/sim/lod/frustumMath';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { BASE_STEP, CHUNK_QUADS, MAX_LOD_BANDS } from '../../src/sim/lod/lodBands';
 
 const HALF = OCEAN_EXTENT / 2;
 type Point = [number, number];

@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { cascadeLayout, inBand } from '../../src/sim/cascades';
-import { waveNumber } from '../../src/sim/dispersion';
-import { fftOceanSetup } from '../../src/sim/fftOcean';
-import { signedIndex } from '../../src/sim/initialSpectrum';
-import { DEFAULT_SEA_STATE, type SeaState, type SpectrumName } from '../../src/sim/seaState';
-import { directionalSpectrum, frequencySpectrum, peakWavelength } from '../../src/sim/waveSpectrum';
+import { cascadeLayout, inBand } from '../../src/sim/waves/fft/cascades';
+import { waveNumber } from '../../src/sim/waves/dispersion';
+import { fftOceanSetup } from '../../src/sim/waves/fft/fftOcean';
+import { signedIndex } from '../../src/sim/waves/spectra/initialSpectrum';
+import { DEFAULT_SEA_STATE, type SeaState, type SpectrumName } from '../../src/sim/waves/spectra/seaState';
+import { directionalSpectrum, frequencySpectrum, peakWavelength } from '../../src/sim/waves/spectra/waveSpectrum';
 
 const spectra: SpectrumName[] = ['pierson-moskowitz', 'jonswap', 'phillips'];
 
@@ -88,8 +88,8 @@ describe('cascades', () => {
 
 describe('sea state from the parameter table', () => {
   it('maps km to m, the deepest depth to deep water, and the FFT size text to a number', async () => {
-    const { defaultParams } = await import('../../src/sim/params');
-    const { seaStateFromParams } = await import('../../src/sim/seaState');
+    const { defaultParams } = await import('../../src/sim/params/params');
+    const { seaStateFromParams } = await import('../../src/sim/waves/spectra/seaState');
     const p = defaultParams();
     const s = seaStateFromParams(p);
     expect(s.fetch).toBe(100_000);

@@ -1,8 +1,8 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { FftOcean } from '../../src/sim/fftOcean';
-import { seaStateFromParams } from '../../src/sim/seaState';
-import { defaultParams } from '../../src/sim/params';
-import { fieldBuffers, packedFields, type FieldsReply, type FieldsRequest } from '../../src/render/waveModels/fftFieldsSource';
+import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
+import { seaStateFromParams } from '../../src/sim/waves/spectra/seaState';
+import { defaultParams } from '../../src/sim/params/params';
+import { fieldBuffers, packedFields, type FieldsReply, type FieldsRequest } from '../../src/render/waves/fft/fftFieldsSource';
 
 /** The Worker's script run in node against a stand-in for its global scope, with fake timers. */
 async function startWorker() {
@@ -13,7 +13,7 @@ async function startWorker() {
   };
   vi.stubGlobal('self', scope);
   vi.resetModules();
-  await import('../../src/render/waveModels/fftFieldsWorker');
+  await import('../../src/render/waves/fft/fftFieldsWorker');
   const send = (request: FieldsRequest) => scope.onmessage?.({ data: request } as MessageEvent<FieldsRequest>);
   return { replies, send };
 }

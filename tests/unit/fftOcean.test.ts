@@ -1,14 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { GRAVITY, quantiseFrequency } from '../../src/sim/dispersion';
-import { InverseFft2d } from '../../src/sim/fft2d';
-import { FftOcean, fftOceanSetup, wrapTexel } from '../../src/sim/fftOcean';
-import { seededRandom } from '../../src/sim/integerHash';
-import { REPEAT_PERIOD, signedIndex, type SpectralTile } from '../../src/sim/initialSpectrum';
-import { windAt19_5 } from '../../src/sim/piersonMoskowitz';
-import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/seaState';
-import { evolveSpectra } from '../../src/sim/spectralFields';
-import { frequencySpectrum } from '../../src/sim/waveSpectrum';
-import { undoHorizontalDisplacement } from '../../src/sim/waveModel';
+import { GRAVITY, quantiseFrequency } from '../../src/sim/waves/dispersion';
+import { InverseFft2d } from '../../src/sim/waves/fft/fft2d';
+import { FftOcean, fftOceanSetup, wrapTexel } from '../../src/sim/waves/fft/fftOcean';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { REPEAT_PERIOD, signedIndex, type SpectralTile } from '../../src/sim/waves/spectra/initialSpectrum';
+import { windAt19_5 } from '../../src/sim/waves/spectra/piersonMoskowitz';
+import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/waves/spectra/seaState';
+import { evolveSpectra } from '../../src/sim/waves/fft/spectralFields';
+import { frequencySpectrum } from '../../src/sim/waves/spectra/waveSpectrum';
+import { undoHorizontalDisplacement } from '../../src/sim/waves/waveModel';
 
 const sea = (over: Partial<SeaState>): SeaState => ({ ...DEFAULT_SEA_STATE, fftSize: 64, ...over });
 

@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { angularFrequency, GRAVITY, groupVelocity, quantiseFrequency, timeInPeriod, waveNumber } from '../../src/sim/dispersion';
-import { cos2sNormalisation, cos2sSpreading, hasselmannSpreading, hasselmannSpreadingExponent, logGamma } from '../../src/sim/directionalSpreading';
-import { jonswap, jonswapM0Approx, jonswapShape, jonswapWithShape } from '../../src/sim/jonswap';
-import { piersonMoskowitz, piersonMoskowitzM0, piersonMoskowitzPeak, windAt19_5 } from '../../src/sim/piersonMoskowitz';
-import { phillips, phillipsM0, phillipsPeak } from '../../src/sim/phillips';
-import { DEFAULT_SEA_STATE, windVector, type SeaState } from '../../src/sim/seaState';
-import { directionalSpectrum, frequencySpectrum } from '../../src/sim/waveSpectrum';
+import { angularFrequency, GRAVITY, groupVelocity, quantiseFrequency, timeInPeriod, waveNumber } from '../../src/sim/waves/dispersion';
+import { cos2sNormalisation, cos2sSpreading, hasselmannSpreading, hasselmannSpreadingExponent, logGamma } from '../../src/sim/waves/spectra/directionalSpreading';
+import { jonswap, jonswapM0Approx, jonswapShape, jonswapWithShape } from '../../src/sim/waves/spectra/jonswap';
+import { piersonMoskowitz, piersonMoskowitzM0, piersonMoskowitzPeak, windAt19_5 } from '../../src/sim/waves/spectra/piersonMoskowitz';
+import { phillips, phillipsM0, phillipsPeak } from '../../src/sim/waves/spectra/phillips';
+import { DEFAULT_SEA_STATE, windVector, type SeaState } from '../../src/sim/waves/spectra/seaState';
+import { directionalSpectrum, frequencySpectrum } from '../../src/sim/waves/spectra/waveSpectrum';
 
 /** ∫f over [a, b] by composite Simpson with n (even) intervals. */
 function simpson(f: (x: number) => number, a: number, b: number, n = 20000): number {

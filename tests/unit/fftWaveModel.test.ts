@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { FftOcean, type CascadeFields } from '../../src/sim/fftOcean';
-import { FftWaveModel, type FieldSource } from '../../src/sim/fftWaveModel';
-import { defaultParams } from '../../src/sim/params';
-import { SimulationClock } from '../../src/app/simulationClock';
-import { copyFields, fieldBuffers, packedFields } from '../../src/render/waveModels/fftFieldsSource';
-import { seededRandom } from '../../src/sim/integerHash';
+import { FftOcean, type CascadeFields } from '../../src/sim/waves/fft/fftOcean';
+import { FftWaveModel, type FieldSource } from '../../src/sim/waves/fft/fftWaveModel';
+import { defaultParams } from '../../src/sim/params/params';
+import { SimulationClock } from '../../src/app/time/simulationClock';
+import { copyFields, fieldBuffers, packedFields } from '../../src/render/waves/fft/fftFieldsSource';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
 

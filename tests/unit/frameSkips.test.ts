@@ -1,14 +1,14 @@
 import { describe, expect, it, vi } from 'vitest';
 import { BackSide, CubeTexture, DoubleSide, FrontSide, Group, Scene, Texture, type IUniform } from 'three';
-import { OceanMaterial } from '../../src/render/oceanMaterial';
-import { BoatView } from '../../src/render/boatView';
-import { WaveBinding } from '../../src/render/waveModels/waveBinding';
-import type { WaveModelView } from '../../src/render/waveModels/waveModelView';
-import type { Submersion } from '../../src/sim/underwater';
-import type { BoatPose } from '../../src/sim/boatPose';
-import { SeedWaveView } from '../../src/render/waveModels/seedWaveView';
-import { SeedWaveModel } from '../../src/sim/seedWaveModel';
-import { defaultParams } from '../../src/sim/params';
+import { OceanMaterial } from '../../src/render/ocean/oceanMaterial';
+import { BoatView } from '../../src/render/boat/boatView';
+import { WaveBinding } from '../../src/render/waves/waveBinding';
+import type { WaveModelView } from '../../src/render/waves/waveModelView';
+import type { Submersion } from '../../src/sim/underwater/snellWindow';
+import type { BoatPose } from '../../src/sim/boat/boatPose';
+import { SeedWaveView } from '../../src/render/waves/seed/seedWaveView';
+import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
+import { defaultParams } from '../../src/sim/params/params';
 
 /**
  * The update step's setters that skip a frame's repeat of the last frame's values

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { criticalAngle, fresnelReflectance, fresnelTable, schlickReflectance, WATER_IOR } from '../../src/sim/fresnel';
+import { criticalAngle, fresnelReflectance, fresnelTable, schlickReflectance, WATER_IOR } from '../../src/sim/optics/fresnel';
 
 const deg = (d: number) => (d * Math.PI) / 180;
 
@@ -45,7 +45,7 @@ describe('Fresnel reflectance, water to air', () => {
 });
 
 /**
- * Reference values written out independently of src/sim/fresnel.ts: the Fresnel equations in
+ * Reference values written out independently of src/sim/optics/fresnel.ts: the Fresnel equations in
  * their sine–tangent form (Hecht, Optics, 5th ed., §4.6.2, eqs. 4.42–4.43),
  * Rs = sin²(θi − θt) / sin²(θi + θt), Rp = tan²(θi − θt) / tan²(θi + θt), R = (Rs + Rp) / 2,
  * with sin θt = (n1 / n2) sin θi, evaluated in Python (double precision) for n = 1.333 and

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { PRESETS } from '../../src/app/presets';
-import { gerstnerWavesFor } from '../../src/sim/gerstnerLiveModel';
-import { GerstnerWaveModel, type GerstnerWave } from '../../src/sim/gerstnerWaves';
-import { defaultParams, type OceanParams } from '../../src/sim/params';
+import { PRESETS } from '../../src/app/url/presets';
+import { gerstnerWavesFor } from '../../src/sim/waves/gerstner/gerstnerLiveModel';
+import { GerstnerWaveModel, type GerstnerWave } from '../../src/sim/waves/gerstner/gerstnerWaves';
+import { defaultParams, type OceanParams } from '../../src/sim/params/params';
 
 /**
  * The gerstner-steepness preset is there to show crests sharpening as Q goes from 0.2

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import type { Vector4 } from 'three';
-import { GERSTNER_MAX_WAVES, GerstnerWaveUniforms } from '../../src/render/waveModels/gerstnerWaveUniforms';
-import { gerstnerSea } from '../../src/sim/gerstnerSpectrum';
-import { gerstnerTimePhases } from '../../src/sim/gerstnerWaves';
+import { GERSTNER_MAX_WAVES, GerstnerWaveUniforms } from '../../src/render/waves/gerstner/gerstnerWaveUniforms';
+import { gerstnerSea } from '../../src/sim/waves/gerstner/gerstnerSpectrum';
+import { gerstnerTimePhases } from '../../src/sim/waves/gerstner/gerstnerWaves';
 import { cosineSquared, piersonMoskowitz } from './testSeas';
 
 const sea = gerstnerSea({ count: 37, seed: 4, spectrum: piersonMoskowitz(9).spectrum, spreading: cosineSquared, windDirection: 2, steepness: 0.7 });

@@ -8,10 +8,10 @@ import {
   invertGerstner,
   steepnessSum,
   type GerstnerWave,
-} from '../../src/sim/gerstnerWaves';
-import { drawGerstnerWaves, gerstnerSea, limitSteepness, linearDispersion, wavenumberFor } from '../../src/sim/gerstnerSpectrum';
-import { undoHorizontalDisplacement } from '../../src/sim/waveModel';
-import { GERSTNER_MAX_WAVES } from '../../src/render/waveModels/gerstnerWaveUniforms';
+} from '../../src/sim/waves/gerstner/gerstnerWaves';
+import { drawGerstnerWaves, gerstnerSea, limitSteepness, linearDispersion, wavenumberFor } from '../../src/sim/waves/gerstner/gerstnerSpectrum';
+import { undoHorizontalDisplacement } from '../../src/sim/waves/waveModel';
+import { GERSTNER_MAX_WAVES } from '../../src/render/waves/gerstner/gerstnerWaveUniforms';
 import gerstnerGlsl from '../../shaders/waves/gerstner.glsl?raw';
 import { G, cosineSquared, jonswap, piersonMoskowitz } from './testSeas';
 

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { paramKeys } from '../../src/sim/params';
-import { message, MESSAGE_IDS, type MessageId } from '../../src/sim/message';
-import { preferredLanguage, SPANISH_PARAM_LABELS, Translator } from '../../src/app/i18n';
-import { parseUrlState } from '../../src/app/urlState';
+import { paramKeys } from '../../src/sim/params/params';
+import { message, MESSAGE_IDS, type MessageId } from '../../src/sim/params/message';
+import { preferredLanguage, SPANISH_PARAM_LABELS, Translator } from '../../src/app/language/i18n';
+import { parseUrlState } from '../../src/app/url/urlState';
 
 /** Values that carry English text, which only the English notice repeats. */
 const ENGLISH_ONLY: Partial<Record<MessageId, string>> = { startFailed: 'E7', boatLoadFailed: 'R7' };

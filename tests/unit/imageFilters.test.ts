@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { gaussianKernel, linearSampledKernel, type LinearSampledKernel } from '../../src/sim/gaussianKernel';
+import { gaussianKernel, linearSampledKernel, type LinearSampledKernel } from '../../src/render/underwater/gaussianKernel';
 import { highFrequencyEnergy } from '../support/imageEnergy';
-import { seededRandom } from '../../src/sim/integerHash';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 function grey(values: number[][]): Uint8Array {
   const h = values.length;

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { forwardOf } from '../../src/sim/boatPose';
-import { KELVIN_HALF_ANGLE, kelvinGuideLines } from '../../src/sim/kelvinGuide';
+import { forwardOf } from '../../src/sim/boat/boatPose';
+import { KELVIN_HALF_ANGLE, kelvinGuideLines } from '../../src/sim/wake/kelvinGuide';
 
 describe('kelvinGuideLines', () => {
   it.each([0, 1, 2.5, 4.7])('draws two lines 19.47° either side of the stern direction, heading %s rad', (heading) => {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { GRAVITY, froudeNumber, wakeHeight, wakeHeightAndGradient, wakeSources, type WakeParams, type WakeSource } from '../../src/sim/kelvinWake';
-import { TRACK_POINTS, WakeTrack } from '../../src/sim/wakeTrack';
+import { GRAVITY, froudeNumber, wakeHeight, wakeHeightAndGradient, wakeSources, type WakeParams, type WakeSource } from '../../src/sim/wake/kelvinWake';
+import { TRACK_POINTS, WakeTrack } from '../../src/sim/wake/wakeTrack';
 
 const KELVIN_DEG = (Math.asin(1 / 3) * 180) / Math.PI; // 19.47°
 const HULL = 8; // the project's boat, metres

@@ -78,8 +78,8 @@ describe('layering sim ← render ← app', () => {
   const graph = importGraph(files(join(ROOT, 'src')));
 
   it('resolves the imports it checks (the graph is not empty and finds known edges)', () => {
-    expect(graph.get('src/render/oceanView.ts')).toContain('src/sim/params.ts');
-    expect(graph.get('src/app/oceanApp.ts')).toContain('src/render/oceanView.ts');
+    expect(graph.get('src/render/ocean/oceanView.ts')).toContain('src/sim/params/params.ts');
+    expect(graph.get('src/app/oceanApp.ts')).toContain('src/render/ocean/oceanView.ts');
   });
 
   it('has no import from a lower layer to a higher one, and no three.js in sim', () => {
@@ -92,10 +92,10 @@ describe('layering sim ← render ← app', () => {
 
   it('would report an upward import and a cycle (negative controls)', () => {
     const planted = new Map(graph);
-    planted.set('src/sim/planted.ts', ['src/render/oceanView.ts', 'three']);
-    expect(layeringViolations(planted)).toEqual(['src/sim/planted.ts → src/render/oceanView.ts', 'src/sim/planted.ts → three']);
-    planted.set('src/sim/params.ts', [...(graph.get('src/sim/params.ts') ?? []), 'src/sim/planted.ts']);
-    planted.set('src/sim/planted.ts', ['src/sim/params.ts']);
-    expect(importCycles(planted)).toContainEqual(['src/sim/params.ts', 'src/sim/planted.ts', 'src/sim/params.ts']);
+    planted.set('src/sim/planted.ts', ['src/render/ocean/oceanView.ts', 'three']);
+    expect(layeringViolations(planted)).toEqual(['src/sim/planted.ts → src/render/ocean/oceanView.ts', 'src/sim/planted.ts → three']);
+    planted.set('src/sim/params/params.ts', [...(graph.get('src/sim/params/params.ts') ?? []), 'src/sim/planted.ts']);
+    planted.set('src/sim/planted.ts', ['src/sim/params/params.ts']);
+    expect(importCycles(planted)).toContainEqual(['src/sim/params/params.ts', 'src/sim/planted.ts', 'src/sim/params/params.ts']);
   });
 });

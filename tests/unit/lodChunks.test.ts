@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { Frustum, Matrix4, PerspectiveCamera } from 'three';
 import { viewProjection } from '../support/cameraMath';
-import { ChunkQuadtree } from '../../src/sim/chunkQuadtree';
-import { chunkGrid } from '../../src/sim/chunkGrid';
-import { ChunkSelector, OCEAN_CHUNKS_PER_SIDE, OCEAN_EXTENT, oceanOrigin } from '../../src/sim/chunkSelection';
-import { snapEdgeCoordinate, snapGridVertex, snappedEdge } from '../../src/sim/edgeSnap';
-import { classifyBox, distanceToBox, OUTSIDE, planesFromMatrix, pointInside, type Plane } from '../../src/sim/frustumMath';
-import { seededRandom } from '../../src/sim/integerHash';
-import { BAND_STEPS, bandForDistance, bandQuads, bandStart, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS } from '../../src/sim/lodBands';
+import { ChunkQuadtree } from '../../src/sim/lod/chunkQuadtree';
+import { chunkGrid } from '../../src/sim/lod/chunkGrid';
+import { ChunkSelector, OCEAN_CHUNKS_PER_SIDE, OCEAN_EXTENT, oceanOrigin } from '../../src/sim/lod/chunkSelection';
+import { snapEdgeCoordinate, snapGridVertex, snappedEdge } from '../../src/sim/lod/edgeSnap';
+import { classifyBox, distanceToBox, OUTSIDE, planesFromMatrix, pointInside, type Plane } from '../../src/sim/lod/frustumMath';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { BAND_STEPS, bandForDistance, bandQuads, bandStart, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS } from '../../src/sim/lod/lodBands';
 
 const BOUNDS_HEIGHT = 2.3;
 

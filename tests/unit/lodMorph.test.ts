@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { chunkGrid } from '../../src/sim/chunkGrid';
-import { ChunkSelector, oceanOrigin } from '../../src/sim/chunkSelection';
-import type { Plane } from '../../src/sim/frustumMath';
-import { seededRandom } from '../../src/sim/integerHash';
-import { bandStart, CHUNK_QUADS, CHUNK_SIZE, BASE_STEP, MAX_LOD_BANDS } from '../../src/sim/lodBands';
-import { CHUNK_REACH, morphedVertex, morphZone, morphZones, type ChunkPlacement } from '../../src/sim/lodMorph';
-import { defaultParams } from '../../src/sim/params';
-import { SeedWaveModel } from '../../src/sim/seedWaveModel';
+import { chunkGrid } from '../../src/sim/lod/chunkGrid';
+import { ChunkSelector, oceanOrigin } from '../../src/sim/lod/chunkSelection';
+import type { Plane } from '../../src/sim/lod/frustumMath';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { bandStart, CHUNK_QUADS, CHUNK_SIZE, BASE_STEP, MAX_LOD_BANDS } from '../../src/sim/lod/lodBands';
+import { CHUNK_REACH, morphedVertex, morphZone, morphZones, type ChunkPlacement } from '../../src/sim/lod/lodMorph';
+import { defaultParams } from '../../src/sim/params/params';
+import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
 
 type Vec3 = [number, number, number];
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_NEAR, MARGIN_PER_NEAR, NEAR_FLOOR, nearForClearance, nearPlaneDrop, type ViewAxes } from '../../src/sim/nearPlane';
+import { DEFAULT_NEAR, MARGIN_PER_NEAR, NEAR_FLOOR, nearForClearance, nearPlaneDrop, type ViewAxes } from '../../src/render/ocean/nearPlane';
 
 const tan = Math.tan((55 * Math.PI) / 360);
 const level: ViewAxes = { forwardY: 0, upY: 1, rightY: 0, tanHalfFov: tan, aspect: 16 / 9 };

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { gaussianKernel, halfResolutionSigma, ONE_PASS_TAIL, onePassBlurOffset } from '../../src/sim/gaussianKernel';
+import { gaussianKernel, halfResolutionSigma, ONE_PASS_TAIL, onePassBlurOffset } from '../../src/render/underwater/gaussianKernel';
 
 /** What four bilinear taps at (±o, ±o), each weighing ¼, add up to over a 3×3 neighbourhood (index [y + 1][x + 1]). */
 function fourTapKernel(o: number): number[][] {
@@ -15,7 +15,7 @@ function fourTapKernel(o: number): number[][] {
   return k;
 }
 
-describe('the one-pass underwater blur (src/sim/gaussianKernel.ts: onePassBlurOffset)', () => {
+describe('the one-pass underwater blur (src/render/underwater/gaussianKernel.ts: onePassBlurOffset)', () => {
   it("reads exactly the radius-1 Gaussian's 3×3 product kernel, for every σ it accepts", () => {
     for (const sigma of [0.1, 0.3, 0.45, halfResolutionSigma(1.5)]) {
       const o = onePassBlurOffset(sigma);

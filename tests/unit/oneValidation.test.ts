@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { defaultParams, paramDefs, paramKeys, parseParamText, validateParam } from '../../src/sim/params';
-import { isValidTime } from '../../src/sim/simulationTime';
-import { formatUrlState, parseUrlState } from '../../src/app/urlState';
+import { defaultParams, paramDefs, paramKeys, parseParamText, validateParam } from '../../src/sim/params/params';
+import { isValidTime } from '../../src/sim/params/simulationTime';
+import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
 
 /** Issue 11.6: the URL, the element's attributes and the API validate with one rule each. */
 describe('one validation for every entry point', () => {
@@ -44,7 +44,7 @@ describe('one validation for every entry point', () => {
 
 describe('boat state in a link (issue 11.1)', () => {
   it('writes the boat state so that it reads back bit for bit, and refuses a bad one with a notice', async () => {
-    const { formatBoatState, parseBoatState } = await import('../../src/app/urlState');
+    const { formatBoatState, parseBoatState } = await import('../../src/app/url/urlState');
     const b = { x: 6.36123456789, z: -5.3312345, heading: { value: 5.1, velocity: -0.01 }, heave: { value: 1.0001, velocity: 0.3 }, pitch: { value: 0.01, velocity: 1e-17 }, roll: { value: -0.02, velocity: 0 } };
     expect(parseBoatState(formatBoatState(b))).toEqual(b);
     expect(parseUrlState(`?t=3&boatState=${formatBoatState(b)}`).boatState).toEqual(b);

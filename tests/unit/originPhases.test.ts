@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { gerstnerOriginPhases, tileOriginTexels } from '../../src/sim/originPhases';
+import { gerstnerOriginPhases, tileOriginTexels } from '../../src/sim/waves/originPhases';
 
 // Distance between two phases in turns, modulo whole turns.
 const turnDistance = (a: number, b: number) => {

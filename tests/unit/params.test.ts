@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { defaultParams, paramDefs, paramKeys, ParamError, parseParamText, validateParam, validateParams } from '../../src/sim/params';
-import { isSafeAssetPath, parseUrlState } from '../../src/app/urlState';
-import { Translator } from '../../src/app/i18n';
-import type { Message } from '../../src/sim/message';
+import { defaultParams, paramDefs, paramKeys, ParamError, parseParamText, validateParam, validateParams } from '../../src/sim/params/params';
+import { isSafeAssetPath, parseUrlState } from '../../src/app/url/urlState';
+import { Translator } from '../../src/app/language/i18n';
+import type { Message } from '../../src/sim/params/message';
 
 const english = new Translator('en');
 const text = (notice: Message | undefined) => (notice ? english.message(notice) : '');

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { integerNoise, seededRandom } from '../../src/sim/integerHash';
-import { TilingPerlinNoise, cosineInterpolate, generateHeightmap, generateRippleHeightmaps, defaultNoiseSettings } from '../../src/sim/perlinNoise';
+import { integerNoise, seededRandom } from '../../src/sim/noise/integerHash';
+import { TilingPerlinNoise, cosineInterpolate, generateHeightmap, generateRippleHeightmaps, defaultNoiseSettings } from '../../src/sim/noise/perlinNoise';
 
 describe('integer noise', () => {
   it('is the MurmurHash3 finaliser of the mixed lattice point and seed, as documented', () => {

@@ -12,10 +12,10 @@ import {
   spectralMoment0,
   spectralPeak,
   type HeightSampler,
-} from '../../src/sim/physicsEstimators';
-import { gerstnerSea, linearDispersion, type Dispersion } from '../../src/sim/gerstnerSpectrum';
-import { GerstnerWaveModel } from '../../src/sim/gerstnerWaves';
-import { seededRandom } from '../../src/sim/integerHash';
+} from '../../src/sim/physics/physicsEstimators';
+import { gerstnerSea, linearDispersion, type Dispersion } from '../../src/sim/waves/gerstner/gerstnerSpectrum';
+import { GerstnerWaveModel } from '../../src/sim/waves/gerstner/gerstnerWaves';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 import { G, cosineSquared, jonswap, piersonMoskowitz } from './testSeas';
 
 const TWO_PI = 2 * Math.PI;

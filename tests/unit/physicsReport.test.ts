@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { cos2sSpreading } from '../../src/sim/directionalSpreading';
-import { GerstnerLiveModel } from '../../src/sim/gerstnerLiveModel';
-import { gerstnerSea } from '../../src/sim/gerstnerSpectrum';
-import { GerstnerWaveModel } from '../../src/sim/gerstnerWaves';
-import { defaultParams } from '../../src/sim/params';
-import { jonswapHs, measurePhysics, piersonMoskowitzHs } from '../../src/sim/physicsReport';
-import { piersonMoskowitz } from '../../src/sim/piersonMoskowitz';
-import { seaStateFromParams } from '../../src/sim/seaState';
-import { SeedWaveModel } from '../../src/sim/seedWaveModel';
+import { cos2sSpreading } from '../../src/sim/waves/spectra/directionalSpreading';
+import { GerstnerLiveModel } from '../../src/sim/waves/gerstner/gerstnerLiveModel';
+import { gerstnerSea } from '../../src/sim/waves/gerstner/gerstnerSpectrum';
+import { GerstnerWaveModel } from '../../src/sim/waves/gerstner/gerstnerWaves';
+import { defaultParams } from '../../src/sim/params/params';
+import { jonswapHs, measurePhysics, piersonMoskowitzHs } from '../../src/sim/physics/physicsReport';
+import { piersonMoskowitz } from '../../src/sim/waves/spectra/piersonMoskowitz';
+import { seaStateFromParams } from '../../src/sim/waves/spectra/seaState';
+import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
 
 const SLOW = 120_000;
 

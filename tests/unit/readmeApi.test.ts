@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { createFailedApi } from '../../src/app/automationApi';
+import { createFailedApi } from '../../src/app/api/automationApi';
 
 /** Issue 11.11: the README's automation section names every member of the API. */
 describe('README automation list', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { renderOrigin, RENDER_ORIGIN_STEP } from '../../src/sim/renderOrigin';
+import { renderOrigin, RENDER_ORIGIN_STEP } from '../../src/render/ocean/renderOrigin';
 
 describe('renderOrigin', () => {
   it('is the world origin near it, so views there are drawn as before', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { median, percentile } from '../../src/sim/sampleStatistics';
+import { median, percentile } from '../../src/sim/physics/sampleStatistics';
 
 describe('median', () => {
   it('is the middle value of an odd count, whatever the order', () => {

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial } from 'three';
-import { encodeSceneForPost, SCENE_BRIGHTEST, SCENE_LOW_CODES } from '../../src/render/sceneEncoding';
-import { registerShaderChunks } from '../../src/render/shaderChunks';
+import { encodeSceneForPost, SCENE_BRIGHTEST, SCENE_LOW_CODES } from '../../src/render/underwater/sceneEncoding';
+import { registerShaderChunks } from '../../src/render/shaders/shaderChunks';
 
 const DEFINE = 'OCEANO_SCENE_ENCODE';
 
@@ -17,7 +17,7 @@ function sceneOfEveryKind() {
   return { scene, materials: [shader, standard, ...pair, line] };
 }
 
-describe("the underwater passes' scene encoding (src/render/sceneEncoding.ts)", () => {
+describe("the underwater passes' scene encoding (src/render/underwater/sceneEncoding.ts)", () => {
   it('defines the encoding on every material in the scene, nested and multi-material ones included, and removes it again', () => {
     const { scene, materials } = sceneOfEveryKind();
     encodeSceneForPost(scene, true);

@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { glslFloat, shaderConstantsChunk } from '../../src/render/shaderConstants';
-import { WATER_IOR } from '../../src/sim/fresnel';
-import { BLUR_MAX_TAPS } from '../../src/sim/gaussianKernel';
-import { GOD_RAY_RANGE } from '../../src/sim/shaftLightTile';
-import { LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../src/sim/lodBands';
+import { glslFloat, shaderConstantsChunk } from '../../src/render/shaders/shaderConstants';
+import { WATER_IOR } from '../../src/sim/optics/fresnel';
+import { BLUR_MAX_TAPS } from '../../src/render/underwater/gaussianKernel';
+import { GOD_RAY_RANGE } from '../../src/render/underwater/shaftLightTile';
+import { LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../src/sim/lod/lodBands';
 
 const SHADER_DIR = join(__dirname, '../../shaders');
 

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { GOD_RAY_RANGE, planShaftLightTile, SHAFT_LIGHT_TEXEL, SHAFT_LIGHT_WINDOW_SIDE, type ShaftLightTile } from '../../src/sim/shaftLightTile';
-import { refractedSunDirection, type Vec3 } from '../../src/sim/underwater';
-import { seededRandom } from '../../src/sim/integerHash';
-import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel } from '../../src/sim/gaussianKernel';
-import { paramDefs } from '../../src/sim/params';
+import { GOD_RAY_RANGE, planShaftLightTile, SHAFT_LIGHT_TEXEL, SHAFT_LIGHT_WINDOW_SIDE, type ShaftLightTile } from '../../src/render/underwater/shaftLightTile';
+import { refractedSunDirection, type Vec3 } from '../../src/sim/underwater/snellWindow';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel } from '../../src/render/underwater/gaussianKernel';
+import { paramDefs } from '../../src/sim/params/params';
 
 /** Every point the god-ray march of shaders/underwater.frag reads, for one line of sight. */
 function marchReads(eye: Vec3, d: Vec3, r: Vec3, steps = 40): [number, number][] {

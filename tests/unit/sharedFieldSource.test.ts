@@ -1,8 +1,8 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { SharedFieldSource } from '../../src/render/waveModels/sharedFieldSource';
-import { FftWaveModel } from '../../src/sim/fftWaveModel';
-import { defaultParams } from '../../src/sim/params';
-import { chooseWriteSlot, controlViews, publish, readRequest, type ChannelMessage } from '../../src/sim/sharedFieldsProtocol';
+import { SharedFieldSource } from '../../src/render/waves/fft/sharedFieldSource';
+import { FftWaveModel } from '../../src/sim/waves/fft/fftWaveModel';
+import { defaultParams } from '../../src/sim/params/params';
+import { chooseWriteSlot, controlViews, publish, readRequest, type ChannelMessage } from '../../src/render/waves/fft/sharedFieldsProtocol';
 
 /** A stand-in for the page's Worker: records what the source posts (the channel, once per sea). */
 class FakeWorker {

@@ -1,8 +1,8 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { FftOcean } from '../../src/sim/fftOcean';
-import { FftWaveModel } from '../../src/sim/fftWaveModel';
-import { defaultParams } from '../../src/sim/params';
-import { seaStateFromParams } from '../../src/sim/seaState';
+import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
+import { FftWaveModel } from '../../src/sim/waves/fft/fftWaveModel';
+import { defaultParams } from '../../src/sim/params/params';
+import { seaStateFromParams } from '../../src/sim/waves/spectra/seaState';
 import {
   chooseWriteSlot,
   CONTROL_BYTES,
@@ -17,7 +17,7 @@ import {
   writeRequest,
   type ChannelMessage,
   type SharedControl,
-} from '../../src/sim/sharedFieldsProtocol';
+} from '../../src/render/waves/fft/sharedFieldsProtocol';
 
 const channel = (generation = 1) => controlViews(new SharedArrayBuffer(CONTROL_BYTES), generation);
 /** The READING word (index 2 of the ints), read as the Worker reads it. */
@@ -142,7 +142,7 @@ describe('fftFieldsWorker over shared memory, with FftWaveModel', () => {
     };
     vi.stubGlobal('self', scope);
     vi.resetModules();
-    await import('../../src/render/waveModels/fftFieldsWorker');
+    await import('../../src/render/waves/fft/fftFieldsWorker');
 
     const model = new FftWaveModel({ ...defaultParams(), fftSize: '64' as const, windSpeed: 12 });
     const sea = model.sea;

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { CubeTexture, UnsignedByteType } from 'three';
-import { SunSky } from '../../src/render/sunSky';
-import { skyFlip, skySquared } from '../../src/render/skyCubeUniforms';
-import { paintedSkyCube } from '../../src/render/skyCube';
+import { SunSky } from '../../src/render/sky/sunSky';
+import { skyFlip, skySquared } from '../../src/render/sky/skyCubeUniforms';
+import { paintedSkyCube } from '../../src/render/sky/skyCube';
 
 describe('how each sky cube is read (shaders/skyCube.glsl)', () => {
   it('the default sky cube holds square roots in 8 bits, read squared and unmirrored', () => {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { message, MESSAGE_IDS, MessageError, messageOf } from '../../src/sim/message';
-import { Translator } from '../../src/app/i18n';
+import { message, MESSAGE_IDS, MessageError, messageOf } from '../../src/sim/params/message';
+import { Translator } from '../../src/app/language/i18n';
 
 /** Values as the app passes them: paths, numbers and an English inner error, which Spanish must not repeat. */
 const VALUES = {

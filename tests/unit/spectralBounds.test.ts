@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { FftOcean } from '../../src/sim/fftOcean';
-import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/seaState';
-import { cascadeSpread, extremeFactor, spectralBounds } from '../../src/sim/spectralBounds';
-import { REPEAT_PERIOD } from '../../src/sim/initialSpectrum';
+import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
+import { DEFAULT_SEA_STATE, type SeaState } from '../../src/sim/waves/spectra/seaState';
+import { cascadeSpread, extremeFactor, spectralBounds } from '../../src/sim/waves/spectra/spectralBounds';
+import { REPEAT_PERIOD } from '../../src/sim/waves/spectra/initialSpectrum';
 
 /** Seeded times in [0, T): a linear congruential walk, so the test draws the same instants every run. */
 function seededTimes(count: number, seed: number): number[] {

@@ -1,7 +1,7 @@
 import FFT from 'fft.js';
 import { describe, expect, it } from 'vitest';
-import { stockhamInverse, stockhamMixedInverse, stockhamRadices, stockhamRadixStage, stockhamStage } from '../../src/sim/stockhamFft';
-import { seededRandom } from '../../src/sim/integerHash';
+import { stockhamInverse, stockhamMixedInverse, stockhamRadices, stockhamRadixStage, stockhamStage } from '../../src/sim/waves/fft/stockhamFft';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 describe('Stockham radix-2 inverse FFT (the GPU pass’s indexing)', () => {
   for (const n of [8, 64, 256]) {

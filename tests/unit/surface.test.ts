@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import type { Heightmap } from '../../src/sim/perlinNoise';
-import { defaultParams } from '../../src/sim/params';
-import { SeedWaveModel } from '../../src/sim/seedWaveModel';
+import type { Heightmap } from '../../src/sim/noise/perlinNoise';
+import { defaultParams } from '../../src/sim/params/params';
+import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
 import {
   deepWaterAngularFrequency,
   maxDisplacement,
@@ -11,8 +11,8 @@ import {
   surfaceNormal,
   surfaceStateAt,
   swellHeight,
-} from '../../src/sim/surface';
-import { seededRandom } from '../../src/sim/integerHash';
+} from '../../src/sim/waves/seed/seedSurface';
+import { seededRandom } from '../../src/sim/noise/integerHash';
 
 const flatMaps: [Heightmap, Heightmap] = [
   { size: 4, data: new Float32Array(16) },

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { SurfaceHeightMemo } from '../../src/sim/surfaceHeightMemo';
-import { SeedWaveModel } from '../../src/sim/seedWaveModel';
-import { FftWaveModel } from '../../src/sim/fftWaveModel';
-import { defaultParams } from '../../src/sim/params';
-import type { LiveWaveModel } from '../../src/sim/liveWaveModel';
+import { SurfaceHeightMemo } from '../../src/sim/waves/surfaceHeightMemo';
+import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
+import { FftWaveModel } from '../../src/sim/waves/fft/fftWaveModel';
+import { defaultParams } from '../../src/sim/params/params';
+import type { LiveWaveModel } from '../../src/sim/waves/waveModel';
 
 /** A model that counts its height questions (the seed model's answers). */
 function counted(model: LiveWaveModel): { model: LiveWaveModel; calls: () => number } {

@@ -1,10 +1,10 @@
-import { GRAVITY } from '../../src/sim/dispersion';
-import { jonswapShape, jonswapWithShape } from '../../src/sim/jonswap';
-import { piersonMoskowitz as pmDensity, piersonMoskowitzPeak } from '../../src/sim/piersonMoskowitz';
-import { piersonMoskowitzHs } from '../../src/sim/physicsReport';
+import { GRAVITY } from '../../src/sim/waves/dispersion';
+import { jonswapShape, jonswapWithShape } from '../../src/sim/waves/spectra/jonswap';
+import { piersonMoskowitz as pmDensity, piersonMoskowitzPeak } from '../../src/sim/waves/spectra/piersonMoskowitz';
+import { piersonMoskowitzHs } from '../../src/sim/physics/physicsReport';
 
 /**
- * The app's own wind spectra (src/sim/piersonMoskowitz.ts, jonswap.ts, shared with the FFT
+ * The app's own wind spectra (src/sim/waves/spectra/piersonMoskowitz.ts, jonswap.ts, shared with the FFT
  * sea) in the shape the Gerstner and estimator tests use: a density, its peak and, for PM,
  * the empirical Hs. No formula lives here: the tests check the one copy the app runs.
  */
@@ -21,7 +21,7 @@ export function jonswap(u10: number, fetch: number): { spectrum: (omega: number)
 
 /**
  * cos² spreading about the wind, normalised: D(θ) = (2/π) cos² θ for |θ| < π/2. A test
- * fixture (the app uses cos-2s, src/sim/directionalSpreading.ts): a narrow, one-sided
+ * fixture (the app uses cos-2s, src/sim/waves/spectra/directionalSpreading.ts): a narrow, one-sided
  * spreading whose waves all run downwind, which the tests' hand-derived cases assume.
  */
 export function cosineSquared(theta: number): number {

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { AIR_IOR, fresnelReflectance, WATER_IOR } from '../../src/sim/fresnel';
-import { classifyNearPlane, fresnelTableFromBelow, refractDirection, refractedSunDirection, snellWindowHalfAngle } from '../../src/sim/underwater';
-import { sunDirection } from '../../src/sim/sun';
+import { AIR_IOR, fresnelReflectance, WATER_IOR } from '../../src/sim/optics/fresnel';
+import { classifyNearPlane, fresnelTableFromBelow, refractDirection, refractedSunDirection, snellWindowHalfAngle } from '../../src/sim/underwater/snellWindow';
+import { sunDirection } from '../../src/sim/optics/sun';
 
 const deg = (d: number) => (d * Math.PI) / 180;
 const toDeg = (r: number) => (r * 180) / Math.PI;
@@ -64,7 +64,7 @@ describe('Fresnel reflectance from below (water to air)', () => {
     // The window's edge, cos 48.607° = 0.66122, falls between entries 168 and 169 (× 255 = 168.61).
     for (let i = 0; i <= 168; i++) expect(table[i], `entry ${i}`).toBe(1);
     // Hecht's sine–tangent form (Optics, 5th ed., §4.6.2) with n1 = 1.333, n2 = 1, evaluated
-    // in Python (double precision) at cos θ = i / 255, not with src/sim/fresnel.ts.
+    // in Python (double precision) at cos θ = i / 255, not with src/sim/optics/fresnel.ts.
     for (const [i, expected] of [
       [169, 0.6895744],
       [170, 0.4982109],

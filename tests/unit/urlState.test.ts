@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { defaultParams, paramDefs, paramKeys } from '../../src/sim/params';
-import { seededRandom } from '../../src/sim/integerHash';
-import { formatUrlState, parseSettings, parseUrlState, type ShareableState } from '../../src/app/urlState';
-import { formatCameraText, isCameraPose, parseCameraText } from '../../src/app/cameraPose';
-import { findPreset, PRESETS, presetNames } from '../../src/app/presets';
-import { Translator } from '../../src/app/i18n';
+import { defaultParams, paramDefs, paramKeys } from '../../src/sim/params/params';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { formatUrlState, parseSettings, parseUrlState, type ShareableState } from '../../src/app/url/urlState';
+import { formatCameraText, isCameraPose, parseCameraText } from '../../src/app/camera/cameraPose';
+import { findPreset, PRESETS, presetNames } from '../../src/app/url/presets';
+import { Translator } from '../../src/app/language/i18n';
 
 const english = new Translator('en');
 

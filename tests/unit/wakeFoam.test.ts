@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { wakeFoam, type FoamParams } from '../../src/sim/wakeFoam';
-import { WakeTrack } from '../../src/sim/wakeTrack';
+import { wakeFoam, type FoamParams } from '../../src/sim/wake/wakeFoam';
+import { WakeTrack } from '../../src/sim/wake/wakeTrack';
 
 const HULL: FoamParams = { hullLength: 8, hullBeam: 2.6 };
 const FRAME = 1 / 30;

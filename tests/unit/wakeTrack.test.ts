@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { TRACK_COARSE_INTERVAL, TRACK_INTERVAL, TRACK_POINTS, TrackRecorder, WakeTrack, parseTrack, serializeTrack } from '../../src/sim/wakeTrack';
+import { TRACK_COARSE_INTERVAL, TRACK_INTERVAL, TRACK_POINTS, TrackRecorder, WakeTrack, parseTrack, serializeTrack } from '../../src/sim/wake/wakeTrack';
 
 /** A boat on a circle of 50 m radius at 5 m/s, position at time t. */
 const circle = (t: number): [number, number] => [50 * Math.sin(t / 10), 50 - 50 * Math.cos(t / 10)];

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { wakeHeight } from '../../src/sim/kelvinWake';
-import { WakeTrack } from '../../src/sim/wakeTrack';
-import { packWakeUniforms, wakeAtWorld } from '../../src/sim/wakeUniformData';
+import { wakeHeight } from '../../src/sim/wake/kelvinWake';
+import { WakeTrack } from '../../src/sim/wake/wakeTrack';
+import { packWakeUniforms, wakeAtWorld } from '../../src/sim/wake/wakeUniformData';
 
 const PARAMS = { strength: 1, hullLength: 8 };
 

@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import type { Color } from 'three';
-import { FOG_HIDES_BELOW, WATER_EXTINCTION, daylightAtDepth, fogHidingDistance } from '../../src/sim/waterFog';
-import { applyWaterVolume, createWaterVolumeUniforms, setEyeDepth } from '../../src/render/waterVolumeUniforms';
-import { SCENE_BRIGHTEST } from '../../src/render/sceneEncoding';
-import { paramDefs } from '../../src/sim/params';
+import { FOG_HIDES_BELOW, WATER_EXTINCTION, daylightAtDepth, fogHidingDistance } from '../../src/sim/underwater/waterFog';
+import { applyWaterVolume, createWaterVolumeUniforms, setEyeDepth } from '../../src/render/underwater/waterVolumeUniforms';
+import { SCENE_BRIGHTEST } from '../../src/render/underwater/sceneEncoding';
+import { paramDefs } from '../../src/sim/params/params';
 
 const transmittance = (fogDensity: number, distance: number) => WATER_EXTINCTION.map((e) => Math.exp(-fogDensity * e * distance));
 
-describe('how far the water fog lets anything be seen (src/sim/waterFog.ts)', () => {
+describe('how far the water fog lets anything be seen (src/sim/underwater/waterFog.ts)', () => {
   it('at the hiding distance every channel lets through at most FOG_HIDES_BELOW, and just short of it the weakest-absorbed more', () => {
     for (const fog of [0.001, 0.035, 0.1, 0.3]) {
       const d = fogHidingDistance(fog);

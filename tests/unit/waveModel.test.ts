@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { undoHorizontalDisplacement } from '../../src/sim/waveModel';
+import { undoHorizontalDisplacement } from '../../src/sim/waves/waveModel';
 
 // A single trochoid: D(p) = (−A sin(k p), A cos(k p)) along x. With k A = 0.7 the
 // horizontal map's derivative is 1 − kA cos, so the fixed point contracts with rate ≤ 0.7.

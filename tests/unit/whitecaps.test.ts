@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { foamJacobianThreshold, foamThresholdForSpread, upperNormalQuantile, whitecapCoverage } from '../../src/sim/whitecaps';
-import { FftOcean } from '../../src/sim/fftOcean';
-import { DEFAULT_SEA_STATE } from '../../src/sim/seaState';
-import { cascadeSpread } from '../../src/sim/spectralBounds';
+import { foamJacobianThreshold, foamThresholdForSpread, upperNormalQuantile, whitecapCoverage } from '../../src/sim/waves/fft/whitecaps';
+import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
+import { DEFAULT_SEA_STATE } from '../../src/sim/waves/spectra/seaState';
+import { cascadeSpread } from '../../src/sim/waves/spectra/spectralBounds';
 
 describe('whitecaps', () => {
   it('follows Monahan & O\'Muircheartaigh (1980): about 1 % at 10 m/s, 10 % at 20 m/s', () => {

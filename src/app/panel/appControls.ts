@@ -1,0 +1,113 @@
+import type { OceanParams } from '../../sim/params/params';
+import { BoatSteering } from '../boat/boatSteering';
+import { CameraKeys } from '../camera/cameraKeys';
+import type { CameraPose } from '../camera/cameraPose';
+import type { ControlPanel, ControlPanelHooks, LiveCounts } from './controlPanel';
+import { FresnelPlot } from '../physics/fresnelPlot';
+import type { Translator } from '../language/i18n';
+import { PhysicsPanel, type PhysicsSource } from '../physics/physicsPanel';
+import { CompareDividers } from '../compare/compareDividers';
+
+/** How often the GUI's live LOD counts are refreshed (frames). */
+const COUNTS_EVERY = 10;
+
+/** What the keys change through the app's own API, so they are checked as any caller's change is. */
+export interface KeyedApp {
+  setParams(change: Partial<OceanParams>): unknown;
+  getParams(): OceanParams;
+  camera(): CameraPose;
+  setCamera(pose: CameraPose): void;
+}
+
+/**
+ * What the user steers the ocean with besides the canvas: the lil-gui panel (full page
+ * only), the keyboard's boat steering and camera keys, the Fresnel plot and the physics
+ * panel, kept in step with the parameters.
+ */
+export class AppControls {
+  /** Built by loadPanel, once lil-gui's code has arrived. */
+  private panel?: ControlPanel;
+  private panelLoad?: Promise<void>;
+  /** What the panel shows when it is built: the last sync's. */
+  private shown: { params: OceanParams; playing: boolean };
+  private disposed = false;
+  private readonly steering: BoatSteering;
+  private readonly cameraKeys: CameraKeys;
+  private readonly tr: Translator;
+  private fresnelPlot?: FresnelPlot;
+  readonly physics: PhysicsPanel;
+  private readonly dividers: CompareDividers;
+
+  constructor(
+    private readonly container: HTMLElement,
+    private readonly fresnelData: Float32Array,
+    private readonly state: { showPanel: boolean; params: OceanParams; playing: boolean; tr: Translator; physics: PhysicsSource; panelFailed: () => void },
+    app: KeyedApp,
+    private readonly hooks: ControlPanelHooks,
+  ) {
+    this.shown = { params: state.params, playing: state.playing };
+    // The full page steers from anywhere; an embedded figure only when it has the focus.
+    const keyTarget: Window | HTMLElement = state.showPanel ? window : container;
+    this.steering = new BoatSteering(keyTarget, (change) => app.setParams(change), () => app.getParams());
+    this.cameraKeys = new CameraKeys(keyTarget, () => app.camera(), (pose) => app.setCamera(pose));
+    this.tr = state.tr;
+    this.physics = new PhysicsPanel(container, state.physics);
+    // The split view's dividers belong to the view, embedded or not: made here, hidden until compare= is set.
+    this.dividers = new CompareDividers(container, state.tr, (key, value) => hooks.onParam(key, value));
+    this.sync(state.params, state.playing);
+  }
+
+  /**
+   * Builds the lil-gui panel (full page only). Its code (lil-gui is about 14 KB gzipped) is a
+   * chunk of its own, fetched after the first frame (OceanApp.start) so the sea does not wait
+   * for it; where it cannot be fetched the ocean runs without a panel and says so.
+   */
+  loadPanel(): Promise<void> {
+    if (!this.state.showPanel) return Promise.resolve();
+    this.panelLoad ??= import('./controlPanel').then(
+      ({ ControlPanel }) => {
+        if (this.disposed) return;
+        this.panel = new ControlPanel(this.container, this.shown.params, this.shown.playing, this.hooks, this.tr);
+        this.panel.sync(this.shown.params, this.shown.playing);
+      },
+      (error: unknown) => {
+        console.warn('Oceano: the control panel\'s code could not be loaded.', error);
+        if (!this.disposed) this.state.panelFailed();
+      },
+    );
+    return this.panelLoad;
+  }
+
+  /** Applies held steering keys for `seconds` of the loop. */
+  steer(seconds: number): void {
+    this.steering.apply(seconds);
+  }
+
+  sync(params: OceanParams, playing: boolean): void {
+    this.shown = { params, playing };
+    // The plot is made the first time it is asked for: most figures never show it.
+    if (params.fresnelPlot) this.fresnelPlot ??= new FresnelPlot(this.container, this.fresnelData, this.tr);
+    this.fresnelPlot?.setVisible(params.fresnelPlot);
+    this.physics.setOpen(params.physics);
+    this.dividers.sync(params);
+    this.panel?.sync(params, playing);
+  }
+
+  /**
+   * The panel's live LOD counts: while looping, every COUNTS_EVERY frames; a paused view
+   * draws only on a change (a t= link, a preset, a camera move), so on every such frame.
+   */
+  showCounts(frame: number, looping: boolean, counts: () => LiveCounts): void {
+    if (this.panel && (!looping || frame % COUNTS_EVERY === 0)) this.panel.showCounts(counts());
+  }
+
+  dispose(): void {
+    this.disposed = true;
+    this.steering.dispose();
+    this.cameraKeys.dispose();
+    this.panel?.dispose();
+    this.fresnelPlot?.dispose();
+    this.physics.dispose();
+    this.dividers.dispose();
+  }
+}

@@ -1,0 +1,123 @@
+import GUI, { type Controller } from 'lil-gui';
+import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../../sim/params/params';
+import type { Translator, UiTextId } from '../language/i18n';
+import { froudeNumber } from '../../sim/wake/kelvinWake';
+import { WAKE_HULL } from '../../sim/wake/boatWake';
+
+const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
+  { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
+  // The wind sea that both waves=fft and waves=gerstner draw from.
+  { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel', 'choppiness', 'fftSize', 'foam', 'foamThreshold'] },
+  { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
+  { title: 'folderGerstner', keys: ['gerstnerCount', 'gerstnerSteepness'] },
+  { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },
+  { title: 'folderPhysics', keys: ['physics'] },
+  { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
+  { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide'] },
+  { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
+  { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'lodMorph', 'freezeCulling', 'lodBruteForce'] },
+  { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'normalsCompare', 'view', 'fresnelPlot'] },
+];
+
+/** Views narrower than this (CSS px; a phone held upright) start with the panel folded. */
+const NARROW = 560;
+
+/** What the LOD debugger's read-only counters show. */
+export interface LiveCounts {
+  chunksVisible: number;
+  chunksTotal: number;
+  triangles: number;
+  drawCalls: number;
+  lodCounts: number[];
+}
+
+export interface ControlPanelHooks {
+  onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
+  onPlayingChange(playing: boolean): void;
+  onShare(): void;
+  onDive(): void;
+  onSurface(): void;
+}
+
+/**
+ * lil-gui panel built from the parameter definitions, so a new parameter gets its control
+ * with its range and unit without touching this file beyond naming its folder.
+ */
+export class ControlPanel {
+  readonly gui: GUI;
+  private readonly model: OceanParams & { playing: boolean };
+  private readonly controllers: Controller[] = [];
+  private readonly counts = { chunks: '', triangles: '', drawCalls: '', perBand: '' };
+  private readonly countControllers: Controller[] = [];
+  /** The boat folder's read-only Froude number of the hull at the set speed. */
+  private readonly froude = { value: '' };
+  private readonly froudeController: Controller;
+
+  constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
+    // Its styles come from the page's stylesheet (main.ts): no <style> element with a data: font.
+    this.gui = new GUI({ container, title: tr.ui('panelTitle'), injectStyles: false });
+    this.model = { ...params, playing };
+    let boatFolder: GUI | null = null;
+    for (const folder of FOLDERS) {
+      const group = this.gui.addFolder(tr.ui(folder.title));
+      for (const key of folder.keys) this.controllers.push(this.addControl(group, key, hooks));
+      if (folder.title === 'folderBoat') boatFolder = group;
+    }
+    this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(tr.ui('froudeNumber')).disable();
+    const live = this.gui.addFolder(tr.ui('folderLiveCounts'));
+    const labels: [keyof typeof this.counts, UiTextId][] = [
+      ['chunks', 'countChunks'],
+      ['triangles', 'countTriangles'],
+      ['drawCalls', 'countDrawCalls'],
+      ['perBand', 'countPerBand'],
+    ];
+    for (const [key, label] of labels) this.countControllers.push(live.add(this.counts, key).name(tr.ui(label)).disable());
+    this.controllers.push(
+      this.gui.add(this.model, 'playing').name(tr.ui('playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
+    );
+    // lil-gui draws a function as a <button>: focusable and keyboard operable.
+    this.gui.add({ share: () => hooks.onShare() }, 'share').name(tr.ui('share'));
+    const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
+    this.gui.add(camera, 'dive').name(tr.ui('dive'));
+    this.gui.add(camera, 'surface').name(tr.ui('surface'));
+    // On a phone the open panel would cover most of the sea: start it folded (its title opens it).
+    if (container.clientWidth < NARROW) this.gui.close();
+  }
+
+  private addControl(group: GUI, key: ParamKey, hooks: ControlPanelHooks): Controller {
+    const def: ParamDef = paramDefs[key];
+    const label = this.tr.paramLabel(key);
+    const emit = (value: OceanParams[ParamKey]) => hooks.onParam(key, value);
+    if (def.kind === 'color') return group.addColor(this.model, key).name(label).onChange(emit);
+    if (def.kind === 'boolean') return group.add(this.model, key).name(label).onChange(emit);
+    if (def.kind === 'choice') return group.add(this.model, key, [...def.options]).name(label).onChange(emit);
+    const name = def.unit ? `${label} (${def.unit})` : label;
+    const step = def.kind === 'integer' ? 1 : (def.step ?? (def.max - def.min) / 100);
+    // A slider over the whole int32 range of the seed is useless: give it a number box.
+    const wideRange = def.max - def.min > 1e6;
+    const controller = (wideRange ? group.add(this.model, key).step(1) : group.add(this.model, key, def.min, def.max, step)).name(name);
+    // A new seed regenerates both heightmaps: do it once when the user lets go, not per pixel dragged.
+    return key === 'seed' ? controller.onFinishChange(emit) : controller.onChange(emit);
+  }
+
+  /** Shows values changed elsewhere (API, keyboard) without echoing them back. */
+  sync(params: OceanParams, playing: boolean): void {
+    Object.assign(this.model, params, { playing });
+    for (const controller of this.controllers) controller.updateDisplay();
+    // Fr = U/√(gL) of the hull the wake is made for: what sets the wake's amplitude and look.
+    this.froude.value = `${froudeNumber(params.boatSpeed, WAKE_HULL.length).toFixed(2)} (L = ${WAKE_HULL.length} m)`;
+    this.froudeController.updateDisplay();
+  }
+
+  showCounts(counts: LiveCounts): void {
+    this.counts.chunks = `${counts.chunksVisible} / ${counts.chunksTotal}`;
+    this.counts.triangles = counts.triangles.toLocaleString('en-US');
+    this.counts.drawCalls = String(counts.drawCalls);
+    this.counts.perBand = counts.lodCounts.join(' ');
+    for (const controller of this.countControllers) controller.updateDisplay();
+  }
+
+  dispose(): void {
+    this.gui.destroy();
+  }
+}

@@ -1,0 +1,92 @@
+import type { OceanParams } from '../../sim/params/params';
+import type { MeasuredSea, PhysicsReport } from '../../sim/physics/physicsReport';
+import { seaStateFromParams } from '../../sim/waves/spectra/seaState';
+import type { LiveWaveModel } from '../../sim/waves/waveModel';
+
+/** What the panel reads of the running app: the active CPU twin, the parameters, the clock. */
+export interface PhysicsSource {
+  model(): LiveWaveModel;
+  params(): OceanParams;
+  time(): number;
+}
+
+/** The running sea as the estimators see it: heights above world points from the CPU twin. */
+export function measuredSea(model: LiveWaveModel, params: OceanParams): MeasuredSea {
+  const height = (x: number, z: number, t: number) => model.height(x, z, t);
+  if (model.name === 'seed') return { name: 'seed', height, sea: { swellWavenumber: params.swellFrequency } };
+  return { name: model.name, height, sea: seaStateFromParams(params) };
+}
+
+/** What the lazily loaded plots module exports (src/app/physics/physicsPlots.ts). */
+type PlotsModule = typeof import('./physicsPlots');
+/** The estimators (with fft.js), also fetched on first use: the default first frame needs none of them. */
+type ReportModule = typeof import('../../sim/physics/physicsReport');
+type PhysicsView = InstanceType<PlotsModule['PhysicsView']>;
+
+/**
+ * physics=1: measures the running sea and plots it against theory. Closed, it costs nothing:
+ * no estimator runs and the plotting code (physicsPlots.ts with uPlot and its CSS) is not
+ * even loaded; both happen when the panel first opens (dynamic import, a separate chunk).
+ */
+export class PhysicsPanel {
+  /** Estimator runs so far (the panel's and oceano.physics()'s): the test of "costs nothing when closed". */
+  runs = 0;
+  private open = false;
+  private view?: PhysicsView;
+  private loading?: Promise<void>;
+  private report?: ReportModule;
+  private reportLoad?: Promise<ReportModule>;
+
+  constructor(
+    private readonly container: HTMLElement,
+    private readonly source: PhysicsSource,
+  ) {}
+
+  /**
+   * Measures from the current time on (a few seconds of CPU: only on demand), once the
+   * estimators' code has arrived (the first call fetches it).
+   */
+  async measure(): Promise<PhysicsReport> {
+    const time = this.source.time();
+    return this.measureNow(await this.loadReport(), time);
+  }
+
+  private loadReport(): Promise<ReportModule> {
+    this.reportLoad ??= import('../../sim/physics/physicsReport').then((code) => (this.report = code));
+    return this.reportLoad;
+  }
+
+  private measureNow(code: ReportModule, time = this.source.time()): PhysicsReport {
+    this.runs++;
+    return code.measurePhysics(measuredSea(this.source.model(), this.source.params()), time);
+  }
+
+  setOpen(open: boolean): void {
+    if (open === this.open) return;
+    this.open = open;
+    if (!open) {
+      this.view?.setVisible(false);
+      return;
+    }
+    if (this.view && this.report) {
+      this.view.setVisible(true);
+      this.view.show(this.measureNow(this.report));
+      return;
+    }
+    this.loading ??= Promise.all([import('./physicsPlots'), this.loadReport()]).then(([plots, code]) => {
+      this.view = new plots.PhysicsView(this.container, () => this.measureNow(code));
+      this.view.setVisible(this.open);
+      if (this.open) this.view.refresh();
+    });
+  }
+
+  /** Resolves once the panel, if open, has drawn its first measurement (for tests). */
+  async settled(): Promise<void> {
+    await this.loading;
+    await this.view?.drawn;
+  }
+
+  dispose(): void {
+    this.view?.dispose();
+  }
+}

@@ -1,0 +1,219 @@
+import { BackSide, Color, DoubleSide, FrontSide, Matrix4, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture } from 'three';
+import { renderOrigin } from './renderOrigin';
+import type { Submersion } from '../../sim/underwater/snellWindow';
+import vertexShader from '../../../shaders/ocean.vert?raw';
+import fragmentShader from '../../../shaders/ocean.frag?raw';
+import { CHUNK_QUADS } from '../../sim/lod/lodBands';
+import { FAR_FADE_END, FAR_FADE_START } from '../../sim/lod/farRings';
+import { morphZones } from '../../sim/lod/lodMorph';
+import { registerShaderChunks } from '../shaders/shaderChunks';
+import type { WaveBinding } from '../waves/waveBinding';
+import type { WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
+import type { WakeUniforms } from '../wake/wakeUniforms';
+import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from '../sky/skyCubeUniforms';
+import { setMaterialDefine } from '../shaders/materialDefines';
+
+/** Lighter tint where the water faces the viewer, relative to the deep colour. */
+const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
+
+export class OceanMaterial extends ShaderMaterial {
+  /**
+   * The material of the grid bands whose vertices lie close enough together that ocean.frag's
+   * per-pixel detail normals have weight 0 there (bandHasDetailNormals): compiled without that
+   * block (OCEAN_NEAR_BANDS), since SwiftShader runs both sides of a branch, it shares this
+   * material's uniforms object, so every setter here reaches it. It is itself for that material.
+   */
+  readonly near: OceanMaterial;
+  /** The material whose uniforms `near` shares; null for the main one. */
+  private readonly main: OceanMaterial | null;
+  /** The last setSeenFromBelow's answer; null before the first. */
+  private seenFrom: Submersion | null = null;
+
+  constructor(
+    private readonly waves: WaveBinding,
+    fresnelTables: { fromAbove: Texture; fromBelow: Texture },
+    sky: CubeTexture,
+    shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>,
+    main: OceanMaterial | null = null,
+  ) {
+    registerShaderChunks();
+    super({
+      vertexShader,
+      fragmentShader,
+      uniforms: {
+        ...shared,
+        ...createSkyCubeUniforms(sky),
+        uFresnelTable: { value: fresnelTables.fromAbove },
+        uFresnelFromBelow: { value: fresnelTables.fromBelow },
+        uFresnelEnabled: { value: true },
+        uMarkSides: { value: false },
+        uDeepColor: { value: new Color() },
+        uFacingTint: { value: new Color() },
+        uSunDirection: { value: new Vector3(0, 1, 0) },
+        uHazeDensity: { value: 0.0012 },
+        uFlatNormals: { value: false },
+        uChunkQuads: { value: CHUNK_QUADS },
+        uOceanCenter: { value: new Vector2() },
+        uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
+        uDetailNormals: { value: true },
+        uRenderOrigin: { value: new Vector2() },
+        uViewRelative: { value: new Matrix4() },
+        uEyeRelative: { value: new Vector3() },
+        uWakeOn: { value: false },
+        uLodCamera: { value: new Vector3() },
+        uLodHeight: { value: 0 },
+        uMorphZones: { value: morphZones(1, 1, false) },
+      },
+    });
+    this.main = main;
+    // The wake's code is compiled in until setWakeOn says the wake is off (see there).
+    this.defines.OCEAN_WAKE = '';
+    if (main) {
+      this.uniforms = main.uniforms;
+      this.defines.OCEAN_NEAR_BANDS = '';
+    }
+    waves.attach(this);
+    this.near = main ? this : new OceanMaterial(waves, fresnelTables, sky, shared, this);
+  }
+
+  /** The binding's switches reach both programs; a caller detaching this one detaches both. */
+  detachFrom(waves: WaveBinding): void {
+    waves.detach(this);
+    if (this.near !== this) waves.detach(this.near);
+  }
+
+  override dispose(): void {
+    super.dispose();
+    if (this.near !== this) this.near.dispose();
+  }
+
+  setWireframe(on: boolean): void {
+    this.wireframe = on;
+    this.near.wireframe = on;
+  }
+
+  /**
+   * World coordinates on the GPU (origin fixed at 0) instead of camera-relative ones; only
+   * for a negative control: 10⁶ m out the glint turns into a checkerboard.
+   */
+  absoluteCoordinates = false;
+  private readonly originShift = new Matrix4();
+  private readonly eye = new Vector3();
+
+  /**
+   * Before each draw, for the camera drawing it: the render origin near that camera, the
+   * view matrix for positions relative to it and the eye relative to it, all in double
+   * precision here so that the shaders only see small numbers.
+   */
+  override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
+    const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
+    const [x, z] = (this.main ?? this).absoluteCoordinates ? [0, 0] : renderOrigin(eye.x, eye.z);
+    (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
+    this.waves.model.setRenderOrigin?.(x, z);
+    this.originShift.makeTranslation(x, 0, z);
+    (this.uniforms.uViewRelative.value as Matrix4).multiplyMatrices(camera.matrixWorldInverse, this.originShift);
+    (this.uniforms.uEyeRelative.value as Vector3).set(eye.x - x, eye.y, eye.z - z);
+  }
+
+  /**
+   * Which faces are drawn, and shaded how, for where the view starts (OceanView's
+   * submersion test). Above: front faces only, and the underside's shading is left out of the
+   * program (ocean.frag). Straddling: both faces, the underside shaded from below, each face
+   * marking its side in alpha for the underwater passes. Below (the eye and the whole near
+   * plane in the water): a line of sight first meets the surface from below, where a front
+   * face could only show behind a back face, so back faces only, and the shading from above
+   * is left out of the program (OCEAN_ONLY_FROM_BELOW): SwiftShader would otherwise run it
+   * for every pixel of the underside too (issue 14).
+   */
+  setSeenFromBelow(where: Submersion): void {
+    // Called every frame with, almost always, last frame's answer: nothing else writes these
+    // (the side, uMarkSides, the two defines), so the same answer leaves them as they are.
+    if (where === this.seenFrom) return;
+    this.seenFrom = where;
+    const inWater = where !== 'above';
+    this.uniforms.uMarkSides.value = inWater;
+    this.near.side = this.side = where === 'below' ? BackSide : inWater ? DoubleSide : FrontSide;
+    this.setDefine('OCEAN_SEEN_FROM_BELOW', inWater);
+    this.setDefine('OCEAN_ONLY_FROM_BELOW', where === 'below');
+  }
+
+  /** Compiles a define in or out of both programs (this one and `near`), which must draw alike. */
+  private setDefine(name: string, on: boolean): void {
+    for (const material of this.near === this ? [this] : [this, this.near]) setMaterialDefine(material, name, on);
+  }
+
+  setSky(sky: CubeTexture): void {
+    setSkyCube(this.uniforms as SkyCubeUniforms, sky);
+  }
+
+  setWaterColor(hex: string): void {
+    const deep = (this.uniforms.uDeepColor.value as Color).set(hex);
+    (this.uniforms.uFacingTint.value as Color).copy(deep).add(FACING_TINT_LIFT);
+  }
+
+  setSunDirection(direction: readonly [number, number, number]): void {
+    (this.uniforms.uSunDirection.value as Vector3).fromArray(direction).normalize();
+  }
+
+  setTeachingViews(flatNormals: boolean, showNormals: boolean): void {
+    this.uniforms.uFlatNormals.value = flatNormals;
+    this.setDefine('OCEAN_SHOW_NORMALS', showNormals);
+  }
+
+  /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */
+  setNormalsCompare(enabled: boolean): void {
+    this.setDefine('OCEAN_NORMALS_COMPARE', enabled);
+  }
+
+  setFresnelEnabled(enabled: boolean): void {
+    this.uniforms.uFresnelEnabled.value = enabled;
+  }
+
+  /** The chunk grid's centre this frame, where the far rings' fade is measured from. */
+  setOceanCenter(x: number, z: number): void {
+    (this.uniforms.uOceanCenter.value as Vector2).set(x, z);
+  }
+
+  /**
+   * Whether the boat's wake is drawn (uWakeCount ≥ 2): the fragment shader then adds its slope
+   * and foam, and the wake's code is compiled into both programs (OCEAN_WAKE). Off (the
+   * default view), that code is left out: the vertex shader would skip it anyway, but
+   * SwiftShader compiles each program to machine code on its first draw, and the wake's two
+   * loops were about 120 ms of GPU-process CPU of each ocean program's 330 ms vertex stage
+   * (scripts/compileProbe.ts, issue 14's ttffMs). Turning the wake on or off builds the
+   * other programs once, on the next draw.
+   */
+  setWakeOn(on: boolean): void {
+    this.uniforms.uWakeOn.value = on;
+    this.setDefine('OCEAN_WAKE', on);
+  }
+
+  /**
+   * Geomorphing's inputs this frame: the camera and wave height the bands were chosen with,
+   * and each band's morph zone (src/sim/lod/lodMorph.ts morphZones).
+   */
+  setLodMorph(camera: readonly [number, number, number], height: number, zones: Float32Array): void {
+    (this.uniforms.uLodCamera.value as Vector3).fromArray(camera);
+    this.uniforms.uLodHeight.value = height;
+    (this.uniforms.uMorphZones.value as Float32Array).set(zones);
+  }
+
+  /**
+   * Per-pixel normals and foam (Gerstner, FFT) at absolute grid points, as before they were
+   * taken relative to the render origin; only for a negative control: 10⁶ m out the glint
+   * comes in 6 cm blocks.
+   */
+  setAbsolutePixelNormals(on: boolean): void {
+    this.setDefine('WAVE_ABSOLUTE_PIXELS', on);
+  }
+
+  /** Per-pixel detail normals in the far bands; off only for a negative control. */
+  setDetailNormals(on: boolean): void {
+    this.uniforms.uDetailNormals.value = on;
+  }
+
+  /** The LOD debugger's view: each chunk tinted by its band (compiled in only while shown, see ocean.frag). */
+  setLodColors(enabled: boolean): void {
+    this.setDefine('OCEAN_LOD_COLORS', enabled);
+  }
+}

@@ -1,0 +1,38 @@
+import { WATER_IOR } from '../../sim/optics/fresnel';
+import { BLUR_MAX_TAPS } from '../underwater/gaussianKernel';
+import { DETAIL_NORMALS_FROM, LOD_BAND_COLORS } from '../../sim/lod/lodBands';
+import { GOD_RAY_RANGE } from '../underwater/shaftLightTile';
+import { DEPTH_DARKENING, WATER_EXTINCTION } from '../../sim/underwater/waterFog';
+
+/** A GLSL float literal: always with a decimal point, since GLSL ES will not take `1` as a float. */
+export function glslFloat(value: number): string {
+  if (!Number.isFinite(value)) throw new RangeError(`No GLSL literal for ${value}.`);
+  const text = String(value);
+  return /[.e]/.test(text) ? text : `${text}.0`;
+}
+
+function glslVec3(rgb: readonly [number, number, number]): string {
+  return `vec3(${rgb.map(glslFloat).join(', ')})`;
+}
+
+/**
+ * The constants GLSL shares with TypeScript, written as #defines from the TypeScript values
+ * so that there is one source for each: `#include <oceano_constants>` (registered in
+ * shaderChunks.ts). Guarded, since chunks that include it may be included together.
+ */
+export function shaderConstantsChunk(): string {
+  return [
+    '#ifndef OCEANO_CONSTANTS',
+    '#define OCEANO_CONSTANTS',
+    `#define WATER_IOR ${glslFloat(WATER_IOR)}`,
+    `#define BLUR_MAX_TAPS ${BLUR_MAX_TAPS}`,
+    `#define GOD_RAY_RANGE ${glslFloat(GOD_RAY_RANGE)}`,
+    `#define WATER_EXTINCTION ${glslVec3(WATER_EXTINCTION)}`,
+    `#define DEPTH_DARKENING ${glslVec3(DEPTH_DARKENING)}`,
+    `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
+    `#define LOD_BAND_COUNT ${LOD_BAND_COLORS.length}`,
+    `#define LOD_BAND_COLORS vec3[${LOD_BAND_COLORS.length}](${LOD_BAND_COLORS.map(glslVec3).join(', ')})`,
+    '#endif',
+    '',
+  ].join('\n');
+}

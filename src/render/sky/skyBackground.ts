@@ -1,0 +1,58 @@
+import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, type Camera, type CubeTexture } from 'three';
+import vertexShader from '../../../shaders/skyBackground.vert?raw';
+import fragmentShader from '../../../shaders/skyBackground.frag?raw';
+import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
+
+/** What scenes call the sky mesh, so a test can take it out (to see what is behind the sea). */
+export const SKY_BACKGROUND_NAME = 'oceano-sky';
+
+/**
+ * Where the sky falls in the draw order: after the grid bands of the sea (OceanChunks, at
+ * NEAR_SEA_RENDER_ORDER), before everything else. It is drawn at the far plane with the depth
+ * test on, so the pixels those bands already cover are rejected before its shader runs, where
+ * drawn first it was shaded under the whole sea. Everything that may lie at the far plane
+ * itself (the far rings and the skirt, out to 10⁸ m, whose depth rounds to 1, the cleared
+ * value) is still drawn after it, as before.
+ */
+export const SKY_RENDER_ORDER = -1;
+
+/**
+ * The sky drawn behind the scene: one screen-covering triangle that looks the
+ * sky cube up along each pixel's exact view ray (shaders/skyBackground.*). It replaces
+ * `scene.background`, whose unit box degenerates for a camera looking level along a 45°
+ * diagonal (see the vertex shader).
+ */
+export class SkyBackground {
+  readonly mesh: Mesh<BufferGeometry, ShaderMaterial>;
+  private readonly clipToWorld = new Matrix4();
+
+  constructor(sky: CubeTexture) {
+    const geometry = new BufferGeometry();
+    // One triangle over the whole of clip space [-1, 1]².
+    geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
+    const material = new ShaderMaterial({
+      vertexShader,
+      fragmentShader,
+      uniforms: { ...createSkyCubeUniforms(sky), uClipToWorldDirection: { value: this.clipToWorld } },
+      depthWrite: false,
+    });
+    this.mesh = new Mesh(geometry, material);
+    this.mesh.name = SKY_BACKGROUND_NAME;
+    this.mesh.frustumCulled = false;
+    this.mesh.renderOrder = SKY_RENDER_ORDER;
+    // The camera of the render in progress (the view's own, a compare strip's, a composer pass's).
+    this.mesh.onBeforeRender = (_renderer, _scene, camera: Camera) => {
+      // Directions only: the camera's rotation without its position, after the inverse projection.
+      this.clipToWorld.extractRotation(camera.matrixWorld).multiply(camera.projectionMatrixInverse);
+    };
+  }
+
+  setSky(sky: CubeTexture): void {
+    setSkyCube(this.mesh.material.uniforms as SkyCubeUniforms, sky);
+  }
+
+  dispose(): void {
+    this.mesh.geometry.dispose();
+    this.mesh.material.dispose();
+  }
+}

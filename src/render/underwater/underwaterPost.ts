@@ -1,0 +1,378 @@
+import {
+  ClampToEdgeWrapping,
+  DepthTexture,
+  HalfFloatType,
+  LinearFilter,
+  Matrix4,
+  RedFormat,
+  RepeatWrapping,
+  ShaderMaterial,
+  Vector2,
+  Vector3,
+  UnsignedByteType,
+  WebGLRenderTarget,
+  type IUniform,
+  type PerspectiveCamera,
+  type Scene,
+  type WebGLRenderer,
+} from 'three';
+import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
+import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
+import { FullScreenQuad, Pass } from 'three/addons/postprocessing/Pass.js';
+import fullscreenVertex from '../../../shaders/fullscreen.vert?raw';
+import underwaterFragment from '../../../shaders/underwater.frag?raw';
+import blurFragment from '../../../shaders/gaussianBlur.frag?raw';
+import shaftLightFragment from '../../../shaders/shaftLight.frag?raw';
+import godRaysFragment from '../../../shaders/godRays.frag?raw';
+import compositeFragment from '../../../shaders/underwaterComposite.frag?raw';
+import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel, onePassBlurOffset } from './gaussianKernel';
+import { planShaftLightTile, type ShaftLightTile } from './shaftLightTile';
+import { registerShaderChunks } from '../shaders/shaderChunks';
+import { encodeSceneForPost, SCENE_ENCODE_DEFINE } from './sceneEncoding';
+import { setMaterialDefine } from '../shaders/materialDefines';
+import type { WaveBinding } from '../waves/waveBinding';
+import type { WaterVolumeUniforms } from './waterVolumeUniforms';
+
+import type { PassTiming } from '../diagnostics/passTiming';
+export type { PassTiming };
+
+/**
+ * The shaft-light texture: repeating for one period of the lens, clamped for a window. One
+ * 8-bit channel: the light is in [0, 1], and the god rays sum 20 filtered reads of it per
+ * pixel, which SwiftShader filters far faster from R8 than from RGBA16F (underwater frame
+ * 656 -> 550 ms, lower in all 8 interleaved blocks; the dive view moved by at most 1 level).
+ */
+function shaftLightTarget(tile: ShaftLightTile): WebGLRenderTarget {
+  const wrap = tile.kind === 'tile' ? RepeatWrapping : ClampToEdgeWrapping;
+  return new WebGLRenderTarget(tile.size, tile.size, {
+    format: RedFormat,
+    type: UnsignedByteType,
+    minFilter: LinearFilter,
+    magFilter: LinearFilter,
+    wrapS: wrap,
+    wrapT: wrap,
+    depthBuffer: false,
+  });
+}
+
+/** Half of a drawing-buffer size, rounded up so the half-resolution image covers every pixel. */
+const half = (pixels: number) => Math.max(1, Math.ceil(pixels / 2));
+
+/**
+ * The god rays' target: RGBA8 in the scene target's encoding (src/render/underwater/sceneEncoding.ts),
+ * linearly filtered for the water pass's upsample.
+ */
+function godRaysTarget(): WebGLRenderTarget {
+  return new WebGLRenderTarget(1, 1, { type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+}
+
+/**
+ * A full-screen draw of one material into a target chosen when the frame runs: its own
+ * (then it leaves the composer's buffers alone, needsSwap false) or the composer's
+ * write buffer, or the canvas when it is the last pass.
+ */
+class QuadPass extends Pass {
+  private readonly quad: FullScreenQuad;
+
+  constructor(
+    readonly material: ShaderMaterial,
+    private readonly prepare: (readBuffer: WebGLRenderTarget) => WebGLRenderTarget | 'composer',
+  ) {
+    super();
+    this.quad = new FullScreenQuad(material);
+  }
+
+  get uniforms(): Record<string, IUniform> {
+    return this.material.uniforms;
+  }
+
+  render(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget): void {
+    const target = this.prepare(readBuffer);
+    this.needsSwap = target === 'composer';
+    renderer.setRenderTarget(target !== 'composer' ? target : this.renderToScreen ? null : writeBuffer);
+    this.quad.render(renderer);
+  }
+
+  dispose(): void {
+    this.material.dispose();
+    this.quad.dispose();
+  }
+}
+
+function blurMaterial(name: string, step: Vector2, encodeOutput = false): ShaderMaterial {
+  return new ShaderMaterial({
+    name,
+    defines: encodeOutput ? { ENCODE_OUTPUT: '' } : {},
+    vertexShader: fullscreenVertex,
+    fragmentShader: blurFragment,
+    uniforms: {
+      tDiffuse: { value: null },
+      uStep: { value: step },
+      uOffsets: { value: Array.from(new Float32Array(BLUR_MAX_TAPS)) },
+      uWeights: { value: Array.from(new Float32Array(BLUR_MAX_TAPS)) },
+      uTaps: { value: 1 },
+    },
+  });
+}
+
+/**
+ * What the camera sees from under the water, as EffectComposer passes: the scene; the
+ * shaft-light tile the god rays read; the water volume (fog, absorption, god rays, and
+ * the per-pixel waterline mask); and with the blur on, a separable Gaussian blur
+ * (horizontal, then vertical) and a composite that puts the sharp air side back and
+ * tone-maps. The water pass and the blur run at half resolution when the blur is on: the
+ * blur softens that detail anyway, and they were three quarters of the frame's cost at
+ * full resolution (issue 14). With the blur off, the water pass runs at full resolution
+ * and tone-maps onto the canvas itself. Only used while some of the view is under the water; above
+ * it, the view renders directly.
+ */
+export class UnderwaterPost {
+  private readonly composer: EffectComposer;
+  private readonly scenePass: RenderPass;
+  private readonly shaftPass: QuadPass;
+  private readonly raysPass: QuadPass;
+  private readonly volumePass: QuadPass;
+  private readonly blurH: QuadPass;
+  private readonly blurV: QuadPass;
+  private readonly compositePass: QuadPass;
+  private readonly named: [string, Pass][];
+  /** The baked shaft light; remade when the tile's kind or size changes (a switch of wave model). */
+  private shaftTarget: WebGLRenderTarget;
+  private shaftTile: ShaftLightTile = { kind: 'tile', origin: [0, 0], extent: 1, size: 1 };
+  /** Debug: bake a window even for a model whose lens repeats (tests compare the two). */
+  forceShaftLightWindow = false;
+  /** Half-resolution premultiplied water: water → A, blurH → B, blurV → blurred (one pass: A → blurred). */
+  private readonly halfA: WebGLRenderTarget;
+  private readonly halfB: WebGLRenderTarget;
+  /**
+   * The blur's result, which the composite upsamples: RGBA8 holding the water colour as the
+   * canvas will (sRGB), premultiplied (shaders/gaussianBlur.frag, ENCODE_OUTPUT). The two passes before
+   * it keep half floats: three roundings to 8 bits grained the smooth water (neighbouring pixels
+   * one level apart in 45 % of the deep view instead of 25 %); one, as here, does not.
+   */
+  private readonly blurred: WebGLRenderTarget;
+  /** The god rays, at half the water pass's resolution (a quarter of the canvas's with the blur on). */
+  private readonly rays = godRaysTarget();
+  private blurOn = false;
+  /** The one-pass blur's tap offset in texels (src/render/underwater/gaussianKernel.ts), or null: two passes. */
+  private onePassOffset: number | null = null;
+
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    private readonly scene: Scene,
+    private readonly camera: PerspectiveCamera,
+    private readonly waves: WaveBinding,
+    shared: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
+  ) {
+    registerShaderChunks();
+    const size = renderer.getDrawingBufferSize(new Vector2());
+    // The scene in RGBA8 as square roots (src/render/underwater/sceneEncoding.ts): SwiftShader wrote the
+    // half-float target this was at about a quarter of the underwater frame's cost.
+    const target = new WebGLRenderTarget(size.x, size.y, { type: UnsignedByteType, depthTexture: new DepthTexture(size.x, size.y) });
+    const halfOptions = { type: HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false };
+    this.halfA = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
+    this.halfB = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
+    this.blurred = new WebGLRenderTarget(half(size.x), half(size.y), { ...halfOptions, type: UnsignedByteType });
+    this.shaftTarget = shaftLightTarget(this.shaftTile);
+    this.composer = new EffectComposer(renderer, target);
+    this.scenePass = new RenderPass(scene, camera);
+
+    // Where the bake lies, the same objects in the bake and the water pass.
+    const tile: Record<string, IUniform> = { uShaftOrigin: { value: new Vector2() }, uShaftExtent: { value: 1 } };
+    this.shaftPass = new QuadPass(
+      waves.attach(new ShaderMaterial({ name: 'UnderwaterShaftLight', vertexShader: fullscreenVertex, fragmentShader: shaftLightFragment, uniforms: { ...tile } })),
+      () => this.shaftTarget,
+    );
+    // The view's uniforms, the same objects in the water pass and the composite.
+    const view: Record<string, IUniform> = {
+      tDepth: { value: null },
+      uProjectionInverse: { value: new Matrix4() },
+      uCameraWorld: { value: new Matrix4() },
+      uEye: { value: new Vector3() },
+      uNear: { value: 0.1 },
+      uFar: { value: 1000 },
+    };
+    // The god rays' march, at half the water pass's resolution: the shafts are soft there, and
+    // marching at the water pass's own was about 40 of the underwater frame's 190 ms (SwiftShader).
+    this.raysPass = new QuadPass(
+      new ShaderMaterial({
+        name: 'UnderwaterGodRays',
+        defines: { [SCENE_ENCODE_DEFINE]: '' },
+        vertexShader: fullscreenVertex,
+        fragmentShader: godRaysFragment,
+        uniforms: { ...shared, ...view, ...tile, tShaftLight: { value: this.shaftTarget.texture }, uGodRays: { value: 0 } },
+      }),
+      (readBuffer) => {
+        view.tDepth.value = readBuffer.depthTexture;
+        return this.rays;
+      },
+    );
+    this.volumePass = new QuadPass(
+      waves.attach(new ShaderMaterial({
+        name: 'UnderwaterVolume',
+        vertexShader: fullscreenVertex,
+        fragmentShader: underwaterFragment,
+        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tGodRays: { value: this.rays.texture }, uWriteMask: { value: false } },
+      })),
+      (readBuffer) => {
+        this.volumePass.uniforms.tDiffuse.value = readBuffer.texture;
+        view.tDepth.value = readBuffer.depthTexture;
+        return this.blurOn ? this.halfA : 'composer';
+      },
+    );
+    const stepH = new Vector2();
+    const stepV = new Vector2();
+    this.blurH = new QuadPass(blurMaterial('BlurHorizontal', stepH), () => {
+      this.blurH.uniforms.tDiffuse.value = this.halfA.texture;
+      return this.halfB;
+    });
+    this.blurV = new QuadPass(blurMaterial('BlurVertical', stepV, true), () => {
+      this.blurV.uniforms.tDiffuse.value = (this.blurH.enabled ? this.halfB : this.halfA).texture;
+      return this.blurred;
+    });
+    this.compositePass = new QuadPass(
+      waves.attach(new ShaderMaterial({
+        name: 'UnderwaterComposite',
+        vertexShader: fullscreenVertex,
+        fragmentShader: compositeFragment,
+        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.blurred.texture } },
+      })),
+      (readBuffer) => {
+        this.compositePass.uniforms.tDiffuse.value = readBuffer.texture;
+        view.tDepth.value = readBuffer.depthTexture;
+        return 'composer';
+      },
+    );
+    this.named = [
+      ['scene', this.scenePass],
+      ['shafts', this.shaftPass],
+      ['rays', this.raysPass],
+      ['water', this.volumePass],
+      ['blurH', this.blurH],
+      ['blurV', this.blurV],
+      ['composite', this.compositePass],
+    ];
+    for (const [, pass] of this.named) this.composer.addPass(pass);
+    this.setBlur(0);
+  }
+
+  setSize(width: number, height: number, pixelRatio: number): void {
+    this.composer.setPixelRatio(pixelRatio);
+    this.composer.setSize(width, height);
+    this.fitTargets();
+  }
+
+  /**
+   * What follows the drawing buffer's size and the blur: the half-resolution targets, the blur
+   * passes' texel steps (one texel across, then down; or the one-pass blur's diagonal tap), and
+   * the god rays' target at half the water pass's size (half the canvas's with the blur on).
+   */
+  private fitTargets(): void {
+    const size = this.renderer.getDrawingBufferSize(new Vector2());
+    const width = half(size.x);
+    const height = half(size.y);
+    for (const target of [this.halfA, this.halfB, this.blurred]) target.setSize(width, height);
+    const o = this.onePassOffset;
+    (this.blurH.uniforms.uStep.value as Vector2).set(1 / width, 0);
+    (this.blurV.uniforms.uStep.value as Vector2).set(o === null ? 0 : o / width, o === null ? 1 / height : o / height);
+    this.rays.setSize(half(this.blurOn ? width : size.x), half(this.blurOn ? height : size.y));
+  }
+
+  /** Blur σ in screen pixels; 0 switches the blur, and the half-resolution water, off. */
+  setBlur(sigma: number): void {
+    this.blurOn = sigma > 0;
+    const kernel = linearSampledKernel(halfResolutionSigma(sigma), BLUR_MAX_RADIUS, BLUR_MAX_TAPS);
+    // The default σ's kernel lies within 1 texel: one pass of four taps instead of two passes
+    // (the frame about 17 ms cheaper under SwiftShader, README Performance, tenth stop).
+    this.onePassOffset = this.blurOn ? onePassBlurOffset(halfResolutionSigma(sigma)) : null;
+    this.volumePass.uniforms.uWriteMask.value = this.blurOn;
+    for (const pass of [this.blurV, this.compositePass]) pass.enabled = this.blurOn;
+    this.blurH.enabled = this.blurOn && this.onePassOffset === null;
+    setMaterialDefine(this.blurV.material, 'ONE_PASS', this.onePassOffset !== null);
+    this.fitTargets();
+    for (const pass of [this.blurH, this.blurV]) {
+      pass.uniforms.uOffsets.value = Array.from(kernel.offsets);
+      pass.uniforms.uWeights.value = Array.from(kernel.weights);
+      pass.uniforms.uTaps.value = kernel.taps;
+    }
+  }
+
+  setGodRays(intensity: number): void {
+    this.raysPass.uniforms.uGodRays.value = intensity;
+    setMaterialDefine(this.volumePass.material, 'GOD_RAYS', intensity > 0);
+    // No god rays, nothing reads the shaft light, and no march.
+    this.shaftPass.enabled = intensity > 0;
+    this.raysPass.enabled = intensity > 0;
+  }
+
+/** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
+  render(perPixelWaterline: boolean, afterEachPass?: (name: string) => void): number {
+    encodeSceneForPost(this.scene, true);
+    const u = this.volumePass.uniforms; // the view uniforms are shared with the god rays and the composite
+    this.camera.updateMatrixWorld();
+    (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);
+    (u.uCameraWorld.value as Matrix4).copy(this.camera.matrixWorld);
+    (u.uEye.value as Vector3).copy(this.camera.position);
+    u.uNear.value = this.camera.near;
+    u.uFar.value = this.camera.far;
+    if (this.shaftPass.enabled) this.placeShaftLight();
+    for (const pass of [this.volumePass, this.compositePass]) setMaterialDefine(pass.material, 'PER_PIXEL_WATERLINE', perPixelWaterline);
+    const restore: [Pass, Pass['render']][] = [];
+    if (afterEachPass) {
+      for (const [name, pass] of this.named) {
+        const original = pass.render;
+        restore.push([pass, original]);
+        pass.render = (...args: Parameters<Pass['render']>) => {
+          original.apply(pass, args);
+          afterEachPass(pass === this.blurV && this.onePassOffset !== null ? 'blur' : name);
+        };
+      }
+    }
+    try {
+      this.composer.render(0);
+    } finally {
+      for (const [pass, original] of restore) pass.render = original;
+    }
+    return this.named.filter(([, pass]) => pass.enabled).length;
+  }
+
+  /** Plans this frame's bake of the shaft light (src/render/underwater/shaftLightTile.ts) and points the passes at it. */
+  private placeShaftLight(): void {
+    const model = this.waves.model;
+    const eye = this.camera.position;
+    const sun = this.raysPass.uniforms.uRefractedSun.value as Vector3;
+    const period = this.forceShaftLightWindow ? null : model.lensPeriod;
+    const tile = planShaftLightTile(period, [eye.x, eye.y, eye.z], [sun.x, sun.y, sun.z]);
+    if (tile.kind !== this.shaftTile.kind || tile.size !== this.shaftTile.size) {
+      this.shaftTarget.dispose();
+      this.shaftTarget = shaftLightTarget(tile);
+      this.raysPass.uniforms.tShaftLight.value = this.shaftTarget.texture;
+    }
+    this.shaftTile = tile;
+    const u = this.raysPass.uniforms;
+    (u.uShaftOrigin.value as Vector2).fromArray(tile.origin);
+    u.uShaftExtent.value = tile.extent;
+    setMaterialDefine(this.raysPass.material, 'SHAFT_LIGHT_WINDOW', tile.kind === 'window');
+  }
+
+  /** Each enabled pass's cost in one frame, with the GPU waited for after each. */
+  profile(perPixelWaterline: boolean, sync: () => void): PassTiming[] {
+    const timings: PassTiming[] = [];
+    sync();
+    let start = performance.now();
+    this.render(perPixelWaterline, (name) => {
+      sync();
+      const now = performance.now();
+      timings.push({ name, ms: now - start });
+      start = now;
+    });
+    return timings;
+  }
+
+  dispose(): void {
+    for (const pass of [this.shaftPass, this.volumePass, this.compositePass]) this.waves.detach(pass.material);
+    for (const [, pass] of this.named) pass.dispose();
+    for (const target of [this.shaftTarget, this.halfA, this.halfB, this.blurred, this.rays]) target.dispose();
+    this.composer.dispose();
+  }
+}

@@ -1,0 +1,44 @@
+import type { OceanParams } from '../../../sim/params/params';
+import type { GerstnerLiveModel } from '../../../sim/waves/gerstner/gerstnerLiveModel';
+import { registerChunk, registerShaderChunks } from '../../shaders/shaderChunks';
+import { GerstnerWaveUniforms } from './gerstnerWaveUniforms';
+import type { WaveModelView } from '../waveModelView';
+
+/**
+ * Gerstner's trochoids on the GPU: a table of at most 64 waves uploaded once per sea and 64
+ * reduced time phases per frame (GerstnerWaveUniforms). No textures, no passes. Its chunk
+ * defines WAVE_PIXEL_NORMALS, so ocean.frag evaluates the closed-form normal per pixel.
+ */
+export class GerstnerWaveView implements WaveModelView {
+  readonly name = 'gerstner';
+  readonly chunkName = 'oceano_waves_gerstner';
+  /** The trochoids' wavelengths are drawn from a continuum: the lens height never repeats. */
+  readonly lensPeriod = null;
+  private readonly table: GerstnerWaveUniforms;
+
+  constructor(readonly model: GerstnerLiveModel) {
+    registerChunk(this.chunkName, GerstnerWaveUniforms.chunk);
+    registerShaderChunks();
+    this.table = new GerstnerWaveUniforms(model.waves);
+  }
+
+  get uniforms(): GerstnerWaveUniforms['uniforms'] {
+    return this.table.uniforms;
+  }
+
+  setParams(params: OceanParams): void {
+    if (this.model.setParams(params)) this.table.setWaves(this.model.waves);
+  }
+
+  update(time: number): void {
+    this.table.update(time);
+  }
+
+  setRenderOrigin(x: number, z: number): void {
+    this.table.setRenderOrigin(x, z);
+  }
+
+  dispose(): void {
+    this.table.dispose();
+  }
+}

@@ -1,0 +1,227 @@
+import { timeInPeriod } from '../dispersion';
+import { cascadeLayout, type Cascade } from './cascades';
+import { InverseFft2d } from './fft2d';
+import { initialSpectrum, REPEAT_PERIOD, type SpectralTile } from '../spectra/initialSpectrum';
+import type { SeaState } from '../spectra/seaState';
+import { spectralBounds } from '../spectra/spectralBounds';
+import { evolveSpectra } from './spectralFields';
+import { directionalSpectrum, frequencySpectrum, peakWavelength } from '../spectra/waveSpectrum';
+import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample, type WaveModel } from '../waveModel';
+
+/** Revisions of every FftOcean's fields, from one counter, so no two oceans' fields share one. */
+let fieldRevisions = 0;
+
+/**
+ * The spatial fields of one cascade at one time, laid out as the GPU's two RGBA textures:
+ * n × n texels, texel (p, q) at index 4(q·n + p), p along x, q along z.
+ *   displacement: (dx, dy, dz, ∂Dx/∂x)
+ *   derivatives:  (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)      (D already times λ)
+ */
+export interface CascadeFields {
+  displacement: Float64Array;
+  derivatives: Float64Array;
+}
+
+/** Everything the GPU needs to draw the same sea: per cascade its tile and h₀ (the CPU draws h₀ once, the GPU evolves it). */
+export interface FftOceanSetup {
+  sea: SeaState;
+  cascades: Cascade[];
+  tiles: SpectralTile[];
+}
+
+export function fftOceanSetup(sea: SeaState): FftOceanSetup {
+  const spectrum = frequencySpectrum(sea);
+  const cascades = cascadeLayout(peakWavelength(sea), sea.fftSize);
+  const density = directionalSpectrum(sea, spectrum);
+  const tiles = cascades.map((c, i) => initialSpectrum(c, sea.fftSize, density, sea.depth, sea.seed, i));
+  return { sea, cascades, tiles };
+}
+
+/**
+ * CPU twin of the spectral sea, float64 (the seed report's "CPU Shader" idea for an FFT sea).
+ * setTime(t) runs the time evolution and 4 inverse FFTs per cascade (the costly part, once per
+ * time step; a Worker may own it and post `fields` back). displacement/sample then only read the
+ * fields, bilinearly, exactly as the GPU reads its textures (texel (p, q) of a tile of side L
+ * sits at x = p L/n, z = q L/n, tiles repeat), so the two agree to float32 rounding.
+ * Synchronous: displacement(x, z, t) and sample(x, z, t) call setTime(t) themselves when t changes.
+ */
+export class FftOcean implements WaveModel {
+  readonly name = 'fft' as const;
+  readonly setup: FftOceanSetup;
+  readonly fields: CascadeFields[];
+  private time = Number.NaN;
+  /** Changes whenever the fields change (computed or adopted): FftWaveModel.surfaceRevision. */
+  fieldsRevision = ++fieldRevisions;
+  private readonly fft: InverseFft2d;
+  private readonly spectra: Float64Array[][];
+  private readonly bound: DisplacementBounds;
+  /** Texels per metre of each cascade. */
+  private readonly scale: number[];
+  private readonly acc = new Float64Array(4);
+
+  constructor(sea: SeaState) {
+    this.setup = fftOceanSetup(sea);
+    const n = sea.fftSize;
+    this.fft = new InverseFft2d(n);
+    this.spectra = this.setup.tiles.map(() => [0, 1, 2, 3].map(() => new Float64Array(2 * n * n)));
+    this.fields = this.setup.tiles.map(() => ({ displacement: new Float64Array(4 * n * n), derivatives: new Float64Array(4 * n * n) }));
+    this.scale = this.setup.cascades.map((c) => n / c.size);
+    // From the spectrum's spread and the Gaussian's extremes over a tile and a repeat period
+    // (src/sim/waves/spectra/spectralBounds.ts), not the strict 2 Σ|h₀| (all modes in phase: 97 m in a gale).
+    this.bound = spectralBounds(this.setup.tiles, sea.depth, sea.choppiness);
+  }
+
+  /** The time the fields hold (NaN before the first setTime). */
+  get fieldsTime(): number {
+    return this.time;
+  }
+
+  /**
+   * Takes fields computed elsewhere for time t: a Worker running setTime(t) on an FftOcean of
+   * the same SeaState (same seed, hence the same h₀) gives bit-identical arrays. Returns the
+   * arrays it held before, which this ocean no longer reads (a Worker may fill them again).
+   */
+  adoptFields(time: number, fields: readonly CascadeFields[]): CascadeFields[] {
+    if (fields.length !== this.fields.length) throw new RangeError(`Expected ${this.fields.length} cascades of fields, got ${fields.length}.`);
+    const replaced = this.fields.slice();
+    fields.forEach((f, c) => (this.fields[c] = f));
+    this.time = time;
+    this.fieldsRevision = ++fieldRevisions;
+    return replaced;
+  }
+
+  /** Evolves to time t (s). Only t mod T matters (quantised dispersion), reduced here in float64. */
+  setTime(time: number): void {
+    if (time === this.time) return;
+    this.time = time;
+    this.fieldsRevision = ++fieldRevisions;
+    const tau = timeInPeriod(time, REPEAT_PERIOD);
+    const n = this.setup.sea.fftSize;
+    this.setup.tiles.forEach((tile, c) => {
+      const spectra = evolveSpectra(tile, tau, this.setup.sea.choppiness, this.spectra[c]);
+      for (const s of spectra) this.fft.transform(s);
+      const { displacement, derivatives } = this.fields[c];
+      const [a, b, d, e] = spectra;
+      for (let i = 0; i < n * n; i++) {
+        displacement[4 * i] = a[2 * i];
+        displacement[4 * i + 1] = a[2 * i + 1];
+        displacement[4 * i + 2] = b[2 * i];
+        displacement[4 * i + 3] = b[2 * i + 1];
+        derivatives[4 * i] = d[2 * i];
+        derivatives[4 * i + 1] = d[2 * i + 1];
+        derivatives[4 * i + 2] = e[2 * i];
+        derivatives[4 * i + 3] = e[2 * i + 1];
+      }
+    });
+  }
+
+  displacement(x: number, z: number, time: number): [number, number, number] {
+    this.setTime(time);
+    const r = this.accumulate(x, z, 'displacement');
+    return [r[0], r[1], r[2]];
+  }
+
+  /** Sum over cascades of the derivative fields at the undisplaced grid point (x, z). */
+  derivatives(x: number, z: number, time: number): { sx: number; sz: number; jxx: number; jzz: number; jxz: number } {
+    this.setTime(time);
+    const jxx = this.accumulate(x, z, 'displacement')[3];
+    const r = this.accumulate(x, z, 'derivatives');
+    return { sx: r[0], sz: r[1], jxx, jzz: r[2], jxz: r[3] };
+  }
+
+  /**
+   * The height of the surface above the world point (x, z) at `time`: the same fixed-point
+   * inversion as undoHorizontalDisplacement over displacement() with `steps` steps, then the
+   * height there, bit for bit (each channel's sum is the same arithmetic in the same order).
+   * But it reads only the channels each step uses (x and z while inverting, the height at the
+   * end), allocates nothing, and skips the residual: the frame loop asks this about ten
+   * times a frame (the boat, the underwater switch), and the full reads were half its cost.
+   */
+  heightAt(x: number, z: number, time: number, steps: number): number {
+    this.setTime(time);
+    const acc = this.acc;
+    let px = x;
+    let pz = z;
+    for (let i = 0; i < steps; i++) {
+      this.accumulate(px, pz, 'displacement', 0, 2);
+      px = x - acc[0];
+      pz = z - acc[2];
+    }
+    return this.accumulate(px, pz, 'displacement', 1, 4)[1];
+  }
+
+  /**
+   * Bilinear read of one RGBA field of every cascade, summed, into this.acc (reused: no
+   * allocation per call). Only channels first, first + stride, … below 4 are read; the others are 0.
+   */
+  private accumulate(x: number, z: number, which: keyof CascadeFields, first = 0, stride = 1): Float64Array {
+    const acc = this.acc;
+    acc[0] = acc[1] = acc[2] = acc[3] = 0;
+    const n = this.setup.sea.fftSize;
+    for (let c = 0; c < this.fields.length; c++) {
+      const f = this.fields[c][which];
+      const u = x * this.scale[c];
+      const v = z * this.scale[c];
+      const fu = Math.floor(u);
+      const fv = Math.floor(v);
+      const wx = u - fu;
+      const wz = v - fv;
+      const p0 = wrapTexel(fu, n);
+      const q0 = wrapTexel(fv, n);
+      const p1 = p0 + 1 === n ? 0 : p0 + 1;
+      const q1 = q0 + 1 === n ? 0 : q0 + 1;
+      const i00 = 4 * (q0 * n + p0);
+      const i10 = 4 * (q0 * n + p1);
+      const i01 = 4 * (q1 * n + p0);
+      const i11 = 4 * (q1 * n + p1);
+      for (let ch = first; ch < 4; ch += stride) {
+        const top = f[i00 + ch] + (f[i10 + ch] - f[i00 + ch]) * wx;
+        const bottom = f[i01 + ch] + (f[i11 + ch] - f[i01 + ch]) * wx;
+        acc[ch] += top + (bottom - top) * wz;
+      }
+    }
+    return acc;
+  }
+
+  /**
+   * Normal of the displaced surface P(x, z) = (x + Dx, h, z + Dz) at the grid point (x, z):
+   * the cross product of its tangents ∂P/∂z × ∂P/∂x, exact from the spectral derivatives.
+   */
+  normalAt(x: number, z: number, time: number): [number, number, number] {
+    const d = this.derivatives(x, z, time);
+    const tx = [1 + d.jxx, d.sx, d.jxz];
+    const tz = [d.jxz, d.sz, 1 + d.jzz];
+    const nx = tz[1] * tx[2] - tz[2] * tx[1];
+    const ny = tz[2] * tx[0] - tz[0] * tx[2];
+    const nz = tz[0] * tx[1] - tz[1] * tx[0];
+    const len = Math.hypot(nx, ny, nz);
+    return [nx / len, ny / len, nz / len];
+  }
+
+  /** Jacobian of the horizontal map at grid point (x, z): below 1 compresses, below 0 folds (foam). */
+  jacobian(x: number, z: number, time: number): number {
+    const d = this.derivatives(x, z, time);
+    return (1 + d.jxx) * (1 + d.jzz) - d.jxz * d.jxz;
+  }
+
+  sample(x: number, z: number, time: number): SurfaceSample {
+    this.setTime(time);
+    const p = undoHorizontalDisplacement((px, pz) => this.displacement(px, pz, time), x, z);
+    return { height: this.displacement(p.x, p.z, time)[1], normal: this.normalAt(p.x, p.z, time) };
+  }
+
+  bounds(): DisplacementBounds {
+    return this.bound;
+  }
+}
+
+/**
+ * A texel index i mod n in [0, n) for an integer-valued i. The fields' sizes are powers of two
+ * (fft.js takes nothing else) and ToInt32 (i | 0) is i mod 2³², a multiple of n, so the mask is
+ * i mod n for every finite integer, past int32 too. The float remainder ((i % n) + n) % n it
+ * replaces was more than half of a height's cost in node: 5.1 -> 2.0 µs per heightAt (n = 128,
+ * 12 steps, 10⁴ calls; the same indices, so the same floats, bit for bit).
+ */
+export function wrapTexel(i: number, n: number): number {
+  return (i | 0) & (n - 1);
+}
