@@ -9,7 +9,7 @@ import { ChunkSelector, OCEAN_EXTENT, type SelectionInput } from '../../sim/lod/
 import { BASE_STEP, CHUNK_SIZE, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
 import { chunkGrid } from '../../sim/lod/chunkGrid';
 import { morphZones } from '../../sim/lod/lodMorph';
-import type { OceanMaterial } from './oceanMaterial';
+import type { OceanMaterial } from '../ocean/oceanMaterial';
 
 export interface LodSettings {
   lodDistance: number;

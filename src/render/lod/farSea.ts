@@ -6,7 +6,7 @@ import { squareGrid } from '../../sim/lod/chunkGrid';
 import { FarRingSelector, RING_CELL_QUADS, RING_OWN_STEP, ringEdgeSteps, SKIRT_RADIUS, skirtMesh } from '../../sim/lod/farRings';
 import { classifyBox, OUTSIDE, type Plane } from '../../sim/lod/frustumMath';
 import { MAX_LOD_BANDS } from '../../sim/lod/lodBands';
-import type { OceanMaterial } from './oceanMaterial';
+import type { OceanMaterial } from '../ocean/oceanMaterial';
 
 /**
  * The sea beyond the chunk grid, out to the horizon (src/sim/lod/farRings.ts): the far rings'

@@ -1,6 +1,6 @@
 import { ChunkBatch, type ChunkGridData } from './chunkBatch';
 import { bandHasDetailNormals } from '../../sim/lod/lodBands';
-import type { OceanMaterial } from './oceanMaterial';
+import type { OceanMaterial } from '../ocean/oceanMaterial';
 import { SKY_RENDER_ORDER } from '../sky/skyBackground';
 
 /**

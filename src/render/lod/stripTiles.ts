@@ -5,7 +5,7 @@ import type { DisplacementBounds } from '../../sim/waves/waveModel';
 import { squareGrid } from '../../sim/lod/chunkGrid';
 import { classifyBox, INSIDE, OUTSIDE, type Plane } from '../../sim/lod/frustumMath';
 import { BAND_STEPS, BASE_STEP, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS, bandQuads } from '../../sim/lod/lodBands';
-import type { OceanMaterial } from './oceanMaterial';
+import type { OceanMaterial } from '../ocean/oceanMaterial';
 
 /**
  * compare=: a chunk that straddles its strip's frustum is drawn as TILES × TILES tiles, only
