@@ -2,12 +2,12 @@
 // edited in the page (text replacements, recompiled), one variant at a time, and the frame
 // timed; rounds go round the variants so a drifting load moves them alike. Medians of 7
 // frames per round, then the median over rounds. Prints figures, asserts nothing.
-// Usage: npx vite build && npx tsx scripts/shaderVariantProbe.ts VARIANTS.json ["query"] [rounds]
+// Usage: npx vite build && npx tsx scripts/probes/shaderVariants.ts VARIANTS.json ["query"] [rounds]
 // PROBE_STAGE=vertex edits the vertex shader instead; PROBE_ONE_PIXEL=1 times every frame with
 // a 1×1 scissor, so what is left is the vertices' and the draws' work.
 // VARIANTS.json: { "name": [["text to find", "replacement"], ...], ... } (a missing text is an error).
 import { readFileSync } from 'node:fs';
-import { openOcean, startHarness } from './browserHarness';
+import { openOcean, startHarness } from '../../tests/browser/harness';
 
 const variants = JSON.parse(readFileSync(process.argv[2], 'utf8')) as Record<string, [string, string][]>;
 const query = process.argv[3] ?? 't=10';

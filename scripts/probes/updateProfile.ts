@@ -4,11 +4,11 @@
  * subtree of the given entry functions, with self and total time per function in it, per
  * frame. Needs an unminified build for readable names:
  *   npx vite build --minify false --outDir dist/prof
- *   npx tsx scripts/updateProfile.ts prof [frames] [query] [entry,entry]
+ *   npx tsx scripts/probes/updateProfile.ts prof [frames] [query] [entry,entry]
  * A profiler's figures are estimates (sampling, and the profiler's own overhead): use it to
- * find the parts, and loopCostProbe.ts to measure the whole.
+ * find the parts, and the bench's cpuMs (oceano.stats().cpuMs) to measure the whole.
  */
-import { openOcean, startHarness } from './browserHarness';
+import { openOcean, startHarness } from '../../tests/browser/harness';
 
 const build = process.argv[2] ?? 'prof';
 const frames = Number(process.argv[3] ?? 300);

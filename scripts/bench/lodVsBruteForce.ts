@@ -3,10 +3,10 @@
  * the same view drawn as a brute-force full-resolution grid of the same extent
  * (lodBruteForce=1): triangles, draw calls, median frame time, and the CPU time of one
  * LOD update. Prints figures; asserts nothing. Other processes share the CPU: repeat runs.
- * Usage: npx vite build && npx tsx scripts/lod-compare.ts [query] [frames] [bruteFrames]
+ * Usage: npx vite build && npx tsx scripts/bench/lodVsBruteForce.ts [query] [frames] [bruteFrames]
  */
-import { median } from '../src/sim/physics/sampleStatistics';
-import { openOcean, startHarness } from './browserHarness';
+import { median } from '../../src/sim/physics/sampleStatistics';
+import { openOcean, startHarness } from '../../tests/browser/harness';
 
 const query = process.argv[2] ?? 'seed=1&t=10';
 const frames = Number(process.argv[3] ?? 15);

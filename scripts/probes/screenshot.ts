@@ -1,6 +1,6 @@
-// Takes a screenshot of the built app: `tsx scripts/screenshot.ts OUT.png "seed=1&t=10" [width] [height]`.
+// Takes a screenshot of the built app: `tsx scripts/probes/screenshot.ts OUT.png "seed=1&t=10" [width] [height]`.
 import { writeFileSync } from 'node:fs';
-import { canvasPng, openOcean, startHarness } from './browserHarness';
+import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
 
 const [out = 'shot.png', query = 't=10', width = '1280', height = '720'] = process.argv.slice(2);
 const harness = await startHarness();

@@ -1,14 +1,14 @@
 // The main thread's per-frame cost of the FFT sea's CPU twin while the clock plays:
-// `npx tsx scripts/bench-fftTwin.ts`. The FFTs run in the Worker (here: fields computed
+// `npx tsx scripts/bench/fftTwinCost.ts`. The FFTs run in the Worker (here: fields computed
 // ahead, outside the timing, and handed over as the Worker's reply would be); what is timed
 // is what the main thread does each frame: receive the reply (structuredClone with the arrays
 // transferred, as postMessage does: an upper bound, it also serialises, which the Worker does),
 // adopt it, ask for the next time, and the ten surface heights a frame asks for (five under the
 // boat, the eye, four near-plane points). The app measures the same work live as
 // oceano.stats().twinMs (the bench's FFT row).
-import { FftOcean } from '../src/sim/waves/fft/fftOcean';
-import { FftWaveModel, type FieldSource } from '../src/sim/waves/fft/fftWaveModel';
-import { defaultParams } from '../src/sim/params/params';
+import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
+import { FftWaveModel, type FieldSource } from '../../src/sim/waves/fft/fftWaveModel';
+import { defaultParams } from '../../src/sim/params/params';
 
 const FRAMES = 240;
 for (const windSpeed of [10, 20]) {

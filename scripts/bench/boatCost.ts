@@ -1,9 +1,9 @@
 // CPU cost of the boat's per-frame update (five surface samples, three damped springs):
-// `npx tsx scripts/bench-boat.ts`. Prints figures; times nothing it asserts.
-import { defaultParams } from '../src/sim/params/params';
-import { SeedWaveModel } from '../src/sim/waves/seed/seedWaveModel';
-import { median } from '../src/sim/physics/sampleStatistics';
-import { BoatMotion } from '../src/sim/boat/boatMotion';
+// `npx tsx scripts/bench/boatCost.ts`. Prints figures; times nothing it asserts.
+import { defaultParams } from '../../src/sim/params/params';
+import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
+import { median } from '../../src/sim/physics/sampleStatistics';
+import { BoatMotion } from '../../src/sim/boat/boatMotion';
 
 const FRAMES = 20_000;
 const RUNS = 7;

@@ -1,7 +1,7 @@
 // Where the frame goes: times the view with each top-level scene object hidden in turn
 // and each child of a group (interleaved rounds, medians of 7 frames), so each object's cost reads as a difference in
-// one page. Usage: npx vite build && npx tsx scripts/sceneCostProbe.ts ["query"] [rounds] [WxH]
-import { openOcean, startHarness } from './browserHarness';
+// one page. Usage: npx vite build && npx tsx scripts/probes/sceneCost.ts ["query"] [rounds] [WxH]
+import { openOcean, startHarness } from '../../tests/browser/harness';
 
 const query = process.argv[2] ?? 't=10';
 const rounds = Number(process.argv[3] ?? 4);

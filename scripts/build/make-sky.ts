@@ -2,9 +2,9 @@
 // the default sunElevation/sunAzimuth parameters put the specular highlight.
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
-import { CUBE_FACES, SkyPainter } from '../src/sim/optics/skyPainter';
-import { sunDirection } from '../src/sim/optics/sun';
-import { paramDefs } from '../src/sim/params/params';
+import { CUBE_FACES, SkyPainter } from '../../src/sim/optics/skyPainter';
+import { sunDirection } from '../../src/sim/optics/sun';
+import { paramDefs } from '../../src/sim/params/params';
 
 const size = Number(process.argv[2] ?? 256);
 const painter = new SkyPainter(sunDirection(paramDefs.sunElevation.default, paramDefs.sunAzimuth.default));

@@ -1,6 +1,6 @@
 // Where the browser tests' Chrome comes from, in order: CHROME_PATH, puppeteer's own
 // downloaded Chrome (machines with internet), then a system Chromium or Chrome. Shared by
-// scripts/ensure-browser.mjs (which installs one when none is found) and the browser tests.
+// tests/browser/ensure-browser.mjs (which installs one when none is found) and the browser tests.
 import { existsSync } from 'node:fs';
 
 export const SYSTEM_BROWSERS = ['/usr/bin/chromium', '/usr/bin/chromium-browser', '/usr/bin/google-chrome', '/usr/bin/google-chrome-stable'];

@@ -12,17 +12,17 @@ import { dirname } from 'node:path';
 import { cpus, loadavg } from 'node:os';
 import puppeteer, { type Browser } from 'puppeteer';
 import { preview, type PreviewServer } from 'vite';
-import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
-import { openOcean, type Harness } from './browserHarness';
-import { CROSS_ORIGIN_ISOLATION } from '../vite.config';
-import { scriptSizes, type ScriptSizes } from './distScripts';
-import { median, percentile } from '../src/sim/physics/sampleStatistics';
-import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './bench/browserBackend';
-import { loopTwinMs, passTimeSamples, pageEnvironment, timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './bench/pageMeasures';
-import { COMPARISONS, SCENARIOS, type BenchScenario } from './bench/scenarios';
-import { openThreejsOceanExample, serveThreejsOceanExample } from './bench/threejsOceanServer';
-import { formatFigure, markdownTable } from './bench/resultsTable';
-import { sideBySideRatios, type SideBySideRatio } from './bench/sideBySide';
+import { locateBrowser, NO_BROWSER_MESSAGE } from '../../tests/browser/findBrowser.mjs';
+import { openOcean, type Harness } from '../../tests/browser/harness';
+import { CROSS_ORIGIN_ISOLATION } from '../../vite.config';
+import { scriptSizes, type ScriptSizes } from '../build/distScripts';
+import { median, percentile } from '../../src/sim/physics/sampleStatistics';
+import { backendArgs, isSoftwareRenderer, requestedBackend, type Backend } from './browserBackend';
+import { loopTwinMs, passTimeSamples, pageEnvironment, timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './pageMeasures';
+import { COMPARISONS, SCENARIOS, type BenchScenario } from './scenarios';
+import { openThreejsOceanExample, serveThreejsOceanExample } from './threejsOceanServer';
+import { formatFigure, markdownTable } from './resultsTable';
+import { sideBySideRatios, type SideBySideRatio } from './sideBySide';
 
 const WIDTH = 1280;
 const HEIGHT = 720;
@@ -30,7 +30,7 @@ const HEIGHT = 720;
 const FRAMES = Number(process.env.BENCH_FRAMES ?? 40);
 if (!Number.isInteger(FRAMES) || FRAMES < 5) throw new Error(`BENCH_FRAMES must be an integer ≥ 5, got "${process.env.BENCH_FRAMES}".`);
 const WARMUP = 5;
-// The side-by-side ratios (scripts/bench/sideBySide.ts): rounds, each a block of frames per row.
+// The side-by-side ratios (sideBySide.ts): rounds, each a block of frames per row.
 const SIDE_BY_SIDE = { rounds: Number(process.env.BENCH_ROUNDS ?? 8), framesPerBlock: 5 };
 const PASS_FRAMES = 5;
 // BENCH_ONLY=name,name runs only the scenarios whose names contain one of those words (e.g.

@@ -1,16 +1,16 @@
 /**
  * CPU cost of the chunk manager per frame, in node: quadtree culling plus band and edge
  * selection for the default view and for seeded random views. Prints figures; asserts nothing.
- * Usage: npx tsx scripts/lod-traversal-bench.ts
+ * Usage: npx tsx scripts/bench/lodTraversalCost.ts
  */
-import { median } from '../src/sim/physics/sampleStatistics';
+import { median } from '../../src/sim/physics/sampleStatistics';
 import { Matrix4, PerspectiveCamera } from 'three';
-import { ChunkSelector, oceanOrigin, type SelectionInput } from '../src/sim/lod/chunkSelection';
-import { planesFromMatrix } from '../src/sim/lod/frustumMath';
-import { seededRandom } from '../src/sim/noise/integerHash';
-import { bandTriangles, CHUNK_QUADS } from '../src/sim/lod/lodBands';
-import { defaultParams } from '../src/sim/params/params';
-import { maxDisplacement } from '../src/sim/waves/seed/seedSurface';
+import { ChunkSelector, oceanOrigin, type SelectionInput } from '../../src/sim/lod/chunkSelection';
+import { planesFromMatrix } from '../../src/sim/lod/frustumMath';
+import { seededRandom } from '../../src/sim/noise/integerHash';
+import { bandTriangles, CHUNK_QUADS } from '../../src/sim/lod/lodBands';
+import { defaultParams } from '../../src/sim/params/params';
+import { maxDisplacement } from '../../src/sim/waves/seed/seedSurface';
 
 const params = defaultParams();
 const selector = new ChunkSelector();

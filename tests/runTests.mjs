@@ -34,6 +34,6 @@ const first = await Promise.all([
   run('build (vite build)', npx, ['vite', 'build']),
 ]);
 if (first.includes(false)) process.exit(1);
-const browserFound = await run('browser check', process.execPath, ['scripts/ensure-browser.mjs'], true);
+const browserFound = await run('browser check', process.execPath, ['tests/browser/ensure-browser.mjs'], true);
 if (!browserFound) process.exit(1);
 process.exit((await run('browser tests', npx, ['vitest', 'run', '--project', 'browser'], true)) ? 0 : 1);

@@ -1,12 +1,12 @@
 // Writes public/models/boat.glb, the low-poly sailing boat that rides the waves:
-// `npx tsx scripts/make-boat.ts` (or `npm run boat`). Model frame: metres, bow towards −z,
+// `npx tsx scripts/build/make-boat.ts` (or `npm run boat`). Model frame: metres, bow towards −z,
 // starboard towards +x, the design waterline at y = 0 (the pose puts y = 0 on the surface).
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { FlatMeshBuilder, type Vec3 } from './glbWriter';
 
-const OUT = join(dirname(fileURLToPath(import.meta.url)), '..', 'public', 'models', 'boat.glb');
+const OUT = join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'public', 'models', 'boat.glb');
 
 /** Hull stations from bow to stern: half beam at the deck, deck height and keel depth, metres. */
 const STATIONS: { z: number; halfBeam: number; deck: number; keel: number }[] = [
