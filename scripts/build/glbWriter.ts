@@ -111,7 +111,7 @@ export class FlatMeshBuilder {
       primitives.push({ attributes: { POSITION: base, NORMAL: base + 1 }, indices: base + 2, material: primitive.material, mode: 4 });
     }
     const json = {
-      asset: { version: '2.0', generator: 'Oceano scripts/build/glbWriter.ts' },
+      asset: { version: '2.0', generator: 'Oceano scripts/glbWriter.ts' },
       scene: 0,
       scenes: [{ name, nodes: [0] }],
       nodes: [{ name, mesh: 0 }],
