@@ -1,7 +1,7 @@
 import type { Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { defineConfig } from 'vitest/config';
-import { minifyGlsl, SHADER_RAW_IMPORT } from './scripts/glslMinify';
+import { minifyGlsl, SHADER_RAW_IMPORT } from './scripts/build/glslMinify';
 
 /**
  * The page's Content-Security-Policy: scripts only from this origin (no inline script, no
@@ -59,7 +59,7 @@ function lilGuiFontFile(): Plugin {
   };
 }
 
-/** The build's shader text without comments (scripts/glslMinify.ts); dev and tests read the files as they are. */
+/** The build's shader text without comments (scripts/build/glslMinify.ts); dev and tests read the files as they are. */
 function shaderText(): Plugin {
   return {
     name: 'oceano-shader-text',
@@ -103,7 +103,7 @@ export default defineConfig({
     projects: [
       {
         // 60 s per test rather than vitest's 5: `npm test` runs the type check and the build
-        // beside the unit tests (scripts/runTests.mjs), and on a loaded 2-core machine a test
+        // beside the unit tests (tests/runTests.mjs), and on a loaded 2-core machine a test
         // measured at 0.5 s quiet took 6.1 s (fftSpectra's Hasselmann m₀, 11:20 UTC, load 8).
         // A timeout is no check of the results; the assertions are.
         test: { name: 'unit', include: ['tests/unit/**/*.test.ts'], environment: 'node', testTimeout: 60_000 },
