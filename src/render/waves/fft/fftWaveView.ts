@@ -105,8 +105,14 @@ export class FftWaveView implements WaveModelView {
     this.bindTextures();
     // Cross-origin isolated: fields over shared memory, no message per frame (issue 12's
     // twinMs); elsewhere the Worker's messages, as before (USE_SHARED_FIELDS).
+    // MEASUREMENT ONLY (scripts/twinTransportProbe.ts): the probe picks the transport per page.
+    const probe = (globalThis as { __twinTransport?: string }).__twinTransport;
+    if (probe === 'main-thread') {
+      model.attachSource(null);
+      return;
+    }
     model.attachSource(
-      USE_SHARED_FIELDS && sharedMemoryAvailable()
+      USE_SHARED_FIELDS && sharedMemoryAvailable() && probe !== 'messages'
         ? new SharedFieldSource((sea, time, fields) => model.receive(sea, time, fields))
         : new WorkerFieldSource(
             (reply) => model.receive(reply.sea, reply.time, reply.fields),
