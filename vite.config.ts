@@ -25,11 +25,10 @@ export const CONTENT_SECURITY_POLICY = [
 
 /**
  * Headers that make the page cross-origin isolated (COOP + COEP), sent by `npm start` and
- * `vite preview`: SharedArrayBuffer is then available, and the FFT twin's Worker hands its
- * fields over shared memory with no message per frame (src/render/waves/
- * sharedFieldSource.ts; issue 12's 0.1 ms budget). Everything the page loads is its own
- * origin's, so require-corp refuses nothing. A host that sends no such headers (a static copy
- * of dist/ on a course site) still runs the page: the twin then uses messages.
+ * `vite preview`: Chromium's performance.now() is then fine-grained instead of coarsened,
+ * which the bench's and stats()' sub-millisecond CPU figures need. The page itself needs
+ * nothing of them: it runs the same on a host that sends no headers (a static copy of dist/
+ * on a course site). Everything it loads is its own origin's, so require-corp refuses nothing.
  */
 export const CROSS_ORIGIN_ISOLATION = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
 

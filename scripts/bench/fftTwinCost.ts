@@ -14,7 +14,7 @@ const FRAMES = 240;
 for (const windSpeed of [10, 20]) {
   const params = { ...defaultParams(), waves: 'fft' as const, windSpeed };
   const model = new FftWaveModel(params);
-  const source: FieldSource = { transport: 'messages', request: () => {}, dispose: () => {} };
+  const source: FieldSource = { request: () => {}, dispose: () => {} };
   model.attachSource(source);
   const worker = new FftOcean(model.sea);
   const replies = Array.from({ length: FRAMES }, (_, f) => {
@@ -28,8 +28,8 @@ for (const windSpeed of [10, 20]) {
     const t = 10 + f / 60;
     const start = performance.now();
     const fields = replies[f - 1];
-    const message = structuredClone({ sea: model.sea, time: t - 1 / 60, fields }, { transfer: fields.flatMap((c) => [c.displacement.buffer, c.derivatives.buffer]) });
-    model.receive(message.sea, message.time, message.fields);
+    const message = structuredClone({ time: t - 1 / 60, fields }, { transfer: fields.flatMap((c) => [c.displacement.buffer, c.derivatives.buffer]) });
+    model.receive(model.sea, message.time, message.fields);
     receipts.push(performance.now() - start);
     model.prefetch(t);
     let sum = 0;
