@@ -124,7 +124,7 @@ describe('parts fetched on use', () => {
   });
 
   it('a dive whose underwater passes are refused: a notice, and the sea drawn from below without them, not the last frame above', async () => {
-    const { page, errors } = await open('t=10', ['underwaterPost']);
+    const { page, errors } = await open('t=10', ['oceanUnderwater']);
     const above = await page.evaluate(() => window.oceano.stats().underwater);
     await page.evaluate(() => window.oceano.setCamera({ position: [0, -8, 20], target: [0, 5, -20] }));
     // The first frame under the water asks for the passes (until they settle the canvas keeps

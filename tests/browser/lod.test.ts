@@ -46,7 +46,7 @@ describe('LOD and culling in the browser', () => {
     // chunks, one plain draw of the repeated grid for the small ones (src/render/lod/chunkBatch.ts).
     const seaDraws = await page.evaluate(() => {
       let count = 0;
-      const sea = window.oceano.three.scene.children.find((c) => c.type === 'Group');
+      const sea = window.oceano.three.scene.getObjectByName('oceano-ocean');
       sea?.traverseVisible((o) => {
         const geometry = (o as { geometry?: { attributes: Record<string, unknown>; isInstancedBufferGeometry?: boolean; instanceCount?: number; drawRange: { count: number } } }).geometry;
         if (!geometry?.attributes.aChunk) return;

@@ -276,7 +276,7 @@ describe('packaging', () => {
     // Fetched on first use, never before the first frame: the glTF loader (with the boat), the
     // underwater passes, the FFT and Gerstner models, the control panel (lil-gui, after the
     // first frame), the physics estimators and the GPU probe.
-    for (const lazy of ['GLTFLoader', 'underwaterPost', 'fftModelCode', 'gerstnerModelCode', 'controlPanel', 'physicsReport', 'surfaceProbe']) {
+    for (const lazy of ['GLTFLoader', 'oceanUnderwater', 'fftModelCode', 'gerstnerModelCode', 'controlPanel', 'physicsReport', 'surfaceProbe']) {
       const chunk = scripts.find((file) => file.startsWith(`assets/${lazy}-`));
       expect(chunk, lazy).toBeDefined();
       expect(loaded.has(chunk!), lazy).toBe(false);
