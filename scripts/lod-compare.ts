@@ -14,7 +14,7 @@ const bruteFrames = Number(process.argv[4] ?? 3);
 
 async function measure(harness: Awaited<ReturnType<typeof startHarness>>, q: string, n: number) {
   const { page } = await openOcean(harness, q, 1280, 720);
-  const result = await page.evaluate((count) => {
+  const result = await page.evaluate(async (count) => {
     const o = window.oceano;
     const times: number[] = [];
     for (let i = 0; i < count; i++) {
@@ -22,7 +22,7 @@ async function measure(harness: Awaited<ReturnType<typeof startHarness>>, q: str
       o.renderFrame();
       times.push(performance.now() - start);
     }
-    return { times, lodUpdateMs: o.debug.lodUpdateMs(), stats: o.stats() };
+    return { times, lodUpdateMs: await o.debug.lodUpdateMs(), stats: o.stats() };
   }, n);
   await page.close();
   return { frameMs: median(result.times), lodUpdateMs: result.lodUpdateMs, stats: result.stats };

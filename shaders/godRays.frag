@@ -97,4 +97,5 @@ void main() {
   float distance = sightDistance(nearView, texture2D(tDepth, vUv).x);
   gl_FragColor = vec4(godRays(uEye, direction, distance), 1.0);
   #include <colorspace_fragment>
+  #include <oceano_scene_encode>
 }

@@ -40,9 +40,6 @@ varying vec2 vRelativeGridXZ;
 varying vec2 vWakeSlope;
 flat varying float vVertexSpacing;
 varying float vWaveFade;
-// Per-pixel detail normals in the far bands (models with WAVE_DETAIL_NORMALS); off only
-// for a negative control (OceanView.setShadingFixes).
-uniform bool uDetailNormals;
 varying float vWakeFoam;
 // The boat's wake is on (its uniforms live in the vertex shader's oceano_wake chunk). Its
 // code is compiled in only with OCEAN_WAKE (OceanMaterial.setWakeOn).
@@ -122,11 +119,7 @@ void main() {
   vec3 n = normalize(vNormal);
 #ifdef WAVE_PIXEL_FIELDS
   // The model's per-pixel fields, read once here, outside every branch (shaders/waves/fft.glsl).
-#ifdef WAVE_ABSOLUTE_PIXELS
-  wavePixelFields(vGridXZ, false);
-#else
   wavePixelFields(vRelativeGridXZ, true);
-#endif
 #endif
 #ifdef WAVE_PIXEL_NORMALS
   // Exact normals (spectral slopes, or the Gerstner sum's closed form) at this pixel's own
@@ -138,13 +131,8 @@ void main() {
   const bool fabricatedHalf = false;
 #endif
   if (!uFlatNormals && !fabricatedHalf) {
-    // At the grid point relative to the render origin (exact 10⁶ m out, where vGridXZ moves
-    // in 6 cm steps); WAVE_ABSOLUTE_PIXELS only for a negative control.
-#ifdef WAVE_ABSOLUTE_PIXELS
-    n = waveNormal(vGridXZ);
-#else
+    // At the grid point relative to the render origin: exact 10⁶ m out, where vGridXZ moves in 6 cm steps.
     n = waveNormalNear(vRelativeGridXZ);
-#endif
     // The wake's slope is interpolated from the vertices (its waves are 8 m and longer).
 #ifdef OCEAN_WAKE
     if (uWakeOn) n = normalize(vec3(n.x - vWakeSlope.x * n.y, n.y, n.z - vWakeSlope.y * n.y));
@@ -174,7 +162,7 @@ void main() {
   const float FOOTPRINT_NONE = 2.0;
   const float LONGEST_FULL = 2.0;
   const float LONGEST_NONE = 4.0;
-  if (uDetailNormals && !uFlatNormals) {
+  if (!uFlatNormals) {
     // The square root of the pixel's area on the sea: at grazing angles a pixel is long
     // along the view and narrow across it, and the ripples show across.
     // Along the view the pixel may still not exceed the longest ripples' half wavelength.
@@ -203,12 +191,14 @@ void main() {
   gl_FragColor = vec4(shadeFromBelow(v, n), uMarkSides ? 0.5 : 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+  #include <oceano_scene_encode>
 #else
 #ifdef OCEAN_SEEN_FROM_BELOW
   if (!gl_FrontFacing) {
     gl_FragColor = vec4(shadeFromBelow(v, n), uMarkSides ? 0.5 : 1.0);
     #include <tonemapping_fragment>
     #include <colorspace_fragment>
+    #include <oceano_scene_encode>
     return;
   }
 #endif
@@ -231,11 +221,7 @@ void main() {
 
   float foam = 0.0;
 #ifdef WAVE_FOAM
-#ifdef WAVE_ABSOLUTE_PIXELS
-  foam = waveFoam(vGridXZ);
-#else
   foam = waveFoamNear(vRelativeGridXZ);
-#endif
 #endif
   // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
 #ifdef OCEAN_WAKE
@@ -273,5 +259,6 @@ void main() {
   gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+  #include <oceano_scene_encode>
 #endif
 }

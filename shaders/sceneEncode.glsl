@@ -1,11 +1,12 @@
-// Appended to three.js's colorspace_fragment (src/render/underwater/sceneEncoding.ts), so it ends every
-// material's shader, ours and three's (the boat's). While the scene is drawn for the underwater
-// passes, OCEANO_SCENE_ENCODE is defined on its materials and the linear colour is stored in an
-// RGBA8 target (SwiftShader writes and reads 8-bit targets far faster than half floats): up to
-// 1, its square root in the codes below SCENE_LOW_SHARE, which spends them about as the
-// output's sRGB levels do, so neither the dark water nor the sky seen through the waterline
-// bands; from 1 to SCENE_BRIGHTEST, a logarithmic shoulder in the codes above, for highlights
-// the water fog will dim before the output clips them (the sun seen from below).
+// The underwater passes' scene target, encoded (src/render/underwater/sceneEncoding.ts).
+// Written after three.js's colorspace_fragment at the end of each of Oceano's own shaders, and
+// patched into other materials only where an app opts in. While the scene is drawn for the
+// underwater passes, OCEANO_SCENE_ENCODE is defined on its materials and the linear colour is
+// stored in an RGBA8 target: up to 1, its square root in the codes below SCENE_LOW_SHARE,
+// which spends them about as the output's sRGB levels do, so neither the dark water nor the
+// sky seen through the waterline bands; from 1 to SCENE_BRIGHTEST, a logarithmic shoulder in
+// the codes above, for highlights the water fog will dim before the output clips them (the
+// sun seen from below).
 #ifdef OCEANO_SCENE_ENCODE
 {
   vec3 c = max(gl_FragColor.rgb, 0.0);

@@ -17,7 +17,6 @@ uniform vec3 uSunColor;
 uniform vec3 uRefractedSun;
 uniform float uSunTransmission;
 // Off only for a negative control (OceanView.setShadingFixes): the sand then writes alpha 1.
-uniform bool uMarkUnderWater;
 
 varying vec3 vWorldPosition;
 
@@ -35,6 +34,7 @@ void main() {
   }
   vec3 ambient = uWaterScatter * exp(-DEPTH_DARKENING * depth);
   // Alpha marks the sand for the waterline test (shaders/waterline.glsl): always under the water.
-  gl_FragColor = vec4(albedo * (direct + ambient), uMarkUnderWater ? SEA_BED_ALPHA : 1.0);
+  gl_FragColor = vec4(albedo * (direct + ambient), SEA_BED_ALPHA);
   #include <colorspace_fragment>
+  #include <oceano_scene_encode>
 }

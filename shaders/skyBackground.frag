@@ -9,4 +9,5 @@ void main() {
   gl_FragColor = vec4(skyCubeColor(direction), 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+  #include <oceano_scene_encode>
 }

@@ -121,10 +121,10 @@ export function pageEnvironment(): { renderer: string; crossOriginIsolated: bool
  * followed by a GPU sync) and returns each pass's times, ms. Serialised into the page, so
  * it imports nothing: scripts/bench.ts takes each pass's median in node.
  */
-export function passTimeSamples(frames: number): Record<string, number[]> {
+export async function passTimeSamples(frames: number): Promise<Record<string, number[]>> {
   const samples: Record<string, number[]> = {};
   for (let i = 0; i < frames; i++) {
-    for (const { name, ms } of window.oceano.debug.passTimings()) (samples[name] ??= []).push(ms);
+    for (const { name, ms } of await window.oceano.debug.passTimings()) (samples[name] ??= []).push(ms);
   }
   return samples;
 }

@@ -102,7 +102,7 @@ export class OceanApp {
       redraw: () => (this.view.contextRestored(), this.resize(), this.renderFrame()),
     });
     const physics = { model: () => this.view.waves, params: () => this.params, time: () => this.clock.time };
-    this.controls = new AppControls(this.container, this.view.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics, panelFailed: () => this.notify(message('panelLoadFailed')) }, this, {
+    this.controls = new AppControls(this.container, this.view.ocean.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics, panelFailed: () => this.notify(message('panelLoadFailed')) }, this, {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => this.setPlaying(playing),
       onShare: () => void this.share(),

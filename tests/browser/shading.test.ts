@@ -127,9 +127,9 @@ describe('shading far away', () => {
       return blockEnergy(await redraw(page), 120, 359);
     };
     for (const waves of ['gerstner', 'fft'] as const) {
-      await page.evaluate((w) => {
+      await page.evaluate(async (w) => {
         window.oceano.setParams({ waves: w });
-        window.oceano.debug.setShadingFixes({ relativePixelNormals: true });
+        await window.oceano.debug.setShadingFixes({ relativePixelNormals: true });
       }, waves);
       const near = await energyAt(1000);
       const far = await energyAt(999000);

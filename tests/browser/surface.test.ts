@@ -136,11 +136,11 @@ describe('bad input', () => {
 describe('automation API', () => {
   it('exposes the uploaded Fresnel table and heightmaps, equal to the CPU modules', async () => {
     const data = await restoring((page) =>
-      page.evaluate(() => {
+      page.evaluate(async () => {
         window.oceano.setParams({ seed: 3 });
         return {
-          fresnel: Array.from(window.oceano.debug.fresnelTable()),
-          maps: window.oceano.debug.heightmaps().map((m) => ({ size: m.size, data: Array.from(m.data.slice(0, 64)) })),
+          fresnel: Array.from(await window.oceano.debug.fresnelTable()),
+          maps: (await window.oceano.debug.heightmaps()).map((m) => ({ size: m.size, data: Array.from(m.data.slice(0, 64)) })),
         };
       }),
     );

@@ -23,7 +23,7 @@ describe('teaching views of the seed figures', () => {
   it('shows the two heightmaps themselves as greyscale images of their values', async () => {
     const { page } = await openOcean(harness, 'seed=4&view=heightmap');
     const image = PNG.sync.read(await canvasPng(page));
-    const maps = await page.evaluate(() => window.oceano.debug.heightmaps().map((m) => Array.from(m.data)));
+    const maps = await page.evaluate(async () => (await window.oceano.debug.heightmaps()).map((m) => Array.from(m.data)));
     const size = Math.sqrt(maps[0].length);
     // Where heightmapView.frag puts each map: two squares 0.9 of the height tall, side by
     // side about the centre, a 2 % gap at the seam, texture v upwards while screen y runs down.

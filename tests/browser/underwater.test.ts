@@ -61,8 +61,8 @@ describe('under the water', () => {
     const { consoleErrors } = await dive.opened();
     await dive.restoring(async (page) => {
       const tile = await canvasPng(page);
-      await page.evaluate(() => {
-        window.oceano.debug.forceShaftLightWindow(true);
+      await page.evaluate(async () => {
+        await window.oceano.debug.forceShaftLightWindow(true);
         window.oceano.renderFrame();
       });
       const windowed = await canvasPng(page);

@@ -37,8 +37,7 @@ describe('GerstnerWaveUniforms', () => {
     expect(() => u.setWaves([...sea, ...sea])).toThrow(/At most 64/);
   });
 
-  it('names its chunk and carries the GLSL text', () => {
-    expect(GerstnerWaveUniforms.chunkName).toBe('oceano_gerstner');
+  it('carries the GLSL text', () => {
     expect(GerstnerWaveUniforms.chunk).toContain('vec3 waveDisplacement(vec2 gridXZ)');
   });
 });

@@ -1,55 +1,83 @@
 import { describe, expect, it } from 'vitest';
-import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial } from 'three';
-import { encodeSceneForPost, SCENE_BRIGHTEST, SCENE_LOW_CODES } from '../../src/render/underwater/sceneEncoding';
-import { registerShaderChunks } from '../../src/render/shaders/shaderChunks';
+import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
+import { encodeSceneForPost, markOceanoMaterial, SCENE_BRIGHTEST, SCENE_DECODE_CHUNK, SCENE_ENCODE_CHUNK, SCENE_LOW_CODES } from '../../src/render/underwater/sceneEncoding';
+import { resolveChunks } from '../../src/render/shaders/shaderChunks';
 
 const DEFINE = 'OCEANO_SCENE_ENCODE';
+const THREE_CHUNKS = { ...ShaderChunk };
 
 function sceneOfEveryKind() {
   const scene = new Scene();
-  const shader = new ShaderMaterial({ defines: { KEEP: '' } });
+  const ours = markOceanoMaterial(new ShaderMaterial({ defines: { KEEP: '' } }));
   const standard = new MeshStandardMaterial();
   const pair = [new MeshStandardMaterial(), new MeshStandardMaterial()];
   const line = new LineBasicMaterial();
   const nested = new Group();
   nested.add(new Mesh(new BoxGeometry(), pair));
-  scene.add(new Mesh(new BoxGeometry(), shader), new Mesh(new BoxGeometry(), standard), new LineSegments(new BoxGeometry(), line), nested);
-  return { scene, materials: [shader, standard, ...pair, line] };
+  scene.add(new Mesh(new BoxGeometry(), ours), new Mesh(new BoxGeometry(), standard), new LineSegments(new BoxGeometry(), line), nested);
+  return { scene, ours, others: [standard, ...pair, line] };
+}
+
+/** What three hands a material's onBeforeCompile, reduced to the part the patch reads. */
+function compiled(material: MeshStandardMaterial): string {
+  const shader = { fragmentShader: 'main {\n#include <colorspace_fragment>\n}', vertexShader: '', uniforms: {} } as unknown as WebGLProgramParametersWithUniforms;
+  material.onBeforeCompile(shader, null as unknown as WebGLRenderer);
+  return shader.fragmentShader;
 }
 
 describe("the underwater passes' scene encoding (src/render/underwater/sceneEncoding.ts)", () => {
-  it('defines the encoding on every material in the scene, nested and multi-material ones included, and removes it again', () => {
-    const { scene, materials } = sceneOfEveryKind();
+  it("flips only Oceano's own materials unless every material is asked for", () => {
+    const { scene, ours, others } = sceneOfEveryKind();
     encodeSceneForPost(scene, true);
-    for (const m of materials) expect(m.defines?.[DEFINE]).toBe('');
+    expect(ours.defines[DEFINE]).toBe('');
+    for (const m of others) expect(m.defines && DEFINE in m.defines).toBeFalsy();
     encodeSceneForPost(scene, false);
-    for (const m of materials) expect(m.defines && DEFINE in m.defines).toBe(false);
-    expect((materials[0] as ShaderMaterial).defines.KEEP).toBe('');
+    expect(DEFINE in ours.defines).toBe(false);
+    expect(ours.defines.KEEP).toBe('');
+  });
+
+  it('opted in, patches every other material, nested and multi-material ones included, and removes the define again', () => {
+    const { scene, others } = sceneOfEveryKind();
+    encodeSceneForPost(scene, true, true);
+    for (const m of others) expect(m.defines?.[DEFINE]).toBe('');
+    encodeSceneForPost(scene, false, true);
+    for (const m of others) expect(m.defines && DEFINE in m.defines).toBe(false);
+  });
+
+  it("chains a material's own onBeforeCompile and program key, and appends the encoding after three's colour-space chunk", () => {
+    const standard = new MeshStandardMaterial();
+    standard.onBeforeCompile = (shader) => void (shader.fragmentShader = `// hull caustics\n${shader.fragmentShader}`);
+    standard.customProgramCacheKey = () => 'hull';
+    const scene = new Scene().add(new Mesh(new BoxGeometry(), standard));
+    encodeSceneForPost(scene, true, true);
+    const text = compiled(standard);
+    expect(text.startsWith('// hull caustics')).toBe(true);
+    expect(text.indexOf('#include <colorspace_fragment>')).toBeLessThan(text.indexOf('#ifdef OCEANO_SCENE_ENCODE'));
+    expect(standard.customProgramCacheKey()).toBe('hull|oceano-scene-encode');
+    // Patched once: a second frame adds nothing.
+    encodeSceneForPost(scene, true, true);
+    expect(compiled(standard).match(/#ifdef OCEANO_SCENE_ENCODE/g)).toHaveLength(1);
   });
 
   it('recompiles a material only when its encoding changes', () => {
-    const { scene, materials } = sceneOfEveryKind();
-    const versions = () => materials.map((m) => m.version);
-    const start = versions();
+    const { scene, ours } = sceneOfEveryKind();
+    const start = ours.version;
     encodeSceneForPost(scene, false);
-    expect(versions()).toEqual(start);
+    expect(ours.version).toBe(start);
     encodeSceneForPost(scene, true);
-    const encoded = versions();
-    expect(encoded).toEqual(start.map((v) => v + 1));
+    expect(ours.version).toBe(start + 1);
     encodeSceneForPost(scene, true);
-    expect(versions()).toEqual(encoded);
+    expect(ours.version).toBe(start + 1);
   });
 
-  it("ends three.js's colour-space chunk with the encoding, and keeps three's own text", () => {
-    const three = ShaderChunk.colorspace_fragment;
-    registerShaderChunks();
-    registerShaderChunks();
-    const chunk = ShaderChunk.colorspace_fragment;
-    expect(chunk.startsWith(three.split('\n')[0])).toBe(true);
-    expect(chunk.match(/#ifdef OCEANO_SCENE_ENCODE/g)).toHaveLength(1);
-    expect(chunk.indexOf('linearToOutputTexel')).toBeLessThan(chunk.indexOf('sqrt('));
-    const decode = (ShaderChunk as unknown as Record<string, string>).oceano_scene_decode;
-    expect(decode).toContain(`#define SCENE_LOW_SHARE ${SCENE_LOW_CODES / 255}`);
-    expect(decode).toContain(`#define SCENE_BRIGHTEST ${SCENE_BRIGHTEST}.0`);
+  it("resolves Oceano's chunks per shader and leaves three's ShaderChunk table as three ships it", () => {
+    const text = resolveChunks('#include <common>\n#include <colorspace_fragment>\n#include <oceano_scene_encode>\n#include <oceano_scene_decode>');
+    expect(text).toContain('#include <common>');
+    expect(text).toContain(SCENE_ENCODE_CHUNK);
+    expect(SCENE_DECODE_CHUNK).toContain(`#define SCENE_LOW_SHARE ${SCENE_LOW_CODES / 255}`);
+    expect(SCENE_DECODE_CHUNK).toContain(`#define SCENE_BRIGHTEST ${SCENE_BRIGHTEST}.0`);
+    expect(() => resolveChunks('#include <oceano_nonesuch>')).toThrow(/oceano_nonesuch/);
+    expect({ ...ShaderChunk }).toEqual(THREE_CHUNKS);
+    expect(Object.keys(ShaderChunk).filter((name) => name.startsWith('oceano'))).toEqual([]);
   });
 });

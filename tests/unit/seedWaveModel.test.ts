@@ -51,6 +51,7 @@ function fakeView(name: string, uniforms: Record<string, IUniform>): WaveModelVi
     name: 'seed',
     model: null as unknown as LiveWaveModel,
     chunkName: `oceano_waves_${name}`,
+    chunk: `float wave_${name};`,
     lensPeriod: null,
     uniforms,
     setParams() {},
@@ -67,14 +68,14 @@ describe('WaveBinding', () => {
     const material = binding.attach(
       new ShaderMaterial({ vertexShader: '#include <oceano_waves>\nvoid main() {}', fragmentShader: 'void main() {}', uniforms: { uOwn: { value: 0 } } }),
     );
-    expect(material.vertexShader).toBe('#include <oceano_waves_a>\nvoid main() {}');
+    expect(material.vertexShader).toBe('float wave_a;\nvoid main() {}');
     expect(Object.keys(material.uniforms).sort()).toEqual(['uA', 'uOwn']);
     expect(material.uniforms.uA).toBe(a.uniforms.uA);
     const version = material.version;
     binding.setModel(b);
-    expect(material.vertexShader).toBe('#include <oceano_waves_b>\nvoid main() {}');
+    expect(material.vertexShader).toBe('float wave_b;\nvoid main() {}');
     expect(Object.keys(material.uniforms).sort()).toEqual(['uB', 'uOwn']);
     expect(material.version).toBeGreaterThan(version);
-    expect(binding.resolve('x #include <oceano_waves> y')).toBe('x #include <oceano_waves_b> y');
+    expect(binding.resolve('x\n#include <oceano_waves>\ny')).toBe('x\nfloat wave_b;\ny');
   });
 });

@@ -3,9 +3,8 @@ import type { OceanParams } from '../../sim/params/params';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import type { PhysicsReport } from '../../sim/physics/physicsReport';
 import type { ProbeSample } from '../../render/teaching/surfaceProbe';
-import type { PassTiming } from '../../render/underwater/underwaterPost';
-import type { OceanView, ShadingFixes } from '../../render/ocean/oceanView';
-import { checkBatches } from './apiChecks';
+import type { OceanView } from '../../render/ocean/oceanView';
+import type { DebugTools } from '../debug/debugTools';
 
 /**
  * `window.oceano` on the page, `element.oceano` on an <oceano-view>: how tests, course
@@ -46,25 +45,43 @@ export interface OceanoApi {
   shareUrl(): string;
   /** Whether the frame loop runs (it stops off screen and in hidden tabs) and frames drawn so far. */
   activity(): LoopActivity;
-  debug: {
-    fresnelTable(): Float32Array;
-    /** The reflectance table seen from under the water (n₁ = 1.333, n₂ = 1). */
-    fresnelTableFromBelow(): Float32Array;
-    /** Draws one frame, waiting for the GPU after each pass; each pass's cost in ms ('scene' alone above the water, or 'scene <model> strip' per compare strip, after 'fft' and 'foam' when a model is fft). */
-    passTimings(): PassTiming[];
-    heightmaps(): { size: number; data: Float32Array }[];
-    /** Median CPU ms of one LOD/culling update for the current camera (batches of 20 updates). */
-    lodUpdateMs(batches?: number): number;
-    /** Under the water: bake the shaft light as the window generic wave models get, even for the seed. */
-    forceShaftLightWindow(on: boolean): void;
-    /** Negative controls: turn off fixes for far and very close views (see OceanView.setShadingFixes). */
-    setShadingFixes(fixes: Partial<ShadingFixes>): void;
-    /** compare=: whether each strip draws a chunk straddling it as only the tiles that reach it (on by default; off to measure what that saves). */
-    stripCulling(on: boolean): void;
+  /**
+   * Diagnostics and negative controls (src/app/debug/): fetched on first use, so every call
+   * answers a promise. fresnelTable, fresnelTableFromBelow (n₁ = 1.333, n₂ = 1); passTimings
+   * (one frame drawn waiting for the GPU after each pass: 'scene', or 'scene <model> strip' per
+   * compare strip, after a model's own passes); heightmaps; lodUpdateMs (median CPU ms of one
+   * LOD/culling update, batches of 20); forceShaftLightWindow; setShadingFixes (turn off fixes
+   * for far and very close views); stripCulling (compare= strips drawing only the tiles that
+   * reach them).
+   */
+  debug: Promisified<DebugTools> & {
     /** How many times the physics estimators have run, once the open panel has drawn. */
     physicsRuns(): Promise<number>;
   };
   readonly three: Pick<OceanView, 'renderer' | 'scene' | 'camera'>;
+}
+
+/** Each method of T, answering a promise of what it returned. */
+type Promisified<T> = { [K in keyof T]: T[K] extends (...args: infer A) => infer R ? (...args: A) => Promise<Awaited<R>> : never };
+
+/** `oceano.debug`: each call fetches src/app/debug/debugTools.ts the first time, then runs there. */
+function lazyDebugTools(app: OceanApp): Promisified<DebugTools> {
+  let tools: Promise<DebugTools> | undefined;
+  const load = () => (tools ??= import('../debug/debugTools').then((code) => code.debugTools(app)));
+  const call =
+    <K extends keyof DebugTools>(name: K) =>
+    (...args: Parameters<DebugTools[K]>) =>
+      load().then((t) => (t[name] as (...a: Parameters<DebugTools[K]>) => ReturnType<DebugTools[K]>)(...args));
+  return {
+    fresnelTable: call('fresnelTable'),
+    fresnelTableFromBelow: call('fresnelTableFromBelow'),
+    passTimings: call('passTimings'),
+    heightmaps: call('heightmaps'),
+    lodUpdateMs: call('lodUpdateMs'),
+    forceShaftLightWindow: call('forceShaftLightWindow'),
+    setShadingFixes: call('setShadingFixes'),
+    stripCulling: call('stripCulling'),
+  };
 }
 
 declare global {
@@ -100,16 +117,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     shareUrl: () => app.shareUrl(),
     activity: () => app.activity(),
     debug: {
-      fresnelTable: () => app.debugView().fresnelData.slice(),
-      fresnelTableFromBelow: () => app.debugView().fresnelFromBelowData.slice(),
-      passTimings: () => app.debugView().profileFrame(app.clock.time),
-      heightmaps: () => (app.debugView().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
-      lodUpdateMs: (batches) => app.debugView().timeLodUpdate(checkBatches(batches)),
-      forceShaftLightWindow: (on) => app.debugView().forceShaftLightWindow(on === true),
-      setShadingFixes: (fixes) => app.debugView().setShadingFixes(fixes),
-      stripCulling: (on) => {
-        app.debugView().stripCulling = on === true;
-      },
+      ...lazyDebugTools(app),
       physicsRuns: async () => {
         const panel = started(app.physicsPanel());
         await panel.settled();
@@ -135,6 +143,7 @@ export function createFailedApi(reason: Error): OceanoApi {
   const fail = (): never => {
     throw reason;
   };
+  const failed = () => Promise.reject(reason);
   return {
     ready,
     setTime: fail,
@@ -154,7 +163,17 @@ export function createFailedApi(reason: Error): OceanoApi {
     shareUrl: fail,
     activity: fail,
     physics: () => Promise.reject(reason),
-    debug: { fresnelTable: fail, fresnelTableFromBelow: fail, passTimings: fail, heightmaps: fail, lodUpdateMs: fail, forceShaftLightWindow: fail, setShadingFixes: fail, stripCulling: fail, physicsRuns: () => Promise.reject(reason) },
+    debug: {
+      fresnelTable: failed,
+      fresnelTableFromBelow: failed,
+      passTimings: failed,
+      heightmaps: failed,
+      lodUpdateMs: failed,
+      forceShaftLightWindow: failed,
+      setShadingFixes: failed,
+      stripCulling: failed,
+      physicsRuns: failed,
+    },
     get three(): never {
       throw reason;
     },

@@ -6,7 +6,7 @@ import fragmentShader from '../../../shaders/ocean.frag?raw';
 import { CHUNK_QUADS } from '../../sim/lod/lodBands';
 import { FAR_FADE_END, FAR_FADE_START } from '../../sim/lod/farRings';
 import { morphZones } from '../../sim/lod/lodMorph';
-import { registerShaderChunks } from '../shaders/shaderChunks';
+import { markOceanoMaterial } from '../underwater/sceneEncoding';
 import type { WaveBinding } from '../waves/waveBinding';
 import type { WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
 import type { WakeUniforms } from '../wake/wakeUniforms';
@@ -36,7 +36,6 @@ export class OceanMaterial extends ShaderMaterial {
     shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>,
     main: OceanMaterial | null = null,
   ) {
-    registerShaderChunks();
     super({
       vertexShader,
       fragmentShader,
@@ -55,7 +54,6 @@ export class OceanMaterial extends ShaderMaterial {
         uChunkQuads: { value: CHUNK_QUADS },
         uOceanCenter: { value: new Vector2() },
         uFarFade: { value: new Vector2(FAR_FADE_START, FAR_FADE_END) },
-        uDetailNormals: { value: true },
         uRenderOrigin: { value: new Vector2() },
         uViewRelative: { value: new Matrix4() },
         uEyeRelative: { value: new Vector3() },
@@ -66,6 +64,7 @@ export class OceanMaterial extends ShaderMaterial {
       },
     });
     this.main = main;
+    markOceanoMaterial(this);
     // The wake's code is compiled in until setWakeOn says the wake is off (see there).
     this.defines.OCEAN_WAKE = '';
     if (main) {
@@ -93,10 +92,10 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   /**
-   * World coordinates on the GPU (origin fixed at 0) instead of camera-relative ones; only
-   * for a negative control: 10⁶ m out the glint turns into a checkerboard.
+   * Where the shaders measure positions from, for an eye at (x, z): a point near the camera
+   * (renderOrigin.ts), so that float32 keeps centimetres 10⁶ m out.
    */
-  absoluteCoordinates = false;
+  originFor: (x: number, z: number) => readonly [number, number] = renderOrigin;
   private readonly originShift = new Matrix4();
   private readonly eye = new Vector3();
 
@@ -107,7 +106,7 @@ export class OceanMaterial extends ShaderMaterial {
    */
   override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
-    const [x, z] = (this.main ?? this).absoluteCoordinates ? [0, 0] : renderOrigin(eye.x, eye.z);
+    const [x, z] = (this.main ?? this).originFor(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
     this.waves.model.setRenderOrigin?.(x, z);
     this.originShift.makeTranslation(x, 0, z);
@@ -196,20 +195,6 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uLodCamera.value as Vector3).fromArray(camera);
     this.uniforms.uLodHeight.value = height;
     (this.uniforms.uMorphZones.value as Float32Array).set(zones);
-  }
-
-  /**
-   * Per-pixel normals and foam (Gerstner, FFT) at absolute grid points, as before they were
-   * taken relative to the render origin; only for a negative control: 10⁶ m out the glint
-   * comes in 6 cm blocks.
-   */
-  setAbsolutePixelNormals(on: boolean): void {
-    this.setDefine('WAVE_ABSOLUTE_PIXELS', on);
-  }
-
-  /** Per-pixel detail normals in the far bands; off only for a negative control. */
-  setDetailNormals(on: boolean): void {
-    this.uniforms.uDetailNormals.value = on;
   }
 
   /** The LOD debugger's view: each chunk tinted by its band (compiled in only while shown, see ocean.frag). */

@@ -1,4 +1,3 @@
-import { ShaderChunk } from 'three';
 import tiledHeightmap from '../../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../../shaders/waterVolume.glsl?raw';
 import caustics from '../../../shaders/caustics.glsl?raw';
@@ -8,14 +7,15 @@ import wake from '../../../shaders/wake.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
-import { ENCODING_COLORSPACE_FRAGMENT, SCENE_DECODE_CHUNK } from '../underwater/sceneEncoding';
+import { SCENE_DECODE_CHUNK, SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
 
 /**
- * Shared GLSL pieces are registered as three.js shader chunks, so every shader that needs
- * one writes `#include <oceano_…>` and none keeps a copy. The waves themselves are each
- * model's own chunk, registered by its view (src/render/waves/).
+ * Oceano's shared GLSL pieces. A shader that needs one writes `#include <oceano_…>`, and
+ * resolveChunks puts the text in place before the material is made, so none keeps a copy
+ * and three.js's own ShaderChunk table is left as three ships it. three's own includes
+ * (`<common>`, `<colorspace_fragment>` …) stay for three to resolve.
  */
-const chunks: Record<string, string> = {
+const CHUNKS: Readonly<Record<string, string>> = {
   // #defines made from the TypeScript constants the shaders share (index of refraction, …).
   oceano_constants: shaderConstantsChunk(),
   // Exact sin/cos of phases in turns: the seed's swell, the Gerstner sum and the wake share it.
@@ -30,19 +30,20 @@ const chunks: Record<string, string> = {
   oceano_waterline: waterline,
   // A full-screen pass's line of sight from the eye and the depth buffer (needs <packing> first).
   oceano_line_of_sight: lineOfSight,
-  // The boat's Kelvin wake and its foam, added to whichever wave model is active; uniforms in src/render/wake/wakeUniforms.ts.
+  // The boat's Kelvin wake and its foam, added to whichever wave model is active.
   oceano_wake: wake,
-  // The underwater passes' reading of their scene target; see src/render/underwater/sceneEncoding.ts.
+  // The underwater passes' scene target: written after three's colour-space chunk, read back by the passes.
+  oceano_scene_encode: SCENE_ENCODE_CHUNK,
   oceano_scene_decode: SCENE_DECODE_CHUNK,
-  // three.js's own chunk, ending every material, with the scene target's encoding appended.
-  colorspace_fragment: ENCODING_COLORSPACE_FRAGMENT,
 };
 
-/** ShaderChunk is typed with three's own chunk names only; ours are added beside them. */
-export function registerChunk(name: string, source: string): void {
-  (ShaderChunk as unknown as Record<string, string>)[name] = source;
-}
+const INCLUDE = /^[ \t]*#include +<(oceano_[a-z_]+)>/gm;
 
-export function registerShaderChunks(): void {
-  for (const [name, source] of Object.entries(chunks)) registerChunk(name, source);
+/** The source with every `#include <oceano_…>` replaced by its text, recursively; an unknown name throws, naming it. */
+export function resolveChunks(source: string, extra: Readonly<Record<string, string>> = {}): string {
+  return source.replace(INCLUDE, (_line, name: string) => {
+    const text = extra[name] ?? CHUNKS[name];
+    if (text === undefined) throw new Error(`Unknown shader chunk <${name}>.`);
+    return resolveChunks(text, extra);
+  });
 }

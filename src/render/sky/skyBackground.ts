@@ -2,6 +2,8 @@ import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, type Ca
 import vertexShader from '../../../shaders/skyBackground.vert?raw';
 import fragmentShader from '../../../shaders/skyBackground.frag?raw';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
+import { resolveChunks } from '../shaders/shaderChunks';
+import { markOceanoMaterial } from '../underwater/sceneEncoding';
 
 /** What scenes call the sky mesh, so a test can take it out (to see what is behind the sea). */
 export const SKY_BACKGROUND_NAME = 'oceano-sky';
@@ -30,12 +32,12 @@ export class SkyBackground {
     const geometry = new BufferGeometry();
     // One triangle over the whole of clip space [-1, 1]².
     geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
-    const material = new ShaderMaterial({
-      vertexShader,
-      fragmentShader,
+    const material = markOceanoMaterial(new ShaderMaterial({
+      vertexShader: resolveChunks(vertexShader),
+      fragmentShader: resolveChunks(fragmentShader),
       uniforms: { ...createSkyCubeUniforms(sky), uClipToWorldDirection: { value: this.clipToWorld } },
       depthWrite: false,
-    });
+    }));
     this.mesh = new Mesh(geometry, material);
     this.mesh.name = SKY_BACKGROUND_NAME;
     this.mesh.frustumCulled = false;

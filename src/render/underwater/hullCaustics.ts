@@ -1,6 +1,5 @@
 import type { IUniform, Material, Mesh, Object3D } from 'three';
 import type { WaveBinding } from '../waves/waveBinding';
-import { registerShaderChunks } from '../shaders/shaderChunks';
 
 /**
  * Lights a loaded model's standard materials with the ocean's caustics: the direct sunlight
@@ -10,7 +9,6 @@ import { registerShaderChunks } from '../shaders/shaderChunks';
  * waves without any per-frame work here; the waves are the binding's model at compile time.
  */
 export function lightWithCaustics(model: Object3D, waves: WaveBinding, uniforms: Record<string, IUniform>): void {
-  registerShaderChunks();
   model.traverse((object) => {
     const mesh = object as Mesh;
     if (!mesh.isMesh) return;

@@ -1,4 +1,4 @@
-import { ShaderChunk, type Material, type Object3D } from 'three';
+import type { Material, Object3D } from 'three';
 import sceneEncode from '../../../shaders/sceneEncode.glsl?raw';
 import sceneDecode from '../../../shaders/sceneDecode.glsl?raw';
 import { glslFloat } from '../shaders/shaderConstants';
@@ -16,6 +16,12 @@ export const SCENE_LOW_CODES = 239;
 export const SCENE_BRIGHTEST = 8;
 /** Defined on a material, its colorspace_fragment writes the encoding (the god-ray pass's material is built with it). */
 export const SCENE_ENCODE_DEFINE = 'OCEANO_SCENE_ENCODE';
+/** Defined on the passes that read a half-float scene target, whose colours are stored as they are. */
+export const SCENE_LINEAR_DEFINE = 'OCEANO_SCENE_LINEAR';
+/** Marks a material built by Oceano, whose shaders end with the encoding's chunk. */
+const OCEANO_MATERIAL = 'oceanoMaterial';
+/** Materials of others already patched to write the encoding. */
+const patched = new WeakSet<Material>();
 /** Macros, not constants: the encoding runs inside main(), after whatever the shader declared. */
 const CONSTANTS = [
   '#ifndef SCENE_LOW_SHARE',
@@ -24,26 +30,53 @@ const CONSTANTS = [
   '#endif',
   '',
 ].join('\n');
-const THREE_COLORSPACE_FRAGMENT = ShaderChunk.colorspace_fragment;
-
 /**
- * three.js's colorspace_fragment with the encoding appended (shaders/sceneEncode.glsl), so
- * every material's last chunk can encode; shaderChunks.ts puts it in place of three's.
+ * `#include <oceano_scene_encode>`, written right after three's `#include <colorspace_fragment>`
+ * at the end of each of Oceano's own shaders (shaders/sceneEncode.glsl): compiled in where
+ * SCENE_ENCODE_DEFINE is defined on the material.
  */
-export const ENCODING_COLORSPACE_FRAGMENT = `${THREE_COLORSPACE_FRAGMENT}\n${CONSTANTS}${sceneEncode}`;
+export const SCENE_ENCODE_CHUNK = `${CONSTANTS}${sceneEncode}`;
 
 /** `#include <oceano_scene_decode>`: the passes that read the target (shaders/sceneDecode.glsl). */
 export const SCENE_DECODE_CHUNK = `${CONSTANTS}${sceneDecode}`;
 
+/** Marks a material as Oceano's own: its shaders end with `#include <oceano_scene_encode>`. */
+export function markOceanoMaterial<M extends Material>(material: M): M {
+  material.userData[OCEANO_MATERIAL] = true;
+  return material;
+}
+
 /**
- * On: every material in the scene writes the encoding (for the underwater passes' RGBA8
- * target); off: plain linear colour (the canvas). Flips only the materials whose state
- * differs, so calling it every frame costs a traversal; three.js keeps both compiled variants.
+ * Appends the encoding to a material of someone else's, after three's colour-space chunk,
+ * chaining whatever onBeforeCompile and program key it had; once per material.
  */
-export function encodeSceneForPost(scene: Object3D, on: boolean): void {
+function patchToEncode(material: Material): void {
+  if (patched.has(material)) return;
+  patched.add(material);
+  const before = material.onBeforeCompile;
+  const key = material.customProgramCacheKey;
+  material.onBeforeCompile = (shader, renderer) => {
+    before.call(material, shader, renderer);
+    shader.fragmentShader = shader.fragmentShader.replace('#include <colorspace_fragment>', `#include <colorspace_fragment>\n${SCENE_ENCODE_CHUNK}`);
+  };
+  material.customProgramCacheKey = () => `${key.call(material)}|oceano-scene-encode`;
+}
+
+/**
+ * On: the materials in the scene write the encoding (for the underwater passes' RGBA8
+ * target); off: plain linear colour (the canvas). Only Oceano's own materials unless
+ * `everyMaterial`, which patches the others to write it too. Flips only the materials whose
+ * state differs, so calling it every frame costs a traversal; three.js keeps both compiled variants.
+ */
+export function encodeSceneForPost(scene: Object3D, on: boolean, everyMaterial = false): void {
   scene.traverse((object) => {
     const material = (object as Object3D & { material?: Material | Material[] }).material;
     if (!material) return;
-    for (const m of Array.isArray(material) ? material : [material]) setMaterialDefine(m, SCENE_ENCODE_DEFINE, on);
+    for (const m of Array.isArray(material) ? material : [material]) {
+      const ours = m.userData[OCEANO_MATERIAL] === true;
+      const encodes = on && (ours || everyMaterial);
+      if (encodes && !ours) patchToEncode(m);
+      if (ours || patched.has(m)) setMaterialDefine(m, SCENE_ENCODE_DEFINE, encodes);
+    }
   });
 }

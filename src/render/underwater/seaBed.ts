@@ -1,7 +1,7 @@
 import { Color, Mesh, PlaneGeometry, ShaderMaterial, Vector3, type DataTexture, type IUniform } from 'three';
 import vertexShader from '../../../shaders/seabed.vert?raw';
 import fragmentShader from '../../../shaders/seabed.frag?raw';
-import { registerShaderChunks } from '../shaders/shaderChunks';
+import { markOceanoMaterial } from './sceneEncoding';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import { generateHeightmap, defaultNoiseSettings } from '../../sim/noise/perlinNoise';
 import { HEIGHTMAP_SIZE, RIPPLE_TILE_SIZE } from '../../sim/waves/seed/seedSurface';
@@ -20,14 +20,13 @@ const SAND = new Color(0.55, 0.47, 0.33);
  */
 export class SeaBed {
   readonly mesh: Mesh;
-  private readonly material: ShaderMaterial;
+  readonly material: ShaderMaterial;
   private mottleSeed = Number.NaN;
   private mottle: DataTexture | null = null;
 
   constructor(waves: WaveBinding, shared: WaterVolumeUniforms & CausticsUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>) {
-    registerShaderChunks();
     this.material = waves.attach(
-      new ShaderMaterial({
+      markOceanoMaterial(new ShaderMaterial({
         vertexShader,
         fragmentShader,
         uniforms: {
@@ -37,9 +36,8 @@ export class SeaBed {
           uSandMottle: { value: null },
           uSandMottleTile: { value: RIPPLE_TILE_SIZE },
           uSandMottleSize: { value: HEIGHTMAP_SIZE },
-          uMarkUnderWater: { value: true },
         },
-      }),
+      })),
     );
     const geometry = new PlaneGeometry(BED_SIZE, BED_SIZE);
     geometry.rotateX(-Math.PI / 2);
@@ -58,11 +56,6 @@ export class SeaBed {
     this.mottle?.dispose();
     this.mottle = heightmapTexture(generateHeightmap(HEIGHTMAP_SIZE, { ...defaultNoiseSettings, seed: seed * 2 + 1 }));
     this.material.uniforms.uSandMottle.value = this.mottle;
-  }
-
-  /** Debug (a negative control): false writes alpha 1, as before the sand marked itself for the waterline test. */
-  setWaterMark(on: boolean): void {
-    this.material.uniforms.uMarkUnderWater.value = on;
   }
 
   /**

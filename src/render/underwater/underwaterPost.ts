@@ -27,8 +27,8 @@ import godRaysFragment from '../../../shaders/godRays.frag?raw';
 import compositeFragment from '../../../shaders/underwaterComposite.frag?raw';
 import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel, onePassBlurOffset } from './gaussianKernel';
 import { planShaftLightTile, type ShaftLightTile } from './shaftLightTile';
-import { registerShaderChunks } from '../shaders/shaderChunks';
-import { encodeSceneForPost, SCENE_ENCODE_DEFINE } from './sceneEncoding';
+import { resolveChunks } from '../shaders/shaderChunks';
+import { encodeSceneForPost, SCENE_ENCODE_DEFINE, SCENE_LINEAR_DEFINE } from './sceneEncoding';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import type { WaveBinding } from '../waves/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
@@ -59,11 +59,11 @@ function shaftLightTarget(tile: ShaftLightTile): WebGLRenderTarget {
 const half = (pixels: number) => Math.max(1, Math.ceil(pixels / 2));
 
 /**
- * The god rays' target: RGBA8 in the scene target's encoding (src/render/underwater/sceneEncoding.ts),
+ * The god rays' target, in the scene target's format and encoding (sceneEncoding.ts),
  * linearly filtered for the water pass's upsample.
  */
-function godRaysTarget(): WebGLRenderTarget {
-  return new WebGLRenderTarget(1, 1, { type: UnsignedByteType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+function godRaysTarget(encoded: boolean): WebGLRenderTarget {
+  return new WebGLRenderTarget(1, 1, { type: encoded ? UnsignedByteType : HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
 }
 
 /**
@@ -104,7 +104,7 @@ function blurMaterial(name: string, step: Vector2, encodeOutput = false): Shader
     name,
     defines: encodeOutput ? { ENCODE_OUTPUT: '' } : {},
     vertexShader: fullscreenVertex,
-    fragmentShader: blurFragment,
+    fragmentShader: resolveChunks(blurFragment),
     uniforms: {
       tDiffuse: { value: null },
       uStep: { value: step },
@@ -126,6 +126,15 @@ function blurMaterial(name: string, step: Vector2, encodeOutput = false): Shader
  * and tone-maps onto the canvas itself. Only used while some of the view is under the water; above
  * it, the view renders directly.
  */
+/**
+ * How the scene reaches the underwater passes. 'linear': a half-float target, every
+ * material as it is. 'oceano-materials': an RGBA8 target holding an encoding that Oceano's
+ * own materials write, for scenes with nothing else in them. 'every-material': the same, and
+ * every other material in the scene is patched to write it too (an explicit opt-in: it
+ * changes materials that are not Oceano's).
+ */
+export type EncodedScene = 'linear' | 'oceano-materials' | 'every-material';
+
 export class UnderwaterPost {
   private readonly composer: EffectComposer;
   private readonly scenePass: RenderPass;
@@ -152,7 +161,7 @@ export class UnderwaterPost {
    */
   private readonly blurred: WebGLRenderTarget;
   /** The god rays, at half the water pass's resolution (a quarter of the canvas's with the blur on). */
-  private readonly rays = godRaysTarget();
+  private readonly rays: WebGLRenderTarget;
   private blurOn = false;
   /** The one-pass blur's tap offset in texels (src/render/underwater/gaussianKernel.ts), or null: two passes. */
   private onePassOffset: number | null = null;
@@ -163,12 +172,14 @@ export class UnderwaterPost {
     private readonly camera: PerspectiveCamera,
     private readonly waves: WaveBinding,
     shared: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
+    private readonly encodedScene: EncodedScene = 'linear',
   ) {
-    registerShaderChunks();
     const size = renderer.getDrawingBufferSize(new Vector2());
-    // The scene in RGBA8 as square roots (src/render/underwater/sceneEncoding.ts): SwiftShader wrote the
-    // half-float target this was at about a quarter of the underwater frame's cost.
-    const target = new WebGLRenderTarget(size.x, size.y, { type: UnsignedByteType, depthTexture: new DepthTexture(size.x, size.y) });
+    const encoded = encodedScene !== 'linear';
+    // perf: encoded, the scene goes to RGBA8 (sceneEncoding.ts), which the software rasterizer writes far faster than half floats (docs/performance.md).
+    const target = new WebGLRenderTarget(size.x, size.y, { type: encoded ? UnsignedByteType : HalfFloatType, depthTexture: new DepthTexture(size.x, size.y) });
+    this.rays = godRaysTarget(encoded);
+    const decode = encoded ? {} : { [SCENE_LINEAR_DEFINE]: '' };
     const halfOptions = { type: HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false };
     this.halfA = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
     this.halfB = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
@@ -180,7 +191,7 @@ export class UnderwaterPost {
     // Where the bake lies, the same objects in the bake and the water pass.
     const tile: Record<string, IUniform> = { uShaftOrigin: { value: new Vector2() }, uShaftExtent: { value: 1 } };
     this.shaftPass = new QuadPass(
-      waves.attach(new ShaderMaterial({ name: 'UnderwaterShaftLight', vertexShader: fullscreenVertex, fragmentShader: shaftLightFragment, uniforms: { ...tile } })),
+      waves.attach(new ShaderMaterial({ name: 'UnderwaterShaftLight', vertexShader: fullscreenVertex, fragmentShader: resolveChunks(shaftLightFragment), uniforms: { ...tile } })),
       () => this.shaftTarget,
     );
     // The view's uniforms, the same objects in the water pass and the composite.
@@ -197,9 +208,9 @@ export class UnderwaterPost {
     this.raysPass = new QuadPass(
       new ShaderMaterial({
         name: 'UnderwaterGodRays',
-        defines: { [SCENE_ENCODE_DEFINE]: '' },
+        defines: encoded ? { [SCENE_ENCODE_DEFINE]: '' } : {},
         vertexShader: fullscreenVertex,
-        fragmentShader: godRaysFragment,
+        fragmentShader: resolveChunks(godRaysFragment),
         uniforms: { ...shared, ...view, ...tile, tShaftLight: { value: this.shaftTarget.texture }, uGodRays: { value: 0 } },
       }),
       (readBuffer) => {
@@ -210,8 +221,9 @@ export class UnderwaterPost {
     this.volumePass = new QuadPass(
       waves.attach(new ShaderMaterial({
         name: 'UnderwaterVolume',
+        defines: { ...decode },
         vertexShader: fullscreenVertex,
-        fragmentShader: underwaterFragment,
+        fragmentShader: resolveChunks(underwaterFragment),
         uniforms: { ...shared, ...view, tDiffuse: { value: null }, tGodRays: { value: this.rays.texture }, uWriteMask: { value: false } },
       })),
       (readBuffer) => {
@@ -233,8 +245,9 @@ export class UnderwaterPost {
     this.compositePass = new QuadPass(
       waves.attach(new ShaderMaterial({
         name: 'UnderwaterComposite',
+        defines: { ...decode },
         vertexShader: fullscreenVertex,
-        fragmentShader: compositeFragment,
+        fragmentShader: resolveChunks(compositeFragment),
         uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.blurred.texture } },
       })),
       (readBuffer) => {
@@ -307,7 +320,7 @@ export class UnderwaterPost {
 
 /** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
   render(perPixelWaterline: boolean, afterEachPass?: (name: string) => void): number {
-    encodeSceneForPost(this.scene, true);
+    if (this.encodedScene !== 'linear') encodeSceneForPost(this.scene, true, this.encodedScene === 'every-material');
     const u = this.volumePass.uniforms; // the view uniforms are shared with the god rays and the composite
     this.camera.updateMatrixWorld();
     (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);

@@ -1,5 +1,6 @@
 import type { IUniform, Material, ShaderMaterial } from 'three';
-import { WAVES_INCLUDE, type WaveModelView } from './waveModelView';
+import type { WaveModelView } from './waveModelView';
+import { resolveChunks } from '../shaders/shaderChunks';
 
 interface BoundShader {
   material: ShaderMaterial;
@@ -9,10 +10,10 @@ interface BoundShader {
 
 /**
  * Keeps every material that reads the waves bound to the active model: `#include
- * <oceano_waves>` is rewritten to the model's own chunk and the model's uniforms are put in
- * the material's uniforms. The include is rewritten per material rather than by changing a
- * global ShaderChunk entry because three caches programs by the unresolved source: two
- * views on one page with different models, or a switch of model, need distinct sources.
+ * <oceano_waves>` is replaced by the model's own chunk and the model's uniforms are put in
+ * the material's uniforms. The text is put in per material, never into three's global
+ * ShaderChunk table: two oceans on one page with different models, or a switch of model,
+ * then have distinct sources, and three.js stays as it ships for everyone else.
  */
 export class WaveBinding {
   private readonly shaders: BoundShader[] = [];
@@ -29,9 +30,9 @@ export class WaveBinding {
     return this.active.uniforms;
   }
 
-  /** GLSL source with the generic include pointed at the active model's chunk. */
+  /** GLSL source with `#include <oceano_waves>` replaced by the active model's chunk, and Oceano's other chunks put in place. */
   resolve(source: string): string {
-    return source.split(WAVES_INCLUDE).join(`#include <${this.active.chunkName}>`);
+    return resolveChunks(source, { oceano_waves: this.active.chunk });
   }
 
   /** Binds a ShaderMaterial whose sources contain `#include <oceano_waves>`; returns it. */

@@ -5,8 +5,7 @@ import type { LiveWaveModel, WavesChoice } from '../../sim/waves/waveModel';
 
 /**
  * The render side of one wave model: the GPU half of the seam whose CPU half is
- * src/sim/waves/waveModel.ts. It owns its GLSL chunk (registered with three's ShaderChunk under
- * `chunkName`), the uniforms and textures that chunk reads, and whatever GPU work a frame
+ * src/sim/waves/waveModel.ts. It owns its GLSL chunk (`chunk`, named `chunkName`), the uniforms and textures that chunk reads, and whatever GPU work a frame
  * needs before drawing (update). Every shader that needs the waves writes
  * `#include <oceano_waves>`; WaveBinding points that include at the active model's chunk.
  *
@@ -23,8 +22,10 @@ export interface WaveModelView {
   readonly name: WavesChoice;
   /** The CPU twin this view draws; the boat, the underwater switch and the API sample it. */
   readonly model: LiveWaveModel;
-  /** The ShaderChunk name of this model's GLSL, e.g. 'oceano_waves_seed'. */
+  /** A name for this model's GLSL, e.g. 'oceano_waves_seed' (program cache keys tell models apart by it). */
   readonly chunkName: string;
+  /** The model's GLSL, put where a shader writes `#include <oceano_waves>`. */
+  readonly chunk: string;
   /** What the chunk reads. The same objects go into every material bound to this model. */
   readonly uniforms: Readonly<Record<string, IUniform>>;
   /**
@@ -66,5 +67,3 @@ export interface HeightmapLayout {
   range: readonly [number, number];
 }
 
-/** The include every wave-reading shader writes; see WaveBinding. */
-export const WAVES_INCLUDE = '#include <oceano_waves>';

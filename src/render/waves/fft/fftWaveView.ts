@@ -7,7 +7,6 @@ import { foamJacobianThreshold, foamThresholdForSpread, JACOBIAN_SPREAD } from '
 import { tileOriginTexels } from '../../../sim/waves/originPhases';
 import { FftFoam } from './fftFoam';
 import { GpuFftOcean } from './gpuFft';
-import { registerChunk, registerShaderChunks } from '../../shaders/shaderChunks';
 import { WorkerFieldSource } from './fftFieldsSource';
 import { SharedFieldSource, sharedMemoryAvailable } from './sharedFieldSource';
 
@@ -58,6 +57,7 @@ type FftUniforms = Record<
 export class FftWaveView implements WaveModelView {
   readonly name = 'fft';
   readonly chunkName = 'oceano_waves_fft';
+  readonly chunk: string;
   readonly uniforms: FftUniforms;
   private gpu: GpuFftOcean;
   private foam: FftFoam;
@@ -80,8 +80,7 @@ export class FftWaveView implements WaveModelView {
     // Float textures filterable: the ocean's pixels read normals and foam through the texture
     // unit's bilinear filter (see shaders/waves/fft.glsl); otherwise by hand, as the vertices.
     this.filtered = renderer.extensions.has('OES_texture_float_linear');
-    registerChunk(this.chunkName, (this.filtered ? '#define FFT_FILTERED_FIELDS\n' : '') + fftChunk);
-    registerShaderChunks();
+    this.chunk = (this.filtered ? '#define FFT_FILTERED_FIELDS\n' : '') + fftChunk;
     this.uniforms = {
       uFftDisplacement0: { value: null },
       uFftDisplacement1: { value: null },

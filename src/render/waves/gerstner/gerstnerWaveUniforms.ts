@@ -22,8 +22,6 @@ function pack(phases: ArrayLike<number>, packed: Vector4[]): void {
  * same function the CPU twin uses, so GPU and CPU see one surface.
  */
 export class GerstnerWaveUniforms {
-  /** Name under which the chunk is registered in three's ShaderChunk (`#include <oceano_gerstner>`). */
-  static readonly chunkName = 'oceano_gerstner';
   static readonly chunk: string = gerstnerChunk;
 
   readonly uniforms: GerstnerUniforms;

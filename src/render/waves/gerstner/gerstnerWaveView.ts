@@ -1,6 +1,5 @@
 import type { OceanParams } from '../../../sim/params/params';
 import type { GerstnerLiveModel } from '../../../sim/waves/gerstner/gerstnerLiveModel';
-import { registerChunk, registerShaderChunks } from '../../shaders/shaderChunks';
 import { GerstnerWaveUniforms } from './gerstnerWaveUniforms';
 import type { WaveModelView } from '../waveModelView';
 
@@ -12,13 +11,12 @@ import type { WaveModelView } from '../waveModelView';
 export class GerstnerWaveView implements WaveModelView {
   readonly name = 'gerstner';
   readonly chunkName = 'oceano_waves_gerstner';
+  readonly chunk = GerstnerWaveUniforms.chunk;
   /** The trochoids' wavelengths are drawn from a continuum: the lens height never repeats. */
   readonly lensPeriod = null;
   private readonly table: GerstnerWaveUniforms;
 
   constructor(readonly model: GerstnerLiveModel) {
-    registerChunk(this.chunkName, GerstnerWaveUniforms.chunk);
-    registerShaderChunks();
     this.table = new GerstnerWaveUniforms(model.waves);
   }
 

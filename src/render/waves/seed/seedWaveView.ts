@@ -4,7 +4,6 @@ import type { OceanParams } from '../../../sim/params/params';
 import type { SeedWaveModel } from '../../../sim/waves/seed/seedWaveModel';
 import { RIPPLE_TILE_SIZE, type SurfaceState } from '../../../sim/waves/seed/seedSurface';
 import { heightmapTexture } from '../../optics/dataTextures';
-import { registerChunk, registerShaderChunks } from '../../shaders/shaderChunks';
 import type { WaveModelView } from '../waveModelView';
 import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './seedUniforms';
 
@@ -12,6 +11,7 @@ import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type Surface
 export class SeedWaveView implements WaveModelView {
   readonly name = 'seed';
   readonly chunkName = 'oceano_waves_seed';
+  readonly chunk = seedChunk;
   /** The lens is the ripples alone, two heightmaps tiled on the same 96 m square. */
   readonly lensPeriod = RIPPLE_TILE_SIZE;
   readonly uniforms: SurfaceUniforms;
@@ -20,8 +20,6 @@ export class SeedWaveView implements WaveModelView {
   private applied: SurfaceState | null = null;
 
   constructor(readonly model: SeedWaveModel) {
-    registerChunk(this.chunkName, seedChunk);
-    registerShaderChunks();
     this.heightmapTextures = model.heightmaps.map(heightmapTexture) as [DataTexture, DataTexture];
     this.uniforms = createSurfaceUniforms(this.heightmapTextures);
   }

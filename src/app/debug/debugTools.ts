@@ -1,0 +1,26 @@
+import type { OceanApp } from '../oceanApp';
+import type { PassTiming } from '../../render/diagnostics/passTiming';
+import { profileFrame, timeLodUpdate } from '../../render/diagnostics/frameProfiler';
+import { checkBatches } from '../api/apiChecks';
+import { setShadingFixes, type ShadingFixes } from './shadingFaults';
+
+/**
+ * What `oceano.debug` does, in a module of its own: the page fetches it the first time a
+ * debug call is made, so the product never carries the negative controls and diagnostics.
+ */
+export function debugTools(app: OceanApp) {
+  const view = () => app.debugView();
+  return {
+    fresnelTable: (): Float32Array => view().ocean.fresnelData.slice(),
+    fresnelTableFromBelow: (): Float32Array => view().ocean.fresnelFromBelowData.slice(),
+    passTimings: (): PassTiming[] => profileFrame(view(), app.clock.time),
+    heightmaps: (): { size: number; data: Float32Array }[] => (view().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
+    lodUpdateMs: (batches?: number): number => timeLodUpdate(view(), checkBatches(batches)),
+    forceShaftLightWindow: (on: boolean): void => view().underwater.forceShaftLightWindow(on === true),
+    setShadingFixes: (fixes: Partial<ShadingFixes>): void => setShadingFixes(view(), fixes),
+    stripCulling: (on: boolean): void => void (view().compare.stripCulling = on === true),
+  };
+}
+
+export type DebugTools = ReturnType<typeof debugTools>;
+export type { ShadingFixes };

@@ -1,0 +1,83 @@
+import type { Material } from 'three';
+import type { OceanView } from '../../render/ocean/oceanView';
+import { renderOrigin } from '../../render/ocean/renderOrigin';
+
+/** The fixes for far and very close views, each on unless a negative control turns it off. */
+export interface ShadingFixes {
+  /** Per-pixel detail normals in the far bands (shaders/ocean.frag, WAVE_DETAIL_NORMALS). */
+  detailNormals: boolean;
+  /** Positions relative to a render origin near the camera on the GPU (OceanMaterial.originFor). */
+  cameraRelative: boolean;
+  /** The sea bed marks itself as under the water for the waterline test (shaders/waterline.glsl). */
+  seaBedMark: boolean;
+  /** Gerstner's and FFT's per-pixel normals and foam at grid points relative to the render origin (ocean.frag). */
+  relativePixelNormals: boolean;
+  /** The near plane brought in for an eye less than about a metre above the water (src/render/ocean/nearPlane.ts). */
+  clearanceNear: boolean;
+  /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
+  underwaterShortcuts: boolean;
+}
+
+/** A fault planted in a shader's text: each `find` must be there, or the control would test nothing. */
+interface ShaderFault {
+  name: string;
+  fragment: readonly [find: string, replace: string][];
+}
+
+/** Per-pixel detail normals weighted to nothing: the far bands keep their vertex normals. */
+const NO_DETAIL_NORMALS: ShaderFault = { name: 'no-detail-normals', fragment: [['float weight = smoothstep(DETAIL_FROM', 'float weight = 0.0 * smoothstep(DETAIL_FROM']] };
+/** Per-pixel normals and foam at absolute grid points, where float32 moves in 6 cm steps 10⁶ m out. */
+const ABSOLUTE_PIXELS: ShaderFault = {
+  name: 'absolute-pixels',
+  fragment: [
+    ['wavePixelFields(vRelativeGridXZ, true)', 'wavePixelFields(vGridXZ, false)'],
+    ['waveNormalNear(vRelativeGridXZ)', 'waveNormal(vGridXZ)'],
+    ['waveFoamNear(vRelativeGridXZ)', 'waveFoam(vGridXZ)'],
+  ],
+};
+/** The sand written with alpha 1, as if it were above the water, for the waterline test. */
+const UNMARKED_SEA_BED: ShaderFault = { name: 'unmarked-sea-bed', fragment: [['SEA_BED_ALPHA);', '1.0);']] };
+
+/** Plants or removes faults in a material's fragment shader; the program is rebuilt with them. */
+function plant(material: Material, faults: readonly ShaderFault[]): void {
+  material.onBeforeCompile = (shader) => {
+    for (const fault of faults) {
+      for (const [find, replace] of fault.fragment) {
+        if (!shader.fragmentShader.includes(find)) throw new Error(`The fault '${fault.name}' found nothing to replace: '${find}'.`);
+        shader.fragmentShader = shader.fragmentShader.split(find).join(replace);
+      }
+    }
+  };
+  const key = faults.map((f) => f.name).join('+');
+  material.customProgramCacheKey = () => key;
+  material.needsUpdate = true;
+}
+
+/** What each view has planted, so turning one fix back on keeps the others off. */
+const planted = new WeakMap<OceanView, Set<ShaderFault>>();
+
+/** Turns off (or back on) the fixes that tests/browser/shading, waterline and underwater show they catch. */
+export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): void {
+  const faults = planted.get(view) ?? new Set<ShaderFault>();
+  planted.set(view, faults);
+  const toggle = (fault: ShaderFault, fixed: boolean | undefined) => {
+    if (fixed === undefined) return;
+    if (fixed) faults.delete(fault);
+    else faults.add(fault);
+  };
+  toggle(NO_DETAIL_NORMALS, fixes.detailNormals);
+  toggle(ABSOLUTE_PIXELS, fixes.relativePixelNormals);
+  toggle(UNMARKED_SEA_BED, fixes.seaBedMark);
+  const ocean = view.ocean;
+  const material = ocean.material;
+  const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);
+  for (const m of [material, material.near]) plant(m, oceanFaults);
+  plant(ocean.seaBed.material, faults.has(UNMARKED_SEA_BED) ? [UNMARKED_SEA_BED] : []);
+  if (fixes.cameraRelative !== undefined) material.originFor = fixes.cameraRelative ? renderOrigin : () => [0, 0];
+  if (fixes.clearanceNear !== undefined) view.clearance.nearFitted = fixes.clearanceNear;
+  if (fixes.underwaterShortcuts !== undefined) {
+    ocean.underwaterShortcuts = fixes.underwaterShortcuts;
+    view.clearance.farFitted = fixes.underwaterShortcuts;
+    ocean.apply(ocean.getParams());
+  }
+}

@@ -1,0 +1,10 @@
+/**
+ * Oceano as a library (`import { Ocean } from 'oceano'`): the ocean as a three.js object for
+ * scenes of your own, and its optional underwater passes. three.js is a peer dependency.
+ */
+export { Ocean, type OceanOptions } from './render/ocean/ocean';
+export { OceanUnderwater, type OceanUnderwaterOptions } from './render/underwater/oceanUnderwater';
+export type { EncodedScene } from './render/underwater/underwaterPost';
+export { defaultParams, paramDefs, validateParams, type OceanParams, type ParamKey } from './sim/params/params';
+export type { SurfaceSample, LiveWaveModel, WavesChoice } from './sim/waves/waveModel';
+export type { Submersion } from './sim/underwater/snellWindow';

@@ -1,0 +1,311 @@
+import { Color, Object3D, Vector3, type CubeTexture, type DataTexture, type IUniform, type PerspectiveCamera, type WebGLRenderer } from 'three';
+import { defaultParams, validateParams, type OceanParams, type ParamKey } from '../../sim/params/params';
+import { paramsChanged } from '../../sim/params/paramChanges';
+import type { LiveWaveModel, SurfaceSample, WavesChoice } from '../../sim/waves/waveModel';
+import { compareModelNames } from '../../sim/compare/compareLayout';
+import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../../sim/optics/fresnel';
+import { SUN_LIGHT_COLOR, sunDirection } from '../../sim/optics/sun';
+import { fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../../sim/underwater/snellWindow';
+import type { WakeUniformData } from '../../sim/wake/wakeUniformData';
+import { createWaterVolumeUniforms, applyWaterVolume, setEyeDepth, type WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
+import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from '../underwater/causticsUniforms';
+import { SeaBed } from '../underwater/seaBed';
+import { lightWithCaustics } from '../underwater/hullCaustics';
+import { fresnelTexture } from '../optics/dataTextures';
+import { WaveBinding } from '../waves/waveBinding';
+import { createWaveModelView, loadWaveModels, modelsMissing } from '../waves/waveViewRegistry';
+import type { WaveModelView } from '../waves/waveModelView';
+import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
+import { SkySource } from '../sky/skySource';
+import type { OceanMaterialInputs } from '../compare/compareSide';
+import { OceanMaterial } from './oceanMaterial';
+import { OceanChunks, type LodSettings } from './oceanChunks';
+import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
+
+export interface OceanOptions {
+  /** A cube map of your own for the sea to reflect; by default the sky is painted from the sun parameters. */
+  sky?: CubeTexture;
+}
+
+/** The parameters an ocean material shows (every model's material of a comparison alike). */
+const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors'];
+
+/**
+ * The ocean as a three.js object: add it to your scene, call `update(time, camera)` before
+ * each `renderer.render(scene, camera)`, and it draws itself with your camera, beside your
+ * objects and lights. Its surface is the plane y = 0 of the world, so its own transform is
+ * left at the origin. It changes nothing global in three.js.
+ *
+ * Inside: the active wave model (its GPU half and its CPU twin), the chunked sea with its
+ * levels of detail and culling, the sky it reflects, and the sea bed seen from under the water.
+ */
+export class Ocean extends Object3D {
+  /** The sky the sea reflects, drawn behind everything: add it to your scene if you want it as the background. */
+  readonly sky: Object3D;
+  /** Resolves once the code of every wave model the parameters ask for has arrived; the ocean is hidden until then. */
+  ready: Promise<void>;
+  readonly fresnelData = fresnelTable(256);
+  readonly fresnelFromBelowData = fresnelTableFromBelow(256);
+  readonly chunks: OceanChunks;
+  readonly material: OceanMaterial;
+  readonly seaBed: SeaBed;
+  /** Uniforms the underwater passes share with the ocean: the water volume, the refracted sun and the sun's colour. */
+  readonly lightUniforms: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>;
+  readonly wakeUniforms = createWakeUniforms();
+  /** What a compared model's ocean material shares with this one's. */
+  readonly materialInputs: OceanMaterialInputs;
+  readonly binding: WaveBinding;
+  /** Where the last update found the eye; 'above' before the first. */
+  place: EyePlace = { underwater: false, submersion: 'above', eyeSurface: 0 };
+  /** The shortcuts for a view wholly under the water (back faces only, the sea bed's test skipped); a negative control turns them off. */
+  underwaterShortcuts = true;
+  private waveView: WaveModelView;
+  private readonly skySource: SkySource;
+  private readonly renderer: WebGLRenderer;
+  private readonly fresnelTextures: { fromAbove: DataTexture; fromBelow: DataTexture };
+  private readonly waterVolume: WaterVolumeUniforms = createWaterVolumeUniforms();
+  private readonly caustics: CausticsUniforms = createCausticsUniforms();
+  private readonly eye = new EyeSubmersion();
+  private params: OceanParams;
+  private applied: OceanParams | null = null;
+  private lod: LodSettings;
+  private bounds: { vertical: number; horizontal: number };
+  private wakeBound = 0;
+  private appliedWake: WakeUniformData | null = null;
+  private frameTime = 0;
+
+  /** `params`: any subset of the parameters (src/sim/params/params.ts), validated as the URL and the GUI validate them. */
+  constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, options: OceanOptions = {}) {
+    super();
+    this.name = 'oceano-ocean';
+    this.matrixAutoUpdate = false;
+    this.renderer = renderer;
+    const full = { ...defaultParams(), ...validateParams(params) };
+    this.params = full;
+    this.skySource = new SkySource(options.sky ?? null);
+    this.sky = this.skySource.background.mesh;
+    const first = firstModel(full);
+    // A model whose code has not arrived yet: the seed's sea stands in, hidden, until it has.
+    const available = modelsMissing([first]).length === 0 ? first : 'seed';
+    this.waveView = createWaveModelView({ ...full, waves: available }, renderer);
+    this.binding = new WaveBinding(this.waveView);
+    this.fresnelTextures = { fromAbove: fresnelTexture(this.fresnelData), fromBelow: fresnelTexture(this.fresnelFromBelowData) };
+    this.lightUniforms = { ...this.waterVolume, uRefractedSun: { value: new Vector3() }, uSunColor: { value: new Color(...SUN_LIGHT_COLOR) } };
+    this.materialInputs = {
+      fresnelTables: this.fresnelTextures,
+      sky: this.skySource.texture,
+      shared: { ...this.waterVolume, ...this.wakeUniforms, uSunColor: this.lightUniforms.uSunColor },
+    };
+    this.material = new OceanMaterial(this.binding, this.fresnelTextures, this.skySource.texture, this.materialInputs.shared);
+    this.chunks = new OceanChunks(this.material);
+    this.add(this.chunks.group);
+    this.lod = full;
+    this.bounds = this.waveView.model.bounds();
+    this.seaBed = new SeaBed(this.binding, { ...this.waterVolume, ...this.caustics, ...this.lightUniforms });
+    this.add(this.seaBed.mesh);
+    this.visible = available === first;
+    this.apply(full);
+    this.ready = this.visible ? Promise.resolve() : this.loadModels(full);
+  }
+
+  /** The CPU twin of the waves drawn: sample it for heights and normals at any time. */
+  get waves(): LiveWaveModel {
+    return this.waveView.model;
+  }
+
+  /** The time of the last update, seconds. */
+  get time(): number {
+    return this.frameTime;
+  }
+
+  /** The GPU half of the waves drawn. */
+  get waveModelView(): WaveModelView {
+    return this.waveView;
+  }
+
+  /** The sky texture the sea reflects. */
+  get skyTexture(): CubeTexture {
+    return this.skySource.texture;
+  }
+
+  /** How many times the sun's sky has been painted (0 with a cube map of your own). */
+  get skyPaintCount(): number {
+    return this.skySource.paintCount;
+  }
+
+  /** The levels of detail and culling settings in force. */
+  get lodSettings(): LodSettings {
+    return this.lod;
+  }
+
+  getParams(): OceanParams {
+    return { ...this.params };
+  }
+
+  /** Changes any subset of the parameters, validated exactly as the URL and the GUI validate them (a bad value throws, naming it). */
+  setParams(partial: Partial<OceanParams>): void {
+    const next = { ...this.params, ...validateParams(partial) };
+    if (modelsMissing([firstModel(next)]).length > 0) {
+      this.ready = this.loadModels(next);
+      return;
+    }
+    this.apply(next);
+  }
+
+  private loadModels(params: OceanParams): Promise<void> {
+    this.params = params;
+    return loadWaveModels([firstModel(params)]).then(() => {
+      if (this.params !== params) return;
+      this.apply(params);
+      this.visible = true;
+    });
+  }
+
+  /**
+   * Applies the parameters that differ from the last ones applied (all of them the first
+   * time): the frame loop may call it every frame, and nothing is re-uploaded unless it changed.
+   * The first model's code must have been loaded (loadWaveModels).
+   */
+  apply(params: OceanParams): void {
+    const before = this.applied;
+    const changed = (...keys: ParamKey[]) => paramsChanged(before, params, keys);
+    this.applied = { ...params };
+    this.params = params;
+    const first = firstModel(params);
+    if (first !== this.waveView.name) {
+      const previous = this.waveView;
+      this.waveView = createWaveModelView({ ...params, waves: first }, this.renderer);
+      this.binding.setModel(this.waveView);
+      previous.dispose();
+    }
+    this.waveView.setParams(params);
+    // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
+    this.bounds = this.waveView.model.bounds();
+    if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
+    if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'fogDensity', 'caustics', 'causticsIntensity')) {
+      const sun = sunDirection(params.sunElevation, params.sunAzimuth);
+      this.skySource.paint(this.renderer, sun);
+      (this.lightUniforms.uRefractedSun.value as Vector3).fromArray(refractedSunDirection(sun) ?? [0, 0, 0]);
+      applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
+      applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
+      this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
+    }
+    if (changed(...LOOK_KEYS)) applyLook(this.material, params);
+    if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
+      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
+    }
+    // The wave bound too: a bed below every trough skips the caustics' above-the-surface test.
+    this.seaBed.setDepth(params.seaBedDepth, this.underwaterShortcuts ? this.bounds.vertical : Infinity);
+  }
+
+  /** Everything a frame needs for `camera` at `time` (seconds): the waves, which side of the water the eye is on, and the chunks in view. */
+  update(time: number, camera: PerspectiveCamera): void {
+    this.advance(time);
+    this.locateEye(camera, time);
+    this.cull(camera);
+    this.shade(camera);
+  }
+
+  /** The waves at `time`: the model's GPU passes and uniforms. */
+  advance(time: number): void {
+    this.frameTime = time;
+    this.waveView.update(time);
+  }
+
+  /** Height of the surface under (x, z) at `time`, kept while nothing it depends on changes (a paused view asks it every frame). */
+  surfaceUnder(x: number, z: number, time: number): number {
+    return this.eye.surfaceUnder(this.waveView.model, x, z, time);
+  }
+
+  /** Which side of the water `camera` sees from. */
+  locateEye(camera: PerspectiveCamera, time: number): EyePlace {
+    this.place = this.eye.locate(camera, this.waveView.model, this.bounds.vertical, time);
+    return this.place;
+  }
+
+  /**
+   * Chooses the chunks in `camera`'s view. `tiles`: the camera is a compare strip's, and a
+   * chunk straddling it is drawn as only the tiles that reach it.
+   */
+  cull(camera: PerspectiveCamera, tiles = false): void {
+    this.chunks.update(camera, this.lod, this.cullingBounds(), tiles);
+  }
+
+  /** The culling bounds: the model's, grown by the wake's. */
+  cullingBounds(): { vertical: number; horizontal: number } {
+    return this.wakeBound === 0 ? this.bounds : { vertical: this.bounds.vertical + this.wakeBound, horizontal: this.bounds.horizontal };
+  }
+
+  /** The shading for where the eye is: which faces, the sea bed, the sky behind, the water between the eye and the surface. */
+  shade(camera: PerspectiveCamera): void {
+    const { submersion, eyeSurface } = this.place;
+    this.material.setSeenFromBelow(submersion === 'below' && !this.underwaterShortcuts ? 'straddling' : submersion);
+    this.seaBed.mesh.visible = submersion !== 'above';
+    this.seaBed.follow(camera.position);
+    // Seen entirely from below, the sky can only show through the surface.
+    this.sky.visible = submersion !== 'below';
+    setEyeDepth(this.waterVolume, eyeSurface - camera.position.y);
+  }
+
+  get submersion(): Submersion {
+    return this.place.submersion;
+  }
+
+  /** Height and normal of the surface at the world point (x, z), by the CPU twin, at the last update's time unless `time` is given. */
+  sampleSurface(x: number, z: number, time = this.frameTime): SurfaceSample {
+    return this.waveView.model.sample(x, z, time);
+  }
+
+  /** The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */
+  setWake(data: WakeUniformData, bound: number): void {
+    if (data !== this.appliedWake) applyWakeUniforms(this.wakeUniforms, data);
+    this.appliedWake = data;
+    this.material.setWakeOn(data.count >= 2);
+    this.wakeBound = bound;
+  }
+
+  /** Lets the sunlight on a model of yours (a boat) pass through the waves: caustics on its wet side. */
+  lightWithCaustics(model: Object3D): void {
+    lightWithCaustics(model, this.binding, this.caustics);
+  }
+
+  /** Reflects a cube map of yours from now on (the sun then moves only the lighting). */
+  setSky(sky: CubeTexture): void {
+    this.skySource.setCustom(sky);
+    this.materialInputs.sky = sky;
+    this.material.setSky(sky);
+  }
+
+  /** After a lost WebGL context comes back: paints again what lived only in render targets. */
+  contextRestored(): void {
+    this.chunks.forgetSelection();
+    this.skySource.contextRestored(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
+  }
+
+  dispose(): void {
+    this.removeFromParent();
+    this.sky.removeFromParent();
+    this.chunks.dispose();
+    this.material.dispose();
+    this.seaBed.dispose();
+    this.waveView.dispose();
+    this.fresnelTextures.fromAbove.dispose();
+    this.fresnelTextures.fromBelow.dispose();
+    this.skySource.dispose();
+  }
+}
+
+/** The model the ocean itself draws: the first of a comparison, else `waves`. */
+export function firstModel(params: Pick<OceanParams, 'waves' | 'compare'>): WavesChoice {
+  return compareModelNames<WavesChoice>(params.compare)[0] ?? params.waves;
+}
+
+export function applyLook(material: OceanMaterial, params: OceanParams): void {
+  material.setWaterColor(params.waterColor);
+  material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
+  material.setFresnelEnabled(params.fresnel);
+  material.setWireframe(params.wireframe);
+  material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
+  material.setNormalsCompare(params.normalsCompare);
+  material.setLodColors(params.lodColors);
+}
