@@ -48,7 +48,9 @@ export default defineConfig(({ mode }) => {
         // Students read it, and the user's own bundler minifies it.
         minify: false,
         lib: { entry: 'src/index.ts', formats: ['es'], fileName: () => 'oceano.js' },
-        rollupOptions: { external: isThreeImport },
+        // allow-extension: the entry file holds the code itself (the lazy wave models import from
+        // it) instead of re-exporting a hashed chunk.
+        rollupOptions: { external: isThreeImport, preserveEntrySignatures: 'allow-extension' as const },
       },
     };
   }
