@@ -1,7 +1,7 @@
 import type { Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { defineConfig } from 'vitest/config';
-import { minifyGlsl, SHADER_RAW_IMPORT } from './scripts/glslMinify';
+import { minifyGlsl, SHADER_RAW_IMPORT } from './scripts/build/glslMinify';
 
 /**
  * The page's Content-Security-Policy: scripts only from this origin (no inline script, no
@@ -25,11 +25,10 @@ export const CONTENT_SECURITY_POLICY = [
 
 /**
  * Headers that make the page cross-origin isolated (COOP + COEP), sent by `npm start` and
- * `vite preview`: SharedArrayBuffer is then available, and the FFT twin's Worker hands its
- * fields over shared memory with no message per frame (src/render/waves/
- * sharedFieldSource.ts; issue 12's 0.1 ms budget). Everything the page loads is its own
- * origin's, so require-corp refuses nothing. A host that sends no such headers (a static copy
- * of dist/ on a course site) still runs the page: the twin then uses messages.
+ * `vite preview`: Chromium's performance.now() is then fine-grained instead of coarsened,
+ * which the bench's and stats()' sub-millisecond CPU figures need. The page itself needs
+ * nothing of them: it runs the same on a host that sends no headers (a static copy of dist/
+ * on a course site). Everything it loads is its own origin's, so require-corp refuses nothing.
  */
 export const CROSS_ORIGIN_ISOLATION = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
 
@@ -59,7 +58,7 @@ function lilGuiFontFile(): Plugin {
   };
 }
 
-/** The build's shader text without comments (scripts/glslMinify.ts); dev and tests read the files as they are. */
+/** The build's shader text without comments (scripts/build/glslMinify.ts); dev and tests read the files as they are. */
 export function shaderText(): Plugin {
   return {
     name: 'oceano-shader-text',
@@ -103,7 +102,7 @@ export default defineConfig({
     projects: [
       {
         // 60 s per test rather than vitest's 5: `npm test` runs the type check and the build
-        // beside the unit tests (scripts/runTests.mjs), and on a loaded 2-core machine a test
+        // beside the unit tests (tests/runTests.mjs), and on a loaded 2-core machine a test
         // measured at 0.5 s quiet took 6.1 s (fftSpectra's Hasselmann m₀, 11:20 UTC, load 8).
         // A timeout is no check of the results; the assertions are.
         test: { name: 'unit', include: ['tests/unit/**/*.test.ts'], environment: 'node', testTimeout: 60_000 },

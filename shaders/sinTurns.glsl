@@ -11,11 +11,6 @@
 const float TURN_RADIANS = 6.283185307179586;
 
 float sinTurns(float turns) {
-#ifdef OCEANO_NATIVE_SIN
-  // Negative control only (the parity tests define it): the driver's own sine, which the
-  // parity limits must reject.
-  return sin(TURN_RADIANS * turns);
-#else
   float s = fract(turns) - 0.5;
   float folded = sign(s) * (0.25 - abs(abs(s) - 0.25));
   float x = TURN_RADIANS * folded;
@@ -23,7 +18,6 @@ float sinTurns(float turns) {
   float series = 1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0))));
   // sin(2π turns) = −sin(2π s), and folding keeps the sine of s.
   return -x * series;
-#endif
 }
 
 float cosTurns(float turns) {

@@ -1,4 +1,4 @@
-import { BROWSER_ARGS } from '../browserHarness';
+import { BROWSER_ARGS } from '../../tests/browser/harness';
 
 /**
  * Which rasterizer the benchmark's Chromium uses. The browser tests always use SwiftShader

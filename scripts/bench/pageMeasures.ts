@@ -119,7 +119,7 @@ export function pageEnvironment(): { renderer: string; crossOriginIsolated: bool
 /**
  * Runs in the page: profiles `frames` frames with oceano.debug.passTimings() (each pass
  * followed by a GPU sync) and returns each pass's times, ms. Serialised into the page, so
- * it imports nothing: scripts/bench.ts takes each pass's median in node.
+ * it imports nothing: bench.ts takes each pass's median in node.
  */
 export async function passTimeSamples(frames: number): Promise<Record<string, number[]>> {
   const samples: Record<string, number[]> = {};

@@ -39,6 +39,19 @@ export const SCENARIOS: readonly BenchScenario[] = [
   // The LOD's reference: every chunk of the same 4 km extent at full resolution, no culling.
   { name: 'brute-force grid, same extent', query: 't=10&lodBruteForce=1', frames: 3 },
   { name: 'underwater (Snell window, god rays, blur)', query: 't=10&preset=underwater', passes: true },
+  // The library's default underwater path: a half-float scene target, no material patched (OceanUnderwater).
+  {
+    name: 'underwater, half-float scene target (library default)',
+    query: 't=10&preset=underwater',
+    passes: true,
+    setup: async (page) => {
+      await page.evaluate(async () => {
+        await window.oceano.debug.underwaterScene('linear');
+        window.oceano.renderFrame();
+        await window.oceano.loaded();
+      });
+    },
+  },
   // The spectral sea (issue 12) from the default camera: its frame with the clock running at
   // 60 Hz (every frame evolves the spectra, runs the FFTs and one foam step), and those
   // passes timed alone.
@@ -58,6 +71,7 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['default / three.js example (Water + Sky + bloom)', 'default view', 'three.js ocean example (Water + Sky + bloom)', 0.6],
   ['default / floor', 'default view', 'floor', 20],
   ['underwater / default', 'underwater (Snell window, god rays, blur)', 'default view', 2],
+  ['underwater half-float / encoded', 'underwater, half-float scene target (library default)', 'underwater (Snell window, god rays, blur)', null],
   // Issue 12: the spectral sea at most 1.3× the seed's frame, same camera, same run.
   ['FFT view / default', 'FFT view (waves=fft, clock running)', 'default view', 1.3],
   // Issue 15: a split view costs no more than its dearest model alone.

@@ -1,6 +1,6 @@
 import type { Browser, Page } from 'puppeteer';
 import { median } from '../../src/sim/physics/sampleStatistics';
-import { openOcean, type Harness } from '../browserHarness';
+import { openOcean, type Harness } from '../../tests/browser/harness';
 import { timeFloorFrames, timeOceanFrames, timeThreejsExampleFrames } from './pageMeasures';
 import { COMPARISONS, type BenchScenario } from './scenarios';
 import { openThreejsOceanExample } from './threejsOceanServer';

@@ -43,7 +43,7 @@ describe('LOD and culling in the browser', () => {
     expect(stats.triangles).toBeLessThan(60_000);
     // One draw per non-empty band (three still culls the boat's parts itself, so the total
     // also holds the sky and whichever of those are in view): instanced for the bands of large
-    // chunks, one plain draw of the repeated grid for the small ones (src/render/ocean/chunkBatch.ts).
+    // chunks, one plain draw of the repeated grid for the small ones (src/render/lod/chunkBatch.ts).
     const seaDraws = await page.evaluate(() => {
       let count = 0;
       const sea = window.oceano.three.scene.children.find((c) => c.type === 'Group');

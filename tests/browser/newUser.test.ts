@@ -1,5 +1,5 @@
 import { readdirSync, readFileSync } from 'node:fs';
-import { pageEntry, scriptSizes, staticImports } from '../../scripts/distScripts';
+import { pageEntry, scriptSizes, staticImports } from '../../scripts/build/distScripts';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { describe, expect, it } from 'vitest';
@@ -268,7 +268,7 @@ describe('packaging', () => {
     expect(text(entry)).toContain(threeChunk);
     expect(text('oceano.js')).toContain(threeChunk);
     // What a page loads before its first frame: its entry and what that imports statically
-    // (scripts/distScripts.ts, which the bench's size figures use too). Chunks loaded only on
+    // (scripts/build/distScripts.ts, which the bench's size figures use too). Chunks loaded only on
     // use (the physics panel's plots, the FFT twin's worker) are left out.
     const sizes = scriptSizes(dist);
     const loaded = new Set([...sizes.pageFiles, ...staticImports(dist, 'oceano.js')]);
@@ -290,7 +290,7 @@ describe('packaging', () => {
     // Issue 14's targets are 200 and 20.
     expect(sizes.pageKB).toBeLessThanOrEqual(200);
     expect(sizes.componentExtraKB).toBeLessThan(20);
-    // The shaders arrive without their comments (scripts/glslMinify.ts) but with their code.
+    // The shaders arrive without their comments (scripts/build/glslMinify.ts) but with their code.
     const shaderCode = sizes.pageFiles.map(text).join('\n');
     expect(shaderCode).toContain('vec3 waveDisplacement(vec2 gridXZ)');
     expect(shaderCode).not.toContain('// The contract every model');

@@ -1,4 +1,5 @@
 import type { Page } from 'puppeteer';
+import { NATIVE_SIN_TURNS, SIN_TURNS_HEADER } from '../support/nativeSine';
 import type { Harness } from './harness';
 
 /**
@@ -22,21 +23,19 @@ export const PARITY_HEIGHT_LIMIT = PARITY_LIMITS.defaults.height;
 export const PARITY_NORMAL_LIMIT = PARITY_LIMITS.defaults.normal;
 
 /**
- * A page whose shaders are compiled with OCEANO_NATIVE_SIN defined, so the swell uses the
- * driver's `sin` (shaders/waves/seed.glsl): the fault the parity limits must catch. The
- * define is put after each shader's #version line as the page hands the source to WebGL.
+ * A page whose shaders compute sinTurns with the driver's `sin` (tests/support/nativeSine.ts),
+ * so the swell uses it (shaders/waves/seed.glsl): the fault the parity limits must catch. The
+ * replacement is made as the page hands each shader's source to WebGL.
  */
 export async function openWithNativeSin(harness: Harness, query: string): Promise<Page> {
   const page = await harness.browser.newPage();
   await page.setViewport({ width: 640, height: 360, deviceScaleFactor: 1 });
-  await page.evaluateOnNewDocument(() => {
+  await page.evaluateOnNewDocument((header: string, native: string) => {
     const original = WebGL2RenderingContext.prototype.shaderSource;
     WebGL2RenderingContext.prototype.shaderSource = function (shader: WebGLShader, source: string) {
-      const patched = source.replace(/^(#version[^\n]*\n)/, '$1#define OCEANO_NATIVE_SIN\n');
-      if (patched === source) throw new Error('A shader without a #version line: the native-sin control cannot define itself.');
-      original.call(this, shader, patched);
+      original.call(this, shader, source.replace(header, native));
     };
-  });
+  }, SIN_TURNS_HEADER, NATIVE_SIN_TURNS);
   await page.goto(`${harness.baseUrl}?${query}`, { waitUntil: 'load' });
   await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
   await page.evaluate(() => window.oceano.ready);

@@ -1,6 +1,6 @@
 import puppeteer from 'puppeteer';
 import type { TestProject } from 'vitest/node';
-import { BROWSER_ARGS, findBrowser } from '../../scripts/browserHarness';
+import { BROWSER_ARGS, findBrowser } from './harness';
 
 declare module 'vitest' {
   export interface ProvidedContext {

@@ -15,8 +15,7 @@ const TYPES: Record<string, string> = {
 
 /**
  * A plain static file server that puts dist/ under a deep sub-path, as a course site would:
- * content types and nothing else, so no cross-origin isolation headers either (the page's
- * FFT twin then uses messages, not shared memory).
+ * content types and nothing else, so no cross-origin isolation headers either.
  */
 export function serveUnderSubPath(): Promise<{ server: Server; url: string }> {
   return serveFolder(DIST, SUB_PATH);

@@ -36,7 +36,7 @@ describe('oceano.stats() start-up and CPU figures', () => {
       const o = window.oceano;
       // Enough frames to fill the 30-frame window the medians are taken over. The camera moves
       // a millimetre before each, as a user's would: an unmoved camera's matrices are not
-      // remade (OceanChunks.sameCameraPose), which would skip the planted work below.
+      // remade (CullingView.sameCameraPose), which would skip the planted work below.
       const frames = () => {
         for (let i = 0; i < 32; i++) {
           o.three.camera.position.x += 1e-3;

@@ -42,7 +42,7 @@ describe('FrameStats', () => {
     // Switched to a model that does not measure it: no figure, rather than the old model's.
     stats.recordTwin(null);
     expect(stats.summary(RENDER, null).twinMs).toBeNull();
-    const twin = { transport: 'messages' as const, fieldsReceived: 3, fieldsTime: 10.05 };
+    const twin = { fieldsReceived: 3, fieldsTime: 10.05 };
     expect(stats.summary(RENDER, twin).twin).toEqual(twin);
   });
 });

@@ -260,7 +260,7 @@ describe('BoatMotion keeps the target pose of a paused view only while the surfa
   it('the FFT sea: the Worker\'s fields for the paused time arrive after a lagged frame', () => {
     const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
     const model = new FftWaveModel(params);
-    model.attachSource({ transport: 'messages', request: () => {}, dispose: () => {} });
+    model.attachSource({ request: () => {}, dispose: () => {} });
     const motion = new BoatMotion([3, -7]);
     float(motion, model, 10); // a jump: computed at once
     const lagged = float(motion, model, 10.016).target; // playing: the fields of t = 10

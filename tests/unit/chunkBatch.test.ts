@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { BufferAttribute, InstancedBufferGeometry, MeshBasicMaterial } from 'three';
-import { ChunkBatch, EXPANDED_UP_TO_VERTICES } from '../../src/render/ocean/chunkBatch';
+import { ChunkBatch, EXPANDED_UP_TO_VERTICES } from '../../src/render/lod/chunkBatch';
 import { chunkGrid, squareGrid } from '../../src/sim/lod/chunkGrid';
 import { seededRandom } from '../../src/sim/noise/integerHash';
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { BufferAttribute, Mesh, PerspectiveCamera } from 'three';
-import { OceanChunks, type LodSettings } from '../../src/render/ocean/oceanChunks';
+import { OceanChunks, type LodSettings } from '../../src/render/lod/oceanChunks';
 import type { OceanMaterial } from '../../src/render/ocean/oceanMaterial';
 import type { DisplacementBounds } from '../../src/sim/waves/waveModel';
 import { seededRandom } from '../../src/sim/noise/integerHash';

@@ -2,7 +2,7 @@ import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { scriptSizes, staticImports } from '../../scripts/distScripts';
+import { scriptSizes, staticImports } from '../../scripts/build/distScripts';
 
 /** A dist/ in miniature: the page's entry imports the shared chunks; one chunk is only imported dynamically. */
 function fixtureDist(): string {

@@ -3,7 +3,7 @@ import { FftOcean, type CascadeFields } from '../../src/sim/waves/fft/fftOcean';
 import { FftWaveModel, type FieldSource } from '../../src/sim/waves/fft/fftWaveModel';
 import { defaultParams } from '../../src/sim/params/params';
 import { SimulationClock } from '../../src/app/time/simulationClock';
-import { copyFields, fieldBuffers, packedFields } from '../../src/render/waves/fft/fftFieldsSource';
+import { copyFields, fieldBuffers, packedFields } from '../../src/render/waves/fft/fftFieldsMessages';
 import { seededRandom } from '../../src/sim/noise/integerHash';
 
 const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
@@ -11,7 +11,7 @@ const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as con
 function withSource() {
   const model = new FftWaveModel(params);
   const requests: number[] = [];
-  const source: FieldSource = { transport: 'messages', request: (_sea, t) => requests.push(t), dispose: () => {} };
+  const source: FieldSource = { request: (_sea, t) => requests.push(t), dispose: () => {} };
   model.attachSource(source);
   return { model, requests };
 }
@@ -87,7 +87,7 @@ describe('FftWaveModel: the Worker refills the arrays the model hands back', () 
   it('hands back only arrays it no longer reads: the replaced fields, or a refused reply', () => {
     const model = new FftWaveModel(params);
     const recycled: CascadeFields[][] = [];
-    model.attachSource({ transport: 'messages', request: () => {}, recycle: (fields) => recycled.push(fields), dispose: () => {} });
+    model.attachSource({ request: () => {}, recycle: (fields) => recycled.push(fields), dispose: () => {} });
     const reference = new FftWaveModel(params);
     const worker = new FftOcean(model.sea);
     model.height(1, 2, 10); // computed at once: the model's own arrays
@@ -113,18 +113,19 @@ describe('FftWaveModel: the Worker refills the arrays the model hands back', () 
     expect(model.ocean.fieldsTime).toBe(10.05);
   });
 
-  it('reports its twin: the source\'s transport, the fields it adopted (refused ones not counted) and their time', () => {
+  it('reports its twin: the fields it adopted (refused ones not counted) and their time', () => {
     const model = new FftWaveModel(params);
-    expect(model.twinStatus()).toEqual({ transport: null, fieldsReceived: 0, fieldsTime: Number.NaN });
-    model.attachSource({ transport: 'shared-memory', request: () => {}, dispose: () => {} });
+    expect(model.twinStatus()).toEqual({ fieldsReceived: 0, fieldsTime: Number.NaN });
+    model.attachSource({ request: () => {}, dispose: () => {} });
     const worker = new FftOcean(model.sea);
     for (const t of [10.016, 10.033, 5]) {
       worker.setTime(t);
       model.receive(model.sea, t, copy(worker.fields));
     }
-    expect(model.twinStatus()).toEqual({ transport: 'shared-memory', fieldsReceived: 2, fieldsTime: 10.033 });
-    model.attachSource({ transport: null, request: () => {}, dispose: () => {} });
-    expect(model.twinStatus()).toMatchObject({ transport: null, fieldsReceived: 0 });
+    expect(model.twinStatus()).toEqual({ fieldsReceived: 2, fieldsTime: 10.033 });
+    // A new source starts counting afresh.
+    model.attachSource({ request: () => {}, dispose: () => {} });
+    expect(model.twinStatus()).toMatchObject({ fieldsReceived: 0 });
   });
 
   it('the Worker writes into the arrays it got back where they fit, and into new ones where they do not', () => {
@@ -181,7 +182,7 @@ describe('FftWaveModel: the main thread time it reports (stats().twinMs)', () =>
     let clock = 0;
     const model = new FftWaveModel(params, () => clock++);
     const requests: number[] = [];
-    model.attachSource({ transport: 'messages', request: (_sea, t) => requests.push(t), dispose: () => {} });
+    model.attachSource({ request: (_sea, t) => requests.push(t), dispose: () => {} });
     expect(model.takeMainThreadMs()).toBe(0);
     model.height(1, 2, 10);
     model.sample(1, 2, 10);

@@ -1,7 +1,7 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { minifyGlsl, SHADER_RAW_IMPORT } from '../../scripts/glslMinify';
+import { minifyGlsl, SHADER_RAW_IMPORT } from '../../scripts/build/glslMinify';
 
 const SHADERS = new URL('../../shaders/', import.meta.url).pathname;
 const files = (dir: string): string[] =>

@@ -38,7 +38,7 @@ describe('SurfaceHeightMemo: the height under the eye, kept while nothing it dep
   it('under waves=fft, fields delivered by the Worker at the same time are a new surface', () => {
     const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
     const fft = new FftWaveModel(params);
-    fft.attachSource({ transport: 'messages', request: () => {}, dispose: () => {} });
+    fft.attachSource({ request: () => {}, dispose: () => {} });
     const memo = new SurfaceHeightMemo();
     memo.height(fft, 5, 6, 10); // a jump: computed at 10
     memo.height(fft, 5, 6, 10.05); // playing: answered from the fields at 10

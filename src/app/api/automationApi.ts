@@ -52,7 +52,7 @@ export interface OceanoApi {
    * compare strip, after a model's own passes); heightmaps; lodUpdateMs (median CPU ms of one
    * LOD/culling update, batches of 20); forceShaftLightWindow; setShadingFixes (turn off fixes
    * for far and very close views); stripCulling (compare= strips drawing only the tiles that
-   * reach them).
+   * reach them); underwaterScene (the underwater passes' scene target, 'linear' or encoded).
    */
   debug: Promisified<DebugTools> & {
     /** How many times the physics estimators have run, once the open panel has drawn. */
@@ -81,6 +81,7 @@ function lazyDebugTools(app: OceanApp): Promisified<DebugTools> {
     forceShaftLightWindow: call('forceShaftLightWindow'),
     setShadingFixes: call('setShadingFixes'),
     stripCulling: call('stripCulling'),
+    underwaterScene: call('underwaterScene'),
   };
 }
 
@@ -172,6 +173,7 @@ export function createFailedApi(reason: Error): OceanoApi {
       forceShaftLightWindow: failed,
       setShadingFixes: failed,
       stripCulling: failed,
+      underwaterScene: failed,
       physicsRuns: failed,
     },
     get three(): never {

@@ -3,6 +3,7 @@ import type { PassTiming } from '../../render/diagnostics/passTiming';
 import { profileFrame, timeLodUpdate } from '../../render/diagnostics/frameProfiler';
 import { checkBatches } from '../api/apiChecks';
 import { setShadingFixes, type ShadingFixes } from './shadingFaults';
+import type { EncodedScene } from '../../render/underwater/underwaterPost';
 
 /**
  * What `oceano.debug` does, in a module of its own: the page fetches it the first time a
@@ -19,6 +20,8 @@ export function debugTools(app: OceanApp) {
     forceShaftLightWindow: (on: boolean): void => view().underwater.forceShaftLightWindow(on === true),
     setShadingFixes: (fixes: Partial<ShadingFixes>): void => setShadingFixes(view(), fixes),
     stripCulling: (on: boolean): void => void (view().compare.stripCulling = on === true),
+    /** The underwater passes' scene target: 'linear' (the library's default) or an encoded one (the app's). */
+    underwaterScene: (mode: EncodedScene): void => view().underwater.setEncodedScene(mode),
   };
 }
 

@@ -22,7 +22,7 @@ export interface OceanStats extends RenderStats {
    * readings are right on average only.
    */
   twinMs: number | null;
-  /** Where the wave model's CPU twin gets its data from a Worker (how, how much, of which time); null for models without one. */
+  /** How much data the wave model's CPU twin has had from its Worker, and of which time; null for models without one. */
   twin: TwinStatus | null;
   /** Time to first frame: navigation start to the first frame drawn and synced (ms); null before it. */
   ttffMs: number | null;

@@ -9,7 +9,7 @@ export interface BoatModel {
 }
 
 /**
- * Loads the boat's glTF. The model's frame is the one scripts/make-boat.ts writes: bow
+ * Loads the boat's glTF. The model's frame is the one scripts/build/make-boat.ts writes: bow
  * towards −z, starboard +x, waterline at y = 0. Fetching and parsing are separate steps so
  * that each failure gets its own message, fit for a notice: unreachable, not found, a web
  * page where the model should be (what single-page servers answer for a missing file), or

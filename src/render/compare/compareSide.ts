@@ -3,7 +3,7 @@ import type { OceanParams } from '../../sim/params/params';
 import type { DisplacementBounds } from '../../sim/waves/waveModel';
 import type { WavesChoice } from '../../sim/waves/waveModel';
 import { OceanMaterial } from '../ocean/oceanMaterial';
-import { OceanChunks } from '../ocean/oceanChunks';
+import { OceanChunks } from '../lod/oceanChunks';
 import { WaveBinding } from '../waves/waveBinding';
 import { createWaveModelView } from '../waves/waveViewRegistry';
 import type { WaveModelView } from '../waves/waveModelView';

@@ -19,7 +19,7 @@ import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
 import { SkySource } from '../sky/skySource';
 import type { OceanMaterialInputs } from '../compare/compareSide';
 import { OceanMaterial } from './oceanMaterial';
-import { OceanChunks, type LodSettings } from './oceanChunks';
+import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 
 export interface OceanOptions {

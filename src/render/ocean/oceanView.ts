@@ -13,7 +13,7 @@ import { SceneLights } from '../sky/sceneLights';
 import { KelvinGuideView } from '../wake/kelvinGuideView';
 import { CompareRenderer } from '../compare/compareRenderer';
 import { UnderwaterStage } from '../underwater/underwaterStage';
-import type { ChunkStats } from './oceanChunks';
+import type { ChunkStats } from '../lod/oceanChunks';
 import { DEFAULT_NEAR } from './nearPlane';
 import { CAMERA_FAR, EyeClearance } from './eyeClearance';
 import { Ocean } from './ocean';
@@ -96,8 +96,9 @@ export class OceanView {
   applyParams(params: OceanParams): void {
     const missing = modelsMissing(modelsDrawn(params));
     if (missing.length > 0) throw new Error(`Wave model code not loaded: ${missing.join(', ')}.`);
-    const changed = (...keys: ParamKey[]) => paramsChanged(this.applied, params, keys);
-    const first = this.applied === null;
+    const before = this.applied;
+    const changed = (...keys: ParamKey[]) => paramsChanged(before, params, keys);
+    const first = before === null;
     this.applied = { ...params };
     this.params = params;
     if (!first) this.ocean.apply(params);

@@ -9,7 +9,7 @@ import { markOceanoMaterial } from '../underwater/sceneEncoding';
 export const SKY_BACKGROUND_NAME = 'oceano-sky';
 
 /**
- * Where the sky falls in the draw order: after the grid bands of the sea (OceanChunks, at
+ * Where the sky falls in the draw order: after the grid bands of the sea (gridBandBatch.ts, at
  * NEAR_SEA_RENDER_ORDER), before everything else. It is drawn at the far plane with the depth
  * test on, so the pixels those bands already cover are rejected before its shader runs, where
  * drawn first it was shaded under the whole sea. Everything that may lie at the far plane

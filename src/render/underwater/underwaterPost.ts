@@ -191,7 +191,7 @@ export class UnderwaterPost {
     // Where the bake lies, the same objects in the bake and the water pass.
     const tile: Record<string, IUniform> = { uShaftOrigin: { value: new Vector2() }, uShaftExtent: { value: 1 } };
     this.shaftPass = new QuadPass(
-      waves.attach(new ShaderMaterial({ name: 'UnderwaterShaftLight', vertexShader: fullscreenVertex, fragmentShader: resolveChunks(shaftLightFragment), uniforms: { ...tile } })),
+      waves.attach(new ShaderMaterial({ name: 'UnderwaterShaftLight', vertexShader: fullscreenVertex, fragmentShader: shaftLightFragment, uniforms: { ...tile } })),
       () => this.shaftTarget,
     );
     // The view's uniforms, the same objects in the water pass and the composite.
@@ -223,7 +223,7 @@ export class UnderwaterPost {
         name: 'UnderwaterVolume',
         defines: { ...decode },
         vertexShader: fullscreenVertex,
-        fragmentShader: resolveChunks(underwaterFragment),
+        fragmentShader: underwaterFragment,
         uniforms: { ...shared, ...view, tDiffuse: { value: null }, tGodRays: { value: this.rays.texture }, uWriteMask: { value: false } },
       })),
       (readBuffer) => {
@@ -247,7 +247,7 @@ export class UnderwaterPost {
         name: 'UnderwaterComposite',
         defines: { ...decode },
         vertexShader: fullscreenVertex,
-        fragmentShader: resolveChunks(compositeFragment),
+        fragmentShader: compositeFragment,
         uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.blurred.texture } },
       })),
       (readBuffer) => {

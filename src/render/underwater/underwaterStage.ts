@@ -1,6 +1,7 @@
 import type { PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import type { Ocean } from '../ocean/ocean';
 import type { OceanUnderwater } from './oceanUnderwater';
+import type { EncodedScene } from './underwaterPost';
 
 /**
  * The app's underwater passes, built on first use: their code (the composer, its passes and
@@ -15,6 +16,8 @@ export class UnderwaterStage {
   private code?: typeof import('./oceanUnderwater');
   private load?: Promise<void>;
   private shaftLightWindowForced = false;
+  /** The app's scene holds the boat: its materials write the faster encoding too (an opt-in the library leaves off). */
+  private encodedScene: EncodedScene = 'every-material';
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -28,8 +31,7 @@ export class UnderwaterStage {
   /** The passes, once loaded; starts loading them on the first call. */
   passes(): OceanUnderwater | undefined {
     if (!this.underwater && this.code) {
-      // The app's scene holds the boat: its materials write the faster encoding too (an opt-in the library leaves off).
-      this.underwater = new this.code.OceanUnderwater(this.renderer, this.scene, this.camera, this.ocean, { encodedScene: 'every-material' });
+      this.underwater = new this.code.OceanUnderwater(this.renderer, this.scene, this.camera, this.ocean, { encodedScene: this.encodedScene });
       this.underwater.forceShaftLightWindow = this.shaftLightWindowForced;
     }
     this.load ??= import('./oceanUnderwater').then(
@@ -65,6 +67,15 @@ export class UnderwaterStage {
   forceShaftLightWindow(on: boolean): void {
     this.shaftLightWindowForced = on;
     if (this.underwater) this.underwater.forceShaftLightWindow = on;
+  }
+
+  /** Draws through another kind of scene target from the next frame (the bench measures both). */
+  setEncodedScene(mode: EncodedScene): void {
+    if (mode === this.encodedScene) return;
+    this.underwater?.resetEncoding();
+    this.underwater?.dispose();
+    this.underwater = undefined;
+    this.encodedScene = mode;
   }
 
   dispose(): void {

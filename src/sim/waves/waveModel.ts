@@ -88,7 +88,7 @@ export interface LiveWaveModel extends WaveModel {
    * last call, counting afresh (FftWaveModel, whose twin has a ≤ 0.1 ms per frame budget).
    */
   takeMainThreadMs?(): number;
-  /** Where the model's CPU twin gets its data from a Worker: how, and how much has arrived (FftWaveModel). */
+  /** Where the model's CPU twin gets its data from a Worker: how much has arrived, and of which time (FftWaveModel). */
   twinStatus?(): TwinStatus;
   /** Heightmaps the "heightmap" teaching view shows and the API returns, where the model has any. */
   readonly heightmaps?: readonly Heightmap[];

@@ -8,15 +8,6 @@ import { tileOriginTexels } from '../../../sim/waves/originPhases';
 import { FftFoam } from './fftFoam';
 import { GpuFftOcean } from './gpuFft';
 import { WorkerFieldSource } from './fftFieldsSource';
-import { SharedFieldSource, sharedMemoryAvailable } from './sharedFieldSource';
-
-/**
- * Whether a cross-origin isolated page uses SharedFieldSource (a constant, to turn it off for
- * an A/B). Measured (scripts/loopCostProbe.ts, isolated, 4 interleaved blocks of 30 looped
- * frames, t = 10, load 1.75 -> 2.30): twinMs mean 0.132 (blocks 0.209 0.105 0.136 0.079)
- * against 0.353 (0.466 0.346 0.384 0.218) for the messages.
- */
-const USE_SHARED_FIELDS = true;
 import type { HeightmapLayout, WaveModelView } from '../waveModelView';
 import type { PassTiming } from '../../diagnostics/passTiming';
 
@@ -102,15 +93,11 @@ export class FftWaveView implements WaveModelView {
     this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
-    // Cross-origin isolated: fields over shared memory, no message per frame (issue 12's
-    // twinMs); elsewhere the Worker's messages, as before (USE_SHARED_FIELDS).
     model.attachSource(
-      USE_SHARED_FIELDS && sharedMemoryAvailable()
-        ? new SharedFieldSource((sea, time, fields) => model.receive(sea, time, fields))
-        : new WorkerFieldSource(
-            (reply) => model.receive(reply.sea, reply.time, reply.fields),
-            (ms) => model.addMainThreadMs(ms),
-          ),
+      new WorkerFieldSource(
+        (sea, time, fields) => model.receive(sea, time, fields),
+        (ms) => model.addMainThreadMs(ms),
+      ),
     );
   }
 

@@ -1,6 +1,6 @@
 import { FftOcean, type CascadeFields } from './fftOcean';
 import type { LiveWaveModel } from '../waveModel';
-import type { TwinStatus, TwinTransport } from './twinStatus';
+import type { TwinStatus } from './twinStatus';
 import type { OceanParams } from '../../params/params';
 import { seaStateFromParams, type SeaState } from '../spectra/seaState';
 import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample } from '../waveModel';
@@ -25,8 +25,6 @@ export function seaKey(sea: SeaState): string {
  * the fields at t; the answer arrives later through FftWaveModel.receive.
  */
 export interface FieldSource {
-  /** How its Worker hands the fields over; null once it has none (it could not start or failed: the model then computes on the calling thread). */
-  readonly transport: TwinTransport | null;
   request(sea: SeaState, time: number): void;
   /**
    * Arrays the model no longer reads (fields it replaced or refused), for the source to fill
@@ -113,15 +111,14 @@ export class FftWaveModel implements LiveWaveModel {
 
   /** See LiveWaveModel.twinStatus. */
   twinStatus(): TwinStatus {
-    return { transport: this.source?.transport ?? null, fieldsReceived: this.fieldsReceived, fieldsTime: this.ocean.fieldsTime };
+    return { fieldsReceived: this.fieldsReceived, fieldsTime: this.ocean.fieldsTime };
   }
 
   /**
    * Fields a FieldSource computed for `sea` at `time`; ignored if the sea changed meanwhile or
-   * they are older than those held. Returns whether they were adopted (a shared-memory source
-   * keeps a slot marked read only while the model reads it: SharedFieldSource).
+   * they are older than those held.
    */
-  receive(sea: SeaState, time: number, fields: CascadeFields[]): boolean {
+  receive(sea: SeaState, time: number, fields: CascadeFields[]): void {
     const held = this.ocean.fieldsTime;
     // The source hands back the sea object it was asked about: the same object is the same sea,
     // with no key string built (garbage every frame, so a share of the collections would start
@@ -133,7 +130,6 @@ export class FftWaveModel implements LiveWaveModel {
     const unread = refused ? fields : this.ocean.adoptFields(time, fields);
     this.source?.recycle?.(unread);
     if (!refused) this.fieldsReceived++;
-    return !refused;
   }
 
   /** The time whose fields answer a question about `time` (see the class comment). */
@@ -144,9 +140,6 @@ export class FftWaveModel implements LiveWaveModel {
     if (time === held) return time;
     const playing = !exact && this.source !== null && Math.abs(time - previous) <= MAX_FRAME_STEP && Math.abs(time - held) <= MAX_LAG_SECONDS;
     if (playing) {
-      // A source may deliver inside request (SharedFieldSource adopts the newest published
-      // fields there): answer from the fields held after it, or the question would ask the
-      // ocean for the older time and recompute every cascade's FFTs on this thread.
       this.source?.request(this.sea, time);
       return this.ocean.fieldsTime;
     }
