@@ -60,7 +60,7 @@ function installedVersion(name: string): string {
 }
 
 /** Module specifiers that name a package rather than a file or URL: `three`, `fft.js`, `three/addons/…`. */
-export function bareImports(code: string): string[] {
+function bareImports(code: string): string[] {
   return ts
     .preProcessFile(code, true, true)
     .importedFiles.map((file) => file.fileName)
@@ -104,7 +104,7 @@ const brightness = (c: Colour): number => (c.r + c.g + c.b) / 3;
  * is. The painted sky below the horizon is sea-coloured too, so the sea is told from it by
  * its waves: detail that a smooth sky has not (example at 480×270: 1.9 levels against 0.0).
  */
-export function seaAndSkyFaults(png: PNG): string[] {
+function seaAndSkyFaults(png: PNG): string[] {
   const band = Math.round(png.height * 0.15);
   const sky = rowsSeen(png, 0, band).colour;
   const sea = rowsSeen(png, png.height - band, png.height);
@@ -192,8 +192,9 @@ describe('the npm package', () => {
         return page.replace(line, '');
       }, example);
 
+    let pagesWritten = 0;
     async function look(page: string): Promise<{ faults: string[]; errors: string[]; missing: string[]; workers: string[] }> {
-      const name = `page-${Math.random().toString(36).slice(2)}.html`;
+      const name = `page-${++pagesWritten}.html`;
       writeFileSync(join(site, name), page);
       const missing: string[] = [];
       const { server, url } = await serveFolder(site, '/courses/graphics/week-3/', (path, status) => {
