@@ -16,7 +16,7 @@ import { defaultParams } from '../../src/sim/params/params';
  */
 
 function material(): OceanMaterial {
-  const view = { name: 'seed', chunkName: 'oceano_waves_test', uniforms: {} } as unknown as WaveModelView;
+  const view = { name: 'seed', chunkName: 'oceano_waves_test', chunk: '', uniforms: {} } as unknown as WaveModelView;
   const shared = { uSunColor: { value: null } } as unknown as ConstructorParameters<typeof OceanMaterial>[3];
   return new OceanMaterial(new WaveBinding(view), { fromAbove: new Texture(), fromBelow: new Texture() }, new CubeTexture(), shared);
 }

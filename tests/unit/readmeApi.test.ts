@@ -34,7 +34,7 @@ describe('README automation list', () => {
     const withoutShareUrl = automation.replace(/^oceano\.shareUrl\(\);.*$/m, '');
     expect(withoutShareUrl).not.toBe(automation);
     expect(unnamedMembers(withoutShareUrl)).toEqual(['shareUrl']);
-    const withoutPassTimings = automation.replace(/^oceano\.debug\.passTimings\(\);.*$/m, '');
+    const withoutPassTimings = automation.replace(/^await oceano\.debug\.passTimings\(\);.*$/m, '');
     expect(unnamedMembers(withoutPassTimings)).toEqual(['passTimings']);
   });
 

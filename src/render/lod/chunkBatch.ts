@@ -15,11 +15,9 @@ export interface ChunkGridData {
 }
 
 /**
- * Chunks of at most this many vertices are drawn expanded. SwiftShader runs every instance of
- * an instanced draw as a draw of its own (its command buffer loops over the instances), about
- * 12 µs each before any vertex is shaded: the default view's 786 one-quad chunks of band 5 and
- * 660 of band 4 cost 20 ms that way with a trivial vertex shader and a one-pixel scissor, more
- * than band 0's 6,912 triangles. A chunk this small costs little to write per vertex.
+ * Chunks of at most this many vertices are drawn expanded (the grid repeated in one plain
+ * draw) rather than instanced: a chunk this small costs little to write per vertex.
+ * perf: a software rasterizer pays for each instance as for a draw of its own (docs/performance.md, "Software rasterizer").
  */
 export const EXPANDED_UP_TO_VERTICES = 100;
 

@@ -13,8 +13,7 @@ import type { OceanMaterial } from '../ocean/oceanMaterial';
  * integer grid points (offset by aTile inside the chunk, same aChunk), the same triangles in
  * the same vertex order, so every vertex is computed from the same numbers as in the whole
  * chunk and the strip's pixels are those of the model alone; a chunk straddling a divider
- * then costs each model only the tiles on its side (vertices are what SwiftShader spends
- * most on). Bands whose chunks have fewer than TILES quads a side are drawn whole.
+ * then costs each model only the tiles on its side. Bands whose chunks have fewer than TILES quads a side are drawn whole.
  */
 const TILES = 4;
 /** Tile instances a band can draw in one frame; past it, straddling chunks are drawn whole. */

@@ -1,7 +1,7 @@
 /**
  * The camera's near distance from the eye's clearance above the water. A fixed 0.5 m near
  * plane clips the surface within half a metre of the eye, so an eye 5 cm up saw the lower
- * frame from inside the water (issue 13, §4). The near plane is brought in until it lies
+ * frame from inside the water. The near plane is brought in until it lies
  * above the surface with the waterline test's margin, whatever way the camera looks:
  *
  *   a near-plane point at distance n is eye + n (F + sy·t·U + sx·t·a·R), |sx|, |sy| ≤ 1, so

@@ -1,8 +1,8 @@
 import type { Material } from 'three';
 
 /**
- * Compiles a #define in or out of a material: a case is compiled in rather than branched on,
- * because SwiftShader runs both sides of a branch. Only a change marks the material for
+ * Compiles a #define in or out of a material: a case is compiled in rather than branched on
+ * (perf: a software rasterizer runs both sides of a branch; docs/performance.md). Only a change marks the material for
  * recompiling, and three.js keeps each compiled variant, so switching back and forth compiles
  * each once.
  */

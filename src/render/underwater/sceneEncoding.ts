@@ -10,7 +10,7 @@ import { setMaterialDefine } from '../shaders/materialDefines';
  * spectral sea reaches 29 (waves=fft, 20 m/s); the fog then dims it and the output clips at 1,
  * so the shoulder keeps it white. A square root over [0, 4] instead (every code) had steps of
  * 2 levels in the sky seen across a waterline; over [0, 1] it dimmed the sun seen from below
- * to pale blue (README, Performance, tenth stop).
+ * to pale blue (docs/performance.md).
  */
 export const SCENE_LOW_CODES = 239;
 export const SCENE_BRIGHTEST = 8;

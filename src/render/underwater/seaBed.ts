@@ -62,7 +62,8 @@ export class SeaBed {
    * The bed's depth under the mean sea level, and the waves' vertical reach (the model's
    * bound): a bed deeper than every trough is always under the water, so caustics.glsl's
    * test of whether a point is above the surface (one full evaluation of the displacement per
-   * pixel) is compiled out (CAUSTICS_BELOW_WAVES); SwiftShader would run it for nothing.
+   * pixel) is compiled out (CAUSTICS_BELOW_WAVES).
+   * perf: a software rasterizer runs both sides of a branch (docs/performance.md, "Software rasterizer").
    */
   setDepth(depth: number, waveReach: number): void {
     this.mesh.position.y = -depth;

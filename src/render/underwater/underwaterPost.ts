@@ -38,9 +38,8 @@ export type { PassTiming };
 
 /**
  * The shaft-light texture: repeating for one period of the lens, clamped for a window. One
- * 8-bit channel: the light is in [0, 1], and the god rays sum 20 filtered reads of it per
- * pixel, which SwiftShader filters far faster from R8 than from RGBA16F (underwater frame
- * 656 -> 550 ms, lower in all 8 interleaved blocks; the dive view moved by at most 1 level).
+ * 8-bit channel: the light is in [0, 1], and 8 bits hold it to within a level of the picture.
+ * perf: the god rays read it many times a pixel, and R8 filters far faster than RGBA16F on a software rasterizer (docs/performance.md, "Software rasterizer").
  */
 function shaftLightTarget(tile: ShaftLightTile): WebGLRenderTarget {
   const wrap = tile.kind === 'tile' ? RepeatWrapping : ClampToEdgeWrapping;
@@ -121,8 +120,7 @@ function blurMaterial(name: string, step: Vector2, encodeOutput = false): Shader
  * the per-pixel waterline mask); and with the blur on, a separable Gaussian blur
  * (horizontal, then vertical) and a composite that puts the sharp air side back and
  * tone-maps. The water pass and the blur run at half resolution when the blur is on: the
- * blur softens that detail anyway, and they were three quarters of the frame's cost at
- * full resolution (issue 14). With the blur off, the water pass runs at full resolution
+ * blur softens that detail anyway. With the blur off, the water pass runs at full resolution
  * and tone-maps onto the canvas itself. Only used while some of the view is under the water; above
  * it, the view renders directly.
  */
@@ -203,8 +201,8 @@ export class UnderwaterPost {
       uNear: { value: 0.1 },
       uFar: { value: 1000 },
     };
-    // The god rays' march, at half the water pass's resolution: the shafts are soft there, and
-    // marching at the water pass's own was about 40 of the underwater frame's 190 ms (SwiftShader).
+    // The god rays' march, at half the water pass's resolution: the shafts are soft there.
+    // perf: the march was the dearest part of the underwater frame at the water pass's resolution (docs/performance.md).
     this.raysPass = new QuadPass(
       new ShaderMaterial({
         name: 'UnderwaterGodRays',
@@ -295,8 +293,8 @@ export class UnderwaterPost {
   setBlur(sigma: number): void {
     this.blurOn = sigma > 0;
     const kernel = linearSampledKernel(halfResolutionSigma(sigma), BLUR_MAX_RADIUS, BLUR_MAX_TAPS);
-    // The default σ's kernel lies within 1 texel: one pass of four taps instead of two passes
-    // (the frame about 17 ms cheaper under SwiftShader, README Performance, tenth stop).
+    // The default σ's kernel lies within 1 texel: one pass of four taps instead of two passes.
+    // perf: one pass fewer of the half-resolution target (docs/performance.md, "Software rasterizer").
     this.onePassOffset = this.blurOn ? onePassBlurOffset(halfResolutionSigma(sigma)) : null;
     this.volumePass.uniforms.uWriteMask.value = this.blurOn;
     for (const pass of [this.blurV, this.compositePass]) pass.enabled = this.blurOn;

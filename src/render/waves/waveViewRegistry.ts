@@ -13,8 +13,8 @@ export type WaveModelMaker = (params: OceanParams, renderer: WebGLRenderer) => W
  * How the render side gets each model's code, keyed by the `waves` parameter: adding a
  * model to the `waves` parameter makes the compiler ask for an entry here. The seed's is in
  * the page's own chunk (the default first frame draws it); every other model's code is a
- * chunk of its own, fetched the first time a view needs it (issue 14: the page's JavaScript
- * before its first frame). A maker gets the renderer for models that run GPU passes of their
+ * chunk of its own, fetched the first time a view needs it, so the page loads less before its
+ * first frame. A maker gets the renderer for models that run GPU passes of their
  * own (an FFT).
  */
 const LOADERS: { [K in WavesChoice]: () => Promise<WaveModelMaker> } = {

@@ -3,7 +3,7 @@ import { TRACK_POINTS, type TrackPoint } from './wakeTrack';
 /**
  * The boat's Kelvin wake: the CPU twin of shaders/wake.glsl. Keep the two in step.
  *
- * Method (issue 16's first option, "superposition of sources along the recorded track"):
+ * Method, a superposition of sources along the recorded track:
  * the hull is a moving patch of pressure, and the sea's linear response to it is the sum,
  * over the hull's past positions x_s(t − τ), of the response to a pressure impulse applied
  * there τ seconds ago (Lighthill, Waves in Fluids, 1978, §3.10; Darmon, Benzaquen & Raphaël,

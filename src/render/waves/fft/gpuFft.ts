@@ -70,7 +70,7 @@ export class GpuInverseFft {
   private readonly scene = new Scene();
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly mesh: Mesh;
-  /** The stage material of each radix (shaders/fftStage.frag, RADIX_4 for 4): compiled apart, since SwiftShader would run both sides of a branch on the radix. */
+  /** The stage material of each radix (shaders/fftStage.frag, RADIX_4 for 4): compiled apart rather than branched on (perf: see setMaterialDefine). */
   private readonly stages: Map<number, RawShaderMaterial>;
   private readonly radices: number[];
   private readonly twiddle: DataTexture;

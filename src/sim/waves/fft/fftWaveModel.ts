@@ -39,9 +39,9 @@ export interface FieldSource {
  * jump (a seek, a paused setTime, the first frame) is computed at once on the calling thread,
  * so a frozen time is always exact. Longer than any step the frame loop's clock takes (at most
  * 0.1 s a frame, src/app/time/simulationClock.ts), with room for float64 sums of those steps, as
- * BoatMotion's maxStep: at exactly 0.1, a loop slower than 10 frames/s (SwiftShader: every
- * frame) took steps of 0.1 plus an ulp on 70 % of frames, and each computed all the cascades'
- * FFTs on the main thread (tens of ms) instead of asking the Worker.
+ * BoatMotion's maxStep: at exactly 0.1, a loop slower than 10 frames/s took steps of 0.1
+ * plus an ulp on most frames, and each computed all the cascades' FFTs on the main thread
+ * instead of asking the Worker.
  */
 export const MAX_FRAME_STEP = 0.25;
 
@@ -73,7 +73,7 @@ export class FftWaveModel implements LiveWaveModel {
 
   /**
    * `now`: the clock that times the calling thread's work (ms), performance.now() unless a
-   * test gives another. The issue's budget is ≤ 0.1 ms per frame on the main thread.
+   * test gives another.
    */
   constructor(
     params: FftWaveParams,
