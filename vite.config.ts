@@ -59,7 +59,7 @@ function lilGuiFontFile(): Plugin {
 }
 
 /** The build's shader text without comments (scripts/build/glslMinify.ts); dev and tests read the files as they are. */
-function shaderText(): Plugin {
+export function shaderText(): Plugin {
   return {
     name: 'oceano-shader-text',
     apply: 'build',
@@ -85,7 +85,7 @@ export default defineConfig({
     target: 'es2022',
     chunkSizeWarningLimit: 800,
     rollupOptions: {
-      input: { index: 'index.html', oceano: 'src/lib.ts' },
+      input: { index: 'index.html', oceano: 'src/element.ts' },
       // oceano.js is a module pages import from: keep its exports (OceanoViewElement).
       preserveEntrySignatures: 'exports-only',
       output: {

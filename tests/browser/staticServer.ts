@@ -18,17 +18,28 @@ const TYPES: Record<string, string> = {
  * content types and nothing else, so no cross-origin isolation headers either.
  */
 export function serveUnderSubPath(): Promise<{ server: Server; url: string }> {
+  return serveFolder(DIST, SUB_PATH);
+}
+
+/**
+ * Serves `folder` under `subPath` on loopback, as serveUnderSubPath serves dist/; `served`
+ * hears each request's path and status.
+ */
+export function serveFolder(folder: string, subPath: string, served: (path: string, status: number) => void = () => {}): Promise<{ server: Server; url: string }> {
   const server = createServer(async (request, response) => {
     const path = decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname);
-    if (!path.startsWith(SUB_PATH)) {
+    if (!path.startsWith(subPath)) {
+      served(path, 404);
       response.writeHead(404).end();
       return;
     }
-    const relative = normalize(path.slice(SUB_PATH.length) || 'index.html');
+    const relative = normalize(path.slice(subPath.length) || 'index.html');
     try {
-      const body = await readFile(join(DIST, relative));
+      const body = await readFile(join(folder, relative));
+      served(path, 200);
       response.writeHead(200, { 'content-type': TYPES[extname(relative)] ?? 'application/octet-stream' }).end(body);
     } catch {
+      served(path, 404);
       response.writeHead(404).end();
     }
   });
@@ -36,7 +47,7 @@ export function serveUnderSubPath(): Promise<{ server: Server; url: string }> {
     server.listen(0, '127.0.0.1', () => {
       const address = server.address();
       const port = typeof address === 'object' && address ? address.port : 0;
-      resolve({ server, url: `http://127.0.0.1:${port}${SUB_PATH}` });
+      resolve({ server, url: `http://127.0.0.1:${port}${subPath}` });
     }),
   );
 }

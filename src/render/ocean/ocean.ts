@@ -2,7 +2,7 @@ import { Color, Object3D, Vector3, type CubeTexture, type DataTexture, type IUni
 import { defaultParams, validateParams, type OceanParams, type ParamKey } from '../../sim/params/params';
 import { paramsChanged } from '../../sim/params/paramChanges';
 import type { LiveWaveModel, SurfaceSample, WavesChoice } from '../../sim/waves/waveModel';
-import { compareModelNames } from '../../sim/compare/compareLayout';
+import { COMPARE_OFF, compareModelNames } from '../../sim/compare/compareLayout';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../../sim/optics/fresnel';
 import { SUN_LIGHT_COLOR, sunDirection } from '../../sim/optics/sun';
 import { fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../../sim/underwater/snellWindow';
@@ -104,7 +104,8 @@ export class Ocean extends Object3D {
     this.seaBed = new SeaBed(this.binding, { ...this.waterVolume, ...this.caustics, ...this.lightUniforms });
     this.add(this.seaBed.mesh);
     this.visible = available === first;
-    this.apply(full);
+    // Until the first model's code arrives, the stand-in's parameters are the ones in force.
+    this.apply(this.visible ? full : { ...full, waves: available, compare: COMPARE_OFF });
     this.ready = this.visible ? Promise.resolve() : this.loadModels(full);
   }
 

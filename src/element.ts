@@ -2,9 +2,10 @@ import widgetStyles from './app/panel/widgets.css?inline';
 import { OceanoViewElement } from './app/element/oceanoViewElement';
 
 /**
- * The library build (dist/oceano.js): registers <oceano-view>. The sky images are looked
- * up beside this script, so dist/ works when copied anywhere; the path is a variable so
- * Vite leaves the URL to be resolved at run time.
+ * The element's entry (dist/oceano.js in the app's build, dist/element/oceano-view.js in the
+ * package's): registers <oceano-view>. The sky and the boat are looked up beside this script,
+ * so it works when copied anywhere; the path is a variable so Vite leaves the URL to be
+ * resolved at run time.
  */
 const scriptDirectory = './';
 OceanoViewElement.assetBase = new URL(scriptDirectory, import.meta.url).href;

@@ -1,0 +1,276 @@
+import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import puppeteer, { type Browser } from 'puppeteer';
+import { execFile } from 'node:child_process';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { promisify } from 'node:util';
+import { PNG } from 'pngjs';
+import ts from 'typescript';
+import { serveFolder } from './staticServer';
+
+/**
+ * The npm package as a stranger gets it: `npm pack`, the tarball installed with three.js
+ * into an empty folder, examples/threejs-scene.html served from there by a plain file server
+ * (no bundler, only the page's import map) and looked at in headless Chromium; a user's
+ * TypeScript compiled against the installed types; and the built library's imports read.
+ */
+
+const ROOT = join(import.meta.dirname, '..', '..');
+const EXAMPLE = join(ROOT, 'examples', 'threejs-scene.html');
+const CONSUMER = join(ROOT, 'tests', 'browser', 'fixtures', 'package-consumer');
+const TSC = join(ROOT, 'node_modules', 'typescript', 'bin', 'tsc');
+const NPM = process.platform === 'win32' ? 'npm.cmd' : 'npm';
+const exec = promisify(execFile);
+
+/** What `npm run build:package` writes, and what it is built from. */
+const PACKAGE_OUTPUTS = ['dist/lib/oceano.js', 'dist/lib/types/index.d.ts', 'dist/element/oceano-view.js'];
+const PACKAGE_INPUTS = ['src', 'shaders', 'public', 'scripts', 'package.json', 'package-lock.json', 'vite.config.ts', 'vite.lib.config.ts', 'tsconfig.json', 'tsconfig.lib.json'];
+
+function newestChange(path: string): number {
+  const stat = statSync(path);
+  if (!stat.isDirectory()) return stat.mtimeMs;
+  return Math.max(stat.mtimeMs, ...readdirSync(path).map((entry) => newestChange(join(path, entry))));
+}
+
+/** A package build newer than every file it is made from (rerunning this test alone) is packed as it is. */
+function packageBuildIsFresh(): boolean {
+  const outputs = PACKAGE_OUTPUTS.map((file) => join(ROOT, file));
+  if (!outputs.every((file) => existsSync(file))) return false;
+  const built = Math.min(...outputs.map((file) => statSync(file).mtimeMs));
+  return PACKAGE_INPUTS.map((input) => join(ROOT, input)).every((input) => !existsSync(input) || newestChange(input) < built);
+}
+
+/**
+ * The environment for the npm commands this test runs: without the variables a surrounding
+ * `npm test` sets (its package, its prefix), which would point them back at the repository.
+ * The registry, cache and proxy settings stay.
+ */
+function npmEnvironment(): NodeJS.ProcessEnv {
+  const kept = /^npm_config_(registry|cache|userconfig|globalconfig|https?_proxy|proxy|noproxy|cafile|strict_ssl)$/i;
+  return Object.fromEntries(Object.entries(process.env).filter(([name]) => !/^npm_/i.test(name) || kept.test(name)));
+}
+
+async function npm(args: string[], cwd: string): Promise<void> {
+  await exec(NPM, args, { cwd, env: npmEnvironment(), maxBuffer: 64 * 1024 * 1024, shell: process.platform === 'win32' });
+}
+
+function installedVersion(name: string): string {
+  return (JSON.parse(readFileSync(join(ROOT, 'node_modules', name, 'package.json'), 'utf8')) as { version: string }).version;
+}
+
+/** Module specifiers that name a package rather than a file or URL: `three`, `fft.js`, `three/addons/…`. */
+function bareImports(code: string): string[] {
+  return ts
+    .preProcessFile(code, true, true)
+    .importedFiles.map((file) => file.fileName)
+    .filter((name) => !/^(\.{1,2}\/|\/|[a-z][a-z0-9+.-]*:)/i.test(name));
+}
+
+const isThreeImport = (name: string): boolean => name === 'three' || name.startsWith('three/addons/');
+
+function filesUnder(folder: string): string[] {
+  return readdirSync(folder, { recursive: true, encoding: 'utf8' }).filter((file) => statSync(join(folder, file)).isFile());
+}
+
+interface Colour {
+  r: number;
+  g: number;
+  b: number;
+}
+
+/** The mean colour of rows [fromRow, toRow), and their detail: the mean difference between side-by-side pixels, levels a channel. */
+function rowsSeen(png: PNG, fromRow: number, toRow: number): { colour: Colour; detail: number } {
+  const sum = { r: 0, g: 0, b: 0 };
+  let differences = 0;
+  for (let y = fromRow; y < toRow; y++) {
+    for (let x = 0; x < png.width; x++) {
+      const i = (y * png.width + x) * 4;
+      sum.r += png.data[i];
+      sum.g += png.data[i + 1];
+      sum.b += png.data[i + 2];
+      if (x > 0) for (let c = 0; c < 3; c++) differences += Math.abs(png.data[i + c] - png.data[i + c - 4]);
+    }
+  }
+  const n = (toRow - fromRow) * png.width;
+  return { colour: { r: sum.r / n, g: sum.g / n, b: sum.b / n }, detail: differences / ((toRow - fromRow) * (png.width - 1) * 3) };
+}
+
+const distance = (a: Colour, b: Colour): number => Math.hypot(a.r - b.r, a.g - b.g, a.b - b.b);
+const brightness = (c: Colour): number => (c.r + c.g + c.b) / 3;
+
+/**
+ * What is wrong with a picture that should show sky above and sea below; empty when nothing
+ * is. The painted sky below the horizon is sea-coloured too, so the sea is told from it by
+ * its waves: detail that a smooth sky has not (example at 480×270: 1.9 levels against 0.0).
+ */
+function seaAndSkyFaults(png: PNG): string[] {
+  const band = Math.round(png.height * 0.15);
+  const sky = rowsSeen(png, 0, band).colour;
+  const sea = rowsSeen(png, png.height - band, png.height);
+  const whole = rowsSeen(png, 0, png.height).colour;
+  let spread = 0;
+  for (let i = 0; i < png.data.length; i += 4) spread = Math.max(spread, distance({ r: png.data[i], g: png.data[i + 1], b: png.data[i + 2] }, whole));
+  const named = (c: Colour): string => `rgb(${c.r.toFixed(0)}, ${c.g.toFixed(0)}, ${c.b.toFixed(0)})`;
+  const faults: string[] = [];
+  if (spread < 20) faults.push(`blank: every pixel within ${spread.toFixed(1)} levels of ${named(whole)}`);
+  if (!(sky.b > sky.r && brightness(sky) > 100)) faults.push(`the top rows are not sky: ${named(sky)}`);
+  if (!(sea.colour.b > sea.colour.r && brightness(sea.colour) < brightness(sky))) faults.push(`the bottom rows are not water below a brighter sky: ${named(sea.colour)}`);
+  if (distance(sky, sea.colour) < 40) faults.push(`sky ${named(sky)} and sea ${named(sea.colour)} are alike`);
+  if (sea.detail < 0.75) faults.push(`no waves: the bottom rows' detail is ${sea.detail.toFixed(2)} levels`);
+  return faults;
+}
+
+describe('the npm package', () => {
+  let work = '';
+  let site = '';
+  let browser: Browser;
+
+  beforeAll(async () => {
+    work = mkdtempSync(join(tmpdir(), 'oceano-package-'));
+    const tarballs = join(work, 'tarball');
+    site = join(work, 'site');
+    mkdirSync(tarballs);
+    mkdirSync(site);
+    // prepack builds the library, the element and the types unless they are already newer than their sources.
+    await npm(['pack', '--pack-destination', tarballs, ...(packageBuildIsFresh() ? ['--ignore-scripts'] : [])], ROOT);
+    const [tarball] = readdirSync(tarballs).filter((file) => file.endsWith('.tgz'));
+    writeFileSync(join(site, 'package.json'), JSON.stringify({ name: 'oceano-package-user', private: true, type: 'module' }));
+    await npm(
+      ['install', '--prefer-offline', '--no-audit', '--no-fund', join(tarballs, tarball), `three@${installedVersion('three')}`, `@types/three@${installedVersion('@types/three')}`],
+      site,
+    );
+    browser = await puppeteer.connect({ browserWSEndpoint: inject('browserEndpoint') });
+  }, 600_000);
+
+  afterAll(async () => {
+    await browser?.disconnect();
+    if (work) rmSync(work, { recursive: true, force: true });
+  });
+
+  it('holds the library, its types, the element and the element\'s boat, and nothing else', () => {
+    const installed = join(site, 'node_modules', 'oceano');
+    expect(readdirSync(installed).sort()).toEqual(['LICENSE', 'README.md', 'dist', 'package.json']);
+    const files = filesUnder(join(installed, 'dist'));
+    for (const file of ['lib/oceano.js', 'lib/types/index.d.ts', 'lib/types/element.d.ts', 'element/oceano-view.js', 'element/models/boat.glb']) expect(files).toContain(file);
+    // The FFT twin's Worker ships beside the library that starts it.
+    expect(files.filter((file) => /^lib\/assets\/fftFieldsWorker-[\w-]+\.js$/.test(file))).toHaveLength(1);
+  });
+
+  it('leaves three and its addons as the library\'s only bare imports; everything else is bundled', () => {
+    const lib = join(site, 'node_modules', 'oceano', 'dist', 'lib');
+    const scripts = filesUnder(lib).filter((file) => file.endsWith('.js'));
+    const imports = new Set(scripts.flatMap((file) => bareImports(readFileSync(join(lib, file), 'utf8'))));
+    expect(imports).toContain('three');
+    expect([...imports].filter((name) => !isThreeImport(name))).toEqual([]);
+    // Control: a dependency left unbundled, in each form an import can take, is seen.
+    const planted = 'import FFT from "fft.js";\nexport { GUI } from "lil-gui";\nconst plot = () => import("uplot");\nimport { Water } from "three/examples/jsm/objects/Water.js";';
+    expect(bareImports(planted).filter((name) => !isThreeImport(name))).toEqual(['fft.js', 'lil-gui', 'uplot', 'three/examples/jsm/objects/Water.js']);
+  });
+
+  it('compiles a three.js user\'s TypeScript against the installed types', async () => {
+    const project = join(site, 'consumer');
+    cpSync(CONSUMER, project, { recursive: true });
+    const compile = (...options: string[]) => exec(process.execPath, [TSC, '-p', join(project, 'tsconfig.json'), ...options], { cwd: project });
+    // Our declaration files are checked too (no skipLibCheck): one that names a module the package lacks fails here.
+    await expect(compile()).resolves.toBeDefined();
+    // Control: without its @ts-expect-error the wrongly typed line fails the compile (the
+    // declarations, just checked, are skipped this time: only the user's file matters).
+    const source = readFileSync(join(project, 'consumer.ts'), 'utf8');
+    const unmarked = source.replace(/^\s*\/\/ @ts-expect-error.*\n/m, '');
+    expect(unmarked).not.toBe(source);
+    writeFileSync(join(project, 'consumer.ts'), unmarked);
+    await expect(compile('--skipLibCheck')).rejects.toMatchObject({ stdout: expect.stringMatching(/consumer\.ts\(\d+,\d+\): error TS2322/) });
+  });
+
+  describe('examples/threejs-scene.html, served as files', () => {
+    const example = readFileSync(EXAMPLE, 'utf8');
+    /** The example with `lines` taken out; each must be there to take. */
+    const without = (...lines: string[]): string =>
+      lines.reduce((page, line) => {
+        expect(page).toContain(line);
+        return page.replace(line, '');
+      }, example);
+
+    let pagesWritten = 0;
+    async function look(page: string): Promise<{ faults: string[]; errors: string[]; missing: string[]; workers: string[] }> {
+      const name = `page-${++pagesWritten}.html`;
+      writeFileSync(join(site, name), page);
+      const missing: string[] = [];
+      const { server, url } = await serveFolder(site, '/courses/graphics/week-3/', (path, status) => {
+        if (status !== 200) missing.push(path);
+      });
+      const tab = await browser.newPage();
+      try {
+        tab.setDefaultTimeout(120_000);
+        const errors: string[] = [];
+        tab.on('pageerror', (error) => errors.push(String(error)));
+        tab.on('console', (message) => {
+          if (message.type() === 'error' && !message.location().url?.endsWith('/favicon.ico')) errors.push(message.text());
+        });
+        // Counts the animation loop's frames, so that every page is looked at after the same number.
+        await tab.evaluateOnNewDocument(() => {
+          const request = window.requestAnimationFrame.bind(window);
+          const counted = window as unknown as { framesStarted: number };
+          counted.framesStarted = 0;
+          window.requestAnimationFrame = (callback) =>
+            request((time) => {
+              counted.framesStarted++;
+              callback(time);
+            });
+        });
+        await tab.setViewport({ width: 480, height: 270, deviceScaleFactor: 1 });
+        await tab.goto(`${url}${name}`, { waitUntil: 'load' });
+        await tab.waitForFunction(() => (window as unknown as { framesStarted: number }).framesStarted >= 12);
+        const png = PNG.sync.read(Buffer.from(await tab.screenshot({ type: 'png' })));
+        return { faults: seaAndSkyFaults(png), errors, missing: missing.filter((path) => !path.endsWith('/favicon.ico')), workers: tab.workers().map((worker) => worker.url()) };
+      } finally {
+        await tab.close();
+        server.close();
+      }
+    }
+
+    it('shows sea below sky, with no error and the FFT twin\'s Worker running from the installed package', async () => {
+      const seen = await look(example);
+      expect(seen.errors).toEqual([]);
+      expect(seen.missing).toEqual([]);
+      expect(seen.faults).toEqual([]);
+      expect(seen.workers).toEqual([expect.stringMatching(/\/node_modules\/oceano\/dist\/lib\/assets\/fftFieldsWorker-[\w-]+\.js$/)]);
+    });
+
+    it('control: without the Ocean in the scene the picture is blank', async () => {
+      const seen = await look(without('scene.add(ocean);', 'scene.add(ocean.sky);'));
+      expect(seen.faults).toContainEqual(expect.stringMatching(/^blank/));
+    });
+
+    it('control: the sky alone, its sea-coloured lower half without waves, is not taken for sea and sky', async () => {
+      const seen = await look(without('scene.add(ocean);'));
+      expect(seen.faults).toEqual([expect.stringMatching(/^no waves/)]);
+    });
+  });
+
+  it('registers <oceano-view> from oceano/element, with its boat found beside it', async () => {
+    writeFileSync(
+      join(site, 'element.html'),
+      '<!doctype html><script type="module" src="./node_modules/oceano/dist/element/oceano-view.js"></script><oceano-view t="3" style="display:block;width:320px;height:180px"></oceano-view>',
+    );
+    const served: string[] = [];
+    const missing: string[] = [];
+    const { server, url } = await serveFolder(site, '/courses/graphics/week-3/', (path, status) => (status === 200 ? served : missing).push(path));
+    const tab = await browser.newPage();
+    try {
+      tab.setDefaultTimeout(120_000);
+      const errors: string[] = [];
+      tab.on('pageerror', (error) => errors.push(String(error)));
+      await tab.goto(`${url}element.html`, { waitUntil: 'load' });
+      await tab.waitForFunction(() => (document.querySelector('oceano-view') as { oceano?: { ready: Promise<unknown> } } | null)?.oceano);
+      await tab.evaluate(() => (document.querySelector('oceano-view') as unknown as { oceano: { ready: Promise<unknown> } }).oceano.ready);
+      expect(errors).toEqual([]);
+      expect(missing.filter((path) => !path.endsWith('/favicon.ico'))).toEqual([]);
+      expect(served).toContainEqual(expect.stringMatching(/\/node_modules\/oceano\/dist\/element\/models\/boat\.glb$/));
+    } finally {
+      await tab.close();
+      server.close();
+    }
+  });
+});
