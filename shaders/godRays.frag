@@ -1,9 +1,9 @@
 // God rays: sunlight scattered towards the eye out of the shafts under the waves, marched
 // along each line of sight through the bake of the shaft light (shaders/shaftLight.frag). Drawn
 // at half the water pass's resolution (UnderwaterPost, the 'rays' pass: a quarter of the canvas's
-// with the blur on), since the shafts are soft at that scale, and read back by the water pass
-// with one filtered fetch (shaders/underwater.frag). Under SwiftShader the march was about 40 of
-// the underwater frame's 190 ms at the water pass's own resolution. Written with the scene
+// with the blur on), since the shafts are soft at that scale and the march is the underwater
+// frame's dearest part, and read back by the water pass with one filtered fetch
+// (shaders/underwater.frag; docs/shader-notes.md). Written with the scene
 // target's encoding (src/render/underwater/sceneEncoding.ts): RGBA8, square roots up to 1, a shoulder above.
 
 #include <packing>

@@ -1,7 +1,7 @@
 // Appended to three.js's colorspace_fragment (src/render/underwater/sceneEncoding.ts), so it ends every
 // material's shader, ours and three's (the boat's). While the scene is drawn for the underwater
 // passes, OCEANO_SCENE_ENCODE is defined on its materials and the linear colour is stored in an
-// RGBA8 target (SwiftShader writes and reads 8-bit targets far faster than half floats): up to
+// RGBA8 target (perf: for the software rasterizer, docs/shader-notes.md): up to
 // 1, its square root in the codes below SCENE_LOW_SHARE, which spends them about as the
 // output's sRGB levels do, so neither the dark water nor the sky seen through the waterline
 // bands; from 1 to SCENE_BRIGHTEST, a logarithmic shoulder in the codes above, for highlights

@@ -310,14 +310,13 @@ export class OceanView {
     // The same packed data as last frame (a paused view, or the wake off) is already uploaded.
     if (data !== this.appliedWake) applyWakeUniforms(this.wake, data);
     this.appliedWake = data;
-    this.material.setWakeOn(data.count >= 2);
     this.wakeBound = bound;
     this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
   }
 
-  /** The culling bounds: the model's, grown by the wake's. */
-  private cullingBounds(): { vertical: number; horizontal: number } {
-    return this.wakeBound === 0 ? this.bounds : { vertical: this.bounds.vertical + this.wakeBound, horizontal: this.bounds.horizontal };
+  /** The culling bounds: the model's (a compared model's too), grown by the wake's. */
+  private cullingBounds(bounds = this.bounds): { vertical: number; horizontal: number } {
+    return this.wakeBound === 0 ? bounds : { vertical: bounds.vertical + this.wakeBound, horizontal: bounds.horizontal };
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -447,7 +446,7 @@ export class OceanView {
       // chunk that can reach the strip is the same chunk the model alone would draw there.
       const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
       const chunks = [this.ocean, ...this.sides.map((side) => side.chunks)];
-      const bounds = [this.cullingBounds(), ...this.sides.map((side) => side.bounds())];
+      const bounds = [this.cullingBounds(), ...this.sides.map((side) => this.cullingBounds(side.bounds()))];
       // A chunk straddling a strip's frustum is drawn as only the tiles that reach the strip
       // (OceanChunks, TILES): a chunk across a divider costs each model its own side's triangles.
       strips.forEach((strip, i) => {
