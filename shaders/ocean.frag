@@ -94,9 +94,9 @@ float fresnelLookup(sampler2D table, float cosIncidence) {
   return mix(a, b, x - float(i));
 }
 
-// The underside's shading, compiled in only while the view may be under the water
-// (OceanMaterial.setSeenFromBelow; otherwise only front faces are drawn).
-#ifdef OCEAN_SEEN_FROM_BELOW
+// The underside's shading, called only while the view may be under the water
+// (OCEAN_SEEN_FROM_BELOW, set by OceanMaterial.setSeenFromBelow; otherwise only front faces
+// are drawn, and the compiler drops the uncalled function).
 const float WATER_OVER_AIR = WATER_IOR;
 
 // v points from the surface down to the eye; n is the surface normal (facing the air).
@@ -116,7 +116,6 @@ vec3 shadeFromBelow(vec3 v, vec3 n) {
   vec3 mirrored = waterVolumeColor(reflect(-v, towardsWater));
   return mix(through, mirrored, reflectance);
 }
-#endif
 
 void main() {
   vec3 toEye = uEyeRelative - vRelativePosition;
