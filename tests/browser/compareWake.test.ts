@@ -17,7 +17,9 @@ import { compareStrips } from '../../src/sim/compare/compareLayout';
  *
  * Negative control: the old fault, the compared models' pixels drawn without the wake (their
  * vertices still carry it): the fragment shader's wake block compiled out of every ocean
- * material of the split page, which must differ from the models alone across the wake.
+ * material of the split page, which must differ from the models alone across the wake. (The
+ * code before the fix, wake switched on for the first model's material only, failed this test
+ * with 6,964 pixels differing in the gerstner strip.)
  */
 const harness = useHarness();
 
