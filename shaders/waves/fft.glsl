@@ -17,10 +17,13 @@
 //   WAVE_FOAM: float waveFoam(vec2 gridXZ), foam coverage in [0, 1]
 //   WAVE_FABRICATED_NORMAL: vec3 waveFabricatedNormal(vec2 gridXZ), the seed's finite-
 //     difference normal of the same surface, for the comparison teaching view
+//   WAVE_SLOPE_ROUGHNESS: float waveUnresolvedSlopeVariance(), the mean-square slope of the
+//     waves this pixel's normal does not show, which the sun's glint takes as roughness
 
 #define WAVE_PIXEL_NORMALS
 #define WAVE_FOAM
 #define WAVE_FABRICATED_NORMAL
+#define WAVE_SLOPE_ROUGHNESS
 
 uniform sampler2D uFftDisplacement0;
 uniform sampler2D uFftDisplacement1;
@@ -42,6 +45,13 @@ uniform float uFoamEnabled;  // 0 or 1
 uniform float uFoamThreshold;
 uniform float uFoamSoftness;   // half-width of the soft edge around the threshold
 uniform float uFabricatedDelta;
+// Per cascade: the mean-square slope of its waves (both axes), and its shortest and longest
+// wavelength, m; and the whole sea's mean-square slope, Cox & Munk's for this wind
+// (src/sim/optics/coxMunk.ts), of which the cascades resolve only the waves longer than a metre or so.
+uniform vec3 uFftSlopeVariance;
+uniform vec3 uFftShortestWave;
+uniform vec3 uFftLongestWave;
+uniform float uSeaSlopeVariance;
 
 // The CPU twin's bilinear read: u = x n/L, texel floor(u) mod n and the next, weights fract(u).
 // `offset` (texels) is 0 for an absolute grid point, the cascade's uFftNearOffset for one
@@ -100,17 +110,37 @@ vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, v
 // rasterizer, which runs both sides of a branch (docs/shader-notes.md).
 // Per cascade: the derivatives texture (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z) and the foam texture
 // (foam potential, J, ∂Dx/∂x) (shaders/fftFoam.frag): 6 reads per pixel.
+//
+// Seamless from geometry to roughness (Bruneton, Neyret & Holzschuch 2010): a cascade whose
+// waves are shorter than two of this pixel's footprints would alias (the far sea sparkles),
+// so the normal keeps only the share of each cascade's slopes the pixel resolves, and what
+// it drops, with the waves shorter than every cascade, becomes the roughness of the glint:
+// unresolved = Cox–Munk's σ² − Σ (share · σ_c)². The share is the part of the cascade's band,
+// in ln k, whose waves span two footprints (src/sim/optics/resolvedSlopes.ts resolvedShare):
+// a k⁻³ tail holds equal slope variance per e-fold of k. The foam keeps the whole Jacobian.
 vec4 fftPixelDerivatives;
 float fftPixelJxx;
 vec2 fftPixelPotentials;
+vec4 fftPixelSlopeDerivatives;
+float fftPixelSlopeJxx;
+float fftPixelUnresolvedVariance;
 
 void fftReadPixelFields(vec2 p, bool near) {
-  fftPixelDerivatives = fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
+  // The footprint's longer side: at grazing angles a pixel runs far along the view.
+  float footprint = max(max(length(dFdx(p)), length(dFdy(p))), 1e-6);
+  vec3 share = clamp(log(uFftLongestWave / (2.0 * footprint)) / log(uFftLongestWave / uFftShortestWave), 0.0, 1.0);
+  vec4 derivatives0 = fftField(uFftDerivatives0, p, uFftScale.x, fftOffset(0, near));
+  vec4 derivatives1 = fftField(uFftDerivatives1, p, uFftScale.y, fftOffset(1, near));
+  vec4 derivatives2 = fftField(uFftDerivatives2, p, uFftScale.z, fftOffset(2, near));
   vec4 foam0 = fftField(uFftFoam0, p, uFftScale.x, fftOffset(0, near));
   vec4 foam1 = fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near));
   vec4 foam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
+  fftPixelDerivatives = derivatives0 + derivatives1 + derivatives2;
   fftPixelJxx = foam0.b + foam1.b + foam2.b;
   fftPixelPotentials = vec2(foam1.r, foam2.r);
+  fftPixelSlopeDerivatives = share.x * derivatives0 + share.y * derivatives1 + share.z * derivatives2;
+  fftPixelSlopeJxx = dot(share, vec3(foam0.b, foam1.b, foam2.b));
+  fftPixelUnresolvedVariance = max(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - dot(share * share, uFftSlopeVariance));
 }
 
 // ocean.frag's hook: p is the pixel's grid point relative to the render origin (near) or absolute.
@@ -133,6 +163,19 @@ vec2 fftFoamPotentials(vec2 p, bool near) {
 
 vec4 fftDisplacementFields(vec2 p, bool near) {
   return fftCascadeSum(uFftDisplacement0, uFftDisplacement1, uFftDisplacement2, p, near);
+}
+
+// The slopes this pixel resolves, for its normal (see fftReadPixelFields).
+vec4 fftSlopeDerivativeFields(vec2 p, bool near) {
+  return fftPixelSlopeDerivatives;
+}
+
+float fftSlopeJxx(vec2 p, bool near) {
+  return fftPixelSlopeJxx;
+}
+
+float waveUnresolvedSlopeVariance() {
+  return fftPixelUnresolvedVariance;
 }
 #else
 // The vertices: the last grid point's displacement sums, kept per shader invocation, so a
@@ -163,6 +206,15 @@ float fftJxx(vec2 p, bool near) {
 vec2 fftFoamPotentials(vec2 p, bool near) {
   return vec2(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r);
 }
+
+// A vertex has no footprint: its normal keeps every slope.
+vec4 fftSlopeDerivativeFields(vec2 p, bool near) {
+  return fftDerivativeFields(p, near);
+}
+
+float fftSlopeJxx(vec2 p, bool near) {
+  return fftJxx(p, near);
+}
 #endif
 
 vec3 waveDisplacement(vec2 gridXZ) {
@@ -172,8 +224,8 @@ vec3 waveDisplacement(vec2 gridXZ) {
 // Normal of P(x, z) = (x + Dx, h, z + Dz): ∂P/∂z × ∂P/∂x with every derivative exact from the
 // spectrum (i k h, −λ k k̂ h), as FftOcean.normalAt.
 vec3 fftNormal(vec2 p, bool near) {
-  float jxx = fftJxx(p, near);
-  vec4 d = fftDerivativeFields(p, near);
+  float jxx = fftSlopeJxx(p, near);
+  vec4 d = fftSlopeDerivativeFields(p, near);
   vec3 tx = vec3(1.0 + jxx, d.x, d.w);
   vec3 tz = vec3(d.w, d.y, 1.0 + d.z);
   return normalize(cross(tz, tx));

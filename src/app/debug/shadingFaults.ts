@@ -14,6 +14,8 @@ export interface ShadingFixes {
   relativePixelNormals: boolean;
   /** The near plane brought in for an eye less than about a metre above the water (src/render/ocean/nearPlane.ts). */
   clearanceNear: boolean;
+  /** The glint from slopes a pixel cannot resolve turned into roughness (Cox–Munk, shaders/ocean.frag sunGlint). */
+  slopeRoughness: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -33,6 +35,17 @@ const ABSOLUTE_PIXELS: ShaderFault = {
     ['wavePixelFields(vRelativeGridXZ, true)', 'wavePixelFields(vGridXZ, false)'],
     ['waveNormalNear(vRelativeGridXZ)', 'waveNormal(vGridXZ)'],
     ['waveFoamNear(vRelativeGridXZ)', 'waveFoam(vGridXZ)'],
+  ],
+};
+/**
+ * The glint as it was: every cascade's slopes in every pixel, however far, and a fixed
+ * pow(…, 900) highlight that does not know the wind.
+ */
+const FIXED_GLINT: ShaderFault = {
+  name: 'fixed-glint',
+  fragment: [
+    ['vec3 share = clamp(', 'vec3 share = vec3(1.0) + 0.0 * clamp('],
+    ['color += sunGlint(n, v, waveUnresolvedSlopeVariance(), facetReflectance);', 'color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;'],
   ],
 };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
@@ -68,6 +81,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(NO_DETAIL_NORMALS, fixes.detailNormals);
   toggle(ABSOLUTE_PIXELS, fixes.relativePixelNormals);
   toggle(UNMARKED_SEA_BED, fixes.seaBedMark);
+  toggle(FIXED_GLINT, fixes.slopeRoughness);
   const ocean = view.ocean;
   const material = ocean.material;
   const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);

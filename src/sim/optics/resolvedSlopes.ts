@@ -1,4 +1,5 @@
 import { GRAVITY } from '../waves/dispersion';
+import type { Cascade } from '../waves/fft/cascades';
 import { PM_ALPHA, PM_BETA, windAt19_5 } from '../waves/spectra/piersonMoskowitz';
 
 /**
@@ -87,4 +88,15 @@ export const SUN_DISC_SLOPE_VARIANCE = 0.00465 ** 2 / 8;
 /** The facets' variance within a pixel: the sea's total less what the normals show, never below the sun's disc. */
 export function unresolvedSlopeVariance(total: number, resolved: number): number {
   return Math.max(SUN_DISC_SLOPE_VARIANCE, total - resolved);
+}
+
+/**
+ * The shortest and longest wavelength (m) an FFT cascade carries: its band's edges
+ * (src/sim/waves/fft/cascades.ts); the smallest tile runs to its grid's Nyquist, two texels,
+ * and the largest from its own size.
+ */
+export function cascadeWavelengths(cascade: Cascade, n: number): { shortest: number; longest: number } {
+  const shortest = Number.isFinite(cascade.kMax) ? (2 * Math.PI) / cascade.kMax : (2 * cascade.size) / n;
+  const longest = cascade.kMin > 0 ? (2 * Math.PI) / cascade.kMin : cascade.size;
+  return { shortest, longest };
 }

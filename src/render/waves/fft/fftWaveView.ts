@@ -4,6 +4,8 @@ import type { OceanParams } from '../../../sim/params/params';
 import type { FftWaveModel } from '../../../sim/waves/fft/fftWaveModel';
 import { cascadeSpread } from '../../../sim/waves/spectra/spectralBounds';
 import { foamJacobianThreshold, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../../sim/waves/fft/whitecaps';
+import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
+import { cascadeWavelengths } from '../../../sim/optics/resolvedSlopes';
 import { tileOriginTexels } from '../../../sim/waves/originPhases';
 import { FftFoam } from './fftFoam';
 import { GpuFftOcean } from './gpuFft';
@@ -35,7 +37,8 @@ type FftUniforms = Record<
   | 'uFftDisplacement0' | 'uFftDisplacement1' | 'uFftDisplacement2'
   | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
   | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
-  | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta',
+  | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta'
+  | 'uFftSlopeVariance' | 'uFftShortestWave' | 'uFftLongestWave' | 'uSeaSlopeVariance',
   IUniform
 >;
 
@@ -89,6 +92,10 @@ export class FftWaveView implements WaveModelView {
       uFoamThreshold: { value: this.foamThreshold },
       uFoamSoftness: { value: 0.03 },
       uFabricatedDelta: { value: FABRICATED_DELTA },
+      uFftSlopeVariance: { value: new Vector3() },
+      uFftShortestWave: { value: new Vector3(1, 1, 1) },
+      uFftLongestWave: { value: new Vector3(2, 2, 2) },
+      uSeaSlopeVariance: { value: 0 },
     };
     this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
     this.foam = new FftFoam(this.gpu);
@@ -160,6 +167,7 @@ export class FftWaveView implements WaveModelView {
     const { sea, tiles } = this.model.ocean.setup;
     const cascadeSpreads = tiles.map((tile) => cascadeSpread(tile, sea.depth));
     const spreads = cascadeSpreads.map((spread) => sea.choppiness * spread.slope);
+    this.setSlopeStatistics(cascadeSpreads.map((spread) => spread.slope * spread.slope), params.windSpeed);
     this.heightmapLayout = { channel: 1, range: [3 * cascadeSpreads[0].height, 3 * cascadeSpreads[cascadeSpreads.length - 1].height] };
     const thresholds = spreads.map((spread) => foamThresholdForSpread(spread, params.windSpeed, params.foamThreshold, CASCADE_FOAM_SHARE));
     const changed = thresholds.some((t, c) => t !== this.cascadeThresholds[c]);
@@ -174,6 +182,19 @@ export class FftWaveView implements WaveModelView {
     }
     // New thresholds make other foam: rebuild it from the warm-up at the next update.
     if (rebuilt || changed || foamToggled) this.time = Number.NaN;
+  }
+
+  /**
+   * What the glint needs to turn the slopes a pixel cannot show into roughness (shaders/waves/fft.glsl):
+   * each cascade's realised mean-square slope and band of wavelengths, and Cox & Munk's total.
+   */
+  private setSlopeStatistics(cascadeVariances: number[], windSpeed: number): void {
+    const { sea, cascades } = this.model.ocean.setup;
+    const bands = cascades.map((cascade) => cascadeWavelengths(cascade, sea.fftSize));
+    (this.uniforms.uFftSlopeVariance.value as Vector3).fromArray(cascadeVariances);
+    (this.uniforms.uFftShortestWave.value as Vector3).fromArray(bands.map((band) => band.shortest));
+    (this.uniforms.uFftLongestWave.value as Vector3).fromArray(bands.map((band) => band.longest));
+    this.uniforms.uSeaSlopeVariance.value = seaSlopeVariance(windSpeed);
   }
 
   /** FFT passes for every cascade at `time`, then the foam (stepped, or rebuilt after a jump). */
