@@ -132,6 +132,22 @@ float fresnelLookup(sampler2D table, float cosIncidence) {
   return mix(a, b, x - float(i));
 }
 
+// The colour of the water itself from its optics (OCEAN_WATER_OPTICS; src/sim/optics/waterColor.ts):
+// the light that reaches just below the surface, the sun's through the surface plus the
+// sky's (taken as a sky as bright as its zenith all over, π L), is scattered back up by the
+// water molecules in the share R(λ) = 0.33 b_b/(a + b_b), evenly over the upward directions
+// (radiance R E / π), and leaves through the surface, its beam widened by n² (the (1 − F)
+// is the mix with the reflected sky below). Red is absorbed within metres, blue scattered:
+// deep clear water is dark blue, whatever colour was picked.
+#ifdef OCEAN_WATER_OPTICS
+vec3 waterBodyColor() {
+  float sunHeight = max(uSunDirection.y, 0.0);
+  vec3 sunThrough = uSunColor * SUN_IRRADIANCE * sunHeight * (1.0 - fresnelLookup(uFresnelTable, sunHeight));
+  vec3 skyThrough = 3.14159265 * skyCubeColor(vec3(0.0, 1.0, 0.0));
+  return WATER_BODY_REFLECTANCE * (sunThrough + skyThrough) / (3.14159265 * WATER_IOR * WATER_IOR);
+}
+#endif
+
 // The underside's shading, called only while the view may be under the water
 // (OCEAN_SEEN_FROM_BELOW, set by OceanMaterial.setSeenFromBelow; otherwise only front faces
 // are drawn, and the compiler drops the uncalled function).
@@ -247,7 +263,11 @@ void main() {
   r.y = max(r.y, 0.0);
   vec3 sky = skyCubeColor(normalize(r));
 
+#ifdef OCEAN_WATER_OPTICS
+  vec3 water = waterBodyColor();
+#else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
+#endif
   vec3 color = mix(water, sky, reflectance);
 
   vec3 halfway = normalize(uSunDirection + v);
