@@ -120,7 +120,7 @@ vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, v
 // a k⁻³ tail holds equal slope variance per e-fold of k. The foam keeps the whole Jacobian.
 vec4 fftPixelDerivatives;
 float fftPixelJxx;
-vec2 fftPixelPotentials;
+float fftPixelPotential;
 vec4 fftPixelSlopeDerivatives;
 float fftPixelSlopeJxx;
 float fftPixelUnresolvedVariance;
@@ -137,7 +137,7 @@ void fftReadPixelFields(vec2 p, bool near) {
   vec4 foam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
   fftPixelDerivatives = derivatives0 + derivatives1 + derivatives2;
   fftPixelJxx = foam0.b + foam1.b + foam2.b;
-  fftPixelPotentials = vec2(foam1.r, foam2.r);
+  fftPixelPotential = foam2.r;
   fftPixelSlopeDerivatives = share.x * derivatives0 + share.y * derivatives1 + share.z * derivatives2;
   fftPixelSlopeJxx = dot(share, vec3(foam0.b, foam1.b, foam2.b));
   fftPixelUnresolvedVariance = max(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - dot(share * share, uFftSlopeVariance));
@@ -157,8 +157,8 @@ float fftJxx(vec2 p, bool near) {
   return fftPixelJxx;
 }
 
-vec2 fftFoamPotentials(vec2 p, bool near) {
-  return fftPixelPotentials;
+float fftFoamPotential(vec2 p, bool near) {
+  return fftPixelPotential;
 }
 
 vec4 fftDisplacementFields(vec2 p, bool near) {
@@ -202,9 +202,9 @@ float fftJxx(vec2 p, bool near) {
   return fftDisplacementFields(p, near).w;
 }
 
-// Each remembering cascade's foam potential at a grid point (cascades 1 and 2).
-vec2 fftFoamPotentials(vec2 p, bool near) {
-  return vec2(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r);
+// The smallest cascade's foam potential at a grid point: the foam it remembers.
+float fftFoamPotential(vec2 p, bool near) {
+  return fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r;
 }
 
 // A vertex has no footprint: its normal keeps every slope.
@@ -250,23 +250,24 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
   return normalize(cross(pz - p0, px - p0));
 }
 
-// Foam: what each cascade accumulated (fading over seconds, src/render/waves/fft/fftFoam.ts, each
-// against its own band's threshold) and where the whole sea's Jacobian folds right now, half
-// white at the threshold itself (so Monahan's share of the sea is at least half white) and
-// fully white ¼σ deeper.
+// Foam: where the whole sea's Jacobian folds right now, half white at the threshold itself and
+// fully white ¼σ deeper, and what the smallest cascade accumulated (fading over seconds,
+// src/render/waves/fft/fftFoam.ts, against its own band's threshold). Seen from 150 m above,
+// the near-white share of the picture is then within 30 % of Monahan's coverage at 10, 15
+// and 20 m/s (tests/browser/light/foam.test.ts).
 float fftFoamAt(vec2 p, bool near) {
   float jxx = fftJxx(p, near);
   vec4 d = fftDerivativeFields(p, near);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
   float now = smoothstep(uFoamThreshold + uFoamSoftness, uFoamThreshold - uFoamSoftness, jacobian);
-  // The largest tile's foam is left out: its texels are tens of metres wide (22 m in a gale),
-  // which drew soft white blotches; breaking happens at the scale of the shorter waves.
-  // Each stores a foam potential (1 at its threshold, shaders/fftFoam.frag): white from 1 on.
-  vec2 potentials = fftFoamPotentials(p, near);
-  float potential = max(potentials.x, potentials.y);
-  // A wide ramp: foam left behind thins out as it fades (translucent, then gone) instead of
-  // shrinking as a hard-edged white floe.
-  float kept = smoothstep(0.5, 1.5, potential);
+  // The two larger tiles' foam is left out: their texels are metres wide (4.6 m and 22 m in a
+  // gale), which drew rounded white floes tens of metres across and twice Monahan's white from
+  // above; breaking happens at the scale of the shorter waves. The potential is 1 at the
+  // cascade's threshold and grows into the fold (shaders/fftFoam.frag); the foam left behind
+  // is white only where the fold went deep, and thins out over a wide ramp as it fades
+  // (translucent, then gone) instead of shrinking as a hard-edged floe.
+  float potential = fftFoamPotential(p, near);
+  float kept = smoothstep(1.25, 2.25, potential);
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 

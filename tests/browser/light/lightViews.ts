@@ -31,3 +31,10 @@ export const HORIZON_VIEW = { width: 640, height: 360, t: 10, farBand: [182, 198
 export function horizonQuery(windSpeed: number): string {
   return `waves=fft&windSpeed=${windSpeed}&t=${HORIZON_VIEW.t}&cam=0,10,0,0,10,-1000`;
 }
+
+/** Foam seen from 150 m straight above, the sun 30° high: its glint lies 60° off the nadir, outside the 55° frame. */
+export const FOAM_VIEW = { width: 480, height: 270, t: 10 } as const;
+
+export function foamQuery(windSpeed: number): string {
+  return `waves=fft&windSpeed=${windSpeed}&sunElevation=30&t=${FOAM_VIEW.t}&cam=0,150,0,0,0,-0.01`;
+}
