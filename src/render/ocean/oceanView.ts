@@ -325,9 +325,10 @@ export class OceanView {
     lightWithCaustics(model, this.waveBinding, this.caustics);
   }
 
-  /** After a lost WebGL context comes back: paints again what lived only in render targets (the sun's sky). */
+  /** After a lost WebGL context comes back: draws again what lived only in render targets (the FFT's fields, the sun's sky). */
   contextRestored(): void {
     this.ocean.forgetSelection();
+    for (const view of [this.waveView, ...this.sides.map((side) => side.view)]) view.contextRestored?.();
     if (!this.sunSky) return;
     this.sunSky.forget();
     this.sunSky.update(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
