@@ -20,14 +20,15 @@ const STEP = 1 / 60;
  * How far the JS heap after a forced GC may grow from the end of the first round to the end of
  * the last: 1 MB over the ten-minute soak, for the heap less V8's compiled code (read from a heap
  * snapshot). The compiled code grows apart from any leak while V8 optimizes the frame's
- * functions: over the first ten-minute soak it went from 3.11 to 4.43 MB, most of it in the
- * first ten rounds, while the rest of the heap grew 0.21 MB. So the whole heap is held over the
- * soak's second half, once that has settled: at most half the megabyte. The short form's two
- * rounds after the first get 0.2 MB of the heap less code (there the code grew 0.42 MB and the
- * rest 0.05 MB), where a restore that leaked three.js's old managers left about 0.25 MB each.
+ * functions, fast at first, then slowly: in the ten-minute soaks of docs/soak.md it went from
+ * 3.11 to 4.35-4.43 MB, while the rest of the heap grew 0.21 MB. So the whole heap is held to the
+ * megabyte over the soak's second half (it grew 0.56 MB there; a restore's leak of 0.55 MB a
+ * round grew it 4.4 MB). The short form's two rounds after the first get 0.2 MB of the heap
+ * less code (there the code grew 0.42 MB and the rest 0.05 MB), where a restore that leaked
+ * three.js's old managers left about 0.25 MB each.
  */
 const FULL_HEAP_GROWTH = 1e6;
-const FULL_SECOND_HALF_GROWTH = 0.5e6;
+const FULL_SECOND_HALF_GROWTH = 1e6;
 const SHORT_HEAP_GROWTH = 0.2e6;
 
 interface GpuCounts {
@@ -214,7 +215,7 @@ const plantRendererLeak: Plant = (page) =>
 describe('soak', () => {
   it(
     FULL
-      ? `soak: ${FULL_MS / 60000} minutes of rounds through every mode, each with a lost and restored context: heap less compiled code within 1 MB of round 1, the whole heap within 0.5 MB over the second half, GPU resources flat`
+      ? `soak: ${FULL_MS / 60000} minutes of rounds through every mode, each with a lost and restored context: heap less compiled code within 1 MB of round 1, the whole heap within 1 MB over the second half, GPU resources flat`
       : `soak (short: ${SHORT_ROUNDS} rounds through every mode, each with a lost and restored context; npm run soak for 10 minutes): heap after GC and GPU resources flat`,
     async () => {
       const { soak, consoleErrors } = await openSoak(FULL ? 480 : 160, FULL ? 270 : 90);
