@@ -23,7 +23,7 @@ const STEP = 1 / 60;
  * functions, fast at first, then slowly: in the ten-minute soaks of docs/soak.md it went from
  * 3.11 to 4.35-4.43 MB, while the rest of the heap grew 0.21 MB. So the whole heap is held to the
  * megabyte over the soak's second half (it grew 0.56 MB there; a restore's leak of 0.55 MB a
- * round grew it 4.4 MB). The short form's two rounds after the first get 0.2 MB of the heap
+ * round grew it 4.7 MB). The short form's two rounds after the first get 0.2 MB of the heap
  * less code (there the code grew 0.42 MB and the rest 0.05 MB), where a restore that leaked
  * three.js's old managers left about 0.25 MB each.
  */
