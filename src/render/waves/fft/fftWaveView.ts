@@ -3,7 +3,7 @@ import fftChunk from '../../../../shaders/waves/fft.glsl?raw';
 import type { OceanParams } from '../../../sim/params/params';
 import type { FftWaveModel } from '../../../sim/waves/fft/fftWaveModel';
 import { cascadeSpread } from '../../../sim/waves/spectra/spectralBounds';
-import { foamJacobianThreshold, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../../sim/waves/fft/whitecaps';
+import { foamJacobianThreshold, foamRemaining, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../../sim/waves/fft/whitecaps';
 import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
 import { cascadeWavelengths } from '../../../sim/optics/resolvedSlopes';
 import { tileOriginTexels } from '../../../sim/waves/originPhases';
@@ -13,8 +13,6 @@ import { WorkerFieldSource } from './fftFieldsSource';
 import type { HeightmapLayout, WaveModelView } from '../waveModelView';
 import type { PassTiming } from '../../diagnostics/passTiming';
 
-/** Foam fades as e^{−t/τ}: a whitecap lingers a few seconds after its crest has passed. */
-export const FOAM_FADE_SECONDS = 2.5;
 /** Steps longer than this (a seek, a paused jump) rebuild the foam from a short warm-up instead. */
 const FOAM_MAX_STEP = 0.25;
 /** The warm-up: foam at t is built from the sea at t − 3 s, t − 2.4 s, …, t, so a frozen t always draws the same foam. */
@@ -214,11 +212,11 @@ export class FftWaveView implements WaveModelView {
     const dt = time - previous;
     if (dt > 0 && dt <= FOAM_MAX_STEP) {
       this.gpu.update(time);
-      this.foam.step(Math.exp(-dt / FOAM_FADE_SECONDS), this.cascadeThresholds, this.cascadeSoftness);
+      this.foam.step(foamRemaining(dt), this.cascadeThresholds, this.cascadeSoftness);
     } else {
       for (let k = FOAM_WARMUP_STEPS; k >= 0; k--) {
         this.gpu.update(time - k * FOAM_WARMUP_DT);
-        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : Math.exp(-FOAM_WARMUP_DT / FOAM_FADE_SECONDS), this.cascadeThresholds, this.cascadeSoftness);
+        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : foamRemaining(FOAM_WARMUP_DT), this.cascadeThresholds, this.cascadeSoftness);
       }
     }
     this.bindFoam();
