@@ -98,3 +98,18 @@ describe('slope variance a spectrum resolves', () => {
     expect(SUN_DISC_SLOPE_VARIANCE).toBeCloseTo(2.7e-6, 7);
   });
 });
+
+describe('cascade wavelengths for the glint', () => {
+  it('the bands touch: each tile’s longest wave is the next larger tile’s shortest, 4 texels of it; the smallest runs to 2 texels', async () => {
+    const { cascadeLayout } = await import('../../src/sim/waves/fft/cascades');
+    const { cascadeWavelengths } = await import('../../src/sim/optics/resolvedSlopes');
+    const n = 128;
+    const cascades = cascadeLayout(87.6, n);
+    const bands = cascades.map((c) => cascadeWavelengths(c, n));
+    expect(bands[0].longest).toBeCloseTo(cascades[0].size, 9);
+    expect(bands[0].shortest).toBeCloseTo((4 * cascades[0].size) / n, 9);
+    expect(bands[1].longest).toBeCloseTo(bands[0].shortest, 9);
+    expect(bands[2].longest).toBeCloseTo(bands[1].shortest, 9);
+    expect(bands[2].shortest).toBeCloseTo((2 * cascades[2].size) / n, 9);
+  });
+});
