@@ -111,9 +111,10 @@ vec3 sunGlint(vec3 n, vec3 v, float variance, float fresnel) {
 }
 
 // The glint is the sun's own radiance, many times the sky's: a display shows it only through
-// a tone curve. Below the knee colours are left exactly as they were (the water, the sky's
-// reflection, the foam); above it they roll off towards white instead of clipping, so the
-// glint keeps its falloff, and its width, where it is brighter than the screen.
+// a tone curve. Below the knee colours are left exactly as they were (the water, most of the
+// sky's reflection); above it they roll off towards white instead of clipping, so the glint
+// keeps its falloff, and its width, where it is brighter than the screen. The foam's white
+// comes out a little greyer (0.88 → 0.80).
 const float HIGHLIGHT_KNEE = 0.6;
 vec3 rollOffHighlights(vec3 c) {
   vec3 over = max(c - HIGHLIGHT_KNEE, 0.0) / (1.0 - HIGHLIGHT_KNEE);
