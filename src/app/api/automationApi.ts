@@ -41,6 +41,12 @@ export interface OceanoApi {
    */
   physics(): Promise<PhysicsReport>;
   notices(): string[];
+  /** The lessons in the course's order, in the page's language (src/app/lessons/lessonCatalog.ts). */
+  lessons(): { id: string; title: string; section: string }[];
+  /** The open lesson's id, or null. */
+  lesson(): string | null;
+  /** Opens a lesson: its view and its card. An unknown id shows a notice, changes nothing and answers false. */
+  setLesson(id: string): boolean;
   /** The link that reopens this view exactly (what the share button copies). */
   shareUrl(): string;
   /** Whether the frame loop runs (it stops off screen and in hidden tabs) and frames drawn so far. */
@@ -115,6 +121,9 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     stats: () => app.stats(),
     physics: async () => started(app.physicsPanel()).measure(),
     notices: () => app.notices.messages(),
+    lessons: () => app.lessonList(),
+    lesson: () => app.lesson(),
+    setLesson: (id) => app.openLesson(id),
     shareUrl: () => app.shareUrl(),
     activity: () => app.activity(),
     debug: {
@@ -161,6 +170,9 @@ export function createFailedApi(reason: Error): OceanoApi {
     boat: fail,
     stats: fail,
     notices: fail,
+    lessons: fail,
+    lesson: fail,
+    setLesson: fail,
     shareUrl: fail,
     activity: fail,
     physics: () => Promise.reject(reason),
