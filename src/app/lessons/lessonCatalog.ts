@@ -79,7 +79,8 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'gerstner-steepness', preset: 'gerstner-steepness' },
   { id: 'compare-models', preset: 'compare-models' },
   { id: 'physics-panel', preset: 'fresh-breeze', params: { physics: true } },
-  { id: 'kelvin-wake', preset: 'kelvin-wake', params: { wakeGuide: true } },
+  // The preset's view moved 35 m west: the boat stands clear of the card on the left.
+  { id: 'kelvin-wake', preset: 'kelvin-wake', params: { wakeGuide: true }, camera: { position: [25, 60, 60], target: [25, 0, -10] } },
   { id: 'wake-turn', preset: 'wake-turn', params: { wakeGuide: true } },
   {
     id: 'horizon',

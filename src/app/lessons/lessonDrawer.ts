@@ -187,6 +187,8 @@ export class LessonDrawer {
     const language = this.tr.language;
     const words = LESSON_TEXTS[lesson.id];
     const quote = LESSON_QUOTES[lesson.id];
+    // Walking with the keys from inside the card: the focus stays in it, on the new title.
+    const focusInCard = this.card.contains(document.activeElement);
     this.card.replaceChildren();
     this.card.dataset.lesson = lesson.id;
     const title = element('h2', 'oceano-lesson-title', LESSON_TITLES[lesson.id][language]);
@@ -211,6 +213,7 @@ export class LessonDrawer {
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);
     if (this.params) this.sync(this.params);
+    if (focusInCard) title.focus({ preventScroll: true });
   }
 
   private buildControl(key: ParamKey): HTMLElement {
