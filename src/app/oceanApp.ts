@@ -70,7 +70,7 @@ export class OceanApp {
     this.scaffold.playButton.sync(this.clock.playing);
     const tick = (seconds: number) => {
       this.controls?.steer(Math.min(seconds, SimulationClock.MAX_STEP));
-      this.clock.advance(seconds);
+      this.clock.advance(seconds, Number(this.params.timeScale));
       this.renderFrame();
     };
     this.loop = new FrameLoop({ tick, redraw: () => this.renderFrame(), playing: () => this.clock.playing });
@@ -111,6 +111,7 @@ export class OceanApp {
       onPlayingChange: (playing) => this.setPlaying(playing),
       onShare: () => void this.share(),
       onDive: () => this.orbit.dive(),
+      onStep: () => this.step(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
     });
     this.lessons = new LessonHost(this.container, this.tr, showPanel, this.params, {
@@ -296,6 +297,12 @@ export class OceanApp {
   getParams = (): OceanParams => ({ ...this.params });
   setTime = (seconds: number): void => (this.clock.setTime(checkTime(seconds)), this.loop.requestRender());
   play = (): void => this.setPlaying(true);
+  /** Pauses, then advances one frame of 1/60 s at the time scale and draws it: the frame a 60 fps loop would draw next. */
+  step = (): void => {
+    this.setPlaying(false);
+    this.clock.step(Number(this.params.timeScale));
+    this.loop.requestRender();
+  };
   pause = (): void => this.setPlaying(false);
   setCamera = (pose: CameraPose): void => this.orbit.setPose(checkCameraPose(pose));
   camera = (): CameraPose => this.orbit.pose();

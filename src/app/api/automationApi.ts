@@ -22,6 +22,8 @@ export interface OceanoApi {
   setTime(seconds: number): void;
   play(): void;
   pause(): void;
+  /** Pauses and advances one frame of 1/60 s times timeScale, then draws it: the frame playing at 60 fps draws next. */
+  step(): void;
   renderFrame(): void;
   getParams(): OceanParams;
   setParams(partial: Partial<OceanParams>): OceanParams;
@@ -109,6 +111,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     setTime: (seconds) => app.setTime(seconds),
     play: () => app.play(),
     pause: () => app.pause(),
+    step: () => app.step(),
     renderFrame: () => app.renderFrame(true),
     loaded: () => app.whenPartsLoaded().then(() => app.renderFrame(true)),
     getParams: () => app.getParams(),
@@ -159,6 +162,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     setTime: fail,
     play: fail,
     pause: fail,
+    step: fail,
     renderFrame: fail,
     loaded: () => ready,
     getParams: fail,

@@ -261,6 +261,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   normals: 'Normales',
   view: 'Vista',
   fresnelPlot: 'Gráfico de Fresnel',
+  timeScale: 'Velocidad (escala de tiempo)',
   physics: 'Panel de física',
   boatSpeed: 'Velocidad del barco',
   boatHeading: 'Rumbo del barco',

@@ -38,6 +38,7 @@ export interface ControlPanelHooks {
   onPlayingChange(playing: boolean): void;
   onShare(): void;
   onDive(): void;
+  onStep(): void;
   onSurface(): void;
 }
 
@@ -86,6 +87,11 @@ export class ControlPanel {
     this.controllers.push(
       this.gui.add(this.model, 'playing').name(tr.ui('playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
+    // The teacher's time controls beside Play: slow motion, and one frame at a time while paused.
+    const speed = this.addControl(this.gui, 'timeScale', hooks);
+    this.controllers.push(speed);
+    this.paramControllers.set('timeScale', speed);
+    this.gui.add({ step: () => hooks.onStep() }, 'step').name(teachingWord(tr, 'step'));
     // lil-gui draws a function as a <button>: focusable and keyboard operable.
     this.gui.add({ share: () => hooks.onShare() }, 'share').name(tr.ui('share'));
     const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
