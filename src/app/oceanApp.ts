@@ -21,7 +21,6 @@ import { ContextWatch } from './boot/contextLoss';
 import { AppControls } from './panel/appControls';
 import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waves/waveViewRegistry';
 import { COMPARE_OFF } from '../sim/compare/compareLayout';
-import { Vector3 } from 'three';
 import { findLesson, lessonIds, lessonView } from './lessons/lessonCatalog';
 import { LessonHost } from './lessons/lessonHost';
 
@@ -118,12 +117,7 @@ export class OceanApp {
       openLesson: (id) => this.openLesson(id),
       onParam: (key, value) => this.setParams({ [key]: value }),
       openFolders: (keys) => this.controls?.openFoldersOf(keys),
-      project: (x, y, z) => this.projectToCanvas(x, y, z),
-      boat: () => {
-        const { position, heading } = this.boatMotion.info();
-        return { x: position[0], z: position[2], heading };
-      },
-      camera: () => this.orbit.pose(),
+      scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, boat: this.boatMotion.info() }),
     });
     if (state.lesson) this.lessons.current = state.lesson;
     performance.mark('oceano:controls');
@@ -255,8 +249,8 @@ export class OceanApp {
   }
 
   /**
-   * Opens a lesson: its view as a preset sets it (the defaults, its parameters, its camera,
-   * its time), then its card. An unknown id changes nothing and says so in a notice.
+   * Opens a lesson: its view as a preset sets it (the defaults, its parameters, its camera;
+   * the clock runs on), then its card. An unknown id changes nothing and says so in a notice.
    */
   openLesson(id: string): boolean {
     const lesson = typeof id === 'string' ? findLesson(id) : null;
@@ -264,7 +258,7 @@ export class OceanApp {
       this.notify(message('lessonUnknown', { name: String(id), known: lessonIds.join(', ') }));
       return false;
     }
-    const { params, camera, cullingCamera, time } = lessonView(lesson);
+    const { params, camera, cullingCamera } = lessonView(lesson);
     if (cullingCamera && params.freezeCulling && this.started) {
       // As at start-up: the selection is frozen from the culling camera, then seen from the lesson's.
       this.setParams({ ...params, freezeCulling: false });
@@ -273,10 +267,6 @@ export class OceanApp {
     }
     this.setParams(params);
     if (this.started) this.orbit.setPose(camera);
-    if (time !== null) {
-      this.setTime(time);
-      this.pause();
-    }
     void this.lessons?.show(lesson.id);
     return true;
   }
@@ -286,13 +276,6 @@ export class OceanApp {
     if (!this.lessons) throw new Error('The ocean has not started yet: await oceano.ready first.');
     return this.lessons.titles();
   };
-
-  /** A world point's place on the canvas, CSS pixels from its top left; null behind the camera. */
-  private projectToCanvas(x: number, y: number, z: number): [number, number] | null {
-    const p = new Vector3(x, y, z).project(this.view.camera);
-    if (p.z > 1 || p.z < -1) return null;
-    return [((p.x + 1) / 2) * this.canvas.clientWidth, ((1 - p.y) / 2) * this.canvas.clientHeight];
-  }
 
   getParams = (): OceanParams => ({ ...this.params });
   setTime = (seconds: number): void => (this.clock.setTime(checkTime(seconds)), this.loop.requestRender());

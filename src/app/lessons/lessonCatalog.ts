@@ -13,11 +13,7 @@ export interface Lesson {
   preset?: PresetName;
   params?: Partial<OceanParams>;
   camera?: CameraPose;
-  /** Frozen at this time (seconds); absent: the sea keeps running. */
-  time?: number;
 }
-
-const underwaterCamera = (position: CameraPose['position'], target: CameraPose['target']): CameraPose => ({ position, target });
 
 export const LESSONS: readonly Lesson[] = [
   { id: 'flat-plane', preset: 'flat-plane' },
@@ -43,7 +39,7 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'fresnel-schlick', preset: 'fresnel', params: { fresnel: false } },
   {
     id: 'boat-twin',
-    params: { swellAmplitude: 1.6, swellFrequency: 0.12, rippleStrength: 0.15 },
+    preset: 'boat-pitch',
     camera: { position: [18, 6, 14], target: [0, 0, -4] }
   },
   { id: 'boat-pitch', preset: 'boat-pitch' },
@@ -51,17 +47,17 @@ export const LESSONS: readonly Lesson[] = [
   {
     id: 'underwater-fog',
     params: { fogDensity: 0.06 },
-    camera: underwaterCamera([0, -5, 20], [0, -6, -20])
+    camera: { position: [0, -5, 20], target: [0, -6, -20] }
   },
   {
     id: 'caustics',
     params: { seaBedDepth: 10, godRays: false, sunElevation: 60 },
-    camera: underwaterCamera([0, -3, 14], [0, -10, -6])
+    camera: { position: [0, -3, 14], target: [0, -10, -6] }
   },
   {
     id: 'god-rays',
     params: { sunElevation: 40, sunAzimuth: 20 },
-    camera: underwaterCamera([0, -10, 20], [0, -4, -20])
+    camera: { position: [0, -10, 20], target: [0, -4, -20] }
   },
   { id: 'lod-bands', preset: 'lod-bands' },
   {
@@ -84,7 +80,7 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'wake-turn', preset: 'wake-turn', params: { wakeGuide: true } },
   {
     id: 'horizon',
-    params: { lodColors: true },
+    preset: 'lod-bands',
     camera: { position: [0, 120, 60], target: [0, 60, -1500] }
   },
 ];
@@ -100,7 +96,6 @@ export interface LessonView {
   params: OceanParams;
   camera: CameraPose;
   cullingCamera: CameraPose | null;
-  time: number | null;
 }
 
 export function lessonView(lesson: Lesson): LessonView {
@@ -110,6 +105,5 @@ export function lessonView(lesson: Lesson): LessonView {
     params: { ...defaultParams(), ...preset?.params, ...lesson.params },
     camera: { position: [...camera.position], target: [...camera.target] },
     cullingCamera: preset?.cullingCamera ? { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] } : null,
-    time: lesson.time ?? null,
   };
 }

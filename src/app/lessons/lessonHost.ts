@@ -43,7 +43,7 @@ export class LessonHost {
   load(): Promise<void> {
     this.titlesLoad ??= import('./lessonOutline').then(
       (titles) => void (this.list = titles.lessonList),
-      (error: unknown) => console.warn('Oceano: the lessons\' titles could not be loaded.', error),
+      (error: unknown) => console.warn('Oceano: the lessons could not be loaded.', error),
     );
     if (!this.listed && this.current === null) return this.titlesLoad;
     this.drawerLoad ??= import('./lessonDrawer').then(

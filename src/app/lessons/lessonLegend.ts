@@ -1,3 +1,4 @@
+import { Vector3 } from 'three';
 import type { OceanParams } from '../../sim/params/params';
 import { bandStart, LOD_BAND_COLORS } from '../../sim/lod/lodBands';
 import { kelvinGuideLines } from '../../sim/wake/kelvinGuide';
@@ -96,11 +97,15 @@ export class LessonLegend {
   /** Puts each label where its point of the sea is on the canvas, or hides it when that point is out of sight. */
   place(): void {
     if (this.labels.length === 0 || !this.params) return;
-    const points = this.points(this.params);
-    const width = this.container.clientWidth;
-    const height = this.container.clientHeight;
+    const scene = this.hooks.scene();
+    const points = this.points(this.params, scene);
+    const width = scene.canvas.clientWidth;
+    const height = scene.canvas.clientHeight;
     this.labels.forEach((label, i) => {
-      const point = points[i] ? this.hooks.project(...points[i]) : null;
+      const world = points[i];
+      // The point's place on the canvas, CSS pixels from its top left; none behind the camera.
+      const p = world ? new Vector3(...world).project(scene.camera) : null;
+      const point = p && Math.abs(p.z) <= 1 ? [((p.x + 1) / 2) * width, ((1 - p.y) / 2) * height] : null;
       const visible = point !== null && point[0] >= 0 && point[0] <= width && point[1] >= 0 && point[1] <= height;
       label.hidden = !visible;
       if (visible) label.style.transform = `translate(${point[0].toFixed(1)}px, ${point[1].toFixed(1)}px)`;
@@ -108,18 +113,18 @@ export class LessonLegend {
   }
 
   /** The world points the labels mark, in label order. */
-  private points(params: OceanParams): ([number, number, number] | null)[] {
+  private points(params: OceanParams, scene: ReturnType<LessonHooks['scene']>): ([number, number, number] | null)[] {
     if (this.kind === 'kelvinAngle') {
       if (!params.wake || !params.wakeGuide) return [null, null];
-      const boat = this.hooks.boat();
-      const [, , px, pz, sx, sz] = kelvinGuideLines(boat.x, boat.z, boat.heading, KELVIN_LABEL_DISTANCE);
+      const { position, heading } = scene.boat;
+      const [, , px, pz, sx, sz] = kelvinGuideLines(position[0], position[2], heading, KELVIN_LABEL_DISTANCE);
       return [
         [px, 0, pz],
         [sx, 0, sz],
       ];
     }
     // Where the cone of Snell's window, opening up from the eye, meets a flat sea straight ahead.
-    const { position, target } = this.hooks.camera();
+    const { position, target } = scene.pose;
     const depth = -position[1];
     if (depth <= 0) return [null];
     const dx = target[0] - position[0];

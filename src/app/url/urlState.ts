@@ -77,7 +77,6 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       Object.assign(params, view.params);
       state.camera = view.camera;
       state.cullingCamera = view.cullingCamera;
-      state.time = view.time;
       state.lesson = lesson.id;
     } else {
       notices.push(message('lessonUnknown', { name: text, known: lessonIds.join(', ') }));
