@@ -11,6 +11,9 @@ import { LESSON_TEXTS } from './lessonTexts';
 import { LessonLegend } from './lessonLegend';
 
 
+/** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
+const ROOMY_WIDTH = 1000;
+
 /** Keys that walk the lessons while the focus is in the drawer (outside its form fields). */
 const NEXT_KEYS = new Set(['ArrowRight', 'PageDown']);
 const PREVIOUS_KEYS = new Set(['ArrowLeft', 'PageUp']);
@@ -90,6 +93,9 @@ export class LessonDrawer {
     container.classList.add(listed ? 'oceano-with-lessons' : 'oceano-with-lesson-card');
     this.legend = new LessonLegend(container, tr, hooks);
     this.updatePosition();
+    // Where the list would cover much of the sea (a phone, a small window), it starts folded
+    // to its header; opening a lesson unfolds it.
+    if (container.clientWidth < ROOMY_WIDTH) this.setCollapsed(true);
   }
 
   private buildList(): void {
