@@ -9,7 +9,7 @@ import type { OutlinedLesson as Lesson } from './lessonOutline';
 import type { LessonHooks } from './lessonHooks';
 
 /** How far along the wake guide (metres from the boat; the guide is 150 m long) its angle is written. */
-const KELVIN_LABEL_DISTANCE = 90;
+const KELVIN_LABEL_DISTANCE = 45;
 
 /** A linear RGB channel as the sRGB the page's CSS speaks. */
 function srgb(linear: number): number {
