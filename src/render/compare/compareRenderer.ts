@@ -79,7 +79,7 @@ export class CompareRenderer {
       if (i === 0) this.ocean.cull(stripCamera, this.stripCulling);
       else {
         const side = this.sides[i - 1];
-        side.chunks.update(stripCamera, this.ocean.lodSettings, side.bounds(), this.stripCulling);
+        side.chunks.update(stripCamera, this.ocean.lodSettings, this.ocean.grownByWake(side.bounds()), this.stripCulling);
       }
     });
   }

@@ -234,7 +234,15 @@ export class Ocean extends Object3D {
 
   /** The culling bounds: the model's, grown by the wake's. */
   cullingBounds(): { vertical: number; horizontal: number } {
-    return this.wakeBound === 0 ? this.bounds : { vertical: this.bounds.vertical + this.wakeBound, horizontal: this.bounds.horizontal };
+    return this.grownByWake(this.bounds);
+  }
+
+  /**
+   * A model's bounds grown by how far the wake can raise the surface: every model drawn with
+   * this ocean's wake (a compared one too) culls, and morphs its bands, with these.
+   */
+  grownByWake(bounds: { vertical: number; horizontal: number }): { vertical: number; horizontal: number } {
+    return this.wakeBound === 0 ? bounds : { vertical: bounds.vertical + this.wakeBound, horizontal: bounds.horizontal };
   }
 
   /** The shading for where the eye is: which faces, the sea bed, the sky behind, the water between the eye and the surface. */
@@ -261,7 +269,6 @@ export class Ocean extends Object3D {
   setWake(data: WakeUniformData, bound: number): void {
     if (data !== this.appliedWake) applyWakeUniforms(this.wakeUniforms, data);
     this.appliedWake = data;
-    this.material.setWakeOn(data.count >= 2);
     this.wakeBound = bound;
   }
 

@@ -111,7 +111,6 @@ export class OceanView {
   /** The boat's wake for the coming frame, its culling bound, and the ±19.47° teaching guide at the boat. */
   setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
     this.ocean.setWake(data, bound);
-    for (const side of this.compare.sides) side.material.setWakeOn(data.count >= 2);
     this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
   }
 
