@@ -121,6 +121,11 @@ export class CompareRenderer {
     return stripCamera;
   }
 
+  /** After a lost WebGL context comes back: each compared model redoes what lived in render targets. */
+  contextRestored(): void {
+    for (const side of this.sides) side.view.contextRestored?.();
+  }
+
   dispose(): void {
     for (const side of this.sides) side.dispose();
     this.sides = [];

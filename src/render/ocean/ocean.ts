@@ -287,6 +287,7 @@ export class Ocean extends Object3D {
   /** After a lost WebGL context comes back: paints again what lived only in render targets. */
   contextRestored(): void {
     this.chunks.forgetSelection();
+    this.waveView.contextRestored?.();
     this.skySource.contextRestored(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
   }
 

@@ -122,6 +122,7 @@ export class OceanView {
   /** After a lost WebGL context comes back: paints again what lived only in render targets (the sun's sky). */
   contextRestored(): void {
     this.ocean.contextRestored();
+    this.compare.contextRestored();
   }
 
   /** Shows a page's own cube map from now on (the sun then moves only the lighting). */

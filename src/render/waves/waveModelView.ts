@@ -58,6 +58,12 @@ export interface WaveModelView {
    * after each group, and returns each group's time. Absent for models with no GPU passes.
    */
   profilePasses?(sync: () => void): PassTiming[];
+  /**
+   * After a lost WebGL context comes back: what the model's GPU passes drew into render
+   * targets is gone, so the next update must draw it again even at the same time. Absent
+   * where nothing lives only in render targets.
+   */
+  contextRestored?(): void;
   dispose(): void;
 }
 
