@@ -49,6 +49,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
   static readonly contexts = new ContextBudget(12);
   /** false: figures keep their context wherever they are (a page of a few figures that never want a restart). */
   static releaseContexts = true;
+  /** Whether this browser has WebGL2, asked once per page: each probe makes and drops a context. */
+  private static webgl2: boolean | null = null;
 
   /** Parameters, time and camera follow their attributes while the element lives; the rest is read once, when it is connected. */
   static get observedAttributes(): string[] {
@@ -173,7 +175,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     const firstStart = saved === null;
     this.phase = 'starting';
     this.releaseWhenStarted = false;
-    if (!hasWebGL2()) {
+    if (!(OceanoViewElement.webgl2 ??= hasWebGL2())) {
       this.fail('webgl', message('webgl2Missing'));
       return;
     }
