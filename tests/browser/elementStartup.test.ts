@@ -87,6 +87,22 @@ describe('<oceano-view> start-up attributes and events', () => {
     expect((await figureState(page, 'unnamed')).label).toBe('Animated 3D ocean under a sky');
   });
 
+  it('orbits a focused figure with the keyboard, and only the focused one', async () => {
+    const { page } = await openStartup();
+    await readyOf(page, 'plain');
+    const camera = () => page.evaluate(() => (document.getElementById('plain') as ViewElement).oceano!.getCamera());
+    const before = await camera();
+    // Control: the keys pressed with the focus elsewhere on the page leave it alone.
+    await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
+    await page.keyboard.press('KeyJ');
+    expect(await camera()).toEqual(before);
+    await page.focus('#plain canvas.oceano-canvas');
+    await page.keyboard.press('KeyJ');
+    const after = await camera();
+    expect(after.target).toEqual(before.target);
+    expect(after.position).not.toEqual(before.position);
+  });
+
   it('fires error once for a bad attribute, with the notice\'s words, and still starts', async () => {
     const { page } = await openStartup();
     await readyOf(page, 'bad');

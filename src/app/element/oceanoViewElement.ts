@@ -181,6 +181,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     }
     const generation = ++this.generation;
     const app = this.createApp(state, generation, firstStart);
+    // Focusable, so a reader can orbit it from the keyboard (J/L, I/K, U/O): the keys go to the figure that has the focus.
+    app.canvas.tabIndex = 0;
     if (saved?.playing) app.play();
     if (firstStart) {
       for (const notice of this.startupNotices) app.notify(notice);
