@@ -138,4 +138,21 @@ describe('<oceano-view> start-up attributes and events', () => {
     expect(await figureState(page, 'revealed')).toMatchObject({ api: true, canvas: true, reveal: false, poster: null, label: 'The sea, started on request' });
     expect((await heard(page, 'revealed', 'load')).length).toBe(1);
   });
+
+  // Last: scrolling down to the lazy figure sends the figures above far away.
+  it('applies an attribute changed while the figure is starting, once it is live', async () => {
+    const { page } = await openStartup();
+    const whileStarting = await page.evaluate(async () => {
+      const view = document.getElementById('below') as ViewElement;
+      view.scrollIntoView();
+      while (!view.oceano) await new Promise((r) => setTimeout(r, 10));
+      view.setAttribute('swellamplitude', '3.25');
+      return Promise.race([view.oceano.ready.then(() => 'live'), new Promise((r) => setTimeout(() => r('starting'), 0))]);
+    });
+    expect(whileStarting).toBe('starting');
+    await readyOf(page, 'below');
+    await page.waitForFunction(() => (document.getElementById('below') as ViewElement).oceano?.getParams().swellAmplitude === 3.25, { timeout: 20_000 });
+    // Control: the figure beside it, never told, keeps the default.
+    expect(await page.evaluate(() => (document.getElementById('eagerBelow') as ViewElement).oceano?.getParams().swellAmplitude ?? null)).not.toBe(3.25);
+  });
 });

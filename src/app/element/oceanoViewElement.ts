@@ -70,8 +70,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
   private near = false;
   private releaseWhenStarted = false;
   private saved: SavedView | null = null;
-  /** Attribute changes made while released, applied on top of the saved view. */
-  private changedWhileReleased: [string, string][] = [];
+  /** Attribute changes made while starting or released, applied once live. */
+  private pendingChanges: [string, string][] = [];
   private loadFired = false;
   /** Counts the apps this element has made: hooks of one that has been closed since are ignored. */
   private generation = 0;
@@ -107,13 +107,13 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
   attributeChangedCallback(name: string, _old: string | null, text: string | null): void {
     if (text === null) return;
     const key = SETTING_NAMES.get(name) ?? name;
-    if (this.phase === 'released') {
-      this.changedWhileReleased.push([key, text]);
-      return;
-    }
-    const app = this.app;
-    if (!app || !app.isStarted()) return;
-    // Validated exactly as at start-up, with the same notice and the same fallback.
+    if (this.phase === 'live' && this.app) this.applySetting(this.app, key, text);
+    // Not live yet, or released: applied when it is (a waiting figure reads its attributes when it starts).
+    else if (this.phase === 'starting' || this.phase === 'released') this.pendingChanges.push([key, text]);
+  }
+
+  /** Validated exactly as at start-up, with the same notice and the same fallback. */
+  private applySetting(app: OceanApp, key: string, text: string): void {
     const state = parseSettings([[key, text]]);
     for (const notice of state.notices) app.notify(notice);
     if (isParamKey(key)) {
@@ -136,7 +136,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     this.cover?.dispose();
     this.cover = null;
     this.saved = null;
-    this.changedWhileReleased = [];
+    this.pendingChanges = [];
     this.phase = 'detached';
     this.replaceChildren();
   }
@@ -171,8 +171,9 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
 
   private start(): void {
     const saved = this.saved;
-    const state = parseSettings(saved ? [...saved.settings, ...this.changedWhileReleased] : this.settings());
+    const state = parseSettings(saved ? [...saved.settings, ...this.pendingChanges] : this.settings());
     const firstStart = saved === null;
+    this.pendingChanges = [];
     this.phase = 'starting';
     this.releaseWhenStarted = false;
     if (!(OceanoViewElement.webgl2 ??= hasWebGL2())) {
@@ -197,7 +198,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
         if (this.generation !== generation) return;
         this.phase = 'live';
         this.saved = null;
-        this.changedWhileReleased = [];
+        for (const [key, text] of this.pendingChanges.splice(0)) this.applySetting(app, key, text);
         if (firstStart) this.dispatchEvent(new CustomEvent('ready'));
         if (this.releaseWhenStarted) this.release();
         else this.reconcile();
@@ -243,7 +244,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     const share = new URL(app.shareUrl());
     const presets = this.settings().filter(([key]) => key === 'preset');
     this.saved = { settings: [...presets, ...share.searchParams], playing: app.clock.playing };
-    this.changedWhileReleased = [];
+    this.pendingChanges = [];
     app.renderFrame(false);
     this.cover?.showStill(app.canvas);
     this.closeApp();
