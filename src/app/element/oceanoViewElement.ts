@@ -52,9 +52,9 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
   /** Whether this browser has WebGL2, asked once per page: each probe makes and drops a context. */
   private static webgl2: boolean | null = null;
 
-  /** Parameters, time and camera follow their attributes while the element lives; the rest is read once, when it is connected. */
+  /** Parameters, time, camera and lesson follow their attributes while the element lives; the rest is read once, when it is connected. */
   static get observedAttributes(): string[] {
-    return [...paramKeys.map((key) => key.toLowerCase()), 't', 'cam'];
+    return [...paramKeys.map((key) => key.toLowerCase()), 't', 'cam', 'lesson'];
   }
 
   /** The automation API of the live ocean; null while the figure waits, starts or is released. */
@@ -114,6 +114,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
 
   /** Validated exactly as at start-up, with the same notice and the same fallback. */
   private applySetting(app: OceanApp, key: string, text: string): void {
+    // A lesson sets a whole view, and an unknown one says so and changes nothing.
+    if (key === 'lesson') return void app.openLesson(text);
     const state = parseSettings([[key, text]]);
     for (const notice of state.notices) app.notify(notice);
     if (isParamKey(key)) {
@@ -242,6 +244,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     const app = this.app;
     if (!app) return;
     const share = new URL(app.shareUrl());
+    // A preset's culling camera is not in the share link (the lesson is): the preset comes first, the link's values over it.
     const presets = this.settings().filter(([key]) => key === 'preset');
     this.saved = { settings: [...presets, ...share.searchParams], playing: app.clock.playing };
     this.pendingChanges = [];
