@@ -1,3 +1,5 @@
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
 import { useHarness } from './useHarness';
@@ -48,6 +50,22 @@ describe('the course page (dist/course/)', () => {
     expect(outline.figureLanguages).toBe(1);
     expect(outline.englishShown).toBe(false);
 
+    // Each figure's caption quotes the lines of code behind it, as they are in the source now.
+    const quotes = await page.evaluate(() =>
+      Array.from(document.querySelectorAll('figure'), (figure) => ({
+        summary: figure.querySelector('.code-quote summary')?.textContent ?? null,
+        code: figure.querySelector('.code-quote code')?.textContent ?? null,
+        link: figure.querySelector<HTMLAnchorElement>('a.open-in-app')!.search,
+      })),
+    );
+    const quoted = quotes.filter((q) => q.code !== null);
+    expect(quoted.length).toBeGreaterThanOrEqual(20);
+    for (const q of quoted) {
+      const [, file] = /^El código: (.+), \d+–\d+$/.exec(q.summary!)!;
+      expect(readFileSync(join(import.meta.dirname, '..', '..', file), 'utf8')).toContain(q.code);
+    }
+    expect(quotes.every((q) => /^\?(lesson|preset)=[a-z-]+&lang=es$/.test(q.link))).toBe(true);
+
     const started = new Set<number>();
     const bottom = await page.evaluate(() => document.documentElement.scrollHeight - innerHeight);
     for (let y = 0; ; y = Math.min(y + 700, bottom)) {
@@ -71,13 +89,15 @@ describe('the course page (dist/course/)', () => {
     const { page, consoleErrors } = await recordedPage(harness, 800, 700);
     await page.emulateMediaFeatures([{ name: 'prefers-reduced-motion', value: 'reduce' }]);
     await page.goto(`${harness.baseUrl}course/index.html?lang=en`, { waitUntil: 'load' });
-    await visibleFiguresReady(page);
+    // The first figure may lie just below the first screen, within starting distance.
+    await page.waitForFunction(() => (document.querySelector('oceano-view') as ViewElement).oceano !== null);
+    await page.evaluate(() => (document.querySelector('oceano-view') as ViewElement).oceano!.ready);
     const facts = await page.evaluate(() => ({
       title: (document.querySelector('h1 .en') as HTMLElement).offsetParent !== null && (document.querySelector('h1 .es') as HTMLElement).offsetParent === null,
       label: document.querySelector('oceano-view canvas.oceano-canvas')!.getAttribute('aria-label'),
       link: (document.querySelector('a.open-in-app') as HTMLAnchorElement).search,
     }));
-    expect(facts).toEqual({ title: true, label: 'The flat wireframe grid, before any displacement', link: '?preset=flat-plane&lang=en' });
+    expect(facts).toEqual({ title: true, label: 'The flat wireframe grid, before any displacement', link: '?lesson=flat-plane&lang=en' });
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
