@@ -130,7 +130,7 @@ export class OceanApp {
     this.options.onFirstFrame?.();
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
-    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.lessons.load()]);
+    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.controls.whenPartsLoaded(), this.lessons.load()]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
@@ -194,6 +194,7 @@ export class OceanApp {
   async whenPartsLoaded(): Promise<void> {
     while (this.modelLoad) await this.modelLoad;
     await this.view.whenPartsLoaded();
+    await this.controls?.whenPartsLoaded();
   }
 
   /** Stops the frame loop while the tab is hidden or the view is scrolled away; a page of many views stays light. */

@@ -169,6 +169,8 @@ describe('lessons', () => {
     });
     await viewsReady(page);
     await page.waitForSelector('#lesson .oceano-lesson-card:not([hidden])');
+    // The plot's code is fetched when the lesson first asks for it.
+    await page.waitForSelector('#lesson .oceano-fresnel-plot');
     const inside = () =>
       page.evaluate(() => {
         const box = document.getElementById('lesson')!.getBoundingClientRect();

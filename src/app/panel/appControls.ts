@@ -3,10 +3,11 @@ import { BoatSteering } from '../boat/boatSteering';
 import { CameraKeys } from '../camera/cameraKeys';
 import type { CameraPose } from '../camera/cameraPose';
 import type { ControlPanel, ControlPanelHooks, LiveCounts } from './controlPanel';
-import { FresnelPlot } from '../physics/fresnelPlot';
+import type { FresnelPlot } from '../physics/fresnelPlot';
 import type { Translator } from '../language/i18n';
 import { PhysicsPanel, type PhysicsSource } from '../physics/physicsPanel';
-import { CompareDividers } from '../compare/compareDividers';
+import type { CompareDividers } from '../compare/compareDividers';
+import { COMPARE_OFF } from '../../sim/compare/compareLayout';
 
 /** How often the GUI's live LOD counts are refreshed (frames). */
 const COUNTS_EVERY = 10;
@@ -37,8 +38,10 @@ export class AppControls {
   private readonly cameraKeys: CameraKeys;
   private readonly tr: Translator;
   private fresnelPlot?: FresnelPlot;
+  private fresnelPlotLoad?: Promise<void>;
   readonly physics: PhysicsPanel;
-  private readonly dividers: CompareDividers;
+  private dividers?: CompareDividers;
+  private dividersLoad?: Promise<void>;
 
   constructor(
     private readonly container: HTMLElement,
@@ -54,8 +57,6 @@ export class AppControls {
     this.cameraKeys = new CameraKeys(keyTarget, () => app.camera(), (pose) => app.setCamera(pose));
     this.tr = state.tr;
     this.physics = new PhysicsPanel(container, state.physics);
-    // The split view's dividers belong to the view, embedded or not: made here, hidden until compare= is set.
-    this.dividers = new CompareDividers(container, state.tr, (key, value) => hooks.onParam(key, value));
     this.sync(state.params, state.playing);
   }
 
@@ -81,6 +82,43 @@ export class AppControls {
     return this.panelLoad;
   }
 
+  /**
+   * The Fresnel plot's code is fetched the first time the plot is asked for: most figures
+   * never show it. Settles once it is on screen (or could not be fetched).
+   */
+  private loadFresnelPlot(): Promise<void> {
+    this.fresnelPlotLoad ??= import('../physics/fresnelPlot').then(
+      ({ FresnelPlot }) => {
+        if (this.disposed) return;
+        this.fresnelPlot = new FresnelPlot(this.container, this.fresnelData, this.tr);
+        this.fresnelPlot.setVisible(this.shown.params.fresnelPlot);
+      },
+      (error: unknown) => console.warn('Oceano: the Fresnel plot\'s code could not be loaded.', error),
+    );
+    return this.fresnelPlotLoad;
+  }
+
+  /**
+   * The split view's dividers belong to the view, embedded or not; their code is fetched the
+   * first time compare= is set.
+   */
+  private loadDividers(): Promise<void> {
+    this.dividersLoad ??= import('../compare/compareDividers').then(
+      ({ CompareDividers }) => {
+        if (this.disposed) return;
+        this.dividers = new CompareDividers(this.container, this.tr, (key, value) => this.hooks.onParam(key, value));
+        this.dividers.sync(this.shown.params);
+      },
+      (error: unknown) => console.warn('Oceano: the compare dividers\' code could not be loaded.', error),
+    );
+    return this.dividersLoad;
+  }
+
+  /** Settles once every part asked for so far (the Fresnel plot, the compare dividers) is on screen. */
+  whenPartsLoaded(): Promise<void> {
+    return Promise.all([this.fresnelPlotLoad, this.dividersLoad]).then(() => undefined);
+  }
+
   /** Opens the panel's folders that hold `keys` and folds the rest. */
   openFoldersOf(keys: readonly ParamKey[]): void {
     this.opened = keys;
@@ -94,11 +132,11 @@ export class AppControls {
 
   sync(params: OceanParams, playing: boolean): void {
     this.shown = { params, playing };
-    // The plot is made the first time it is asked for: most figures never show it.
-    if (params.fresnelPlot) this.fresnelPlot ??= new FresnelPlot(this.container, this.fresnelData, this.tr);
+    if (params.fresnelPlot) void this.loadFresnelPlot();
     this.fresnelPlot?.setVisible(params.fresnelPlot);
     this.physics.setOpen(params.physics);
-    this.dividers.sync(params);
+    if (params.compare !== COMPARE_OFF) void this.loadDividers();
+    this.dividers?.sync(params);
     this.panel?.sync(params, playing);
   }
 
@@ -117,6 +155,6 @@ export class AppControls {
     this.panel?.dispose();
     this.fresnelPlot?.dispose();
     this.physics.dispose();
-    this.dividers.dispose();
+    this.dividers?.dispose();
   }
 }

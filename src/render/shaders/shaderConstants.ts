@@ -1,10 +1,10 @@
 import { WATER_IOR } from '../../sim/optics/fresnel';
 import { SUN_IRRADIANCE } from '../../sim/optics/sun';
-import { SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/resolvedSlopes';
+import { SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/sunDisc';
 import { bodyColor } from '../../sim/optics/waterColor';
-import { BLUR_MAX_TAPS } from '../underwater/gaussianKernel';
+import { BLUR_MAX_TAPS } from '../underwater/blurLimits';
 import { BAND_STEPS, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
-import { GOD_RAY_RANGE } from '../underwater/shaftLightTile';
+import { GOD_RAY_RANGE } from '../underwater/godRayRange';
 import { DEPTH_DARKENING, WATER_EXTINCTION } from '../../sim/underwater/waterFog';
 
 /** A GLSL float literal: always with a decimal point, since GLSL ES will not take `1` as a float. */

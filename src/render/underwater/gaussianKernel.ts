@@ -1,15 +1,6 @@
-/**
- * Widest blur the underwater passes run, texels on each side. The blur runs at half
- * resolution (src/render/underwater/underwaterPost.ts), where σ = 8 screen pixels, the parameter's top,
- * is halfResolutionSigma(8) ≈ 3.97 texels, and 3σ rounds up to 12.
- */
-export const BLUR_MAX_RADIUS = 12;
-/**
- * Taps of the linear-sampled kernel at BLUR_MAX_RADIUS: the centre and ⌈12 / 2⌉ = 6 pairs,
- * with one to spare. Also the GLSL array size and loop bound (BLUR_MAX_TAPS, from
- * `#include <oceano_constants>`).
- */
-export const BLUR_MAX_TAPS = 8;
+import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS } from './blurLimits';
+
+export { BLUR_MAX_RADIUS, BLUR_MAX_TAPS };
 
 /**
  * The σ of the half-resolution Gaussian, in half-resolution texels, that gives a blur of σ

@@ -1,11 +1,8 @@
 import type { Vec3 } from '../../sim/underwater/snellWindow';
 
-/**
- * The god rays follow each line of sight this far, metres (fog hides what is beyond). Shared
- * with shaders/underwater.frag as the define GOD_RAY_RANGE: the window below must cover
- * every point the march reads.
- */
-export const GOD_RAY_RANGE = 60;
+import { GOD_RAY_RANGE } from './godRayRange';
+
+export { GOD_RAY_RANGE };
 
 /**
  * Texel of the baked shaft light, metres: the seed's ripple tile (96 m) at twice its

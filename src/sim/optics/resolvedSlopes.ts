@@ -1,3 +1,4 @@
+import { SUN_DISC_SLOPE_VARIANCE } from './sunDisc';
 import { GRAVITY } from '../waves/dispersion';
 import type { Cascade } from '../waves/fft/cascades';
 import { PM_ALPHA, PM_BETA, windAt19_5 } from '../waves/spectra/piersonMoskowitz';
@@ -77,15 +78,10 @@ export function resolvedShare(footprint: number, shortest: number, longest: numb
   return Math.min(1, Math.max(0, share));
 }
 
-/**
- * The sun's disc (angular radius 0.2666°, 4.65 mrad) as a slope variance: a uniform disc of
- * radius r has r²/4 of variance per axis; the half vector moves by half the angle, so the
- * facets that catch some of the disc spread by (r/2)²/4 per axis, r²/8 in all. The floor of
- * the roughness: a mirror still reflects a sun of finite size.
- */
-export const SUN_DISC_SLOPE_VARIANCE = 0.00465 ** 2 / 8;
 
 /** The facets' variance within a pixel: the sea's total less what the normals show, never below the sun's disc. */
+export { SUN_DISC_SLOPE_VARIANCE };
+
 export function unresolvedSlopeVariance(total: number, resolved: number): number {
   return Math.max(SUN_DISC_SLOPE_VARIANCE, total - resolved);
 }
