@@ -176,6 +176,14 @@ export class IWaveGrid {
     this.centerZ += dj * this.spacing;
   }
 
+  /** Scrolls so that the centre is the texel-aligned point nearest (x, z); returns the whole texels moved. */
+  recentre(x: number, z: number): [number, number] {
+    const di = Math.round((x - this.centerX) / this.spacing);
+    const dj = Math.round((z - this.centerZ) / this.spacing);
+    if (di !== 0 || dj !== 0) this.scroll(di, dj);
+    return [di, dj];
+  }
+
   /** G ∗ h at every texel, into `out` (texel units: √(−∇²)h times Δx). */
   convolve(h: Float64Array, out: Float64Array): void {
     const { n, rows } = this;
