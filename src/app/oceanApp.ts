@@ -248,6 +248,11 @@ export class OceanApp {
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (checkSurfacePoint(x, z), this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params));
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
+  disturb = (x: number, z: number, options: { radius?: number; height?: number } = {}): string[] => {
+    const notices = this.view.ocean.disturb(x, z, options);
+    this.loop.requestRender();
+    return notices;
+  };
   stats = (): OceanStats => this.frameStats.summary(this.view.stats(), this.view.waves.twinStatus?.() ?? null);
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */
   debugView = (): OceanView => this.view;

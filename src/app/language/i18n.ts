@@ -268,6 +268,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   wake: 'Estela de Kelvin',
   wakeStrength: 'Intensidad de la estela',
   wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
+  interactiveWaves: 'Olas interactivas (iWave)',
   lodDistance: 'Distancia de LOD L',
   lodBands: 'Bandas de LOD',
   lodColors: 'Colorear parcelas por banda',

@@ -183,6 +183,26 @@ export class OceanMaterial extends ShaderMaterial {
    * other programs once, on the next draw.
    */
   setWakeOn(on: boolean): void {
+    this.wakeOn = on;
+    this.applyWakeSlope();
+  }
+
+  /**
+   * Whether the interactive waves (iWave) are drawn: their code is compiled in (OCEAN_IWAVE)
+   * only while they are on, so that off, the programs are the ones without them. Their slope
+   * reaches ocean.frag's per-pixel normals through the wake's (OCEAN_WAKE goes in alongside).
+   */
+  setInteractiveWavesOn(on: boolean): void {
+    this.interactiveWavesOn = on;
+    this.setDefine('OCEAN_IWAVE', on);
+    this.applyWakeSlope();
+  }
+
+  private wakeOn = true;
+  private interactiveWavesOn = false;
+
+  private applyWakeSlope(): void {
+    const on = this.wakeOn || this.interactiveWavesOn;
     this.uniforms.uWakeOn.value = on;
     this.setDefine('OCEAN_WAKE', on);
   }

@@ -1,0 +1,39 @@
+import type { Disturbance } from './iwaveGrid';
+
+/** The app's field: 256 × 256 texels of 0.5 m, a square 128 m across around the camera's focus. */
+export const IWAVE_GRID_SIZE = 256;
+export const IWAVE_SPACING = 0.5;
+/** Seconds of simulation time per step: the field advances in these whatever the frame rate. */
+export const IWAVE_STEP = 1 / 60;
+/** The most steps a jump forward runs (10 s); past it the field restarts calm that far back. */
+export const IWAVE_CATCH_UP_STEPS = 600;
+/** The tallest bump a disturbance may add or dig, metres, and the widest, metres. */
+export const IWAVE_MAX_HEIGHT = 2;
+export const IWAVE_MAX_RADIUS = 10;
+
+export interface DisturbanceOptions {
+  /** Metres; raised to one texel if smaller. Default 1. */
+  radius?: number;
+  /** Metres, negative for a dip. Default 0.3. */
+  height?: number;
+}
+
+/**
+ * A disturbance checked as the API takes it: a non-finite or out-of-range argument throws a
+ * RangeError naming it (and nothing changes); a radius under one texel is raised to one texel,
+ * with a notice saying so.
+ */
+export function checkDisturbance(x: number, z: number, options: DisturbanceOptions = {}): { disturbance: Disturbance; notices: string[] } {
+  const radius = options.radius ?? 1;
+  const height = options.height ?? 0.3;
+  if (!Number.isFinite(x) || !Number.isFinite(z)) throw new RangeError(`disturb: x and z must be finite numbers of metres (got ${x}, ${z}).`);
+  if (!Number.isFinite(radius) || radius <= 0 || radius > IWAVE_MAX_RADIUS) throw new RangeError(`disturb: radius must be a number of metres above 0 and at most ${IWAVE_MAX_RADIUS} (got ${radius}).`);
+  if (!Number.isFinite(height) || Math.abs(height) > IWAVE_MAX_HEIGHT) throw new RangeError(`disturb: height must be a number of metres from −${IWAVE_MAX_HEIGHT} to ${IWAVE_MAX_HEIGHT} (got ${height}).`);
+  const notices: string[] = [];
+  let used = radius;
+  if (radius < IWAVE_SPACING) {
+    used = IWAVE_SPACING;
+    notices.push(`disturb: radius ${radius} m is below one texel of the interactive field; raised to ${IWAVE_SPACING} m.`);
+  }
+  return { disturbance: { x, z, radius: used, height }, notices };
+}
