@@ -108,6 +108,7 @@ export class OceanApp {
       onShare: () => void this.share(),
       onDive: () => this.orbit.dive(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
+      onDropStone: () => this.dropStone(),
     });
     performance.mark('oceano:controls');
     this.resize();
@@ -248,6 +249,13 @@ export class OceanApp {
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (checkSurfacePoint(x, z), this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params));
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
+  /** The panel's button: a stone at the point the camera orbits, the interactive waves turned on first if they are off. */
+  private dropStone(): void {
+    if (!this.params.interactiveWaves) this.setParams({ interactiveWaves: true });
+    const [x, , z] = this.camera().target;
+    this.disturb(x, z, { radius: 1, height: 0.3 });
+  }
+
   disturb = (x: number, z: number, options: { radius?: number; height?: number } = {}): string[] => {
     const notices = this.view.ocean.disturb(x, z, options);
     this.loop.requestRender();

@@ -37,6 +37,8 @@ export interface ControlPanelHooks {
   onShare(): void;
   onDive(): void;
   onSurface(): void;
+  /** Drops a stone into the interactive waves where the camera looks (turning them on if they are off). */
+  onDropStone(): void;
 }
 
 /**
@@ -80,6 +82,7 @@ export class ControlPanel {
     const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
     this.gui.add(camera, 'dive').name(tr.ui('dive'));
     this.gui.add(camera, 'surface').name(tr.ui('surface'));
+    this.gui.add({ dropStone: () => hooks.onDropStone() }, 'dropStone').name(tr.ui('dropStone'));
     // On a phone the open panel would cover most of the sea: start it folded (its title opens it).
     if (container.clientWidth < NARROW) this.gui.close();
   }

@@ -21,7 +21,8 @@ export function createInteractiveWaveUniforms(): InteractiveWaveUniforms {
  * recorded disturbances from there.
  */
 export class InteractiveWaves {
-  private readonly field: GpuIWave;
+  /** The GPU field itself (its render target can be read back). */
+  readonly field: GpuIWave;
   private step = 0;
   private readonly log: { step: number; disturbance: Disturbance }[] = [];
 

@@ -124,6 +124,11 @@ export class Ocean extends Object3D {
     return this.frameTime;
   }
 
+  /** The interactive waves while interactiveWaves is on, else null. */
+  get interactiveWaves(): InteractiveWaves | null {
+    return this.interactive;
+  }
+
   /** The GPU half of the waves drawn. */
   get waveModelView(): WaveModelView {
     return this.waveView;

@@ -1,0 +1,70 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import puppeteer, { type Browser, type Page } from 'puppeteer';
+import { build } from 'vite';
+import { join } from 'node:path';
+import { BROWSER_ARGS, findBrowser } from './harness';
+import type { InteractiveWavesApi } from './fixtures/interactiveWaves';
+
+/**
+ * The interactive waves in the library's Ocean: a dropped stone shows in the picture, and with
+ * interactiveWaves on but the water calm the picture is the one without them (their code adds
+ * nothing). The page is a bundle of tests/browser/fixtures/interactiveWaves.ts.
+ */
+let browser: Browser;
+let page: Page;
+
+beforeAll(async () => {
+  const output = await build({
+    configFile: false,
+    logLevel: 'warn',
+    build: { write: false, minify: false, target: 'es2022', lib: { entry: join(import.meta.dirname, 'fixtures/interactiveWaves.ts'), formats: ['es'], fileName: 'interactiveWaves' }, rollupOptions: { output: { inlineDynamicImports: true } } },
+  });
+  const bundles = Array.isArray(output) ? output : [output];
+  const chunk = bundles.flatMap((b) => ('output' in b ? b.output : [])).find((o) => o.type === 'chunk');
+  if (!chunk || chunk.type !== 'chunk') throw new Error('No bundle for the interactive waves page.');
+  browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true });
+  page = await browser.newPage();
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  await page.setContent('<!doctype html><html><body></body></html>');
+  await page.addScriptTag({ content: chunk.code, type: 'module' });
+  await page.waitForFunction(() => 'interactiveWaves' in window, { timeout: 60_000 }).catch((e: unknown) => errors.push(String(e)));
+  expect(errors).toEqual([]);
+}, 300_000);
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+const draw = (on: boolean, stone: boolean, seconds: number): Promise<ReturnType<InteractiveWavesApi['draw']>> =>
+  page.evaluate((a, b, c) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.draw(a, b, c), on, stone, seconds);
+
+function differing(a: number[], b: number[], threshold: number): number {
+  let count = 0;
+  for (let i = 0; i < a.length; i += 4) {
+    const d = Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2]));
+    if (d > threshold) count++;
+  }
+  return count;
+}
+
+describe('interactive waves in the Ocean', () => {
+  it('draws a dropped stone\'s rings, and a calm field draws as no field (planted fault: the stone left out changes nothing)', async () => {
+    const off = await draw(false, false, 0.25);
+    const calm = await draw(true, false, 0.25);
+    const stone = await draw(true, true, 0.25);
+    expect(off.fragmentHasField).toBe(false);
+    expect(calm.fragmentHasField).toBe(true);
+    const pixels = off.pixels.length / 4;
+    const calmChanged = differing(calm.pixels, off.pixels, 1);
+    const stoneChanged = differing(stone.pixels, off.pixels, 1);
+    const mean = (p: number[]) => p.reduce((s, v) => s + v, 0) / p.length;
+    console.log(`Field's largest height with the stone: ${stone.largestHeight.toFixed(3)} m; mean pixel value ${mean(stone.pixels).toFixed(1)}`);
+    console.log(`Pixels off by more than 1 level from the view without the field: calm field ${calmChanged}, stone ${stoneChanged} of ${pixels}`);
+    expect(calmChanged).toBe(0);
+    expect(stoneChanged).toBeGreaterThan(0.01 * pixels);
+  }, 600_000);
+});
