@@ -10,6 +10,9 @@ precision highp float;
 precision highp int;
 precision highp sampler2D;
 
+// The driver's cos and sin may be approximations good to only ~1e-4 (SwiftShader's are).
+#include <oceano_sin_turns>
+
 uniform sampler2D uH0;       // (Re h₀(k), Im h₀(k), Re h₀(−k), Im h₀(−k))
 uniform sampler2D uCycles;   // (4096·mh, ml, m): m = ω/ω₀ = 4096·mh + ml, whole cycles per repeat period T
 uniform vec3 uTauOverT;      // (t mod T) / T = x + y + z, reduced and split in float64 on the CPU
@@ -22,40 +25,23 @@ layout(location = 1) out vec4 outDerivatives;
 
 vec2 mulI(vec2 z) { return vec2(-z.y, z.x); }
 
-// (cos, sin) of 2π·c for c in cycles. GPU cos/sin may be approximations good to only ~1e-4
-// (SwiftShader's are: the twin test saw 1e-4 relative errors with them), so: reduce to a
-// quarter turn around the nearest multiple of ¼ and use the Taylor series to r⁹ / r¹⁰, whose
-// error at |r| = π/4 is below 3e-9, then rotate by the quarter turns.
-vec2 cosSinTurns(float c) {
-  float f = fract(c);
-  float quarter = floor(f * 4.0 + 0.5);
-  float r = (f - 0.25 * quarter) * 6.283185307179586;
-  float r2 = r * r;
-  float s = r * (1.0 - r2 / 6.0 * (1.0 - r2 / 20.0 * (1.0 - r2 / 42.0 * (1.0 - r2 / 72.0))));
-  float co = 1.0 - r2 / 2.0 * (1.0 - r2 / 12.0 * (1.0 - r2 / 30.0 * (1.0 - r2 / 56.0 * (1.0 - r2 / 90.0))));
-  int q = int(quarter) % 4;
-  if (q == 1) return vec2(-s, co);
-  if (q == 2) return vec2(-co, -s);
-  if (q == 3) return vec2(s, -co);
-  return vec2(co, s);
-}
-
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   vec4 h0 = texelFetch(uH0, texel, 0);
   vec3 m = texelFetch(uCycles, texel, 0).rgb;
   vec3 t = uTauOverT;
   float cycles = fract(m.x * t.x) + fract(m.x * t.y) + fract(m.y * t.x) + fract(m.y * t.y) + m.z * t.z;
-  vec2 cs = cosSinTurns(cycles);
-  float c = cs.x;
-  float s = cs.y;
+  // Reduced first, so that cosTurns' quarter turn is added to a number below 1.
+  float turns = fract(cycles);
+  float c = cosTurns(turns);
+  float s = sinTurns(turns);
   // h₀(k) e^{iφ} + conj(h₀(−k)) e^{−iφ}
   vec2 a = vec2(h0.x * c - h0.y * s, h0.x * s + h0.y * c);
   vec2 b = vec2(h0.z * c - h0.w * s, -(h0.z * s + h0.w * c));
   vec2 h = a + b;
 
   ivec2 signedIndex = texel - ivec2(greaterThanEqual(texel, ivec2(uN / 2))) * uN;
-  vec2 k = vec2(signedIndex) * (6.283185307179586 / uTileSize);
+  vec2 k = vec2(signedIndex) * (TURN_RADIANS / uTileSize);
   float kLength = length(k);
   vec2 u = kLength > 0.0 ? k / kLength : vec2(0.0);
 

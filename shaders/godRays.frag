@@ -1,9 +1,9 @@
 // God rays: sunlight scattered towards the eye out of the shafts under the waves, marched
 // along each line of sight through the bake of the shaft light (shaders/shaftLight.frag). Drawn
 // at half the water pass's resolution (UnderwaterPost, the 'rays' pass: a quarter of the canvas's
-// with the blur on), since the shafts are soft at that scale, and read back by the water pass
-// with one filtered fetch (shaders/underwater.frag). Under SwiftShader the march was about 40 of
-// the underwater frame's 190 ms at the water pass's own resolution. Written with the scene
+// with the blur on), since the shafts are soft at that scale and the march is the underwater
+// frame's dearest part, and read back by the water pass with one filtered fetch
+// (shaders/underwater.frag; docs/shader-notes.md). Written with the scene
 // target's encoding (src/render/underwater/sceneEncoding.ts): RGBA8, square roots up to 1, a shoulder above.
 
 #include <packing>
@@ -25,11 +25,9 @@ uniform float uGodRays;
 
 varying vec2 vUv;
 
-// Each step is one filtered fetch of the bake. At the water pass's resolution the march took 20
-// steps; here, with a quarter of the pixels, 40 steps still read half as many texels, and the
-// march's jitter grain, which the upsample would otherwise spread over 4 × 4 canvas pixels,
-// comes out finer than before (the dive view at 640 × 360: mean |pixel − its 5 × 5 mean| 0.44
-// levels then, 0.35 with 20 steps here, 0.28 with 40).
+// Each step is one filtered fetch of the bake. With a quarter of the water pass's pixels, 40
+// steps read half the texels 20 at full resolution would, and keep the march's jitter grain,
+// which the upsample spreads over 4 × 4 canvas pixels, fine (docs/shader-notes.md).
 const int GOD_RAY_STEPS = 40;
 // Shafts are followed GOD_RAY_RANGE metres along the line of sight (<oceano_constants>,
 // from src/render/underwater/shaftLightTile.ts, which sizes the bake's window by it); fog hides what is beyond.

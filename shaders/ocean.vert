@@ -1,11 +1,12 @@
 // One ocean chunk (an instance, or one copy of the grid in an expanded batch: chunkBatch.ts),
-// a band's shared grid (integer grid coordinates in
-// position.xz), placed at its world corner, with edge vertices snapped onto a coarser
-// neighbour's edge (the GLSL twin of src/sim/lod/edgeSnap.ts), then displaced by the active wave
-// model's chunk (waveDisplacement / waveNormal, see shaders/waves/).
+// a band's shared grid (integer grid coordinates in position.xz), placed at its world corner,
+// with edge vertices snapped onto a coarser neighbour's edge (the GLSL twin of
+// src/sim/lod/edgeSnap.ts), then displaced by the active wave model's chunk (waveDisplacement /
+// waveNormal, see shaders/waves/).
+#include <oceano_constants>
 #include <oceano_waves>
 // The boat's Kelvin wake, added to whichever model is active (src/sim/wake/boatWake.ts); compiled
-// in only while the wake is on (OceanMaterial.setWakeOn).
+// in only while the wake is on (OceanMaterial).
 #ifdef OCEAN_WAKE
 #include <oceano_wake>
 #endif
@@ -26,7 +27,7 @@ uniform vec2 uFarFade;
 // next band's grid and 1 / the zone's width.
 uniform vec3 uLodCamera;
 uniform float uLodHeight;
-uniform vec2 uMorphZones[6];
+uniform vec2 uMorphZones[LOD_BAND_COUNT];
 
 attribute vec4 aChunk;     // world x, world z of the chunk's corner, band, metres per grid unit
 attribute vec4 aEdgeSteps; // step shared with the neighbour on sides -x, +x, -z, +z
@@ -63,33 +64,33 @@ varying vec2 vRelativeGridXZ;
 // The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
 varying vec2 vWakeSlope;
 varying float vWakeFoam;
-// The comparison view (ocean.frag): its right half draws the vertices' normals.
 
 // Integers, so the snapped vertex lands exactly on the neighbour's vertex.
 int snapEdge(int k, int step) {
   return ((k + step / 2) / step) * step;
 }
 
-// A band's vertex step (BAND_STEPS in src/sim/lod/lodBands.ts).
-int bandStep(int band) {
-  return band == 0 ? 1 : band == 1 ? 2 : band == 2 ? 3 : band == 3 ? 6 : band == 4 ? 12 : 24;
-}
+// Each grid band's vertex step, in full-resolution quads (src/sim/lod/lodBands.ts): bands
+// 0 to LOD_BAND_COUNT - 1 are the grid's, the far rings come after.
+const int BAND_STEPS[LOD_BAND_COUNT] = LOD_BAND_STEPS;
+const int LAST_GRID_BAND = LOD_BAND_COUNT - 1;
 
 void main() {
   // Integer grid coordinates within the chunk: a tile's are the whole chunk's, exactly.
   ivec2 grid = ivec2(position.xz + 0.5) + ivec2(aTile + 0.5);
   int band = int(aChunk.z + 0.5);
-  // Far rings (band >= 6) never morph and always snap their sides.
-  int own = band < 6 ? bandStep(band) : 0;
+  // The far rings never morph and always snap their sides.
+  bool farRing = band > LAST_GRID_BAND;
+  int own = farRing ? 0 : BAND_STEPS[band];
   vec2 morphed = vec2(grid);
-  if (band < 5) {
+  if (band < LAST_GRID_BAND) {
     // Distance of the unmorphed vertex, measured as the bands measure chunks.
     // The unmorphed place first (exact, as every chunk sharing the vertex computes it), so
     // they all get the same factor.
     vec2 fromCamera = (aChunk.xy + vec2(grid) * aChunk.w) - uLodCamera.xz;
     float dy = max(uLodCamera.y - uLodHeight, 0.0) + max(-uLodHeight - uLodCamera.y, 0.0);
     float factor = clamp((length(vec3(fromCamera.x, dy, fromCamera.y)) - uMorphZones[band].x) * uMorphZones[band].y, 0.0, 1.0);
-    int next = bandStep(band + 1);
+    int next = BAND_STEPS[band + 1];
     morphed += factor * (vec2(snapEdge(grid.x, next), snapEdge(grid.y, next)) - vec2(grid));
   }
   if (grid.x == 0 && int(aEdgeSteps.x) > own) morphed.y = float(snapEdge(grid.y, int(aEdgeSteps.x)));
@@ -106,9 +107,8 @@ void main() {
   vec3 d = waveDisplacement(gridXZ);
   // A model with WAVE_PIXEL_NORMALS has its normal evaluated per pixel by ocean.frag, which
   // then reads this one only on the comparison view's right half (OCEAN_NORMALS_COMPARE) or
-  // flat: it is left out of the program otherwise. Not a uniform branch: SwiftShader runs a
-  // branch's body for every vertex whatever the uniform says, and for the FFT sea the
-  // normal and the fabricated one were 36 texelFetch a vertex beside the displacement's 12.
+  // flat: it is left out of the program otherwise (perf: a define, not a uniform branch,
+  // docs/shader-notes.md).
 #if defined(WAVE_PIXEL_NORMALS) && !defined(OCEAN_NORMALS_COMPARE)
   vNormal = vec3(0.0, 1.0, 0.0);
 #else
@@ -143,7 +143,7 @@ void main() {
   // ocean.frag's per-pixel normals (OCEAN_WAKE is compiled in alongside).
   vec3 field = iwaveHeightAndGradient((aChunk.xy - uRenderOrigin) + morphed * aChunk.w + d.xz, uRenderOrigin);
   world.y += field.x;
-  if (!uFlatNormals) vNormal = normalize(vec3(vNormal.x - field.y * vNormal.y, vNormal.y, vNormal.z - field.z * vNormal.y));
+  if (!uFlatNormals) vNormal = wakeTiltNormal(vNormal, field.yz);
   vWakeSlope += field.yz;
 #endif
   // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
@@ -160,7 +160,7 @@ void main() {
 #endif
   vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;
-  vVertexSpacing = aChunk.w * float(band < 6 ? bandStep(band) : 1);
+  vVertexSpacing = aChunk.w * float(farRing ? 1 : BAND_STEPS[band]);
   vWaveFade = waves;
   vec4 view = uViewRelative * vec4(relative, 1.0);
   // A vertex exactly in the eye's plane (view z = 0, so clip w = 0: a level camera whose z

@@ -3,8 +3,8 @@
 // (SwiftShader gives just that: 7e-4 m on a 1-m swell, ten times the parity budgets). So the
 // turn is folded into [-1/4, 1/4] and the sine is the Taylor series to x^11, accurate to 6e-8
 // over [-π/2, π/2], which keeps float32 GPUs within 1e-5 m of the float64 CPU twins.
-// Shared by the seed's swell, the Gerstner sum and the Kelvin wake: one program may hold
-// several of them, so the definitions are guarded.
+// Shared by the seed's swell, the Gerstner sum, the Kelvin wake and the FFT's spectrum: one
+// program may hold several of them, so the definitions are guarded.
 #ifndef OCEANO_SIN_TURNS
 #define OCEANO_SIN_TURNS
 

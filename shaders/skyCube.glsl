@@ -1,9 +1,8 @@
 // The sky cube as every shader reads it. The default sky's cube (src/render/sky/sunSky.ts) holds
-// the square root of the linear colour in 8 bits a channel: SwiftShader filters RGBA8 far
-// faster than the RGBA16F it had (the default view's frame about 13 % less), and the square
-// root spends the 8 bits where the eye sees them, steps of about one output level, as sRGB
-// does (an sRGB8 cube was barely faster: SwiftShader decodes sRGB the slow way). Cubes made
-// from images are sRGB textures the hardware decodes: uSkySquared is 0 for them.
+// the square root of the linear colour in 8 bits a channel (perf: RGBA8 rather than half
+// floats, for the software rasterizer, docs/shader-notes.md): the square root spends the 8 bits
+// where the eye sees them, steps of about one output level, as sRGB does. Cubes made from
+// images are sRGB textures the hardware decodes: uSkySquared is 0 for them.
 #ifndef OCEANO_SKY_CUBE
 #define OCEANO_SKY_CUBE
 

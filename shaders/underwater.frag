@@ -40,8 +40,8 @@ void main() {
   vec3 nearWorld = nearWorldPoint(nearView);
   vec3 direction = normalize(nearWorld - uEye);
 
-  // PER_PIXEL_WATERLINE and GOD_RAYS are defines, not uniforms: SwiftShader runs both
-  // sides of a branch, so what a frame does not need is compiled out.
+  // perf: PER_PIXEL_WATERLINE and GOD_RAYS are defines, not uniforms, so what a frame does
+  // not need is compiled out (docs/shader-notes.md).
 #ifdef PER_PIXEL_WATERLINE
   if (startsInAir(scene.a, depthSample, nearWorld)) {
     gl_FragColor = uWriteMask ? vec4(0.0) : vec4(sceneColor(scene), 1.0);

@@ -5,8 +5,8 @@
 uniform vec3 uWaterScatter;
 uniform float uFogDensity;
 // uWaterScatter times the daylight left at the eye's depth (exp(-DEPTH_DARKENING · depth)),
-// made on the CPU once a frame (src/render/underwater/waterVolumeUniforms.ts): per pixel it was three
-// exponentials of the same uniform, 14 of the underwater frame's 196 ms under SwiftShader.
+// made on the CPU once a frame (src/render/underwater/waterVolumeUniforms.ts) rather than three
+// exponentials of the same uniform per pixel (perf: docs/shader-notes.md).
 uniform vec3 uWaterAtEye;
 
 // Per-channel extinction relative to uFogDensity (WATER_EXTINCTION) and the daylight's fading

@@ -11,7 +11,7 @@
 // With the eye 5 cm above the water, the near plane (0.5 m out) crosses the water, and
 // where its points lay between the two surfaces (above the function, under the triangles)
 // the sand behind was taken for air and drawn sharp and unfogged: a band of bright green
-// caustics along the waterline (issue 13).
+// caustics along the waterline.
 const float SEA_BED_ALPHA = 0.875;
 
 bool startsInAir(float alpha, float depthSample, vec3 nearWorld) {

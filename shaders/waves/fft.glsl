@@ -12,7 +12,8 @@
 //   vec3 waveNormal(vec2 gridXZ)        unit normal of the displaced surface there
 //   float waveLensHeight(vec2 worldXZ)  the short waves' height (focuses the god rays)
 // and, this model only (ocean.frag tests the defines):
-//   WAVE_PIXEL_NORMALS: waveNormal is exact (from spectral slopes): evaluate it per pixel
+//   WAVE_PIXEL_NORMALS: waveNormal is exact (from spectral slopes): evaluate it per pixel,
+//     after wavePixelFields has read this pixel's fields
 //   WAVE_FOAM: float waveFoam(vec2 gridXZ), foam coverage in [0, 1]
 //   WAVE_FABRICATED_NORMAL: vec3 waveFabricatedNormal(vec2 gridXZ), the seed's finite-
 //     difference normal of the same surface, for the comparison teaching view
@@ -64,8 +65,8 @@ vec4 fftBilinear(sampler2D map, vec2 p, float scale, vec2 offset) {
 // The ocean's pixels (ocean.frag defines WAVE_FRAGMENT_STAGE) read the fields through the
 // texture unit's own bilinear filter when float textures are filterable
 // (OES_texture_float_linear; fftWaveView.ts then defines FFT_FILTERED_FIELDS and makes the
-// targets LINEAR): one filtered read per field instead of four texelFetch and their weights,
-// the pixel's dearest part under SwiftShader. Texel (p, q) sits at the grid point (p, q) L/n,
+// targets LINEAR): one filtered read per field instead of four texelFetch and their weights.
+// Texel (p, q) sits at the grid point (p, q) L/n,
 // i.e. at texture coordinate (p + ½)/n, hence the half texel. Only normals and foam are read
 // this way; positions (the vertex stage, the boat's twin, caustics) keep the exact reads
 // above, so the 1 mm parity with the CPU twin is untouched. The filter's weights may be
@@ -95,11 +96,10 @@ vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, v
 #ifdef WAVE_FRAGMENT_STAGE
 // The ocean's pixels: every field a pixel needs is read once, at the top of ocean.frag's main
 // (wavePixelFields), outside any branch, and the normal and foam below only combine them.
-// SwiftShader runs a branch's instructions for every pixel of a quad (the untaken side under a
-// mask), so a "read only if not cached" branch read its textures again on the foam's call.
+// perf: a "read only if not cached" branch would read the textures again on a software
+// rasterizer, which runs both sides of a branch (docs/shader-notes.md).
 // Per cascade: the derivatives texture (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z) and the foam texture
 // (foam potential, J, ∂Dx/∂x) (shaders/fftFoam.frag): 6 reads per pixel.
-#define WAVE_PIXEL_FIELDS
 vec4 fftPixelDerivatives;
 float fftPixelJxx;
 vec2 fftPixelPotentials;

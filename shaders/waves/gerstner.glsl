@@ -98,6 +98,10 @@ vec3 waveNormalNear(vec2 relativeXZ) {
   return gerstnerNormal(relativeXZ, true);
 }
 
+// ocean.frag reads a per-pixel model's fields first (wavePixelFields); the closed-form normal
+// reads only uniforms, so there is nothing to read ahead.
+void wavePixelFields(vec2 relativeXZ, bool near) {}
+
 // Waves shorter than this focus sunlight within the god-ray shafts' few metres; longer ones
 // only tilt the whole shaft field. Their height is taken at the world point itself (their
 // horizontal motion, a fraction of a metre, moves the shafts, not their pattern).

@@ -95,7 +95,7 @@ export class OceanApp {
       this.view.update(this.clock.time);
     }
     if (state.camera) this.orbit.setPose(state.camera);
-    this.context = new ContextWatch(this.canvas, {
+    this.context = new ContextWatch(this.view.renderer, {
       showNotice: () => this.notify(message('contextLost'), 'error'),
       removeNotice: (notice) => this.notices.remove(notice),
       setLost: (lost) => this.loop.setStopped('contextLost', lost),

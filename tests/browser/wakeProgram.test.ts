@@ -5,16 +5,16 @@ import { useHarness } from './useHarness';
 const harness = useHarness();
 
 /**
- * The ocean's programs carry the boat wake's code only while the wake is on (OCEAN_WAKE, set
- * by OceanMaterial.setWakeOn; issue 14's ttffMs: SwiftShader compiles a program on its first
- * draw, and the wake's loops were a third of the vertex stage). Turning the wake on must
- * compile it back into both ocean programs, so that the sea drawn shows the wake; turning it
- * off and on again must give the very same picture.
+ * The ocean's programs carry the boat wake's code only while the wake is on (OCEAN_WAKE, which
+ * OceanMaterial sets as it draws, from the shared wake uniforms: a software rasterizer compiles
+ * a program on its first draw, and the wake's loops are a large part of it). Turning the wake
+ * on must compile it back into both ocean programs, so that the sea drawn shows the wake;
+ * turning it off and on again must give the very same picture.
  *
- * Measured (320×180, SwiftShader, 2026-11-22): the wake moves 6.8 % of the pixels by more than
- * 2 levels (the boat's picture is the same: it floats on the waves alone, and the ±19.47°
- * guide is off); with the control (setWakeOn never compiling the code in) 0.05 % (the wake's
- * bound grows the culling boxes, which may pick other chunks).
+ * Measured (320×180, SwiftShader): the wake moves 6.8 % of the pixels by more than 2 levels
+ * (the boat's picture is the same: it floats on the waves alone, and the ±19.47° guide is
+ * off); with the control (the code never compiled in) 0.05 % (the wake's bound grows the
+ * culling boxes, which may pick other chunks).
  */
 const QUERY = 'wake=0&wakeGuide=0&boatSpeed=4&boatHeading=270&boatTurnRate=3&t=10';
 /** Share of pixels the wake must move by more than 2 levels: 1 %, between the control's 0.05 % and the measured 6.8 %. */
@@ -41,11 +41,11 @@ describe('the wake compiled into the ocean only while it is on', () => {
         };
         const same = (a: Uint8Array, b: Uint8Array) => a.every((v, i) => v === b[i]);
         // Both ocean programs (the far bands' material and its near twin), by their uniforms.
-        type Material = { defines: Record<string, string>; uniforms: Record<string, { value: unknown }>; setWakeOn(on: boolean): void };
+        type Material = { defines: Record<string, string>; uniforms: Record<string, { value: unknown }>; onBeforeRender(...args: unknown[]): void; needsUpdate: boolean };
         const materials = new Set<Material>();
         o.three.scene.traverse((object) => {
           const m = (object as unknown as { material?: Material }).material;
-          if (m?.uniforms?.uWakeOn) materials.add(m);
+          if (m?.uniforms?.uWakeCount && m.uniforms.uFresnelTable) materials.add(m);
         });
         const compiledIn = () => [...materials].map((m) => 'OCEAN_WAKE' in m.defines);
         const off = picture(false);
@@ -54,15 +54,18 @@ describe('the wake compiled into the ocean only while it is on', () => {
         const onDefines = compiledIn();
         const offAgain = picture(false);
         const onAgain = picture(true);
-        // The control: setWakeOn sets the fragment's switch but never compiles the code in.
-        const original = Object.getPrototypeOf([...materials][0]).setWakeOn as (this: Material, on: boolean) => void;
-        for (const m of materials) m.setWakeOn = function (this: Material, wakeOn: boolean) {
-          original.call(this, false);
-          this.uniforms.uWakeOn.value = wakeOn;
+        // The control: the wake's code taken out again after each material has compiled it in.
+        const original = Object.getPrototypeOf([...materials][0]).onBeforeRender as (this: Material, ...args: unknown[]) => void;
+        for (const m of materials) m.onBeforeRender = function (this: Material, ...args: unknown[]) {
+          original.apply(this, args);
+          if ('OCEAN_WAKE' in this.defines) {
+            delete this.defines.OCEAN_WAKE;
+            this.needsUpdate = true;
+          }
         };
         picture(false);
         const faulty = picture(true);
-        for (const m of materials) delete (m as Partial<Material>).setWakeOn;
+        for (const m of materials) delete (m as Partial<Material>).onBeforeRender;
         return {
           materials: materials.size,
           offDefines,

@@ -1,5 +1,6 @@
 import { describe, expect, it, vi } from 'vitest';
-import { BackSide, CubeTexture, DoubleSide, FrontSide, Group, Scene, Texture, type IUniform } from 'three';
+import { BackSide, CubeTexture, DoubleSide, FrontSide, Group, PerspectiveCamera, Scene, Texture, type IUniform } from 'three';
+import { createWakeUniforms } from '../../src/render/wake/wakeUniforms';
 import { OceanMaterial } from '../../src/render/ocean/oceanMaterial';
 import { BoatView } from '../../src/render/boat/boatView';
 import { WaveBinding } from '../../src/render/waves/waveBinding';
@@ -17,7 +18,7 @@ import { defaultParams } from '../../src/sim/params/params';
 
 function material(): OceanMaterial {
   const view = { name: 'seed', chunkName: 'oceano_waves_test', chunk: '', uniforms: {} } as unknown as WaveModelView;
-  const shared = { uSunColor: { value: null } } as unknown as ConstructorParameters<typeof OceanMaterial>[3];
+  const shared = { uSunColor: { value: null }, ...createWakeUniforms() } as unknown as ConstructorParameters<typeof OceanMaterial>[3];
   return new OceanMaterial(new WaveBinding(view), { fromAbove: new Texture(), fromBelow: new Texture() }, new CubeTexture(), shared);
 }
 
@@ -46,21 +47,26 @@ describe('OceanMaterial.setSeenFromBelow: the same answer again changes nothing'
   });
 });
 
-describe('OceanMaterial.setWakeOn: the wake compiled in only while on, and a repeat recompiles nothing', () => {
-  it('follows every change of the answer in both programs, and leaves the versions alone on a repeat', () => {
+describe('OceanMaterial: the wake compiled in only while its shared uniforms hold a track, and a repeat recompiles nothing', () => {
+  it('follows every change of uWakeCount at the next draw of each program, and leaves the versions alone on a repeat', () => {
     const m = material();
-    // Compiled in until told otherwise: a material nobody calls setWakeOn on keeps today's program.
-    expect('OCEAN_WAKE' in m.defines && 'OCEAN_WAKE' in m.near.defines).toBe(true);
-    let previous: boolean | null = null;
-    for (const on of [false, false, true, true, false, true, false, false]) {
+    const camera = new PerspectiveCamera();
+    // Nothing drawn yet: no track, no wake code.
+    expect('OCEAN_WAKE' in m.defines || 'OCEAN_WAKE' in m.near.defines).toBe(false);
+    let previous = false;
+    for (const count of [0, 1, 2, 40, 0, 64, 1, 0]) {
+      const on = count >= 2;
       const versions = [m.version, m.near.version];
-      m.setWakeOn(on);
+      // The count is shared by every ocean material of a view (compare strips too); each program
+      // reads it as it is drawn.
+      (m.uniforms.uWakeCount as IUniform<number>).value = count;
+      m.onBeforeRender(null, null, camera);
+      m.near.onBeforeRender(null, null, camera);
       expect('OCEAN_WAKE' in m.defines).toBe(on);
       expect('OCEAN_WAKE' in m.near.defines).toBe(on);
-      expect((m.uniforms.uWakeOn as IUniform<boolean>).value).toBe(on);
-      // setWakeOn runs every frame: a repeat must not rebuild the programs.
+      // Drawn every frame: a repeat must not rebuild the programs.
       if (on === previous) expect([m.version, m.near.version]).toEqual(versions);
-      else expect(m.version).toBeGreaterThan(versions[0]);
+      else expect([m.version, m.near.version]).toEqual([versions[0] + 1, versions[1] + 1]);
       previous = on;
     }
   });

@@ -79,7 +79,7 @@ export class CompareRenderer {
       if (i === 0) this.ocean.cull(stripCamera, this.stripCulling);
       else {
         const side = this.sides[i - 1];
-        side.chunks.update(stripCamera, this.ocean.lodSettings, side.bounds(), this.stripCulling);
+        side.chunks.update(stripCamera, this.ocean.lodSettings, this.ocean.grownByWake(side.bounds()), this.stripCulling);
       }
     });
   }
@@ -119,6 +119,11 @@ export class CompareRenderer {
     stripCamera.setViewOffset(width, fullHeight, strip.x0, 0, strip.x1 - strip.x0, fullHeight);
     stripCamera.updateMatrixWorld();
     return stripCamera;
+  }
+
+  /** After a lost WebGL context comes back: each compared model redoes what lived in render targets. */
+  contextRestored(): void {
+    for (const side of this.sides) side.view.contextRestored?.();
   }
 
   dispose(): void {

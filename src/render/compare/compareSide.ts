@@ -14,7 +14,7 @@ import type { WakeUniforms } from '../wake/wakeUniforms';
 export interface OceanMaterialInputs {
   fresnelTables: { fromAbove: Texture; fromBelow: Texture };
   sky: CubeTexture;
-  /** Uniforms every ocean material shares: the water volume, the boat's wake (switched on only for the first model's material), the sun's colour. */
+  /** Uniforms every ocean material shares: the water volume, the boat's wake (each material compiles it in while it has a track), the sun's colour. */
   shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>;
 }
 

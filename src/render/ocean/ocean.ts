@@ -267,8 +267,17 @@ export class Ocean extends Object3D {
 
   /** The culling bounds: the model's, grown by the wake's. */
   cullingBounds(): { vertical: number; horizontal: number } {
+    return this.grownByWake(this.bounds);
+  }
+
+  /**
+   * A model's bounds grown by how far the wake and the interactive waves (the tallest stone,
+   * while they are on) can raise the surface: every model drawn with this ocean's wake (a
+   * compared one too) culls, and morphs its bands, with these.
+   */
+  grownByWake(bounds: { vertical: number; horizontal: number }): { vertical: number; horizontal: number } {
     const extra = this.wakeBound + (this.interactive ? IWAVE_MAX_HEIGHT : 0);
-    return extra === 0 ? this.bounds : { vertical: this.bounds.vertical + extra, horizontal: this.bounds.horizontal };
+    return extra === 0 ? bounds : { vertical: bounds.vertical + extra, horizontal: bounds.horizontal };
   }
 
   /** The shading for where the eye is: which faces, the sea bed, the sky behind, the water between the eye and the surface. */
@@ -295,7 +304,6 @@ export class Ocean extends Object3D {
   setWake(data: WakeUniformData, bound: number): void {
     if (data !== this.appliedWake) applyWakeUniforms(this.wakeUniforms, data);
     this.appliedWake = data;
-    this.material.setWakeOn(data.count >= 2);
     this.wakeBound = bound;
   }
 
@@ -314,6 +322,7 @@ export class Ocean extends Object3D {
   /** After a lost WebGL context comes back: paints again what lived only in render targets. */
   contextRestored(): void {
     this.chunks.forgetSelection();
+    this.waveView.contextRestored?.();
     this.skySource.contextRestored(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
   }
 

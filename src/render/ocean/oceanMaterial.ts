@@ -57,7 +57,6 @@ export class OceanMaterial extends ShaderMaterial {
         uRenderOrigin: { value: new Vector2() },
         uViewRelative: { value: new Matrix4() },
         uEyeRelative: { value: new Vector3() },
-        uWakeOn: { value: false },
         uLodCamera: { value: new Vector3() },
         uLodHeight: { value: 0 },
         uMorphZones: { value: morphZones(1, 1, false) },
@@ -65,8 +64,6 @@ export class OceanMaterial extends ShaderMaterial {
     });
     this.main = main;
     markOceanoMaterial(this);
-    // The wake's code is compiled in until setWakeOn says the wake is off (see there).
-    this.defines.OCEAN_WAKE = '';
     if (main) {
       this.uniforms = main.uniforms;
       this.defines.OCEAN_NEAR_BANDS = '';
@@ -105,6 +102,7 @@ export class OceanMaterial extends ShaderMaterial {
    * precision here so that the shaders only see small numbers.
    */
   override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
+    this.followWake();
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
     const [x, z] = (this.main ?? this).originFor(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
@@ -122,7 +120,7 @@ export class OceanMaterial extends ShaderMaterial {
    * plane in the water): a line of sight first meets the surface from below, where a front
    * face could only show behind a back face, so back faces only, and the shading from above
    * is left out of the program (OCEAN_ONLY_FROM_BELOW): SwiftShader would otherwise run it
-   * for every pixel of the underside too (issue 14).
+   * for every pixel of the underside too.
    */
   setSeenFromBelow(where: Submersion): void {
     // Called every frame with, almost always, last frame's answer: nothing else writes these
@@ -174,37 +172,28 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   /**
-   * Whether the boat's wake is drawn (uWakeCount ≥ 2): the fragment shader then adds its slope
-   * and foam, and the wake's code is compiled into both programs (OCEAN_WAKE). Off (the
-   * default view), that code is left out: the vertex shader would skip it anyway, but
-   * SwiftShader compiles each program to machine code on its first draw, and the wake's two
-   * loops were about 120 ms of GPU-process CPU of each ocean program's 330 ms vertex stage
-   * (scripts/compileProbe.ts, issue 14's ttffMs). Turning the wake on or off builds the
-   * other programs once, on the next draw.
+   * The boat's wake is compiled into this program (OCEAN_WAKE) while the shared wake uniforms
+   * hold a track to draw (uWakeCount ≥ 2), so that every ocean material, a compare strip's
+   * too, draws the wake's heights, slope and foam from the same data. Off (the default view),
+   * its code is left out: a software rasterizer compiles each program on its first draw, and
+   * the wake's loops are a large part of that (docs/shader-notes.md). Turning the wake on or
+   * off builds the other program once, on the next draw; three.js keeps both.
    */
-  setWakeOn(on: boolean): void {
-    this.wakeOn = on;
-    this.applyWakeSlope();
+  private interactiveWavesOn = false;
+
+  private followWake(): void {
+    setMaterialDefine(this, 'OCEAN_WAKE', (this.uniforms.uWakeCount.value as number) >= 2 || this.interactiveWavesOn);
   }
 
   /**
-   * Whether the interactive waves (iWave) are drawn: their code is compiled in (OCEAN_IWAVE)
-   * only while they are on, so that off, the programs are the ones without them. Their slope
-   * reaches ocean.frag's per-pixel normals through the wake's (OCEAN_WAKE goes in alongside).
+   * Whether the interactive waves (iWave) are drawn: their code is compiled into both programs
+   * (OCEAN_IWAVE) only while they are on, so that off, the programs are the ones without them.
+   * Their slope reaches ocean.frag's per-pixel normals through the wake's (vWakeSlope), so
+   * OCEAN_WAKE goes in alongside; with no wake track its loops are skipped (uWakeCount < 2).
    */
   setInteractiveWavesOn(on: boolean): void {
-    this.interactiveWavesOn = on;
+    for (const material of this.near === this ? [this] : [this, this.near]) material.interactiveWavesOn = on;
     this.setDefine('OCEAN_IWAVE', on);
-    this.applyWakeSlope();
-  }
-
-  private wakeOn = true;
-  private interactiveWavesOn = false;
-
-  private applyWakeSlope(): void {
-    const on = this.wakeOn || this.interactiveWavesOn;
-    this.uniforms.uWakeOn.value = on;
-    this.setDefine('OCEAN_WAKE', on);
   }
 
   /**

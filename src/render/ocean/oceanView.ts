@@ -111,7 +111,6 @@ export class OceanView {
   /** The boat's wake for the coming frame, its culling bound, and the ±19.47° teaching guide at the boat. */
   setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
     this.ocean.setWake(data, bound);
-    for (const side of this.compare.sides) side.material.setWakeOn(data.count >= 2);
     this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
   }
 
@@ -123,6 +122,7 @@ export class OceanView {
   /** After a lost WebGL context comes back: paints again what lived only in render targets (the sun's sky). */
   contextRestored(): void {
     this.ocean.contextRestored();
+    this.compare.contextRestored();
   }
 
   /** Shows a page's own cube map from now on (the sun then moves only the lighting). */

@@ -1,6 +1,6 @@
 import { WATER_IOR } from '../../sim/optics/fresnel';
 import { BLUR_MAX_TAPS } from '../underwater/gaussianKernel';
-import { DETAIL_NORMALS_FROM, LOD_BAND_COLORS } from '../../sim/lod/lodBands';
+import { BAND_STEPS, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
 import { GOD_RAY_RANGE } from '../underwater/shaftLightTile';
 import { DEPTH_DARKENING, WATER_EXTINCTION } from '../../sim/underwater/waterFog';
 
@@ -30,7 +30,8 @@ export function shaderConstantsChunk(): string {
     `#define WATER_EXTINCTION ${glslVec3(WATER_EXTINCTION)}`,
     `#define DEPTH_DARKENING ${glslVec3(DEPTH_DARKENING)}`,
     `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
-    `#define LOD_BAND_COUNT ${LOD_BAND_COLORS.length}`,
+    `#define LOD_BAND_COUNT ${MAX_LOD_BANDS}`,
+    `#define LOD_BAND_STEPS int[${BAND_STEPS.length}](${BAND_STEPS.join(', ')})`,
     `#define LOD_BAND_COLORS vec3[${LOD_BAND_COLORS.length}](${LOD_BAND_COLORS.map(glslVec3).join(', ')})`,
     '#endif',
     '',

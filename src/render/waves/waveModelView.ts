@@ -15,6 +15,7 @@ import type { LiveWaveModel, WavesChoice } from '../../sim/waves/waveModel';
  *   float waveLensHeight(vec2 worldXZ);  // short waves' height: focuses the god-ray shafts
  * and nothing else that other shaders may rely on (helpers stay private by convention).
  * A chunk that defines WAVE_PIXEL_NORMALS also defines, for ocean.frag's pixels,
+ *   void wavePixelFields(vec2 relativeXZ, bool near); // reads the pixel's fields once, first
  *   vec3 waveNormalNear(vec2 relativeXZ); // waveNormal at the render origin + relativeXZ
  * (and with WAVE_FOAM, waveFoamNear), fed the origin by setRenderOrigin.
  */
@@ -57,6 +58,12 @@ export interface WaveModelView {
    * after each group, and returns each group's time. Absent for models with no GPU passes.
    */
   profilePasses?(sync: () => void): PassTiming[];
+  /**
+   * After a lost WebGL context comes back: what the model's GPU passes drew into render
+   * targets is gone, so the next update must draw it again even at the same time. Absent
+   * where nothing lives only in render targets.
+   */
+  contextRestored?(): void;
   dispose(): void;
 }
 

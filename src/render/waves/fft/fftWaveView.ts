@@ -224,6 +224,11 @@ export class FftWaveView implements WaveModelView {
     return timings;
   }
 
+  /** The fields and the foam lived in render targets: the next update runs the FFTs and the foam's warm-up again. */
+  contextRestored(): void {
+    this.time = Number.NaN;
+  }
+
   dispose(): void {
     this.model.dispose();
     this.foam.dispose();

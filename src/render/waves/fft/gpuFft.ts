@@ -18,13 +18,17 @@ import {
   type WebGLRenderer,
 } from 'three';
 import quadVertex from '../../../../shaders/fftQuad.vert?raw';
-import spectrumFragment from '../../../../shaders/fftSpectrum.frag?raw';
+import spectrumSource from '../../../../shaders/fftSpectrum.frag?raw';
+import sinTurns from '../../../../shaders/sinTurns.glsl?raw';
 import stageFragment from '../../../../shaders/fftStage.frag?raw';
 import { timeInPeriod } from '../../../sim/waves/dispersion';
 import { stockhamRadices } from '../../../sim/waves/fft/stockhamFft';
 import type { FftOceanSetup } from '../../../sim/waves/fft/fftOcean';
 import { REPEAT_PERIOD, type SpectralTile } from '../../../sim/waves/spectra/initialSpectrum';
 import { floatTexture } from '../../optics/dataTextures';
+
+/** The spectrum's shader with the shared sine inlined: resolved here, not through three's global ShaderChunk. */
+const spectrumFragment = spectrumSource.replace('#include <oceano_sin_turns>', sinTurns);
 
 /**
  * Two RGBA32F colour attachments, written together by every pass (MRT). Needs EXT_color_buffer_float.
