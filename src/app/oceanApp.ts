@@ -247,7 +247,9 @@ export class OceanApp {
   shareUrl = (): string =>
     shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time) });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
-  sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (checkSurfacePoint(x, z), this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params));
+  sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (
+    checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params), x, z)
+  );
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   /** The panel's button: a stone at the point the camera orbits, the interactive waves turned on first if they are off. */
   private dropStone(): void {

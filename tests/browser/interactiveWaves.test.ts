@@ -67,4 +67,14 @@ describe('interactive waves in the Ocean', () => {
     expect(calmChanged).toBe(0);
     expect(stoneChanged).toBeGreaterThan(0.01 * pixels);
   }, 600_000);
+
+  it('lets sampleSurface see the field through its read-back: at texel centres it gives the texel (planted fault: a texel off does not)', async () => {
+    // Texel centres of the grid centred on the origin lie at odd multiples of 0.25 m.
+    const points: [number, number][] = [[0.25, 0.25], [2.75, -1.25], [-4.25, 3.75]];
+    const { sampled, texels } = await page.evaluate((p) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.sampled(p), points);
+    console.log(`sampleSurface ${sampled.map((h) => h.toFixed(5)).join(', ')} m; field texels ${texels.map((h) => h.toFixed(5)).join(', ')} m`);
+    expect(Math.max(...texels.map(Math.abs))).toBeGreaterThan(0.01);
+    for (let k = 0; k < points.length; k++) expect(Math.abs(sampled[k] - texels[k])).toBeLessThan(1e-6);
+    expect(Math.abs(sampled[0] - texels[1])).toBeGreaterThan(1e-3);
+  }, 600_000);
 });

@@ -1,6 +1,6 @@
 import { Vector4, type IUniform, type Texture, type WebGLRenderer } from 'three';
 import { GpuIWave } from './gpuIWave';
-import { IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, type DisturbanceOptions } from '../../sim/iwave/interactiveField';
+import { IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, sampleField, type DisturbanceOptions, type FieldSnapshot } from '../../sim/iwave/interactiveField';
 import type { Disturbance } from '../../sim/iwave/iwaveGrid';
 
 export interface InteractiveWaveUniforms {
@@ -25,9 +25,11 @@ export class InteractiveWaves {
   readonly field: GpuIWave;
   private step = 0;
   private readonly log: { step: number; disturbance: Disturbance }[] = [];
+  private snapshot: FieldSnapshot | null = null;
+  private reading = false;
 
   constructor(
-    renderer: WebGLRenderer,
+    private readonly renderer: WebGLRenderer,
     private readonly uniforms: InteractiveWaveUniforms,
   ) {
     this.field = new GpuIWave(renderer, { n: IWAVE_GRID_SIZE, spacing: IWAVE_SPACING, damping: 0.02 });
@@ -63,6 +65,43 @@ export class InteractiveWaves {
     this.field.disturb(disturbance);
     this.publish();
     return notices;
+  }
+
+  /**
+   * Starts an asynchronous read-back of the whole field (one at a time; the GPU is not waited
+   * for). `sample` answers from the latest that has arrived: a frame or two behind the picture.
+   */
+  readBack(): void {
+    if (this.reading) return;
+    this.reading = true;
+    const n = this.field.n;
+    const heights = new Float32Array(4 * n * n);
+    const snapshot: FieldSnapshot = { heights, stride: 4, n, spacing: this.field.spacing, centerX: this.field.centerX, centerZ: this.field.centerZ };
+    this.renderer
+      .readRenderTargetPixelsAsync(this.field.target, 0, 0, n, n, heights)
+      .then(() => {
+        this.snapshot = snapshot;
+      })
+      .catch(() => undefined)
+      .finally(() => {
+        this.reading = false;
+      });
+  }
+
+  /** Whether a read-back is on its way. */
+  get readBackPending(): boolean {
+    return this.reading;
+  }
+
+  /** (h, ∂h/∂x, ∂h/∂z) at world (x, z) from the latest read-back (zeros before the first arrives). */
+  sample(x: number, z: number): [number, number, number] {
+    return this.snapshot ? sampleField(this.snapshot, x, z) : [0, 0, 0];
+  }
+
+  /** After a lost WebGL context comes back: the field lived in render targets, so it is run again from the log at the next advance. */
+  contextRestored(): void {
+    this.step = Number.NEGATIVE_INFINITY;
+    this.snapshot = null;
   }
 
   private publish(): void {

@@ -7,6 +7,7 @@ import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../../sim/
 import { SUN_LIGHT_COLOR, sunDirection } from '../../sim/optics/sun';
 import { fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../../sim/underwater/snellWindow';
 import type { WakeUniformData } from '../../sim/wake/wakeUniformData';
+import { addWake } from '../../sim/wake/boatWake';
 import { createWaterVolumeUniforms, applyWaterVolume, setEyeDepth, type WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from '../underwater/causticsUniforms';
 import { SeaBed } from '../underwater/seaBed';
@@ -223,7 +224,15 @@ export class Ocean extends Object3D {
   advance(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
-    this.interactive?.advance(time);
+    if (this.interactive) {
+      this.interactive.advance(time);
+      this.interactive.readBack();
+    }
+  }
+
+  /** `sample` (at world (x, z)) with the interactive waves added while they are on, from their latest read-back. */
+  withInteractiveWaves(sample: SurfaceSample, x: number, z: number): SurfaceSample {
+    return this.interactive ? addWake(sample, this.interactive.sample(x, z)) : sample;
   }
 
   private setInteractiveWaves(on: boolean): void {
@@ -295,9 +304,12 @@ export class Ocean extends Object3D {
     return this.place.submersion;
   }
 
-  /** Height and normal of the surface at the world point (x, z), by the CPU twin, at the last update's time unless `time` is given. */
+  /**
+   * Height and normal of the surface at the world point (x, z), by the CPU twin, at the last update's time unless `time` is given;
+   * with the interactive waves on, their latest read-back added (a frame or two old, whatever `time` says).
+   */
   sampleSurface(x: number, z: number, time = this.frameTime): SurfaceSample {
-    return this.waveView.model.sample(x, z, time);
+    return this.withInteractiveWaves(this.waveView.model.sample(x, z, time), x, z);
   }
 
   /** The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */
@@ -323,6 +335,7 @@ export class Ocean extends Object3D {
   contextRestored(): void {
     this.chunks.forgetSelection();
     this.waveView.contextRestored?.();
+    this.interactive?.contextRestored();
     this.skySource.contextRestored(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
   }
 

@@ -37,3 +37,47 @@ export function checkDisturbance(x: number, z: number, options: DisturbanceOptio
   }
   return { disturbance: { x, z, radius: used, height }, notices };
 }
+
+/** A read-back of the field: heights every `stride` floats (RGBA: 4), n × n row by row along z, around (centerX, centerZ). */
+export interface FieldSnapshot {
+  heights: Float32Array;
+  stride: number;
+  n: number;
+  spacing: number;
+  centerX: number;
+  centerZ: number;
+}
+
+/**
+ * (h, ∂h/∂x, ∂h/∂z) of a field snapshot at world (x, z): the CPU twin of
+ * iwaveHeightAndGradient in shaders/iwave.glsl (bilinear between texel centres, slopes by
+ * central differences one texel apart, faded out over the outer tenth of the square).
+ */
+export function sampleField(field: FieldSnapshot, x: number, z: number): [number, number, number] {
+  const { n, spacing } = field;
+  const halfWidth = 0.5 * n * spacing;
+  const fromX = x - field.centerX;
+  const fromZ = z - field.centerZ;
+  const edge = Math.max(Math.abs(fromX), Math.abs(fromZ)) / halfWidth;
+  const fade = 1 - smoothstep(0.9, 1, edge);
+  if (fade <= 0) return [0, 0, 0];
+  const u = fromX / spacing + n / 2 - 0.5;
+  const v = fromZ / spacing + n / 2 - 0.5;
+  const at = (i: number, j: number) => (i < 0 || j < 0 || i >= n || j >= n ? 0 : field.heights[(j * n + i) * field.stride]);
+  const bilinear = (a: number, b: number) => {
+    const i = Math.floor(a);
+    const j = Math.floor(b);
+    const fa = a - i;
+    const fb = b - j;
+    return (at(i, j) * (1 - fa) + at(i + 1, j) * fa) * (1 - fb) + (at(i, j + 1) * (1 - fa) + at(i + 1, j + 1) * fa) * fb;
+  };
+  const h = bilinear(u, v);
+  const dx = (bilinear(u + 1, v) - bilinear(u - 1, v)) / (2 * spacing);
+  const dz = (bilinear(u, v + 1) - bilinear(u, v - 1)) / (2 * spacing);
+  return [fade * h, fade * dx, fade * dz];
+}
+
+function smoothstep(edge0: number, edge1: number, x: number): number {
+  const t = Math.min(1, Math.max(0, (x - edge0) / (edge1 - edge0)));
+  return t * t * (3 - 2 * t);
+}
