@@ -68,6 +68,23 @@ describe('interactive waves in the Ocean', () => {
     expect(stoneChanged).toBeGreaterThan(0.01 * pixels);
   }, 600_000);
 
+  it('gives the same field whether the clock plays, steps or jumps forward, and replays the stones after a jump back (planted fault: a stone a step later differs)', async () => {
+    const played = (times: number[], stones: { time: number; x: number; z: number }[]) =>
+      page.evaluate((t, s) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.played(t, s), times, stones);
+    const stones = [{ time: 0.1, x: 1, z: -2 }];
+    // Frames at 60 Hz to 0.5 s; frames of uneven length; a jump from the stone to 0.5 s; and a
+    // run past 0.5 s then back to it (the field restarts calm and replays the stone).
+    const frames = Array.from({ length: 31 }, (_, k) => k / 60);
+    const uneven = [0, 0.05, 0.1, 0.13, 0.29, 0.31, 0.42, 0.5];
+    const jump = [0, 0.1, 0.5];
+    const back = [0, 0.1, 0.3, 0.7, 0.5];
+    const reference = await played(frames, stones);
+    expect(Math.max(...reference.map(Math.abs))).toBeGreaterThan(0.01);
+    for (const times of [uneven, jump, back]) expect(await played(times, stones)).toEqual(reference);
+    const later = await played([0, 0.1, 0.13, 0.5], [{ time: 0.13, x: 1, z: -2 }]);
+    expect(later).not.toEqual(reference);
+  }, 600_000);
+
   it('lets sampleSurface see the field through its read-back: at texel centres it gives the texel (planted fault: a texel off does not)', async () => {
     // Texel centres of the grid centred on the origin lie at odd multiples of 0.25 m.
     const points: [number, number][] = [[0.25, 0.25], [2.75, -1.25], [-4.25, 3.75]];
