@@ -1,6 +1,6 @@
 import { Vector4, type IUniform, type Texture, type WebGLRenderer } from 'three';
 import { GpuIWave } from './gpuIWave';
-import { IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, sampleField, type DisturbanceOptions, type FieldSnapshot } from '../../sim/iwave/interactiveField';
+import { IWAVE_DAMPING, IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, sampleField, type DisturbanceOptions, type FieldSnapshot } from '../../sim/iwave/interactiveField';
 import type { Disturbance } from '../../sim/iwave/iwaveGrid';
 
 export interface InteractiveWaveUniforms {
@@ -32,7 +32,7 @@ export class InteractiveWaves {
     private readonly renderer: WebGLRenderer,
     private readonly uniforms: InteractiveWaveUniforms,
   ) {
-    this.field = new GpuIWave(renderer, { n: IWAVE_GRID_SIZE, spacing: IWAVE_SPACING, damping: 0.02 });
+    this.field = new GpuIWave(renderer, { n: IWAVE_GRID_SIZE, spacing: IWAVE_SPACING, damping: IWAVE_DAMPING });
     this.publish();
   }
 

@@ -72,14 +72,14 @@ export function bumpProfile(distance: number, radius: number): number {
  * Tessendorf's iWave on a CPU grid: the reference the GPU solver (src/render/iwave/) is held to,
  * and the solver of the physics tests.
  *
- * Texel (i, j) is the point x = cx + (i + ½ − n/2)·Δx, z = cz + (j + ½ − rows/2)·Δx of a square
- * centred on (cx, cz). Each step of Δt solves ∂²h/∂t² + α ∂h/∂t = −g √(−∇²) h, α per texel
- * (the light damping plus the sponge), with the damping term centred in time:
- *   h⁺ = [2h − (1 − αΔt/2) h⁻ − (g Δt² / Δx) (G ∗ h)] / (1 + αΔt/2).
+ * Texel (i, j) is the point x = cx + (i + ½ − n/2)·Δx, z = cz + (j + ½ − rows/2)·Δx of a
+ * rectangle centred on (cx, cz). Each step of Δt solves ∂²h/∂t² + α ∂h/∂t = −g √(−∇²) h, α per
+ * texel (the light damping plus the sponge), with the damping term centred in time:
+ *   h⁺ = [2h − (1 − αΔt/2) h⁻ − (g Δt² / Δx) (G ∗ h)] / (1 + αΔt/2),
+ * then multiplied by the obstacle mask (0 on a solid texel), so waves reflect from solids.
  * The paper prints h⁺ = [h (2 − αΔt) − h⁻ − …] / (1 + αΔt), which also pulls the height itself
  * towards 0 at about 2α/Δt: a stiffness that grows with α, so a sponge built on it reflects
  * (docs/iwave.md).
- * then multiplied by the obstacle mask (0 on a solid texel), so waves reflect from solids.
  */
 export class IWaveGrid {
   readonly n: number;
@@ -94,7 +94,7 @@ export class IWaveGrid {
   readonly obstacle: Float32Array;
   /** α per texel, 1/s. */
   readonly damping: Float64Array;
-  /** World (x, z) of the square's centre. */
+  /** World (x, z) of the grid's centre. */
   centerX = 0;
   centerZ = 0;
   private readonly wrapX: boolean;
