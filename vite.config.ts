@@ -2,6 +2,7 @@ import type { Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { defineConfig } from 'vitest/config';
 import { minifyGlsl, SHADER_RAW_IMPORT } from './scripts/build/glslMinify';
+import { lessonQuotes } from './scripts/build/lessonQuotes';
 
 /**
  * The page's Content-Security-Policy: scripts only from this origin (no inline script, no
@@ -74,7 +75,7 @@ export function shaderText(): Plugin {
 export default defineConfig({
   // Relative base: dist/ works when copied under any sub-path of a course site.
   base: './',
-  plugins: [contentSecurityPolicy(), lilGuiFontFile(), shaderText()],
+  plugins: [contentSecurityPolicy(), lilGuiFontFile(), shaderText(), lessonQuotes()],
   /**
    * One build for the page and dist/oceano.js (the <oceano-view> web component): two
    * entries of one bundle, so both import the same minified three.js chunk and the same

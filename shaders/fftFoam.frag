@@ -4,8 +4,9 @@
 // foam appears; elsewhere the foam already there fades as e^{−Δt/τ}. r = foam, g = this
 // cascade's J (for inspection), b = this cascade's ∂Dx/∂x, copied so that the ocean's pixels
 // find everything they need in this texture and the derivatives one, two filtered reads per
-// cascade instead of three (shaders/waves/fft.glsl). r is a foam potential: the shader draws
-// foam where r ≥ ~1. One draw steps all three cascades (three colour attachments, MRT).
+// cascade instead of three (shaders/waves/fft.glsl). r is a foam potential, 1 at the
+// threshold: the ocean draws the smallest cascade's as foam left behind from r = 1.25 on.
+// One draw steps all three cascades (three colour attachments, MRT).
 precision highp float;
 precision highp int;
 precision highp sampler2D;

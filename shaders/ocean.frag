@@ -79,6 +79,48 @@ vec3 sunLobe(float cosFromSun, float sharpness, float strength) {
   return uSunColor * pow(max(cosFromSun, 0.0), sharpness) * strength * sunVisible;
 }
 
+// The sun's glint on a sea whose normal shows only some of its slopes (WAVE_SLOPE_ROUGHNESS,
+// a model that knows which): the rest, of mean-square slope `variance`, are facets within
+// the pixel, Gaussian as Cox & Munk measured them, and the glint is the microfacet BRDF
+// integrated over them (Bruneton, Neyret & Holzschuch 2010, eq. 7–9; the tested twin is
+// src/sim/optics/beckmannGlint.ts): E_sun F(v·h) p(tan θh) / (4 cos θv cos⁴θh (1 + Λv + Λl)).
+// It widens with the wind, fades at its edges, and where a pixel covers many waves it is
+// their average, not one of them picked at random.
+float erfcApprox(float x) {
+  float t = 1.0 / (1.0 + 0.3275911 * x);
+  return t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429)))) * exp(-x * x);
+}
+
+// Smith's shadowing of Gaussian facets of mean-square slope σ² (σ²/2 in the plane of incidence), seen at cos θ.
+float smithLambda(float cosTheta, float variance) {
+  float c = clamp(cosTheta, 1e-4, 0.999999);
+  float nu = c / sqrt((1.0 - c * c) * variance);
+  return max(0.0, (exp(-nu * nu) / (nu * 1.7724539) - erfcApprox(nu)) * 0.5);
+}
+
+vec3 sunGlint(vec3 n, vec3 v, float variance, float fresnel) {
+  vec3 h = normalize(uSunDirection + v);
+  float cosH = dot(h, n);
+  float cosV = max(dot(v, n), 0.01);
+  float cosL = max(dot(uSunDirection, n), 0.01);
+  float tanH2 = (1.0 - cosH * cosH) / (cosH * cosH);
+  float density = exp(-tanH2 / variance) / (3.14159265 * variance);
+  float shadowing = 1.0 + smithLambda(cosV, variance) + smithLambda(cosL, variance);
+  float sunVisible = step(0.0, uSunDirection.y) * step(0.0, cosH);
+  return uSunColor * SUN_IRRADIANCE * fresnel * density / (4.0 * cosV * cosH * cosH * cosH * cosH * shadowing) * sunVisible;
+}
+
+// The glint is the sun's own radiance, many times the sky's: a display shows it only through
+// a tone curve. Below the knee colours are left exactly as they were (the water, most of the
+// sky's reflection); above it they roll off towards white instead of clipping, so the glint
+// keeps its falloff, and its width, where it is brighter than the screen. The foam's white
+// comes out a little greyer (0.88 → 0.80).
+const float HIGHLIGHT_KNEE = 0.6;
+vec3 rollOffHighlights(vec3 c) {
+  vec3 over = max(c - HIGHLIGHT_KNEE, 0.0) / (1.0 - HIGHLIGHT_KNEE);
+  return min(c, HIGHLIGHT_KNEE) + (1.0 - HIGHLIGHT_KNEE) * (1.0 - exp(-over));
+}
+
 // Linear interpolation between table entries done by hand: float textures are not
 // filterable everywhere in WebGL2.
 float fresnelLookup(sampler2D table, float cosIncidence) {
@@ -90,6 +132,22 @@ float fresnelLookup(sampler2D table, float cosIncidence) {
   float b = texelFetch(table, ivec2(j, 0), 0).r;
   return mix(a, b, x - float(i));
 }
+
+// The colour of the water itself from its optics (OCEAN_WATER_OPTICS; src/sim/optics/waterColor.ts):
+// the light that reaches just below the surface, the sun's through the surface plus the
+// sky's (taken as a sky as bright as its zenith all over, π L), is scattered back up by the
+// water molecules in the share R(λ) = 0.33 b_b/(a + b_b), evenly over the upward directions
+// (radiance R E / π), and leaves through the surface, its beam widened by n² (the (1 − F)
+// is the mix with the reflected sky below). Red is absorbed within metres, blue scattered:
+// deep clear water is dark blue, whatever colour was picked.
+#ifdef OCEAN_WATER_OPTICS
+vec3 waterBodyColor() {
+  float sunHeight = max(uSunDirection.y, 0.0);
+  vec3 sunThrough = uSunColor * SUN_IRRADIANCE * sunHeight * (1.0 - fresnelLookup(uFresnelTable, sunHeight));
+  vec3 skyThrough = 3.14159265 * skyCubeColor(vec3(0.0, 1.0, 0.0));
+  return WATER_BODY_REFLECTANCE * (sunThrough + skyThrough) / (3.14159265 * WATER_IOR * WATER_IOR);
+}
+#endif
 
 // The underside's shading, called only while the view may be under the water
 // (OCEAN_SEEN_FROM_BELOW, set by OceanMaterial.setSeenFromBelow; otherwise only front faces
@@ -206,11 +264,21 @@ void main() {
   r.y = max(r.y, 0.0);
   vec3 sky = skyCubeColor(normalize(r));
 
+#ifdef OCEAN_WATER_OPTICS
+  vec3 water = waterBodyColor();
+#else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
+#endif
   vec3 color = mix(water, sky, reflectance);
 
   vec3 halfway = normalize(uSunDirection + v);
+#ifdef WAVE_SLOPE_ROUGHNESS
+  // Each facet reflects the sun by its own Fresnel, at the angle between the eye and the half vector.
+  float facetReflectance = uFresnelEnabled ? fresnelLookup(uFresnelTable, dot(v, halfway)) : 0.5;
+  color += sunGlint(n, v, waveUnresolvedSlopeVariance(), facetReflectance);
+#else
   color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;
+#endif
 
   float foam = 0.0;
 #ifdef WAVE_FOAM
@@ -224,6 +292,9 @@ void main() {
   }
 
   color = mix(color, hazeColor(v), hazeWeight(distance));
+#ifdef WAVE_SLOPE_ROUGHNESS
+  color = rollOffHighlights(color);
+#endif
 
 #ifdef OCEAN_LOD_COLORS
   // The LOD debugger's band colours, near to far; the far rings and the skirt (bands past

@@ -17,10 +17,13 @@
 //   WAVE_FOAM: float waveFoam(vec2 gridXZ), foam coverage in [0, 1]
 //   WAVE_FABRICATED_NORMAL: vec3 waveFabricatedNormal(vec2 gridXZ), the seed's finite-
 //     difference normal of the same surface, for the comparison teaching view
+//   WAVE_SLOPE_ROUGHNESS: float waveUnresolvedSlopeVariance(), the mean-square slope of the
+//     waves this pixel's normal does not show, which the sun's glint takes as roughness
 
 #define WAVE_PIXEL_NORMALS
 #define WAVE_FOAM
 #define WAVE_FABRICATED_NORMAL
+#define WAVE_SLOPE_ROUGHNESS
 
 uniform sampler2D uFftDisplacement0;
 uniform sampler2D uFftDisplacement1;
@@ -42,6 +45,13 @@ uniform float uFoamEnabled;  // 0 or 1
 uniform float uFoamThreshold;
 uniform float uFoamSoftness;   // half-width of the soft edge around the threshold
 uniform float uFabricatedDelta;
+// Per cascade: the mean-square slope of its waves (both axes), and its shortest and longest
+// wavelength, m; and the whole sea's mean-square slope, Cox & Munk's for this wind
+// (src/sim/optics/coxMunk.ts), of which the cascades resolve only the waves longer than a metre or so.
+uniform vec3 uFftSlopeVariance;
+uniform vec3 uFftShortestWave;
+uniform vec3 uFftLongestWave;
+uniform float uSeaSlopeVariance;
 
 // The CPU twin's bilinear read: u = x n/L, texel floor(u) mod n and the next, weights fract(u).
 // `offset` (texels) is 0 for an absolute grid point, the cascade's uFftNearOffset for one
@@ -100,17 +110,37 @@ vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, v
 // rasterizer, which runs both sides of a branch (docs/shader-notes.md).
 // Per cascade: the derivatives texture (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z) and the foam texture
 // (foam potential, J, ∂Dx/∂x) (shaders/fftFoam.frag): 6 reads per pixel.
+//
+// Seamless from geometry to roughness (Bruneton, Neyret & Holzschuch 2010): a cascade whose
+// waves are shorter than two of this pixel's footprints would alias (the far sea sparkles),
+// so the normal keeps only the share of each cascade's slopes the pixel resolves, and what
+// it drops, with the waves shorter than every cascade, becomes the roughness of the glint:
+// unresolved = Cox–Munk's σ² − Σ (share · σ_c)². The share is the part of the cascade's band,
+// in ln k, whose waves span two footprints (src/sim/optics/resolvedSlopes.ts resolvedShare):
+// a k⁻³ tail holds equal slope variance per e-fold of k. The foam keeps the whole Jacobian.
 vec4 fftPixelDerivatives;
 float fftPixelJxx;
-vec2 fftPixelPotentials;
+float fftPixelPotential;
+vec4 fftPixelSlopeDerivatives;
+float fftPixelSlopeJxx;
+float fftPixelUnresolvedVariance;
 
 void fftReadPixelFields(vec2 p, bool near) {
-  fftPixelDerivatives = fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
+  // The footprint's longer side: at grazing angles a pixel runs far along the view.
+  float footprint = max(max(length(dFdx(p)), length(dFdy(p))), 1e-6);
+  vec3 share = clamp(log(uFftLongestWave / (2.0 * footprint)) / log(uFftLongestWave / uFftShortestWave), 0.0, 1.0);
+  vec4 derivatives0 = fftField(uFftDerivatives0, p, uFftScale.x, fftOffset(0, near));
+  vec4 derivatives1 = fftField(uFftDerivatives1, p, uFftScale.y, fftOffset(1, near));
+  vec4 derivatives2 = fftField(uFftDerivatives2, p, uFftScale.z, fftOffset(2, near));
   vec4 foam0 = fftField(uFftFoam0, p, uFftScale.x, fftOffset(0, near));
   vec4 foam1 = fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near));
   vec4 foam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
+  fftPixelDerivatives = derivatives0 + derivatives1 + derivatives2;
   fftPixelJxx = foam0.b + foam1.b + foam2.b;
-  fftPixelPotentials = vec2(foam1.r, foam2.r);
+  fftPixelPotential = foam2.r;
+  fftPixelSlopeDerivatives = share.x * derivatives0 + share.y * derivatives1 + share.z * derivatives2;
+  fftPixelSlopeJxx = dot(share, vec3(foam0.b, foam1.b, foam2.b));
+  fftPixelUnresolvedVariance = max(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - dot(share * share, uFftSlopeVariance));
 }
 
 // ocean.frag's hook: p is the pixel's grid point relative to the render origin (near) or absolute.
@@ -127,12 +157,25 @@ float fftJxx(vec2 p, bool near) {
   return fftPixelJxx;
 }
 
-vec2 fftFoamPotentials(vec2 p, bool near) {
-  return fftPixelPotentials;
+float fftFoamPotential(vec2 p, bool near) {
+  return fftPixelPotential;
 }
 
 vec4 fftDisplacementFields(vec2 p, bool near) {
   return fftCascadeSum(uFftDisplacement0, uFftDisplacement1, uFftDisplacement2, p, near);
+}
+
+// The slopes this pixel resolves, for its normal (see fftReadPixelFields).
+vec4 fftSlopeDerivativeFields(vec2 p, bool near) {
+  return fftPixelSlopeDerivatives;
+}
+
+float fftSlopeJxx(vec2 p, bool near) {
+  return fftPixelSlopeJxx;
+}
+
+float waveUnresolvedSlopeVariance() {
+  return fftPixelUnresolvedVariance;
 }
 #else
 // The vertices: the last grid point's displacement sums, kept per shader invocation, so a
@@ -159,9 +202,18 @@ float fftJxx(vec2 p, bool near) {
   return fftDisplacementFields(p, near).w;
 }
 
-// Each remembering cascade's foam potential at a grid point (cascades 1 and 2).
-vec2 fftFoamPotentials(vec2 p, bool near) {
-  return vec2(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r);
+// The smallest cascade's foam potential at a grid point: the foam it remembers.
+float fftFoamPotential(vec2 p, bool near) {
+  return fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r;
+}
+
+// A vertex has no footprint: its normal keeps every slope.
+vec4 fftSlopeDerivativeFields(vec2 p, bool near) {
+  return fftDerivativeFields(p, near);
+}
+
+float fftSlopeJxx(vec2 p, bool near) {
+  return fftJxx(p, near);
 }
 #endif
 
@@ -172,8 +224,8 @@ vec3 waveDisplacement(vec2 gridXZ) {
 // Normal of P(x, z) = (x + Dx, h, z + Dz): ∂P/∂z × ∂P/∂x with every derivative exact from the
 // spectrum (i k h, −λ k k̂ h), as FftOcean.normalAt.
 vec3 fftNormal(vec2 p, bool near) {
-  float jxx = fftJxx(p, near);
-  vec4 d = fftDerivativeFields(p, near);
+  float jxx = fftSlopeJxx(p, near);
+  vec4 d = fftSlopeDerivativeFields(p, near);
   vec3 tx = vec3(1.0 + jxx, d.x, d.w);
   vec3 tz = vec3(d.w, d.y, 1.0 + d.z);
   return normalize(cross(tz, tx));
@@ -198,23 +250,24 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
   return normalize(cross(pz - p0, px - p0));
 }
 
-// Foam: what each cascade accumulated (fading over seconds, src/render/waves/fft/fftFoam.ts, each
-// against its own band's threshold) and where the whole sea's Jacobian folds right now, half
-// white at the threshold itself (so Monahan's share of the sea is at least half white) and
-// fully white ¼σ deeper.
+// Foam: where the whole sea's Jacobian folds right now, half white at the threshold itself and
+// fully white ¼σ deeper, and what the smallest cascade accumulated (fading over seconds,
+// src/render/waves/fft/fftFoam.ts, against its own band's threshold). Seen from 150 m above,
+// the near-white share of the picture is then within 30 % of Monahan's coverage at 10, 15
+// and 20 m/s (tests/browser/light/foam.test.ts).
 float fftFoamAt(vec2 p, bool near) {
   float jxx = fftJxx(p, near);
   vec4 d = fftDerivativeFields(p, near);
   float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
   float now = smoothstep(uFoamThreshold + uFoamSoftness, uFoamThreshold - uFoamSoftness, jacobian);
-  // The largest tile's foam is left out: its texels are tens of metres wide (22 m in a gale),
-  // which drew soft white blotches; breaking happens at the scale of the shorter waves.
-  // Each stores a foam potential (1 at its threshold, shaders/fftFoam.frag): white from 1 on.
-  vec2 potentials = fftFoamPotentials(p, near);
-  float potential = max(potentials.x, potentials.y);
-  // A wide ramp: foam left behind thins out as it fades (translucent, then gone) instead of
-  // shrinking as a hard-edged white floe.
-  float kept = smoothstep(0.5, 1.5, potential);
+  // The two larger tiles' foam is left out: their texels are metres wide (4.6 m and 22 m in a
+  // gale), which drew rounded white floes tens of metres across and twice Monahan's white from
+  // above; breaking happens at the scale of the shorter waves. The potential is 1 at the
+  // cascade's threshold and grows into the fold (shaders/fftFoam.frag); the foam left behind
+  // is white only where the fold went deep, and thins out over a wide ramp as it fades
+  // (translucent, then gone) instead of shrinking as a hard-edged floe.
+  float potential = fftFoamPotential(p, near);
+  float kept = smoothstep(1.25, 2.25, potential);
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 

@@ -21,6 +21,8 @@ import { ContextWatch } from './boot/contextLoss';
 import { AppControls } from './panel/appControls';
 import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waves/waveViewRegistry';
 import { COMPARE_OFF } from '../sim/compare/compareLayout';
+import { findLesson, lessonIds, lessonView } from './lessons/lessonCatalog';
+import { LessonHost } from './lessons/lessonHost';
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -45,6 +47,7 @@ export class OceanApp {
   private boatMotion!: BoatController;
   private context?: ContextWatch;
   private controls?: AppControls;
+  private lessons?: LessonHost;
   private resizeObserver?: ResizeObserver;
   private readonly frameStats = new FrameStats();
   private readonly loop: FrameLoop;
@@ -66,7 +69,7 @@ export class OceanApp {
     this.scaffold.playButton.sync(this.clock.playing);
     const tick = (seconds: number) => {
       this.controls?.steer(Math.min(seconds, SimulationClock.MAX_STEP));
-      this.clock.advance(seconds);
+      this.clock.advance(seconds, Number(this.params.timeScale));
       this.renderFrame();
     };
     this.loop = new FrameLoop({ tick, redraw: () => this.renderFrame(), playing: () => this.clock.playing });
@@ -107,9 +110,17 @@ export class OceanApp {
       onPlayingChange: (playing) => this.setPlaying(playing),
       onShare: () => void this.share(),
       onDive: () => this.orbit.dive(),
+      onStep: () => this.step(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
       onDropStone: () => this.dropStone(),
     });
+    this.lessons = new LessonHost(this.container, this.tr, showPanel, this.params, {
+      openLesson: (id) => this.openLesson(id),
+      onParam: (key, value) => this.setParams({ [key]: value }),
+      openFolders: (keys) => this.controls?.openFoldersOf(keys),
+      scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, boat: this.boatMotion.info() }),
+    });
+    if (state.lesson) this.lessons.current = state.lesson;
     performance.mark('oceano:controls');
     this.resize();
     (this.resizeObserver = new ResizeObserver(() => this.resize())).observe(this.canvas);
@@ -119,7 +130,7 @@ export class OceanApp {
     performance.mark('oceano:first-frame');
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
-    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel()]);
+    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.lessons.load()]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
@@ -211,6 +222,7 @@ export class OceanApp {
     this.view.draw();
     if (first) performance.mark('oceano:first-draw-submitted');
     this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());
+    this.lessons?.afterFrame();
     if (!sync) return;
     this.view.waitForGpu();
     this.frameStats.recordSyncedFrame(performance.now() - start);
@@ -225,6 +237,7 @@ export class OceanApp {
     this.showParams();
     labelCanvas(this.canvas, this.tr, this.params);
     this.controls?.sync(this.params, this.clock.playing);
+    this.lessons?.sync(this.params);
     this.loop.requestRender();
     return this.getParams();
   }
@@ -236,16 +249,51 @@ export class OceanApp {
     this.loop.refresh();
   }
 
+  /**
+   * Opens a lesson: its view as a preset sets it (the defaults, its parameters, its camera;
+   * the clock runs on), then its card. An unknown id changes nothing and says so in a notice.
+   */
+  openLesson(id: string): boolean {
+    const lesson = typeof id === 'string' ? findLesson(id) : null;
+    if (!lesson) {
+      this.notify(message('lessonUnknown', { name: String(id), known: lessonIds.join(', ') }));
+      return false;
+    }
+    const { params, camera, cullingCamera } = lessonView(lesson);
+    if (cullingCamera && params.freezeCulling && this.started) {
+      // As at start-up: the selection is frozen from the culling camera, then seen from the lesson's.
+      this.setParams({ ...params, freezeCulling: false });
+      this.orbit.setPose(cullingCamera);
+      this.view.update(this.clock.time);
+    }
+    this.setParams(params);
+    if (this.started) this.orbit.setPose(camera);
+    void this.lessons?.show(lesson.id);
+    return true;
+  }
+
+  lesson = (): string | null => this.lessons?.current ?? this.options.state.lesson;
+  lessonList = () => {
+    if (!this.lessons) throw new Error('The ocean has not started yet: await oceano.ready first.');
+    return this.lessons.titles();
+  };
+
   getParams = (): OceanParams => ({ ...this.params });
   setTime = (seconds: number): void => (this.clock.setTime(checkTime(seconds)), this.loop.requestRender());
   play = (): void => this.setPlaying(true);
+  /** Pauses, then advances one frame of 1/60 s at the time scale and draws it: the frame a 60 fps loop would draw next. */
+  step = (): void => {
+    this.setPlaying(false);
+    this.clock.step(Number(this.params.timeScale));
+    this.loop.requestRender();
+  };
   pause = (): void => this.setPlaying(false);
   setCamera = (pose: CameraPose): void => this.orbit.setPose(checkCameraPose(pose));
   camera = (): CameraPose => this.orbit.pose();
   boat = (): BoatInfo => this.boatMotion.info();
   /** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion. */
   shareUrl = (): string =>
-    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time) });
+    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time), lesson: this.lesson() });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (
     checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params), x, z)
@@ -276,6 +324,7 @@ export class OceanApp {
     this.resizeObserver?.disconnect();
     this.context?.dispose();
     this.controls?.dispose();
+    this.lessons?.dispose();
     if (this.started) {
       this.orbit.dispose();
       this.view.dispose();

@@ -111,14 +111,16 @@ describe('waves=fft picture', () => {
     await page.evaluate(() => window.oceano.setParams({ foam: true, foamThreshold: -0.1 }));
     const biased = whiteShare(await canvasPng(page));
     console.log(`[oceano] white share of the sea at 15 m/s: foam ${(withFoam * 100).toFixed(2)} %, foam=false ${(without * 100).toFixed(2)} %, threshold −0.1 ${(biased * 100).toFixed(2)} %`);
-    // Measured: 4.47 % of the left half's sea pixels white with foam (Monahan's whitecap
-    // coverage at 15 m/s is 3.9 %), 0.01 % without (only fully white pixels count). The look
-    // before the foam was calibrated per cascade, 0.12 %, is the planted fault the lower bound
-    // catches; the upper one, 3× Monahan, that the sea has not turned white altogether.
-    expect(withFoam).toBeGreaterThan(0.02);
+    // Measured: 0.77 % of the left half's sea pixels white with foam, 0.00 % without (only
+    // fully white pixels count). This low camera sees the foam foreshortened into thin lines;
+    // seen from 150 m above the same foam covers Monahan's share within 30 %
+    // (tests/browser/light/foam.test.ts). The look before the foam was calibrated per cascade,
+    // 0.12 %, is the planted fault the lower bound catches; the upper one, 3× Monahan's 3.9 %,
+    // that the sea has not turned white altogether.
+    expect(withFoam).toBeGreaterThan(0.004);
     expect(withFoam).toBeLessThan(0.12);
     expect(without).toBeLessThan(0.001);
-    expect(biased).toBeLessThan(0.02);
+    expect(biased).toBeLessThan(0.004);
     await page.close();
   });
 });

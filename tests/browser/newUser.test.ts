@@ -170,7 +170,7 @@ describe('keyboard and accessibility', () => {
         await page.keyboard.press('Tab');
         const ring = await page.evaluate(() => {
           const el = document.activeElement as HTMLElement | null;
-          if (!el || !el.closest('.lil-gui')) return null;
+          if (!el || !el.closest('.lil-gui, .oceano-lessons')) return null;
           const style = getComputedStyle(el);
           return `${el.tagName}:${style.outlineStyle}:${style.outlineWidth}`;
         });

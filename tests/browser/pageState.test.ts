@@ -69,7 +69,8 @@ describe('language', () => {
     page.evaluate(() => ({
       lang: document.documentElement.lang,
       canvas: document.querySelector('canvas')!.getAttribute('aria-label'),
-      panel: (document.querySelector('.lil-gui') as HTMLElement).innerText,
+      // Every label, in folded folders too (the panel starts with its folders folded).
+      panel: Array.from(document.querySelectorAll('.lil-gui .lil-name, .lil-gui .lil-title'), (el) => el.textContent).join('\n'),
       play: document.querySelector('.oceano-play')!.getAttribute('aria-label'),
       notices: window.oceano.notices(),
     }));

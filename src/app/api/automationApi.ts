@@ -22,6 +22,8 @@ export interface OceanoApi {
   setTime(seconds: number): void;
   play(): void;
   pause(): void;
+  /** Pauses and advances one frame of 1/60 s times timeScale, then draws it: the frame playing at 60 fps draws next. */
+  step(): void;
   renderFrame(): void;
   getParams(): OceanParams;
   setParams(partial: Partial<OceanParams>): OceanParams;
@@ -47,6 +49,12 @@ export interface OceanoApi {
    */
   physics(): Promise<PhysicsReport>;
   notices(): string[];
+  /** The lessons in the course's order, in the page's language (src/app/lessons/lessonCatalog.ts). */
+  lessons(): { id: string; title: string; section: string }[];
+  /** The open lesson's id, or null. */
+  lesson(): string | null;
+  /** Opens a lesson: its view and its card. An unknown id shows a notice, changes nothing and answers false. */
+  setLesson(id: string): boolean;
   /** The link that reopens this view exactly (what the share button copies). */
   shareUrl(): string;
   /** Whether the frame loop runs (it stops off screen and in hidden tabs) and frames drawn so far. */
@@ -109,6 +117,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     setTime: (seconds) => app.setTime(seconds),
     play: () => app.play(),
     pause: () => app.pause(),
+    step: () => app.step(),
     renderFrame: () => app.renderFrame(true),
     loaded: () => app.whenPartsLoaded().then(() => app.renderFrame(true)),
     getParams: () => app.getParams(),
@@ -122,6 +131,9 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     stats: () => app.stats(),
     physics: async () => started(app.physicsPanel()).measure(),
     notices: () => app.notices.messages(),
+    lessons: () => app.lessonList(),
+    lesson: () => app.lesson(),
+    setLesson: (id) => app.openLesson(id),
     shareUrl: () => app.shareUrl(),
     activity: () => app.activity(),
     debug: {
@@ -157,6 +169,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     setTime: fail,
     play: fail,
     pause: fail,
+    step: fail,
     renderFrame: fail,
     loaded: () => ready,
     getParams: fail,
@@ -169,6 +182,9 @@ export function createFailedApi(reason: Error): OceanoApi {
     boat: fail,
     stats: fail,
     notices: fail,
+    lessons: fail,
+    lesson: fail,
+    setLesson: fail,
     shareUrl: fail,
     activity: fail,
     physics: () => Promise.reject(reason),

@@ -14,6 +14,10 @@ export interface ShadingFixes {
   relativePixelNormals: boolean;
   /** The near plane brought in for an eye less than about a metre above the water (src/render/ocean/nearPlane.ts). */
   clearanceNear: boolean;
+  /** The glint from slopes a pixel cannot resolve turned into roughness (Cox–Munk, shaders/ocean.frag sunGlint). */
+  slopeRoughness: boolean;
+  /** Foam kept only by the smallest cascade, white only where its fold went deep (shaders/waves/fft.glsl fftFoamAt). */
+  foamCoverage: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -33,6 +37,25 @@ const ABSOLUTE_PIXELS: ShaderFault = {
     ['wavePixelFields(vRelativeGridXZ, true)', 'wavePixelFields(vGridXZ, false)'],
     ['waveNormalNear(vRelativeGridXZ)', 'waveNormal(vGridXZ)'],
     ['waveFoamNear(vRelativeGridXZ)', 'waveFoam(vGridXZ)'],
+  ],
+};
+/**
+ * The glint as it was: every cascade's slopes in every pixel, however far, and a fixed
+ * pow(…, 900) highlight that does not know the wind.
+ */
+const FIXED_GLINT: ShaderFault = {
+  name: 'fixed-glint',
+  fragment: [
+    ['vec3 share = clamp(', 'vec3 share = vec3(1.0) + 0.0 * clamp('],
+    ['color += sunGlint(n, v, waveUnresolvedSlopeVariance(), facetReflectance);', 'color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;'],
+  ],
+};
+/** The foam as it was: both smaller cascades' foam kept, white from just past their thresholds. */
+const BLOTCHY_FOAM: ShaderFault = {
+  name: 'blotchy-foam',
+  fragment: [
+    ['float potential = fftFoamPotential(p, near);', 'float potential = max(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftFoamPotential(p, near));'],
+    ['float kept = smoothstep(1.25, 2.25, potential);', 'float kept = smoothstep(0.5, 1.5, potential);'],
   ],
 };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
@@ -68,6 +91,8 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(NO_DETAIL_NORMALS, fixes.detailNormals);
   toggle(ABSOLUTE_PIXELS, fixes.relativePixelNormals);
   toggle(UNMARKED_SEA_BED, fixes.seaBedMark);
+  toggle(FIXED_GLINT, fixes.slopeRoughness);
+  toggle(BLOTCHY_FOAM, fixes.foamCoverage);
   const ocean = view.ocean;
   const material = ocean.material;
   const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);

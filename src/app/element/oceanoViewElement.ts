@@ -23,9 +23,9 @@ export class OceanoViewElement extends HTMLElement {
   /** The directory of dist/oceano.js: the built-in sky and the full page (for share links) sit beside it. */
   static assetBase = '';
 
-  /** Parameters, time and camera follow their attributes while the element lives; the rest is read once, when it is connected. */
+  /** Parameters, time, camera and lesson follow their attributes while the element lives; the rest is read once, when it is connected. */
   static get observedAttributes(): string[] {
-    return [...paramKeys.map((key) => key.toLowerCase()), 't', 'cam'];
+    return [...paramKeys.map((key) => key.toLowerCase()), 't', 'cam', 'lesson'];
   }
 
   oceano: OceanoApi | null = null;
@@ -69,6 +69,8 @@ export class OceanoViewElement extends HTMLElement {
     const app = this.app;
     if (!app || !app.isStarted() || text === null) return;
     const key = SETTING_NAMES.get(name) ?? name;
+    // A lesson sets a whole view, and an unknown one says so and changes nothing.
+    if (key === 'lesson') return void app.openLesson(text);
     // Validated exactly as at start-up, with the same notice and the same fallback.
     const state = parseSettings([[key, text]]);
     for (const notice of state.notices) app.notify(notice);

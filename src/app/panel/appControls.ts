@@ -1,4 +1,4 @@
-import type { OceanParams } from '../../sim/params/params';
+import type { OceanParams, ParamKey } from '../../sim/params/params';
 import { BoatSteering } from '../boat/boatSteering';
 import { CameraKeys } from '../camera/cameraKeys';
 import type { CameraPose } from '../camera/cameraPose';
@@ -30,6 +30,8 @@ export class AppControls {
   private panelLoad?: Promise<void>;
   /** What the panel shows when it is built: the last sync's. */
   private shown: { params: OceanParams; playing: boolean };
+  /** The parameters whose folders stay open: the open lesson's controls. */
+  private opened: readonly ParamKey[] = [];
   private disposed = false;
   private readonly steering: BoatSteering;
   private readonly cameraKeys: CameraKeys;
@@ -69,6 +71,7 @@ export class AppControls {
         if (this.disposed) return;
         this.panel = new ControlPanel(this.container, this.shown.params, this.shown.playing, this.hooks, this.tr);
         this.panel.sync(this.shown.params, this.shown.playing);
+        this.panel.openFoldersOf(this.opened);
       },
       (error: unknown) => {
         console.warn('Oceano: the control panel\'s code could not be loaded.', error);
@@ -76,6 +79,12 @@ export class AppControls {
       },
     );
     return this.panelLoad;
+  }
+
+  /** Opens the panel's folders that hold `keys` and folds the rest. */
+  openFoldersOf(keys: readonly ParamKey[]): void {
+    this.opened = keys;
+    this.panel?.openFoldersOf(keys);
   }
 
   /** Applies held steering keys for `seconds` of the loop. */

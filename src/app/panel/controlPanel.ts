@@ -1,8 +1,10 @@
 import GUI, { type Controller } from 'lil-gui';
 import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../../sim/params/params';
 import type { Translator, UiTextId } from '../language/i18n';
+import { teachingWord } from '../language/teachingWords';
 import { froudeNumber } from '../../sim/wake/kelvinWake';
 import { WAKE_HULL } from '../../sim/wake/boatWake';
+import { unreadParams } from './modelScope';
 
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
@@ -36,6 +38,7 @@ export interface ControlPanelHooks {
   onPlayingChange(playing: boolean): void;
   onShare(): void;
   onDive(): void;
+  onStep(): void;
   onSurface(): void;
   /** Drops a stone into the interactive waves where the camera looks (turning them on if they are off). */
   onDropStone(): void;
@@ -49,6 +52,8 @@ export class ControlPanel {
   readonly gui: GUI;
   private readonly model: OceanParams & { playing: boolean };
   private readonly controllers: Controller[] = [];
+  private readonly paramControllers = new Map<ParamKey, Controller>();
+  private readonly folders: { gui: GUI; keys: ParamKey[] }[] = [];
   private readonly counts = { chunks: '', triangles: '', drawCalls: '', perBand: '' };
   private readonly countControllers: Controller[] = [];
   /** The boat folder's read-only Froude number of the hull at the set speed. */
@@ -62,11 +67,18 @@ export class ControlPanel {
     let boatFolder: GUI | null = null;
     for (const folder of FOLDERS) {
       const group = this.gui.addFolder(tr.ui(folder.title));
-      for (const key of folder.keys) this.controllers.push(this.addControl(group, key, hooks));
+      // Folded: a lesson opens the folders of its controls, the user any other.
+      group.close();
+      this.folders.push({ gui: group, keys: folder.keys });
+      for (const key of folder.keys) {
+        const controller = this.addControl(group, key, hooks);
+        this.controllers.push(controller);
+        this.paramControllers.set(key, controller);
+      }
       if (folder.title === 'folderBoat') boatFolder = group;
     }
     this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(tr.ui('froudeNumber')).disable();
-    const live = this.gui.addFolder(tr.ui('folderLiveCounts'));
+    const live = this.gui.addFolder(tr.ui('folderLiveCounts')).close();
     const labels: [keyof typeof this.counts, UiTextId][] = [
       ['chunks', 'countChunks'],
       ['triangles', 'countTriangles'],
@@ -77,6 +89,11 @@ export class ControlPanel {
     this.controllers.push(
       this.gui.add(this.model, 'playing').name(tr.ui('playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
+    // The teacher's time controls beside Play: slow motion, and one frame at a time while paused.
+    const speed = this.addControl(this.gui, 'timeScale', hooks);
+    this.controllers.push(speed);
+    this.paramControllers.set('timeScale', speed);
+    this.gui.add({ step: () => hooks.onStep() }, 'step').name(teachingWord(tr, 'step'));
     // lil-gui draws a function as a <button>: focusable and keyboard operable.
     this.gui.add({ share: () => hooks.onShare() }, 'share').name(tr.ui('share'));
     const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
@@ -103,10 +120,22 @@ export class ControlPanel {
     return key === 'seed' ? controller.onFinishChange(emit) : controller.onChange(emit);
   }
 
-  /** Shows values changed elsewhere (API, keyboard) without echoing them back. */
+  /** Opens the folders that hold `keys` (a lesson's controls) and folds the others. */
+  openFoldersOf(keys: readonly ParamKey[]): void {
+    for (const folder of this.folders) folder.gui.open(folder.keys.some((key) => keys.includes(key)));
+  }
+
+  /** Shows values changed elsewhere (API, keyboard) without echoing them back; what no model on screen reads is disabled, with the reason. */
   sync(params: OceanParams, playing: boolean): void {
     Object.assign(this.model, params, { playing });
     for (const controller of this.controllers) controller.updateDisplay();
+    const unread = unreadParams(params);
+    for (const [key, controller] of this.paramControllers) {
+      const reason = unread.get(key);
+      controller.enable(reason === undefined);
+      if (reason) controller.domElement.dataset.unread = teachingWord(this.tr, reason);
+      else delete controller.domElement.dataset.unread;
+    }
     // Fr = U/√(gL) of the hull the wake is made for: what sets the wake's amplitude and look.
     this.froude.value = `${froudeNumber(params.boatSpeed, WAKE_HULL.length).toFixed(2)} (L = ${WAKE_HULL.length} m)`;
     this.froudeController.updateDisplay();

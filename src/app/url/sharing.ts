@@ -14,6 +14,7 @@ export interface SharedView {
   boatState: BoatSnapshot | null;
   /** The wake's track then (WakeTrack.serialize), so the link shows the same wake. */
   wakeTrack?: string | null;
+  lesson?: string | null;
 }
 
 /** What it carries of the page as it was opened: its address, language, assets and embedding. */

@@ -5,10 +5,11 @@ import { languageFromTag, type Language } from '../language/i18n';
 import { isValidTime } from '../../sim/params/simulationTime';
 import { BOAT_EXTENT, type BoatSnapshot } from '../../sim/boat/boatMotion';
 import { findPreset, presetNames } from './presets';
+import { findLesson, lessonIds, lessonView } from '../lessons/lessonCatalog';
 import { WakeTrack } from '../../sim/wake/wakeTrack';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
-export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'boat', 'boatState', 'wakeTrack'] as const;
+export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'lesson', 'boat', 'boatState', 'wakeTrack'] as const;
 
 /** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
@@ -30,6 +31,8 @@ export interface UrlState {
   boatState: BoatSnapshot | null;
   /** The wake's recorded track (WakeTrack.serialize) at `time`, so a link shows the wake it was made with; null: replayed. */
   wakeTrack: WakeTrack | null;
+  /** The lesson opened (src/app/lessons/lessonCatalog.ts): its view is in the other fields. */
+  lesson: string | null;
 }
 
 /**
@@ -45,14 +48,14 @@ export function parseUrlState(search: string): UrlState {
 }
 
 /**
- * Reads settings from name/value pairs: a URL's query or an element's attributes. A preset
- * is applied first, whatever its position, so that explicit values override it.
+ * Reads settings from name/value pairs: a URL's query or an element's attributes. A preset,
+ * then a lesson, is applied first, whatever its position, so that explicit values override it.
  */
 export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices };
+  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices, lesson: null };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -63,6 +66,20 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       if (preset.cullingCamera) state.cullingCamera = { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] };
     } else {
       notices.push(message('presetUnknown', { name: text, known: presetNames.join(', ') }));
+    }
+  }
+
+  for (const [key, text] of pairs) {
+    if (key !== 'lesson') continue;
+    const lesson = findLesson(text);
+    if (lesson) {
+      const view = lessonView(lesson);
+      Object.assign(params, view.params);
+      state.camera = view.camera;
+      state.cullingCamera = view.cullingCamera;
+      state.lesson = lesson.id;
+    } else {
+      notices.push(message('lessonUnknown', { name: text, known: lessonIds.join(', ') }));
     }
   }
 
@@ -102,7 +119,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       const { value, notice } = parseParamText(key, text);
       (params as Record<string, unknown>)[key] = value;
       if (notice) notices.push(notice);
-    } else if (key !== 'preset') {
+    } else if (key !== 'preset' && key !== 'lesson') {
       notices.push(message('unknownUrlParam', { key }));
     }
   }
@@ -121,6 +138,8 @@ export interface ShareableState {
   boatState?: BoatSnapshot | null;
   /** WakeTrack.serialize() of the wake on screen; left out when the wake is off. */
   wakeTrack?: string | null;
+  /** The lesson open, so the link opens its card too (its view is overridden by the values that follow). */
+  lesson?: string | null;
 }
 
 /**
@@ -129,6 +148,7 @@ export interface ShareableState {
  */
 export function formatUrlState(state: ShareableState): string {
   const query = new URLSearchParams();
+  if (state.lesson) query.set('lesson', state.lesson);
   for (const key of paramKeys) {
     const value = state.params[key];
     const kind = paramDefs[key].kind;

@@ -103,6 +103,7 @@ export class OceanMaterial extends ShaderMaterial {
    */
   override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
     this.followWake();
+    this.followWaterOptics();
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
     const [x, z] = (this.main ?? this).originFor(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
@@ -194,6 +195,15 @@ export class OceanMaterial extends ShaderMaterial {
   setInteractiveWavesOn(on: boolean): void {
     for (const material of this.near === this ? [this] : [this, this.near]) material.interactiveWavesOn = on;
     this.setDefine('OCEAN_IWAVE', on);
+  }
+
+  /**
+   * The water's own colour from its optics (OCEAN_WATER_OPTICS in ocean.frag) on the spectral
+   * sea, lit by the same physics as its glint; the seed's sea keeps the picked colour, so the
+   * default view, the course's reference picture, stays as it is.
+   */
+  private followWaterOptics(): void {
+    setMaterialDefine(this, 'OCEAN_WATER_OPTICS', this.waves.model.name === 'fft');
   }
 
   /**

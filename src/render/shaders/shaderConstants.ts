@@ -1,4 +1,7 @@
 import { WATER_IOR } from '../../sim/optics/fresnel';
+import { SUN_IRRADIANCE } from '../../sim/optics/sun';
+import { SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/resolvedSlopes';
+import { bodyColor } from '../../sim/optics/waterColor';
 import { BLUR_MAX_TAPS } from '../underwater/gaussianKernel';
 import { BAND_STEPS, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
 import { GOD_RAY_RANGE } from '../underwater/shaftLightTile';
@@ -29,6 +32,9 @@ export function shaderConstantsChunk(): string {
     `#define GOD_RAY_RANGE ${glslFloat(GOD_RAY_RANGE)}`,
     `#define WATER_EXTINCTION ${glslVec3(WATER_EXTINCTION)}`,
     `#define DEPTH_DARKENING ${glslVec3(DEPTH_DARKENING)}`,
+    `#define SUN_IRRADIANCE ${glslFloat(SUN_IRRADIANCE)}`,
+    `#define SUN_DISC_SLOPE_VARIANCE ${glslFloat(SUN_DISC_SLOPE_VARIANCE)}`,
+    `#define WATER_BODY_REFLECTANCE ${glslVec3(bodyColor())}`,
     `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
     `#define LOD_BAND_COUNT ${MAX_LOD_BANDS}`,
     `#define LOD_BAND_STEPS int[${BAND_STEPS.length}](${BAND_STEPS.join(', ')})`,

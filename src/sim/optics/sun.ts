@@ -15,3 +15,12 @@ export function sunDirection(elevationDeg: number, azimuthDeg: number): [number,
   const a = (azimuthDeg * Math.PI) / 180;
   return [Math.sin(a) * Math.cos(e), Math.sin(e), -Math.cos(a) * Math.cos(e)];
 }
+
+/**
+ * The sun's irradiance on a surface facing it, in the units of the sky's radiance (the sky
+ * cube's colours are radiances of about 0.3–0.8): a clear sky's direct normal irradiance,
+ * about 900 W/m², over the sky's radiance on the sun's side, some 100–200 W/m²/sr, is 4–9 sr.
+ * The low end, so that the glint's core stays below white over a wider part of the path on a
+ * screen without tone mapping. What the glint (shaders/ocean.frag, sunGlint) multiplies its BRDF by.
+ */
+export const SUN_IRRADIANCE = 4;

@@ -16,6 +16,7 @@ export const MESSAGE_IDS = [
   'languageInvalid',
   'embedInvalid',
   'presetUnknown',
+  'lessonUnknown',
   'unknownUrlParam',
   'skyLoadFailed',
   'skyCustomSunFixed',

@@ -98,6 +98,8 @@ export const paramDefs = {
   normalsCompare: { kind: 'boolean', default: false, label: 'Compare slope | fabricated normals' },
   view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap'], label: 'View' },
   fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
+  // Slow motion for teaching: simulated seconds per second of the frame loop (and per Step of 1/60 s).
+  timeScale: { kind: 'choice', default: '1', options: ['1', '0.5', '0.25', '0.1'], label: 'Speed (time scale)' },
   // The physics panel (src/app/physics/physicsPanel.ts): the running sea measured against theory.
   physics: { kind: 'boolean', default: false, label: 'Physics panel' },
   lodDistance: { kind: 'number', default: 100, min: 10, max: 1000, step: 5, unit: 'm', label: 'LOD distance L' },

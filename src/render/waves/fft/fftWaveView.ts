@@ -3,7 +3,9 @@ import fftChunk from '../../../../shaders/waves/fft.glsl?raw';
 import type { OceanParams } from '../../../sim/params/params';
 import type { FftWaveModel } from '../../../sim/waves/fft/fftWaveModel';
 import { cascadeSpread } from '../../../sim/waves/spectra/spectralBounds';
-import { foamJacobianThreshold, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../../sim/waves/fft/whitecaps';
+import { foamJacobianThreshold, foamRemaining, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../../sim/waves/fft/whitecaps';
+import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
+import { cascadeWavelengths } from '../../../sim/optics/resolvedSlopes';
 import { tileOriginTexels } from '../../../sim/waves/originPhases';
 import { FftFoam } from './fftFoam';
 import { GpuFftOcean } from './gpuFft';
@@ -11,8 +13,6 @@ import { WorkerFieldSource } from './fftFieldsSource';
 import type { HeightmapLayout, WaveModelView } from '../waveModelView';
 import type { PassTiming } from '../../diagnostics/passTiming';
 
-/** Foam fades as e^{−t/τ}: a whitecap lingers a few seconds after its crest has passed. */
-export const FOAM_FADE_SECONDS = 2.5;
 /** Steps longer than this (a seek, a paused jump) rebuild the foam from a short warm-up instead. */
 const FOAM_MAX_STEP = 0.25;
 /** The warm-up: foam at t is built from the sea at t − 3 s, t − 2.4 s, …, t, so a frozen t always draws the same foam. */
@@ -35,7 +35,8 @@ type FftUniforms = Record<
   | 'uFftDisplacement0' | 'uFftDisplacement1' | 'uFftDisplacement2'
   | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
   | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
-  | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta',
+  | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta'
+  | 'uFftSlopeVariance' | 'uFftShortestWave' | 'uFftLongestWave' | 'uSeaSlopeVariance',
   IUniform
 >;
 
@@ -89,6 +90,10 @@ export class FftWaveView implements WaveModelView {
       uFoamThreshold: { value: this.foamThreshold },
       uFoamSoftness: { value: 0.03 },
       uFabricatedDelta: { value: FABRICATED_DELTA },
+      uFftSlopeVariance: { value: new Vector3() },
+      uFftShortestWave: { value: new Vector3(1, 1, 1) },
+      uFftLongestWave: { value: new Vector3(2, 2, 2) },
+      uSeaSlopeVariance: { value: 0 },
     };
     this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
     this.foam = new FftFoam(this.gpu);
@@ -160,6 +165,7 @@ export class FftWaveView implements WaveModelView {
     const { sea, tiles } = this.model.ocean.setup;
     const cascadeSpreads = tiles.map((tile) => cascadeSpread(tile, sea.depth));
     const spreads = cascadeSpreads.map((spread) => sea.choppiness * spread.slope);
+    this.setSlopeStatistics(cascadeSpreads.map((spread) => spread.slope * spread.slope), params.windSpeed);
     this.heightmapLayout = { channel: 1, range: [3 * cascadeSpreads[0].height, 3 * cascadeSpreads[cascadeSpreads.length - 1].height] };
     const thresholds = spreads.map((spread) => foamThresholdForSpread(spread, params.windSpeed, params.foamThreshold, CASCADE_FOAM_SHARE));
     const changed = thresholds.some((t, c) => t !== this.cascadeThresholds[c]);
@@ -174,6 +180,19 @@ export class FftWaveView implements WaveModelView {
     }
     // New thresholds make other foam: rebuild it from the warm-up at the next update.
     if (rebuilt || changed || foamToggled) this.time = Number.NaN;
+  }
+
+  /**
+   * What the glint needs to turn the slopes a pixel cannot show into roughness (shaders/waves/fft.glsl):
+   * each cascade's realised mean-square slope and band of wavelengths, and Cox & Munk's total.
+   */
+  private setSlopeStatistics(cascadeVariances: number[], windSpeed: number): void {
+    const { sea, cascades } = this.model.ocean.setup;
+    const bands = cascades.map((cascade) => cascadeWavelengths(cascade, sea.fftSize));
+    (this.uniforms.uFftSlopeVariance.value as Vector3).fromArray(cascadeVariances);
+    (this.uniforms.uFftShortestWave.value as Vector3).fromArray(bands.map((band) => band.shortest));
+    (this.uniforms.uFftLongestWave.value as Vector3).fromArray(bands.map((band) => band.longest));
+    this.uniforms.uSeaSlopeVariance.value = seaSlopeVariance(windSpeed);
   }
 
   /** FFT passes for every cascade at `time`, then the foam (stepped, or rebuilt after a jump). */
@@ -193,11 +212,11 @@ export class FftWaveView implements WaveModelView {
     const dt = time - previous;
     if (dt > 0 && dt <= FOAM_MAX_STEP) {
       this.gpu.update(time);
-      this.foam.step(Math.exp(-dt / FOAM_FADE_SECONDS), this.cascadeThresholds, this.cascadeSoftness);
+      this.foam.step(foamRemaining(dt), this.cascadeThresholds, this.cascadeSoftness);
     } else {
       for (let k = FOAM_WARMUP_STEPS; k >= 0; k--) {
         this.gpu.update(time - k * FOAM_WARMUP_DT);
-        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : Math.exp(-FOAM_WARMUP_DT / FOAM_FADE_SECONDS), this.cascadeThresholds, this.cascadeSoftness);
+        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : foamRemaining(FOAM_WARMUP_DT), this.cascadeThresholds, this.cascadeSoftness);
       }
     }
     this.bindFoam();

@@ -45,3 +45,18 @@ export function foamThresholdForSpread(jacobianSpread: number, windSpeed: number
   const coverage = Math.min(0.5, Math.max(1e-9, share * whitecapCoverage(windSpeed)));
   return 1 - jacobianSpread * upperNormalQuantile(coverage) + bias;
 }
+
+/**
+ * Foam left behind decays: whitecap patches fade with an e-folding time τ of 0.5–8 s, longer
+ * for larger breakers (Callaghan, A. H., Deane, G. B. & Stokes, M. D. 2012, "Two regimes of
+ * laboratory whitecap foam decay", J. Geophys. Res. 117, C09015); 2.5 s is a mid-sized one.
+ */
+export const FOAM_FADE_SECONDS = 2.5;
+
+/**
+ * The share of foam still there `elapsed` simulation seconds later, e^{−t/τ}: a function of
+ * time, never of frames, so that stepping and playing leave the same foam.
+ */
+export function foamRemaining(elapsed: number, fadeSeconds = FOAM_FADE_SECONDS): number {
+  return Math.exp(-elapsed / fadeSeconds);
+}

@@ -1,0 +1,14 @@
+import type { OceanParams, ParamKey } from '../../sim/params/params';
+import type { Camera } from 'three';
+import type { CameraPose } from '../camera/cameraPose';
+import type { BoatInfo } from '../boat/boatController';
+
+/** What the drawer asks of the app: open a lesson, change a parameter, place its labels on the sea. */
+export interface LessonHooks {
+  openLesson(id: string): boolean;
+  onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
+  /** Opens the control panel's folders that hold `keys` (the lesson's controls) and folds the rest. */
+  openFolders(keys: readonly ParamKey[]): void;
+  /** What the labels on the sea are placed from: the camera (three's, and its pose), the canvas, the boat's pose. */
+  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; boat: BoatInfo };
+}

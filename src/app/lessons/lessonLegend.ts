@@ -1,0 +1,141 @@
+import { Vector3 } from 'three';
+import type { OceanParams } from '../../sim/params/params';
+import { bandStart, LOD_BAND_COLORS } from '../../sim/lod/lodBands';
+import { kelvinGuideLines } from '../../sim/wake/kelvinGuide';
+import { snellWindowHalfAngle } from '../../sim/underwater/snellWindow';
+import type { Translator } from '../language/i18n';
+import { teachingWord } from '../language/teachingWords';
+import type { OutlinedLesson as Lesson } from './lessonOutline';
+import type { LessonHooks } from './lessonHooks';
+
+/** How far along the wake guide (metres from the boat; the guide is 150 m long) its angle is written. */
+const KELVIN_LABEL_DISTANCE = 45;
+
+/** A linear RGB channel as the sRGB the page's CSS speaks. */
+function srgb(linear: number): number {
+  const c = linear <= 0.0031308 ? 12.92 * linear : 1.055 * linear ** (1 / 2.4) - 0.055;
+  return Math.round(255 * Math.min(1, Math.max(0, c)));
+}
+
+/**
+ * What a lesson names on the picture: the LOD bands' colours (a legend in the card), the
+ * Kelvin angle written at the end of the wake guide's lines, and the edge of Snell's window
+ * marked where it meets the sea in front of the camera. The labels are HTML over the
+ * canvas, placed after each frame from the camera's projection.
+ */
+export class LessonLegend {
+  private readonly labels: HTMLElement[] = [];
+  private kind: Lesson['legend'] | null = null;
+  private params: OceanParams | null = null;
+  private bandRows: { band: number; text: HTMLElement }[] = [];
+
+  constructor(
+    private readonly container: HTMLElement,
+    private readonly tr: Translator,
+    private readonly hooks: LessonHooks,
+  ) {}
+
+  /** The legend inside the card, or null for a lesson without one. */
+  cardLegend(lesson: Lesson): HTMLElement | null {
+    this.bandRows = [];
+    if (!lesson.legend) return null;
+    const box = document.createElement('div');
+    box.className = 'oceano-lesson-legend';
+    const title = document.createElement('p');
+    title.className = 'oceano-lesson-legend-title';
+    title.textContent = teachingWord(this.tr, 'lessonLegend');
+    box.append(title);
+    if (lesson.legend === 'lodBands') {
+      const list = document.createElement('ul');
+      list.className = 'oceano-lesson-bands';
+      for (const [band, colour] of LOD_BAND_COLORS.entries()) {
+        const row = document.createElement('li');
+        const swatch = document.createElement('span');
+        swatch.className = 'oceano-lesson-swatch';
+        swatch.style.background = `rgb(${colour.map(srgb).join(', ')})`;
+        const text = document.createElement('span');
+        row.dataset.band = String(band);
+        row.append(swatch, text);
+        list.append(row);
+        this.bandRows.push({ band, text });
+      }
+      box.append(list);
+    } else {
+      const text = document.createElement('p');
+      text.textContent = teachingWord(this.tr, lesson.legend === 'kelvinAngle' ? 'kelvinAngleLabel' : 'snellWindowLabel');
+      box.append(text);
+    }
+    return box;
+  }
+
+  /** Starts showing the labels of `lesson` (null: none). */
+  show(lesson: Lesson | null, params: OceanParams | null): void {
+    for (const label of this.labels) label.remove();
+    this.labels.length = 0;
+    this.kind = lesson?.legend ?? null;
+    if (params) this.params = params;
+    const count = this.kind === 'kelvinAngle' ? 2 : this.kind === 'snellWindow' ? 1 : 0;
+    for (let i = 0; i < count; i++) {
+      const label = document.createElement('div');
+      label.className = `oceano-lesson-label oceano-lesson-label-${this.kind}`;
+      label.textContent = teachingWord(this.tr, this.kind === 'kelvinAngle' ? 'kelvinAngleLabel' : 'snellWindowLabel');
+      label.hidden = true;
+      this.container.append(label);
+      this.labels.push(label);
+    }
+    this.place();
+  }
+
+  sync(params: OceanParams): void {
+    this.params = params;
+    for (const { band, text } of this.bandRows) {
+      text.textContent = teachingWord(this.tr, 'lodBandLegend').replace('{band}', String(band)).replace('{from}', String(Math.round(bandStart(band, params.lodDistance))));
+      text.parentElement?.classList.toggle('oceano-unread', band >= params.lodBands);
+    }
+  }
+
+  /** Puts each label where its point of the sea is on the canvas, or hides it when that point is out of sight. */
+  place(): void {
+    if (this.labels.length === 0 || !this.params) return;
+    const scene = this.hooks.scene();
+    const points = this.points(this.params, scene);
+    const width = scene.canvas.clientWidth;
+    const height = scene.canvas.clientHeight;
+    this.labels.forEach((label, i) => {
+      const world = points[i];
+      // The point's place on the canvas, CSS pixels from its top left; none behind the camera.
+      const p = world ? new Vector3(...world).project(scene.camera) : null;
+      const point = p && Math.abs(p.z) <= 1 ? [((p.x + 1) / 2) * width, ((1 - p.y) / 2) * height] : null;
+      const visible = point !== null && point[0] >= 0 && point[0] <= width && point[1] >= 0 && point[1] <= height;
+      label.hidden = !visible;
+      if (visible) label.style.transform = `translate(${point[0].toFixed(1)}px, ${point[1].toFixed(1)}px)`;
+    });
+  }
+
+  /** The world points the labels mark, in label order. */
+  private points(params: OceanParams, scene: ReturnType<LessonHooks['scene']>): ([number, number, number] | null)[] {
+    if (this.kind === 'kelvinAngle') {
+      if (!params.wake || !params.wakeGuide) return [null, null];
+      const { position, heading } = scene.boat;
+      const [, , px, pz, sx, sz] = kelvinGuideLines(position[0], position[2], heading, KELVIN_LABEL_DISTANCE);
+      return [
+        [px, 0, pz],
+        [sx, 0, sz],
+      ];
+    }
+    // Where the cone of Snell's window, opening up from the eye, meets a flat sea straight ahead.
+    const { position, target } = scene.pose;
+    const depth = -position[1];
+    if (depth <= 0) return [null];
+    const dx = target[0] - position[0];
+    const dz = target[2] - position[2];
+    const across = Math.hypot(dx, dz);
+    if (across === 0) return [null];
+    const reach = depth * Math.tan(snellWindowHalfAngle());
+    return [[position[0] + (dx / across) * reach, 0, position[2] + (dz / across) * reach]];
+  }
+
+  dispose(): void {
+    for (const label of this.labels) label.remove();
+  }
+}

@@ -1,0 +1,117 @@
+import type { Language } from '../language/i18n';
+import type { ParamKey } from '../../sim/params/params';
+import { LESSONS, type Lesson } from './lessonCatalog';
+
+/** The course's chapters: the seed report's sections in its order, then what lies beyond it (names below). */
+export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'horizon'] as const;
+export type LessonSection = (typeof LESSON_SECTIONS)[number];
+
+/** What a lesson draws over the picture besides its card (lessonLegend.ts). */
+export type LessonLegend = 'lodBands' | 'kelvinAngle' | 'snellWindow';
+
+/** The names of the course's chapters, and which lie beyond the seed report. */
+export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { beyondSeed: boolean }> = {
+  surface: { en: 'Water surface', es: 'Superficie del agua', beyondSeed: false },
+  motion: { en: 'Motion', es: 'Movimiento', beyondSeed: false },
+  noise: { en: 'Noise (Perlin)', es: 'Ruido (Perlin)', beyondSeed: false },
+  normals: { en: 'Normals', es: 'Normales', beyondSeed: false },
+  envmap: { en: 'Environment map', es: 'Environment map', beyondSeed: false },
+  optics: { en: 'Optics: Snell, Fresnel', es: 'Óptica: Snell, Fresnel', beyondSeed: false },
+  boat: { en: 'CPU shader and the boat', es: 'CPU shader y el bote', beyondSeed: false },
+  underwater: { en: 'Under the water', es: 'Bajo el agua', beyondSeed: false },
+  lod: { en: 'Optimisation: LOD', es: 'Optimización: LOD', beyondSeed: false },
+  culling: { en: 'Frustum culling', es: 'Frustum culling', beyondSeed: false },
+  spectral: { en: 'The spectral ocean (FFT)', es: 'El océano espectral (FFT)', beyondSeed: true },
+  gerstner: { en: 'Gerstner waves', es: 'Olas de Gerstner', beyondSeed: true },
+  compare: { en: 'Models side by side', es: 'Modelos lado a lado', beyondSeed: true },
+  physics: { en: 'Physics against theory', es: 'Física frente a teoría', beyondSeed: true },
+  wake: { en: 'The Kelvin wake', es: 'La estela de Kelvin', beyondSeed: true },
+  horizon: { en: 'The sea to the horizon', es: 'El mar hasta el horizonte', beyondSeed: true },
+};
+
+/** Where each lesson sits in the course, the one to five parameters its card offers, and its legend. */
+export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: ParamKey[]; legend?: LessonLegend }> = {
+  'flat-plane': { section: 'surface', controls: ['wireframe', 'lodDistance'] },
+  'displaced-plane': { section: 'surface', controls: ['wireframe', 'swellAmplitude', 'rippleStrength'] },
+  'swell': { section: 'motion', controls: ['swellAmplitude', 'swellFrequency'] },
+  'swell-maximum': { section: 'motion', controls: ['swellAmplitude', 'swellFrequency'] },
+  'perlin-hash': { section: 'noise', controls: ['seed'] },
+  'perlin-smoothing': { section: 'noise', controls: ['seed'] },
+  'perlin-octaves': { section: 'noise', controls: ['seed'] },
+  'heightmap-blend': { section: 'noise', controls: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
+  'normals-wrong': { section: 'normals', controls: ['normals', 'shading'] },
+  'normals-right': { section: 'normals', controls: ['normals', 'shading', 'swellAmplitude'] },
+  'sky-cube': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth'] },
+  'reflection': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'fresnel'] },
+  'fresnel': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
+  'fresnel-schlick': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
+  'boat-twin': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatResponse'] },
+  'boat-pitch': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatHeading'] },
+  'snell-window': { section: 'underwater', controls: ['fresnel', 'blurStrength'], legend: 'snellWindow' },
+  'underwater-fog': { section: 'underwater', controls: ['fogDensity', 'blurStrength', 'seaBedDepth'] },
+  'caustics': { section: 'underwater', controls: ['caustics', 'causticsIntensity', 'seaBedDepth'] },
+  'god-rays': { section: 'underwater', controls: ['godRays', 'godRaysIntensity', 'fogDensity'] },
+  'lod-bands': { section: 'lod', controls: ['lodDistance', 'lodBands', 'lodColors'], legend: 'lodBands' },
+  'lod-morph': { section: 'lod', controls: ['lodMorph', 'wireframe', 'lodDistance'], legend: 'lodBands' },
+  'frustum-culling': { section: 'culling', controls: ['freezeCulling', 'lodBruteForce'], legend: 'lodBands' },
+  'fft-calm': { section: 'spectral', controls: ['windSpeed', 'spectrum', 'waves'] },
+  'fft-fresh-breeze': { section: 'spectral', controls: ['windSpeed', 'windDirection', 'spreading', 'depth'] },
+  'fft-short-fetch': { section: 'spectral', controls: ['fetch', 'windSpeed', 'spectrum'] },
+  'fft-gale': { section: 'spectral', controls: ['windSpeed', 'choppiness', 'foam', 'foamThreshold'] },
+  'fft-normals': { section: 'spectral', controls: ['normalsCompare', 'shading'] },
+  'gerstner-gentle': { section: 'gerstner', controls: ['gerstnerSteepness', 'gerstnerCount'] },
+  'gerstner-steepness': { section: 'gerstner', controls: ['gerstnerSteepness', 'gerstnerCount'] },
+  'compare-models': { section: 'compare', controls: ['compareSplit', 'compareSplit2', 'windSpeed'] },
+  'physics-panel': { section: 'physics', controls: ['physics', 'windSpeed', 'spectrum'] },
+  'kelvin-wake': { section: 'wake', controls: ['boatSpeed', 'wakeGuide', 'wakeStrength'], legend: 'kelvinAngle' },
+  'wake-turn': { section: 'wake', controls: ['boatTurnRate', 'boatSpeed', 'wakeGuide'], legend: 'kelvinAngle' },
+  'horizon': { section: 'horizon', controls: ['lodColors', 'lodDistance'], legend: 'lodBands' },
+};
+
+/** A lesson with where it sits in the course, its controls and its legend. */
+export type OutlinedLesson = Lesson & (typeof LESSON_OUTLINE)[string];
+export const outlined = (lesson: Lesson): OutlinedLesson => ({ ...lesson, ...LESSON_OUTLINE[lesson.id] });
+
+/** Each lesson's title, by id. */
+export const LESSON_TITLES: Record<string, Record<Language, string>> = {
+  'flat-plane': { en: 'A flat grid of vertices', es: 'Una malla plana de vértices' },
+  'displaced-plane': { en: 'The grid displaced in the vertex shader', es: 'La malla desplazada en el vertex shader' },
+  'swell': { en: 'The swell: sines times cosines', es: 'El oleaje: senos por cosenos' },
+  'swell-maximum': { en: 'Top frequency and amplitude', es: 'Máxima frecuencia y amplitud' },
+  'perlin-hash': { en: 'Step 1: an integer noise function', es: 'Paso 1: una función de ruido entera' },
+  'perlin-smoothing': { en: 'Step 2: smoothing with the neighbours', es: 'Paso 2: suavizado con los vecinos' },
+  'perlin-octaves': { en: 'Step 3: interpolation and octaves', es: 'Paso 3: interpolación y octavas' },
+  'heightmap-blend': { en: 'Two heightmaps blended in time', es: 'Dos mapas de alturas mezclados en el tiempo' },
+  'normals-wrong': { en: 'Wrong normals: the flat plane’s', es: 'Normales incorrectas: las del plano' },
+  'normals-right': { en: 'Right normals from fabricated neighbours', es: 'Normales correctas con vecinos fabricados' },
+  'sky-cube': { en: 'The sky as a cube map', es: 'El cielo como cube map' },
+  'reflection': { en: 'The cube map reflected', es: 'El cube map reflejado' },
+  'fresnel': { en: 'Fresnel: how much the sea reflects', es: 'Fresnel: cuánto refleja el mar' },
+  'fresnel-schlick': { en: 'The table against Schlick', es: 'La tabla frente a Schlick' },
+  'boat-twin': { en: 'The CPU twin of the shader', es: 'El gemelo en CPU del shader' },
+  'boat-pitch': { en: 'Heave, pitch and roll', es: 'Elevación, cabeceo y balanceo' },
+  'snell-window': { en: 'Snell’s window', es: 'La ventana de Snell' },
+  'underwater-fog': { en: 'Fog and blur under the water', es: 'Niebla y desenfoque bajo el agua' },
+  'caustics': { en: 'Caustics on the sea bed', es: 'Cáusticas en el fondo' },
+  'god-rays': { en: 'God rays', es: 'Rayos de luz' },
+  'lod-bands': { en: 'Distance bands', es: 'Bandas de distancia' },
+  'lod-morph': { en: 'Geomorphing between bands', es: 'Geomorfismo entre bandas' },
+  'frustum-culling': { en: 'The quadtree and the frozen frustum', es: 'El quadtree y el frustum congelado' },
+  'fft-calm': { en: 'A wind spectrum: light air', es: 'Un espectro de viento: ventolina' },
+  'fft-fresh-breeze': { en: 'Dispersion: a fresh breeze', es: 'Dispersión: brisa fresca' },
+  'fft-short-fetch': { en: 'JONSWAP: a young sea', es: 'JONSWAP: un mar joven' },
+  'fft-gale': { en: 'Choppiness and foam from the Jacobian', es: 'Crestas y espuma desde el jacobiano' },
+  'fft-normals': { en: 'Exact normals from the spectrum', es: 'Normales exactas desde el espectro' },
+  'gerstner-gentle': { en: 'Trochoids: Gerstner’s waves', es: 'Trocoides: las olas de Gerstner' },
+  'gerstner-steepness': { en: 'Steepness and the limit Σ QkA ≤ 1', es: 'Pendiente y el límite Σ QkA ≤ 1' },
+  'compare-models': { en: 'Three models, one sea', es: 'Tres modelos, un mar' },
+  'physics-panel': { en: 'The sea measured against theory', es: 'El mar medido frente a la teoría' },
+  'kelvin-wake': { en: 'Kelvin’s 19.47°', es: 'Los 19,47° de Kelvin' },
+  'wake-turn': { en: 'A wake along a turn', es: 'Una estela en una curva' },
+  'horizon': { en: 'Rings out to the horizon', es: 'Anillos hasta el horizonte' },
+};
+
+/** `[{ id, title, section }]` in a language, in the course's order (oceano.lessons()). */
+export function lessonList(language: Language): { id: string; title: string; section: string }[] {
+  return LESSONS.map((lesson) => ({ id: lesson.id, title: LESSON_TITLES[lesson.id][language], section: SECTION_NAMES[LESSON_OUTLINE[lesson.id].section][language] }));
+}

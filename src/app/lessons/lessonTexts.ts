@@ -1,0 +1,262 @@
+import type { Language } from '../language/i18n';
+
+/**
+ * What each lesson card says: what you see and why, in our own words (40 to 120 words in
+ * each language), and its key equations as MathML, which browsers draw without a library.
+ * A chunk of its own, fetched with the lessons drawer after the first frame.
+ */
+export interface LessonText {
+  text: Record<Language, string>;
+  /** One or more <math> elements. */
+  math: string;
+}
+
+const m = (body: string) => `<math display="block">${body}</math>`;
+
+export const LESSON_TEXTS: Record<string, LessonText> = {
+  'flat-plane': {
+    text: {
+      en: 'The ocean starts as a flat grid of vertices, drawn here as a wireframe. Near the camera the grid is dense; farther away each chunk keeps fewer vertices, so the triangles stay about the same size on screen. Nothing moves yet: every vertex sits at height zero. The vertex shader receives each grid point (x, z) and is about to ask the wave model where it goes.',
+      es: 'El océano empieza como una malla plana de vértices, dibujada aquí en alambre. Cerca de la cámara la malla es densa; más lejos cada parcela conserva menos vértices, así que los triángulos tienen en pantalla un tamaño parecido. Todavía nada se mueve: cada vértice está a altura cero. El vertex shader recibe cada punto (x, z) de la malla y está a punto de preguntar al modelo de olas adónde va.',
+    },
+    math: m('<mi>P</mi><mo>=</mo><mo>(</mo><mi>x</mi><mo>,</mo><mn>0</mn><mo>,</mo><mi>z</mi><mo>)</mo>'),
+  },
+  'displaced-plane': {
+    text: {
+      en: 'The same grid, now displaced. For every vertex the shader evaluates the displacement function M(x, z) and lifts the point by that height: the seed’s “displacement shader”. The CPU sends the flat grid only once; the GPU moves every vertex every frame, so animating the sea costs no upload. The seed’s model only lifts points, so a vertex never moves sideways.',
+      es: 'La misma malla, ahora desplazada. Para cada vértice el shader evalúa la función de desplazamiento M(x, z) y eleva el punto esa altura: el “displacement shader” del informe. La CPU envía la malla plana una sola vez; la GPU mueve cada vértice en cada fotograma, así que animar el mar no cuesta ninguna subida de datos. El modelo semilla solo eleva los puntos: ningún vértice se mueve de lado.',
+    },
+    math: m('<mi>P</mi><mo>=</mo><mo>(</mo><mi>x</mi><mo>,</mo><mi>M</mi><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>,</mo><mi>z</mi><mo>)</mo>'),
+  },
+  swell: {
+    text: {
+      en: 'The swell is a product of a sine of x and a cosine of z, times an amplitude, with a phase that grows with time so the pattern travels. A second, smaller product turned by 37° breaks the regular egg-box look. The phase speed follows deep-water dispersion, ω = √(g k), so longer swell runs faster, as at sea. The frequency slider sets k, the amplitude slider A.',
+      es: 'El oleaje es el producto de un seno de x y un coseno de z, por una amplitud, con una fase que crece con el tiempo para que el dibujo avance. Un segundo producto, menor y girado 37°, rompe el aspecto regular de huevera. La velocidad de fase sigue la dispersión en aguas profundas, ω = √(g k): el oleaje largo corre más, como en el mar. El control de frecuencia fija k; el de amplitud, A.',
+    },
+    math: m('<mi>h</mi><mo>=</mo><mi>A</mi><mspace width="0.2em"/><mi>sin</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>+</mo><mi>ω</mi><mi>t</mi><mo>)</mo><mspace width="0.2em"/><mi>cos</mi><mo>(</mo><mi>k</mi><mi>z</mi><mo>+</mo><mi>ω</mi><mi>t</mi><mo>)</mo>') + m('<mi>ω</mi><mo>=</mo><msqrt><mi>g</mi><mi>k</mi></msqrt>'),
+  },
+  'swell-maximum': {
+    text: {
+      en: 'The swell at the top of both ranges: 4 m of amplitude and 0.2 rad/m, a wavelength of about 31 m. The crests are now steep and close together, and the grid starts to show its vertices along them. The shader counts angles in turns and keeps only the fraction, so the argument k x stays small even kilometres from the origin, where float32 would otherwise lose the phase.',
+      es: 'El oleaje en lo más alto de ambos rangos: 4 m de amplitud y 0,2 rad/m, una longitud de onda de unos 31 m. Las crestas son ahora empinadas y cercanas, y la malla empieza a mostrar sus vértices en ellas. El shader cuenta los ángulos en vueltas y conserva solo la fracción, así que el argumento k x sigue siendo pequeño incluso a kilómetros del origen, donde float32 perdería la fase.',
+    },
+    math: m('<mi>λ</mi><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi></mrow><mi>k</mi></mfrac><mo>≈</mo><mn>31</mn><mspace width="0.2em"/><mtext>m</mtext>'),
+  },
+  'perlin-hash': {
+    text: {
+      en: 'Perlin noise, as the seed builds it, begins with an integer noise function: the same lattice point and seed always give the same value in [−1, 1), with no pattern between neighbours. Ours mixes the coordinates with the MurmurHash3 finaliser in exact 32-bit arithmetic, so every browser computes the same heightmaps. On its own this noise is harsh; the next steps smooth it.',
+      es: 'El ruido de Perlin, como lo construye el informe, empieza con una función de ruido entera: el mismo punto de la red y la misma semilla dan siempre el mismo valor en [−1, 1), sin patrón entre vecinos. La nuestra mezcla las coordenadas con el finalizador de MurmurHash3 en aritmética exacta de 32 bits, así que todos los navegadores calculan los mismos mapas de alturas. Solo, este ruido es áspero; los pasos siguientes lo suavizan.',
+    },
+    math: m('<mi>n</mi><mo>(</mo><mi>i</mi><mo>,</mo><mi>j</mi><mo>)</mo><mo>∈</mo><mo>[</mo><mo>−</mo><mn>1</mn><mo>,</mo><mn>1</mn><mo>)</mo>'),
+  },
+  'perlin-smoothing': {
+    text: {
+      en: 'Step two replaces each lattice value by a weighted mean of its 3 × 3 neighbourhood: a quarter for the point itself, an eighth for each side, a sixteenth for each corner. The weights add up to one, so the noise keeps its range but loses its sharpest jumps. The lattice wraps at its own period, which is what lets the heightmaps tile the sea without a seam.',
+      es: 'El segundo paso sustituye cada valor de la red por una media ponderada de sus 3 × 3 vecinos: un cuarto para el propio punto, un octavo para cada lado y un dieciseisavo para cada esquina. Los pesos suman uno, así que el ruido conserva su rango pero pierde sus saltos más bruscos. La red se repite con su propio periodo, y eso permite que los mapas de alturas cubran el mar sin costuras.',
+    },
+    math: m('<mi>s</mi><mo>=</mo><mfrac><mi>c</mi><mn>16</mn></mfrac><mo>+</mo><mfrac><mi>e</mi><mn>8</mn></mfrac><mo>+</mo><mfrac><mi>n</mi><mn>4</mn></mfrac>'),
+  },
+  'perlin-octaves': {
+    text: {
+      en: 'Step three interpolates between lattice points with a cosine curve, flat at both ends, and then adds octaves: each has twice the frequency of the previous one and its amplitude multiplied by the persistence, 0.62. Five octaves give large soft hills with fine detail on top. The two greyscale images are the two heightmaps as the vertex shader receives them, made at start-up from the seed.',
+      es: 'El tercer paso interpola entre puntos de la red con una curva coseno, plana en ambos extremos, y después suma octavas: cada una con el doble de frecuencia que la anterior y su amplitud multiplicada por la persistencia, 0,62. Cinco octavas dan colinas grandes y suaves con detalle fino encima. Las dos imágenes en grises son los dos mapas de alturas tal como los recibe el vertex shader, generados al arrancar a partir de la semilla.',
+    },
+    math: m('<mi>N</mi><mo>(</mo><mi>u</mi><mo>)</mo><mo>=</mo><mfrac><mrow><munder><mo>∑</mo><mi>o</mi></munder><msup><mi>p</mi><mi>o</mi></msup><mspace width="0.2em"/><msub><mi>n</mi><mi>o</mi></msub><mo>(</mo><msup><mn>2</mn><mi>o</mi></msup><mi>u</mi><mo>)</mo></mrow><mrow><munder><mo>∑</mo><mi>o</mi></munder><msup><mi>p</mi><mi>o</mi></msup></mrow></mfrac>'),
+  },
+  'heightmap-blend': {
+    text: {
+      en: 'The ripples alone, with the swell turned off. The vertex shader reads both heightmaps as textures (vertex texture fetch) and mixes them with a weight that swings slowly with time, while each map drifts across the sea at its own speed. Because one fades in as the other fades out, the pattern keeps changing and never visibly repeats, though each map is only a small tile.',
+      es: 'Las ondas solas, con el oleaje apagado. El vertex shader lee ambos mapas de alturas como texturas (vertex texture fetch) y los mezcla con un peso que oscila despacio con el tiempo, mientras cada mapa se desliza sobre el mar a su propia velocidad. Como uno aparece mientras el otro se desvanece, el dibujo cambia sin cesar y no se ve que se repita, aunque cada mapa sea solo un pequeño mosaico.',
+    },
+    math: m('<mi>r</mi><mo>=</mo><mi>S</mi><mspace width="0.2em"/><mo>[</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>b</mi><mo>)</mo><msub><mi>H</mi><mn>0</mn></msub><mo>+</mo><mi>b</mi><msub><mi>H</mi><mn>1</mn></msub><mo>]</mo>'),
+  },
+  'normals-wrong': {
+    text: {
+      en: 'The seed’s “wrong normals”: the vertices move, but each keeps the flat plane’s normal (0, 1, 0). Colour shows the normal (x, y, z as red, green, blue), so the whole sea is one flat green: the lighting cannot see the waves, only the silhouette moves. Switch Normals to fabricated to see the difference the next lesson explains.',
+      es: 'Las “normales incorrectas” del informe: los vértices se mueven, pero cada uno conserva la normal del plano, (0, 1, 0). El color muestra la normal (x, y, z como rojo, verde, azul), así que todo el mar es un mismo verde plano: la iluminación no ve las olas, solo se mueve la silueta. Cambia Normales a fabricadas para ver la diferencia que explica la lección siguiente.',
+    },
+    math: m('<mi>N</mi><mo>=</mo><mo>(</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>,</mo><mn>0</mn><mo>)</mo>'),
+  },
+  'normals-right': {
+    text: {
+      en: 'Right normals, as the seed fabricates them. Besides the vertex V1, the shader evaluates M at two invented neighbours, V2 a small step along x and V3 a step along z. The two edges from V1 span the tangent plane, and their cross product is the normal. Colours now change across every wave: slopes towards x turn red, slopes towards z blue.',
+      es: 'Normales correctas, como las fabrica el informe. Además del vértice V1, el shader evalúa M en dos vecinos inventados: V2, un pequeño paso en x, y V3, un paso en z. Las dos aristas desde V1 generan el plano tangente, y su producto vectorial es la normal. Ahora los colores cambian en cada ola: las pendientes hacia x se vuelven rojas, las pendientes hacia z, azules.',
+    },
+    math: m('<mi>N</mi><mo>=</mo><mo>(</mo><msub><mi>V</mi><mn>3</mn></msub><mo>−</mo><msub><mi>V</mi><mn>1</mn></msub><mo>)</mo><mo>×</mo><mo>(</mo><msub><mi>V</mi><mn>2</mn></msub><mo>−</mo><msub><mi>V</mi><mn>1</mn></msub><mo>)</mo>'),
+  },
+  'sky-cube': {
+    text: {
+      en: 'The sky is a cube map: six square images, one per face of a cube around the camera. A direction is enough to look it up; the GPU picks the face and the texel. Here the camera looks up, so what you see above the horizon is the cube itself, painted from the sun’s elevation and azimuth. Move the sun and the six faces are painted again.',
+      es: 'El cielo es un cube map: seis imágenes cuadradas, una por cara de un cubo alrededor de la cámara. Basta una dirección para consultarlo; la GPU elige la cara y el texel. Aquí la cámara mira hacia arriba, así que lo que se ve sobre el horizonte es el propio cubo, pintado a partir de la elevación y el acimut del sol. Al mover el sol se vuelven a pintar las seis caras.',
+    },
+    math: m('<mtext>color</mtext><mo>=</mo><mtext>texCUBE</mtext><mo>(</mo><mi>sky</mi><mo>,</mo><mover><mi>d</mi><mo>^</mo></mover><mo>)</mo>'),
+  },
+  reflection: {
+    text: {
+      en: 'A still sea is a mirror: with no swell and no ripples, what you see is the cube map looked up along the reflected view ray. The shader reflects the direction to the eye about the normal, clamps rays that would point below the horizon, and mixes the sky with the water’s own colour by the Fresnel reflectance. Near the horizon the sea reflects nearly everything.',
+      es: 'Un mar en calma es un espejo: sin oleaje ni ondas, lo que se ve es el cube map consultado en la dirección del rayo de vista reflejado. El shader refleja la dirección hacia el ojo respecto de la normal, limita los rayos que apuntarían bajo el horizonte y mezcla el cielo con el color propio del agua según la reflectancia de Fresnel. Cerca del horizonte el mar lo refleja casi todo.',
+    },
+    math: m('<mi>r</mi><mo>=</mo><mi>v</mi><mo>−</mo><mn>2</mn><mo>(</mo><mi>v</mi><mo>·</mo><mi>n</mi><mo>)</mo><mi>n</mi>') + m('<mi>c</mi><mo>=</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>F</mi><mo>)</mo><msub><mi>c</mi><mtext>water</mtext></msub><mo>+</mo><mi>F</mi><msub><mi>c</mi><mtext>sky</mtext></msub>'),
+  },
+  fresnel: {
+    text: {
+      en: 'How much light water reflects depends on the angle: 2 % looking straight down, all of it at grazing incidence. The exact value comes from Snell’s law and the Fresnel equations, the mean of the two polarisations. It is computed once on the CPU into a 256-entry table, uploaded as a 1D texture, and read by the fragment shader. The plot shows that table.',
+      es: 'Cuánta luz refleja el agua depende del ángulo: un 2 % mirando en vertical y toda en incidencia rasante. El valor exacto sale de la ley de Snell y de las ecuaciones de Fresnel, la media de las dos polarizaciones. Se calcula una vez en la CPU en una tabla de 256 entradas, se sube como textura 1D y la lee el fragment shader. El gráfico muestra esa tabla.',
+    },
+    math: m('<msub><mi>n</mi><mn>1</mn></msub><mi>sin</mi><msub><mi>θ</mi><mi>i</mi></msub><mo>=</mo><msub><mi>n</mi><mn>2</mn></msub><mi>sin</mi><msub><mi>θ</mi><mi>t</mi></msub>') + m('<mi>F</mi><mo>=</mo><mfrac><mrow><msubsup><mi>r</mi><mi>s</mi><mn>2</mn></msubsup><mo>+</mo><msubsup><mi>r</mi><mi>p</mi><mn>2</mn></msubsup></mrow><mn>2</mn></mfrac>'),
+  },
+  'fresnel-schlick': {
+    text: {
+      en: 'Schlick’s approximation replaces the Fresnel equations by one power: the reflectance at normal incidence, ((n − 1)/(n + 1))² = 0.0204 for water, plus the rest times (1 − cos θ)⁵. The plot draws both curves; they differ by at most a few hundredths. Here Fresnel is switched off, so the sea mixes sky and water half and half at every angle: compare it with the previous lesson.',
+      es: 'La aproximación de Schlick sustituye las ecuaciones de Fresnel por una potencia: la reflectancia en incidencia normal, ((n − 1)/(n + 1))² = 0,0204 para el agua, más el resto por (1 − cos θ)⁵. El gráfico dibuja ambas curvas; difieren como mucho en unas centésimas. Aquí Fresnel está apagado, así que el mar mezcla cielo y agua a partes iguales en todos los ángulos: compáralo con la lección anterior.',
+    },
+    math: m('<mi>F</mi><mo>≈</mo><msub><mi>R</mi><mn>0</mn></msub><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><msub><mi>R</mi><mn>0</mn></msub><mo>)</mo><msup><mrow><mo>(</mo><mn>1</mn><mo>−</mo><mi>cos</mi><mi>θ</mi><mo>)</mo></mrow><mn>5</mn></msup>') + m('<msub><mi>R</mi><mn>0</mn></msub><mo>=</mo><msup><mrow><mo>(</mo><mfrac><mrow><mi>n</mi><mo>−</mo><mn>1</mn></mrow><mrow><mi>n</mi><mo>+</mo><mn>1</mn></mrow></mfrac><mo>)</mo></mrow><mn>2</mn></msup><mo>=</mo><mn>0.0204</mn>'),
+  },
+  'boat-twin': {
+    text: {
+      en: 'The GPU moves the vertices, but it cannot tell the page where the water is. So the displacement function is written twice: in GLSL for the picture and in TypeScript for the CPU, with the same phases and the same heightmaps. A test reads the shader’s heights back from the GPU and compares them with this twin. The boat floats on the twin’s heights.',
+      es: 'La GPU mueve los vértices, pero no puede decirle a la página dónde está el agua. Por eso la función de desplazamiento está escrita dos veces: en GLSL para la imagen y en TypeScript para la CPU, con las mismas fases y los mismos mapas de alturas. Una prueba lee de la GPU las alturas del shader y las compara con este gemelo. El barco flota sobre las alturas del gemelo.',
+    },
+    math: m('<msub><mi>M</mi><mtext>CPU</mtext></msub><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><msub><mi>M</mi><mtext>GPU</mtext></msub><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo>'),
+  },
+  'boat-pitch': {
+    text: {
+      en: 'The seed’s “quiero mover el bote”: the boat samples the CPU twin at five points, its centre, bow and stern half a hull length away, and both sides half a beam away. The centre gives the heave; the slope from stern to bow gives the pitch, the slope from port to starboard the roll. A damped follower smooths the result so the hull does not jitter on every ripple.',
+      es: 'El “quiero mover el bote” del informe: el barco muestrea el gemelo en CPU en cinco puntos, su centro, la proa y la popa a media eslora, y ambos costados a media manga. El centro da la elevación; la pendiente de popa a proa, el cabeceo; la de babor a estribor, el balanceo. Un seguidor amortiguado suaviza el resultado para que el casco no tiemble con cada onda.',
+    },
+    math: m('<mi>θ</mi><mo>=</mo><mi>arctan</mi><mfrac><mrow><msub><mi>h</mi><mtext>bow</mtext></msub><mo>−</mo><msub><mi>h</mi><mtext>stern</mtext></msub></mrow><mi>L</mi></mfrac>'),
+  },
+  'snell-window': {
+    text: {
+      en: 'Seen from below, the whole sky is squeezed into a circle overhead: Snell’s window. A ray leaving water for air bends away from the normal, and beyond the critical angle, arcsin(1/1.333) = 48.6°, it cannot leave at all: it is totally reflected and you see the water’s own colour mirrored. The ring of the window moves with the waves, because each facet has its own normal.',
+      es: 'Visto desde abajo, todo el cielo se comprime en un círculo sobre la cabeza: la ventana de Snell. Un rayo que pasa del agua al aire se aleja de la normal y, más allá del ángulo crítico, arcsen(1/1,333) = 48,6°, no puede salir: se refleja totalmente y se ve el color del agua reflejado. El borde de la ventana se mueve con las olas, porque cada faceta tiene su propia normal.',
+    },
+    math: m('<msub><mi>θ</mi><mi>c</mi></msub><mo>=</mo><mi>arcsin</mi><mfrac><msub><mi>n</mi><mtext>air</mtext></msub><msub><mi>n</mi><mtext>water</mtext></msub></mfrac><mo>=</mo><mn>48.6</mn><mo>°</mo>'),
+  },
+  'underwater-fog': {
+    text: {
+      en: 'Under the water, light is absorbed and scattered: red goes first, blue-green travels farthest. The shader attenuates every colour channel by the Beer–Lambert law over the distance travelled, and fills what was lost with the water’s own colour, lighter looking up, darker looking down. Then a Gaussian blur softens the whole picture, as the seed did when the camera dives.',
+      es: 'Bajo el agua la luz se absorbe y se dispersa: el rojo desaparece antes y el azul verdoso llega más lejos. El shader atenúa cada canal de color con la ley de Beer–Lambert según la distancia recorrida y rellena lo perdido con el color propio del agua, más claro mirando hacia arriba y más oscuro hacia abajo. Después un desenfoque gaussiano suaviza toda la imagen, como hacía el informe al sumergirse.',
+    },
+    math: m('<mi>T</mi><mo>(</mo><mi>d</mi><mo>)</mo><mo>=</mo><msup><mi>e</mi><mrow><mo>−</mo><mi>σ</mi><mi>d</mi></mrow></msup>') + m('<mi>c</mi><mo>=</mo><msub><mi>c</mi><mn>0</mn></msub><mi>T</mi><mo>+</mo><msub><mi>c</mi><mtext>water</mtext></msub><mo>(</mo><mn>1</mn><mo>−</mo><mi>T</mi><mo>)</mo>'),
+  },
+  caustics: {
+    text: {
+      en: 'Caustics are the bright net of light on the sea bed. Each wave is a small lens: sunlight refracted through it converges in some places and spreads in others. For every point of the bed the shader sends three nearby rays through the displaced surface and measures the area of the triangle where they land. A patch squeezed to half its area receives twice the light.',
+      es: 'Las cáusticas son la red brillante de luz en el fondo. Cada ola es una pequeña lente: la luz del sol refractada converge en unos sitios y se dispersa en otros. Para cada punto del fondo el shader envía tres rayos cercanos a través de la superficie desplazada y mide el área del triángulo donde aterrizan. Un trozo comprimido a la mitad de su área recibe el doble de luz.',
+    },
+    math: m('<mtext>gain</mtext><mo>=</mo><mfrac><msub><mi>A</mi><mtext>surface</mtext></msub><msub><mi>A</mi><mtext>bed</mtext></msub></mfrac>'),
+  },
+  'god-rays': {
+    text: {
+      en: 'God rays are shafts of sunlight made visible by the water they cross. The shader marches along each line of sight; at every step it asks how much sunlight reaches that point, focused by the waves above, and how much of it survives the way to the eye. Everything decays exponentially with distance, so the sum is computed by constant factors per step.',
+      es: 'Los rayos de luz son haces de sol que se hacen visibles en el agua que atraviesan. El shader avanza a lo largo de cada línea de visión; en cada paso pregunta cuánta luz solar llega a ese punto, enfocada por las olas de encima, y cuánta sobrevive hasta el ojo. Todo decae exponencialmente con la distancia, así que la suma se calcula con factores constantes por paso.',
+    },
+    math: m('<mi>L</mi><mo>=</mo><munderover><mo>∑</mo><mrow><mi>i</mi><mo>=</mo><mn>1</mn></mrow><mi>N</mi></munderover><mi>E</mi><mo>(</mo><msub><mi>p</mi><mi>i</mi></msub><mo>)</mo><mspace width="0.2em"/><msup><mi>e</mi><mrow><mo>−</mo><mi>σ</mi><msub><mi>t</mi><mi>i</mi></msub></mrow></msup><mi>Δ</mi><mi>t</mi>'),
+  },
+  'lod-bands': {
+    text: {
+      en: 'Level of detail, the seed’s optimisation: the sea is cut into square chunks, and each is drawn with fewer vertices the farther it lies from the camera. Band 0, within L, keeps every vertex; band 1, up to 2L, every second; band 2 every third, then every sixth and beyond. The colours name the bands. Raise L and the dense red area grows, and so does the triangle count.',
+      es: 'Nivel de detalle, la optimización del informe: el mar se divide en parcelas cuadradas y cada una se dibuja con menos vértices cuanto más lejos está de la cámara. La banda 0, dentro de L, conserva todos los vértices; la banda 1, hasta 2L, uno de cada dos; la banda 2, uno de cada tres, y después uno de cada seis y más. Los colores nombran las bandas. Si subes L, crece la zona roja densa, y también el número de triángulos.',
+    },
+    math: m('<msub><mi>d</mi><mi>b</mi></msub><mo>=</mo><mi>L</mi><mspace width="0.2em"/><msup><mn>2</mn><mrow><mi>b</mi><mo>−</mo><mn>1</mn></mrow></msup>'),
+  },
+  'lod-morph': {
+    text: {
+      en: 'Where two bands meet, a sudden change of vertex spacing would make the waves pop. Geomorphing removes it: in the last part of each band, every vertex slides towards the position it will have in the coarser band, by a factor that grows from 0 to 1 with distance. At the border the two grids already agree, so the switch changes nothing on screen. Turn it off to see the pops.',
+      es: 'Donde se tocan dos bandas, un cambio brusco de espaciado haría saltar las olas. El geomorfismo lo evita: en el último tramo de cada banda, cada vértice se desliza hacia la posición que tendrá en la banda más gruesa, con un factor que crece de 0 a 1 con la distancia. En el borde las dos mallas ya coinciden, y el cambio no se nota en pantalla. Apágalo para ver los saltos.',
+    },
+    math: m('<msup><mi>k</mi><mo>′</mo></msup><mo>=</mo><mi>k</mi><mo>+</mo><mi>f</mi><mo>(</mo><msub><mi>k</mi><mtext>coarse</mtext></msub><mo>−</mo><mi>k</mi><mo>)</mo><mo>,</mo><mspace width="0.4em"/><mi>f</mi><mo>∈</mo><mo>[</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>]</mo>'),
+  },
+  'frustum-culling': {
+    text: {
+      en: 'Frustum culling: only the chunks the camera can see are drawn. The chunks are kept in a quadtree. From the root, a node wholly outside the view frustum is skipped with everything below it, a node wholly inside is drawn without testing its children, and only nodes that straddle the border are opened. Here the selection was frozen for the usual camera and is seen from far away.',
+      es: 'Frustum culling: solo se dibujan las parcelas que la cámara puede ver. Las parcelas se guardan en un quadtree. Desde la raíz, un nodo completamente fuera del frustum se descarta con todo lo que tiene debajo, uno completamente dentro se dibuja sin comprobar sus hijos, y solo se abren los nodos que cruzan el borde. Aquí la selección se congeló para la cámara habitual y se ve desde lejos.',
+    },
+    math: m('<mtext>outside</mtext><mo>⇔</mo><mo>∃</mo><mi>π</mi><mo>:</mo><mspace width="0.2em"/><mi>π</mi><mo>(</mo><msub><mi>p</mi><mtext>max</mtext></msub><mo>)</mo><mo>&lt;</mo><mn>0</mn>'),
+  },
+  'fft-calm': {
+    text: {
+      en: 'Beyond the seed: a sea built from the wind. A spectrum S(ω) says how much energy each wave frequency carries for a given wind speed; Pierson and Moskowitz measured it for a fully developed sea. Here U = 4 m/s, a light air: the peak wavelength is only about 14 m and the sea is low. The FFT then adds thousands of such waves, each with its own speed.',
+      es: 'Más allá del informe: un mar construido a partir del viento. Un espectro S(ω) dice cuánta energía lleva cada frecuencia de ola para una velocidad de viento dada; Pierson y Moskowitz lo midieron para un mar totalmente desarrollado. Aquí U = 4 m/s, una ventolina: la longitud de onda del pico es de solo unos 14 m y el mar es bajo. La FFT suma después miles de esas olas, cada una con su propia velocidad.',
+    },
+    math: m('<mi>S</mi><mo>(</mo><mi>ω</mi><mo>)</mo><mo>=</mo><mfrac><mrow><mi>α</mi><msup><mi>g</mi><mn>2</mn></msup></mrow><msup><mi>ω</mi><mn>5</mn></msup></mfrac><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mi>β</mi><msup><mrow><mo>(</mo><mfrac><msub><mi>ω</mi><mn>0</mn></msub><mi>ω</mi></mfrac><mo>)</mo></mrow><mn>4</mn></msup><mo>)</mo></mrow>'),
+  },
+  'fft-fresh-breeze': {
+    text: {
+      en: 'A fresh breeze, 10 m/s: significant height about 2 m, peak wavelength about 90 m. Every wave in the spectrum moves at the speed the dispersion relation gives it, ω² = g k tanh(k h), so long waves overtake short ones and the pattern never repeats. Lower the depth and the long waves slow down. Spreading sets how closely the waves follow the wind’s direction.',
+      es: 'Una brisa fresca, 10 m/s: altura significativa de unos 2 m, longitud de onda del pico de unos 90 m. Cada ola del espectro avanza a la velocidad que le da la relación de dispersión, ω² = g k tanh(k h), así que las olas largas adelantan a las cortas y el dibujo nunca se repite. Si bajas la profundidad, las olas largas se frenan. La dispersión direccional fija cuánto siguen las olas la dirección del viento.',
+    },
+    math: m('<msup><mi>ω</mi><mn>2</mn></msup><mo>=</mo><mi>g</mi><mi>k</mi><mi>tanh</mi><mo>(</mo><mi>k</mi><mi>h</mi><mo>)</mo>'),
+  },
+  'fft-short-fetch': {
+    text: {
+      en: 'JONSWAP is the spectrum of a young sea, measured in the North Sea: the wind has blown over a limited fetch, here 20 km at 15 m/s, so the sea is shorter and lower than a fully developed one, and its peak is sharper by the enhancement factor γ = 3.3. Raise the fetch and the peak moves to longer waves, towards Pierson–Moskowitz.',
+      es: 'JONSWAP es el espectro de un mar joven, medido en el mar del Norte: el viento ha soplado sobre un fetch limitado, aquí 20 km a 15 m/s, así que el mar es más corto y más bajo que uno totalmente desarrollado, y su pico es más agudo por el factor de realce γ = 3,3. Si subes el fetch, el pico pasa a olas más largas, hacia Pierson–Moskowitz.',
+    },
+    math: m('<mi>S</mi><mo>=</mo><msub><mi>S</mi><mtext>PM</mtext></msub><mspace width="0.2em"/><msup><mi>γ</mi><mi>r</mi></msup><mo>,</mo><mspace width="0.4em"/><mi>r</mi><mo>=</mo><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mfrac><msup><mrow><mo>(</mo><mi>ω</mi><mo>−</mo><msub><mi>ω</mi><mi>p</mi></msub><mo>)</mo></mrow><mn>2</mn></msup><mrow><mn>2</mn><msup><mi>σ</mi><mn>2</mn></msup><msubsup><mi>ω</mi><mi>p</mi><mn>2</mn></msubsup></mrow></mfrac><mo>)</mo></mrow>'),
+  },
+  'fft-gale': {
+    text: {
+      en: 'A gale, 20 m/s. Choppiness moves points sideways towards the crests, which sharpen while the troughs widen. Where the sideways motion folds the surface over itself, the Jacobian of the horizontal map drops below zero: that is where a wave breaks, and where the shader makes foam. The foam then decays over seconds, leaving streaks behind the crests.',
+      es: 'Un temporal, 20 m/s. La agudeza de crestas desplaza los puntos de lado hacia las crestas, que se afilan mientras los senos se ensanchan. Donde el desplazamiento lateral pliega la superficie sobre sí misma, el jacobiano de la transformación horizontal baja de cero: ahí rompe una ola, y ahí el shader pone espuma. La espuma decae después en segundos y deja estelas tras las crestas.',
+    },
+    math: m('<mi>J</mi><mo>=</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>D</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>)</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>D</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub><mo>)</mo><mo>−</mo><msubsup><mi>D</mi><mrow><mi>x</mi><mi>z</mi></mrow><mn>2</mn></msubsup>'),
+  },
+  'fft-normals': {
+    text: {
+      en: 'Left half: normals computed per pixel from the spectrum’s exact slopes, i k h, summed by the same FFT as the heights. Right half: the seed’s fabricated neighbours, per vertex, interpolated across each triangle. Both show the same sea. The exact normals keep detail finer than the grid; the fabricated ones lose every ripple shorter than two vertices.',
+      es: 'Mitad izquierda: normales calculadas por píxel a partir de las pendientes exactas del espectro, i k h, sumadas por la misma FFT que las alturas. Mitad derecha: los vecinos fabricados del informe, por vértice, interpolados en cada triángulo. Las dos muestran el mismo mar. Las normales exactas conservan detalle más fino que la malla; las fabricadas pierden toda onda más corta que dos vértices.',
+    },
+    math: m('<mo>∇</mo><mi>h</mi><mo>=</mo><munder><mo>∑</mo><mi>k</mi></munder><mi>i</mi><mi>k</mi><mspace width="0.2em"/><mover><mi>h</mi><mo>~</mo></mover><mo>(</mo><mi>k</mi><mo>,</mo><mi>t</mi><mo>)</mo><msup><mi>e</mi><mrow><mi>i</mi><mi>k</mi><mo>·</mo><mi>x</mi></mrow></msup>'),
+  },
+  'gerstner-gentle': {
+    text: {
+      en: 'Gerstner waves move each point in a circle: forward under the crest, back under the trough, as water particles do. The surface is then a trochoid instead of a sine. Four waves are drawn here from the same wind spectrum, at a gentle steepness Q = 0.2: the circles are small, and the crests stay round, nearly sinusoidal.',
+      es: 'Las olas de Gerstner mueven cada punto en un círculo: hacia delante bajo la cresta y hacia atrás bajo el seno, como hacen las partículas de agua. La superficie es entonces una trocoide en lugar de un seno. Aquí se dibujan cuatro olas del mismo espectro de viento, con una pendiente suave Q = 0,2: los círculos son pequeños y las crestas siguen redondas, casi sinusoidales.',
+    },
+    math: m('<mi>x</mi><mo>=</mo><msub><mi>x</mi><mn>0</mn></msub><mo>−</mo><munder><mo>∑</mo><mi>i</mi></munder><msub><mi>Q</mi><mi>i</mi></msub><msub><mi>A</mi><mi>i</mi></msub><msub><mover><mi>k</mi><mo>^</mo></mover><mi>i</mi></msub><mi>sin</mi><msub><mi>θ</mi><mi>i</mi></msub><mo>,</mo><mspace width="0.4em"/><mi>y</mi><mo>=</mo><munder><mo>∑</mo><mi>i</mi></munder><msub><mi>A</mi><mi>i</mi></msub><mi>cos</mi><msub><mi>θ</mi><mi>i</mi></msub>'),
+  },
+  'gerstner-steepness': {
+    text: {
+      en: 'The same sea at Q = 1, the steepest the model allows. The crests sharpen towards cusps and the troughs flatten. If the horizontal circles grew larger still, neighbouring points would overtake each other and the surface would loop through itself. The limit is Σ Qᵢ kᵢ Aᵢ ≤ 1: every wave gets the same Qᵢ, reduced when the sea is steep enough to loop.',
+      es: 'El mismo mar con Q = 1, la mayor pendiente que admite el modelo. Las crestas se afilan hacia cúspides y los senos se aplanan. Si los círculos horizontales crecieran aún más, los puntos vecinos se adelantarían unos a otros y la superficie se cruzaría consigo misma. El límite es Σ Qᵢ kᵢ Aᵢ ≤ 1: todas las olas reciben el mismo Qᵢ, reducido cuando el mar es tan empinado que se cruzaría.',
+    },
+    math: m('<munder><mo>∑</mo><mi>i</mi></munder><msub><mi>Q</mi><mi>i</mi></msub><msub><mi>k</mi><mi>i</mi></msub><msub><mi>A</mi><mi>i</mi></msub><mo>≤</mo><mn>1</mn>'),
+  },
+  'compare-models': {
+    text: {
+      en: 'The three wave models side by side, on one camera, one wind of 10 m/s and one seed. Left, the seed’s sines and Perlin ripples; middle, 32 Gerstner trochoids drawn from the wind spectrum; right, Tessendorf’s FFT of the same spectrum. Each model draws only its strip of the screen. Drag the dividers, or move them with the arrow keys.',
+      es: 'Los tres modelos de olas lado a lado, con una cámara, un viento de 10 m/s y una semilla. A la izquierda, los senos y las ondas de Perlin del informe; en el centro, 32 trocoides de Gerstner tomadas del espectro del viento; a la derecha, la FFT de Tessendorf del mismo espectro. Cada modelo dibuja solo su franja de la pantalla. Arrastra los divisores o muévelos con las flechas.',
+    },
+    math: m('<msub><mi>x</mi><mtext>split</mtext></msub><mo>=</mo><mtext>round</mtext><mo>(</mo><mi>f</mi><mo>·</mo><mi>W</mi><mo>)</mo>'),
+  },
+  'physics-panel': {
+    text: {
+      en: 'Does the sea obey physics? The panel measures the running sea through its CPU twin: it records the height at fixed points over time, and compares the significant wave height, four times the standard deviation, and the peak period with what the spectrum predicts for this wind. It also fits the speed of waves of each length against the dispersion relation.',
+      es: '¿Obedece el mar a la física? El panel mide el mar en marcha a través de su gemelo en CPU: registra la altura en puntos fijos a lo largo del tiempo y compara la altura significativa, cuatro veces la desviación típica, y el periodo de pico con lo que predice el espectro para este viento. También ajusta la velocidad de las olas de cada longitud frente a la relación de dispersión.',
+    },
+    math: m('<msub><mi>H</mi><mi>s</mi></msub><mo>=</mo><mn>4</mn><msqrt><msub><mi>m</mi><mn>0</mn></msub></msqrt><mo>≈</mo><mn>0.21</mn><mfrac><msubsup><mi>U</mi><mn>19.5</mn><mn>2</mn></msubsup><mi>g</mi></mfrac>'),
+  },
+  'kelvin-wake': {
+    text: {
+      en: 'A boat moving at constant speed over deep water leaves a wake confined to a wedge of half-angle arcsin(1/3) = 19.47°, whatever its speed: Kelvin’s result. The two guide lines are drawn from theory; the waves come from sources along the boat’s track, each spreading since it was left. Their cusps fall on the lines. The transverse waves behind the stern are 2πU²/g long.',
+      es: 'Un barco que avanza a velocidad constante en aguas profundas deja una estela limitada a una cuña de semiángulo arcsen(1/3) = 19,47°, sea cual sea su velocidad: el resultado de Kelvin. Las dos líneas guía se dibujan desde la teoría; las olas salen de fuentes a lo largo de la derrota, cada una extendiéndose desde que quedó atrás. Sus cúspides caen sobre las líneas. Las olas transversales tras la popa miden 2πU²/g.',
+    },
+    math: m('<mi>α</mi><mo>=</mo><mi>arcsin</mi><mfrac><mn>1</mn><mn>3</mn></mfrac><mo>=</mo><mn>19.47</mn><mo>°</mo>') + m('<msub><mi>λ</mi><mtext>t</mtext></msub><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi><msup><mi>U</mi><mn>2</mn></msup></mrow><mi>g</mi></mfrac>'),
+  },
+  'wake-turn': {
+    text: {
+      en: 'The same boat holding a turn of 3° per second. The wake is not a fixed wedge drawn behind the hull: it is the sum of waves left at every point of the track, each one older the farther back it lies. So the wake bends with the curved track, and the guide, which assumes a straight course, no longer matches it far behind the boat.',
+      es: 'El mismo barco manteniendo un giro de 3° por segundo. La estela no es una cuña fija dibujada tras el casco: es la suma de las olas dejadas en cada punto de la derrota, más antiguas cuanto más atrás. Por eso la estela se curva con la derrota, y la guía, que supone un rumbo recto, deja de coincidir con ella lejos del barco.',
+    },
+    math: m('<mi>η</mi><mo>(</mo><mi>x</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><munder><mo>∑</mo><mi>j</mi></munder><mi>G</mi><mo>(</mo><mi>x</mi><mo>−</mo><msub><mi>x</mi><mi>j</mi></msub><mo>,</mo><mi>t</mi><mo>−</mo><msub><mi>t</mi><mi>j</mi></msub><mo>)</mo>'),
+  },
+  horizon: {
+    text: {
+      en: 'Beyond the 4 km grid of chunks the sea continues to the horizon in square rings, each ring’s cells twice the size of the previous ring’s, so a triangle keeps about the same size on screen at any distance. A skirt of triangles runs out past the last ring. The waves fade out over the first rings, where the vertices lie too far apart to sample them.',
+      es: 'Más allá de la malla de parcelas de 4 km, el mar sigue hasta el horizonte en anillos cuadrados, cada uno con celdas del doble de tamaño que el anterior, de modo que un triángulo mantiene en pantalla un tamaño parecido a cualquier distancia. Una falda de triángulos se extiende más allá del último anillo. Las olas se desvanecen en los primeros anillos, donde los vértices están demasiado separados para muestrearlas.',
+    },
+    math: m('<msub><mi>c</mi><mrow><mi>k</mi><mo>+</mo><mn>1</mn></mrow></msub><mo>=</mo><mn>2</mn><msub><mi>c</mi><mi>k</mi></msub>'),
+  },
+};

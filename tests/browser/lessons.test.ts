@@ -1,0 +1,189 @@
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import type { Page } from 'puppeteer';
+import { describe, expect, it } from 'vitest';
+import { openOcean } from './harness';
+import { useHarness } from './useHarness';
+import { recordedPage, viewsReady } from './pages';
+import { LESSONS, lessonView } from '../../src/app/lessons/lessonCatalog';
+import { LESSON_TITLES } from '../../src/app/lessons/lessonOutline';
+import { quoteMatchesFile } from '../../src/app/lessons/quoteExtraction';
+
+const harness = useHarness();
+const root = join(import.meta.dirname, '..', '..');
+
+/** What the open card shows, read from the page. */
+function cardFacts(page: Page) {
+  return page.evaluate(() => {
+    const card = document.querySelector('.oceano-lesson-card') as HTMLElement;
+    const file = card.querySelector('.oceano-lesson-code-file')!.textContent!;
+    return {
+      lesson: window.oceano.lesson(),
+      shown: !card.hidden && card.getBoundingClientRect().height > 0,
+      title: card.querySelector('.oceano-lesson-title')!.textContent,
+      maths: card.querySelectorAll('.oceano-lesson-math math').length,
+      mathHeight: (card.querySelector('.oceano-lesson-math math') as Element).getBoundingClientRect().height,
+      file,
+      code: card.querySelector('.oceano-lesson-code-text')!.textContent!,
+      controls: card.querySelectorAll('.oceano-lesson-control').length,
+      notices: window.oceano.notices(),
+      focusRing: getComputedStyle(document.activeElement!).outlineStyle,
+    };
+  });
+}
+
+/**
+ * The widest share of the canvas left free by the overlays: across (columns no overlay
+ * covers) and down (rows no overlay covers), each as a fraction of the canvas's size.
+ */
+function freeShare(page: Page) {
+  return page.evaluate(() => {
+    const canvas = document.querySelector('canvas')!.getBoundingClientRect();
+    const boxes = Array.from(document.querySelectorAll<HTMLElement>('.oceano-lessons, .lil-gui.lil-root'))
+      .filter((el) => el.offsetParent !== null)
+      .map((el) => el.getBoundingClientRect());
+    const widestGap = (spans: [number, number][], start: number, end: number) => {
+      let gap = 0;
+      let at = start;
+      for (const [a, b] of spans.sort((p, q) => p[0] - q[0])) {
+        gap = Math.max(gap, a - at);
+        at = Math.max(at, b);
+      }
+      return Math.max(gap, end - at);
+    };
+    return {
+      across: widestGap(boxes.map((r) => [r.left, r.right]), canvas.left, canvas.right) / canvas.width,
+      down: widestGap(boxes.map((r) => [r.top, r.bottom]), canvas.top, canvas.bottom) / canvas.height,
+      drawerAtBottom: Math.abs(document.querySelector('.oceano-lessons')!.getBoundingClientRect().bottom - canvas.bottom) < 1,
+    };
+  });
+}
+
+/** The panel as it was before lessons: top right at its full height, every folder open. */
+const OLD_PANEL = `#oceano-page > .lil-gui.lil-root { top: 0 !important; bottom: auto !important; left: auto !important; right: 12px !important; width: 245px !important; max-height: 100% !important; }`;
+
+describe('lessons', () => {
+  it('a keyboard walk opens every lesson in order: its view, its card with MathML and the quote equal to its file, no notice, focus visible', async () => {
+    const { page, consoleErrors } = await openOcean(harness, 't=2', 1366, 768);
+    await page.waitForSelector('.oceano-lessons-open');
+    // Tab reaches the list; Enter opens the first lesson, then → walks on.
+    await page.focus('.oceano-lessons-open');
+    await page.keyboard.press('Enter');
+    for (const [index, lesson] of LESSONS.entries()) {
+      if (index > 0) await page.keyboard.press('ArrowRight');
+      const facts = await cardFacts(page);
+      expect(facts.lesson).toBe(lesson.id);
+      expect(facts.shown, lesson.id).toBe(true);
+      expect(facts.title).toBe(LESSON_TITLES[lesson.id].en);
+      expect(facts.maths, lesson.id).toBeGreaterThan(0);
+      expect(facts.mathHeight, lesson.id).toBeGreaterThan(10);
+      expect(facts.notices, lesson.id).toEqual([]);
+      expect(facts.controls).toBeGreaterThan(0);
+      expect(facts.focusRing).toBe('solid');
+      const [, file, first, last] = /^(.+):(\d+)–(\d+)$/.exec(facts.file)!;
+      const quote = { file, firstLine: Number(first), lastLine: Number(last), text: facts.code };
+      expect(quoteMatchesFile(quote, readFileSync(join(root, file), 'utf8')), lesson.id).toBe(true);
+      const view = lessonView(lesson);
+      expect(await page.evaluate(() => window.oceano.getParams())).toEqual(view.params);
+      const camera = await page.evaluate(() => window.oceano.getCamera());
+      camera.position.forEach((c, i) => expect(c).toBeCloseTo(view.camera.position[i], 6));
+    }
+    // Control: a quote one line off no longer equals its file.
+    const facts = await cardFacts(page);
+    const [, file, first, last] = /^(.+):(\d+)–(\d+)$/.exec(facts.file)!;
+    expect(quoteMatchesFile({ file, firstLine: Number(first) + 1, lastLine: Number(last) + 1, text: facts.code }, readFileSync(join(root, file), 'utf8'))).toBe(false);
+    // ← walks back.
+    await page.keyboard.press('ArrowLeft');
+    expect(await page.evaluate(() => window.oceano.lesson())).toBe(LESSONS.at(-2)!.id);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('API and URL: lessons() in the page’s language, ?lesson= and share links, an unknown id a notice that changes nothing', async () => {
+    const { page } = await openOcean(harness, 'lesson=fresnel&lang=es', 800, 600);
+    await page.waitForSelector('.oceano-lesson-card:not([hidden])');
+    const list = await page.evaluate(() => window.oceano.lessons());
+    expect(list.length).toBe(LESSONS.length);
+    expect(list[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua' });
+    expect(await page.evaluate(() => window.oceano.lesson())).toBe('fresnel');
+    expect(await page.evaluate(() => new URL(window.oceano.shareUrl()).searchParams.get('lesson'))).toBe('fresnel');
+    const before = await page.evaluate(() => ({ params: window.oceano.getParams(), camera: window.oceano.getCamera() }));
+    expect(await page.evaluate(() => window.oceano.setLesson('no-such-lesson'))).toBe(false);
+    const after = await page.evaluate(() => ({ params: window.oceano.getParams(), camera: window.oceano.getCamera(), lesson: window.oceano.lesson(), notices: window.oceano.notices() }));
+    expect(after.params).toEqual(before.params);
+    expect(after.camera).toEqual(before.camera);
+    expect(after.lesson).toBe('fresnel');
+    expect(after.notices).toHaveLength(1);
+    expect(after.notices[0]).toMatch(/^No existe la lección "no-such-lesson"/);
+    expect(await page.evaluate(() => window.oceano.setLesson('gale' as string))).toBe(false);
+    expect(await page.evaluate(() => window.oceano.setLesson('fft-gale'))).toBe(true);
+    expect(await page.evaluate(() => window.oceano.getParams().windSpeed)).toBe(20);
+    await page.close();
+  });
+
+  it('laptop 1366×768: the panel and the card leave at least 60 % of the canvas free across (control: a wide card fails)', async () => {
+    const { page } = await openOcean(harness, 'lesson=lod-bands', 1366, 768);
+    await page.waitForSelector('.oceano-lesson-card:not([hidden])');
+    await page.waitForSelector('.lil-gui.lil-root');
+    const free = await freeShare(page);
+    expect(free.across).toBeGreaterThanOrEqual(0.6);
+    // Folders start folded, except the lesson's (LOD & culling).
+    const open = await page.evaluate(() => Array.from(document.querySelectorAll('.lil-gui.lil-root .lil-gui:not(.lil-closed) > .lil-title'), (t) => t.textContent));
+    expect(open).toEqual(['LOD & culling']);
+    await page.addStyleTag({ content: '#oceano-page .oceano-lessons { width: 340px; }' });
+    expect((await freeShare(page)).across).toBeLessThan(0.6);
+    await page.close();
+  });
+
+  it('phone 390×844: the card and the open panel are bottom sheets, the sea visible above (control: the old panel fails)', async () => {
+    const { page } = await openOcean(harness, 'lesson=normals-right&lang=es', 390, 844);
+    await page.waitForSelector('.oceano-lesson-card:not([hidden])');
+    await page.waitForSelector('.lil-gui.lil-root');
+    let free = await freeShare(page);
+    expect(free.drawerAtBottom).toBe(true);
+    expect(free.down).toBeGreaterThanOrEqual(0.5);
+    await page.click('.lil-gui.lil-root > .lil-title');
+    free = await freeShare(page);
+    expect(free.down).toBeGreaterThanOrEqual(0.5);
+    await page.addStyleTag({ content: OLD_PANEL });
+    await page.evaluate(() => document.querySelectorAll<HTMLElement>('.lil-gui.lil-root .lil-gui.lil-closed > .lil-title').forEach((title) => title.click()));
+    // lil-gui unfolds a folder with a 300 ms transition of its height, begun on a later frame.
+    await new Promise((resolve) => setTimeout(resolve, 1000));
+    free = await freeShare(page);
+    expect(free.down).toBeLessThan(0.5);
+    expect(free.across).toBeLessThan(0.6);
+    await page.close();
+  });
+
+  it('<oceano-view lesson="fresnel">: the card and the Fresnel plot inside the figure’s box; the attribute changes the lesson', async () => {
+    const { page, violations } = await recordedPage(harness, 900, 700);
+    await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
+    await viewsReady(page);
+    await page.evaluate(() => {
+      const view = document.createElement('oceano-view');
+      view.id = 'lesson';
+      view.setAttribute('lesson', 'fresnel');
+      view.setAttribute('t', '3');
+      view.style.width = '640px';
+      document.body.prepend(view);
+    });
+    await viewsReady(page);
+    await page.waitForSelector('#lesson .oceano-lesson-card:not([hidden])');
+    const inside = () =>
+      page.evaluate(() => {
+        const box = document.getElementById('lesson')!.getBoundingClientRect();
+        const within = (selector: string) => {
+          const r = document.querySelector(`#lesson ${selector}`)!.getBoundingClientRect();
+          return r.width > 0 && r.left >= box.left && r.right <= box.right && r.top >= box.top && r.bottom <= box.bottom;
+        };
+        return { card: within('.oceano-lessons'), plot: within('.oceano-fresnel-plot'), list: document.querySelectorAll('#lesson .oceano-lessons-open').length };
+      });
+    expect(await inside()).toEqual({ card: true, plot: true, list: 0 });
+    await page.evaluate(() => document.getElementById('lesson')!.setAttribute('lesson', 'normals-right'));
+    expect(await page.evaluate(() => (document.getElementById('lesson') as HTMLElement & { oceano: { lesson(): string } }).oceano.lesson())).toBe('normals-right');
+    // The fixture's strict CSP (no inline styles): the card's styles and labels break none of it
+    // (the fixture's own inline script is refused on purpose).
+    expect(violations.filter((v) => v !== 'script-src-elem inline')).toEqual([]);
+    await page.close();
+  });
+});

@@ -1,0 +1,64 @@
+import { describe, expect, it } from 'vitest';
+import type { Page } from 'puppeteer';
+import { canvasPng, openOcean } from '../harness';
+import { useHarness } from '../useHarness';
+import { glintWidth, meanChange } from './glintMeasure';
+import { GLINT_VIEW, HORIZON_VIEW, glintQuery, horizonQuery } from './lightViews';
+
+/**
+ * The sun's glint on the spectral sea follows Cox & Munk: its width at 15 m/s against 5 m/s
+ * is √(σ²(15)/σ²(5)) = √(0.0798/0.0286) = 1.67. Tolerance: the range Cox & Munk's own
+ * scatter of ±0.004 on σ² allows, √(0.0758/0.0326) = 1.52 to √(0.0838/0.0246) = 1.85.
+ * And the far sea does not sparkle: between two frames 1/60 s apart, the band just below
+ * the horizon changes no more than the sea near the eye.
+ */
+const harness = useHarness();
+const COX_MUNK_RATIO = [1.52, 1.85] as const;
+
+async function frozenAt(page: Page, t: number): Promise<Buffer> {
+  await page.evaluate((t) => {
+    window.oceano.pause();
+    window.oceano.setTime(t);
+  }, t);
+  return canvasPng(page);
+}
+
+async function glintRatio(fixed: boolean): Promise<number> {
+  const widths: number[] = [];
+  for (const wind of [5, 15]) {
+    const { page } = await openOcean(harness, glintQuery(wind), GLINT_VIEW.width, GLINT_VIEW.height);
+    if (!fixed) await page.evaluate(() => window.oceano.debug.setShadingFixes({ slopeRoughness: false }));
+    widths.push(glintWidth(await frozenAt(page, GLINT_VIEW.t), GLINT_VIEW.seaTop, GLINT_VIEW.height));
+    await page.close();
+  }
+  return widths[1] / widths[0];
+}
+
+async function flicker(fixed: boolean): Promise<{ far: number; near: number }> {
+  const { page } = await openOcean(harness, horizonQuery(10), HORIZON_VIEW.width, HORIZON_VIEW.height);
+  if (!fixed) await page.evaluate(() => window.oceano.debug.setShadingFixes({ slopeRoughness: false }));
+  const a = await frozenAt(page, HORIZON_VIEW.t);
+  const b = await frozenAt(page, HORIZON_VIEW.t + 1 / 60);
+  await page.close();
+  return {
+    far: meanChange(a, b, HORIZON_VIEW.farBand[0], HORIZON_VIEW.farBand[1]),
+    near: meanChange(a, b, HORIZON_VIEW.nearBand[0], HORIZON_VIEW.nearBand[1]),
+  };
+}
+
+describe('the glint follows Cox & Munk', () => {
+  it('widens 1.52–1.85× from 5 to 15 m/s; control: the fixed highlight on every slope does not', { timeout: 240_000 }, async () => {
+    const ratio = await glintRatio(true);
+    expect(ratio).toBeGreaterThan(COX_MUNK_RATIO[0]);
+    expect(ratio).toBeLessThan(COX_MUNK_RATIO[1]);
+    const control = await glintRatio(false);
+    expect(control).toBeLessThan(COX_MUNK_RATIO[0]);
+  });
+
+  it('the far sea flickers less than the near sea between frames 1/60 s apart; control: the fixed highlight flickers more', { timeout: 240_000 }, async () => {
+    const fixed = await flicker(true);
+    expect(fixed.far).toBeLessThan(fixed.near);
+    const control = await flicker(false);
+    expect(control.far).toBeGreaterThan(control.near);
+  });
+});

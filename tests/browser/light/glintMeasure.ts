@@ -1,0 +1,56 @@
+import { PNG } from 'pngjs';
+
+/** Rec. 709 luminance of pixel i of an RGBA image, 0–255. */
+function luminance(data: Uint8Array, i: number): number {
+  return 0.2126 * data[4 * i] + 0.7152 * data[4 * i + 1] + 0.0722 * data[4 * i + 2];
+}
+
+/**
+ * The glint's horizontal width, px: in each row of [top, bottom) the pixels brighter than
+ * halfway from the row's 10th percentile of luminance (the sea beside the glint) to its
+ * brightest, counted and averaged over the rows. A full width at half maximum, so a glint
+ * that is wider but dimmer (a rougher sea) reads as wider.
+ */
+export function glintWidth(png: Buffer, top: number, bottom: number): number {
+  const image = PNG.sync.read(png);
+  const { width } = image;
+  const row = new Float64Array(width);
+  let pixels = 0;
+  let rows = 0;
+  for (let y = Math.max(0, top); y < Math.min(bottom, image.height); y++) {
+    for (let x = 0; x < width; x++) row[x] = luminance(image.data, y * width + x);
+    const sorted = Float64Array.from(row).sort();
+    const half = (sorted[Math.floor(0.1 * width)] + sorted[width - 1]) / 2;
+    for (let x = 0; x < width; x++) if (row[x] > half) pixels++;
+    rows++;
+  }
+  return rows === 0 ? 0 : pixels / rows;
+}
+
+/** Mean absolute luminance change, 0–255, between two frames over the rows [top, bottom). */
+export function meanChange(a: Buffer, b: Buffer, top: number, bottom: number): number {
+  const imageA = PNG.sync.read(a);
+  const imageB = PNG.sync.read(b);
+  const { width } = imageA;
+  let sum = 0;
+  let count = 0;
+  for (let y = Math.max(0, top); y < Math.min(bottom, imageA.height); y++) {
+    for (let x = 0; x < width; x++) {
+      const i = y * width + x;
+      sum += Math.abs(luminance(imageA.data, i) - luminance(imageB.data, i));
+      count++;
+    }
+  }
+  return count === 0 ? 0 : sum / count;
+}
+
+/** Share of near-white pixels (every channel above 170, grey within 40 levels): foam, seen where no glint is in view. */
+export function whiteShare(png: Buffer): number {
+  const image = PNG.sync.read(png);
+  let white = 0;
+  for (let i = 0; i < image.width * image.height; i++) {
+    const [r, g, b] = [image.data[4 * i], image.data[4 * i + 1], image.data[4 * i + 2]];
+    if (Math.min(r, g, b) > 170 && Math.max(r, g, b) - Math.min(r, g, b) < 40) white++;
+  }
+  return white / (image.width * image.height);
+}

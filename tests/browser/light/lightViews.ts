@@ -1,0 +1,40 @@
+/**
+ * The views the light is measured in. The glint: an FFT sea seen toward a sun 25° high from
+ * 20 m up, the camera pitched 15° down along the sun's azimuth, so the reflection's centre
+ * (25° down) sits below the middle of the frame and the horizon (55° vertical field) at row
+ * ≈ 87 of 360. The horizon: the eye 10 m up looking level, the horizon on the middle row.
+ */
+const SUN_AZIMUTH = 20;
+const SUN_ELEVATION = 25;
+const GLINT_EYE = 20;
+const GLINT_PITCH = -15;
+
+function towards(azimuthDeg: number, pitchDeg: number, distance: number, from: [number, number, number]): [number, number, number] {
+  const a = (azimuthDeg * Math.PI) / 180;
+  const p = (pitchDeg * Math.PI) / 180;
+  return [from[0] + distance * Math.sin(a) * Math.cos(p), from[1] + distance * Math.sin(p), from[2] - distance * Math.cos(a) * Math.cos(p)];
+}
+
+const glintEye: [number, number, number] = [0, GLINT_EYE, 0];
+const glintTarget = towards(SUN_AZIMUTH, GLINT_PITCH, 100, glintEye);
+
+export const GLINT_VIEW = { width: 640, height: 360, seaTop: 100, t: 10 } as const;
+
+export function glintQuery(windSpeed: number): string {
+  const cam = [...glintEye, ...glintTarget].map((c) => c.toFixed(3)).join(',');
+  return `waves=fft&foam=false&windSpeed=${windSpeed}&sunElevation=${SUN_ELEVATION}&sunAzimuth=${SUN_AZIMUTH}&t=${GLINT_VIEW.t}&cam=${cam}`;
+}
+
+/** Rows just below the horizon (the far sea) and at the bottom of the frame (the sea near the eye). */
+export const HORIZON_VIEW = { width: 640, height: 360, t: 10, farBand: [182, 198], nearBand: [330, 360] } as const;
+
+export function horizonQuery(windSpeed: number): string {
+  return `waves=fft&windSpeed=${windSpeed}&t=${HORIZON_VIEW.t}&cam=0,10,0,0,10,-1000`;
+}
+
+/** Foam seen from 150 m straight above, the sun 30° high: its glint lies 60° off the nadir, outside the 55° frame. */
+export const FOAM_VIEW = { width: 480, height: 270, t: 10 } as const;
+
+export function foamQuery(windSpeed: number): string {
+  return `waves=fft&windSpeed=${windSpeed}&sunElevation=30&t=${FOAM_VIEW.t}&cam=0,150,0,0,0,-0.01`;
+}

@@ -1,0 +1,95 @@
+import { describe, expect, it } from 'vitest';
+import { LESSONS, lessonIds, lessonView, findLesson } from '../../src/app/lessons/lessonCatalog';
+import { LESSON_OUTLINE, LESSON_SECTIONS, LESSON_TITLES, SECTION_NAMES, lessonList } from '../../src/app/lessons/lessonOutline';
+import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
+import { LESSON_QUOTE_SOURCES } from '../../src/app/lessons/lessonQuoteSources';
+import { PRESETS, presetNames } from '../../src/app/url/presets';
+import { isParamKey, defaultParams } from '../../src/sim/params/params';
+import { unreadParams } from '../../src/app/panel/modelScope';
+import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
+
+const words = (text: string) => text.trim().split(/\s+/).length;
+/** The presets no lesson opens. */
+const presetsWithoutLesson = (lessons: readonly { preset?: string }[]) => presetNames.filter((name) => !lessons.some((lesson) => lesson.preset === name));
+
+describe('the lessons', () => {
+  it('are at least 24, with unique ids, and every part of each lesson exists: outline, title, text, quote', () => {
+    expect(LESSONS.length).toBeGreaterThanOrEqual(24);
+    expect(new Set(lessonIds).size).toBe(LESSONS.length);
+    for (const table of [LESSON_OUTLINE, LESSON_TITLES, LESSON_TEXTS, LESSON_QUOTE_SOURCES]) expect(Object.keys(table).sort()).toEqual([...lessonIds].sort());
+  });
+
+  it('every preset belongs to a lesson (control: dropping the lesson of one leaves it out)', () => {
+    expect(presetsWithoutLesson(LESSONS)).toEqual([]);
+    expect(presetsWithoutLesson(LESSONS.filter((lesson) => lesson.preset !== 'gale'))).toEqual(['gale']);
+  });
+
+  it('follow the seed report’s sections in order, then the ones beyond it', () => {
+    const order = LESSONS.map((lesson) => LESSON_SECTIONS.indexOf(LESSON_OUTLINE[lesson.id].section));
+    expect(order).toEqual([...order].sort((a, b) => a - b));
+    expect(new Set(order).size).toBe(LESSON_SECTIONS.length);
+    const beyond = LESSON_SECTIONS.map((section) => SECTION_NAMES[section].beyondSeed);
+    expect(beyond.indexOf(true)).toBe(10);
+    expect(beyond.slice(10).every(Boolean)).toBe(true);
+  });
+
+  it.each(lessonIds)('%s: 40–120 words in each language, MathML, 1–5 real controls', (id) => {
+    const { text, math } = LESSON_TEXTS[id];
+    for (const language of ['en', 'es'] as const) {
+      expect(words(text[language]), language).toBeGreaterThanOrEqual(40);
+      expect(words(text[language]), language).toBeLessThanOrEqual(120);
+      expect(LESSON_TITLES[id][language].length).toBeGreaterThan(3);
+    }
+    expect(math).toMatch(/^(<math display="block">.*?<\/math>)+$/);
+    expect(math.match(/<math /g)!.length).toBe(math.match(/<\/math>/g)!.length);
+    const { controls } = LESSON_OUTLINE[id];
+    expect(controls.length).toBeGreaterThanOrEqual(1);
+    expect(controls.length).toBeLessThanOrEqual(5);
+    for (const key of controls) expect(isParamKey(key), key).toBe(true);
+  });
+
+  it('the word count check fails a 30-word text (control)', () => {
+    expect(words('word '.repeat(30))).toBeLessThan(40);
+  });
+
+  it('a lesson’s view is the defaults, then its preset’s, then its own parameters and camera', () => {
+    const gale = lessonView(findLesson('fft-gale')!);
+    expect(gale.params).toEqual({ ...defaultParams(), ...PRESETS.gale.params });
+    expect(gale.camera).toEqual(PRESETS.gale.camera);
+    const wake = lessonView(findLesson('kelvin-wake')!);
+    expect(wake.params.wakeGuide).toBe(true);
+    expect(lessonView(findLesson('frustum-culling')!).cullingCamera).toEqual(PRESETS['frustum-culling'].cullingCamera);
+    expect(lessonList('es')[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua' });
+  });
+
+  it('?lesson= opens a lesson, explicit values override it, a share link carries it, and an unknown one is a notice', () => {
+    const state = parseUrlState('?swellAmplitude=2&lesson=swell-maximum');
+    expect(state.lesson).toBe('swell-maximum');
+    expect(state.params.swellFrequency).toBe(0.2);
+    expect(state.params.swellAmplitude).toBe(2);
+    expect(state.camera).toEqual(PRESETS['swell-maximum'].camera);
+    const query = formatUrlState({ params: state.params, time: 3, camera: state.camera!, language: 'en', sky: null, boat: null, embed: false, lesson: 'swell-maximum' });
+    expect(parseUrlState(`?${query}`).lesson).toBe('swell-maximum');
+    const unknown = parseUrlState('?lesson=nope');
+    expect(unknown.lesson).toBeNull();
+    expect(unknown.params).toEqual(defaultParams());
+    expect(unknown.notices.map((n) => n.id)).toEqual(['lessonUnknown']);
+  });
+});
+
+describe('parameters a wave model does not read', () => {
+  it('the swell under fft and gerstner, wind under seed, Gerstner’s under the others; a comparison reads what each of its models reads', () => {
+    const of = (waves: 'seed' | 'fft' | 'gerstner', compare = 'off') => unreadParams({ waves, compare } as never);
+    expect(of('fft').get('swellAmplitude')).toBe('unusedBySpectral');
+    expect(of('gerstner').has('rippleStrength')).toBe(true);
+    expect(of('seed').get('windSpeed')).toBe('unusedBySeed');
+    expect(of('seed').has('gerstnerSteepness')).toBe(true);
+    expect(of('fft').has('gerstnerSteepness')).toBe(true);
+    expect(of('gerstner').has('choppiness')).toBe(true);
+    expect(of('seed').has('sunElevation')).toBe(false);
+    const compared = of('seed', 'seed,gerstner,fft');
+    expect(compared.size).toBe(0);
+    expect(of('seed', 'seed,fft').has('gerstnerCount')).toBe(true);
+    expect(of('seed', 'seed,fft').has('windSpeed')).toBe(false);
+  });
+});
