@@ -78,6 +78,8 @@ export class ControlPanel {
       if (folder.title === 'folderBoat') boatFolder = group;
     }
     this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(tr.ui('froudeNumber')).disable();
+    // Beside the interactiveWaves switch (a button: keyboard operable), in the folded boat folder.
+    (boatFolder ?? this.gui).add({ dropStone: () => hooks.onDropStone() }, 'dropStone').name(tr.ui('dropStone'));
     const live = this.gui.addFolder(tr.ui('folderLiveCounts')).close();
     const labels: [keyof typeof this.counts, UiTextId][] = [
       ['chunks', 'countChunks'],
@@ -99,7 +101,6 @@ export class ControlPanel {
     const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
     this.gui.add(camera, 'dive').name(tr.ui('dive'));
     this.gui.add(camera, 'surface').name(tr.ui('surface'));
-    this.gui.add({ dropStone: () => hooks.onDropStone() }, 'dropStone').name(tr.ui('dropStone'));
     // On a phone the open panel would cover most of the sea: start it folded (its title opens it).
     if (container.clientWidth < NARROW) this.gui.close();
   }
