@@ -86,7 +86,7 @@ export default defineConfig({
     target: 'es2022',
     chunkSizeWarningLimit: 800,
     rollupOptions: {
-      input: { index: 'index.html', oceano: 'src/element.ts' },
+      input: { index: 'index.html', course: 'course/index.html', oceano: 'src/element.ts' },
       // oceano.js is a module pages import from: keep its exports (OceanoViewElement).
       preserveEntrySignatures: 'exports-only',
       output: {

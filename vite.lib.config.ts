@@ -2,6 +2,7 @@ import type { Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { defineConfig } from 'vite';
 import { shaderText } from './vite.config';
+import { lessonQuotes } from './scripts/build/lessonQuotes';
 
 /**
  * The npm package's two builds (`npm run build:package`, run by `npm pack`'s prepack), one
@@ -62,7 +63,7 @@ export default defineConfig(({ mode }) => {
     return {
       base: './',
       publicDir: false,
-      plugins: [shaderText(), elementAssets()],
+      plugins: [shaderText(), lessonQuotes(), elementAssets()],
       build: {
         outDir: 'dist/element',
         emptyOutDir: true,

@@ -62,7 +62,7 @@ export class OceanApp {
   ) {
     this.tr = new Translator(options.language);
     this.params = { ...options.state.params };
-    this.scaffold = buildScaffold(container, this.tr, this.params, () => this.setPlaying(!this.clock.playing));
+    this.scaffold = buildScaffold(container, this.tr, this.params, () => this.setPlaying(!this.clock.playing), options.alt, options.onProgress);
     ({ canvas: this.canvas, notices: this.notices } = this.scaffold);
     for (const notice of options.state.notices) this.notify(notice);
     this.clock = new SimulationClock(options.state.time ?? 0, options.state.time === null && !options.reducedMotion);
@@ -128,6 +128,7 @@ export class OceanApp {
     this.renderFrame(true, true);
     this.frameStats.markFirstFrame();
     performance.mark('oceano:first-frame');
+    this.options.onFirstFrame?.();
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
     const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.lessons.load()]);
@@ -179,7 +180,7 @@ export class OceanApp {
         console.warn('Oceano: a wave model\'s code could not be loaded.', error);
         this.notify(message('modelLoadFailed', { name: missing.join(', '), fallback: modelsDrawn(shown).join(', ') }));
         this.params = { ...this.params, ...shown };
-        labelCanvas(this.canvas, this.tr, this.params);
+        labelCanvas(this.canvas, this.tr, this.params, this.options.alt);
         this.controls?.sync(this.params, this.clock.playing);
         this.loop.requestRender();
       },
@@ -235,7 +236,7 @@ export class OceanApp {
     this.params = { ...this.params, ...valid };
     if (startsFollowing) this.boatMotion.startFollowing(this.orbit.target);
     this.showParams();
-    labelCanvas(this.canvas, this.tr, this.params);
+    labelCanvas(this.canvas, this.tr, this.params, this.options.alt);
     this.controls?.sync(this.params, this.clock.playing);
     this.lessons?.sync(this.params);
     this.loop.requestRender();

@@ -59,9 +59,10 @@ export async function recordedPage(harness: Harness, width: number, height: numb
   return { page, consoleErrors, requests, violations };
 }
 
-/** Resolves once every <oceano-view> on the page has drawn its first frame. */
+/** Resolves once every <oceano-view> on the page has started (they start near the screen) and drawn its first frame. */
 export async function viewsReady(page: Page): Promise<void> {
   await page.waitForFunction(() => customElements.get('oceano-view') !== undefined);
+  await page.waitForFunction(() => Array.from(document.querySelectorAll('oceano-view')).every((view) => (view as HTMLElement & { oceano: unknown }).oceano));
   await page.evaluate(async () => {
     const views = Array.from(document.querySelectorAll('oceano-view')) as (HTMLElement & { oceano: { ready: Promise<void> } })[];
     await Promise.all(views.map((view) => view.oceano.ready));

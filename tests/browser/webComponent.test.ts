@@ -100,14 +100,15 @@ describe('<oceano-view> (dist/oceano.js)', () => {
   });
 
   /**
-   * far-apart.html (two figures, one scrolled far below the other) loaded once for the two
-   * tests that look at it: each boot of its two figures costs seconds of SwiftShader work.
+   * far-apart.html (two figures, the second, loading="eager", far below the first) loaded
+   * once for the two tests that look at it: each boot of its figures costs seconds of
+   * SwiftShader work.
    */
   let farApart: Promise<RecordedPage> | undefined;
   const openFarApart = async () => {
     const recorded = await (farApart ??= recordedPage(harness, 400, 400).then(async (opened) => {
       await opened.page.goto(`${harness.baseUrl}fixtures/far-apart.html`, { waitUntil: 'load' });
-      await viewsReady(opened.page);
+      await opened.page.waitForFunction(() => customElements.get('oceano-view') !== undefined);
       return opened;
     }));
     // Pages opened since leave this one in the background, where no frames are drawn.
@@ -118,27 +119,29 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     if (farApart) await (await farApart).page.close();
   });
 
-  it('pauses a figure scrolled out of view and resumes it when it comes back', async () => {
+  it('gives the context of a figure far from the screen back, keeping its last frame, and brings it back live', async () => {
     const { page, consoleErrors } = await openFarApart();
-    const activity = () =>
-      page.evaluate(() => ({
-        near: (document.querySelector('#near') as ViewElement).oceano!.activity(),
-        far: (document.querySelector('#far') as ViewElement).oceano!.activity(),
-      }));
-    await page.waitForFunction(() => !(document.querySelector('#far') as ViewElement).oceano!.activity().looping);
-    const before = await activity();
+    const state = (selector: string) =>
+      page.evaluate((s) => {
+        const view = document.querySelector(s) as ViewElement;
+        return { live: view.oceano !== null, webgl: view.querySelector('canvas.oceano-canvas') !== null, still: view.querySelector('canvas.oceano-still') !== null, activity: view.oceano?.activity() ?? null };
+      }, selector);
+    // The eager figure started at once, drew, and, being far away, gave its context back.
+    await page.waitForFunction(() => (document.querySelector('#far') as ViewElement).querySelector('.oceano-still') !== null);
+    expect(await state('#far')).toEqual({ live: false, webgl: false, still: true, activity: null });
+    await page.waitForFunction(() => (document.querySelector('#near') as ViewElement).oceano?.activity().looping === true);
+    const before = (await state('#near')).activity!;
     await new Promise((r) => setTimeout(r, 1500));
-    const after = await activity();
-    expect(after.near.looping).toBe(true);
-    expect(after.near.framesDrawn).toBeGreaterThan(before.near.framesDrawn);
-    expect(after.far.looping).toBe(false);
-    expect(after.far.framesDrawn).toBe(before.far.framesDrawn);
+    expect((await state('#near')).activity!.framesDrawn).toBeGreaterThan(before.framesDrawn);
 
     await page.evaluate(() => document.querySelector('#far')!.scrollIntoView());
-    await page.waitForFunction(() => (document.querySelector('#far') as ViewElement).oceano!.activity().looping);
-    const farFrames = (await activity()).far.framesDrawn;
+    await page.waitForFunction(() => (document.querySelector('#far') as ViewElement).oceano?.activity().looping === true);
+    const farFrames = (await state('#far')).activity!.framesDrawn;
     await page.waitForFunction((n) => (document.querySelector('#far') as ViewElement).oceano!.activity().framesDrawn > n, {}, farFrames);
-    expect((await activity()).near.looping).toBe(false);
+    expect(await state('#far')).toMatchObject({ live: true, webgl: true, still: false });
+    // The first figure, now far above, has given its context back in turn.
+    await page.waitForFunction(() => (document.querySelector('#near') as ViewElement).oceano === null);
+    expect(await state('#near')).toMatchObject({ live: false, webgl: false, still: true });
     expect(consoleErrors).toEqual([]);
   });
 
@@ -160,9 +163,9 @@ describe('<oceano-view> (dist/oceano.js)', () => {
   it('pauses every figure while the tab is hidden', async () => {
     const { page } = await openFarApart();
     const looping = () => page.evaluate(() => (document.querySelector('#near') as ViewElement).oceano!.activity().looping);
-    // The page as loaded: the near figure in view (the scrolling test above leaves the far one there).
+    // The page as loaded: the near figure in view (the scrolling test above leaves the far one there, and this one comes back).
     await page.evaluate(() => document.querySelector('#near')!.scrollIntoView());
-    await page.waitForFunction(() => (document.querySelector('#near') as ViewElement).oceano!.activity().looping);
+    await page.waitForFunction(() => (document.querySelector('#near') as ViewElement).oceano?.activity().looping === true);
     expect(await looping()).toBe(true);
     const setHidden = (hidden: boolean) =>
       page.evaluate((h) => {

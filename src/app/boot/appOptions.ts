@@ -16,4 +16,10 @@ export interface OceanAppOptions {
   shareBase: string;
   /** The lil-gui panel; off when embedded. */
   showPanel: boolean;
+  /** The canvas's accessible name in place of the one that says what it shows (an element's alt). */
+  alt?: string;
+  /** Hears the loading steps as a fraction done, 0 to 1 (an element's progress events). */
+  onProgress?: (fraction: number) => void;
+  /** Called once the first frame is drawn (an element's load event). */
+  onFirstFrame?: () => void;
 }

@@ -12,20 +12,20 @@ export interface Scaffold {
   loading: LoadingProgress;
 }
 
-export function buildScaffold(container: HTMLElement, tr: Translator, params: OceanParams, onPlayToggle: () => void): Scaffold {
+export function buildScaffold(container: HTMLElement, tr: Translator, params: OceanParams, onPlayToggle: () => void, alt?: string, onProgress?: (fraction: number) => void): Scaffold {
   const canvas = document.createElement('canvas');
   canvas.className = 'oceano-canvas';
   canvas.setAttribute('role', 'img');
-  labelCanvas(canvas, tr, params);
+  labelCanvas(canvas, tr, params, alt);
   container.appendChild(canvas);
   const notices = new Notices(container, tr.ui('dismiss'));
   const playButton = new PlayButton(container, { play: tr.ui('play'), pause: tr.ui('pause') }, onPlayToggle);
-  return { canvas, notices, playButton, loading: new LoadingProgress(container, tr) };
+  return { canvas, notices, playButton, loading: new LoadingProgress(container, tr, onProgress) };
 }
 
-/** The canvas's aria-label says what it shows: it follows the teaching view (heightmaps, normals). */
-export function labelCanvas(canvas: HTMLCanvasElement, tr: Translator, params: OceanParams): void {
-  canvas.setAttribute('aria-label', canvasLabel(tr, params));
+/** The canvas's aria-label says what it shows: it follows the teaching view (heightmaps, normals), unless the page gave its own words (alt). */
+export function labelCanvas(canvas: HTMLCanvasElement, tr: Translator, params: OceanParams, alt?: string): void {
+  canvas.setAttribute('aria-label', alt ?? canvasLabel(tr, params));
 }
 
 /** Removes what buildScaffold made. */

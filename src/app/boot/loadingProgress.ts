@@ -14,7 +14,11 @@ export class LoadingProgress {
   private readonly bar: HTMLProgressElement;
   private readonly items = new Map<LoadingStep, HTMLLIElement>();
 
-  constructor(container: HTMLElement, tr: Translator) {
+  constructor(
+    container: HTMLElement,
+    tr: Translator,
+    private readonly onProgress: (fraction: number) => void = () => {},
+  ) {
     this.element = container.querySelector<HTMLElement>(':scope > .oceano-loading') ?? document.createElement('div');
     this.element.className = 'oceano-loading';
     this.element.setAttribute('role', 'status');
@@ -43,6 +47,7 @@ export class LoadingProgress {
     const index = LOADING_STEPS.indexOf(step);
     LOADING_STEPS.forEach((s, i) => (this.items.get(s)!.dataset.state = i < index ? 'done' : i === index ? 'active' : 'pending'));
     this.bar.value = index;
+    this.onProgress(index / LOADING_STEPS.length);
   }
 
   /**
@@ -59,6 +64,7 @@ export class LoadingProgress {
   }
 
   finish(): void {
+    if (this.element.isConnected) this.onProgress(1);
     this.element.remove();
   }
 }

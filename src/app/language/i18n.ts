@@ -62,6 +62,7 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" is not a recorded track; the wake is replayed from the boat's present course.`,
     modelLoadFailed: (v) => `The code of the "${v.name}" waves could not be downloaded; still showing "${v.fallback}". Choose it again later, or reload the page.`,
     underwaterLoadFailed: () => 'The underwater effects (water fog, light shafts, blur) could not be downloaded; the sea is drawn from below without them. Reload the page to try again.',
+    elementAttributeInvalid: (v) => `"${v.name}=${v.text}" is not one of ${v.allowed}; using "${v.fallback}".`,
     panelLoadFailed: () => 'The control panel could not be downloaded; the ocean runs without it. Reload the page to try again.',
   },
   es: {
@@ -98,6 +99,7 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" no es una derrota grabada; la estela se reconstruye con el rumbo actual del barco.`,
     modelLoadFailed: (v) => `No se pudo descargar el código de las olas "${v.name}"; se sigue mostrando "${v.fallback}". Vuelve a elegirlas más tarde o recarga la página.`,
     underwaterLoadFailed: () => 'No se pudieron descargar los efectos bajo el agua (niebla, rayos de luz, desenfoque); el mar se ve desde abajo sin ellos. Recarga la página para intentarlo de nuevo.',
+    elementAttributeInvalid: (v) => `"${v.name}=${v.text}" no es uno de ${v.allowed}; se usa "${v.fallback}".`,
     panelLoadFailed: () => 'No se pudo descargar el panel de controles; el océano sigue sin él. Recarga la página para intentarlo de nuevo.',
   },
 };

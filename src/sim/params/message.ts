@@ -37,6 +37,7 @@ export const MESSAGE_IDS = [
   'modelLoadFailed',
   'panelLoadFailed',
   'underwaterLoadFailed',
+  'elementAttributeInvalid',
 ] as const;
 
 export type MessageId = (typeof MESSAGE_IDS)[number];

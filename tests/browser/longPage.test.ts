@@ -1,0 +1,158 @@
+import { describe, expect, it } from 'vitest';
+import type { Page } from 'puppeteer';
+import { useHarness } from './useHarness';
+import { diffPngs } from './imageCompare';
+import { elementCanvasPng, recordedPage } from './pages';
+
+const harness = useHarness();
+
+type ViewElement = HTMLElement & { oceano: (typeof window)['oceano'] | null };
+
+interface ContextCount {
+  created: number;
+  live: number;
+  maxLive: number;
+  errors: { type: string; message: string }[];
+}
+
+/**
+ * Counts the page's WebGL contexts as they are made (the most alive at once) and the
+ * figures' error events. Installed before the page's own scripts run.
+ */
+async function countContexts(page: Page): Promise<void> {
+  await page.evaluateOnNewDocument(() => {
+    const refs: WeakRef<WebGLRenderingContext | WebGL2RenderingContext>[] = [];
+    const seen = new WeakSet<object>();
+    const count = { created: 0, maxLive: 0, errors: [] as { type: string; message: string }[], live: () => refs.filter((r) => r.deref()?.isContextLost() === false).length };
+    (window as unknown as { __contexts: typeof count }).__contexts = count;
+    const getContext = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
+      const context = (getContext as (this: HTMLCanvasElement, ...a: unknown[]) => RenderingContext | null).call(this, type, ...rest);
+      if (context && (type === 'webgl2' || type === 'webgl') && !seen.has(context)) {
+        seen.add(context);
+        refs.push(new WeakRef(context as WebGL2RenderingContext));
+        count.created++;
+        count.maxLive = Math.max(count.maxLive, count.live());
+      }
+      return context;
+    } as typeof getContext;
+    document.addEventListener('error', (event) => {
+      const detail = (event as unknown as CustomEvent<{ type: string; message: string }>).detail;
+      if (detail?.type) count.errors.push(detail);
+    }, true);
+  });
+}
+
+const contextCount = (page: Page): Promise<ContextCount> =>
+  page.evaluate(() => {
+    const c = (window as unknown as { __contexts: { created: number; maxLive: number; errors: { type: string; message: string }[]; live(): number } }).__contexts;
+    return { created: c.created, live: c.live(), maxLive: c.maxLive, errors: c.errors };
+  });
+
+/** Waits until every figure on screen has started again and drawn (its `ready`). */
+async function visibleFiguresReady(page: Page): Promise<void> {
+  const onScreen = () =>
+    (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).filter((view) => {
+      const box = view.getBoundingClientRect();
+      return box.bottom > 0 && box.top < innerHeight;
+    });
+  await page.waitForFunction(`(${onScreen.toString()})().every((view) => view.oceano !== null)`);
+  await page.evaluate(`Promise.all((${onScreen.toString()})().map((view) => view.oceano.ready))`);
+}
+
+async function heapBytes(page: Page): Promise<number> {
+  const session = await page.createCDPSession();
+  await session.send('HeapProfiler.collectGarbage');
+  const { usedSize } = await session.send('Runtime.getHeapUsage');
+  await session.detach();
+  return usedSize;
+}
+
+/** Scrolls the page from top to bottom one screen at a time, waiting at each stop for the figures on screen. */
+async function scrollThrough(page: Page, positions: number[]): Promise<void> {
+  for (const y of positions) {
+    await page.evaluate((top) => window.scrollTo(0, top), y);
+    await visibleFiguresReady(page);
+  }
+}
+
+describe('<oceano-view> on a page of thirty figures', () => {
+  it('holds only the figures near the screen live, gives no context to the browser to take, and brings each back as it was', async () => {
+    const { page, consoleErrors } = await recordedPage(harness, 800, 600);
+    const warnings: string[] = [];
+    page.on('console', (m) => warnings.push(m.text()));
+    await countContexts(page);
+    await page.goto(`${harness.baseUrl}fixtures/thirty-views.html`, { waitUntil: 'load' });
+    await visibleFiguresReady(page);
+    const started = performance.now();
+
+    // The wake figure near the top, as first seen: its share link and its picture.
+    const wakeFigure = '#f1';
+    const before = { link: await page.evaluate((s) => (document.querySelector(s) as ViewElement).oceano!.shareUrl(), wakeFigure), png: await elementCanvasPng(page, wakeFigure) };
+    const heapFirst = await heapBytes(page);
+    const liveFirst = (await contextCount(page)).live;
+    const waiting = await page.evaluate(() => (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).filter((v) => v.oceano === null && !v.querySelector('canvas')).length);
+    // Lazy: the figures far below have no canvas at all yet.
+    expect(waiting).toBeGreaterThan(20);
+
+    const bottom = await page.evaluate(() => document.documentElement.scrollHeight - innerHeight);
+    const down: number[] = [];
+    for (let y = 600; y < bottom; y += 600) down.push(y);
+    down.push(bottom);
+    await scrollThrough(page, down);
+    const atBottom = await contextCount(page);
+    // The wake figure is far away now: no context, its last frame kept as a still.
+    const away = await page.evaluate((s) => {
+      const view = document.querySelector(s) as ViewElement;
+      return { api: view.oceano, webgl: view.querySelector('canvas.oceano-canvas') !== null, still: view.querySelector('canvas.oceano-still') !== null };
+    }, wakeFigure);
+    expect(away).toEqual({ api: null, webgl: false, still: true });
+
+    // Back up three screens at a time: the figures passed over come back too, more slowly.
+    await scrollThrough(page, [...down].reverse().filter((_, i) => i % 3 === 2).concat([0]));
+    const after = await contextCount(page);
+    const back = { link: await page.evaluate((s) => (document.querySelector(s) as ViewElement).oceano!.shareUrl(), wakeFigure), png: await elementCanvasPng(page, wakeFigure) };
+    const heapBack = await heapBytes(page);
+    console.log(
+      `thirty figures: ${after.created} contexts made, at most ${after.maxLive} alive at once (${atBottom.live} at the bottom, ${after.live} back at the top); ` +
+        `heap ${(heapFirst / 1e6).toFixed(1)} MB first, ${(heapBack / 1e6).toFixed(1)} MB back at the top; scroll took ${((performance.now() - started) / 1000).toFixed(1)} s`,
+    );
+
+    expect(after.errors).toEqual([]);
+    expect(warnings.filter((w) => w.includes('Too many active WebGL contexts'))).toEqual([]);
+    expect(after.maxLive).toBeLessThanOrEqual(12);
+    // Every figure started at least once, and those scrolled away came back with fresh contexts.
+    expect(after.created).toBeGreaterThan(30);
+    // Time, camera, parameters, the boat's motion and the wake's track are as they were, and so is the picture.
+    expect(back.link).toBe(before.link);
+    expect(diffPngs(before.png, back.png).share).toBeLessThan(0.001);
+    // Back at the top, the same figures hold contexts as on the first visit. The heap also
+    // keeps each released figure's still and saved view, so it is allowed some growth.
+    expect(after.live).toBeLessThanOrEqual(liveFirst);
+    expect(heapBack).toBeLessThan(heapFirst * 1.6);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  }, 500_000);
+
+  it('control: with releasing off, the browser takes contexts away from the figures', async () => {
+    const { page } = await recordedPage(harness, 800, 600);
+    const warnings: string[] = [];
+    page.on('console', (m) => warnings.push(m.text()));
+    await countContexts(page);
+    await page.goto(`${harness.baseUrl}fixtures/thirty-views.html`, { waitUntil: 'load' });
+    await page.waitForFunction(() => customElements.get('oceano-view') !== undefined);
+    await page.evaluate(() => ((customElements.get('oceano-view') as unknown as { releaseContexts: boolean }).releaseContexts = false));
+    await visibleFiguresReady(page);
+    // Down the page until the browser, which keeps sixteen contexts, takes one away.
+    const bottom = await page.evaluate(() => document.documentElement.scrollHeight - innerHeight);
+    for (let y = 600; (await contextCount(page)).errors.length === 0 && y <= bottom; y += 600) await scrollThrough(page, [y]);
+    const count = await contextCount(page);
+    expect(count.errors[0].type).toBe('contextlost');
+    expect(count.maxLive).toBeGreaterThan(12);
+    expect(warnings.some((w) => w.includes('Too many active WebGL contexts'))).toBe(true);
+    // The figure that lost its context says so where it stood.
+    expect(await page.evaluate(() => document.querySelectorAll('oceano-view .oceano-notice').length)).toBeGreaterThan(0);
+    await page.close();
+  });
+});
+
