@@ -10,6 +10,10 @@
 #ifdef OCEAN_WAKE
 #include <oceano_wake>
 #endif
+// The interactive waves (iWave), compiled in only while interactiveWaves is on.
+#ifdef OCEAN_IWAVE
+#include <oceano_iwave>
+#endif
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
@@ -133,6 +137,14 @@ void main() {
     vWakeSlope = wake.yz;
     vWakeFoam = wakeFoam(world.xz);
   }
+#endif
+#ifdef OCEAN_IWAVE
+  // The interactive field at the displaced point, like the wake: its slope joins the wake's for
+  // ocean.frag's per-pixel normals (OCEAN_WAKE is compiled in alongside).
+  vec3 field = iwaveHeightAndGradient((aChunk.xy - uRenderOrigin) + morphed * aChunk.w + d.xz, uRenderOrigin);
+  world.y += field.x;
+  if (!uFlatNormals) vNormal = wakeTiltNormal(vNormal, field.yz);
+  vWakeSlope += field.yz;
 #endif
   // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
   // the rest is small. So the relative position keeps its bits wherever the camera is.

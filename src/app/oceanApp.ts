@@ -112,6 +112,7 @@ export class OceanApp {
       onDive: () => this.orbit.dive(),
       onStep: () => this.step(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
+      onDropStone: () => this.dropStone(),
     });
     this.lessons = new LessonHost(this.container, this.tr, showPanel, this.params, {
       openLesson: (id) => this.openLesson(id),
@@ -296,8 +297,22 @@ export class OceanApp {
   shareUrl = (): string =>
     shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time), lesson: this.lesson() });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
-  sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (checkSurfacePoint(x, z), this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params));
+  sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (
+    checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params), x, z)
+  );
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
+  /** The panel's button: a stone at the point the camera orbits, the interactive waves turned on first if they are off. */
+  private dropStone(): void {
+    if (!this.params.interactiveWaves) this.setParams({ interactiveWaves: true });
+    const [x, , z] = this.camera().target;
+    this.disturb(x, z, { radius: 1, height: 0.3 });
+  }
+
+  disturb = (x: number, z: number, options: { radius?: number; height?: number } = {}): string[] => {
+    const notices = this.view.ocean.disturb(x, z, options);
+    this.loop.requestRender();
+    return notices;
+  };
   stats = (): OceanStats => this.frameStats.summary(this.view.stats(), this.view.waves.twinStatus?.() ?? null);
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */
   debugView = (): OceanView => this.view;

@@ -33,6 +33,12 @@ export interface OceanoApi {
   sampleSurface(x: number, z: number): SurfaceSample;
   /** The same surface evaluated by the GPU shader and read back; `t` defaults to the current time. */
   probeGpu(points: [number, number][], t?: number): Promise<ProbeSample[]>;
+  /**
+   * Drops a stone into the interactive waves (interactiveWaves on) at world (x, z): a bump of
+   * `height` m (default 0.3, negative for a dip) and `radius` m (default 1). Bad arguments throw
+   * and change nothing; returns notices (a radius under one texel is raised to one texel).
+   */
+  disturb(x: number, z: number, options?: { radius?: number; height?: number }): string[];
   /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boat/boatPose.ts). */
   boat(): BoatInfo;
   stats(): OceanStats;
@@ -120,6 +126,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     getCamera: () => app.camera(),
     sampleSurface: (x, z) => app.sampleSurface(x, z),
     probeGpu: async (points, t) => app.probeGpu(points, t),
+    disturb: (x, z, options) => app.disturb(x, z, options),
     boat: () => app.boat(),
     stats: () => app.stats(),
     physics: async () => started(app.physicsPanel()).measure(),
@@ -171,6 +178,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     getCamera: fail,
     sampleSurface: fail,
     probeGpu: () => Promise.reject(reason),
+    disturb: fail,
     boat: fail,
     stats: fail,
     notices: fail,

@@ -124,6 +124,7 @@ export type UiTextId =
   | 'compareDivider'
   | 'dive'
   | 'surface'
+  | 'dropStone'
   | 'folderLiveCounts'
   | 'countChunks'
   | 'countTriangles'
@@ -165,6 +166,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     compareDivider: 'Divider between wave models (drag, or arrow keys)',
     dive: 'Dive under the surface',
     surface: 'Back to the surface view',
+    dropStone: 'Drop a stone (interactive waves)',
     folderLiveCounts: 'LOD counts (live)',
     countChunks: 'Chunks visible / total',
     countTriangles: 'Triangles',
@@ -205,6 +207,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     compareDivider: 'Divisor entre modelos de olas (arrastrar o flechas)',
     dive: 'Sumergirse',
     surface: 'Volver a la superficie',
+    dropStone: 'Tirar una piedra (olas interactivas)',
     folderLiveCounts: 'Contadores de LOD (en vivo)',
     countChunks: 'Parcelas visibles / total',
     countTriangles: 'Triángulos',
@@ -273,6 +276,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   wake: 'Estela de Kelvin',
   wakeStrength: 'Intensidad de la estela',
   wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
+  interactiveWaves: 'Olas interactivas (iWave)',
   lodDistance: 'Distancia de LOD L',
   lodBands: 'Bandas de LOD',
   lodColors: 'Colorear parcelas por banda',

@@ -15,7 +15,7 @@ const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },
   { title: 'folderPhysics', keys: ['physics'] },
   { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
-  { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide'] },
+  { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide', 'interactiveWaves'] },
   { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
   { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'lodMorph', 'freezeCulling', 'lodBruteForce'] },
   { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'normalsCompare', 'view', 'fresnelPlot'] },
@@ -40,6 +40,8 @@ export interface ControlPanelHooks {
   onDive(): void;
   onStep(): void;
   onSurface(): void;
+  /** Drops a stone into the interactive waves where the camera looks (turning them on if they are off). */
+  onDropStone(): void;
 }
 
 /**
@@ -76,6 +78,8 @@ export class ControlPanel {
       if (folder.title === 'folderBoat') boatFolder = group;
     }
     this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(tr.ui('froudeNumber')).disable();
+    // Beside the interactiveWaves switch (a button: keyboard operable), in the folded boat folder.
+    (boatFolder ?? this.gui).add({ dropStone: () => hooks.onDropStone() }, 'dropStone').name(tr.ui('dropStone'));
     const live = this.gui.addFolder(tr.ui('folderLiveCounts')).close();
     const labels: [keyof typeof this.counts, UiTextId][] = [
       ['chunks', 'countChunks'],

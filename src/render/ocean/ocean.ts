@@ -7,6 +7,7 @@ import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../../sim/
 import { SUN_LIGHT_COLOR, sunDirection } from '../../sim/optics/sun';
 import { fresnelTableFromBelow, refractedSunDirection, type Submersion } from '../../sim/underwater/snellWindow';
 import type { WakeUniformData } from '../../sim/wake/wakeUniformData';
+import { addWake } from '../../sim/wake/boatWake';
 import { createWaterVolumeUniforms, applyWaterVolume, setEyeDepth, type WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
 import { applyCaustics, createCausticsUniforms, type CausticsUniforms } from '../underwater/causticsUniforms';
 import { SeaBed } from '../underwater/seaBed';
@@ -19,6 +20,8 @@ import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
 import { SkySource } from '../sky/skySource';
 import type { OceanMaterialInputs } from '../compare/compareSide';
 import { OceanMaterial } from './oceanMaterial';
+import { createInteractiveWaveUniforms, InteractiveWaves } from '../iwave/interactiveWaves';
+import { IWAVE_MAX_HEIGHT, type DisturbanceOptions } from '../../sim/iwave/interactiveField';
 import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 
@@ -52,6 +55,8 @@ export class Ocean extends Object3D {
   /** Uniforms the underwater passes share with the ocean: the water volume, the refracted sun and the sun's colour. */
   readonly lightUniforms: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>;
   readonly wakeUniforms = createWakeUniforms();
+  /** The interactive waves' field and grid, for the ocean's shaders (read only while interactiveWaves is on). */
+  readonly interactiveWaveUniforms = createInteractiveWaveUniforms();
   /** What a compared model's ocean material shares with this one's. */
   readonly materialInputs: OceanMaterialInputs;
   readonly binding: WaveBinding;
@@ -73,6 +78,7 @@ export class Ocean extends Object3D {
   private wakeBound = 0;
   private appliedWake: WakeUniformData | null = null;
   private frameTime = 0;
+  private interactive: InteractiveWaves | null = null;
 
   /** `params`: any subset of the parameters (src/sim/params/params.ts), validated as the URL and the GUI validate them. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, options: OceanOptions = {}) {
@@ -94,7 +100,7 @@ export class Ocean extends Object3D {
     this.materialInputs = {
       fresnelTables: this.fresnelTextures,
       sky: this.skySource.texture,
-      shared: { ...this.waterVolume, ...this.wakeUniforms, uSunColor: this.lightUniforms.uSunColor },
+      shared: { ...this.waterVolume, ...this.wakeUniforms, ...this.interactiveWaveUniforms, uSunColor: this.lightUniforms.uSunColor },
     };
     this.material = new OceanMaterial(this.binding, this.fresnelTextures, this.skySource.texture, this.materialInputs.shared);
     this.chunks = new OceanChunks(this.material);
@@ -117,6 +123,11 @@ export class Ocean extends Object3D {
   /** The time of the last update, seconds. */
   get time(): number {
     return this.frameTime;
+  }
+
+  /** The interactive waves while interactiveWaves is on, else null. */
+  get interactiveWaves(): InteractiveWaves | null {
+    return this.interactive;
   }
 
   /** The GPU half of the waves drawn. */
@@ -192,6 +203,7 @@ export class Ocean extends Object3D {
       this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
     }
     if (changed(...LOOK_KEYS)) applyLook(this.material, params);
+    if (changed('interactiveWaves')) this.setInteractiveWaves(params.interactiveWaves);
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
       this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
@@ -201,6 +213,7 @@ export class Ocean extends Object3D {
 
   /** Everything a frame needs for `camera` at `time` (seconds): the waves, which side of the water the eye is on, and the chunks in view. */
   update(time: number, camera: PerspectiveCamera): void {
+    if (this.interactive) this.interactive.follow(...focusOf(camera));
     this.advance(time);
     this.locateEye(camera, time);
     this.cull(camera);
@@ -211,6 +224,35 @@ export class Ocean extends Object3D {
   advance(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
+    if (this.interactive) {
+      this.interactive.advance(time);
+      this.interactive.readBack();
+    }
+  }
+
+  /** `sample` (at world (x, z)) with the interactive waves added while they are on, from their latest read-back. */
+  withInteractiveWaves(sample: SurfaceSample, x: number, z: number): SurfaceSample {
+    return this.interactive ? addWake(sample, this.interactive.sample(x, z)) : sample;
+  }
+
+  private setInteractiveWaves(on: boolean): void {
+    if (on && !this.interactive) this.interactive = new InteractiveWaves(this.renderer, this.interactiveWaveUniforms);
+    if (!on && this.interactive) {
+      this.interactive.dispose();
+      this.interactive = null;
+    }
+    this.material.setInteractiveWavesOn(on);
+  }
+
+  /**
+   * Drops a stone at world (x, z) into the interactive waves (interactiveWaves must be on): a
+   * bump of `height` metres (negative: a dip) and `radius` metres, at rest, recorded at the
+   * current simulation time. Bad arguments throw, naming the argument, and change nothing;
+   * returns notices (a radius under one texel is raised to one texel).
+   */
+  disturb(x: number, z: number, options: DisturbanceOptions = {}): string[] {
+    if (!this.interactive) throw new Error('disturb: the interactive waves are off (set interactiveWaves: true first).');
+    return this.interactive.disturb(x, z, options);
   }
 
   /** Height of the surface under (x, z) at `time`, kept while nothing it depends on changes (a paused view asks it every frame). */
@@ -238,11 +280,13 @@ export class Ocean extends Object3D {
   }
 
   /**
-   * A model's bounds grown by how far the wake can raise the surface: every model drawn with
-   * this ocean's wake (a compared one too) culls, and morphs its bands, with these.
+   * A model's bounds grown by how far the wake and the interactive waves (the tallest stone,
+   * while they are on) can raise the surface: every model drawn with this ocean's wake (a
+   * compared one too) culls, and morphs its bands, with these.
    */
   grownByWake(bounds: { vertical: number; horizontal: number }): { vertical: number; horizontal: number } {
-    return this.wakeBound === 0 ? bounds : { vertical: bounds.vertical + this.wakeBound, horizontal: bounds.horizontal };
+    const extra = this.wakeBound + (this.interactive ? IWAVE_MAX_HEIGHT : 0);
+    return extra === 0 ? bounds : { vertical: bounds.vertical + extra, horizontal: bounds.horizontal };
   }
 
   /** The shading for where the eye is: which faces, the sea bed, the sky behind, the water between the eye and the surface. */
@@ -260,9 +304,12 @@ export class Ocean extends Object3D {
     return this.place.submersion;
   }
 
-  /** Height and normal of the surface at the world point (x, z), by the CPU twin, at the last update's time unless `time` is given. */
+  /**
+   * Height and normal of the surface at the world point (x, z), by the CPU twin, at the last update's time unless `time` is given;
+   * with the interactive waves on, their latest read-back added (a frame or two old, whatever `time` says).
+   */
   sampleSurface(x: number, z: number, time = this.frameTime): SurfaceSample {
-    return this.waveView.model.sample(x, z, time);
+    return this.withInteractiveWaves(this.waveView.model.sample(x, z, time), x, z);
   }
 
   /** The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */
@@ -288,6 +335,7 @@ export class Ocean extends Object3D {
   contextRestored(): void {
     this.chunks.forgetSelection();
     this.waveView.contextRestored?.();
+    this.interactive?.contextRestored();
     this.skySource.contextRestored(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
   }
 
@@ -298,10 +346,24 @@ export class Ocean extends Object3D {
     this.material.dispose();
     this.seaBed.dispose();
     this.waveView.dispose();
+    this.interactive?.dispose();
     this.fresnelTextures.fromAbove.dispose();
     this.fresnelTextures.fromBelow.dispose();
     this.skySource.dispose();
   }
+}
+
+/**
+ * The point the interactive waves centre on: where the camera's line of sight meets the sea
+ * (y = 0) within 60 m, else the point 60 m along its heading, else the camera's own (x, z).
+ */
+function focusOf(camera: PerspectiveCamera): [number, number] {
+  const forward = camera.getWorldDirection(new Vector3());
+  const { x, y, z } = camera.position;
+  const reach = forward.y < 0 ? Math.min(-y / forward.y, 60) : 60;
+  const horizontal = Math.hypot(forward.x, forward.z);
+  if (horizontal < 1e-6) return [x, z];
+  return [x + forward.x * reach, z + forward.z * reach];
 }
 
 /** The model the ocean itself draws: the first of a comparison, else `waves`. */

@@ -180,8 +180,21 @@ export class OceanMaterial extends ShaderMaterial {
    * the wake's loops are a large part of that (docs/shader-notes.md). Turning the wake on or
    * off builds the other program once, on the next draw; three.js keeps both.
    */
+  private interactiveWavesOn = false;
+
   private followWake(): void {
-    setMaterialDefine(this, 'OCEAN_WAKE', (this.uniforms.uWakeCount.value as number) >= 2);
+    setMaterialDefine(this, 'OCEAN_WAKE', (this.uniforms.uWakeCount.value as number) >= 2 || this.interactiveWavesOn);
+  }
+
+  /**
+   * Whether the interactive waves (iWave) are drawn: their code is compiled into both programs
+   * (OCEAN_IWAVE) only while they are on, so that off, the programs are the ones without them.
+   * Their slope reaches ocean.frag's per-pixel normals through the wake's (vWakeSlope), so
+   * OCEAN_WAKE goes in alongside; with no wake track its loops are skipped (uWakeCount < 2).
+   */
+  setInteractiveWavesOn(on: boolean): void {
+    for (const material of this.near === this ? [this] : [this, this.near]) material.interactiveWavesOn = on;
+    this.setDefine('OCEAN_IWAVE', on);
   }
 
   /**

@@ -4,6 +4,7 @@ import caustics from '../../../shaders/caustics.glsl?raw';
 import waterline from '../../../shaders/waterline.glsl?raw';
 import lineOfSight from '../../../shaders/lineOfSight.glsl?raw';
 import wake from '../../../shaders/wake.glsl?raw';
+import iwave from '../../../shaders/iwave.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
@@ -32,6 +33,8 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_line_of_sight: lineOfSight,
   // The boat's Kelvin wake and its foam, added to whichever wave model is active.
   oceano_wake: wake,
+  // The interactive waves' height field (iWave), added to whichever wave model is active.
+  oceano_iwave: iwave,
   // The underwater passes' scene target: written after three's colour-space chunk, read back by the passes.
   oceano_scene_encode: SCENE_ENCODE_CHUNK,
   oceano_scene_decode: SCENE_DECODE_CHUNK,

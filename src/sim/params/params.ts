@@ -86,6 +86,10 @@ export const paramDefs = {
   wakeStrength: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'Wake strength' },
   // Teaching overlay: the ±19.47° lines from theory, drawn behind the boat.
   wakeGuide: { kind: 'boolean', default: false, label: 'Kelvin angle guide (±19.47°)' },
+  // Tessendorf's iWave (src/sim/iwave/): a height field stepped in time around the camera's focus,
+  // added to whichever wave model is active; stones dropped with disturb() make waves that obey
+  // ω² = g k. Off, none of its passes run and none of its code is compiled in.
+  interactiveWaves: { kind: 'boolean', default: false, label: 'Interactive waves (iWave)' },
   // Teaching views of the seed's figures.
   shading: { kind: 'choice', default: 'water', options: ['water', 'normals'], label: 'Shading' },
   normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },

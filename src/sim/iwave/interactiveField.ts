@@ -1,0 +1,85 @@
+import type { Disturbance } from './iwaveGrid';
+
+/** The app's field: 256 × 256 texels of 0.5 m, a square 128 m across around the camera's focus. */
+export const IWAVE_GRID_SIZE = 256;
+export const IWAVE_SPACING = 0.5;
+/** Seconds of simulation time per step: the field advances in these whatever the frame rate. */
+export const IWAVE_STEP = 1 / 60;
+/** Light damping everywhere, 1/s: left alone, waves lose a factor e of their height in 100 s. */
+export const IWAVE_DAMPING = 0.02;
+/** The most steps a jump forward runs (10 s); past it the field restarts calm that far back. */
+export const IWAVE_CATCH_UP_STEPS = 600;
+/** The tallest bump a disturbance may add or dig, metres, and the widest, metres. */
+export const IWAVE_MAX_HEIGHT = 2;
+export const IWAVE_MAX_RADIUS = 10;
+
+export interface DisturbanceOptions {
+  /** Metres; raised to one texel if smaller. Default 1. */
+  radius?: number;
+  /** Metres, negative for a dip. Default 0.3. */
+  height?: number;
+}
+
+/**
+ * A disturbance checked as the API takes it: a non-finite or out-of-range argument throws a
+ * RangeError naming it (and nothing changes); a radius under one texel is raised to one texel,
+ * with a notice saying so.
+ */
+export function checkDisturbance(x: number, z: number, options: DisturbanceOptions = {}): { disturbance: Disturbance; notices: string[] } {
+  const radius = options.radius ?? 1;
+  const height = options.height ?? 0.3;
+  if (!Number.isFinite(x) || !Number.isFinite(z)) throw new RangeError(`disturb: x and z must be finite numbers of metres (got ${x}, ${z}).`);
+  if (!Number.isFinite(radius) || radius <= 0 || radius > IWAVE_MAX_RADIUS) throw new RangeError(`disturb: radius must be a number of metres above 0 and at most ${IWAVE_MAX_RADIUS} (got ${radius}).`);
+  if (!Number.isFinite(height) || Math.abs(height) > IWAVE_MAX_HEIGHT) throw new RangeError(`disturb: height must be a number of metres from −${IWAVE_MAX_HEIGHT} to ${IWAVE_MAX_HEIGHT} (got ${height}).`);
+  const notices: string[] = [];
+  let used = radius;
+  if (radius < IWAVE_SPACING) {
+    used = IWAVE_SPACING;
+    notices.push(`disturb: radius ${radius} m is below one texel of the interactive field; raised to ${IWAVE_SPACING} m.`);
+  }
+  return { disturbance: { x, z, radius: used, height }, notices };
+}
+
+/** A read-back of the field: heights every `stride` floats (RGBA: 4), n × n row by row along z, around (centerX, centerZ). */
+export interface FieldSnapshot {
+  heights: Float32Array;
+  stride: number;
+  n: number;
+  spacing: number;
+  centerX: number;
+  centerZ: number;
+}
+
+/**
+ * (h, ∂h/∂x, ∂h/∂z) of a field snapshot at world (x, z): the CPU twin of
+ * iwaveHeightAndGradient in shaders/iwave.glsl (bilinear between texel centres, slopes by
+ * central differences one texel apart, faded out over the outer tenth of the square).
+ */
+export function sampleField(field: FieldSnapshot, x: number, z: number): [number, number, number] {
+  const { n, spacing } = field;
+  const halfWidth = 0.5 * n * spacing;
+  const fromX = x - field.centerX;
+  const fromZ = z - field.centerZ;
+  const edge = Math.max(Math.abs(fromX), Math.abs(fromZ)) / halfWidth;
+  const fade = 1 - smoothstep(0.9, 1, edge);
+  if (fade <= 0) return [0, 0, 0];
+  const u = fromX / spacing + n / 2 - 0.5;
+  const v = fromZ / spacing + n / 2 - 0.5;
+  const at = (i: number, j: number) => (i < 0 || j < 0 || i >= n || j >= n ? 0 : field.heights[(j * n + i) * field.stride]);
+  const bilinear = (a: number, b: number) => {
+    const i = Math.floor(a);
+    const j = Math.floor(b);
+    const fa = a - i;
+    const fb = b - j;
+    return (at(i, j) * (1 - fa) + at(i + 1, j) * fa) * (1 - fb) + (at(i, j + 1) * (1 - fa) + at(i + 1, j + 1) * fa) * fb;
+  };
+  const h = bilinear(u, v);
+  const dx = (bilinear(u + 1, v) - bilinear(u - 1, v)) / (2 * spacing);
+  const dz = (bilinear(u, v + 1) - bilinear(u, v - 1)) / (2 * spacing);
+  return [fade * h, fade * dx, fade * dz];
+}
+
+function smoothstep(edge0: number, edge1: number, x: number): number {
+  const t = Math.min(1, Math.max(0, (x - edge0) / (edge1 - edge0)));
+  return t * t * (3 - 2 * t);
+}
