@@ -39,7 +39,7 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const draw = (on: boolean, stone: boolean, seconds: number): Promise<ReturnType<InteractiveWavesApi['draw']>> =>
+const draw = (on: boolean, stone: boolean, seconds: number): ReturnType<InteractiveWavesApi['draw']> =>
   page.evaluate((a, b, c) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.draw(a, b, c), on, stone, seconds);
 
 function differing(a: number[], b: number[], threshold: number): number {

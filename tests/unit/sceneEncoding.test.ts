@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
-import { encodeSceneForPost, markOceanoMaterial, SCENE_BRIGHTEST, SCENE_DECODE_CHUNK, SCENE_ENCODE_CHUNK, SCENE_LOW_CODES } from '../../src/render/underwater/sceneEncoding';
+import { encodeSceneForPost, markOceanoMaterial, SCENE_BRIGHTEST, SCENE_ENCODE_CHUNK, SCENE_LOW_CODES } from '../../src/render/underwater/sceneEncoding';
+import { SCENE_DECODE_CHUNK, withPassChunks } from '../../src/render/underwater/passChunks';
 import { resolveChunks } from '../../src/render/shaders/shaderChunks';
 
 const DEFINE = 'OCEANO_SCENE_ENCODE';
@@ -71,9 +72,10 @@ describe("the underwater passes' scene encoding (src/render/underwater/sceneEnco
   });
 
   it("resolves Oceano's chunks per shader and leaves three's ShaderChunk table as three ships it", () => {
-    const text = resolveChunks('#include <common>\n#include <colorspace_fragment>\n#include <oceano_scene_encode>\n#include <oceano_scene_decode>');
+    const text = resolveChunks(withPassChunks('#include <common>\n#include <colorspace_fragment>\n#include <oceano_scene_encode>\n#include <oceano_scene_decode>'));
     expect(text).toContain('#include <common>');
     expect(text).toContain(SCENE_ENCODE_CHUNK);
+    expect(text).toContain(SCENE_DECODE_CHUNK);
     expect(SCENE_DECODE_CHUNK).toContain(`#define SCENE_LOW_SHARE ${SCENE_LOW_CODES / 255}`);
     expect(SCENE_DECODE_CHUNK).toContain(`#define SCENE_BRIGHTEST ${SCENE_BRIGHTEST}.0`);
     expect(() => resolveChunks('#include <oceano_nonesuch>')).toThrow(/oceano_nonesuch/);

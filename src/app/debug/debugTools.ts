@@ -19,7 +19,7 @@ export function debugTools(app: OceanApp) {
     lodUpdateMs: (batches?: number): number => timeLodUpdate(view(), checkBatches(batches)),
     forceShaftLightWindow: (on: boolean): void => view().underwater.forceShaftLightWindow(on === true),
     setShadingFixes: (fixes: Partial<ShadingFixes>): void => setShadingFixes(view(), fixes),
-    stripCulling: (on: boolean): void => void (view().compare.stripCulling = on === true),
+    stripCulling: (on: boolean): void => void (view().stripCulling = on === true),
     /** The underwater passes' scene target: 'linear' (the library's default) or an encoded one (the app's). */
     underwaterScene: (mode: EncodedScene): void => view().underwater.setEncodedScene(mode),
   };

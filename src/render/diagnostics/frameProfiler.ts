@@ -24,11 +24,11 @@ export function profileFrame(view: OceanView, time: number): PassTiming[] {
     return [...wavePasses, ...passes.profile(sync)];
   }
   view.underwater.resetEncoding();
-  wavePasses.push(...view.compare.profilePasses(sync));
+  wavePasses.push(...(view.compare?.profilePasses(sync) ?? []));
   sync();
   let start = performance.now();
   const strips = view.splitStrips();
-  if (strips) {
+  if (strips && view.compare) {
     const passes: PassTiming[] = [];
     view.compare.draw(strips, view.camera, (model) => {
       sync();

@@ -1,16 +1,11 @@
-import { Vector4, type IUniform, type Texture, type WebGLRenderer } from 'three';
+import type { WebGLRenderer } from 'three';
 import { GpuIWave } from './gpuIWave';
 import { IWAVE_DAMPING, IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, sampleField, type DisturbanceOptions, type FieldSnapshot } from '../../sim/iwave/interactiveField';
 import type { Disturbance } from '../../sim/iwave/iwaveGrid';
 
-export interface InteractiveWaveUniforms {
-  uIWaveField: IUniform<Texture | null>;
-  uIWaveGrid: IUniform<Vector4>;
-}
+import type { InteractiveWaveUniforms } from './interactiveWaveUniforms';
 
-export function createInteractiveWaveUniforms(): InteractiveWaveUniforms {
-  return { uIWaveField: { value: null }, uIWaveGrid: { value: new Vector4(0, 0, IWAVE_SPACING, IWAVE_GRID_SIZE) } };
-}
+export type { InteractiveWaveUniforms };
 
 /**
  * The interactive waves as the Ocean runs them: the GPU field (GpuIWave) stepped in fixed steps

@@ -20,8 +20,10 @@ import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
 import { SkySource } from '../sky/skySource';
 import type { OceanMaterialInputs } from '../compare/compareSide';
 import { OceanMaterial } from './oceanMaterial';
-import { createInteractiveWaveUniforms, InteractiveWaves } from '../iwave/interactiveWaves';
-import { IWAVE_MAX_HEIGHT, type DisturbanceOptions } from '../../sim/iwave/interactiveField';
+import type { InteractiveWaves } from '../iwave/interactiveWaves';
+import { createInteractiveWaveUniforms } from '../iwave/interactiveWaveUniforms';
+import { IWAVE_MAX_HEIGHT } from '../../sim/iwave/fieldSize';
+import type { DisturbanceOptions } from '../../sim/iwave/interactiveField';
 import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 
@@ -78,6 +80,7 @@ export class Ocean extends Object3D {
   private wakeBound = 0;
   private appliedWake: WakeUniformData | null = null;
   private frameTime = 0;
+  private disposed = false;
   private interactive: InteractiveWaves | null = null;
 
   /** `params`: any subset of the parameters (src/sim/params/params.ts), validated as the URL and the GUI validate them. */
@@ -235,13 +238,25 @@ export class Ocean extends Object3D {
     return this.interactive ? addWake(sample, this.interactive.sample(x, z)) : sample;
   }
 
+  /**
+   * The interactive waves' code is fetched the first time they are switched on (most oceans
+   * never use them); `ready` then settles once they run.
+   */
   private setInteractiveWaves(on: boolean): void {
-    if (on && !this.interactive) this.interactive = new InteractiveWaves(this.renderer, this.interactiveWaveUniforms);
+    if (on && !this.interactive) {
+      const start = import('../iwave/interactiveWaves').then(({ InteractiveWaves }) => {
+        if (!this.params.interactiveWaves || this.interactive || this.disposed) return;
+        this.interactive = new InteractiveWaves(this.renderer, this.interactiveWaveUniforms);
+        this.material.setInteractiveWavesOn(true);
+      });
+      this.ready = Promise.all([this.ready, start]).then(() => undefined);
+      return;
+    }
     if (!on && this.interactive) {
       this.interactive.dispose();
       this.interactive = null;
     }
-    this.material.setInteractiveWavesOn(on);
+    this.material.setInteractiveWavesOn(on && this.interactive !== null);
   }
 
   /**
@@ -340,6 +355,7 @@ export class Ocean extends Object3D {
   }
 
   dispose(): void {
+    this.disposed = true;
     this.removeFromParent();
     this.sky.removeFromParent();
     this.chunks.dispose();

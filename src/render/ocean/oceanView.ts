@@ -8,10 +8,12 @@ import { DEFAULT_CAMERA } from '../../sim/camera/defaultCamera';
 import type { WakeUniformData } from '../../sim/wake/wakeUniformData';
 import { modelsDrawn, modelsMissing } from '../waves/waveViewRegistry';
 import type { ProbeSample, SurfaceProbe } from '../teaching/surfaceProbe';
-import { HeightmapView } from '../teaching/heightmapView';
+import type { HeightmapView } from '../teaching/heightmapView';
 import { SceneLights } from '../sky/sceneLights';
 import { KelvinGuideView } from '../wake/kelvinGuideView';
-import { CompareRenderer } from '../compare/compareRenderer';
+import type { CompareRenderer } from '../compare/compareRenderer';
+import type { Strip } from '../../sim/compare/compareLayout';
+import { compareModelNames } from '../../sim/compare/compareLayout';
 import { UnderwaterStage } from '../underwater/underwaterStage';
 import type { ChunkStats } from '../lod/oceanChunks';
 import { DEFAULT_NEAR } from './nearPlane';
@@ -41,7 +43,13 @@ export class OceanView {
   readonly scene = new Scene();
   readonly camera: PerspectiveCamera;
   readonly ocean: Ocean;
-  readonly compare: CompareRenderer;
+  /** compare=: the models side by side; its code is fetched the first time a comparison is asked for. */
+  compare: CompareRenderer | null = null;
+  /** Whether compare strips draw only the tiles that reach them (a diagnostic switches it off). */
+  stripCulling = true;
+  private compareCode?: typeof import('../compare/compareRenderer');
+  private compareLoad?: Promise<void>;
+  private disposed = false;
   readonly clearance = new EyeClearance();
   readonly underwater: UnderwaterStage;
   private readonly lights: SceneLights;
@@ -52,6 +60,8 @@ export class OceanView {
   private applied: OceanParams | null = null;
   private showHeightmaps = false;
   private heightmapView?: HeightmapView;
+  private heightmapCode?: typeof import('../teaching/heightmapView');
+  private heightmapLoad?: Promise<void>;
   private probe?: SurfaceProbe;
   private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, farCellsVisible: 0, lodCounts: [], underwater: false, submersion: 'above', composerPasses: 0 };
 
@@ -60,7 +70,7 @@ export class OceanView {
    * asks the app for a frame once a part loaded on first use (the underwater passes) has
    * arrived; `partFailed` says that part could not be fetched.
    */
-  constructor(canvas: HTMLCanvasElement, customSky: CubeTexture | null, params: OceanParams, redraw: () => void = () => undefined, partFailed: () => void = () => undefined) {
+  constructor(canvas: HTMLCanvasElement, customSky: CubeTexture | null, params: OceanParams, private readonly redraw: () => void = () => undefined, partFailed: () => void = () => undefined) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
@@ -73,7 +83,6 @@ export class OceanView {
     this.scene.add(this.ocean.sky, this.ocean);
     this.lights = new SceneLights(this.scene);
     this.kelvinGuide = new KelvinGuideView(this.scene);
-    this.compare = new CompareRenderer(this.renderer, this.scene, this.ocean);
     this.underwater = new UnderwaterStage(this.renderer, this.scene, this.camera, this.ocean, redraw, partFailed);
     this.applyParams(params);
   }
@@ -102,10 +111,21 @@ export class OceanView {
     this.applied = { ...params };
     this.params = params;
     if (!first) this.ocean.apply(params);
-    this.compare.apply(params);
-    if (changed(...LOOK_KEYS)) this.compare.applyLook(params);
+    this.ensureCompare(params);
+    this.compare?.apply(params);
+    if (changed(...LOOK_KEYS)) this.compare?.applyLook(params);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor')) this.lights.update(sunDirection(params.sunElevation, params.sunAzimuth), params.waterColor);
     if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
+    // The heightmap view's code is fetched the first time it is shown; until then the frame is clear.
+    if (this.showHeightmaps) {
+      this.heightmapLoad ??= import('../teaching/heightmapView').then(
+        (code) => {
+          this.heightmapCode = code;
+          if (!this.disposed) this.redraw();
+        },
+        (error: unknown) => console.warn('Oceano: the heightmap view\'s code could not be loaded.', error),
+      );
+    }
   }
 
   /** The boat's wake for the coming frame, its culling bound, and the ±19.47° teaching guide at the boat. */
@@ -122,13 +142,13 @@ export class OceanView {
   /** After a lost WebGL context comes back: paints again what lived only in render targets (the sun's sky). */
   contextRestored(): void {
     this.ocean.contextRestored();
-    this.compare.contextRestored();
+    this.compare?.contextRestored();
   }
 
   /** Shows a page's own cube map from now on (the sun then moves only the lighting). */
   setSky(sky: CubeTexture): void {
     this.ocean.setSky(sky);
-    this.compare.setSky(sky);
+    this.compare?.setSky(sky);
     if (this.customSky !== sky) this.customSky?.dispose();
     this.customSky = sky;
   }
@@ -151,19 +171,41 @@ export class OceanView {
   update(time: number): void {
     const { ocean, camera } = this;
     ocean.advance(time);
-    this.compare.advance(time);
+    this.compare?.advance(time);
     this.clearance.fitNear(camera, ocean.cullingBounds().vertical, () => ocean.surfaceUnder(camera.position.x, camera.position.z, time));
     const place = ocean.locateEye(camera, time);
     this.clearance.fitFar(camera, place.submersion, this.params.fogDensity);
     const strips = this.splitStrips();
-    if (strips) this.compare.cull(strips, camera);
+    if (strips && this.compare) this.compare.cull(strips, camera);
     else ocean.cull(camera);
     ocean.shade(camera);
   }
 
-  /** Settles once the underwater passes have loaded, when a frame has needed them; at once otherwise. */
+  /** Settles once every part asked for so far (the underwater passes, the compare code, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return this.underwater.whenLoaded();
+    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad]).then(() => undefined);
+  }
+
+  /**
+   * Makes the compare renderer once a comparison is asked for, fetching its code the first
+   * time; until it has arrived the first model is drawn whole, and `redraw` is called then.
+   */
+  private ensureCompare(params: OceanParams): void {
+    if (this.compare || compareModelNames(params.compare).length < 2) return;
+    if (this.compareCode) {
+      this.compare = new this.compareCode.CompareRenderer(this.renderer, this.scene, this.ocean);
+      return;
+    }
+    this.compareLoad ??= import('../compare/compareRenderer').then(
+      (code) => {
+        this.compareCode = code;
+        if (this.disposed) return;
+        this.ensureCompare(this.params);
+        this.compare?.apply(this.params);
+        this.redraw();
+      },
+      (error: unknown) => console.warn('Oceano: the compare view\'s code could not be loaded; the first model is drawn alone.', error),
+    );
   }
 
   /** Submits the frame prepared by update(): directly above water, through the underwater passes below it. */
@@ -174,7 +216,7 @@ export class OceanView {
     const strips = this.splitStrips();
     if (this.showHeightmaps || submersion === 'above' || this.underwater.failed) this.underwater.resetEncoding();
     if (this.showHeightmaps) this.drawHeightmaps();
-    else if (strips) this.compare.draw(strips, this.camera);
+    else if (strips && this.compare) this.compare.draw(strips, this.camera);
     else if (submersion === 'above' || this.underwater.failed) this.renderer.render(this.scene, this.camera);
     else composerPasses = this.underwater.passes()?.render() ?? 0;
     const info = this.renderer.info.render;
@@ -184,19 +226,20 @@ export class OceanView {
   }
 
   /** The strips of a split frame (compare= above the water, not the heightmap view); null for a whole frame. */
-  splitStrips(): ReturnType<CompareRenderer['strips']> {
+  splitStrips(): Strip[] | null {
     if (this.showHeightmaps || this.ocean.submersion !== 'above') return null;
-    return this.compare.strips(this.params);
+    if (this.compare) this.compare.stripCulling = this.stripCulling;
+    return this.compare?.strips(this.params) ?? null;
   }
 
   /** The active model's heightmaps; a model without any shows a clear screen. */
   private drawHeightmaps(): void {
     const view = this.ocean.waveModelView;
-    if (!view.heightmapTextures) {
+    if (!view.heightmapTextures || !this.heightmapCode) {
       this.renderer.clear();
       return;
     }
-    this.heightmapView ??= new HeightmapView();
+    this.heightmapView ??= new this.heightmapCode.HeightmapView();
     this.heightmapView.render(this.renderer, view.heightmapTextures, this.camera.aspect, view.heightmapLayout);
   }
 
@@ -225,7 +268,8 @@ export class OceanView {
 
   dispose(): void {
     this.ocean.dispose();
-    this.compare.dispose();
+    this.disposed = true;
+    this.compare?.dispose();
     this.probe?.dispose();
     this.heightmapView?.dispose();
     this.underwater.dispose();

@@ -2,13 +2,12 @@ import tiledHeightmap from '../../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../../shaders/waterVolume.glsl?raw';
 import caustics from '../../../shaders/caustics.glsl?raw';
 import waterline from '../../../shaders/waterline.glsl?raw';
-import lineOfSight from '../../../shaders/lineOfSight.glsl?raw';
 import wake from '../../../shaders/wake.glsl?raw';
 import iwave from '../../../shaders/iwave.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
-import { SCENE_DECODE_CHUNK, SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
+import { SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
 
 /**
  * Oceano's shared GLSL pieces. A shader that needs one writes `#include <oceano_…>`, and
@@ -29,20 +28,22 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_caustics: caustics,
   // Needs <oceano_waves> included before it: the underwater passes' waterline test.
   oceano_waterline: waterline,
-  // A full-screen pass's line of sight from the eye and the depth buffer (needs <packing> first).
-  oceano_line_of_sight: lineOfSight,
   // The boat's Kelvin wake and its foam, added to whichever wave model is active.
   oceano_wake: wake,
   // The interactive waves' height field (iWave), added to whichever wave model is active.
   oceano_iwave: iwave,
-  // The underwater passes' scene target: written after three's colour-space chunk, read back by the passes.
+  // The underwater passes' scene target, written after three's colour-space chunk (read back by
+  // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,
-  oceano_scene_decode: SCENE_DECODE_CHUNK,
 };
 
 const INCLUDE = /^[ \t]*#include +<(oceano_[a-z_]+)>/gm;
 
-/** The source with every `#include <oceano_…>` replaced by its text, recursively; an unknown name throws, naming it. */
+/**
+ * The source with every `#include <oceano_…>` replaced by its text, recursively: `extra`'s
+ * chunks first (a model's waves, a pass's own pieces), then the shared ones above. An unknown
+ * name throws, naming it.
+ */
 export function resolveChunks(source: string, extra: Readonly<Record<string, string>> = {}): string {
   return source.replace(INCLUDE, (_line, name: string) => {
     const text = extra[name] ?? CHUNKS[name];

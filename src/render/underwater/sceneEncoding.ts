@@ -1,6 +1,5 @@
 import type { Material, Object3D } from 'three';
 import sceneEncode from '../../../shaders/sceneEncode.glsl?raw';
-import sceneDecode from '../../../shaders/sceneDecode.glsl?raw';
 import { glslFloat } from '../shaders/shaderConstants';
 import { setMaterialDefine } from '../shaders/materialDefines';
 
@@ -23,7 +22,7 @@ const OCEANO_MATERIAL = 'oceanoMaterial';
 /** Materials of others already patched to write the encoding. */
 const patched = new WeakSet<Material>();
 /** Macros, not constants: the encoding runs inside main(), after whatever the shader declared. */
-const CONSTANTS = [
+export const SCENE_CONSTANTS = [
   '#ifndef SCENE_LOW_SHARE',
   `#define SCENE_LOW_SHARE ${glslFloat(SCENE_LOW_CODES / 255)}`,
   `#define SCENE_BRIGHTEST ${glslFloat(SCENE_BRIGHTEST)}`,
@@ -35,10 +34,8 @@ const CONSTANTS = [
  * at the end of each of Oceano's own shaders (shaders/sceneEncode.glsl): compiled in where
  * SCENE_ENCODE_DEFINE is defined on the material.
  */
-export const SCENE_ENCODE_CHUNK = `${CONSTANTS}${sceneEncode}`;
+export const SCENE_ENCODE_CHUNK = `${SCENE_CONSTANTS}${sceneEncode}`;
 
-/** `#include <oceano_scene_decode>`: the passes that read the target (shaders/sceneDecode.glsl). */
-export const SCENE_DECODE_CHUNK = `${CONSTANTS}${sceneDecode}`;
 
 /** Marks a material as Oceano's own: its shaders end with `#include <oceano_scene_encode>`. */
 export function markOceanoMaterial<M extends Material>(material: M): M {

@@ -28,6 +28,7 @@ import compositeFragment from '../../../shaders/underwaterComposite.frag?raw';
 import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel, onePassBlurOffset } from './gaussianKernel';
 import { planShaftLightTile, type ShaftLightTile } from './shaftLightTile';
 import { resolveChunks } from '../shaders/shaderChunks';
+import { withPassChunks } from './passChunks';
 import { encodeSceneForPost, SCENE_ENCODE_DEFINE, SCENE_LINEAR_DEFINE } from './sceneEncoding';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import type { WaveBinding } from '../waves/waveBinding';
@@ -208,7 +209,7 @@ export class UnderwaterPost {
         name: 'UnderwaterGodRays',
         defines: encoded ? { [SCENE_ENCODE_DEFINE]: '' } : {},
         vertexShader: fullscreenVertex,
-        fragmentShader: resolveChunks(godRaysFragment),
+        fragmentShader: resolveChunks(withPassChunks(godRaysFragment)),
         uniforms: { ...shared, ...view, ...tile, tShaftLight: { value: this.shaftTarget.texture }, uGodRays: { value: 0 } },
       }),
       (readBuffer) => {
@@ -221,7 +222,7 @@ export class UnderwaterPost {
         name: 'UnderwaterVolume',
         defines: { ...decode },
         vertexShader: fullscreenVertex,
-        fragmentShader: underwaterFragment,
+        fragmentShader: withPassChunks(underwaterFragment),
         uniforms: { ...shared, ...view, tDiffuse: { value: null }, tGodRays: { value: this.rays.texture }, uWriteMask: { value: false } },
       })),
       (readBuffer) => {
@@ -245,7 +246,7 @@ export class UnderwaterPost {
         name: 'UnderwaterComposite',
         defines: { ...decode },
         vertexShader: fullscreenVertex,
-        fragmentShader: compositeFragment,
+        fragmentShader: withPassChunks(compositeFragment),
         uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.blurred.texture } },
       })),
       (readBuffer) => {
