@@ -99,7 +99,11 @@ describe('teaching views of the seed figures', () => {
   it('draws the Fresnel plot only when asked', async () => {
     const { page } = await openOcean(harness, 't=10');
     expect(await page.$('.oceano-fresnel-plot')).toBeNull();
-    await page.evaluate(() => window.oceano.setParams({ fresnelPlot: true }));
+    // The plot's code is fetched the first time it is asked for.
+    await page.evaluate(async () => {
+      window.oceano.setParams({ fresnelPlot: true });
+      await window.oceano.loaded();
+    });
     expect(await page.$eval('.oceano-fresnel-plot', (el) => (el as HTMLElement).offsetParent === null)).toBe(false);
     const withFresnel = await canvasPng(page);
     await page.evaluate(() => window.oceano.setParams({ fresnel: false }));

@@ -48,7 +48,7 @@ export class Ocean extends Object3D {
   /** The sky the sea reflects, drawn behind everything: add it to your scene if you want it as the background. */
   readonly sky: Object3D;
   /** Resolves once the code of every wave model the parameters ask for has arrived; the ocean is hidden until then. */
-  ready: Promise<void>;
+  ready: Promise<void> = Promise.resolve();
   readonly fresnelData = fresnelTable(256);
   readonly fresnelFromBelowData = fresnelTableFromBelow(256);
   readonly chunks: OceanChunks;
@@ -115,7 +115,7 @@ export class Ocean extends Object3D {
     this.visible = available === first;
     // Until the first model's code arrives, the stand-in's parameters are the ones in force.
     this.apply(this.visible ? full : { ...full, waves: available, compare: COMPARE_OFF });
-    this.ready = this.visible ? Promise.resolve() : this.loadModels(full);
+    if (!this.visible) this.ready = Promise.all([this.ready, this.loadModels(full)]).then(() => undefined);
   }
 
   /** The CPU twin of the waves drawn: sample it for heights and normals at any time. */
