@@ -85,7 +85,7 @@ export interface LiveWaveModel extends WaveModel {
   readonly surfaceRevision: number;
   /**
    * Where the model times its CPU twin's work on the calling thread: the ms spent since the
-   * last call, counting afresh (FftWaveModel, whose twin has a ≤ 0.1 ms per frame budget).
+   * last call, counting afresh (FftWaveModel, whose twin must stay cheap on the main thread).
    */
   takeMainThreadMs?(): number;
   /** Where the model's CPU twin gets its data from a Worker: how much has arrived, and of which time (FftWaveModel). */
