@@ -1,7 +1,6 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { fixtureBundle } from './fixtureBundle';
 import puppeteer, { type Browser, type Page } from 'puppeteer';
-import { build } from 'vite';
-import { join } from 'node:path';
 import { BROWSER_ARGS, findBrowser } from './harness';
 import type { InteractiveWavesApi } from './fixtures/interactiveWaves';
 
@@ -14,14 +13,7 @@ let browser: Browser;
 let page: Page;
 
 beforeAll(async () => {
-  const output = await build({
-    configFile: false,
-    logLevel: 'warn',
-    build: { write: false, minify: false, target: 'es2022', lib: { entry: join(import.meta.dirname, 'fixtures/interactiveWaves.ts'), formats: ['es'], fileName: 'interactiveWaves' }, rollupOptions: { output: { inlineDynamicImports: true } } },
-  });
-  const bundles = Array.isArray(output) ? output : [output];
-  const chunk = bundles.flatMap((b) => ('output' in b ? b.output : [])).find((o) => o.type === 'chunk');
-  if (!chunk || chunk.type !== 'chunk') throw new Error('No bundle for the interactive waves page.');
+  const code = await fixtureBundle('interactiveWaves', true);
   browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true });
   page = await browser.newPage();
   const errors: string[] = [];
@@ -30,7 +22,7 @@ beforeAll(async () => {
     if (m.type() === 'error') errors.push(m.text());
   });
   await page.setContent('<!doctype html><html><body></body></html>');
-  await page.addScriptTag({ content: chunk.code, type: 'module' });
+  await page.addScriptTag({ content: code, type: 'module' });
   await page.waitForFunction(() => 'interactiveWaves' in window, { timeout: 60_000 }).catch((e: unknown) => errors.push(String(e)));
   expect(errors).toEqual([]);
 }, 300_000);

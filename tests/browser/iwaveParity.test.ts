@@ -1,7 +1,6 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { fixtureBundle } from './fixtureBundle';
 import puppeteer, { type Browser, type Page } from 'puppeteer';
-import { build } from 'vite';
-import { join } from 'node:path';
 import { BROWSER_ARGS, findBrowser } from './harness';
 import { playOnCpu, type IWaveScript } from './iwaveScript';
 import type { IWaveParityApi } from './fixtures/iwaveParity';
@@ -15,14 +14,7 @@ let browser: Browser;
 let page: Page;
 
 beforeAll(async () => {
-  const output = await build({
-    configFile: false,
-    logLevel: 'warn',
-    build: { write: false, minify: false, target: 'es2022', lib: { entry: join(import.meta.dirname, 'fixtures/iwaveParity.ts'), formats: ['es'], fileName: 'iwaveParity' } },
-  });
-  const bundles = Array.isArray(output) ? output : [output];
-  const chunk = bundles.flatMap((b) => ('output' in b ? b.output : [])).find((o) => o.type === 'chunk');
-  if (!chunk || chunk.type !== 'chunk') throw new Error('No bundle for the iWave parity page.');
+  const code = await fixtureBundle('iwaveParity');
   browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true });
   page = await browser.newPage();
   const errors: string[] = [];
@@ -31,7 +23,7 @@ beforeAll(async () => {
     if (m.type() === 'error') errors.push(m.text());
   });
   await page.setContent('<!doctype html><html><body></body></html>');
-  await page.addScriptTag({ content: chunk.code, type: 'module' });
+  await page.addScriptTag({ content: code, type: 'module' });
   await page.waitForFunction(() => 'iwaveParity' in window, { timeout: 60_000 });
   expect(errors).toEqual([]);
 }, 300_000);
