@@ -131,7 +131,7 @@ export class OceanApp {
     this.options.onFirstFrame?.();
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
-    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.controls.whenPartsLoaded(), this.lessons.load()]);
+    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.controls.whenPartsLoaded(), this.lessons.load(), this.orbit.loaded]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
