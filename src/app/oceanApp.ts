@@ -23,6 +23,8 @@ import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waves/wave
 import { COMPARE_OFF } from '../sim/compare/compareLayout';
 import { findLesson, lessonIds, lessonView } from './lessons/lessonCatalog';
 import { LessonHost } from './lessons/lessonHost';
+import { FREE_AREA_EVENT } from './layout/freeAreaEvent';
+import type { Rect } from '../sim/layout/rect';
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -92,6 +94,7 @@ export class OceanApp {
     this.view = new OceanView(this.canvas, sky, this.params, this.loop.requestRender, () => this.notify(message('underwaterLoadFailed')));
     performance.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
+    this.container.addEventListener(FREE_AREA_EVENT, this.onFreeArea);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
       this.orbit.setPose(state.cullingCamera);
@@ -118,7 +121,7 @@ export class OceanApp {
       openLesson: (id) => this.openLesson(id),
       onParam: (key, value) => this.setParams({ [key]: value }),
       openFolders: (keys) => this.controls?.openFoldersOf(keys),
-      scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, boat: this.boatMotion.info() }),
+      scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, time: this.clock.time, boat: this.boatMotion.info(), hull: this.boatMotion.hull, height: (x, z) => this.view.waves.height(x, z, this.clock.time) }),
     });
     if (state.lesson) this.lessons.current = state.lesson;
     performance.mark('oceano:controls');
@@ -202,6 +205,12 @@ export class OceanApp {
   setSuspended = (reason: SuspendReason, suspended: boolean): void => this.loop.setStopped(reason, suspended);
   isStarted = (): boolean => this.started && !this.disposed;
   activity = (): LoopActivity => ({ looping: this.loop.isLooping, framesDrawn: this.frameStats.framesDrawn });
+
+  /** The panels moved or resized (src/app/layout/freeArea.ts): the compare strips and teaching views are laid out again. */
+  private readonly onFreeArea = (event: Event): void => {
+    this.view.setFreeArea((event as CustomEvent<Rect>).detail);
+    this.loop.requestRender();
+  };
 
   /** Resizing clears the canvas, so a paused view draws again. */
   private resize(): void {
@@ -324,6 +333,7 @@ export class OceanApp {
     this.disposed = true;
     this.loop.dispose();
     this.resizeObserver?.disconnect();
+    this.container.removeEventListener(FREE_AREA_EVENT, this.onFreeArea);
     this.context?.dispose();
     this.controls?.dispose();
     this.lessons?.dispose();

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { forwardOf, poseAxes, starboardOf, targetPose, type HullSize } from '../../src/sim/boat/boatPose';
+import { forwardOf, hullSamplePoints, poseAxes, starboardOf, targetPose, type HullSize } from '../../src/sim/boat/boatPose';
 import { followStep, type FollowerState } from '../../src/sim/boat/dampedFollower';
 import { ANGLE_BAND, BOAT_EXTENT, BoatMotion, HEAVE_BAND } from '../../src/sim/boat/boatMotion';
 import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
@@ -14,6 +14,21 @@ const HULL: HullSize = { length: 8, beam: 2.6 };
 const dot = (a: number[], b: number[]) => a.reduce((s, v, i) => s + v * b[i], 0);
 
 describe('targetPose', () => {
+  it('samples the surface at exactly the five hull points the lessons draw, half a length and half a beam from the centre', () => {
+    const heading = 0.7;
+    const asked: [number, number][] = [];
+    targetPose((x, z) => (asked.push([x, z]), 0), 12, -40, heading, HULL);
+    const points = hullSamplePoints(12, -40, heading, HULL);
+    expect(asked).toEqual([points.centre, points.bow, points.stern, points.starboard, points.port]);
+    const distance = (p: [number, number]) => Math.hypot(p[0] - 12, p[1] + 40);
+    expect(distance(points.bow)).toBeCloseTo(4, 12);
+    expect(distance(points.port)).toBeCloseTo(1.3, 12);
+    // The bow lies ahead: along forwardOf(heading), not astern (control: the stern is behind).
+    expect(dot([points.bow[0] - 12, points.bow[1] + 40], forwardOf(heading))).toBeCloseTo(4, 12);
+    expect(dot([points.stern[0] - 12, points.stern[1] + 40], forwardOf(heading))).toBeCloseTo(-4, 12);
+    expect(dot([points.starboard[0] - 12, points.starboard[1] + 40], starboardOf(heading))).toBeCloseTo(1.3, 12);
+  });
+
   it('lies level at the water height on a flat sea, whatever the heading', () => {
     for (const heading of [0, 0.7, Math.PI, -2.1]) {
       const pose = targetPose(() => 0.35, 12, -40, heading, HULL);

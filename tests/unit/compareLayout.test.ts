@@ -59,6 +59,15 @@ describe('compare: the strips each model draws', () => {
     expect(compareStrips(2, 0.4, 0.75, 320)).toEqual([{ x0: 0, x1: 128 }, { x0: 128, x1: 320 }]);
   });
 
+  it('puts the dividers in the free columns [from, to) while the outer strips still reach the edges', () => {
+    // A 1366-px view whose lessons drawer ends at 284 and panel begins at 1109.
+    const strips = compareStrips(3, 1 / 3, 2 / 3, 1366, 284, 1109);
+    expect(strips).toEqual([{ x0: 0, x1: 559 }, { x0: 559, x1: 834 }, { x0: 834, x1: 1366 }]);
+    for (const edge of [strips[0].x1, strips[1].x1]) expect(edge > 284 && edge < 1109).toBe(true);
+    // Control: laid over the whole width, the third model's divider falls under the panel.
+    expect(compareStrips(3, 1 / 3, 0.85, 1366)[1].x1).toBeGreaterThan(1109);
+  });
+
   it('keeps the second divider right of the first; ignores it with two models', () => {
     expect(dividerPositions(3, 0.9, 0.2)).toEqual([0.9, 0.9]);
     expect(dividerPositions(3, 0.3, 0.65)).toEqual([0.3, 0.65]);

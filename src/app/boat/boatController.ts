@@ -35,7 +35,8 @@ export interface BoatInfo {
 export class BoatController {
   private readonly motion = new BoatMotion();
   private state?: BoatMotionState;
-  private hull: HullSize = NOMINAL_HULL;
+  /** The hull the boat is floated with: the model's size once it has loaded. */
+  hull: HullSize = NOMINAL_HULL;
   private modelState: BoatInfo['model'] = 'loading';
   /** The wake the boat leaves, recorded every frame (src/sim/wake/boatWake.ts). */
   private readonly wake = new BoatWake();

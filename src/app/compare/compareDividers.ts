@@ -1,6 +1,7 @@
 import { COMPARE_OFF, compareModelNames, dividerPositions } from '../../sim/compare/compareLayout';
 import type { OceanParams } from '../../sim/params/params';
 import type { Translator } from '../language/i18n';
+import { FREE_AREA_EVENT } from '../layout/freeAreaEvent';
 
 export type SplitKey = 'compareSplit' | 'compareSplit2';
 const SPLIT_KEYS: readonly SplitKey[] = ['compareSplit', 'compareSplit2'];
@@ -15,7 +16,9 @@ const onStep = (f: number) => Math.round(f * 1000) / 1000;
  * compare=a,b[,c]: the dividers between the models, as HTML over the canvas (never drawn
  * into it, so every canvas pixel stays the models' own). Each is a focusable ARIA separator
  * whose value is its position in percent; dragging it or pressing the arrow keys sets
- * compareSplit / compareSplit2 through the app, as the GUI and the API do.
+ * compareSplit / compareSplit2 through the app, as the GUI and the API do. The overlay
+ * covers the part of the canvas the panels leave free (widgets.css), so the dividers and
+ * the models' names stay in sight; a name that would cross the overlay's edge slides back in.
  */
 export class CompareDividers {
   private readonly overlay: HTMLElement;
@@ -25,7 +28,7 @@ export class CompareDividers {
   private shown: number[] = [];
 
   constructor(
-    container: HTMLElement,
+    private readonly container: HTMLElement,
     private readonly tr: Translator,
     private readonly setSplit: (key: SplitKey, value: number) => void,
   ) {
@@ -33,6 +36,7 @@ export class CompareDividers {
     this.overlay.className = 'oceano-compare';
     this.overlay.hidden = true;
     container.appendChild(this.overlay);
+    container.addEventListener(FREE_AREA_EVENT, this.keepLabelsInside);
   }
 
   sync(params: OceanParams): void {
@@ -46,7 +50,19 @@ export class CompareDividers {
       divider.setAttribute('aria-valuenow', String(percent));
       divider.setAttribute('aria-valuetext', `${names[i]} | ${names[i + 1]}: ${percent} %`);
     });
+    this.keepLabelsInside();
   }
+
+  /** Slides each model's name back inside the overlay where its divider stands near an edge. */
+  private readonly keepLabelsInside = (): void => {
+    const bounds = this.overlay.getBoundingClientRect();
+    for (const label of this.overlay.querySelectorAll<HTMLElement>('.oceano-compare-label')) {
+      label.style.translate = '';
+      const r = label.getBoundingClientRect();
+      const shift = r.left < bounds.left ? bounds.left - r.left : r.right > bounds.right ? bounds.right - r.right : 0;
+      if (shift !== 0) label.style.translate = `${shift}px 0`;
+    }
+  };
 
   private build(compare: string): void {
     for (const divider of this.dividers) divider.remove();
@@ -105,6 +121,7 @@ export class CompareDividers {
   }
 
   dispose(): void {
+    this.container.removeEventListener(FREE_AREA_EVENT, this.keepLabelsInside);
     this.overlay.remove();
   }
 }

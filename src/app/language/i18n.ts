@@ -1,4 +1,4 @@
-import { paramDefs, type OceanParams, type ParamKey } from '../../sim/params/params';
+import type { OceanParams } from '../../sim/params/params';
 import type { Message, MessageId, MessageValues } from '../../sim/params/message';
 
 export const LANGUAGES = ['en', 'es'] as const;
@@ -107,7 +107,7 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
 /** Words of the interface that are not parameters or notices. */
 export type UiTextId =
   | 'canvasLabel'
-  | 'canvasLabelHeightmap'
+  | 'canvasLabelFigure'
   | 'canvasLabelNormals'
   | 'panelTitle'
   | 'folderSwell'
@@ -149,7 +149,7 @@ export type UiTextId =
 const UI: Record<Language, Record<UiTextId, string>> = {
   en: {
     canvasLabel: 'Animated 3D ocean under a sky',
-    canvasLabelHeightmap: 'The two heightmaps of the ripples, shown as greyscale images of their values',
+    canvasLabelFigure: 'A teaching figure in place of the sea: the heightmaps, the steps of their Perlin noise, or the sky’s cube map unfolded',
     canvasLabelNormals: 'Animated 3D ocean coloured by its surface normals',
     panelTitle: 'Oceano',
     folderSwell: 'Swell',
@@ -190,7 +190,7 @@ const UI: Record<Language, Record<UiTextId, string>> = {
   },
   es: {
     canvasLabel: 'Océano 3D animado bajo un cielo',
-    canvasLabelHeightmap: 'Los dos mapas de alturas de las ondas, como imágenes en escala de grises de sus valores',
+    canvasLabelFigure: 'Una figura didáctica en lugar del mar: los mapas de alturas, los pasos de su ruido de Perlin o el cube map del cielo desplegado',
     canvasLabelNormals: 'Océano 3D animado coloreado según las normales de su superficie',
     panelTitle: 'Oceano',
     folderSwell: 'Oleaje',
@@ -231,72 +231,10 @@ const UI: Record<Language, Record<UiTextId, string>> = {
   },
 };
 
-/**
- * Spanish labels of the parameters; English ones live next to each definition in
- * params.ts. Typed as a full record, so a parameter without one does not compile.
- */
-export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
-  waves: 'Modelo de olas',
-  compare: 'Comparar modelos lado a lado',
-  compareSplit: 'Comparar: primer divisor',
-  compareSplit2: 'Comparar: segundo divisor',
-  windSpeed: 'Velocidad del viento U10',
-  windDirection: 'Dirección del viento',
-  spectrum: 'Espectro de oleaje',
-  fetch: 'Fetch (JONSWAP)',
-  depth: 'Profundidad (dispersión)',
-  spreading: 'Dispersión direccional s (cos-2s)',
-  spreadingModel: 'Modelo de dispersión direccional',
-  choppiness: 'Crestas afiladas λ',
-  fftSize: 'Tamaño de la FFT',
-  foam: 'Espuma',
-  foamThreshold: 'Sesgo del umbral de espuma (jacobiano)',
-  normalsCompare: 'Comparar normales de pendiente | fabricadas',
-  seed: 'Semilla del ruido',
-  swellAmplitude: 'Amplitud del oleaje',
-  swellFrequency: 'Frecuencia del oleaje',
-  rippleStrength: 'Intensidad de las ondas',
-  rippleBlendSpeed: 'Velocidad de mezcla de las ondas',
-  sunElevation: 'Elevación del sol',
-  sunAzimuth: 'Acimut del sol',
-  waterColor: 'Color del agua profunda',
-  fresnel: 'Fresnel',
-  wireframe: 'Malla de alambre',
-  shading: 'Sombreado',
-  normals: 'Normales',
-  view: 'Vista',
-  fresnelPlot: 'Gráfico de Fresnel',
-  timeScale: 'Velocidad (escala de tiempo)',
-  physics: 'Panel de física',
-  boatSpeed: 'Velocidad del barco',
-  boatHeading: 'Rumbo del barco',
-  boatResponse: 'Tiempo de respuesta de flotación',
-  boatFollow: 'La cámara sigue al barco',
-  boatTurnRate: 'Velocidad de giro del barco',
-  wake: 'Estela de Kelvin',
-  wakeStrength: 'Intensidad de la estela',
-  wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
-  interactiveWaves: 'Olas interactivas (iWave)',
-  lodDistance: 'Distancia de LOD L',
-  lodBands: 'Bandas de LOD',
-  lodColors: 'Colorear parcelas por banda',
-  lodMorph: 'Geomorfismo (transición suave entre bandas)',
-  freezeCulling: 'Congelar el recorte',
-  lodBruteForce: 'Fuerza bruta (malla completa, sin recorte)',
-  blurStrength: 'Desenfoque bajo el agua (σ)',
-  fogDensity: 'Densidad de la niebla del agua',
-  seaBedDepth: 'Profundidad del fondo',
-  caustics: 'Cáusticas',
-  causticsIntensity: 'Intensidad de las cáusticas',
-  godRays: 'Rayos de luz',
-  godRaysIntensity: 'Intensidad de los rayos de luz',
-  gerstnerCount: 'Ondas de Gerstner',
-  gerstnerSteepness: 'Pendiente de Gerstner Q',
-};
 
 /** What the canvas shows, for its aria-label: it follows the teaching view. */
 export function canvasLabel(tr: Translator, params: Pick<OceanParams, 'view' | 'shading'>): string {
-  if (params.view === 'heightmap') return tr.ui('canvasLabelHeightmap');
+  if (params.view !== 'ocean') return tr.ui('canvasLabelFigure');
   return tr.ui(params.shading === 'normals' ? 'canvasLabelNormals' : 'canvasLabel');
 }
 
@@ -310,9 +248,5 @@ export class Translator {
 
   ui(id: UiTextId): string {
     return UI[this.language][id];
-  }
-
-  paramLabel(key: ParamKey): string {
-    return this.language === 'es' ? SPANISH_PARAM_LABELS[key] : paramDefs[key].label;
   }
 }

@@ -19,6 +19,30 @@ export type TeachingWordId =
   | 'lodBandLegend'
   | 'kelvinAngleLabel'
   | 'snellWindowLabel'
+  | 'hullPointsLegend'
+  | 'hull_centre'
+  | 'hull_bow'
+  | 'hull_stern'
+  | 'hull_port'
+  | 'hull_starboard'
+  | 'picture_heightmap0'
+  | 'picture_heightmap1'
+  | 'picture_cascade0'
+  | 'picture_cascade1'
+  | 'picture_hash'
+  | 'picture_smoothed'
+  | 'picture_interpolated'
+  | 'picture_octaves'
+  | 'picture_first'
+  | 'picture_blend'
+  | 'picture_second'
+  | 'skyCubeCaption'
+  | 'face_px'
+  | 'face_nx'
+  | 'face_py'
+  | 'face_ny'
+  | 'face_pz'
+  | 'face_nz'
   | 'unusedBySeed'
   | 'unusedBySpectral'
   | 'unusedByNonFft'
@@ -41,6 +65,30 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     lodBandLegend: 'Band {band}: from {from} m',
     kelvinAngleLabel: '19.47° (Kelvin)',
     snellWindowLabel: "48.6°: edge of Snell's window",
+    hullPointsLegend: 'The dots: the five points where the hull asks the CPU twin for the water’s height (centre, bow and stern, port and starboard).',
+    hull_centre: 'centre',
+    hull_bow: 'bow',
+    hull_stern: 'stern',
+    hull_port: 'port',
+    hull_starboard: 'starboard',
+    picture_heightmap0: 'Heightmap H₀, as the vertex shader samples it',
+    picture_heightmap1: 'Heightmap H₁, as the vertex shader samples it',
+    picture_cascade0: 'Largest FFT cascade: its height field',
+    picture_cascade1: 'Smallest FFT cascade: its height field',
+    picture_hash: '1 · Integer noise n(i, j) on a 16 × 16 lattice',
+    picture_smoothed: '2 · Smoothed with its 3 × 3 neighbours',
+    picture_interpolated: '3 · That lattice cosine-interpolated: one octave',
+    picture_octaves: '4 · Five octaves summed: heightmap H₀',
+    picture_first: 'Heightmap H₀',
+    picture_blend: '(1 − b) H₀ + b H₁, now b = {b}',
+    picture_second: 'Heightmap H₁',
+    skyCubeCaption: 'The sky’s cube map unfolded, seen from inside the cube',
+    face_px: '+x',
+    face_nx: '−x',
+    face_py: '+y (up)',
+    face_ny: '−y (down)',
+    face_pz: '+z (behind)',
+    face_nz: '−z (ahead)',
     unusedBySeed: 'not read by the seed waves (only by fft and gerstner)',
     unusedBySpectral: 'read only by the seed waves',
     unusedByNonFft: 'read only by the fft waves',
@@ -62,6 +110,30 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     lodBandLegend: 'Banda {band}: desde {from} m',
     kelvinAngleLabel: '19,47° (Kelvin)',
     snellWindowLabel: '48,6°: borde de la ventana de Snell',
+    hullPointsLegend: 'Los puntos: los cinco lugares donde el casco pide al gemelo en CPU la altura del agua (centro, proa y popa, babor y estribor).',
+    hull_centre: 'centro',
+    hull_bow: 'proa',
+    hull_stern: 'popa',
+    hull_port: 'babor',
+    hull_starboard: 'estribor',
+    picture_heightmap0: 'Mapa de alturas H₀, tal como lo lee el vertex shader',
+    picture_heightmap1: 'Mapa de alturas H₁, tal como lo lee el vertex shader',
+    picture_cascade0: 'Cascada FFT mayor: su campo de alturas',
+    picture_cascade1: 'Cascada FFT menor: su campo de alturas',
+    picture_hash: '1 · Ruido entero n(i, j) en una red de 16 × 16',
+    picture_smoothed: '2 · Suavizado con sus 3 × 3 vecinos',
+    picture_interpolated: '3 · Esa red interpolada con cosenos: una octava',
+    picture_octaves: '4 · Cinco octavas sumadas: mapa de alturas H₀',
+    picture_first: 'Mapa de alturas H₀',
+    picture_blend: '(1 − b) H₀ + b H₁, ahora b = {b}',
+    picture_second: 'Mapa de alturas H₁',
+    skyCubeCaption: 'El cube map del cielo desplegado, visto desde dentro del cubo',
+    face_px: '+x',
+    face_nx: '−x',
+    face_py: '+y (arriba)',
+    face_ny: '−y (abajo)',
+    face_pz: '+z (detrás)',
+    face_nz: '−z (de frente)',
     unusedBySeed: 'las olas semilla no lo leen (solo fft y gerstner)',
     unusedBySpectral: 'solo lo leen las olas semilla',
     unusedByNonFft: 'solo lo leen las olas fft',

@@ -20,18 +20,20 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'displaced-plane', preset: 'displaced-plane' },
   { id: 'swell', preset: 'swell-normal' },
   { id: 'swell-maximum', preset: 'swell-maximum' },
-  { id: 'perlin-hash', preset: 'perlin-heightmap' },
-  { id: 'perlin-smoothing', preset: 'perlin-heightmap' },
-  { id: 'perlin-octaves', preset: 'perlin-heightmap' },
+  // Each step of the noise beside the one it starts from (src/sim/teaching/teachingFigures.ts).
+  { id: 'perlin-hash', preset: 'perlin-heightmap', params: { view: 'noise-hash' } },
+  { id: 'perlin-smoothing', preset: 'perlin-heightmap', params: { view: 'noise-smoothing' } },
+  { id: 'perlin-octaves', preset: 'perlin-heightmap', params: { view: 'noise-octaves' } },
   {
     id: 'heightmap-blend',
-    params: { swellAmplitude: 0, rippleStrength: 1.2 },
+    params: { swellAmplitude: 0, rippleStrength: 1.2, view: 'noise-blend' },
     camera: { position: [0, 8, 30], target: [0, 0, -30] }
   },
   { id: 'normals-wrong', preset: 'normals-wrong' },
   { id: 'normals-right', preset: 'normals-right' },
   {
     id: 'sky-cube',
+    params: { view: 'sky-cube' },
     camera: { position: [0, 3, 40], target: [0, 40, -40] }
   },
   { id: 'reflection', preset: 'still-ocean' },
@@ -40,7 +42,8 @@ export const LESSONS: readonly Lesson[] = [
   {
     id: 'boat-twin',
     preset: 'boat-pitch',
-    camera: { position: [18, 6, 14], target: [0, 0, -4] }
+    // Looking at the boat, so its sample points stay in sight on a phone held upright too.
+    camera: { position: [18, 6, 14], target: [7, 0, -5] }
   },
   { id: 'boat-pitch', preset: 'boat-pitch' },
   { id: 'snell-window', preset: 'underwater' },

@@ -3,12 +3,15 @@ import { LESSON_QUOTES } from 'virtual:oceano-lesson-quotes';
 import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../../sim/params/params';
 import type { Translator } from '../language/i18n';
 import { teachingWord } from '../language/teachingWords';
+import { paramLabel } from '../language/paramLabels';
 import { unreadParams } from '../panel/modelScope';
 import { LESSONS, findLesson } from './lessonCatalog';
 import { LESSON_TITLES, SECTION_NAMES, outlined, type OutlinedLesson } from './lessonOutline';
 import type { LessonHooks } from './lessonHooks';
 import { LESSON_TEXTS } from './lessonTexts';
 import { LessonLegend } from './lessonLegend';
+import { FreeArea } from '../layout/freeArea';
+import { FigureCaptions } from './figureCaptions';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -52,6 +55,7 @@ export class LessonDrawer {
   private readonly lessonButtons = new Map<string, HTMLButtonElement>();
   private readonly controls = new Map<ParamKey, { field: HTMLInputElement | HTMLSelectElement; output: HTMLOutputElement | null; note: HTMLElement; row: HTMLElement }>();
   private readonly legend: LessonLegend;
+  private readonly captions: FigureCaptions;
   private current: OutlinedLesson | null = null;
   private params: OceanParams | null = null;
 
@@ -92,6 +96,8 @@ export class LessonDrawer {
     container.appendChild(this.root);
     container.classList.add(listed ? 'oceano-with-lessons' : 'oceano-with-lesson-card');
     this.legend = new LessonLegend(container, tr, hooks);
+    this.captions = new FigureCaptions(container, tr);
+    FreeArea.of(container).avoid(this.root);
     this.updatePosition();
     // Where the list would cover much of the sea (a phone, a small window), it starts folded
     // to its header; opening a lesson unfolds it.
@@ -226,7 +232,7 @@ export class LessonDrawer {
     const def: ParamDef = paramDefs[key];
     const row = element('label', 'oceano-lesson-control');
     const unit = 'unit' in def && def.unit ? ` (${def.unit})` : '';
-    row.append(element('span', 'oceano-lesson-control-name', `${this.tr.paramLabel(key)}${unit}`));
+    row.append(element('span', 'oceano-lesson-control-name', `${paramLabel(this.tr, key)}${unit}`));
     let field: HTMLInputElement | HTMLSelectElement;
     let output: HTMLOutputElement | null = null;
     const emit = (value: OceanParams[ParamKey]) => this.hooks.onParam(key, value);
@@ -283,13 +289,19 @@ export class LessonDrawer {
     this.legend.sync(params);
   }
 
+  /** After each frame: the labels on the sea, and the captions of a teaching view (view=noise-hash …). */
   placeLabels(): void {
     this.legend.place();
+    if (!this.params || this.params.view === 'ocean') return this.captions.clear();
+    const { canvas, time } = this.hooks.scene();
+    this.captions.place(this.params, FreeArea.of(this.container).rect ?? { x: 0, y: 0, width: canvas.clientWidth, height: canvas.clientHeight }, canvas, time);
   }
 
   dispose(): void {
     this.root.removeEventListener('keydown', this.onKeyDown);
     this.legend.dispose();
+    this.captions.clear();
+    FreeArea.of(this.container).release(this.root);
     this.root.remove();
     this.container.classList.remove('oceano-with-lessons', 'oceano-with-lesson-card');
   }

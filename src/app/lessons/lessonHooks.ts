@@ -2,6 +2,7 @@ import type { OceanParams, ParamKey } from '../../sim/params/params';
 import type { Camera } from 'three';
 import type { CameraPose } from '../camera/cameraPose';
 import type { BoatInfo } from '../boat/boatController';
+import type { HullSize } from '../../sim/boat/boatPose';
 
 /** What the drawer asks of the app: open a lesson, change a parameter, place its labels on the sea. */
 export interface LessonHooks {
@@ -9,6 +10,10 @@ export interface LessonHooks {
   onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
   /** Opens the control panel's folders that hold `keys` (the lesson's controls) and folds the rest. */
   openFolders(keys: readonly ParamKey[]): void;
-  /** What the labels on the sea are placed from: the camera (three's, and its pose), the canvas, the boat's pose. */
-  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; boat: BoatInfo };
+  /**
+   * What the labels on the sea are placed from: the camera (three's, and its pose), the
+   * canvas, the clock's time, the boat's pose and hull, and the height of the waves the
+   * boat floats on at a point now.
+   */
+  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; time: number; boat: BoatInfo; hull: HullSize; height(x: number, z: number): number };
 }

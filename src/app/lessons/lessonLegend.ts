@@ -3,13 +3,18 @@ import type { OceanParams } from '../../sim/params/params';
 import { bandStart, LOD_BAND_COLORS } from '../../sim/lod/lodBands';
 import { kelvinGuideLines } from '../../sim/wake/kelvinGuide';
 import { snellWindowHalfAngle } from '../../sim/underwater/snellWindow';
+import { hullSamplePoints, type HullPointName } from '../../sim/boat/boatPose';
+import type { Rect } from '../../sim/layout/rect';
 import type { Translator } from '../language/i18n';
 import { teachingWord } from '../language/teachingWords';
 import type { OutlinedLesson as Lesson } from './lessonOutline';
 import type { LessonHooks } from './lessonHooks';
+import { FreeArea } from '../layout/freeArea';
 
 /** How far along the wake guide (metres from the boat; the guide is 150 m long) its angle is written. */
 const KELVIN_LABEL_DISTANCE = 45;
+/** The hull's sample points, in the order the labels are made. */
+const HULL_POINTS: readonly HullPointName[] = ['centre', 'bow', 'stern', 'port', 'starboard'];
 
 /** A linear RGB channel as the sRGB the page's CSS speaks. */
 function srgb(linear: number): number {
@@ -19,9 +24,11 @@ function srgb(linear: number): number {
 
 /**
  * What a lesson names on the picture: the LOD bands' colours (a legend in the card), the
- * Kelvin angle written at the end of the wake guide's lines, and the edge of Snell's window
- * marked where it meets the sea in front of the camera. The labels are HTML over the
- * canvas, placed after each frame from the camera's projection.
+ * Kelvin angle written at the end of the wake guide's lines, the edge of Snell's window
+ * marked where it meets the sea in front of the camera, and the five points where the boat
+ * samples the waves. The labels are HTML over the canvas, placed after each frame from the
+ * camera's projection, and only in the part of the canvas the panels leave free: a label
+ * that would run past its right edge is written leftwards from its point instead.
  */
 export class LessonLegend {
   private readonly labels: HTMLElement[] = [];
@@ -62,7 +69,7 @@ export class LessonLegend {
       box.append(list);
     } else {
       const text = document.createElement('p');
-      text.textContent = teachingWord(this.tr, lesson.legend === 'kelvinAngle' ? 'kelvinAngleLabel' : 'snellWindowLabel');
+      text.textContent = teachingWord(this.tr, lesson.legend === 'kelvinAngle' ? 'kelvinAngleLabel' : lesson.legend === 'snellWindow' ? 'snellWindowLabel' : 'hullPointsLegend');
       box.append(text);
     }
     return box;
@@ -74,11 +81,15 @@ export class LessonLegend {
     this.labels.length = 0;
     this.kind = lesson?.legend ?? null;
     if (params) this.params = params;
-    const count = this.kind === 'kelvinAngle' ? 2 : this.kind === 'snellWindow' ? 1 : 0;
-    for (let i = 0; i < count; i++) {
+    const texts =
+      this.kind === 'kelvinAngle' ? [1, 2].map(() => teachingWord(this.tr, 'kelvinAngleLabel'))
+      : this.kind === 'snellWindow' ? [teachingWord(this.tr, 'snellWindowLabel')]
+      : this.kind === 'hullPoints' ? HULL_POINTS.map((name) => teachingWord(this.tr, `hull_${name}`))
+      : [];
+    for (const text of texts) {
       const label = document.createElement('div');
       label.className = `oceano-lesson-label oceano-lesson-label-${this.kind}`;
-      label.textContent = teachingWord(this.tr, this.kind === 'kelvinAngle' ? 'kelvinAngleLabel' : 'snellWindowLabel');
+      label.textContent = text;
       label.hidden = true;
       this.container.append(label);
       this.labels.push(label);
@@ -94,26 +105,38 @@ export class LessonLegend {
     }
   }
 
-  /** Puts each label where its point of the sea is on the canvas, or hides it when that point is out of sight. */
+  /** Puts each label where its point of the sea is on the canvas, or hides it when that point is out of sight or under a panel. */
   place(): void {
     if (this.labels.length === 0 || !this.params) return;
     const scene = this.hooks.scene();
     const points = this.points(this.params, scene);
     const width = scene.canvas.clientWidth;
     const height = scene.canvas.clientHeight;
+    const free: Rect = FreeArea.of(this.container).rect ?? { x: 0, y: 0, width, height };
     this.labels.forEach((label, i) => {
       const world = points[i];
       // The point's place on the canvas, CSS pixels from its top left; none behind the camera.
       const p = world ? new Vector3(...world).project(scene.camera) : null;
       const point = p && Math.abs(p.z) <= 1 ? [((p.x + 1) / 2) * width, ((1 - p.y) / 2) * height] : null;
-      const visible = point !== null && point[0] >= 0 && point[0] <= width && point[1] >= 0 && point[1] <= height;
+      const visible = point !== null && point[0] >= free.x && point[0] <= free.x + free.width && point[1] >= free.y && point[1] <= free.y + free.height;
       label.hidden = !visible;
-      if (visible) label.style.transform = `translate(${point[0].toFixed(1)}px, ${point[1].toFixed(1)}px)`;
+      if (!visible) return;
+      label.style.transform = `translate(${point[0].toFixed(1)}px, ${point[1].toFixed(1)}px)`;
+      // Written leftwards from its point where it would run past the free part's right edge (lessons.css: 4 px from the point).
+      label.classList.toggle('oceano-lesson-label-leftwards', point[0] + 4 + label.offsetWidth > free.x + free.width);
     });
   }
 
   /** The world points the labels mark, in label order. */
   private points(params: OceanParams, scene: ReturnType<LessonHooks['scene']>): ([number, number, number] | null)[] {
+    if (this.kind === 'hullPoints') {
+      const { position, heading } = scene.boat;
+      const points = hullSamplePoints(position[0], position[2], heading, scene.hull);
+      return HULL_POINTS.map((name) => {
+        const [x, z] = points[name];
+        return [x, scene.height(x, z), z];
+      });
+    }
     if (this.kind === 'kelvinAngle') {
       if (!params.wake || !params.wakeGuide) return [null, null];
       const { position, heading } = scene.boat;

@@ -7,7 +7,7 @@ export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap
 export type LessonSection = (typeof LESSON_SECTIONS)[number];
 
 /** What a lesson draws over the picture besides its card (lessonLegend.ts). */
-export type LessonLegend = 'lodBands' | 'kelvinAngle' | 'snellWindow';
+export type LessonLegend = 'lodBands' | 'kelvinAngle' | 'snellWindow' | 'hullPoints';
 
 /** The names of the course's chapters, and which lie beyond the seed report. */
 export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { beyondSeed: boolean }> = {
@@ -38,15 +38,15 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'perlin-hash': { section: 'noise', controls: ['seed'] },
   'perlin-smoothing': { section: 'noise', controls: ['seed'] },
   'perlin-octaves': { section: 'noise', controls: ['seed'] },
-  'heightmap-blend': { section: 'noise', controls: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
+  'heightmap-blend': { section: 'noise', controls: ['rippleBlendSpeed', 'seed', 'view'] },
   'normals-wrong': { section: 'normals', controls: ['normals', 'shading'] },
   'normals-right': { section: 'normals', controls: ['normals', 'shading', 'swellAmplitude'] },
-  'sky-cube': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth'] },
+  'sky-cube': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'view'] },
   'reflection': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'fresnel'] },
   'fresnel': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
   'fresnel-schlick': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
-  'boat-twin': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatResponse'] },
-  'boat-pitch': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatHeading'] },
+  'boat-twin': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatResponse'], legend: 'hullPoints' },
+  'boat-pitch': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatHeading'], legend: 'hullPoints' },
   'snell-window': { section: 'underwater', controls: ['fresnel', 'blurStrength'], legend: 'snellWindow' },
   'underwater-fog': { section: 'underwater', controls: ['fogDensity', 'blurStrength', 'seaBedDepth'] },
   'caustics': { section: 'underwater', controls: ['caustics', 'causticsIntensity', 'seaBedDepth'] },

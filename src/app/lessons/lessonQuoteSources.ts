@@ -21,7 +21,7 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   fresnel: { file: 'src/sim/optics/fresnel.ts', from: 'export function fresnelReflectance(', to: 'return 0.5 * (rs * rs + rp * rp);' },
   'fresnel-schlick': { file: 'src/sim/optics/fresnel.ts', from: 'export function schlickReflectance(', to: '}' },
   'boat-twin': { file: 'src/sim/waves/seed/seedSurface.ts', from: 'export function swellHeight(state: SurfaceState', to: 'return state.swellAmplitude * (first' },
-  'boat-pitch': { file: 'src/sim/boat/boatPose.ts', from: 'const bow = heightAt(', to: 'roll: Math.atan2(' },
+  'boat-pitch': { file: 'src/sim/boat/boatPose.ts', from: 'const points = hullSamplePoints(', to: 'roll: Math.atan2(' },
   'snell-window': { file: 'shaders/ocean.frag', from: 'vec3 shadeFromBelow(vec3 v, vec3 n) {', to: 'float reflectance = uFresnelEnabled ? fresnelLookup(uFresnelFromBelow' },
   'underwater-fog': { file: 'shaders/waterVolume.glsl', from: 'vec3 waterTransmittance(float distance) {', to: 'return color * transmittance' },
   caustics: { file: 'shaders/caustics.glsl', from: 'vec2 a = causticLanding(s, p.y, light);', to: 'return mix(1.0, gain, uCausticsStrength);' },

@@ -2,9 +2,11 @@ import GUI, { type Controller } from 'lil-gui';
 import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../../sim/params/params';
 import type { Translator, UiTextId } from '../language/i18n';
 import { teachingWord } from '../language/teachingWords';
+import { paramLabel } from '../language/paramLabels';
 import { froudeNumber } from '../../sim/wake/kelvinWake';
 import { WAKE_HULL } from '../../sim/wake/boatWake';
 import { unreadParams } from './modelScope';
+import { FreeArea } from '../layout/freeArea';
 
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
@@ -60,7 +62,7 @@ export class ControlPanel {
   private readonly froude = { value: '' };
   private readonly froudeController: Controller;
 
-  constructor(container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
+  constructor(private readonly container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
     // Its styles come from the page's stylesheet (main.ts): no <style> element with a data: font.
     this.gui = new GUI({ container, title: tr.ui('panelTitle'), injectStyles: false });
     this.model = { ...params, playing };
@@ -103,11 +105,12 @@ export class ControlPanel {
     this.gui.add(camera, 'surface').name(tr.ui('surface'));
     // On a phone the open panel would cover most of the sea: start it folded (its title opens it).
     if (container.clientWidth < NARROW) this.gui.close();
+    FreeArea.of(container).avoid(this.gui.domElement);
   }
 
   private addControl(group: GUI, key: ParamKey, hooks: ControlPanelHooks): Controller {
     const def: ParamDef = paramDefs[key];
-    const label = this.tr.paramLabel(key);
+    const label = paramLabel(this.tr, key);
     const emit = (value: OceanParams[ParamKey]) => hooks.onParam(key, value);
     if (def.kind === 'color') return group.addColor(this.model, key).name(label).onChange(emit);
     if (def.kind === 'boolean') return group.add(this.model, key).name(label).onChange(emit);
@@ -151,6 +154,7 @@ export class ControlPanel {
   }
 
   dispose(): void {
+    FreeArea.of(this.container).release(this.gui.domElement);
     this.gui.destroy();
   }
 }

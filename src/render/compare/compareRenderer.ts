@@ -63,11 +63,11 @@ export class CompareRenderer {
     for (const side of this.sides) side.view.update(time);
   }
 
-  /** The strips of the frame, or null when there is nothing to compare. */
-  strips(params: Pick<OceanParams, 'compareSplit' | 'compareSplit2'>): Strip[] | null {
+  /** The strips of the frame, or null when there is nothing to compare; the splits are fractions of `[from, to]`, fractions of the width. */
+  strips(params: Pick<OceanParams, 'compareSplit' | 'compareSplit2'>, [from, to]: readonly [number, number] = [0, 1]): Strip[] | null {
     if (this.sides.length === 0) return null;
     const width = this.renderer.getDrawingBufferSize(this.bufferSize).x;
-    return compareStrips(this.sides.length + 1, params.compareSplit, params.compareSplit2, width);
+    return compareStrips(this.sides.length + 1, params.compareSplit, params.compareSplit2, width, from * width, to * width);
   }
 
   /** Each model's chunks culled to its own strip. Bands and seams depend on distance alone, so a chunk reaching a strip is the one the model alone would draw there. */

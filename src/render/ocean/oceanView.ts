@@ -8,7 +8,8 @@ import { DEFAULT_CAMERA } from '../../sim/camera/defaultCamera';
 import type { WakeUniformData } from '../../sim/wake/wakeUniformData';
 import { modelsDrawn, modelsMissing } from '../waves/waveViewRegistry';
 import type { ProbeSample, SurfaceProbe } from '../teaching/surfaceProbe';
-import type { HeightmapView } from '../teaching/heightmapView';
+import type { TeachingFigure } from '../teaching/teachingFigure';
+import type { Rect } from '../../sim/layout/rect';
 import { SceneLights } from '../sky/sceneLights';
 import { KelvinGuideView } from '../wake/kelvinGuideView';
 import type { CompareRenderer } from '../compare/compareRenderer';
@@ -35,7 +36,7 @@ const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fres
 /**
  * The app's view, built on the library's Ocean: its own renderer, scene and camera, the
  * lights for the boat, the Kelvin guide, models side by side, the camera's planes fitted to
- * the water, the underwater passes and the heightmap view. It is given its canvas,
+ * the water, the underwater passes and the teaching views. It is given its canvas,
  * parameters and the time of each frame; it reads no clock, URL or DOM of its own.
  */
 export class OceanView {
@@ -58,10 +59,13 @@ export class OceanView {
   private customSky: CubeTexture | null;
   private params: OceanParams;
   private applied: OceanParams | null = null;
-  private showHeightmaps = false;
-  private heightmapView?: HeightmapView;
-  private heightmapCode?: typeof import('../teaching/heightmapView');
-  private heightmapLoad?: Promise<void>;
+  private showFigure = false;
+  private figure?: TeachingFigure;
+  private figureCode?: typeof import('../teaching/teachingFigure');
+  private figureLoad?: Promise<void>;
+  /** The canvas's CSS size, and the part of it the page's panels leave free (null: all of it). */
+  private cssSize = { width: 1, height: 1 };
+  private free: Rect | null = null;
   private probe?: SurfaceProbe;
   private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, farCellsVisible: 0, lodCounts: [], underwater: false, submersion: 'above', composerPasses: 0 };
 
@@ -115,15 +119,15 @@ export class OceanView {
     this.compare?.apply(params);
     if (changed(...LOOK_KEYS)) this.compare?.applyLook(params);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor')) this.lights.update(sunDirection(params.sunElevation, params.sunAzimuth), params.waterColor);
-    if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
-    // The heightmap view's code is fetched the first time it is shown; until then the frame is clear.
-    if (this.showHeightmaps) {
-      this.heightmapLoad ??= import('../teaching/heightmapView').then(
+    if (changed('view')) this.showFigure = params.view !== 'ocean';
+    // The teaching views' code is fetched the first time one is shown; until then the frame is clear.
+    if (this.showFigure) {
+      this.figureLoad ??= import('../teaching/teachingFigure').then(
         (code) => {
-          this.heightmapCode = code;
+          this.figureCode = code;
           if (!this.disposed) this.redraw();
         },
-        (error: unknown) => console.warn('Oceano: the heightmap view\'s code could not be loaded.', error),
+        (error: unknown) => console.warn('Oceano: the teaching view\'s code could not be loaded.', error),
       );
     }
   }
@@ -158,9 +162,15 @@ export class OceanView {
     const h = Math.max(1, Math.floor(height));
     this.renderer.setPixelRatio(pixelRatio);
     this.renderer.setSize(w, h, false);
+    this.cssSize = { width: w, height: h };
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
     this.underwater.fitToCanvas();
+  }
+
+  /** The part of the canvas (CSS px) that the page's panels leave free: compare strips and teaching views are laid out in it. */
+  setFreeArea(free: Rect | null): void {
+    this.free = free;
   }
 
   /**
@@ -183,7 +193,7 @@ export class OceanView {
 
   /** Settles once every part asked for so far (the underwater passes, the compare code, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad]).then(() => undefined);
+    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.figureLoad]).then(() => undefined);
   }
 
   /**
@@ -214,8 +224,8 @@ export class OceanView {
     const { underwater, submersion } = this.ocean.place;
     let composerPasses = 0;
     const strips = this.splitStrips();
-    if (this.showHeightmaps || submersion === 'above' || this.underwater.failed) this.underwater.resetEncoding();
-    if (this.showHeightmaps) this.drawHeightmaps();
+    if (this.showFigure || submersion === 'above' || this.underwater.failed) this.underwater.resetEncoding();
+    if (this.showFigure) this.drawFigure();
     else if (strips && this.compare) this.compare.draw(strips, this.camera);
     else if (submersion === 'above' || this.underwater.failed) this.renderer.render(this.scene, this.camera);
     else composerPasses = this.underwater.passes()?.render() ?? 0;
@@ -225,22 +235,21 @@ export class OceanView {
     this.lastStats = { drawCalls: info.calls, triangles, ...this.ocean.chunks.stats(), underwater, submersion, composerPasses };
   }
 
-  /** The strips of a split frame (compare= above the water, not the heightmap view); null for a whole frame. */
+  /** The strips of a split frame (compare= above the water, not a teaching view); null for a whole frame. */
   splitStrips(): Strip[] | null {
-    if (this.showHeightmaps || this.ocean.submersion !== 'above') return null;
+    if (this.showFigure || this.ocean.submersion !== 'above') return null;
     if (this.compare) this.compare.stripCulling = this.stripCulling;
-    return this.compare?.strips(this.params) ?? null;
+    const { free, cssSize } = this;
+    // The dividers stand in the free part of the canvas; the outer strips reach its edges.
+    return this.compare?.strips(this.params, free ? [free.x / cssSize.width, (free.x + free.width) / cssSize.width] : [0, 1]) ?? null;
   }
 
-  /** The active model's heightmaps; a model without any shows a clear screen. */
-  private drawHeightmaps(): void {
-    const view = this.ocean.waveModelView;
-    if (!view.heightmapTextures || !this.heightmapCode) {
-      this.renderer.clear();
-      return;
-    }
-    this.heightmapView ??= new this.heightmapCode.HeightmapView();
-    this.heightmapView.render(this.renderer, view.heightmapTextures, this.camera.aspect, view.heightmapLayout);
+  /** The teaching view; one with nothing to show (a model without heightmaps) leaves the screen clear. */
+  private drawFigure(): void {
+    const ocean = this.ocean;
+    const canvas = this.cssSize;
+    const drawn = this.figureCode && (this.figure ??= new this.figureCode.TeachingFigure()).draw(this.renderer, { params: this.params, time: ocean.time, waves: ocean.waveModelView, sky: ocean.skyTexture, free: this.free ?? { x: 0, y: 0, ...canvas }, canvas });
+    if (!drawn) this.renderer.clear();
   }
 
   /** Waits for every GPU command so far: reading one canvas pixel cannot finish before them. */
@@ -271,7 +280,7 @@ export class OceanView {
     this.disposed = true;
     this.compare?.dispose();
     this.probe?.dispose();
-    this.heightmapView?.dispose();
+    this.figure?.dispose();
     this.underwater.dispose();
     this.kelvinGuide.dispose();
     this.customSky?.dispose();

@@ -36,6 +36,27 @@ export function starboardOf(heading: number): [number, number] {
   return [Math.cos(heading), Math.sin(heading)];
 }
 
+/** The five points of the surface the hull is floated on, named as the lessons name them. */
+export type HullPointName = 'centre' | 'bow' | 'stern' | 'starboard' | 'port';
+
+/**
+ * Where the hull samples the surface (x, z): its centre, the bow and stern half a length
+ * away along the keel, starboard and port half a beam away across it.
+ */
+export function hullSamplePoints(x: number, z: number, heading: number, hull: HullSize): Record<HullPointName, [number, number]> {
+  const [fx, fz] = forwardOf(heading);
+  const [sx, sz] = starboardOf(heading);
+  const halfLength = hull.length / 2;
+  const halfBeam = hull.beam / 2;
+  return {
+    centre: [x, z],
+    bow: [x + fx * halfLength, z + fz * halfLength],
+    stern: [x - fx * halfLength, z - fz * halfLength],
+    starboard: [x + sx * halfBeam, z + sz * halfBeam],
+    port: [x - sx * halfBeam, z - sz * halfBeam],
+  };
+}
+
 /**
  * The pose that puts the hull on the surface. As in the seed, V1 is the surface point at
  * the centre and V2 the one L/2 ahead along the hull, and the tilt comes from V = V2 − V1;
@@ -47,15 +68,12 @@ export function starboardOf(heading: number): [number, number] {
  * plane's normal and its keel line lie in the plane (unit-tested), whatever the heading.
  */
 export function targetPose(heightAt: HeightAt, x: number, z: number, heading: number, hull: HullSize): BoatPose {
-  const [fx, fz] = forwardOf(heading);
-  const [sx, sz] = starboardOf(heading);
-  const halfLength = hull.length / 2;
-  const halfBeam = hull.beam / 2;
-  const centre = heightAt(x, z);
-  const bow = heightAt(x + fx * halfLength, z + fz * halfLength);
-  const stern = heightAt(x - fx * halfLength, z - fz * halfLength);
-  const starboard = heightAt(x + sx * halfBeam, z + sz * halfBeam);
-  const port = heightAt(x - sx * halfBeam, z - sz * halfBeam);
+  const points = hullSamplePoints(x, z, heading, hull);
+  const centre = heightAt(...points.centre);
+  const bow = heightAt(...points.bow);
+  const stern = heightAt(...points.stern);
+  const starboard = heightAt(...points.starboard);
+  const port = heightAt(...points.port);
   const slopeForward = (bow - stern) / hull.length;
   const slopeStarboard = (starboard - port) / hull.beam;
   return {

@@ -48,13 +48,15 @@ export interface Strip {
 }
 
 /**
- * The columns each of `count` models draws in a buffer `width` pixels wide. A divider at
- * fraction f falls on pixel column round(f · width): the page puts its divider element at
- * the same place, so the boundary seen and the boundary drawn agree to one pixel. Strips
- * tile the width exactly, without gap or overlap; a strip may be empty.
+ * The columns each of `count` models draws in a buffer `width` pixels wide. The dividers
+ * stand in the columns [from, to) (the part of the view that the page's panels leave
+ * free): one at fraction f falls on pixel column round(from + f · (to − from)), and the
+ * page puts its divider element at the same place, so the boundary seen and the boundary
+ * drawn agree to one pixel. The outer strips reach the buffer's edges, under the panels.
+ * Strips tile the width exactly, without gap or overlap; a strip may be empty.
  */
-export function compareStrips(count: number, split: number, split2: number, width: number): Strip[] {
-  const edges = [0, ...dividerPositions(count, split, split2).map((f) => Math.round(f * width)), width];
+export function compareStrips(count: number, split: number, split2: number, width: number, from = 0, to = width): Strip[] {
+  const edges = [0, ...dividerPositions(count, split, split2).map((f) => Math.round(from + f * (to - from))), width];
   const strips: Strip[] = [];
   for (let i = 0; i + 1 < edges.length; i++) strips.push({ x0: edges[i], x1: edges[i + 1] });
   return strips;

@@ -23,8 +23,13 @@ export const defaultNoiseSettings: Omit<NoiseSettings, 'seed'> = {
   persistence: 0.62,
 };
 
+/** The seed of octave `octave`'s lattice: each octave gets its own stream so octaves do not repeat one another. */
+export function octaveSeed(seed: number, octave: number): number {
+  return seed * 7 + octave * 1013;
+}
+
 /** The smoothed lattice of one octave: each value is the weighted mean of a 3×3 neighbourhood. */
-function smoothedLattice(cells: number, seed: number): Float64Array {
+export function smoothedLattice(cells: number, seed: number): Float64Array {
   const wrap = (i: number) => ((i % cells) + cells) % cells;
   const raw = (x: number, y: number) => integerNoise(wrap(x), wrap(y), seed);
   const lattice = new Float64Array(cells * cells);
@@ -76,8 +81,7 @@ export class TilingPerlinNoise {
     let sum = 0;
     for (let o = 0; o < settings.octaves; o++) {
       const cells = settings.baseCells << o;
-      // Each octave gets its own stream so octaves do not repeat one another.
-      this.octaveLattices.push({ cells, amplitude, lattice: smoothedLattice(cells, settings.seed * 7 + o * 1013) });
+      this.octaveLattices.push({ cells, amplitude, lattice: smoothedLattice(cells, octaveSeed(settings.seed, o)) });
       sum += amplitude;
       amplitude *= settings.persistence;
     }
@@ -95,46 +99,55 @@ export class TilingPerlinNoise {
 
   /**
    * The noise at every point (i / size, j / size) of one tile, row-major: exactly the
-   * values sample() gives there, bit for bit. On a grid, each octave's lattice cell and
-   * cosine weight depend on the column alone or the row alone, and the interpolation
-   * along a lattice row is shared by every grid row that reads it, so each is computed
-   * once rather than per sample; the arithmetic on them is the same as sample()'s.
-   * This is on the path to the first frame (two 128² maps at start-up).
+   * values sample() gives there, bit for bit (each octave interpolated on the grid by the
+   * same arithmetic, then weighted and summed). On the path to the first frame (two 128²
+   * maps at start-up), hence the grid's shared work in interpolatedGrid.
    */
   sampleGrid(size: number): Float64Array {
     const totals = new Float64Array(size * size);
-    const low = new Int32Array(size);
-    const high = new Int32Array(size);
-    const weight = new Float64Array(size);
     for (const { cells, amplitude, lattice } of this.octaveLattices) {
-      // Columns and rows share coordinates (k / size), so one table serves both.
-      for (let k = 0; k < size; k++) {
-        const u = k / size;
-        const f = (u - Math.floor(u)) * cells;
-        low[k] = Math.floor(f) % cells;
-        high[k] = (low[k] + 1) % cells;
-        weight[k] = cosineWeight(f - Math.floor(f));
-      }
-      // alongRows[y * size + i]: lattice row y interpolated to column i.
-      const alongRows = new Float64Array(cells * size);
-      for (let y = 0; y < cells; y++) {
-        for (let i = 0; i < size; i++) {
-          const fx = weight[i];
-          alongRows[y * size + i] = lattice[y * cells + low[i]] * (1 - fx) + lattice[y * cells + high[i]] * fx;
-        }
-      }
-      for (let j = 0; j < size; j++) {
-        const top = low[j] * size;
-        const bottom = high[j] * size;
-        const fy = weight[j];
-        for (let i = 0; i < size; i++) {
-          totals[j * size + i] += amplitude * (alongRows[top + i] * (1 - fy) + alongRows[bottom + i] * fy);
-        }
-      }
+      const octave = interpolatedGrid(lattice, cells, size);
+      for (let k = 0; k < totals.length; k++) totals[k] += amplitude * octave[k];
     }
     for (let k = 0; k < totals.length; k++) totals[k] /= this.amplitudeSum;
     return totals;
   }
+}
+
+/**
+ * Step 3 for one octave: its lattice cosine-interpolated at every point (i / size, j / size)
+ * of the tile, row-major; what interpolatedLattice gives there. Each grid column's lattice
+ * cell and weight depend on the column alone (rows likewise), and the interpolation along
+ * a lattice row is shared by every grid row that reads it, so each is computed once.
+ */
+export function interpolatedGrid(lattice: Float64Array, cells: number, size: number): Float64Array {
+  const low = new Int32Array(size);
+  const high = new Int32Array(size);
+  const weight = new Float64Array(size);
+  // Columns and rows share coordinates (k / size), so one table serves both.
+  for (let k = 0; k < size; k++) {
+    const u = k / size;
+    const f = (u - Math.floor(u)) * cells;
+    low[k] = Math.floor(f) % cells;
+    high[k] = (low[k] + 1) % cells;
+    weight[k] = cosineWeight(f - Math.floor(f));
+  }
+  // alongRows[y * size + i]: lattice row y interpolated to column i.
+  const alongRows = new Float64Array(cells * size);
+  for (let y = 0; y < cells; y++) {
+    for (let i = 0; i < size; i++) {
+      const fx = weight[i];
+      alongRows[y * size + i] = lattice[y * cells + low[i]] * (1 - fx) + lattice[y * cells + high[i]] * fx;
+    }
+  }
+  const grid = new Float64Array(size * size);
+  for (let j = 0; j < size; j++) {
+    const top = low[j] * size;
+    const bottom = high[j] * size;
+    const fy = weight[j];
+    for (let i = 0; i < size; i++) grid[j * size + i] = alongRows[top + i] * (1 - fy) + alongRows[bottom + i] * fy;
+  }
+  return grid;
 }
 
 export interface Heightmap {

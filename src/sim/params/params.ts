@@ -96,7 +96,9 @@ export const paramDefs = {
   // waves=fft teaching view: left half of the screen the exact slope normals per pixel, right
   // half the seed's fabricated-neighbour normals per vertex, on the same sea.
   normalsCompare: { kind: 'boolean', default: false, label: 'Compare slope | fabricated normals' },
-  view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap'], label: 'View' },
+  // What the canvas shows: the sea, or a teaching figure in its place (src/sim/teaching/teachingFigures.ts):
+  // the heightmaps, the Perlin noise's steps, the sky's cube map unfolded.
+  view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap', 'noise-hash', 'noise-smoothing', 'noise-octaves', 'noise-blend', 'sky-cube'], label: 'View' },
   fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
   // Slow motion for teaching: simulated seconds per second of the frame loop (and per Step of 1/60 s).
   timeScale: { kind: 'choice', default: '1', options: ['1', '0.5', '0.25', '0.1'], label: 'Speed (time scale)' },
