@@ -124,7 +124,6 @@ export type UiTextId =
   | 'compareDivider'
   | 'dive'
   | 'surface'
-  | 'dropStone'
   | 'folderLiveCounts'
   | 'countChunks'
   | 'countTriangles'
@@ -166,7 +165,6 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     compareDivider: 'Divider between wave models (drag, or arrow keys)',
     dive: 'Dive under the surface',
     surface: 'Back to the surface view',
-    dropStone: 'Drop a stone (interactive waves)',
     folderLiveCounts: 'LOD counts (live)',
     countChunks: 'Chunks visible / total',
     countTriangles: 'Triangles',
@@ -207,7 +205,6 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     compareDivider: 'Divisor entre modelos de olas (arrastrar o flechas)',
     dive: 'Sumergirse',
     surface: 'Volver a la superficie',
-    dropStone: 'Tirar una piedra (olas interactivas)',
     folderLiveCounts: 'Contadores de LOD (en vivo)',
     countChunks: 'Parcelas visibles / total',
     countTriangles: 'Triángulos',

@@ -5,6 +5,7 @@ import { teachingWord } from '../language/teachingWords';
 import { froudeNumber } from '../../sim/wake/kelvinWake';
 import { WAKE_HULL } from '../../sim/wake/boatWake';
 import { unreadParams } from './modelScope';
+import type { SeaTools } from '../tools/seaTools';
 
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
@@ -40,8 +41,8 @@ export interface ControlPanelHooks {
   onDive(): void;
   onStep(): void;
   onSurface(): void;
-  /** Drops a stone into the interactive waves where the camera looks (turning them on if they are off). */
-  onDropStone(): void;
+  /** The sea tools (the probe, the ruler, stones: src/app/tools/), their code fetched on first use. */
+  onSeaTools(): Promise<SeaTools>;
 }
 
 /**
@@ -79,7 +80,8 @@ export class ControlPanel {
     }
     this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(tr.ui('froudeNumber')).disable();
     // Beside the interactiveWaves switch (a button: keyboard operable), in the folded boat folder.
-    (boatFolder ?? this.gui).add({ dropStone: () => hooks.onDropStone() }, 'dropStone').name(tr.ui('dropStone'));
+    const dropStone = () => void hooks.onSeaTools().then((tools) => tools.dropStoneAtCentre());
+    (boatFolder ?? this.gui).add({ dropStone }, 'dropStone').name(teachingWord(tr, 'dropStone'));
     const live = this.gui.addFolder(tr.ui('folderLiveCounts')).close();
     const labels: [keyof typeof this.counts, UiTextId][] = [
       ['chunks', 'countChunks'],
@@ -101,6 +103,8 @@ export class ControlPanel {
     const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
     this.gui.add(camera, 'dive').name(tr.ui('dive'));
     this.gui.add(camera, 'surface').name(tr.ui('surface'));
+    // Last, so the panel's first rows stay as they were: the tools open a card of their own over the sea.
+    this.gui.add({ seaTools: () => void hooks.onSeaTools().then((tools) => tools.open()) }, 'seaTools').name(teachingWord(tr, 'seaTools'));
     // On a phone the open panel would cover most of the sea: start it folded (its title opens it).
     if (container.clientWidth < NARROW) this.gui.close();
   }
