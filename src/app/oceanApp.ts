@@ -25,6 +25,7 @@ import { findLesson, lessonIds, lessonView } from './lessons/lessonCatalog';
 import { LessonHost } from './lessons/lessonHost';
 import { FREE_AREA_EVENT } from './layout/freeAreaEvent';
 import type { Rect } from '../sim/layout/rect';
+import type { SeaTools } from './tools/seaTools';
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -44,23 +45,27 @@ export class OceanApp {
   readonly tr: Translator;
   private readonly scaffold: Scaffold;
   private params: OceanParams;
-  private view!: OceanView;
+  // The view, the boat and the loop are read by the sea tools (src/app/tools/seaTools.ts), a chunk of their own.
+  view!: OceanView;
   private orbit!: OrbitCamera;
-  private boatMotion!: BoatController;
+  boatMotion!: BoatController;
   private context?: ContextWatch;
   private controls?: AppControls;
   private lessons?: LessonHost;
   private resizeObserver?: ResizeObserver;
   private readonly frameStats = new FrameStats();
-  private readonly loop: FrameLoop;
+  readonly loop: FrameLoop;
+  /** The probe, ruler and stones, fetched when first used (loadSeaTools). */
+  private seaTools?: SeaTools;
+  private seaToolsLoad?: Promise<SeaTools>;
   /** The code of wave models asked for at run time, while it is on its way (showParams). */
   private modelLoad?: Promise<void>;
   private started = false;
   private disposed = false;
 
   constructor(
-    private readonly container: HTMLElement,
-    private readonly options: OceanAppOptions,
+    readonly container: HTMLElement,
+    readonly options: OceanAppOptions,
   ) {
     this.tr = new Translator(options.language);
     this.params = { ...options.state.params };
@@ -115,7 +120,7 @@ export class OceanApp {
       onDive: () => this.orbit.dive(),
       onStep: () => this.step(),
       onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
-      onDropStone: () => this.dropStone(),
+      onSeaTools: this.loadSeaTools,
     });
     this.lessons = new LessonHost(this.container, this.tr, showPanel, this.params, {
       openLesson: (id) => this.openLesson(id),
@@ -134,7 +139,7 @@ export class OceanApp {
     this.options.onFirstFrame?.();
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
-    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.controls.whenPartsLoaded(), this.lessons.load(), this.orbit.loaded]);
+    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.controls.whenPartsLoaded(), this.lessons.load(), this.orbit.loaded, state.probe !== null && this.loadSeaTools()]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
@@ -230,6 +235,7 @@ export class OceanApp {
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
     if (first) performance.mark('oceano:first-update');
     this.frameStats.recordTwin(this.view.waves.takeMainThreadMs?.() ?? null);
+    this.seaTools?.frame();
     this.view.draw();
     if (first) performance.mark('oceano:first-draw-submitted');
     this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());
@@ -304,18 +310,14 @@ export class OceanApp {
   boat = (): BoatInfo => this.boatMotion.info();
   /** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion. */
   shareUrl = (): string =>
-    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time), lesson: this.lesson() });
+    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time), lesson: this.lesson(), probe: this.seaTools?.probeText() });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (
     checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params), x, z)
   );
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
-  /** The panel's button: a stone at the point the camera orbits, the interactive waves turned on first if they are off. */
-  private dropStone(): void {
-    if (!this.params.interactiveWaves) this.setParams({ interactiveWaves: true });
-    const [x, , z] = this.camera().target;
-    this.disturb(x, z, { radius: 1, height: 0.3 });
-  }
+  /** The sea tools' code, fetched the first time they are opened, a ?probe= link is followed or oceano.probe() is called. */
+  loadSeaTools = (): Promise<SeaTools> => (this.seaToolsLoad ??= import('./tools/seaTools').then((code) => (this.seaTools = new code.SeaTools(this))));
 
   disturb = (x: number, z: number, options: { radius?: number; height?: number } = {}): string[] => {
     const notices = this.view.ocean.disturb(x, z, options);
@@ -337,6 +339,7 @@ export class OceanApp {
     this.context?.dispose();
     this.controls?.dispose();
     this.lessons?.dispose();
+    this.seaTools?.dispose();
     if (this.started) {
       this.orbit.dispose();
       this.view.dispose();

@@ -90,7 +90,7 @@ export async function openOcean(harness: Harness, query: string, width = 640, he
 }
 
 /** What is drawn over a canvas (control panel, notices, play button): hidden while a canvas is screenshot. */
-const OVERLAYS = '.lil-gui, .oceano-notices, .oceano-play, .oceano-fresnel-plot, .oceano-compare, .oceano-lessons, .oceano-lesson-label, .oceano-figure-caption';
+const OVERLAYS = '.lil-gui, .oceano-notices, .oceano-play, .oceano-fresnel-plot, .oceano-compare, .oceano-lessons, .oceano-lesson-label, .oceano-figure-caption, .oceano-sea-tools, .oceano-ruler-label';
 
 /** Screenshots a canvas element with the overlays above it hidden, so only the ocean is in the picture. */
 export async function screenshotCanvas(page: Page, selector = 'canvas'): Promise<Buffer> {

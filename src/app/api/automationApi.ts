@@ -5,6 +5,7 @@ import type { PhysicsReport } from '../../sim/physics/physicsReport';
 import type { ProbeSample } from '../../render/teaching/surfaceProbe';
 import type { OceanView } from '../../render/ocean/oceanView';
 import type { DebugTools } from '../debug/debugTools';
+import type { ProbeReading } from '../tools/probeTool';
 
 /**
  * `window.oceano` on the page, `element.oceano` on an <oceano-view>: how tests, course
@@ -39,6 +40,13 @@ export interface OceanoApi {
    * and change nothing; returns notices (a radius under one texel is raised to one texel).
    */
   disturb(x: number, z: number, options?: { radius?: number; height?: number }): string[];
+  /**
+   * The probe of the sea tools (src/app/tools/): probe(x, z) places it at world (x, z), probe()
+   * reads it, probe(null) removes it. Each answers its reading (null without a probe): the last
+   * 30 s of heights there, one per drawn frame, Tz, Hs and crest to trough against the model's
+   * theory. Async: the tools' code is fetched on first use. Bad arguments reject with a TypeError.
+   */
+  probe(...place: [] | [null] | [x: number, z: number]): Promise<ProbeReading | null>;
   /** The boat's pose: position in metres, heading, pitch and roll in radians (conventions in src/sim/boat/boatPose.ts). */
   boat(): BoatInfo;
   stats(): OceanStats;
@@ -127,6 +135,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     sampleSurface: (x, z) => app.sampleSurface(x, z),
     probeGpu: async (points, t) => app.probeGpu(points, t),
     disturb: (x, z, options) => app.disturb(x, z, options),
+    probe: (...place) => app.loadSeaTools().then((tools) => tools.probeCall(place)),
     boat: () => app.boat(),
     stats: () => app.stats(),
     physics: async () => started(app.physicsPanel()).measure(),
@@ -179,6 +188,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     sampleSurface: fail,
     probeGpu: () => Promise.reject(reason),
     disturb: fail,
+    probe: failed,
     boat: fail,
     stats: fail,
     notices: fail,

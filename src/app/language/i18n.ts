@@ -109,36 +109,13 @@ export type UiTextId =
   | 'canvasLabel'
   | 'canvasLabelFigure'
   | 'canvasLabelNormals'
-  | 'panelTitle'
-  | 'folderSwell'
-  | 'folderSpectral'
-  | 'folderRipples'
-  | 'folderLight'
-  | 'folderView'
-  | 'folderBoat'
-  | 'folderLod'
-  | 'folderUnderwater'
-  | 'folderGerstner'
-  | 'folderPhysics'
-  | 'folderCompare'
   | 'compareDivider'
-  | 'dive'
-  | 'surface'
-  | 'dropStone'
-  | 'folderLiveCounts'
-  | 'countChunks'
-  | 'countTriangles'
-  | 'countDrawCalls'
-  | 'countPerBand'
   | 'loadingTitle'
   | 'loading_sky'
   | 'loading_firstFrame'
   | 'loading_boat'
-  | 'froudeNumber'
   | 'play'
   | 'pause'
-  | 'playing'
-  | 'share'
   | 'dismiss'
   | 'fresnelPlotLabel'
   | 'fresnelTitle'
@@ -151,36 +128,13 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabel: 'Animated 3D ocean under a sky',
     canvasLabelFigure: 'A teaching figure in place of the sea: the heightmaps, the steps of their Perlin noise, or the sky’s cube map unfolded',
     canvasLabelNormals: 'Animated 3D ocean coloured by its surface normals',
-    panelTitle: 'Oceano',
-    folderSwell: 'Swell',
-    folderSpectral: 'Wind & spectrum (fft, gerstner)',
-    folderRipples: 'Ripples (Perlin)',
-    folderLight: 'Light & water',
-    folderView: 'View',
-    folderBoat: 'Boat',
-    folderLod: 'LOD & culling',
-    folderUnderwater: 'Underwater',
-    folderGerstner: 'Gerstner waves',
-    folderPhysics: 'Physics vs theory',
-    folderCompare: 'Models side by side',
     compareDivider: 'Divider between wave models (drag, or arrow keys)',
-    dive: 'Dive under the surface',
-    surface: 'Back to the surface view',
-    dropStone: 'Drop a stone (interactive waves)',
-    folderLiveCounts: 'LOD counts (live)',
-    countChunks: 'Chunks visible / total',
-    countTriangles: 'Triangles',
-    countDrawCalls: 'Draw calls',
-    countPerBand: 'Chunks per band',
     loadingTitle: 'Loading',
     loading_sky: 'sky',
     loading_firstFrame: 'sea and first frame',
     loading_boat: 'boat',
-    froudeNumber: 'Froude number U/√(gL)',
     play: 'Play',
     pause: 'Pause',
-    playing: 'Play',
-    share: 'Share link',
     dismiss: 'Dismiss',
     fresnelPlotLabel: 'Plot of the Fresnel reflectance of water against the angle of incidence, exact and Schlick',
     fresnelTitle: 'Fresnel reflectance, air → water',
@@ -192,36 +146,13 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     canvasLabel: 'Océano 3D animado bajo un cielo',
     canvasLabelFigure: 'Una figura didáctica en lugar del mar: los mapas de alturas, los pasos de su ruido de Perlin o el cube map del cielo desplegado',
     canvasLabelNormals: 'Océano 3D animado coloreado según las normales de su superficie',
-    panelTitle: 'Oceano',
-    folderSwell: 'Oleaje',
-    folderSpectral: 'Viento y espectro (fft, gerstner)',
-    folderRipples: 'Ondas (Perlin)',
-    folderLight: 'Luz y agua',
-    folderView: 'Vista',
-    folderBoat: 'Barco',
-    folderLod: 'LOD y recorte',
-    folderUnderwater: 'Bajo el agua',
-    folderGerstner: 'Ondas de Gerstner',
-    folderPhysics: 'Física frente a teoría',
-    folderCompare: 'Modelos lado a lado',
     compareDivider: 'Divisor entre modelos de olas (arrastrar o flechas)',
-    dive: 'Sumergirse',
-    surface: 'Volver a la superficie',
-    dropStone: 'Tirar una piedra (olas interactivas)',
-    folderLiveCounts: 'Contadores de LOD (en vivo)',
-    countChunks: 'Parcelas visibles / total',
-    countTriangles: 'Triángulos',
-    countDrawCalls: 'Llamadas de dibujo',
-    countPerBand: 'Parcelas por banda',
     loadingTitle: 'Cargando',
     loading_sky: 'cielo',
     loading_firstFrame: 'mar y primer fotograma',
     loading_boat: 'barco',
-    froudeNumber: 'Número de Froude U/√(gL)',
     play: 'Reproducir',
     pause: 'Pausar',
-    playing: 'Reproducir',
-    share: 'Compartir enlace',
     dismiss: 'Cerrar',
     fresnelPlotLabel: 'Gráfico de la reflectancia de Fresnel del agua según el ángulo de incidencia, exacta y de Schlick',
     fresnelTitle: 'Reflectancia de Fresnel, aire → agua',

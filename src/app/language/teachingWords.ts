@@ -48,7 +48,9 @@ export type TeachingWordId =
   | 'unusedByNonFft'
   | 'unusedByNonGerstner'
   | 'timeScale'
-  | 'step';
+  | 'step'
+  | 'seaTools'
+  | 'dropStone';
 
 const WORDS: Record<Language, Record<TeachingWordId, string>> = {
   en: {
@@ -95,6 +97,8 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     unusedByNonGerstner: 'read only by the gerstner waves',
     timeScale: 'Speed',
     step: 'Step one frame (1/60 s)',
+    seaTools: 'Sea tools: probe, ruler, stones',
+    dropStone: 'Drop a stone (interactive waves)',
   },
   es: {
     lessonsTitle: 'Lecciones',
@@ -140,6 +144,8 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     unusedByNonGerstner: 'solo lo leen las olas gerstner',
     timeScale: 'Velocidad',
     step: 'Avanzar un fotograma (1/60 s)',
+    seaTools: 'Herramientas: sonda, regla, piedras',
+    dropStone: 'Tirar una piedra (olas interactivas)',
   },
 };
 

@@ -1,14 +1,16 @@
 import GUI, { type Controller } from 'lil-gui';
 import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../../sim/params/params';
-import type { Translator, UiTextId } from '../language/i18n';
+import type { Translator } from '../language/i18n';
+import { panelWord, type PanelWordId } from '../language/panelWords';
 import { teachingWord } from '../language/teachingWords';
 import { paramLabel } from '../language/paramLabels';
 import { froudeNumber } from '../../sim/wake/kelvinWake';
 import { WAKE_HULL } from '../../sim/wake/boatWake';
 import { unreadParams } from './modelScope';
 import { FreeArea } from '../layout/freeArea';
+import type { SeaTools } from '../tools/seaTools';
 
-const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
+const FOLDERS: { title: PanelWordId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
   // The wind sea that both waves=fft and waves=gerstner draw from.
   { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel', 'choppiness', 'fftSize', 'foam', 'foamThreshold'] },
@@ -42,8 +44,8 @@ export interface ControlPanelHooks {
   onDive(): void;
   onStep(): void;
   onSurface(): void;
-  /** Drops a stone into the interactive waves where the camera looks (turning them on if they are off). */
-  onDropStone(): void;
+  /** The sea tools (the probe, the ruler, stones: src/app/tools/), their code fetched on first use. */
+  onSeaTools(): Promise<SeaTools>;
 }
 
 /**
@@ -64,11 +66,11 @@ export class ControlPanel {
 
   constructor(private readonly container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
     // Its styles come from the page's stylesheet (main.ts): no <style> element with a data: font.
-    this.gui = new GUI({ container, title: tr.ui('panelTitle'), injectStyles: false });
+    this.gui = new GUI({ container, title: panelWord(tr, 'panelTitle'), injectStyles: false });
     this.model = { ...params, playing };
     let boatFolder: GUI | null = null;
     for (const folder of FOLDERS) {
-      const group = this.gui.addFolder(tr.ui(folder.title));
+      const group = this.gui.addFolder(panelWord(tr, folder.title));
       // Folded: a lesson opens the folders of its controls, the user any other.
       group.close();
       this.folders.push({ gui: group, keys: folder.keys });
@@ -79,19 +81,20 @@ export class ControlPanel {
       }
       if (folder.title === 'folderBoat') boatFolder = group;
     }
-    this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(tr.ui('froudeNumber')).disable();
+    this.froudeController = (boatFolder ?? this.gui).add(this.froude, 'value').name(panelWord(tr, 'froudeNumber')).disable();
     // Beside the interactiveWaves switch (a button: keyboard operable), in the folded boat folder.
-    (boatFolder ?? this.gui).add({ dropStone: () => hooks.onDropStone() }, 'dropStone').name(tr.ui('dropStone'));
-    const live = this.gui.addFolder(tr.ui('folderLiveCounts')).close();
-    const labels: [keyof typeof this.counts, UiTextId][] = [
+    const dropStone = () => void hooks.onSeaTools().then((tools) => tools.dropStoneAtCentre());
+    (boatFolder ?? this.gui).add({ dropStone }, 'dropStone').name(teachingWord(tr, 'dropStone'));
+    const live = this.gui.addFolder(panelWord(tr, 'folderLiveCounts')).close();
+    const labels: [keyof typeof this.counts, PanelWordId][] = [
       ['chunks', 'countChunks'],
       ['triangles', 'countTriangles'],
       ['drawCalls', 'countDrawCalls'],
       ['perBand', 'countPerBand'],
     ];
-    for (const [key, label] of labels) this.countControllers.push(live.add(this.counts, key).name(tr.ui(label)).disable());
+    for (const [key, label] of labels) this.countControllers.push(live.add(this.counts, key).name(panelWord(tr, label)).disable());
     this.controllers.push(
-      this.gui.add(this.model, 'playing').name(tr.ui('playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
+      this.gui.add(this.model, 'playing').name(panelWord(tr, 'playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
     // The teacher's time controls beside Play: slow motion, and one frame at a time while paused.
     const speed = this.addControl(this.gui, 'timeScale', hooks);
@@ -99,10 +102,12 @@ export class ControlPanel {
     this.paramControllers.set('timeScale', speed);
     this.gui.add({ step: () => hooks.onStep() }, 'step').name(teachingWord(tr, 'step'));
     // lil-gui draws a function as a <button>: focusable and keyboard operable.
-    this.gui.add({ share: () => hooks.onShare() }, 'share').name(tr.ui('share'));
+    this.gui.add({ share: () => hooks.onShare() }, 'share').name(panelWord(tr, 'share'));
     const camera = { dive: () => hooks.onDive(), surface: () => hooks.onSurface() };
-    this.gui.add(camera, 'dive').name(tr.ui('dive'));
-    this.gui.add(camera, 'surface').name(tr.ui('surface'));
+    this.gui.add(camera, 'dive').name(panelWord(tr, 'dive'));
+    this.gui.add(camera, 'surface').name(panelWord(tr, 'surface'));
+    // Last, so the panel's first rows stay as they were: the tools open a card of their own over the sea.
+    this.gui.add({ seaTools: () => void hooks.onSeaTools().then((tools) => tools.open()) }, 'seaTools').name(teachingWord(tr, 'seaTools'));
     // On a phone the open panel would cover most of the sea: start it folded (its title opens it).
     if (container.clientWidth < NARROW) this.gui.close();
     FreeArea.of(container).avoid(this.gui.domElement);

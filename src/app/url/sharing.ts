@@ -15,6 +15,7 @@ export interface SharedView {
   /** The wake's track then (WakeTrack.serialize), so the link shows the same wake. */
   wakeTrack?: string | null;
   lesson?: string | null;
+  probe?: string | null;
 }
 
 /** What it carries of the page as it was opened: its address, language, assets and embedding. */

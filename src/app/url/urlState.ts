@@ -9,7 +9,7 @@ import { findLesson, lessonIds, lessonView } from '../lessons/lessonCatalog';
 import { WakeTrack } from '../../sim/wake/wakeTrack';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
-export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'lesson', 'boat', 'boatState', 'wakeTrack'] as const;
+export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'lesson', 'boat', 'boatState', 'wakeTrack', 'probe'] as const;
 
 /** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
@@ -33,6 +33,8 @@ export interface UrlState {
   wakeTrack: WakeTrack | null;
   /** The lesson opened (src/app/lessons/lessonCatalog.ts): its view is in the other fields. */
   lesson: string | null;
+  /** `probe=x,z` as written: the sea tools (a chunk fetched only when it is given) read and check it. */
+  probe: string | null;
 }
 
 /**
@@ -55,7 +57,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices, lesson: null };
+  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices, lesson: null, probe: null };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -112,6 +114,8 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       const language = languageFromTag(text);
       if (language) state.language = language;
       else notices.push(message('languageInvalid', { text }));
+    } else if (key === 'probe') {
+      state.probe = text;
     } else if (key === 'embed') {
       if (text === '1' || text === '' || text === 'true') state.embed = true;
       else if (text !== '0' && text !== 'false') notices.push(message('embedInvalid', { text }));
@@ -140,6 +144,8 @@ export interface ShareableState {
   wakeTrack?: string | null;
   /** The lesson open, so the link opens its card too (its view is overridden by the values that follow). */
   lesson?: string | null;
+  /** Where the probe stands, "x,z" (src/app/tools/). */
+  probe?: string | null;
 }
 
 /**
@@ -161,6 +167,7 @@ export function formatUrlState(state: ShareableState): string {
   if (state.wakeTrack && state.params.wake) query.set('wakeTrack', state.wakeTrack);
   if (state.sky !== null) query.set('sky', state.sky);
   if (state.boat !== null) query.set('boat', state.boat);
+  if (state.probe) query.set('probe', state.probe);
   if (state.embed) query.set('embed', '1');
   return query.toString();
 }
