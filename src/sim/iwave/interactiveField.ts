@@ -1,8 +1,25 @@
-import type { Disturbance } from './iwaveGrid';
+import { GRAVITY, type Disturbance } from './iwaveGrid';
+import { fittedVerticalDerivativeKernel, waveEquationKernel, type ConvolutionKernel } from './verticalDerivativeKernel';
 
 import { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP } from './fieldSize';
 
 export { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP };
+
+/**
+ * The plain wave equation's speed where it stands in for iWave or beside it (the
+ * stone-compare preset): the phase speed √(g/k) of a 1.5 rad/m wave, mid-band, 2.56 m/s.
+ */
+export const WAVE_EQUATION_SPEED = Math.sqrt(GRAVITY / 1.5);
+
+/** Which equation the field solves: deep water's (iWave), the plain wave equation, or iWave left of the middle and the wave equation right of it. */
+export type IWaveEquation = 'dispersive' | 'non-dispersive' | 'side-by-side';
+
+/** The kernels for an equation: the one of every texel (or of the left half), and the right half's, if split. */
+export function equationKernels(equation: IWaveEquation, spacing = IWAVE_SPACING): { kernel: ConvolutionKernel; rightKernel: ConvolutionKernel | null } {
+  const wave = () => waveEquationKernel(WAVE_EQUATION_SPEED, spacing, GRAVITY);
+  if (equation === 'non-dispersive') return { kernel: wave(), rightKernel: null };
+  return { kernel: fittedVerticalDerivativeKernel(), rightKernel: equation === 'side-by-side' ? wave() : null };
+}
 
 export interface DisturbanceOptions {
   /** Metres; raised to one texel if smaller. Default 1. */
