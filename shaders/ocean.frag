@@ -71,6 +71,17 @@ float withWakeFoam(float foam) { return max(foam, vWakeFoam); }
 vec3 withWakeSlope(vec3 n) { return n; }
 float withWakeFoam(float foam) { return foam; }
 #endif
+#ifdef OCEAN_IWAVE
+// The interactive field's steep water: paler, greener where light crosses a thin crest, and
+// foam as a wave nears Stokes's limit (src/sim/iwave/steepnessTint.ts).
+#include <oceano_iwave>
+varying vec2 vIWaveSlope;
+vec3 withFieldTint(vec3 water) { return mix(water, IWAVE_CREST_COLOR, iwaveTint(vIWaveSlope)); }
+float withFieldFoam(float foam) { return max(foam, iwaveFoam(vIWaveSlope)); }
+#else
+vec3 withFieldTint(vec3 water) { return water; }
+float withFieldFoam(float foam) { return foam; }
+#endif
 
 // The sun's highlight: a narrow lobe around the direction that brings the sun to the eye, of
 // the given sharpness (the cosine's power) and strength; none once the sun has set.
@@ -269,6 +280,7 @@ void main() {
 #else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
 #endif
+  water = withFieldTint(water);
   vec3 color = mix(water, sky, reflectance);
 
   vec3 halfway = normalize(uSunDirection + v);
@@ -285,7 +297,7 @@ void main() {
   foam = waveFoamNear(vRelativeGridXZ);
 #endif
   // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
-  foam = withWakeFoam(foam);
+  foam = withFieldFoam(withWakeFoam(foam));
   if (foam > 0.0) {
     float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
     color = mix(color, FOAM_COLOR * foamLight, foam);

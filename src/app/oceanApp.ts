@@ -1,5 +1,5 @@
 import { validateParams, type OceanParams } from '../sim/params/params';
-import { message, type Message } from '../sim/params/message';
+import { message, MessageError, type Message } from '../sim/params/message';
 import type { SurfaceSample } from '../sim/waves/waveModel';
 import { OceanView } from '../render/ocean/oceanView';
 import { BoatView } from '../render/boat/boatView';
@@ -23,6 +23,10 @@ import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waves/wave
 import { COMPARE_OFF } from '../sim/compare/compareLayout';
 import { findLesson, lessonIds, lessonView } from './lessons/lessonCatalog';
 import { LessonHost } from './lessons/lessonHost';
+import type { Stone } from './url/presets';
+
+/** Stones as the ocean records them, `after` seconds later than they say. */
+const stoneRecords = (stones: readonly Stone[], after = 0) => stones.map(([time, x, z, radius, height]) => ({ time: time + after, disturbance: { x, z, radius, height } }));
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -93,6 +97,7 @@ export class OceanApp {
     performance.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
+    this.view.ocean.recordStones(stoneRecords(state.stones));
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
       this.orbit.setPose(state.cullingCamera);
       this.view.update(this.clock.time);
@@ -214,7 +219,7 @@ export class OceanApp {
   renderFrame(sync = this.frameStats.loopShouldSync(), first = false): void {
     if (this.context?.lost) return;
     const start = performance.now();
-    this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view);
+    this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view, this.view.fieldBeside());
     const boatEnd = performance.now();
     if (first) performance.mark('oceano:first-boat-update');
     this.view.update(this.clock.time);
@@ -261,7 +266,7 @@ export class OceanApp {
       this.notify(message('lessonUnknown', { name: String(id), known: lessonIds.join(', ') }));
       return false;
     }
-    const { params, camera, cullingCamera } = lessonView(lesson);
+    const { params, camera, cullingCamera, stones } = lessonView(lesson);
     if (cullingCamera && params.freezeCulling && this.started) {
       // As at start-up: the selection is frozen from the culling camera, then seen from the lesson's.
       this.setParams({ ...params, freezeCulling: false });
@@ -269,7 +274,11 @@ export class OceanApp {
       this.view.update(this.clock.time);
     }
     this.setParams(params);
-    if (this.started) this.orbit.setPose(camera);
+    if (this.started) {
+      this.orbit.setPose(camera);
+      // Its stones fall from now on, as the lesson opens.
+      this.view.ocean.recordStones(stoneRecords(stones, this.clock.time));
+    }
     void this.lessons?.show(lesson.id);
     return true;
   }
@@ -295,10 +304,18 @@ export class OceanApp {
   boat = (): BoatInfo => this.boatMotion.info();
   /** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion. */
   shareUrl = (): string =>
-    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time), lesson: this.lesson() });
+    shareUrl(this.options, {
+      params: this.params,
+      time: this.clock.time,
+      camera: this.camera(),
+      boatState: this.boatMotion.snapshot(this.clock.time),
+      wakeTrack: this.boatMotion.wakeText(this.clock.time),
+      lesson: this.lesson(),
+      stones: this.view.ocean.interactiveWaves?.stones(this.clock.time).map(({ time, disturbance: d }): Stone => [time, d.x, d.z, d.radius, d.height]) ?? [],
+    });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (
-    checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params), x, z)
+    checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params, this.view.ocean.wakeWeight(x, z)), x, z)
   );
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   /** The panel's button: a stone at the point the camera orbits, the interactive waves turned on first if they are off. */
@@ -308,10 +325,18 @@ export class OceanApp {
     this.disturb(x, z, { radius: 1, height: 0.3 });
   }
 
+  /** A stone into the interactive waves; what is wrong with it, or raised, is said in a notice too (and bad arguments still throw). */
   disturb = (x: number, z: number, options: { radius?: number; height?: number } = {}): string[] => {
-    const notices = this.view.ocean.disturb(x, z, options);
+    let notices: Message[];
+    try {
+      notices = this.view.ocean.disturb(x, z, options);
+    } catch (error) {
+      if (error instanceof MessageError) this.notify(error.notice);
+      throw error;
+    }
+    for (const notice of notices) this.notify(notice);
     this.loop.requestRender();
-    return notices;
+    return notices.map((notice) => this.tr.message(notice));
   };
   stats = (): OceanStats => this.frameStats.summary(this.view.stats(), this.view.waves.twinStatus?.() ?? null);
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */

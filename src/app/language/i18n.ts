@@ -64,6 +64,10 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     underwaterLoadFailed: () => 'The underwater effects (water fog, light shafts, blur) could not be downloaded; the sea is drawn from below without them. Reload the page to try again.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" is not one of ${v.allowed}; using "${v.fallback}".`,
     panelLoadFailed: () => 'The control panel could not be downloaded; the ocean runs without it. Reload the page to try again.',
+    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} is not a number of metres within [${v.min}, ${v.max}]; no stone was dropped.`,
+    disturbRadiusRaised: (v) => `disturb: a radius of ${v.radius} m is less than one texel of the interactive waves; raised to ${v.raised} m.`,
+    disturbFieldOff: () => 'disturb: the interactive waves are off; switch them on first (interactiveWaves).',
+    stonesInvalid: (v) => `"stones=${v.text}" is not a list of stones t,x,z,radius,height (seconds, metres) in range; those were left out.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -101,6 +105,10 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     underwaterLoadFailed: () => 'No se pudieron descargar los efectos bajo el agua (niebla, rayos de luz, desenfoque); el mar se ve desde abajo sin ellos. Recarga la página para intentarlo de nuevo.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" no es uno de ${v.allowed}; se usa "${v.fallback}".`,
     panelLoadFailed: () => 'No se pudo descargar el panel de controles; el océano sigue sin él. Recarga la página para intentarlo de nuevo.',
+    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} no es un número de metros en [${v.min}, ${v.max}]; no se ha tirado ninguna piedra.`,
+    disturbRadiusRaised: (v) => `disturb: un radio de ${v.radius} m es menor que un texel de las olas interactivas; se sube a ${v.raised} m.`,
+    disturbFieldOff: () => 'disturb: las olas interactivas están apagadas; enciéndelas primero (interactiveWaves).',
+    stonesInvalid: (v) => `"stones=${v.text}" no es una lista de piedras t,x,z,radio,altura (segundos, metros) dentro de rango; se han omitido.`,
   },
 };
 
@@ -277,6 +285,8 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   wakeStrength: 'Intensidad de la estela',
   wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
   interactiveWaves: 'Olas interactivas (iWave)',
+  iwaveEquation: 'Olas interactivas: ecuación',
+  iwaveGuide: 'Anillos donde la teoría pone las crestas',
   lodDistance: 'Distancia de LOD L',
   lodBands: 'Bandas de LOD',
   lodColors: 'Colorear parcelas por banda',

@@ -9,6 +9,7 @@ import type { WakeUniformData } from '../../sim/wake/wakeUniformData';
 import { modelsDrawn, modelsMissing } from '../waves/waveViewRegistry';
 import type { ProbeSample, SurfaceProbe } from '../teaching/surfaceProbe';
 import type { HeightmapView } from '../teaching/heightmapView';
+import type { StoneGuideView } from '../iwave/stoneGuideView';
 import { SceneLights } from '../sky/sceneLights';
 import { KelvinGuideView } from '../wake/kelvinGuideView';
 import type { CompareRenderer } from '../compare/compareRenderer';
@@ -19,6 +20,11 @@ import type { ChunkStats } from '../lod/oceanChunks';
 import { DEFAULT_NEAR } from './nearPlane';
 import { CAMERA_FAR, EyeClearance } from './eyeClearance';
 import { Ocean } from './ocean';
+import type { BoatInField } from '../iwave/interactiveWaves';
+import type { HeightAt } from '../../sim/boat/boatPose';
+
+/** The interactive waves' heights as they stand beside a hull placed so. */
+export type FieldBeside = (hull: { x: number; z: number; heading: number; length: number; beam: number }) => HeightAt;
 
 export interface RenderStats extends ChunkStats {
   drawCalls: number;
@@ -63,6 +69,9 @@ export class OceanView {
   private heightmapCode?: typeof import('../teaching/heightmapView');
   private heightmapLoad?: Promise<void>;
   private probe?: SurfaceProbe;
+  private stoneGuide?: StoneGuideView;
+  private stoneGuideCode?: typeof import('../iwave/stoneGuideView');
+  private stoneGuideLoad?: Promise<void>;
   private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, farCellsVisible: 0, lodCounts: [], underwater: false, submersion: 'above', composerPasses: 0 };
 
   /**
@@ -116,6 +125,16 @@ export class OceanView {
     if (changed(...LOOK_KEYS)) this.compare?.applyLook(params);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor')) this.lights.update(sunDirection(params.sunElevation, params.sunAzimuth), params.waterColor);
     if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
+    // The stones' guide rings' code is fetched the first time they are asked for.
+    if (params.iwaveGuide) {
+      this.stoneGuideLoad ??= import('../iwave/stoneGuideView').then(
+        (code) => {
+          this.stoneGuideCode = code;
+          if (!this.disposed) this.redraw();
+        },
+        (error: unknown) => console.warn('Oceano: the guide rings\' code could not be loaded.', error),
+      );
+    }
     // The heightmap view's code is fetched the first time it is shown; until then the frame is clear.
     if (this.showHeightmaps) {
       this.heightmapLoad ??= import('../teaching/heightmapView').then(
@@ -132,6 +151,17 @@ export class OceanView {
   setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
     this.ocean.setWake(data, bound);
     this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
+  }
+
+  /** The boat for the interactive waves this frame (Ocean.setBoat). */
+  setBoat(boat: BoatInField | null): void {
+    this.ocean.setBoat(boat);
+  }
+
+  /** The interactive waves as a hull feels them (InteractiveWaves.beside), while they run; else null. */
+  fieldBeside(): FieldBeside | null {
+    const field = this.ocean.interactiveWaves;
+    return field ? (hull) => field.beside(hull) : null;
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -179,11 +209,15 @@ export class OceanView {
     if (strips && this.compare) this.compare.cull(strips, camera);
     else ocean.cull(camera);
     ocean.shade(camera);
+    if (this.stoneGuideCode) {
+      this.stoneGuide ??= new this.stoneGuideCode.StoneGuideView(this.scene);
+      this.stoneGuide.update(this.params.iwaveGuide, ocean.interactiveWaves, time, this.params.iwaveEquation);
+    }
   }
 
   /** Settles once every part asked for so far (the underwater passes, the compare code, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad]).then(() => undefined);
+    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad, this.stoneGuideLoad]).then(() => undefined);
   }
 
   /**
@@ -253,7 +287,8 @@ export class OceanView {
   async probeSurface(points: readonly (readonly [number, number])[], time: number): Promise<ProbeSample[]> {
     const frameTime = this.ocean.time;
     const { SurfaceProbe } = await import('../teaching/surfaceProbe');
-    this.probe ??= new SurfaceProbe(this.renderer, this.ocean.binding, this.ocean.wakeUniforms);
+    this.probe ??= new SurfaceProbe(this.renderer, this.ocean.binding, this.ocean.wakeUniforms, this.ocean.interactiveWaveUniforms);
+    this.probe.setInteractiveWavesOn(this.ocean.interactiveWaves !== null);
     this.ocean.waveModelView.update(time);
     try {
       return this.probe.probe(points);
@@ -272,6 +307,7 @@ export class OceanView {
     this.compare?.dispose();
     this.probe?.dispose();
     this.heightmapView?.dispose();
+    this.stoneGuide?.dispose();
     this.underwater.dispose();
     this.kelvinGuide.dispose();
     this.customSky?.dispose();
