@@ -65,6 +65,10 @@ float iwaveTint(vec2 slope) {
   return IWAVE_TINT_STRENGTH * smoothstep(IWAVE_TINT_FROM, IWAVE_FOAM_FROM, length(slope));
 }
 
+vec3 iwaveTinted(vec3 water, vec2 slope) {
+  return mix(water, IWAVE_CREST_COLOR, iwaveTint(slope));
+}
+
 float iwaveFoam(vec2 slope) {
   return smoothstep(IWAVE_FOAM_FROM, IWAVE_STOKES_SLOPE, length(slope));
 }

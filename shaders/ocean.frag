@@ -73,14 +73,9 @@ float withWakeFoam(float foam) { return foam; }
 #endif
 #ifdef OCEAN_IWAVE
 // The interactive field's steep water: paler, greener where light crosses a thin crest, and
-// foam as a wave nears Stokes's limit (src/sim/iwave/steepnessTint.ts).
+// foam as a wave nears Stokes's limit (src/sim/iwave/steepnessTint.ts, shaders/iwave.glsl).
 #include <oceano_iwave>
 varying vec2 vIWaveSlope;
-vec3 withFieldTint(vec3 water) { return mix(water, IWAVE_CREST_COLOR, iwaveTint(vIWaveSlope)); }
-float withFieldFoam(float foam) { return max(foam, iwaveFoam(vIWaveSlope)); }
-#else
-vec3 withFieldTint(vec3 water) { return water; }
-float withFieldFoam(float foam) { return foam; }
 #endif
 
 // The sun's highlight: a narrow lobe around the direction that brings the sun to the eye, of
@@ -280,7 +275,9 @@ void main() {
 #else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
 #endif
-  water = withFieldTint(water);
+#ifdef OCEAN_IWAVE
+  water = iwaveTinted(water, vIWaveSlope);
+#endif
   vec3 color = mix(water, sky, reflectance);
 
   vec3 halfway = normalize(uSunDirection + v);
@@ -297,7 +294,10 @@ void main() {
   foam = waveFoamNear(vRelativeGridXZ);
 #endif
   // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
-  foam = withFieldFoam(withWakeFoam(foam));
+  foam = withWakeFoam(foam);
+#ifdef OCEAN_IWAVE
+  foam = max(foam, iwaveFoam(vIWaveSlope));
+#endif
   if (foam > 0.0) {
     float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
     color = mix(color, FOAM_COLOR * foamLight, foam);

@@ -23,10 +23,7 @@ import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waves/wave
 import { COMPARE_OFF } from '../sim/compare/compareLayout';
 import { findLesson, lessonIds, lessonView } from './lessons/lessonCatalog';
 import { LessonHost } from './lessons/lessonHost';
-import type { Stone } from './url/presets';
 
-/** Stones as the ocean records them, `after` seconds later than they say. */
-const stoneRecords = (stones: readonly Stone[], after = 0) => stones.map(([time, x, z, radius, height]) => ({ time: time + after, disturbance: { x, z, radius, height } }));
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -97,7 +94,7 @@ export class OceanApp {
     performance.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
-    this.view.ocean.recordStones(stoneRecords(state.stones));
+    this.view.ocean.recordStones(state.stones);
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
       this.orbit.setPose(state.cullingCamera);
       this.view.update(this.clock.time);
@@ -219,7 +216,7 @@ export class OceanApp {
   renderFrame(sync = this.frameStats.loopShouldSync(), first = false): void {
     if (this.context?.lost) return;
     const start = performance.now();
-    this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view, this.view.fieldBeside());
+    this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view, this.view.ocean);
     const boatEnd = performance.now();
     if (first) performance.mark('oceano:first-boat-update');
     this.view.update(this.clock.time);
@@ -277,7 +274,7 @@ export class OceanApp {
     if (this.started) {
       this.orbit.setPose(camera);
       // Its stones fall from now on, as the lesson opens.
-      this.view.ocean.recordStones(stoneRecords(stones, this.clock.time));
+      this.view.ocean.recordStones(stones, this.clock.time);
     }
     void this.lessons?.show(lesson.id);
     return true;
@@ -311,7 +308,7 @@ export class OceanApp {
       boatState: this.boatMotion.snapshot(this.clock.time),
       wakeTrack: this.boatMotion.wakeText(this.clock.time),
       lesson: this.lesson(),
-      stones: this.view.ocean.interactiveWaves?.stones(this.clock.time).map(({ time, disturbance: d }): Stone => [time, d.x, d.z, d.radius, d.height]) ?? [],
+      stones: this.view.ocean.interactiveWaves?.stones(this.clock.time),
     });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (

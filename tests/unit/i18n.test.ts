@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { paramKeys } from '../../src/sim/params/params';
 import { message, MESSAGE_IDS, type MessageId } from '../../src/sim/params/message';
-import { preferredLanguage, SPANISH_PARAM_LABELS, Translator } from '../../src/app/language/i18n';
+import { preferredLanguage, Translator } from '../../src/app/language/i18n';
+import { paramLabel, SPANISH_PARAM_LABELS } from '../../src/app/language/paramLabels';
 import { parseUrlState } from '../../src/app/url/urlState';
 
 /** Values that carry English text, which only the English notice repeats. */
@@ -20,9 +21,9 @@ describe('language', () => {
     const en = new Translator('en');
     for (const key of paramKeys) {
       expect(SPANISH_PARAM_LABELS[key], key).toBeTruthy();
-      expect(es.paramLabel(key)).toBe(SPANISH_PARAM_LABELS[key]);
+      expect(paramLabel(es, key)).toBe(SPANISH_PARAM_LABELS[key]);
     }
-    expect(es.paramLabel('swellAmplitude')).not.toBe(en.paramLabel('swellAmplitude'));
+    expect(paramLabel(es, 'swellAmplitude')).not.toBe(paramLabel(en, 'swellAmplitude'));
   });
 
   it('renders every notice of a bad URL in both languages, with its values in it', () => {

@@ -4,7 +4,8 @@ import type { OceanParams } from '../../sim/params/params';
 import type { LiveWaveModel } from '../../sim/waves/waveModel';
 import type { BoatView } from '../../render/boat/boatView';
 import type { BoatModel } from '../../render/boat/boatModel';
-import type { FieldBeside, OceanView } from '../../render/ocean/oceanView';
+import type { OceanView } from '../../render/ocean/oceanView';
+import type { Ocean } from '../../render/ocean/ocean';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import { addWake, BoatWake, WAKE_HULL, wakeHeightBound } from '../../sim/wake/boatWake';
 import type { WakeTrack } from '../../sim/wake/wakeTrack';
@@ -63,9 +64,10 @@ export class BoatController {
    * following, carries the camera along. Then records the boat into its wake and hands the
    * wake and the hull for this frame to `view`.
    */
-  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake' | 'setBoat'>, field: FieldBeside | null = null): void {
+  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>, ocean?: Pick<Ocean, 'setBoat' | 'interactiveWaves'>): void {
     const previous = this.state?.pose;
     const model = (x: number, z: number) => waves.height(x, z, time);
+    const field = ocean?.interactiveWaves;
     this.state = this.motion.update(
       time,
       { heading: params.boatHeading * DEG, speed: params.boatSpeed, response: params.boatResponse },
@@ -74,7 +76,7 @@ export class BoatController {
       waves,
       // With the interactive waves on, the boat rides them too, as they stand beside its hull.
       field ? (x, z, heading) => {
-        const beside = field({ x, z, heading, ...WAKE_HULL });
+        const beside = field.beside({ x, z, heading, ...WAKE_HULL });
         return (px, pz) => model(px, pz) + beside(px, pz);
       } : undefined,
     );
@@ -84,7 +86,7 @@ export class BoatController {
     this.wake.record(time, { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, turnRate: params.boatTurnRate * DEG });
     const data = this.wake.uniforms(time, { enabled: params.wake, strength: params.wakeStrength });
     view.setWake(data, wakeHeightBound(data), { visible: params.wake && params.wakeGuide, x: pose.x, y: 0.05, z: pose.z, heading: pose.heading });
-    view.setBoat({ hull: { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, ...WAKE_HULL, strength: params.wakeStrength }, turnRate: params.boatTurnRate * DEG, time, wake: params.wake });
+    ocean?.setBoat({ hull: { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, ...WAKE_HULL, strength: params.wakeStrength }, turnRate: params.boatTurnRate * DEG, time, wake: params.wake });
   }
 
   /**

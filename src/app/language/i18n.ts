@@ -1,4 +1,4 @@
-import { paramDefs, type OceanParams, type ParamKey } from '../../sim/params/params';
+import type { OceanParams } from '../../sim/params/params';
 import type { Message, MessageId, MessageValues } from '../../sim/params/message';
 
 export const LANGUAGES = ['en', 'es'] as const;
@@ -64,10 +64,10 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     underwaterLoadFailed: () => 'The underwater effects (water fog, light shafts, blur) could not be downloaded; the sea is drawn from below without them. Reload the page to try again.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" is not one of ${v.allowed}; using "${v.fallback}".`,
     panelLoadFailed: () => 'The control panel could not be downloaded; the ocean runs without it. Reload the page to try again.',
-    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} is not a number of metres within [${v.min}, ${v.max}]; no stone was dropped.`,
-    disturbRadiusRaised: (v) => `disturb: a radius of ${v.radius} m is less than one texel of the interactive waves; raised to ${v.raised} m.`,
-    disturbFieldOff: () => 'disturb: the interactive waves are off; switch them on first (interactiveWaves).',
-    stonesInvalid: (v) => `"stones=${v.text}" is not a list of stones t,x,z,radius,height (seconds, metres) in range; those were left out.`,
+    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} is not in [${v.min}, ${v.max}] m; no stone dropped.`,
+    disturbRadiusRaised: (v) => `disturb: radius ${v.radius} m is under one texel; raised to ${v.raised} m.`,
+    disturbFieldOff: () => 'disturb: the interactive waves are off.',
+    stonesInvalid: (v) => `"stones=${v.text}" is not a list of t,x,z,radius,height in range; no stones.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -105,10 +105,10 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     underwaterLoadFailed: () => 'No se pudieron descargar los efectos bajo el agua (niebla, rayos de luz, desenfoque); el mar se ve desde abajo sin ellos. Recarga la página para intentarlo de nuevo.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" no es uno de ${v.allowed}; se usa "${v.fallback}".`,
     panelLoadFailed: () => 'No se pudo descargar el panel de controles; el océano sigue sin él. Recarga la página para intentarlo de nuevo.',
-    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} no es un número de metros en [${v.min}, ${v.max}]; no se ha tirado ninguna piedra.`,
-    disturbRadiusRaised: (v) => `disturb: un radio de ${v.radius} m es menor que un texel de las olas interactivas; se sube a ${v.raised} m.`,
-    disturbFieldOff: () => 'disturb: las olas interactivas están apagadas; enciéndelas primero (interactiveWaves).',
-    stonesInvalid: (v) => `"stones=${v.text}" no es una lista de piedras t,x,z,radio,altura (segundos, metros) dentro de rango; se han omitido.`,
+    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} no está en [${v.min}, ${v.max}] m; no se tira la piedra.`,
+    disturbRadiusRaised: (v) => `disturb: el radio ${v.radius} m es menor que un texel; se sube a ${v.raised} m.`,
+    disturbFieldOff: () => 'disturb: las olas interactivas están apagadas.',
+    stonesInvalid: (v) => `"stones=${v.text}" no es una lista de t,x,z,radio,altura en rango; sin piedras.`,
   },
 };
 
@@ -239,70 +239,6 @@ const UI: Record<Language, Record<UiTextId, string>> = {
   },
 };
 
-/**
- * Spanish labels of the parameters; English ones live next to each definition in
- * params.ts. Typed as a full record, so a parameter without one does not compile.
- */
-export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
-  waves: 'Modelo de olas',
-  compare: 'Comparar modelos lado a lado',
-  compareSplit: 'Comparar: primer divisor',
-  compareSplit2: 'Comparar: segundo divisor',
-  windSpeed: 'Velocidad del viento U10',
-  windDirection: 'Dirección del viento',
-  spectrum: 'Espectro de oleaje',
-  fetch: 'Fetch (JONSWAP)',
-  depth: 'Profundidad (dispersión)',
-  spreading: 'Dispersión direccional s (cos-2s)',
-  spreadingModel: 'Modelo de dispersión direccional',
-  choppiness: 'Crestas afiladas λ',
-  fftSize: 'Tamaño de la FFT',
-  foam: 'Espuma',
-  foamThreshold: 'Sesgo del umbral de espuma (jacobiano)',
-  normalsCompare: 'Comparar normales de pendiente | fabricadas',
-  seed: 'Semilla del ruido',
-  swellAmplitude: 'Amplitud del oleaje',
-  swellFrequency: 'Frecuencia del oleaje',
-  rippleStrength: 'Intensidad de las ondas',
-  rippleBlendSpeed: 'Velocidad de mezcla de las ondas',
-  sunElevation: 'Elevación del sol',
-  sunAzimuth: 'Acimut del sol',
-  waterColor: 'Color del agua profunda',
-  fresnel: 'Fresnel',
-  wireframe: 'Malla de alambre',
-  shading: 'Sombreado',
-  normals: 'Normales',
-  view: 'Vista',
-  fresnelPlot: 'Gráfico de Fresnel',
-  timeScale: 'Velocidad (escala de tiempo)',
-  physics: 'Panel de física',
-  boatSpeed: 'Velocidad del barco',
-  boatHeading: 'Rumbo del barco',
-  boatResponse: 'Tiempo de respuesta de flotación',
-  boatFollow: 'La cámara sigue al barco',
-  boatTurnRate: 'Velocidad de giro del barco',
-  wake: 'Estela de Kelvin',
-  wakeStrength: 'Intensidad de la estela',
-  wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
-  interactiveWaves: 'Olas interactivas (iWave)',
-  iwaveEquation: 'Olas interactivas: ecuación',
-  iwaveGuide: 'Anillos donde la teoría pone las crestas',
-  lodDistance: 'Distancia de LOD L',
-  lodBands: 'Bandas de LOD',
-  lodColors: 'Colorear parcelas por banda',
-  lodMorph: 'Geomorfismo (transición suave entre bandas)',
-  freezeCulling: 'Congelar el recorte',
-  lodBruteForce: 'Fuerza bruta (malla completa, sin recorte)',
-  blurStrength: 'Desenfoque bajo el agua (σ)',
-  fogDensity: 'Densidad de la niebla del agua',
-  seaBedDepth: 'Profundidad del fondo',
-  caustics: 'Cáusticas',
-  causticsIntensity: 'Intensidad de las cáusticas',
-  godRays: 'Rayos de luz',
-  godRaysIntensity: 'Intensidad de los rayos de luz',
-  gerstnerCount: 'Ondas de Gerstner',
-  gerstnerSteepness: 'Pendiente de Gerstner Q',
-};
 
 /** What the canvas shows, for its aria-label: it follows the teaching view. */
 export function canvasLabel(tr: Translator, params: Pick<OceanParams, 'view' | 'shading'>): string {
@@ -320,9 +256,5 @@ export class Translator {
 
   ui(id: UiTextId): string {
     return UI[this.language][id];
-  }
-
-  paramLabel(key: ParamKey): string {
-    return this.language === 'es' ? SPANISH_PARAM_LABELS[key] : paramDefs[key].label;
   }
 }

@@ -9,6 +9,7 @@ import { LESSON_TITLES, SECTION_NAMES, outlined, type OutlinedLesson } from './l
 import type { LessonHooks } from './lessonHooks';
 import { LESSON_TEXTS } from './lessonTexts';
 import { LessonLegend } from './lessonLegend';
+import { paramLabel } from '../language/paramLabels';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -226,7 +227,7 @@ export class LessonDrawer {
     const def: ParamDef = paramDefs[key];
     const row = element('label', 'oceano-lesson-control');
     const unit = 'unit' in def && def.unit ? ` (${def.unit})` : '';
-    row.append(element('span', 'oceano-lesson-control-name', `${this.tr.paramLabel(key)}${unit}`));
+    row.append(element('span', 'oceano-lesson-control-name', `${paramLabel(this.tr, key)}${unit}`));
     let field: HTMLInputElement | HTMLSelectElement;
     let output: HTMLOutputElement | null = null;
     const emit = (value: OceanParams[ParamKey]) => this.hooks.onParam(key, value);

@@ -5,6 +5,7 @@ import { teachingWord } from '../language/teachingWords';
 import { froudeNumber } from '../../sim/wake/kelvinWake';
 import { WAKE_HULL } from '../../sim/wake/boatWake';
 import { unreadParams } from './modelScope';
+import { paramLabel } from '../language/paramLabels';
 
 const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
@@ -107,7 +108,7 @@ export class ControlPanel {
 
   private addControl(group: GUI, key: ParamKey, hooks: ControlPanelHooks): Controller {
     const def: ParamDef = paramDefs[key];
-    const label = this.tr.paramLabel(key);
+    const label = paramLabel(this.tr, key);
     const emit = (value: OceanParams[ParamKey]) => hooks.onParam(key, value);
     if (def.kind === 'color') return group.addColor(this.model, key).name(label).onChange(emit);
     if (def.kind === 'boolean') return group.add(this.model, key).name(label).onChange(emit);

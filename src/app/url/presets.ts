@@ -1,8 +1,9 @@
 import type { OceanParams } from '../../sim/params/params';
 import { DEFAULT_CAMERA, type CameraPose } from '../camera/cameraPose';
 
-/** A stone for the interactive waves: [time s, x m, z m, radius m, height m]. */
-export type Stone = readonly [time: number, x: number, z: number, radius: number, height: number];
+import type { Stone } from '../../sim/iwave/iwaveGrid';
+
+export type { Stone };
 
 /** A named view for a course page: a few parameters changed from the defaults and a camera. */
 export interface Preset {

@@ -7,7 +7,7 @@ import { BOAT_EXTENT, type BoatSnapshot } from '../../sim/boat/boatMotion';
 import { findPreset, presetNames } from './presets';
 import { findLesson, lessonIds, lessonView } from '../lessons/lessonCatalog';
 import { WakeTrack } from '../../sim/wake/wakeTrack';
-import { checkDisturbance } from '../../sim/iwave/disturbanceChecks';
+import { IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS } from '../../sim/iwave/fieldSize';
 import type { Stone } from './presets';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
@@ -200,21 +200,14 @@ export function formatStones(stones: readonly Stone[]): string {
 }
 
 /**
- * Stones as a link writes them: each five finite numbers, a time as the URL's t takes and a
- * disturbance as disturb() takes (a radius under one texel raised, as there); null if any is not.
+ * Stones as a link writes them: each five numbers, a time as the URL's t takes, a place within
+ * ±1e6 m, a radius and height as disturb() takes (a radius under one texel is raised when the
+ * stone falls); null if any is not.
  */
 export function parseStones(text: string): Stone[] | null {
   if (text.trim() === '') return [];
-  const stones: Stone[] = [];
-  for (const part of text.split(';')) {
-    const n = part.split(',').map((p) => (p.trim() === '' ? NaN : Number(p)));
-    if (n.length !== 5 || !isValidTime(n[0])) return null;
-    try {
-      const { disturbance: d } = checkDisturbance(n[1], n[2], { radius: n[3], height: n[4] });
-      stones.push([n[0], d.x, d.z, d.radius, d.height]);
-    } catch {
-      return null;
-    }
-  }
-  return stones;
+  const stones = text.split(';').map((part) => part.split(',').map((p) => (p.trim() === '' ? NaN : Number(p))));
+  const fair = ([t, x, z, r, h, ...rest]: number[]) =>
+    rest.length === 0 && isValidTime(t) && Math.abs(x) <= 1e6 && Math.abs(z) <= 1e6 && r > 0 && r <= IWAVE_MAX_RADIUS && Math.abs(h) <= IWAVE_MAX_HEIGHT;
+  return stones.every(fair) ? (stones as unknown as Stone[]) : null;
 }

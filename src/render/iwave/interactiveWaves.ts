@@ -1,7 +1,8 @@
 import type { WebGLRenderer } from 'three';
 import { GpuIWave } from './gpuIWave';
 import { IWAVE_DAMPING, IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, equationKernels, sampleField, type DisturbanceOptions, type FieldSnapshot, type IWaveEquation } from '../../sim/iwave/interactiveField';
-import type { Disturbance } from '../../sim/iwave/iwaveGrid';
+import type { Disturbance, Stone } from '../../sim/iwave/iwaveGrid';
+import { StoneGuideView } from './stoneGuideView';
 import { besideHull, hullEarlier, type MovingHull } from '../../sim/iwave/movingHull';
 import type { HeightAt } from '../../sim/boat/boatPose';
 import { handOverDistance, handOverWeights, type HandOver } from '../../sim/iwave/kelvinHandOver';
@@ -49,6 +50,9 @@ export class InteractiveWaves {
   private boat: BoatInField | null = null;
   private handOver: HandOver | null = null;
   private equation: IWaveEquation = 'dispersive';
+  private guideShown = false;
+  /** The iwaveGuide overlay's rings (the Ocean holds its lines). */
+  readonly guide = new StoneGuideView();
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -71,6 +75,11 @@ export class InteractiveWaves {
     const { kernel, rightKernel } = equationKernels(equation);
     this.field.setKernels(kernel, rightKernel);
     this.replay();
+  }
+
+  /** Whether the guide rings are drawn round the stones. */
+  setGuide(shown: boolean): void {
+    this.guideShown = shown;
   }
 
   /** The boat this frame, or null: from the next step on it stands in the field and pushes water. */
@@ -97,6 +106,7 @@ export class InteractiveWaves {
     }
     const boat = this.boat;
     this.handOver = boat?.wake ? { x: boat.hull.x, z: boat.hull.z, distance: handOverDistance(Math.abs(boat.hull.speed), boat.hull.length) } : null;
+    this.guide.update(this.guideShown, this.guideShown ? this.stones(time, StoneGuideView.steps) : [], time, this.equation, this.field.centerX);
     this.publish();
   }
 
@@ -124,11 +134,18 @@ export class InteractiveWaves {
   }
 
   /**
-   * Stones from a record (a share link's, a preset's), each at `time` seconds: entered in the
+   * Stones from a record (a share link's, a preset's), each at its own time plus `after`
+   * seconds: checked as disturb() checks them (one out of range is left out), entered in the
    * log, and the field replayed from calm at its next advance so that it holds them.
    */
-  record(stones: readonly { time: number; disturbance: Disturbance }[]): void {
-    for (const { time, disturbance } of stones) this.log.push({ step: Math.round(time / IWAVE_STEP), disturbance });
+  record(stones: readonly Stone[], after = 0): void {
+    for (const [time, x, z, radius, height] of stones) {
+      try {
+        this.log.push({ step: Math.round((time + after) / IWAVE_STEP), disturbance: checkDisturbance(x, z, { radius, height }).disturbance });
+      } catch {
+        continue;
+      }
+    }
     this.replay();
   }
 
@@ -136,9 +153,9 @@ export class InteractiveWaves {
    * The stones dropped in the `within` steps up to `time`, with their times: by default those
    * a replay still runs (the catch-up bound), what a share link carries.
    */
-  stones(time: number, within = IWAVE_CATCH_UP_STEPS): { time: number; disturbance: Disturbance }[] {
+  stones(time: number, within = IWAVE_CATCH_UP_STEPS): Stone[] {
     const now = Math.floor(time / IWAVE_STEP + 1e-9);
-    return this.log.filter((entry) => entry.step <= now && entry.step >= now - within).map((entry) => ({ time: entry.step * IWAVE_STEP, disturbance: { ...entry.disturbance } }));
+    return this.log.filter((entry) => entry.step <= now && entry.step >= now - within).map(({ step, disturbance: d }) => [step * IWAVE_STEP, d.x, d.z, d.radius, d.height]);
   }
 
   /**
@@ -210,6 +227,7 @@ export class InteractiveWaves {
 
   dispose(): void {
     this.field.dispose();
+    this.guide.dispose();
     this.uniforms.uIWaveField.value = null;
   }
 }

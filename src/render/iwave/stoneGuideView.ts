@@ -1,9 +1,9 @@
-import { BufferAttribute, BufferGeometry, LineBasicMaterial, LineSegments, type Scene } from 'three';
+import { BufferAttribute, BufferGeometry, LineBasicMaterial, LineSegments } from 'three';
 import { crestRadii, waveFrontRadius } from '../../sim/iwave/cauchyPoissonRings';
 import { IWAVE_GRID_SIZE, IWAVE_SPACING, WAVE_EQUATION_SPEED, type IWaveEquation } from '../../sim/iwave/interactiveField';
 import { IWAVE_KERNEL_BAND } from '../../sim/iwave/verticalDerivativeKernel';
 import { IWAVE_SPONGE } from '../../sim/iwave/iwaveGrid';
-import type { InteractiveWaves } from './interactiveWaves';
+import type { Stone } from '../../sim/iwave/iwaveGrid';
 
 /** Segments per ring, stones and rings per stone drawn at most. */
 const SEGMENTS = 96;
@@ -23,36 +23,39 @@ export class StoneGuideView {
   private readonly positions = new Float32Array(MAX_STONES * MAX_RINGS * SEGMENTS * 6);
   private readonly geometry = new BufferGeometry();
   private readonly material = new LineBasicMaterial({ color: 0xffd23f, depthTest: false, transparent: true, opacity: 0.85 });
-  private readonly lines: LineSegments;
+  /** The lines, in world coordinates: add them to the scene (the Ocean holds them). */
+  readonly lines: LineSegments;
 
-  constructor(private readonly scene: Scene) {
+  constructor() {
     this.geometry.setAttribute('position', new BufferAttribute(this.positions, 3));
     this.lines = new LineSegments(this.geometry, this.material);
     this.lines.name = 'StoneGuide';
     this.lines.renderOrder = 10;
     this.lines.frustumCulled = false;
+    this.lines.matrixAutoUpdate = false;
     this.lines.visible = false;
-    scene.add(this.lines);
   }
 
-  /** The rings of the stones in `field` at `time`, or none. */
-  update(visible: boolean, field: InteractiveWaves | null, time: number, equation: IWaveEquation): void {
-    this.lines.visible = visible && field !== null;
-    if (!this.lines.visible || !field) return;
+  /** How long a stone keeps its rings, in steps. */
+  static readonly steps = GUIDE_STEPS;
+
+  /** The rings of `stones` at `time`, the field centred at x = `centreX` (side by side: which half a stone is in), or none. */
+  update(visible: boolean, stones: readonly Stone[], time: number, equation: IWaveEquation, centreX: number): void {
+    this.lines.visible = visible;
+    if (!visible) return;
     const [kMin, kMax] = IWAVE_KERNEL_BAND.map((k) => k / IWAVE_SPACING);
     // Rings stop where the sponge starts: past it the field is being absorbed.
     const open = (0.5 * IWAVE_GRID_SIZE - IWAVE_SPONGE.width) * IWAVE_SPACING;
-    const centreX = field.field.centerX;
     let count = 0;
-    for (const { time: dropped, disturbance: stone } of field.stones(time, GUIDE_STEPS).slice(-MAX_STONES)) {
+    for (const [dropped, x, z] of stones.slice(-MAX_STONES)) {
       const age = time - dropped;
-      const wave = equation === 'non-dispersive' || (equation === 'side-by-side' && stone.x >= centreX);
+      const wave = equation === 'non-dispersive' || (equation === 'side-by-side' && x >= centreX);
       const radii = wave ? [waveFrontRadius(age, WAVE_EQUATION_SPEED)].filter((r) => r > 0 && r <= open) : crestRadii(age, { kMin, kMax, maxRadius: open });
       for (const r of radii.slice(0, MAX_RINGS)) {
         for (let s = 0; s < SEGMENTS; s++) {
           const a = (2 * Math.PI * s) / SEGMENTS;
           const b = (2 * Math.PI * (s + 1)) / SEGMENTS;
-          this.positions.set([stone.x + r * Math.cos(a), LIFT, stone.z + r * Math.sin(a), stone.x + r * Math.cos(b), LIFT, stone.z + r * Math.sin(b)], count * 6);
+          this.positions.set([x + r * Math.cos(a), LIFT, z + r * Math.sin(a), x + r * Math.cos(b), LIFT, z + r * Math.sin(b)], count * 6);
           count++;
         }
       }
@@ -62,7 +65,7 @@ export class StoneGuideView {
   }
 
   dispose(): void {
-    this.scene.remove(this.lines);
+    this.lines.removeFromParent();
     this.geometry.dispose();
     this.material.dispose();
   }

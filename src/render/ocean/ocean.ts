@@ -24,7 +24,7 @@ import type { BoatInField, InteractiveWaves } from '../iwave/interactiveWaves';
 import { createInteractiveWaveUniforms } from '../iwave/interactiveWaveUniforms';
 import { IWAVE_MAX_HEIGHT } from '../../sim/iwave/fieldSize';
 import type { DisturbanceOptions } from '../../sim/iwave/disturbanceChecks';
-import type { Disturbance } from '../../sim/iwave/iwaveGrid';
+import type { Stone } from '../../sim/iwave/iwaveGrid';
 import { message, MessageError, type Message } from '../../sim/params/message';
 import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
@@ -86,7 +86,7 @@ export class Ocean extends Object3D {
   private interactive: InteractiveWaves | null = null;
   private boat: BoatInField | null = null;
   /** Stones recorded while the interactive waves' code is on its way. */
-  private stonesDue: { time: number; disturbance: Disturbance }[] = [];
+  private stonesDue: Stone[] = [];
 
   /** `params`: any subset of the parameters (src/sim/params/params.ts), validated as the URL and the GUI validate them. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, options: OceanOptions = {}) {
@@ -213,6 +213,7 @@ export class Ocean extends Object3D {
     if (changed(...LOOK_KEYS)) applyLook(this.material, params);
     if (changed('interactiveWaves')) this.setInteractiveWaves(params.interactiveWaves);
     this.interactive?.setEquation(params.iwaveEquation);
+    this.interactive?.setGuide(params.iwaveGuide);
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
       this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
@@ -264,6 +265,8 @@ export class Ocean extends Object3D {
         if (!this.params.interactiveWaves || this.interactive || this.disposed) return;
         this.interactive = new InteractiveWaves(this.renderer, this.interactiveWaveUniforms);
         this.interactive.setEquation(this.params.iwaveEquation);
+        this.interactive.setGuide(this.params.iwaveGuide);
+        this.add(this.interactive.guide.lines);
         this.interactive.record(this.stonesDue);
         this.stonesDue = [];
         this.binding.addChunks({ oceano_iwave: iwaveChunk() });
@@ -291,10 +294,10 @@ export class Ocean extends Object3D {
     return this.interactive.disturb(x, z, options);
   }
 
-  /** Stones from a record (a share link's, a preset's), each at its own time in seconds: the field is replayed to hold them. */
-  recordStones(stones: readonly { time: number; disturbance: Disturbance }[]): void {
-    if (this.interactive) this.interactive.record(stones);
-    else this.stonesDue.push(...stones);
+  /** Stones from a record (a share link's, a preset's), each at its own time plus `after` seconds: the field is replayed to hold them. */
+  recordStones(stones: readonly Stone[], after = 0): void {
+    if (this.interactive) this.interactive.record(stones, after);
+    else for (const [time, ...rest] of stones) this.stonesDue.push([time + after, ...rest]);
   }
 
   /** The analytic wake's weight at world (x, z): 1 but where the interactive waves carry the boat's own (the hand-over). */

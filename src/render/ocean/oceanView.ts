@@ -9,9 +9,8 @@ import type { WakeUniformData } from '../../sim/wake/wakeUniformData';
 import { modelsDrawn, modelsMissing } from '../waves/waveViewRegistry';
 import type { ProbeSample, SurfaceProbe } from '../teaching/surfaceProbe';
 import type { HeightmapView } from '../teaching/heightmapView';
-import type { StoneGuideView } from '../iwave/stoneGuideView';
 import { SceneLights } from '../sky/sceneLights';
-import { KelvinGuideView } from '../wake/kelvinGuideView';
+import type { KelvinGuideView } from '../wake/kelvinGuideView';
 import type { CompareRenderer } from '../compare/compareRenderer';
 import type { Strip } from '../../sim/compare/compareLayout';
 import { compareModelNames } from '../../sim/compare/compareLayout';
@@ -20,11 +19,7 @@ import type { ChunkStats } from '../lod/oceanChunks';
 import { DEFAULT_NEAR } from './nearPlane';
 import { CAMERA_FAR, EyeClearance } from './eyeClearance';
 import { Ocean } from './ocean';
-import type { BoatInField } from '../iwave/interactiveWaves';
-import type { HeightAt } from '../../sim/boat/boatPose';
 
-/** The interactive waves' heights as they stand beside a hull placed so. */
-export type FieldBeside = (hull: { x: number; z: number; heading: number; length: number; beam: number }) => HeightAt;
 
 export interface RenderStats extends ChunkStats {
   drawCalls: number;
@@ -59,7 +54,9 @@ export class OceanView {
   readonly clearance = new EyeClearance();
   readonly underwater: UnderwaterStage;
   private readonly lights: SceneLights;
-  private readonly kelvinGuide: KelvinGuideView;
+  /** The ±19.47° guide, its code fetched the first time it is shown. */
+  private kelvinGuide?: KelvinGuideView;
+  private kelvinGuideLoad?: Promise<void>;
   /** A page's own cube map, loaded by the app: the view disposes it. */
   private customSky: CubeTexture | null;
   private params: OceanParams;
@@ -69,9 +66,7 @@ export class OceanView {
   private heightmapCode?: typeof import('../teaching/heightmapView');
   private heightmapLoad?: Promise<void>;
   private probe?: SurfaceProbe;
-  private stoneGuide?: StoneGuideView;
-  private stoneGuideCode?: typeof import('../iwave/stoneGuideView');
-  private stoneGuideLoad?: Promise<void>;
+
   private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, farCellsVisible: 0, lodCounts: [], underwater: false, submersion: 'above', composerPasses: 0 };
 
   /**
@@ -91,7 +86,6 @@ export class OceanView {
     this.ocean = new Ocean(this.renderer, params, customSky ? { sky: customSky } : {});
     this.scene.add(this.ocean.sky, this.ocean);
     this.lights = new SceneLights(this.scene);
-    this.kelvinGuide = new KelvinGuideView(this.scene);
     this.underwater = new UnderwaterStage(this.renderer, this.scene, this.camera, this.ocean, redraw, partFailed);
     this.applyParams(params);
   }
@@ -125,16 +119,6 @@ export class OceanView {
     if (changed(...LOOK_KEYS)) this.compare?.applyLook(params);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor')) this.lights.update(sunDirection(params.sunElevation, params.sunAzimuth), params.waterColor);
     if (changed('view')) this.showHeightmaps = params.view === 'heightmap';
-    // The stones' guide rings' code is fetched the first time they are asked for.
-    if (params.iwaveGuide) {
-      this.stoneGuideLoad ??= import('../iwave/stoneGuideView').then(
-        (code) => {
-          this.stoneGuideCode = code;
-          if (!this.disposed) this.redraw();
-        },
-        (error: unknown) => console.warn('Oceano: the guide rings\' code could not be loaded.', error),
-      );
-    }
     // The heightmap view's code is fetched the first time it is shown; until then the frame is clear.
     if (this.showHeightmaps) {
       this.heightmapLoad ??= import('../teaching/heightmapView').then(
@@ -150,18 +134,17 @@ export class OceanView {
   /** The boat's wake for the coming frame, its culling bound, and the ±19.47° teaching guide at the boat. */
   setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
     this.ocean.setWake(data, bound);
-    this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
-  }
-
-  /** The boat for the interactive waves this frame (Ocean.setBoat). */
-  setBoat(boat: BoatInField | null): void {
-    this.ocean.setBoat(boat);
-  }
-
-  /** The interactive waves as a hull feels them (InteractiveWaves.beside), while they run; else null. */
-  fieldBeside(): FieldBeside | null {
-    const field = this.ocean.interactiveWaves;
-    return field ? (hull) => field.beside(hull) : null;
+    if (guide.visible && !this.kelvinGuide) {
+      this.kelvinGuideLoad ??= import('../wake/kelvinGuideView').then(
+        ({ KelvinGuideView }) => {
+          if (this.disposed) return;
+          this.kelvinGuide = new KelvinGuideView(this.scene);
+          this.redraw();
+        },
+        (error: unknown) => console.warn('Oceano: the Kelvin guide\'s code could not be loaded.', error),
+      );
+    }
+    this.kelvinGuide?.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -209,15 +192,11 @@ export class OceanView {
     if (strips && this.compare) this.compare.cull(strips, camera);
     else ocean.cull(camera);
     ocean.shade(camera);
-    if (this.stoneGuideCode) {
-      this.stoneGuide ??= new this.stoneGuideCode.StoneGuideView(this.scene);
-      this.stoneGuide.update(this.params.iwaveGuide, ocean.interactiveWaves, time, this.params.iwaveEquation);
-    }
   }
 
   /** Settles once every part asked for so far (the underwater passes, the compare code, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad, this.stoneGuideLoad]).then(() => undefined);
+    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad, this.kelvinGuideLoad]).then(() => undefined);
   }
 
   /**
@@ -307,9 +286,8 @@ export class OceanView {
     this.compare?.dispose();
     this.probe?.dispose();
     this.heightmapView?.dispose();
-    this.stoneGuide?.dispose();
     this.underwater.dispose();
-    this.kelvinGuide.dispose();
+    this.kelvinGuide?.dispose();
     this.customSky?.dispose();
     this.renderer.dispose();
   }

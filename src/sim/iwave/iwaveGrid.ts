@@ -62,6 +62,9 @@ export interface Disturbance {
   height: number;
 }
 
+/** A disturbance at a simulation time, as presets and share links carry it: [time s, x m, z m, radius m, height m]. */
+export type Stone = readonly [time: number, x: number, z: number, radius: number, height: number];
+
 /** How far a bump reaches, in radii: past it the Gaussian is below 3.4·10⁻⁴ of its height and is cut. */
 export const BUMP_REACH = 2;
 
