@@ -71,6 +71,12 @@ float withWakeFoam(float foam) { return max(foam, vWakeFoam); }
 vec3 withWakeSlope(vec3 n) { return n; }
 float withWakeFoam(float foam) { return foam; }
 #endif
+#ifdef OCEAN_IWAVE
+// The interactive field's steep water: paler, greener where light crosses a thin crest, and
+// foam as a wave nears Stokes's limit (src/sim/iwave/steepnessTint.ts, shaders/iwave.glsl).
+#include <oceano_iwave>
+varying vec2 vIWaveSlope;
+#endif
 
 // The sun's highlight: a narrow lobe around the direction that brings the sun to the eye, of
 // the given sharpness (the cosine's power) and strength; none once the sun has set.
@@ -269,6 +275,9 @@ void main() {
 #else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
 #endif
+#ifdef OCEAN_IWAVE
+  water = iwaveTinted(water, vIWaveSlope);
+#endif
   vec3 color = mix(water, sky, reflectance);
 
   vec3 halfway = normalize(uSunDirection + v);
@@ -286,6 +295,9 @@ void main() {
 #endif
   // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
   foam = withWakeFoam(foam);
+#ifdef OCEAN_IWAVE
+  foam = max(foam, iwaveFoam(vIWaveSlope));
+#endif
   if (foam > 0.0) {
     float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
     color = mix(color, FOAM_COLOR * foamLight, foam);

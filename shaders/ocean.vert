@@ -64,6 +64,10 @@ varying vec2 vRelativeGridXZ;
 // The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
 varying vec2 vWakeSlope;
 varying float vWakeFoam;
+#ifdef OCEAN_IWAVE
+// The interactive field's own slope, for the tint and foam of its steep water (ocean.frag).
+varying vec2 vIWaveSlope;
+#endif
 
 // Integers, so the snapped vertex lands exactly on the neighbour's vertex.
 int snapEdge(int k, int step) {
@@ -125,13 +129,23 @@ void main() {
     vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
   }
   vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
+  // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
+  // the rest is small. So the relative position keeps its bits wherever the camera is.
+  vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
+#ifdef OCEAN_IWAVE
+  // Near the boat the interactive field carries its waves, farther out the analytic wake:
+  // (the wake's weight, the field's), each wave counted once (shaders/iwave.glsl).
+  vec2 handOver = iwaveHandOver(relativeGrid + d.xz, uRenderOrigin);
+#else
+  const vec2 handOver = vec2(1.0);
+#endif
   // The wake at the displaced point's own (x, z), so the height above a world point is the
   // model's plus the wake's there, as the CPU twin adds them (addWake). Off, nothing changes.
   vWakeSlope = vec2(0.0);
   vWakeFoam = 0.0;
 #ifdef OCEAN_WAKE
   if (uWakeCount >= 2) {
-    vec3 wake = wakeHeightAndGradient(world.xz);
+    vec3 wake = handOver.x * wakeHeightAndGradient(world.xz);
     world.y += wake.x;
     if (!uFlatNormals) vNormal = wakeTiltNormal(vNormal, wake.yz);
     vWakeSlope = wake.yz;
@@ -140,15 +154,14 @@ void main() {
 #endif
 #ifdef OCEAN_IWAVE
   // The interactive field at the displaced point, like the wake: its slope joins the wake's for
-  // ocean.frag's per-pixel normals (OCEAN_WAKE is compiled in alongside).
-  vec3 field = iwaveHeightAndGradient((aChunk.xy - uRenderOrigin) + morphed * aChunk.w + d.xz, uRenderOrigin);
+  // ocean.frag's per-pixel normals (OCEAN_WAKE is compiled in alongside), and on its own tints
+  // the steep water there.
+  vec3 field = handOver.y * iwaveHeightAndGradient(relativeGrid + d.xz, uRenderOrigin);
   world.y += field.x;
   if (!uFlatNormals) vNormal = wakeTiltNormal(vNormal, field.yz);
   vWakeSlope += field.yz;
+  vIWaveSlope = field.yz;
 #endif
-  // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
-  // the rest is small. So the relative position keeps its bits wherever the camera is.
-  vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
   vec3 relative = vec3(relativeGrid.x + d.x, world.y, relativeGrid.y + d.z);
   vRelativePosition = relative;
 #ifdef OCEAN_NEAR_BANDS

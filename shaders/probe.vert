@@ -1,9 +1,13 @@
 // Evaluates the active wave model's chunk at arbitrary grid points (x, z) on the GPU, so
 // the CPU twin can be checked against the real shader code. Two output texels per point:
 // even index waveDisplacement (dx, dy, dz), odd index waveNormal; with the boat's wake on,
-// both with the wake added exactly as ocean.vert adds it (at the displaced point).
+// both with the wake added exactly as ocean.vert adds it (at the displaced point), and with
+// the interactive waves on, their field too, the two weighted by the hand-over as there.
 #include <oceano_waves>
 #include <oceano_wake>
+#ifdef OCEAN_IWAVE
+#include <oceano_iwave>
+#endif
 
 attribute vec2 aSample;
 attribute float aIndex;
@@ -15,11 +19,22 @@ void main() {
   bool normalTexel = mod(aIndex, 2.0) > 0.5;
   vec3 d = waveDisplacement(aSample);
   vec3 n = waveNormal(aSample);
+  vec2 at = aSample + d.xz;
+#ifdef OCEAN_IWAVE
+  vec2 handOver = iwaveHandOver(at, vec2(0.0));
+#else
+  const vec2 handOver = vec2(1.0);
+#endif
   if (uWakeCount >= 2) {
-    vec3 wake = wakeHeightAndGradient(aSample + d.xz);
+    vec3 wake = handOver.x * wakeHeightAndGradient(at);
     d.y += wake.x;
     n = wakeTiltNormal(n, wake.yz);
   }
+#ifdef OCEAN_IWAVE
+  vec3 field = handOver.y * iwaveHeightAndGradient(at, vec2(0.0));
+  d.y += field.x;
+  n = wakeTiltNormal(n, field.yz);
+#endif
   vResult = vec4(normalTexel ? n : d, 0.0);
   vec2 texel = vec2(mod(aIndex, uTargetSize.x), floor(aIndex / uTargetSize.x)) + 0.5;
   gl_Position = vec4(texel / uTargetSize * 2.0 - 1.0, 0.0, 1.0);

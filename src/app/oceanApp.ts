@@ -1,5 +1,5 @@
 import { validateParams, type OceanParams } from '../sim/params/params';
-import { message, type Message } from '../sim/params/message';
+import { message, MessageError, type Message } from '../sim/params/message';
 import type { SurfaceSample } from '../sim/waves/waveModel';
 import { OceanView } from '../render/ocean/oceanView';
 import { BoatView } from '../render/boat/boatView';
@@ -26,6 +26,7 @@ import { LessonHost } from './lessons/lessonHost';
 import { FREE_AREA_EVENT } from './layout/freeAreaEvent';
 import type { Rect } from '../sim/layout/rect';
 import type { SeaTools } from './tools/seaTools';
+
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -101,6 +102,7 @@ export class OceanApp {
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.container.addEventListener(FREE_AREA_EVENT, this.onFreeArea);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
+    this.view.ocean.recordStones(state.stones);
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
       this.orbit.setPose(state.cullingCamera);
       this.view.update(this.clock.time);
@@ -228,7 +230,7 @@ export class OceanApp {
   renderFrame(sync = this.frameStats.loopShouldSync(), first = false): void {
     if (this.context?.lost) return;
     const start = performance.now();
-    this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view);
+    this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view, this.view.ocean);
     const boatEnd = performance.now();
     if (first) performance.mark('oceano:first-boat-update');
     this.view.update(this.clock.time);
@@ -276,7 +278,7 @@ export class OceanApp {
       this.notify(message('lessonUnknown', { name: String(id), known: lessonIds.join(', ') }));
       return false;
     }
-    const { params, camera, cullingCamera } = lessonView(lesson);
+    const { params, camera, cullingCamera, stones } = lessonView(lesson);
     if (cullingCamera && params.freezeCulling && this.started) {
       // As at start-up: the selection is frozen from the culling camera, then seen from the lesson's.
       this.setParams({ ...params, freezeCulling: false });
@@ -284,7 +286,11 @@ export class OceanApp {
       this.view.update(this.clock.time);
     }
     this.setParams(params);
-    if (this.started) this.orbit.setPose(camera);
+    if (this.started) {
+      this.orbit.setPose(camera);
+      // Its stones fall from now on, as the lesson opens.
+      this.view.ocean.recordStones(stones, this.clock.time);
+    }
     void this.lessons?.show(lesson.id);
     return true;
   }
@@ -310,19 +316,36 @@ export class OceanApp {
   boat = (): BoatInfo => this.boatMotion.info();
   /** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion. */
   shareUrl = (): string =>
-    shareUrl(this.options, { params: this.params, time: this.clock.time, camera: this.camera(), boatState: this.boatMotion.snapshot(this.clock.time), wakeTrack: this.boatMotion.wakeText(this.clock.time), lesson: this.lesson(), probe: this.seaTools?.probeText() });
+    shareUrl(this.options, {
+      params: this.params,
+      time: this.clock.time,
+      camera: this.camera(),
+      boatState: this.boatMotion.snapshot(this.clock.time),
+      wakeTrack: this.boatMotion.wakeText(this.clock.time),
+      lesson: this.lesson(),
+      probe: this.seaTools?.probeText(),
+      stones: this.view.ocean.interactiveWaves?.stones(this.clock.time),
+    });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (
-    checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params), x, z)
+    checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params, this.view.ocean.wakeWeight(x, z)), x, z)
   );
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   /** The sea tools' code, fetched the first time they are opened, a ?probe= link is followed or oceano.probe() is called. */
   loadSeaTools = (): Promise<SeaTools> => (this.seaToolsLoad ??= import('./tools/seaTools').then((code) => (this.seaTools = new code.SeaTools(this))));
 
+  /** A stone into the interactive waves; what is wrong with it, or raised, is said in a notice too (and bad arguments still throw). */
   disturb = (x: number, z: number, options: { radius?: number; height?: number } = {}): string[] => {
-    const notices = this.view.ocean.disturb(x, z, options);
+    let notices: Message[];
+    try {
+      notices = this.view.ocean.disturb(x, z, options);
+    } catch (error) {
+      if (error instanceof MessageError) this.notify(error.notice);
+      throw error;
+    }
+    for (const notice of notices) this.notify(notice);
     this.loop.requestRender();
-    return notices;
+    return notices.map((notice) => this.tr.message(notice));
   };
   stats = (): OceanStats => this.frameStats.summary(this.view.stats(), this.view.waves.twinStatus?.() ?? null);
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */

@@ -38,7 +38,7 @@ describe('language', () => {
 
   it('has both languages for every message id, each carrying the same values', () => {
     // Each value a distinct token, so a translation that drops or swaps one shows.
-    const values = { key: 'K7', text: 'T7', fallback: 'F7', options: 'O7', min: 'MIN7', max: 'MAX7', unit: 'U7', clamped: 'C7', name: 'N7', known: 'KN7', base: 'B7', url: 'http://x/?a=URL7', error: 'E7', reason: 'R7', allowed: 'AL7' };
+    const values = { key: 'K7', text: 'T7', fallback: 'F7', options: 'O7', min: 'MIN7', max: 'MAX7', unit: 'U7', clamped: 'C7', name: 'N7', known: 'KN7', base: 'B7', url: 'http://x/?a=URL7', error: 'E7', reason: 'R7', allowed: 'AL7', got: 'G7', radius: 'RA7', raised: 'RR7' };
     const tokens = Object.values(values);
     for (const id of MESSAGE_IDS) {
       const m = message(id, values);
@@ -52,6 +52,6 @@ describe('language', () => {
       expect(tokens.filter((t) => es.includes(t)), id).toEqual(expected);
       if (english) expect(en, id).toContain(english);
     }
-    expect(MESSAGE_IDS.length).toBe(34);
+    expect(MESSAGE_IDS.length).toBe(38);
   });
 });

@@ -1,23 +1,34 @@
 import { describe, expect, it } from 'vitest';
+import type { MessageError } from '../../src/sim/params/message';
 import { checkDisturbance, IWAVE_SPACING, sampleField, type FieldSnapshot } from '../../src/sim/iwave/interactiveField';
 import { IWaveGrid } from '../../src/sim/iwave/iwaveGrid';
 import { fittedVerticalDerivativeKernel } from '../../src/sim/iwave/verticalDerivativeKernel';
 
 describe('disturb() arguments', () => {
-  it('throws a RangeError naming the argument for non-finite or out-of-range input', () => {
-    expect(() => checkDisturbance(Number.NaN, 0)).toThrow(/x and z/);
-    expect(() => checkDisturbance(0, Infinity)).toThrow(/x and z/);
+  it('throws a MessageError naming the argument for non-finite or out-of-range input, its notice a disturbInvalid', () => {
+    expect(() => checkDisturbance(Number.NaN, 0)).toThrow(/x must be|z must be/);
+    expect(() => checkDisturbance(0, Infinity)).toThrow(/x must be|z must be/);
     expect(() => checkDisturbance(0, 0, { radius: -1 })).toThrow(/radius/);
     expect(() => checkDisturbance(0, 0, { radius: 11 })).toThrow(/radius/);
     expect(() => checkDisturbance(0, 0, { height: 2.5 })).toThrow(/height/);
     expect(() => checkDisturbance(0, 0, { height: Number.NaN })).toThrow(/height/);
+    expect(() => checkDisturbance(2e6, 0)).toThrow(/x must be/);
+    const noticeOf = (call: () => unknown) => {
+      try {
+        call();
+      } catch (error) {
+        return (error as MessageError).notice;
+      }
+      return null;
+    };
+    expect(noticeOf(() => checkDisturbance(0, 0, { radius: 11 }))).toEqual({ id: 'disturbInvalid', values: { name: 'radius', got: '11', min: 0, max: 10 } });
+    expect(noticeOf(() => checkDisturbance(0, Number.NaN))).toEqual({ id: 'disturbInvalid', values: { name: 'z', got: 'NaN', min: -1e6, max: 1e6 } });
   });
 
   it('raises a radius under one texel to one texel and says so; a fair one passes unchanged with no notice', () => {
     const small = checkDisturbance(1, 2, { radius: 0.1, height: 0.2 });
     expect(small.disturbance).toEqual({ x: 1, z: 2, radius: IWAVE_SPACING, height: 0.2 });
-    expect(small.notices).toHaveLength(1);
-    expect(small.notices[0]).toMatch(/raised to 0.5 m/);
+    expect(small.notices).toEqual([{ id: 'disturbRadiusRaised', values: { radius: 0.1, raised: IWAVE_SPACING } }]);
     const fair = checkDisturbance(1, 2, { radius: 1.5, height: -0.4 });
     expect(fair.disturbance).toEqual({ x: 1, z: 2, radius: 1.5, height: -0.4 });
     expect(fair.notices).toEqual([]);

@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { fittedVerticalDerivativeKernel, kernelResponse, tessendorfKernel, waveEquationKernel, IWAVE_KERNEL_BAND, type ConvolutionKernel } from '../../src/sim/iwave/verticalDerivativeKernel';
+import { fittedVerticalDerivativeKernel, kernelOrbitWeights, kernelResponse, tessendorfKernel, waveEquationKernel, IWAVE_KERNEL_BAND, IWAVE_KERNEL_ORBITS, type ConvolutionKernel } from '../../src/sim/iwave/verticalDerivativeKernel';
 import { GRAVITY, IWAVE_SPONGE, IWaveGrid, type SpongeLayer } from '../../src/sim/iwave/iwaveGrid';
+import { crestRadii, waveFrontRadius } from '../../src/sim/iwave/cauchyPoissonRings';
+import { equationKernels, WAVE_EQUATION_SPEED } from '../../src/sim/iwave/interactiveField';
 
 /**
  * iWave against physics, on the CPU reference solver: the dispersion of the discrete operator
@@ -53,6 +55,22 @@ describe('the dispersion of the vertical-derivative kernel', () => {
     console.log(`Wave equation, ω²/(gk) − 1: ${control.map((r) => `${(100 * r.error).toFixed(0)} %`).join(', ')}`);
     expect(control.filter((r) => Math.abs(r.error) > 0.05).length).toBeGreaterThan(modes.length / 2);
   }, 120_000);
+
+  it('packs into 28 orbit weights, one per mirror-image set, that give the kernel back; a smaller kernel sits inside with zeros; a lopsided one throws', () => {
+    const weights = kernelOrbitWeights(fitted);
+    expect(weights.length).toBe(IWAVE_KERNEL_ORBITS);
+    expect(IWAVE_KERNEL_ORBITS).toBe(28);
+    // Orbit 0 is the centre tap, orbit 1 (1, 0), orbit 2 (1, 1), orbit 27 (6, 6).
+    expect(weights[0]).toBe(Math.fround(fitted.weights[6 * 13 + 6]));
+    expect(weights[1]).toBe(Math.fround(fitted.weights[6 * 13 + 7]));
+    expect(weights[2]).toBe(Math.fround(fitted.weights[7 * 13 + 7]));
+    expect(weights[27]).toBe(Math.fround(fitted.weights[12 * 13 + 12]));
+    const wave = kernelOrbitWeights(waveEquationKernel(2, spacing, g));
+    expect(Array.from(wave.slice(3))).toEqual(new Array(25).fill(0));
+    const lopsided = fittedVerticalDerivativeKernel();
+    lopsided.weights[6 * 13 + 7] += 1e-3;
+    expect(() => kernelOrbitWeights(lopsided)).toThrow(/not symmetric/);
+  });
 
   it('keeps the response positive over the whole Brillouin zone (every mode stable) and within 5 % of |k| across the band; Tessendorf\'s truncated Bessel kernel does not', () => {
     const worstInBand = (kernel: ConvolutionKernel) => {
@@ -151,6 +169,75 @@ describe('a dropped stone (Cauchy–Poisson)', () => {
     console.log(`Wave equation: ${passing.length} of ${control.length} crest pairs within 15 %`);
     expect(passing.length).toBeLessThan(checks.length / 2);
   }, 180_000);
+});
+
+/** Crests (local maxima above zero) along +x from a stone at the origin, between rMin and rMax metres, sampled every 5 cm. */
+function crestsOnAxis(grid: IWaveGrid, rMin: number, rMax: number): number[] {
+  const crests: number[] = [];
+  for (let r = rMin; r < rMax; r += 0.05) {
+    const b = grid.sample(r, 0);
+    if (b > 0 && b > grid.sample(r - 0.05, 0) && b >= grid.sample(r + 0.05, 0)) crests.push(r);
+  }
+  return crests;
+}
+
+describe('the guide rings of the stone preset', () => {
+  it('stand where the solver\'s crests are, r = g t²/(8πn) from the phase g t²/(4r) (Lamb §255), within one texel at t = 8 and 10 s (planted fault: half a turn off, the troughs, miss)', () => {
+    const grid = new IWaveGrid({ n: 160, spacing, kernel: fitted, sponge: { width: 20, strength: 4 } });
+    grid.disturb({ x: 0, z: 0, radius: 1, height: 0.4 });
+    const dt = 1 / 30;
+    let steps = 0;
+    const nearest = (crests: number[], r: number) => Math.min(...crests.map((c) => Math.abs(c - r)));
+    for (const t of [8, 10]) {
+      while (steps < Math.round(t / dt)) {
+        grid.step(dt);
+        steps++;
+      }
+      const crests = crestsOnAxis(grid, 3, 30);
+      const rings = crestRadii(t, { kMin: 0.6, kMax: 4.4, maxRadius: 30 });
+      console.log(`t ${t} s: guide rings ${rings.map((r) => r.toFixed(2)).join(', ')} m; the solver's crests ${crests.map((r) => r.toFixed(2)).join(', ')} m`);
+      expect(rings.length).toBeGreaterThanOrEqual(3);
+      for (const r of rings) expect(nearest(crests, r)).toBeLessThan(spacing);
+      // Planted fault: rings where the phase is π off (troughs): most are more than a texel from a crest.
+      const troughs = rings.map((r) => (g * t * t) / (4 * ((g * t * t) / (4 * r) + Math.PI)));
+      expect(troughs.filter((r) => nearest(crests, r) < spacing).length).toBeLessThan(troughs.length / 2);
+    }
+    // k at each ring is g t²/(4r²), the formula of the issue: 16π²n²/(g t²).
+    expect(crestRadii(10, { kMin: 0.6, kMax: 4.4, maxRadius: 100 })[0]).toBeCloseTo((g * 100) / (16 * Math.PI), 12);
+  }, 120_000);
+});
+
+describe('the wave equation beside iWave (stone-compare)', () => {
+  it('keeps the halves apart, and runs one ring at c on the right where iWave spreads a train on the left', () => {
+    const { kernel, rightKernel } = equationKernels('side-by-side', spacing);
+    const grid = new IWaveGrid({ n: 256, spacing, kernel, rightKernel, sponge: IWAVE_SPONGE });
+    grid.disturb({ x: -28, z: 0, radius: 1, height: 0.4 });
+    grid.disturb({ x: 28, z: 0, radius: 1, height: 0.4 });
+    const single = new IWaveGrid({ n: 256, spacing, kernel, rightKernel, sponge: IWAVE_SPONGE });
+    single.disturb({ x: -28, z: 0, radius: 1, height: 0.4 });
+    const dt = 1 / 30;
+    for (let s = 0; s < 180; s++) {
+      grid.step(dt);
+      single.step(dt);
+    }
+    let leak = 0;
+    let left = 0;
+    for (let j = 0; j < 256; j++) {
+      for (let i = 0; i < 256; i++) {
+        const h = Math.abs(single.height[j * 256 + i]);
+        if (i >= 128) leak = Math.max(leak, h);
+        else left = Math.max(left, h);
+      }
+    }
+    console.log(`A stone in the left half only, 6 s on: ${left.toFixed(4)} m there, ${leak.toExponential(2)} m in the right half`);
+    expect(leak).toBeLessThan(0.01 * left);
+    // The right-hand ring's front: the outermost crest stands near c t (the wave equation's ring trails behind its front).
+    const front = waveFrontRadius(6, WAVE_EQUATION_SPEED);
+    let outer = 0;
+    for (let r = 2; r < 20; r += 0.05) if (grid.sample(28 + r, 0) > 0.02 * 0.4 && grid.sample(28 + r, 0) >= grid.sample(28 + r + 0.05, 0) && grid.sample(28 + r, 0) > grid.sample(28 + r - 0.05, 0)) outer = r;
+    console.log(`Wave equation at c = ${WAVE_EQUATION_SPEED.toFixed(2)} m/s: outermost crest ${outer.toFixed(2)} m at 6 s, c t = ${front.toFixed(2)} m`);
+    expect(Math.abs(outer - front)).toBeLessThan(2);
+  }, 120_000);
 });
 
 describe('determinism and obstacles', () => {

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { defaultParams, paramDefs, paramKeys } from '../../src/sim/params/params';
 import { seededRandom } from '../../src/sim/noise/integerHash';
-import { formatUrlState, parseSettings, parseUrlState, type ShareableState } from '../../src/app/url/urlState';
+import { formatStones, formatUrlState, parseSettings, parseStones, parseUrlState, type ShareableState } from '../../src/app/url/urlState';
 import { formatCameraText, isCameraPose, parseCameraText } from '../../src/app/camera/cameraPose';
 import { findPreset, PRESETS, presetNames } from '../../src/app/url/presets';
 import { Translator } from '../../src/app/language/i18n';
@@ -111,5 +111,36 @@ describe('presets', () => {
   it('does not resolve inherited object keys as presets', () => {
     expect(findPreset('toString')).toBeNull();
     expect(findPreset('__proto__')).toBeNull();
+  });
+});
+
+describe('stones for the interactive waves (stones=)', () => {
+  it('round-trips every number bit for bit, and a preset\'s stones come with it', () => {
+    const stones = [[0.1 + 0.2, -3.7, 12 / 7, 1.25, -0.3], [10, 1e5, -2, 0.5, 2]] as const;
+    expect(parseStones(formatStones(stones))).toEqual(stones);
+    expect(parseStones('')).toEqual([]);
+    expect(parseUrlState('?preset=stone').stones).toEqual(PRESETS.stone.stones);
+    expect(parseUrlState('?preset=stone-compare').stones).toHaveLength(2);
+  });
+
+  it('a link writes them with the field on, an empty list too, and its list replaces a lesson\'s', () => {
+    const base = { time: 3, camera: { position: [0, 5, 10] as [number, number, number], target: [0, 0, 0] as [number, number, number] }, language: 'en' as const, sky: null, boat: null, embed: false };
+    const on = formatUrlState({ ...base, params: { ...defaultParams(), interactiveWaves: true }, stones: [[1, 2, 3, 1, 0.4]] });
+    expect(parseUrlState(`?${on}`).stones).toEqual([[1, 2, 3, 1, 0.4]]);
+    expect(new URLSearchParams(formatUrlState({ ...base, params: defaultParams(), stones: [[1, 2, 3, 1, 0.4]] })).has('stones')).toBe(false);
+    const overLesson = formatUrlState({ ...base, params: { ...defaultParams(), interactiveWaves: true }, lesson: 'iwave-stone', stones: [] });
+    expect(parseUrlState(`?${overLesson}`).stones).toEqual([]);
+    expect(parseUrlState('?lesson=iwave-stone').stones).toEqual(PRESETS.stone.stones);
+  });
+
+  it('a bad list is a notice and no stones: wrong count, a time out of range, a radius or height past the limits (control: a good one passes)', () => {
+    for (const text of ['1,2,3,1', '1,2,3,1,0.4,9', '-1,0,0,1,0.3', '1,0,0,11,0.3', '1,0,0,1,2.5', '1,NaN,0,1,0.3', '1,,0,1,0.3', '1,2e6,0,1,0.3', '1,0,0,0,0.3']) {
+      const state = parseUrlState(`?stones=${encodeURIComponent(text)}`);
+      expect(state.stones, text).toEqual([]);
+      expect(state.notices.map((n) => n.id), text).toEqual(['stonesInvalid']);
+    }
+    // A radius under one texel is raised when the stone falls (disturb's rule), not here.
+    expect(parseUrlState('?stones=1,0,0,0.1,0.3').stones).toEqual([[1, 0, 0, 0.1, 0.3]]);
+    expect(parseUrlState('?stones=1,0,0,1,0.3').notices).toEqual([]);
   });
 });

@@ -5,8 +5,9 @@ import type { LiveWaveModel } from '../../sim/waves/waveModel';
 import type { BoatView } from '../../render/boat/boatView';
 import type { BoatModel } from '../../render/boat/boatModel';
 import type { OceanView } from '../../render/ocean/oceanView';
+import type { Ocean } from '../../render/ocean/ocean';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
-import { addWake, BoatWake, wakeHeightBound } from '../../sim/wake/boatWake';
+import { addWake, BoatWake, WAKE_HULL, wakeHeightBound } from '../../sim/wake/boatWake';
 import type { WakeTrack } from '../../sim/wake/wakeTrack';
 
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
@@ -59,18 +60,26 @@ export class BoatController {
   }
 
   /**
-   * Floats the boat at `time` on the waves alone (not on its own wake); with the camera
+   * Floats the boat at `time` on the waves (not on its analytic wake; on the interactive
+   * waves, `field`, where they are on, its own near-field waves included); with the camera
    * following, carries the camera along. Then records the boat into its wake and hands the
-   * wake for this frame to `view`.
+   * wake and the hull for this frame to `view`.
    */
-  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>): void {
+  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>, ocean?: Pick<Ocean, 'setBoat' | 'interactiveWaves'>): void {
     const previous = this.state?.pose;
+    const model = (x: number, z: number) => waves.height(x, z, time);
+    const field = ocean?.interactiveWaves;
     this.state = this.motion.update(
       time,
       { heading: params.boatHeading * DEG, speed: params.boatSpeed, response: params.boatResponse },
       this.hull,
-      (x, z) => waves.height(x, z, time),
+      model,
       waves,
+      // With the interactive waves on, the boat rides them too, as they stand beside its hull.
+      field ? (x, z, heading) => {
+        const beside = field.beside({ x, z, heading, ...WAKE_HULL });
+        return (px, pz) => model(px, pz) + beside(px, pz);
+      } : undefined,
     );
     const pose = this.state.pose;
     this.view.setPose(pose);
@@ -78,12 +87,17 @@ export class BoatController {
     this.wake.record(time, { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, turnRate: params.boatTurnRate * DEG });
     const data = this.wake.uniforms(time, { enabled: params.wake, strength: params.wakeStrength });
     view.setWake(data, wakeHeightBound(data), { visible: params.wake && params.wakeGuide, x: pose.x, y: 0.05, z: pose.z, heading: pose.heading });
+    ocean?.setBoat({ hull: { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, ...WAKE_HULL, strength: params.wakeStrength }, turnRate: params.boatTurnRate * DEG, time, wake: params.wake });
   }
 
-  /** The waves' sample at world (x, z) with the boat's wake added there, as drawn: what a second boat would feel. */
-  withWake(sample: SurfaceSample, x: number, z: number, time: number, params: OceanParams): SurfaceSample {
+  /**
+   * The waves' sample at world (x, z) with the boat's wake added there, as drawn (times
+   * `weight`: the hand-over to the interactive waves near the boat): what a second boat would feel.
+   */
+  withWake(sample: SurfaceSample, x: number, z: number, time: number, params: OceanParams, weight = 1): SurfaceSample {
     if (!params.wake) return sample;
-    return addWake(sample, this.wake.at(x, z, time, { enabled: params.wake, strength: params.wakeStrength }));
+    const [h, dx, dz] = this.wake.at(x, z, time, { enabled: params.wake, strength: params.wakeStrength });
+    return addWake(sample, [weight * h, weight * dx, weight * dz]);
   }
 
   /** Following starts by looking at the boat from where the camera stands relative to its target. */

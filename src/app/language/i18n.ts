@@ -64,6 +64,10 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     underwaterLoadFailed: () => 'The underwater effects (water fog, light shafts, blur) could not be downloaded; the sea is drawn from below without them. Reload the page to try again.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" is not one of ${v.allowed}; using "${v.fallback}".`,
     panelLoadFailed: () => 'The control panel could not be downloaded; the ocean runs without it. Reload the page to try again.',
+    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} is not in [${v.min}, ${v.max}] m; no stone dropped.`,
+    disturbRadiusRaised: (v) => `disturb: radius ${v.radius} m is under one texel; raised to ${v.raised} m.`,
+    disturbFieldOff: () => 'disturb: the interactive waves are off.',
+    stonesInvalid: (v) => `"stones=${v.text}" is not a list of t,x,z,radius,height in range; no stones.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -101,6 +105,10 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     underwaterLoadFailed: () => 'No se pudieron descargar los efectos bajo el agua (niebla, rayos de luz, desenfoque); el mar se ve desde abajo sin ellos. Recarga la página para intentarlo de nuevo.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" no es uno de ${v.allowed}; se usa "${v.fallback}".`,
     panelLoadFailed: () => 'No se pudo descargar el panel de controles; el océano sigue sin él. Recarga la página para intentarlo de nuevo.',
+    disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} no está en [${v.min}, ${v.max}] m; no se tira la piedra.`,
+    disturbRadiusRaised: (v) => `disturb: el radio ${v.radius} m es menor que un texel; se sube a ${v.raised} m.`,
+    disturbFieldOff: () => 'disturb: las olas interactivas están apagadas.',
+    stonesInvalid: (v) => `"stones=${v.text}" no es una lista de t,x,z,radio,altura en rango; sin piedras.`,
   },
 };
 

@@ -49,6 +49,8 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   wakeStrength: 'Intensidad de la estela',
   wakeGuide: 'Guía del ángulo de Kelvin (±19,47°)',
   interactiveWaves: 'Olas interactivas (iWave)',
+  iwaveEquation: 'Olas interactivas: ecuación',
+  iwaveGuide: 'Anillos donde la teoría pone las crestas',
   lodDistance: 'Distancia de LOD L',
   lodBands: 'Bandas de LOD',
   lodColors: 'Colorear parcelas por banda',

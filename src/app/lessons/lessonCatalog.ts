@@ -1,6 +1,6 @@
 import { defaultParams, type OceanParams } from '../../sim/params/params';
 import { DEFAULT_CAMERA, type CameraPose } from '../camera/cameraPose';
-import { findPreset, type PresetName } from '../url/presets';
+import { findPreset, type PresetName, type Stone } from '../url/presets';
 
 /**
  * One lesson's view, in the course's order. Where it sits in the course, its title, words,
@@ -81,6 +81,10 @@ export const LESSONS: readonly Lesson[] = [
   // The preset's view moved 35 m west: the boat stands clear of the card on the left.
   { id: 'kelvin-wake', preset: 'kelvin-wake', params: { wakeGuide: true }, camera: { position: [25, 60, 60], target: [25, 0, -10] } },
   { id: 'wake-turn', preset: 'wake-turn', params: { wakeGuide: true } },
+  { id: 'waves-as-simulation', preset: 'stone', params: { waves: 'fft', windSpeed: 4, iwaveGuide: false } },
+  { id: 'iwave-stone', preset: 'stone' },
+  { id: 'iwave-compare', preset: 'stone-compare' },
+  { id: 'iwave-boat', preset: 'boat-interactive' },
   {
     id: 'horizon',
     preset: 'lod-bands',
@@ -99,6 +103,8 @@ export interface LessonView {
   params: OceanParams;
   camera: CameraPose;
   cullingCamera: CameraPose | null;
+  /** Its preset's stones, their times counted from the lesson's opening. */
+  stones: Stone[];
 }
 
 export function lessonView(lesson: Lesson): LessonView {
@@ -108,5 +114,6 @@ export function lessonView(lesson: Lesson): LessonView {
     params: { ...defaultParams(), ...preset?.params, ...lesson.params },
     camera: { position: [...camera.position], target: [...camera.target] },
     cullingCamera: preset?.cullingCamera ? { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] } : null,
+    stones: [...(preset?.stones ?? [])],
   };
 }

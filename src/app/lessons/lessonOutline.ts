@@ -3,7 +3,7 @@ import type { ParamKey } from '../../sim/params/params';
 import { LESSONS, type Lesson } from './lessonCatalog';
 
 /** The course's chapters: the seed report's sections in its order, then what lies beyond it (names below). */
-export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'horizon'] as const;
+export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'interactive', 'horizon'] as const;
 export type LessonSection = (typeof LESSON_SECTIONS)[number];
 
 /** What a lesson draws over the picture besides its card (lessonLegend.ts). */
@@ -26,6 +26,7 @@ export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { b
   compare: { en: 'Models side by side', es: 'Modelos lado a lado', beyondSeed: true },
   physics: { en: 'Physics against theory', es: 'Física frente a teoría', beyondSeed: true },
   wake: { en: 'The Kelvin wake', es: 'La estela de Kelvin', beyondSeed: true },
+  interactive: { en: 'Interactive waves (iWave)', es: 'Olas interactivas (iWave)', beyondSeed: true },
   horizon: { en: 'The sea to the horizon', es: 'El mar hasta el horizonte', beyondSeed: true },
 };
 
@@ -65,6 +66,10 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'physics-panel': { section: 'physics', controls: ['physics', 'windSpeed', 'spectrum'] },
   'kelvin-wake': { section: 'wake', controls: ['boatSpeed', 'wakeGuide', 'wakeStrength'], legend: 'kelvinAngle' },
   'wake-turn': { section: 'wake', controls: ['boatTurnRate', 'boatSpeed', 'wakeGuide'], legend: 'kelvinAngle' },
+  'waves-as-simulation': { section: 'interactive', controls: ['interactiveWaves', 'waves', 'windSpeed'] },
+  'iwave-stone': { section: 'interactive', controls: ['iwaveGuide', 'timeScale', 'interactiveWaves'] },
+  'iwave-compare': { section: 'interactive', controls: ['iwaveEquation', 'iwaveGuide', 'timeScale'] },
+  'iwave-boat': { section: 'interactive', controls: ['boatSpeed', 'wake', 'wakeStrength', 'interactiveWaves'] },
   'horizon': { section: 'horizon', controls: ['lodColors', 'lodDistance'], legend: 'lodBands' },
 };
 
@@ -108,6 +113,10 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'physics-panel': { en: 'The sea measured against theory', es: 'El mar medido frente a la teoría' },
   'kelvin-wake': { en: 'Kelvin’s 19.47°', es: 'Los 19,47° de Kelvin' },
   'wake-turn': { en: 'A wake along a turn', es: 'Una estela en una curva' },
+  'waves-as-simulation': { en: 'Waves as a simulation', es: 'Las olas como simulación' },
+  'iwave-stone': { en: 'A stone: long waves lead', es: 'Una piedra: las olas largas van delante' },
+  'iwave-compare': { en: 'Dispersion against the wave equation', es: 'Dispersión frente a la ecuación de ondas' },
+  'iwave-boat': { en: 'The boat pushes water', es: 'El barco empuja el agua' },
   'horizon': { en: 'Rings out to the horizon', es: 'Anillos hasta el horizonte' },
 };
 

@@ -40,5 +40,9 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'physics-panel': { file: 'src/sim/physics/physicsEstimators.ts', from: 'export function significantWaveHeight(', to: 'return 4 * Math.sqrt(variance' },
   'kelvin-wake': { file: 'src/sim/wake/kelvinGuide.ts', from: 'export function kelvinGuideLines(', to: 'return [x, z,' },
   'wake-turn': { file: 'src/sim/wake/kelvinWake.ts', from: 'export function wakeSources(', to: 'return out;' },
+  'waves-as-simulation': { file: 'shaders/iwaveStep.frag', from: 'float half_ = 0.5 * (uDamping', to: 'outHeights = vec4(' },
+  'iwave-stone': { file: 'src/sim/iwave/cauchyPoissonRings.ts', from: 'for (let n = 1; ; n++) {', to: 'if (2 * Math.PI * n >= minPhase' },
+  'iwave-compare': { file: 'src/sim/iwave/verticalDerivativeKernel.ts', from: 'export function waveEquationKernel(', to: 'return { radius: 1, weights };' },
+  'iwave-boat': { file: 'src/sim/iwave/movingHull.ts', from: 'export function hullSources(', to: '];' },
   horizon: { file: 'src/sim/lod/farRings.ts', from: 'export function farRings(', to: 'return rings;' },
 };

@@ -252,6 +252,42 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
     },
     math: m('<mi>η</mi><mo>(</mo><mi>x</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><munder><mo>∑</mo><mi>j</mi></munder><mi>G</mi><mo>(</mo><mi>x</mi><mo>−</mo><msub><mi>x</mi><mi>j</mi></msub><mo>,</mo><mi>t</mi><mo>−</mo><msub><mi>t</mi><mi>j</mi></msub><mo>)</mo>'),
   },
+  'waves-as-simulation': {
+    text: {
+      en: 'Two ways to make a sea. The spectral ocean underneath is a closed form in time: each wave of the spectrum is evaluated at any t, so the sea reaches the horizon and jumps to any moment for free, but nothing can disturb it. The rings on top are a simulation: a height field stepped every 1/60 s on a 128 m grid around the camera’s focus, with the iWave kernel that gives ω² = gk. It answers stones and the boat, but only near the camera, and to reach a moment it must run every step before it (at most 10 s of them).',
+      es: 'Dos maneras de hacer un mar. El océano espectral de fondo es una fórmula cerrada en el tiempo: cada ola del espectro se evalúa en cualquier t, así que el mar llega al horizonte y salta a cualquier instante sin coste, pero nada puede perturbarlo. Los anillos de encima son una simulación: un campo de alturas que avanza cada 1/60 s en una malla de 128 m alrededor del foco de la cámara, con el núcleo de iWave que da ω² = gk. Responde a piedras y al barco, pero solo cerca de la cámara, y para llegar a un instante debe recorrer todos los pasos anteriores (como mucho 10 s).',
+    },
+    math:
+      m('<mi>η</mi><mo>(</mo><mi mathvariant="bold">x</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><munder><mo>∑</mo><mi mathvariant="bold">k</mi></munder><mover><mi>h</mi><mo>^</mo></mover><mo>(</mo><mi mathvariant="bold">k</mi><mo>)</mo><msup><mi>e</mi><mrow><mi>i</mi><mo>(</mo><mi mathvariant="bold">k</mi><mo>·</mo><mi mathvariant="bold">x</mi><mo>−</mo><mi>ω</mi><mi>t</mi><mo>)</mo></mrow></msup>') +
+      m('<msup><mi>h</mi><mrow><mi>n</mi><mo>+</mo><mn>1</mn></mrow></msup><mo>=</mo><mn>2</mn><msup><mi>h</mi><mi>n</mi></msup><mo>−</mo><msup><mi>h</mi><mrow><mi>n</mi><mo>−</mo><mn>1</mn></mrow></msup><mo>−</mo><mfrac><mrow><mi>g</mi><mi>Δ</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mi>Δ</mi><mi>x</mi></mrow></mfrac><mo>(</mo><mi>G</mi><mo>∗</mo><msup><mi>h</mi><mi>n</mi></msup><mo>)</mo>'),
+  },
+  'iwave-stone': {
+    text: {
+      en: 'A stone dropped on a calm sea. Deep water is dispersive: a wave’s speed depends on its length, ω² = gk, so the long waves the stone made run ahead and the short ones trail, and the ring spreads into a train of crests, closer together towards the middle. Cauchy and Poisson worked out where the crests stand: at distance r after time t the waves have k = gt²/(4r²), and the crests sit where gt²/(4r) is a whole number of turns. The yellow rings are those crests, drawn from theory; the water around them is the simulation.',
+      es: 'Una piedra que cae en un mar en calma. El agua profunda es dispersiva: la velocidad de una ola depende de su longitud, ω² = gk, así que las olas largas que levanta la piedra se adelantan y las cortas se quedan atrás, y el anillo se abre en un tren de crestas, más juntas hacia el centro. Cauchy y Poisson calcularon dónde están las crestas: a distancia r tras un tiempo t las olas tienen k = gt²/(4r²), y las crestas están donde gt²/(4r) es un número entero de vueltas. Los anillos amarillos son esas crestas, dibujadas desde la teoría; el agua alrededor es la simulación.',
+    },
+    math:
+      m('<mi>k</mi><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><msup><mi>r</mi><mn>2</mn></msup></mrow></mfrac>') +
+      m('<msub><mi>r</mi><mi>n</mi></msub><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mn>8</mn><mi>π</mi><mi>n</mi></mrow></mfrac>'),
+  },
+  'iwave-compare': {
+    text: {
+      en: 'The same stone twice. On the left, deep water’s equation: iWave’s kernel stands for √(−∇²), so every wavelength has its own speed and the ring spreads into a train. On the right, the plain wave equation, which most game engines use for interactive water: every wave runs at the same speed c, so the stone leaves a single ring that keeps its shape, like sound or light. A sponge along the middle keeps the two halves apart. Switch the equation to see either one alone.',
+      es: 'La misma piedra dos veces. A la izquierda, la ecuación del agua profunda: el núcleo de iWave hace de √(−∇²), así que cada longitud de onda tiene su propia velocidad y el anillo se abre en un tren. A la derecha, la ecuación de ondas simple, la que usan la mayoría de los motores de juegos para el agua interactiva: todas las olas corren a la misma velocidad c, y la piedra deja un único anillo que conserva su forma, como el sonido o la luz. Una esponja en el centro separa las dos mitades. Cambia la ecuación para ver cada una sola.',
+    },
+    math:
+      m('<mfrac><mrow><msup><mo>∂</mo><mn>2</mn></msup><mi>h</mi></mrow><mrow><mo>∂</mo><msup><mi>t</mi><mn>2</mn></msup></mrow></mfrac><mo>=</mo><mo>−</mo><mi>g</mi><msqrt><mo>−</mo><msup><mo>∇</mo><mn>2</mn></msup></msqrt><mi>h</mi><mspace width="1em"/><mo>⇒</mo><mspace width="1em"/><msup><mi>ω</mi><mn>2</mn></msup><mo>=</mo><mi>g</mi><mi>k</mi>') +
+      m('<mfrac><mrow><msup><mo>∂</mo><mn>2</mn></msup><mi>h</mi></mrow><mrow><mo>∂</mo><msup><mi>t</mi><mn>2</mn></msup></mrow></mfrac><mo>=</mo><msup><mi>c</mi><mn>2</mn></msup><msup><mo>∇</mo><mn>2</mn></msup><mi>h</mi><mspace width="1em"/><mo>⇒</mo><mspace width="1em"/><mi>ω</mi><mo>=</mo><mi>c</mi><mi>k</mi>'),
+  },
+  'iwave-boat': {
+    text: {
+      en: 'The boat at 4 m/s in the interactive waves. Its waterline is a solid in the field, so waves reflect from the hull; as it moves, its bow pushes aside U·V/L cubic metres of water a second and its stern lets as much back in. Those two sources make the near-field waves, and the boat rides them. Within a distance D of the boat the field carries its waves; beyond D the analytic Kelvin wake takes over, blended over 8 m, so no wave is counted twice.',
+      es: 'El barco a 4 m/s en las olas interactivas. Su línea de flotación es un sólido en el campo, así que las olas se reflejan en el casco; al avanzar, la proa aparta U·V/L metros cúbicos de agua por segundo y la popa deja volver otros tantos. Esas dos fuentes forman las olas del campo cercano, y el barco navega sobre ellas. Hasta una distancia D del barco el campo lleva sus olas; más allá, la estela analítica de Kelvin toma el relevo, mezclada a lo largo de 8 m, para no contar ninguna ola dos veces.',
+    },
+    math:
+      m('<mi>Q</mi><mo>=</mo><mfrac><mrow><mi>U</mi><mi>V</mi></mrow><mi>L</mi></mfrac>') +
+      m('<mi>D</mi><mo>=</mo><mi>max</mi><mo>(</mo><mn>2</mn><mi>L</mi><mo>,</mo><mfrac><mrow><mn>2</mn><mi>π</mi><msup><mi>U</mi><mn>2</mn></msup></mrow><mi>g</mi></mfrac><mo>)</mo>'),
+  },
   horizon: {
     text: {
       en: 'Beyond the 4 km grid of chunks the sea continues to the horizon in square rings, each ring’s cells twice the size of the previous ring’s, so a triangle keeps about the same size on screen at any distance. A skirt of triangles runs out past the last ring. The waves fade out over the first rings, where the vertices lie too far apart to sample them.',

@@ -1,12 +1,18 @@
 import type { OceanParams } from '../../sim/params/params';
 import { DEFAULT_CAMERA, type CameraPose } from '../camera/cameraPose';
 
+import type { Stone } from '../../sim/iwave/iwaveGrid';
+
+export type { Stone };
+
 /** A named view for a course page: a few parameters changed from the defaults and a camera. */
 export interface Preset {
   params: Partial<OceanParams>;
   camera: CameraPose;
   /** With freezeCulling: where the culling camera stood when the selection was frozen. */
   cullingCamera?: CameraPose;
+  /** Stones dropped into the interactive waves: at their time from the page's start, or from when the preset is opened. */
+  stones?: readonly Stone[];
 }
 
 /**
@@ -154,6 +160,36 @@ export const PRESETS = {
   'wake-turn': {
     params: { swellAmplitude: 0, rippleStrength: 0.05, wake: true, boatSpeed: 4, boatHeading: 270, boatTurnRate: 3, sunElevation: 25, sunAzimuth: 300 },
     camera: { position: [50, 110, 70], target: [50, 0, -50] },
+  },
+  // Interactive waves (iWave, src/sim/iwave/): a height field stepped in time, where a stone or the boat makes waves.
+  /**
+   * A stone (a bump 2 m high, 1.2 m across) dropped at t = 0 on a calm sea, seen from above:
+   * long waves run ahead, short ones trail. The yellow rings are Cauchy–Poisson's crests for
+   * this instant, r = g t²/(8πn), those the grid carries (src/sim/iwave/cauchyPoissonRings.ts).
+   */
+  stone: {
+    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveGuide: true },
+    camera: { position: [0, 30, 24], target: [0, 0, -4] },
+    stones: [[0, 0, -4, 1.2, 2]],
+  },
+  /**
+   * The same stone twice, 56 m apart: on the left deep water's equation (iWave, ω² = g k), on
+   * the right the plain wave equation ∂²h/∂t² = c²∇²h (c = 2.56 m/s), a sponge between them
+   * along the field's centre. One ring for the wave equation, a spreading train for the sea.
+   */
+  'stone-compare': {
+    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveEquation: 'side-by-side', iwaveGuide: true },
+    camera: { position: [0, 44, 34], target: [0, 0, -4] },
+    stones: [[0, -28, -4, 1.2, 2], [0, 28, -4, 1.2, 2]],
+  },
+  /**
+   * The boat at 4 m/s in the interactive waves, the camera following: its hull a solid in the
+   * field, its bow and stern pushing the near-field waves; past 16 m the analytic Kelvin wake
+   * takes them over.
+   */
+  'boat-interactive': {
+    params: { swellAmplitude: 0, rippleStrength: 0.05, interactiveWaves: true, wake: true, boatSpeed: 4, boatHeading: 270, boatFollow: true, sunElevation: 25, sunAzimuth: 300 },
+    camera: { position: [26, 16, 18], target: [1, 0, -5] },
   },
 } satisfies Record<string, Preset>;
 

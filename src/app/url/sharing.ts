@@ -4,6 +4,7 @@ import type { BoatSnapshot } from '../../sim/boat/boatMotion';
 import type { CameraPose } from '../camera/cameraPose';
 import type { OceanAppOptions } from '../boot/appOptions';
 import { formatUrlState } from './urlState';
+import type { Stone } from './presets';
 
 /** What a shared link carries of the view as it is now, frozen at its time. */
 export interface SharedView {
@@ -16,6 +17,8 @@ export interface SharedView {
   wakeTrack?: string | null;
   lesson?: string | null;
   probe?: string | null;
+  /** The stones that still shape the interactive waves. */
+  stones?: readonly Stone[];
 }
 
 /** What it carries of the page as it was opened: its address, language, assets and embedding. */

@@ -7,9 +7,11 @@ import { BOAT_EXTENT, type BoatSnapshot } from '../../sim/boat/boatMotion';
 import { findPreset, presetNames } from './presets';
 import { findLesson, lessonIds, lessonView } from '../lessons/lessonCatalog';
 import { WakeTrack } from '../../sim/wake/wakeTrack';
+import { IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS } from '../../sim/iwave/fieldSize';
+import type { Stone } from './presets';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
-export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'lesson', 'boat', 'boatState', 'wakeTrack', 'probe'] as const;
+export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'lesson', 'boat', 'boatState', 'wakeTrack', 'probe', 'stones'] as const;
 
 /** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
@@ -35,6 +37,8 @@ export interface UrlState {
   lesson: string | null;
   /** `probe=x,z` as written: the sea tools (a chunk fetched only when it is given) read and check it. */
   probe: string | null;
+  /** Stones dropped into the interactive waves, each at its own simulation time (a preset's, a share link's). */
+  stones: Stone[];
 }
 
 /**
@@ -57,7 +61,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices, lesson: null, probe: null };
+  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices, lesson: null, probe: null, stones: [] };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -65,6 +69,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
     if (preset) {
       Object.assign(params, preset.params);
       state.camera = { position: [...preset.camera.position], target: [...preset.camera.target] };
+      state.stones = [...(preset.stones ?? [])];
       if (preset.cullingCamera) state.cullingCamera = { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] };
     } else {
       notices.push(message('presetUnknown', { name: text, known: presetNames.join(', ') }));
@@ -78,6 +83,7 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       const view = lessonView(lesson);
       Object.assign(params, view.params);
       state.camera = view.camera;
+      state.stones = view.stones;
       state.cullingCamera = view.cullingCamera;
       state.lesson = lesson.id;
     } else {
@@ -106,6 +112,10 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       } catch {
         notices.push(message('wakeTrackInvalid', { text: text.slice(0, 80) }));
       }
+    } else if (key === 'stones') {
+      const stones = parseStones(text);
+      if (stones) state.stones = stones;
+      else notices.push(message('stonesInvalid', { text: text.slice(0, 80) }));
     } else if (key === 'cam') {
       const camera = parseCameraText(text);
       if (camera) state.camera = camera;
@@ -146,6 +156,8 @@ export interface ShareableState {
   lesson?: string | null;
   /** Where the probe stands, "x,z" (src/app/tools/). */
   probe?: string | null;
+  /** The stones that still shape the interactive waves (InteractiveWaves.stones); left out when they are off. */
+  stones?: readonly Stone[];
 }
 
 /**
@@ -165,6 +177,8 @@ export function formatUrlState(state: ShareableState): string {
   query.set('lang', state.language);
   if (state.boatState) query.set('boatState', formatBoatState(state.boatState));
   if (state.wakeTrack && state.params.wake) query.set('wakeTrack', state.wakeTrack);
+  // Always written with the field on, an empty list too: the link's stones replace a lesson's.
+  if (state.params.interactiveWaves) query.set('stones', formatStones(state.stones ?? []));
   if (state.sky !== null) query.set('sky', state.sky);
   if (state.boat !== null) query.set('boat', state.boat);
   if (state.probe) query.set('probe', state.probe);
@@ -185,4 +199,22 @@ export function parseBoatState(text: string): BoatSnapshot | null {
   if (!n.every((v) => Number.isFinite(v) && Math.abs(v) <= 1e6) || Math.abs(n[0]) > BOAT_EXTENT || Math.abs(n[1]) > BOAT_EXTENT) return null;
   const f = (i: number) => ({ value: n[i], velocity: n[i + 1] });
   return { x: n[0], z: n[1], heading: f(2), heave: f(4), pitch: f(6), roll: f(8) };
+}
+
+/** `t,x,z,radius,height;…` (seconds, metres), numbers written to read back bit for bit. */
+export function formatStones(stones: readonly Stone[]): string {
+  return stones.map((stone) => stone.map(String).join(',')).join(';');
+}
+
+/**
+ * Stones as a link writes them: each five numbers, a time as the URL's t takes, a place within
+ * ±1e6 m, a radius and height as disturb() takes (a radius under one texel is raised when the
+ * stone falls); null if any is not.
+ */
+export function parseStones(text: string): Stone[] | null {
+  if (text.trim() === '') return [];
+  const stones = text.split(';').map((part) => part.split(',').map((p) => (p.trim() === '' ? NaN : Number(p))));
+  const fair = ([t, x, z, r, h, ...rest]: number[]) =>
+    rest.length === 0 && isValidTime(t) && Math.abs(x) <= 1e6 && Math.abs(z) <= 1e6 && r > 0 && r <= IWAVE_MAX_RADIUS && Math.abs(h) <= IWAVE_MAX_HEIGHT;
+  return stones.every(fair) ? (stones as unknown as Stone[]) : null;
 }

@@ -13,6 +13,7 @@ import {
   RGBAFormat,
   Scene,
   Vector2,
+  Vector4,
   WebGLRenderTarget,
   type DataTexture,
   type Texture,
@@ -23,7 +24,9 @@ import stepFragment from '../../../shaders/iwaveStep.frag?raw';
 import disturbFragment from '../../../shaders/iwaveDisturb.frag?raw';
 import scrollFragment from '../../../shaders/iwaveScroll.frag?raw';
 import { BUMP_REACH, GRAVITY, IWAVE_SPONGE, type Disturbance, type SpongeLayer } from '../../sim/iwave/iwaveGrid';
-import { fittedVerticalDerivativeKernel, type ConvolutionKernel } from '../../sim/iwave/verticalDerivativeKernel';
+import { fittedVerticalDerivativeKernel, IWAVE_KERNEL_ORBITS, IWAVE_KERNEL_RADIUS, kernelOrbitWeights, type ConvolutionKernel } from '../../sim/iwave/verticalDerivativeKernel';
+import { hullSources, type MovingHull } from '../../sim/iwave/movingHull';
+import { forwardOf } from '../../sim/boat/boatPose';
 import { floatTexture } from '../optics/dataTextures';
 
 export interface GpuIWaveOptions {
@@ -32,6 +35,8 @@ export interface GpuIWaveOptions {
   /** Metres per texel. */
   spacing: number;
   kernel?: ConvolutionKernel;
+  /** A second kernel for the texels right of the middle, a sponge lining the middle (IWaveGrid's rightKernel). */
+  rightKernel?: ConvolutionKernel | null;
   /** Light damping everywhere, 1/s. */
   damping?: number;
   sponge?: SpongeLayer;
@@ -71,7 +76,7 @@ export class GpuIWave {
   private readonly mesh: Mesh;
   private readonly targets: [WebGLRenderTarget, WebGLRenderTarget];
   private current = 0;
-  private readonly kernelTexture: DataTexture;
+  private hull: MovingHull | null = null;
   private readonly obstacleData: Float32Array;
   private readonly obstacleTexture: DataTexture;
   private readonly stepMaterial: RawShaderMaterial;
@@ -84,26 +89,31 @@ export class GpuIWave {
     const { n, spacing } = options;
     this.n = n;
     this.spacing = spacing;
-    const kernel = options.kernel ?? fittedVerticalDerivativeKernel();
-    const size = 2 * kernel.radius + 1;
-    this.kernelTexture = floatTexture(Float32Array.from(kernel.weights), size, size, RedFormat, ClampToEdgeWrapping);
     this.obstacleData = new Float32Array(n * n).fill(1);
     this.obstacleTexture = floatTexture(this.obstacleData, n, n, RedFormat, ClampToEdgeWrapping);
     this.targets = [heightTarget(n), heightTarget(n)];
     const sponge = options.sponge ?? IWAVE_SPONGE;
+    const orbits = IWAVE_KERNEL_ORBITS;
     const pass = (name: string, fragmentShader: string, uniforms: Record<string, { value: unknown }>) =>
       new RawShaderMaterial({ name, glslVersion: GLSL3, vertexShader: quadVertex, fragmentShader, uniforms, depthTest: false, depthWrite: false });
-    this.stepMaterial = pass('IWaveStep', stepFragment, {
+    const stepText = `#define IWAVE_KERNEL_RADIUS ${IWAVE_KERNEL_RADIUS}\n#define IWAVE_ORBITS ${orbits}\n${stepFragment}`;
+    this.stepMaterial = pass('IWaveStep', stepText, {
       uHeights: { value: null },
-      uKernel: { value: this.kernelTexture },
       uObstacle: { value: this.obstacleTexture },
+      uWeights: { value: new Float32Array(orbits) },
+      uRightWeights: { value: new Float32Array(orbits) },
+      uSplit: { value: false },
       uN: { value: n },
-      uKernelRadius: { value: kernel.radius },
       uKick: { value: 0 },
       uDt: { value: 0 },
       uDamping: { value: options.damping ?? 0 },
       uSponge: { value: new Vector2(sponge.width, sponge.strength) },
+      uHull: { value: new Vector4() },
+      uHullShape: { value: new Vector4() },
+      uHullSources: { value: new Vector4() },
+      uReach: { value: BUMP_REACH },
     });
+    this.setKernels(options.kernel ?? fittedVerticalDerivativeKernel(), options.rightKernel ?? null);
     this.disturbMaterial = pass('IWaveDisturb', disturbFragment, {
       uHeights: { value: null },
       uObstacle: { value: this.obstacleTexture },
@@ -158,10 +168,23 @@ export class GpuIWave {
   /** Adds a bump at rest at world (x, z) (IWaveGrid.disturb). */
   disturb(d: Disturbance): void {
     const u = this.disturbMaterial.uniforms;
-    (u.uCentre.value as Vector2).set((d.x - this.centerX) / this.spacing + this.n / 2 - 0.5, (d.z - this.centerZ) / this.spacing + this.n / 2 - 0.5);
+    (u.uCentre.value as Vector2).set(...this.texelOf(d.x, d.z));
     u.uRadius.value = d.radius / this.spacing;
     u.uHeight.value = d.height;
     this.run(this.disturbMaterial);
+  }
+
+  /** The kernel of every texel, or `left`'s left of the middle and `right`'s right of it, a sponge lining the middle. */
+  setKernels(left: ConvolutionKernel, right: ConvolutionKernel | null): void {
+    const u = this.stepMaterial.uniforms;
+    (u.uWeights.value as Float32Array).set(kernelOrbitWeights(left));
+    (u.uRightWeights.value as Float32Array).set(right ? kernelOrbitWeights(right) : kernelOrbitWeights(left));
+    u.uSplit.value = right !== null;
+  }
+
+  /** The boat during the next steps (IWaveGrid.hull): its footprint solid, its bow and stern sources; null for none. */
+  setHull(hull: MovingHull | null): void {
+    this.hull = hull;
   }
 
   /** Advances the field by one step of `dt` seconds. */
@@ -169,7 +192,22 @@ export class GpuIWave {
     const u = this.stepMaterial.uniforms;
     u.uKick.value = (this.gravity * dt * dt) / this.spacing;
     u.uDt.value = dt;
+    const hull = this.hull;
+    const shape = u.uHullShape.value as Vector4;
+    if (hull) {
+      const [bow, stern] = hullSources(hull);
+      (u.uHull.value as Vector4).set(...this.texelOf(hull.x, hull.z), ...forwardOf(hull.heading));
+      shape.set((0.5 * hull.length) / this.spacing, (0.5 * hull.beam) / this.spacing, bow.radius / this.spacing, bow.rate * dt);
+      (u.uHullSources.value as Vector4).set(...this.texelOf(bow.x, bow.z), ...this.texelOf(stern.x, stern.z));
+    } else {
+      shape.set(0, 0, 1, 0);
+    }
     this.run(this.stepMaterial);
+  }
+
+  /** World (x, z) in texel units: texel (i, j)'s centre is (i, j). */
+  private texelOf(x: number, z: number): [number, number] {
+    return [(x - this.centerX) / this.spacing + this.n / 2 - 0.5, (z - this.centerZ) / this.spacing + this.n / 2 - 0.5];
   }
 
   /**
@@ -205,7 +243,6 @@ export class GpuIWave {
 
   dispose(): void {
     for (const target of this.targets) target.dispose();
-    this.kernelTexture.dispose();
     this.obstacleTexture.dispose();
     this.stepMaterial.dispose();
     this.disturbMaterial.dispose();

@@ -20,10 +20,12 @@ import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
 import { SkySource } from '../sky/skySource';
 import type { OceanMaterialInputs } from '../compare/compareSide';
 import { OceanMaterial } from './oceanMaterial';
-import type { InteractiveWaves } from '../iwave/interactiveWaves';
+import type { BoatInField, InteractiveWaves } from '../iwave/interactiveWaves';
 import { createInteractiveWaveUniforms } from '../iwave/interactiveWaveUniforms';
 import { IWAVE_MAX_HEIGHT } from '../../sim/iwave/fieldSize';
-import type { DisturbanceOptions } from '../../sim/iwave/interactiveField';
+import type { DisturbanceOptions } from '../../sim/iwave/disturbanceChecks';
+import type { Stone } from '../../sim/iwave/iwaveGrid';
+import { message, MessageError, type Message } from '../../sim/params/message';
 import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 
@@ -82,6 +84,9 @@ export class Ocean extends Object3D {
   private frameTime = 0;
   private disposed = false;
   private interactive: InteractiveWaves | null = null;
+  private boat: BoatInField | null = null;
+  /** Stones recorded while the interactive waves' code is on its way. */
+  private stonesDue: Stone[] = [];
 
   /** `params`: any subset of the parameters (src/sim/params/params.ts), validated as the URL and the GUI validate them. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, options: OceanOptions = {}) {
@@ -207,6 +212,8 @@ export class Ocean extends Object3D {
     }
     if (changed(...LOOK_KEYS)) applyLook(this.material, params);
     if (changed('interactiveWaves')) this.setInteractiveWaves(params.interactiveWaves);
+    this.interactive?.setEquation(params.iwaveEquation);
+    this.interactive?.setGuide(params.iwaveGuide);
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
       this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
@@ -228,9 +235,19 @@ export class Ocean extends Object3D {
     this.frameTime = time;
     this.waveView.update(time);
     if (this.interactive) {
+      this.interactive.setBoat(this.boat);
       this.interactive.advance(time);
       this.interactive.readBack();
     }
+  }
+
+  /**
+   * Your boat, for the interactive waves, before each update: its hull a solid in the field that
+   * pushes water at bow and stern (src/sim/iwave/movingHull.ts), and, while the analytic wake
+   * is drawn too, where that wake takes over its waves. Null: no boat.
+   */
+  setBoat(boat: BoatInField | null): void {
+    this.boat = boat;
   }
 
   /** `sample` (at world (x, z)) with the interactive waves added while they are on, from their latest read-back. */
@@ -244,9 +261,15 @@ export class Ocean extends Object3D {
    */
   private setInteractiveWaves(on: boolean): void {
     if (on && !this.interactive) {
-      const start = import('../iwave/interactiveWaves').then(({ InteractiveWaves }) => {
+      const start = import('../iwave/interactiveWaves').then(({ InteractiveWaves, iwaveChunk }) => {
         if (!this.params.interactiveWaves || this.interactive || this.disposed) return;
         this.interactive = new InteractiveWaves(this.renderer, this.interactiveWaveUniforms);
+        this.interactive.setEquation(this.params.iwaveEquation);
+        this.interactive.setGuide(this.params.iwaveGuide);
+        this.add(this.interactive.guide.lines);
+        this.interactive.record(this.stonesDue);
+        this.stonesDue = [];
+        this.binding.addChunks({ oceano_iwave: iwaveChunk() });
         this.material.setInteractiveWavesOn(true);
       });
       this.ready = Promise.all([this.ready, start]).then(() => undefined);
@@ -262,12 +285,24 @@ export class Ocean extends Object3D {
   /**
    * Drops a stone at world (x, z) into the interactive waves (interactiveWaves must be on): a
    * bump of `height` metres (negative: a dip) and `radius` metres, at rest, recorded at the
-   * current simulation time. Bad arguments throw, naming the argument, and change nothing;
-   * returns notices (a radius under one texel is raised to one texel).
+   * current simulation time. Bad arguments throw a MessageError naming the argument (its
+   * notice in the page's language), and change nothing; returns notices (a radius under one
+   * texel is raised to one texel).
    */
-  disturb(x: number, z: number, options: DisturbanceOptions = {}): string[] {
-    if (!this.interactive) throw new Error('disturb: the interactive waves are off (set interactiveWaves: true first).');
+  disturb(x: number, z: number, options: DisturbanceOptions = {}): Message[] {
+    if (!this.interactive) throw new MessageError(message('disturbFieldOff'), 'disturb: the interactive waves are off (set interactiveWaves: true first).');
     return this.interactive.disturb(x, z, options);
+  }
+
+  /** Stones from a record (a share link's, a preset's), each at its own time plus `after` seconds: the field is replayed to hold them. */
+  recordStones(stones: readonly Stone[], after = 0): void {
+    if (this.interactive) this.interactive.record(stones, after);
+    else for (const [time, ...rest] of stones) this.stonesDue.push([time + after, ...rest]);
+  }
+
+  /** The analytic wake's weight at world (x, z): 1 but where the interactive waves carry the boat's own (the hand-over). */
+  wakeWeight(x: number, z: number): number {
+    return this.interactive?.wakeWeight(x, z) ?? 1;
   }
 
   /** Height of the surface under (x, z) at `time`, kept while nothing it depends on changes (a paused view asks it every frame). */

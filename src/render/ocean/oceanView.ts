@@ -11,7 +11,7 @@ import type { ProbeSample, SurfaceProbe } from '../teaching/surfaceProbe';
 import type { TeachingFigure } from '../teaching/teachingFigure';
 import type { Rect } from '../../sim/layout/rect';
 import { SceneLights } from '../sky/sceneLights';
-import { KelvinGuideView } from '../wake/kelvinGuideView';
+import type { KelvinGuideView } from '../wake/kelvinGuideView';
 import type { CompareRenderer } from '../compare/compareRenderer';
 import type { Strip } from '../../sim/compare/compareLayout';
 import { compareModelNames } from '../../sim/compare/compareLayout';
@@ -20,6 +20,7 @@ import type { ChunkStats } from '../lod/oceanChunks';
 import { DEFAULT_NEAR } from './nearPlane';
 import { CAMERA_FAR, EyeClearance } from './eyeClearance';
 import { Ocean } from './ocean';
+
 
 export interface RenderStats extends ChunkStats {
   drawCalls: number;
@@ -54,7 +55,9 @@ export class OceanView {
   readonly clearance = new EyeClearance();
   readonly underwater: UnderwaterStage;
   private readonly lights: SceneLights;
-  private readonly kelvinGuide: KelvinGuideView;
+  /** The ±19.47° guide, its code fetched the first time it is shown. */
+  private kelvinGuide?: KelvinGuideView;
+  private kelvinGuideLoad?: Promise<void>;
   /** A page's own cube map, loaded by the app: the view disposes it. */
   private customSky: CubeTexture | null;
   private params: OceanParams;
@@ -67,6 +70,7 @@ export class OceanView {
   private cssSize = { width: 1, height: 1 };
   private free: Rect | null = null;
   private probe?: SurfaceProbe;
+
   private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, farCellsVisible: 0, lodCounts: [], underwater: false, submersion: 'above', composerPasses: 0 };
 
   /**
@@ -86,7 +90,6 @@ export class OceanView {
     this.ocean = new Ocean(this.renderer, params, customSky ? { sky: customSky } : {});
     this.scene.add(this.ocean.sky, this.ocean);
     this.lights = new SceneLights(this.scene);
-    this.kelvinGuide = new KelvinGuideView(this.scene);
     this.underwater = new UnderwaterStage(this.renderer, this.scene, this.camera, this.ocean, redraw, partFailed);
     this.applyParams(params);
   }
@@ -135,7 +138,17 @@ export class OceanView {
   /** The boat's wake for the coming frame, its culling bound, and the ±19.47° teaching guide at the boat. */
   setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
     this.ocean.setWake(data, bound);
-    this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
+    if (guide.visible && !this.kelvinGuide) {
+      this.kelvinGuideLoad ??= import('../wake/kelvinGuideView').then(
+        ({ KelvinGuideView }) => {
+          if (this.disposed) return;
+          this.kelvinGuide = new KelvinGuideView(this.scene);
+          this.redraw();
+        },
+        (error: unknown) => console.warn('Oceano: the Kelvin guide\'s code could not be loaded.', error),
+      );
+    }
+    this.kelvinGuide?.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -193,7 +206,7 @@ export class OceanView {
 
   /** Settles once every part asked for so far (the underwater passes, the compare code, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.figureLoad]).then(() => undefined);
+    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.figureLoad, this.kelvinGuideLoad]).then(() => undefined);
   }
 
   /**
@@ -262,7 +275,8 @@ export class OceanView {
   async probeSurface(points: readonly (readonly [number, number])[], time: number): Promise<ProbeSample[]> {
     const frameTime = this.ocean.time;
     const { SurfaceProbe } = await import('../teaching/surfaceProbe');
-    this.probe ??= new SurfaceProbe(this.renderer, this.ocean.binding, this.ocean.wakeUniforms);
+    this.probe ??= new SurfaceProbe(this.renderer, this.ocean.binding, this.ocean.wakeUniforms, this.ocean.interactiveWaveUniforms);
+    this.probe.setInteractiveWavesOn(this.ocean.interactiveWaves !== null);
     this.ocean.waveModelView.update(time);
     try {
       return this.probe.probe(points);
@@ -282,7 +296,7 @@ export class OceanView {
     this.probe?.dispose();
     this.figure?.dispose();
     this.underwater.dispose();
-    this.kelvinGuide.dispose();
+    this.kelvinGuide?.dispose();
     this.customSky?.dispose();
     this.renderer.dispose();
   }

@@ -3,7 +3,6 @@ import waterVolume from '../../../shaders/waterVolume.glsl?raw';
 import caustics from '../../../shaders/caustics.glsl?raw';
 import waterline from '../../../shaders/waterline.glsl?raw';
 import wake from '../../../shaders/wake.glsl?raw';
-import iwave from '../../../shaders/iwave.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
@@ -30,8 +29,10 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_waterline: waterline,
   // The boat's Kelvin wake and its foam, added to whichever wave model is active.
   oceano_wake: wake,
-  // The interactive waves' height field (iWave), added to whichever wave model is active.
-  oceano_iwave: iwave,
+  // The interactive waves (iWave): empty until their code, fetched when they are first switched
+  // on, hands the ocean's binding the real text (src/render/iwave/iwaveChunk.ts); until then
+  // OCEAN_IWAVE is never defined, so nothing reads it.
+  oceano_iwave: '',
   // The underwater passes' scene target, written after three's colour-space chunk (read back by
   // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,

@@ -17,10 +17,12 @@ import fragmentShader from '../../../shaders/probe.frag?raw';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import type { WaveBinding } from '../waves/waveBinding';
 import type { WakeUniforms } from '../wake/wakeUniforms';
+import type { InteractiveWaveUniforms } from '../iwave/interactiveWaveUniforms';
+import { setMaterialDefine } from '../shaders/materialDefines';
 
 const TARGET_WIDTH = 256;
 
-/** What the GPU computed at one grid point: the chunk's waveDisplacement and waveNormal (with the wake where it is on). */
+/** What the GPU computed at one grid point: the chunk's waveDisplacement and waveNormal (with the wake and the interactive waves where they are on). */
 export interface ProbeSample extends SurfaceSample {
   /** waveDisplacement(gridXZ): where the grid point goes, metres. `height` is its dy. */
   displacement: [number, number, number];
@@ -39,16 +41,22 @@ export class SurfaceProbe {
     private readonly renderer: WebGLRenderer,
     private readonly waves: WaveBinding,
     wake: WakeUniforms,
+    interactive: InteractiveWaveUniforms,
   ) {
     this.material = waves.attach(
       new ShaderMaterial({
         vertexShader,
         fragmentShader,
-        uniforms: { uTargetSize: { value: new Vector2() }, ...wake },
+        uniforms: { uTargetSize: { value: new Vector2() }, ...wake, ...interactive },
         depthTest: false,
         depthWrite: false,
       }),
     );
+  }
+
+  /** Whether the interactive waves are added (their chunk must have reached the binding first). */
+  setInteractiveWavesOn(on: boolean): void {
+    setMaterialDefine(this.material, 'OCEAN_IWAVE', on);
   }
 
   probe(points: readonly (readonly [number, number])[]): ProbeSample[] {

@@ -18,8 +18,17 @@ interface BoundShader {
 export class WaveBinding {
   private readonly shaders: BoundShader[] = [];
   private readonly patched = new Set<Material>();
+  /** Chunks handed over after start (a part fetched on first use), over the shared ones. */
+  private chunks: Readonly<Record<string, string>> = {};
 
   constructor(private active: WaveModelView) {}
+
+  /** Chunks that arrived with code fetched later (the interactive waves'): every bound material is resolved again with them. */
+  addChunks(chunks: Readonly<Record<string, string>>): void {
+    this.chunks = { ...this.chunks, ...chunks };
+    for (const bound of this.shaders) this.bind(bound, this.active);
+    for (const material of this.patched) material.needsUpdate = true;
+  }
 
   get model(): WaveModelView {
     return this.active;
@@ -32,7 +41,7 @@ export class WaveBinding {
 
   /** GLSL source with `#include <oceano_waves>` replaced by the active model's chunk, and Oceano's other chunks put in place. */
   resolve(source: string): string {
-    return resolveChunks(source, { oceano_waves: this.active.chunk });
+    return resolveChunks(source, { ...this.chunks, oceano_waves: this.active.chunk });
   }
 
   /** Binds a ShaderMaterial whose sources contain `#include <oceano_waves>`; returns it. */

@@ -114,9 +114,11 @@ export class BoatMotion {
   /**
    * `surface`, where given, says which surface `heightAt` reads: a paused view drawn again
    * (same time, place, heading, hull and surface) keeps the last target pose instead of
-   * sampling the surface five times again.
+   * sampling the surface five times again. `around`, where given, is the surface for a hull
+   * at (x, z, heading), read in place of `heightAt` (water that the hull itself changes: the
+   * interactive waves, held at 0 under it), and never kept.
    */
-  update(time: number, controls: BoatControls, hull: HullSize, heightAt: HeightAt, surface?: SurfaceKey): BoatMotionState {
+  update(time: number, controls: BoatControls, hull: HullSize, heightAt: HeightAt, surface?: SurfaceKey, around?: (x: number, z: number, heading: number) => HeightAt): BoatMotionState {
     const dt = this.lastTime === null ? NaN : time - this.lastTime;
     this.lastTime = time;
     const stepping = dt > 0 && dt <= this.maxStep;
@@ -136,7 +138,7 @@ export class BoatMotion {
       this.heading = { value: controls.heading, velocity: 0 };
     }
     const heading = this.heading.value - TWO_PI * Math.floor(this.heading.value / TWO_PI);
-    const target = this.targetAt(time, heading, hull, heightAt, surface);
+    const target = around ? targetPose(around(this.x, this.z, heading), this.x, this.z, heading, hull) : this.targetAt(time, heading, hull, heightAt, surface);
     if (stepping) {
       const omega = 1 / controls.response;
       this.heave = followStep(this.heave, target.y, dt, omega, HEAVE_BAND);

@@ -1,34 +1,25 @@
-import type { Disturbance } from './iwaveGrid';
+import { GRAVITY } from './iwaveGrid';
+import { fittedVerticalDerivativeKernel, waveEquationKernel, type ConvolutionKernel } from './verticalDerivativeKernel';
 
 import { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP } from './fieldSize';
 
 export { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP };
-
-export interface DisturbanceOptions {
-  /** Metres; raised to one texel if smaller. Default 1. */
-  radius?: number;
-  /** Metres, negative for a dip. Default 0.3. */
-  height?: number;
-}
+export { checkDisturbance, type DisturbanceOptions } from './disturbanceChecks';
 
 /**
- * A disturbance checked as the API takes it: a non-finite or out-of-range argument throws a
- * RangeError naming it (and nothing changes); a radius under one texel is raised to one texel,
- * with a notice saying so.
+ * The plain wave equation's speed where it stands in for iWave or beside it (the
+ * stone-compare preset): the phase speed √(g/k) of a 1.5 rad/m wave, mid-band, 2.56 m/s.
  */
-export function checkDisturbance(x: number, z: number, options: DisturbanceOptions = {}): { disturbance: Disturbance; notices: string[] } {
-  const radius = options.radius ?? 1;
-  const height = options.height ?? 0.3;
-  if (!Number.isFinite(x) || !Number.isFinite(z)) throw new RangeError(`disturb: x and z must be finite numbers of metres (got ${x}, ${z}).`);
-  if (!Number.isFinite(radius) || radius <= 0 || radius > IWAVE_MAX_RADIUS) throw new RangeError(`disturb: radius must be a number of metres above 0 and at most ${IWAVE_MAX_RADIUS} (got ${radius}).`);
-  if (!Number.isFinite(height) || Math.abs(height) > IWAVE_MAX_HEIGHT) throw new RangeError(`disturb: height must be a number of metres from −${IWAVE_MAX_HEIGHT} to ${IWAVE_MAX_HEIGHT} (got ${height}).`);
-  const notices: string[] = [];
-  let used = radius;
-  if (radius < IWAVE_SPACING) {
-    used = IWAVE_SPACING;
-    notices.push(`disturb: radius ${radius} m is below one texel of the interactive field; raised to ${IWAVE_SPACING} m.`);
-  }
-  return { disturbance: { x, z, radius: used, height }, notices };
+export const WAVE_EQUATION_SPEED = Math.sqrt(GRAVITY / 1.5);
+
+/** Which equation the field solves: deep water's (iWave), the plain wave equation, or iWave left of the middle and the wave equation right of it. */
+export type IWaveEquation = 'dispersive' | 'non-dispersive' | 'side-by-side';
+
+/** The kernels for an equation: the one of every texel (or of the left half), and the right half's, if split. */
+export function equationKernels(equation: IWaveEquation, spacing = IWAVE_SPACING): { kernel: ConvolutionKernel; rightKernel: ConvolutionKernel | null } {
+  const wave = () => waveEquationKernel(WAVE_EQUATION_SPEED, spacing, GRAVITY);
+  if (equation === 'non-dispersive') return { kernel: wave(), rightKernel: null };
+  return { kernel: fittedVerticalDerivativeKernel(), rightKernel: equation === 'side-by-side' ? wave() : null };
 }
 
 /** A read-back of the field: heights every `stride` floats (RGBA: 4), n × n row by row along z, around (centerX, centerZ). */

@@ -1,4 +1,5 @@
 import type { ConvolutionKernel } from './verticalDerivativeKernel';
+import { hullCovers, hullSources, type MovingHull } from './movingHull';
 
 /** Standard gravity, m/s². */
 export const GRAVITY = 9.81;
@@ -12,6 +13,12 @@ export interface IWaveGridOptions {
   spacing: number;
   /** The operator standing for √(−∇²) (fittedVerticalDerivativeKernel, or a control). */
   kernel: ConvolutionKernel;
+  /**
+   * Another operator for the texels right of the middle (i ≥ n/2), the two halves kept apart
+   * by a sponge half as wide lining the middle: two equations side by side (the stone-compare
+   * preset). Needs a sponge.
+   */
+  rightKernel?: ConvolutionKernel | null;
   gravity?: number;
   /** Light damping everywhere, 1/s: amplitudes fall as exp(−α t / 2). */
   damping?: number;
@@ -55,6 +62,9 @@ export interface Disturbance {
   height: number;
 }
 
+/** A disturbance at a simulation time, as presets and share links carry it: [time s, x m, z m, radius m, height m]. */
+export type Stone = readonly [time: number, x: number, z: number, radius: number, height: number];
+
 /** How far a bump reaches, in radii: past it the Gaussian is below 3.4·10⁻⁴ of its height and is cut. */
 export const BUMP_REACH = 2;
 
@@ -87,6 +97,7 @@ export class IWaveGrid {
   readonly spacing: number;
   readonly gravity: number;
   readonly kernel: ConvolutionKernel;
+  readonly rightKernel: ConvolutionKernel | null;
   /** Heights now and one step ago, row by row (z), metres. */
   height: Float64Array;
   previous: Float64Array;
@@ -94,6 +105,8 @@ export class IWaveGrid {
   readonly obstacle: Float32Array;
   /** α per texel, 1/s. */
   readonly damping: Float64Array;
+  /** The boat during the next step (its footprint a solid, its bow and stern sources), or null. */
+  hull: MovingHull | null = null;
   /** World (x, z) of the grid's centre. */
   centerX = 0;
   centerZ = 0;
@@ -103,6 +116,7 @@ export class IWaveGrid {
   private readonly paddedSize: number;
   private next: Float64Array;
   private readonly convolution: Float64Array;
+  private readonly rightConvolution: Float64Array;
 
   constructor(options: IWaveGridOptions) {
     const { n, spacing, kernel } = options;
@@ -111,6 +125,7 @@ export class IWaveGrid {
     this.rows = m;
     this.spacing = spacing;
     this.kernel = kernel;
+    this.rightKernel = options.rightKernel ?? null;
     this.gravity = options.gravity ?? GRAVITY;
     this.wrapX = options.wrap === 'xz';
     this.wrapZ = options.wrap === 'xz' || options.wrap === 'z';
@@ -126,11 +141,15 @@ export class IWaveGrid {
         const fromX = Math.min(i, n - 1 - i) + 0.5;
         const fromZ = Math.min(j, m - 1 - j) + 0.5;
         const fromEdge = axes === 'x' ? fromX : Math.min(fromX, fromZ);
-        this.damping[j * n + i] = (options.damping ?? 0) + (options.sponge ? spongeDamping(fromEdge, options.sponge) : 0);
+        let sponge = options.sponge ? spongeDamping(fromEdge, options.sponge) : 0;
+        if (options.sponge && this.rightKernel) sponge = Math.max(sponge, spongeDamping(Math.abs(i + 0.5 - n / 2), { ...options.sponge, width: options.sponge.width / 2 }));
+        this.damping[j * n + i] = (options.damping ?? 0) + sponge;
       }
     }
-    this.paddedSize = n + 2 * kernel.radius;
-    this.padded = new Float64Array(this.paddedSize * (m + 2 * kernel.radius));
+    const reach = Math.max(kernel.radius, this.rightKernel?.radius ?? 0);
+    this.paddedSize = n + 2 * reach;
+    this.padded = new Float64Array(this.paddedSize * (m + 2 * reach));
+    this.rightConvolution = new Float64Array(this.rightKernel ? n * m : 0);
   }
 
   /** World x of texel column i (its centre). */
@@ -144,13 +163,17 @@ export class IWaveGrid {
 
   /** Adds a bump at rest (to h and h⁻ alike): an initial elevation, as a dropped stone leaves. */
   disturb(d: Disturbance): void {
+    this.addAtRest(d, this.obstacle);
+  }
+
+  private addAtRest(d: Disturbance, mask: Float32Array): void {
     const { n, rows } = this;
     const reach = Math.ceil((BUMP_REACH * d.radius) / this.spacing) + 1;
     const ci = Math.round((d.x - this.centerX) / this.spacing + n / 2 - 0.5);
     const cj = Math.round((d.z - this.centerZ) / this.spacing + rows / 2 - 0.5);
     for (let j = Math.max(0, cj - reach); j <= Math.min(rows - 1, cj + reach); j++) {
       for (let i = Math.max(0, ci - reach); i <= Math.min(n - 1, ci + reach); i++) {
-        const bump = d.height * bumpProfile(Math.hypot(this.texelX(i) - d.x, this.texelZ(j) - d.z), d.radius) * this.obstacle[j * n + i];
+        const bump = d.height * bumpProfile(Math.hypot(this.texelX(i) - d.x, this.texelZ(j) - d.z), d.radius) * mask[j * n + i];
         this.height[j * n + i] += bump;
         this.previous[j * n + i] += bump;
       }
@@ -185,9 +208,9 @@ export class IWaveGrid {
   }
 
   /** G ∗ h at every texel, into `out` (texel units: √(−∇²)h times Δx). */
-  convolve(h: Float64Array, out: Float64Array): void {
+  convolve(h: Float64Array, out: Float64Array, kernel = this.kernel): void {
     const { n, rows } = this;
-    const r = this.kernel.radius;
+    const r = kernel.radius;
     const size = 2 * r + 1;
     const p = this.paddedSize;
     const padded = this.padded;
@@ -203,7 +226,7 @@ export class IWaveGrid {
     const taps: { offset: number; weight: number }[] = [];
     for (let b = 0; b < size; b++) {
       for (let a = 0; a < size; a++) {
-        const weight = this.kernel.weights[b * size + a];
+        const weight = kernel.weights[b * size + a];
         if (weight !== 0) taps.push({ offset: (b - r) * p + (a - r), weight });
       }
     }
@@ -219,20 +242,39 @@ export class IWaveGrid {
     }
   }
 
-  /** One step of `dt` seconds. */
+  /**
+   * One step of `dt` seconds. With a hull, its footprint is solid like the obstacle mask, and
+   * after the step its two sources (hullSources) are added at rest, `dt` times their rate, to
+   * the water outside it.
+   */
   step(dt: number): void {
     const cells = this.n * this.rows;
     const conv = this.convolution;
     this.convolve(this.height, conv);
+    if (this.rightKernel) {
+      this.convolve(this.height, this.rightConvolution, this.rightKernel);
+      for (let j = 0; j < this.rows; j++) for (let i = this.n / 2; i < this.n; i++) conv[j * this.n + i] = this.rightConvolution[j * this.n + i];
+    }
     const kick = (this.gravity * dt * dt) / this.spacing;
     const out = this.next;
+    const mask = this.hull ? this.hullMask(this.hull) : this.obstacle;
     for (let c = 0; c < cells; c++) {
       const half = 0.5 * this.damping[c] * dt;
-      out[c] = ((2 * this.height[c] - (1 - half) * this.previous[c] - kick * conv[c]) / (1 + half)) * this.obstacle[c];
+      out[c] = ((2 * this.height[c] - (1 - half) * this.previous[c] - kick * conv[c]) / (1 + half)) * mask[c];
     }
     this.next = this.previous;
     this.previous = this.height;
     this.height = out;
+    if (this.hull) for (const source of hullSources(this.hull)) this.addAtRest({ x: source.x, z: source.z, radius: source.radius, height: source.rate * dt }, mask);
+  }
+
+  /** The obstacle mask with the hull's footprint made solid. */
+  private hullMask(hull: MovingHull): Float32Array {
+    const mask = Float32Array.from(this.obstacle);
+    for (let j = 0; j < this.rows; j++) {
+      for (let i = 0; i < this.n; i++) if (hullCovers(hull, this.texelX(i), this.texelZ(j))) mask[j * this.n + i] = 0;
+    }
+    return mask;
   }
 
   /** Height at the world point (x, z), bilinear between texel centres; 0 off the grid. */

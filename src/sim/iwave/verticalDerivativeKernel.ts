@@ -16,6 +16,8 @@ export interface ConvolutionKernel {
 
 /** The kernel's size: 13 × 13 taps. */
 export const IWAVE_KERNEL_RADIUS = 6;
+/** Its distinct weights, one per orbit (a, b), 0 ≤ b ≤ a ≤ radius, under the grid's eightfold symmetry: 28. */
+export const IWAVE_KERNEL_ORBITS = ((IWAVE_KERNEL_RADIUS + 1) * (IWAVE_KERNEL_RADIUS + 2)) / 2;
 
 /**
  * The band (radians per texel) over which the fitted kernel's response is held to |k| and its
@@ -78,6 +80,26 @@ export function kernelResponse(kernel: ConvolutionKernel, kx: number, kz: number
     }
   }
   return sum;
+}
+
+/**
+ * One weight per orbit of `radius` (orbits' order: a from 0, b from 0 to a), read from a
+ * kernel of that radius or less (a smaller one's orbits beyond its reach are 0): what the GPU
+ * step reads (shaders/iwaveStep.frag). A kernel without the grid's symmetry throws.
+ */
+export function kernelOrbitWeights(kernel: ConvolutionKernel, radius = IWAVE_KERNEL_RADIUS): Float32Array {
+  const r = kernel.radius;
+  if (r > radius) throw new RangeError(`A kernel of radius ${r} does not fit in ${radius}.`);
+  const size = 2 * r + 1;
+  const list = orbits(radius);
+  const out = new Float32Array(list.length);
+  list.forEach(([a, b], o) => {
+    if (a > r) return;
+    const images = mirrorImages(a, b).map(([x, y]) => kernel.weights[(y + r) * size + (x + r)]);
+    if (images.some((w) => w !== images[0])) throw new RangeError(`The kernel is not symmetric at offset (${a}, ${b}).`);
+    out[o] = images[0];
+  });
+  return out;
 }
 
 function kernelFromOrbits(radius: number, orbitWeights: ArrayLike<number>): ConvolutionKernel {

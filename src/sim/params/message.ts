@@ -38,6 +38,10 @@ export const MESSAGE_IDS = [
   'panelLoadFailed',
   'underwaterLoadFailed',
   'elementAttributeInvalid',
+  'disturbInvalid',
+  'disturbRadiusRaised',
+  'disturbFieldOff',
+  'stonesInvalid',
 ] as const;
 
 export type MessageId = (typeof MESSAGE_IDS)[number];

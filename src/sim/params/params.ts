@@ -90,6 +90,11 @@ export const paramDefs = {
   // added to whichever wave model is active; stones dropped with disturb() make waves that obey
   // ω² = g k. Off, none of its passes run and none of its code is compiled in.
   interactiveWaves: { kind: 'boolean', default: false, label: 'Interactive waves (iWave)' },
+  // What the field solves: deep water (iWave), the plain wave equation, or the two side by side
+  // about the field's centre (src/sim/iwave/interactiveField.ts); and the teaching rings drawn
+  // round each stone where theory puts its crests.
+  iwaveEquation: { kind: 'choice', default: 'dispersive', options: ['dispersive', 'non-dispersive', 'side-by-side'], label: 'Interactive waves: equation' },
+  iwaveGuide: { kind: 'boolean', default: false, label: 'Rings where theory puts the crests' },
   // Teaching views of the seed's figures.
   shading: { kind: 'choice', default: 'water', options: ['water', 'normals'], label: 'Shading' },
   normals: { kind: 'choice', default: 'fabricated', options: ['fabricated', 'flat'], label: 'Normals' },
