@@ -31,6 +31,13 @@ export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
 export const DEFAULT_BOAT_MODEL = 'models/boat.glb';
 
 /**
+ * Where the page's start-up is marked (`oceano:` marks on the performance timeline): its first
+ * ocean's, up to its first frame, and null from then on, since the browser keeps every mark until the page
+ * clears it and figures that start again as a page scrolls would add theirs without end.
+ */
+let startupTimeline: Performance | null = performance;
+
+/**
  * One live ocean in a container element: the composition root. It owns the parameters and the clock and wires
  * the parts, each in a file of its own: the DOM scaffold, FrameLoop, FrameStats, ContextWatch, BoatController,
  * OrbitCamera, sharing, the API's argument checks and the asset fallbacks. The automation API is a thin layer.
@@ -88,9 +95,9 @@ export class OceanApp {
     loading.begin('firstFrame');
     await loading.painted();
     if (this.disposed) return sky?.dispose();
-    performance.mark('oceano:view-start');
+    startupTimeline?.mark('oceano:view-start');
     this.view = new OceanView(this.canvas, sky, this.params, this.loop.requestRender, () => this.notify(message('underwaterLoadFailed')));
-    performance.mark('oceano:view-built');
+    startupTimeline?.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
     if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
@@ -121,13 +128,14 @@ export class OceanApp {
       scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, boat: this.boatMotion.info() }),
     });
     if (state.lesson) this.lessons.current = state.lesson;
-    performance.mark('oceano:controls');
+    startupTimeline?.mark('oceano:controls');
     this.resize();
     (this.resizeObserver = new ResizeObserver(() => this.resize())).observe(this.canvas);
     this.started = true;
-    this.renderFrame(true, true);
+    this.renderFrame(true);
     this.frameStats.markFirstFrame();
-    performance.mark('oceano:first-frame');
+    startupTimeline?.mark('oceano:first-frame');
+    startupTimeline = null;
     this.options.onFirstFrame?.();
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
@@ -211,18 +219,18 @@ export class OceanApp {
   }
 
   /** Draws one frame at the clock's time; `sync` waits for the GPU so frameMs counts GPU work (see FrameStats). */
-  renderFrame(sync = this.frameStats.loopShouldSync(), first = false): void {
+  renderFrame(sync = this.frameStats.loopShouldSync()): void {
     if (this.context?.lost) return;
     const start = performance.now();
     this.boatMotion.update(this.clock.time, this.params, this.view.waves, this.view);
     const boatEnd = performance.now();
-    if (first) performance.mark('oceano:first-boat-update');
+    startupTimeline?.mark('oceano:first-boat-update');
     this.view.update(this.clock.time);
     this.frameStats.recordUpdate(boatEnd - start, performance.now() - start);
-    if (first) performance.mark('oceano:first-update');
+    startupTimeline?.mark('oceano:first-update');
     this.frameStats.recordTwin(this.view.waves.takeMainThreadMs?.() ?? null);
     this.view.draw();
-    if (first) performance.mark('oceano:first-draw-submitted');
+    startupTimeline?.mark('oceano:first-draw-submitted');
     this.controls?.showCounts(this.frameStats.framesDrawn++, this.loop.isLooping, () => this.view.stats());
     this.lessons?.afterFrame();
     if (!sync) return;

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { CDPSession, Page } from 'puppeteer';
+import { heapFigures, type HeapFigures } from './heapFigures';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
 
@@ -35,13 +36,6 @@ interface GpuCounts {
   geometries: number;
   textures: number;
   programs: number;
-}
-
-interface HeapFigures {
-  /** Runtime.getHeapUsage's used size after GC, bytes. */
-  used: number;
-  /** From a heap snapshot: everything (the page's native objects too) and V8's compiled code, bytes. */
-  snapshot: { total: number; code: number };
 }
 
 const UNDER = { position: [0, -6, 40], target: [0, -6, -20] };
@@ -130,44 +124,9 @@ class Soak {
     });
   }
 
-  /** The JS heap in use after a full garbage collection, bytes. */
-  async heapAfterGc(): Promise<number> {
-    this.session ??= await this.page.createCDPSession();
-    // Twice: objects freed by the first collection's finalizers go in the second.
-    await this.session.send('HeapProfiler.collectGarbage');
-    await this.session.send('HeapProfiler.collectGarbage');
-    return (await this.session.send('Runtime.getHeapUsage')).usedSize;
-  }
-
   async heap(): Promise<HeapFigures> {
-    const used = await this.heapAfterGc();
-    return { used, snapshot: await this.heapSnapshot() };
-  }
-
-  /**
-   * The heap after GC from a heap snapshot: everything, and V8's compiled code among it
-   * (bytecode, optimized code, feedback), which the engine grows while it optimizes the
-   * frame's functions and flushes on its own.
-   */
-  private async heapSnapshot(): Promise<{ total: number; code: number }> {
-    const session = this.session!;
-    const chunks: string[] = [];
-    const collect = (event: { chunk: string }) => chunks.push(event.chunk);
-    session.on('HeapProfiler.addHeapSnapshotChunk', collect);
-    await session.send('HeapProfiler.takeHeapSnapshot', { reportProgress: false });
-    session.off('HeapProfiler.addHeapSnapshotChunk', collect);
-    const snapshot = JSON.parse(chunks.join('')) as { snapshot: { meta: { node_fields: string[]; node_types: [string[]] } }; nodes: number[] };
-    const fields = snapshot.snapshot.meta.node_fields;
-    const typeNames = snapshot.snapshot.meta.node_types[0];
-    const [typeAt, sizeAt, stride] = [fields.indexOf('type'), fields.indexOf('self_size'), fields.length];
-    let total = 0;
-    let code = 0;
-    for (let i = 0; i < snapshot.nodes.length; i += stride) {
-      const size = snapshot.nodes[i + sizeAt];
-      total += size;
-      if (typeNames[snapshot.nodes[i + typeAt]] === 'code') code += size;
-    }
-    return { total, code };
+    this.session ??= await this.page.createCDPSession();
+    return heapFigures(this.session);
   }
 
   async close(): Promise<void> {

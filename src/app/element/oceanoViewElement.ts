@@ -22,9 +22,13 @@ const HTML_ATTRIBUTES = new Set<string>(['id', 'class', 'style', 'title', 'hidde
  */
 type Phase = 'detached' | 'waiting' | 'starting' | 'live' | 'released' | 'failed';
 
-/** What a released figure keeps to come back as it was: its share link's settings and whether time ran. */
+/**
+ * What a released figure keeps to come back as it was: its share link's settings, as the
+ * link's query text (one string, where name/value pairs made a few kilobytes of small arrays
+ * per figure), and whether time ran.
+ */
 interface SavedView {
-  settings: [string, string][];
+  query: string;
   playing: boolean;
 }
 
@@ -173,7 +177,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
 
   private start(): void {
     const saved = this.saved;
-    const state = parseSettings(saved ? [...saved.settings, ...this.pendingChanges] : this.settings());
+    const state = parseSettings(saved ? [...new URLSearchParams(saved.query), ...this.pendingChanges] : this.settings());
     const firstStart = saved === null;
     this.pendingChanges = [];
     this.phase = 'starting';
@@ -245,8 +249,9 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     if (!app) return;
     const share = new URL(app.shareUrl());
     // A preset's culling camera is not in the share link (the lesson is): the preset comes first, the link's values over it.
-    const presets = this.settings().filter(([key]) => key === 'preset');
-    this.saved = { settings: [...presets, ...share.searchParams], playing: app.clock.playing };
+    const query = new URLSearchParams(this.settings().filter(([key]) => key === 'preset'));
+    for (const [key, value] of share.searchParams) query.append(key, value);
+    this.saved = { query: query.toString(), playing: app.clock.playing };
     this.pendingChanges = [];
     app.renderFrame(false);
     this.cover?.showStill(app.canvas);
