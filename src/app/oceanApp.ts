@@ -50,7 +50,8 @@ export class OceanApp {
   private readonly scaffold: Scaffold;
   private params: OceanParams;
   private view!: OceanView;
-  private orbit!: OrbitCamera;
+  /** The camera's controls, once started: the element gates their touch gestures (element/touchOrbitGate.ts). */
+  orbit!: OrbitCamera;
   private boatMotion!: BoatController;
   private context?: ContextWatch;
   private controls?: AppControls;

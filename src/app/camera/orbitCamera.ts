@@ -8,7 +8,7 @@ const DIVE_LOOK_AHEAD = 60;
 
 /** OrbitControls around a target, with poses that restore exactly (shared links) and the panel's "Dive". */
 export class OrbitCamera {
-  private readonly controls: OrbitControls;
+  readonly controls: OrbitControls;
   private readonly exact = new Vector3();
 
   constructor(

@@ -8,6 +8,7 @@ import { DEFAULT_CAMERA } from '../camera/cameraPose';
 import { PAGE_KEYS, parseSettings, type UrlState } from '../url/urlState';
 import { readStartupOptions, STARTUP_ATTRIBUTES, type StartupOptions } from './startupOptions';
 import { FigureCover } from './figureCover';
+import { gateTouchOrbit } from './touchOrbitGate';
 import { ContextBudget, distanceToViewport, type BudgetedFigure } from './contextBudget';
 
 /** HTML lower-cases attribute names: map them back to the URL's names (swellamplitude → swellAmplitude). */
@@ -80,6 +81,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
   /** Counts the apps this element has made: hooks of one that has been closed since are ignored. */
   private generation = 0;
   private stopWatching: (() => void) | null = null;
+  private stopGatingTouch: (() => void) | null = null;
   private nearWatch: IntersectionObserver | null = null;
 
   connectedCallback(): void {
@@ -234,7 +236,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
         if (current() && firstStart) this.dispatchEvent(new CustomEvent('progress', { detail: { totalProgress: fraction } }));
       },
       onFirstFrame: () => {
-        if (!current()) return;
+        if (!current() || !this.app) return;
+        this.stopGatingTouch = gateTouchOrbit(this.app.orbit.controls, this.app.canvas);
         this.cover?.uncover();
         if (this.loadFired) return;
         this.loadFired = true;
@@ -268,6 +271,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     this.oceano = null;
     this.stopWatching?.();
     this.stopWatching = null;
+    this.stopGatingTouch?.();
+    this.stopGatingTouch = null;
     app?.dispose();
   }
 
