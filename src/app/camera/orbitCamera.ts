@@ -16,8 +16,8 @@ export class OrbitCamera {
   private disposed = false;
   /** The point orbited. One vector for the camera's whole life: the boat's follower keeps it. */
   readonly target = new Vector3().fromArray(DEFAULT_CAMERA.target);
-  /** Settles once the controls answer the pointer. */
-  readonly loaded: Promise<void>;
+  /** The controls, once they answer the pointer (undefined if their code could not be had). */
+  readonly loaded: Promise<OrbitControls | undefined>;
   private readonly exact = new Vector3();
 
   constructor(
@@ -27,7 +27,7 @@ export class OrbitCamera {
   ) {
     camera.lookAt(this.target);
     this.loaded = import('three/addons/controls/OrbitControls.js').then(({ OrbitControls }) => {
-      if (this.disposed) return;
+      if (this.disposed) return undefined;
       const pose = this.pose();
       const controls = new OrbitControls(camera, canvas);
       controls.target = this.target;
@@ -36,7 +36,11 @@ export class OrbitCamera {
       controls.addEventListener('change', onChange);
       this.controls = controls;
       this.setPose(pose);
-    }, (error) => console.warn('Oceano: the camera\'s pointer controls could not be loaded; the camera keys still work.', error));
+      return controls;
+    }, (error) => {
+      console.warn('Oceano: the camera\'s pointer controls could not be loaded; the camera keys still work.', error);
+      return undefined;
+    });
   }
 
   setPose(pose: CameraPose): void {

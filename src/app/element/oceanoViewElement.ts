@@ -8,6 +8,7 @@ import { DEFAULT_CAMERA } from '../camera/cameraPose';
 import { PAGE_KEYS, parseSettings, type UrlState } from '../url/urlState';
 import { readStartupOptions, STARTUP_ATTRIBUTES, type StartupOptions } from './startupOptions';
 import { FigureCover } from './figureCover';
+import { gateTouchOrbit } from './touchOrbitGate';
 import { ContextBudget, distanceToViewport, type BudgetedFigure } from './contextBudget';
 
 /** HTML lower-cases attribute names: map them back to the URL's names (swellamplitude → swellAmplitude). */
@@ -22,9 +23,13 @@ const HTML_ATTRIBUTES = new Set<string>(['id', 'class', 'style', 'title', 'hidde
  */
 type Phase = 'detached' | 'waiting' | 'starting' | 'live' | 'released' | 'failed';
 
-/** What a released figure keeps to come back as it was: its share link's settings and whether time ran. */
+/**
+ * What a released figure keeps to come back as it was: its share link's settings, as the
+ * link's query text (one string, where name/value pairs made a few kilobytes of small arrays
+ * per figure), and whether time ran.
+ */
 interface SavedView {
-  settings: [string, string][];
+  query: string;
   playing: boolean;
 }
 
@@ -76,6 +81,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
   /** Counts the apps this element has made: hooks of one that has been closed since are ignored. */
   private generation = 0;
   private stopWatching: (() => void) | null = null;
+  private stopGatingTouch: (() => void) | null = null;
   private nearWatch: IntersectionObserver | null = null;
 
   connectedCallback(): void {
@@ -173,7 +179,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
 
   private start(): void {
     const saved = this.saved;
-    const state = parseSettings(saved ? [...saved.settings, ...this.pendingChanges] : this.settings());
+    const state = parseSettings(saved ? [...new URLSearchParams(saved.query), ...this.pendingChanges] : this.settings());
     const firstStart = saved === null;
     this.pendingChanges = [];
     this.phase = 'starting';
@@ -230,7 +236,11 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
         if (current() && firstStart) this.dispatchEvent(new CustomEvent('progress', { detail: { totalProgress: fraction } }));
       },
       onFirstFrame: () => {
-        if (!current()) return;
+        if (!current() || !this.app) return;
+        const app = this.app;
+        void app.orbit.loaded.then((controls) => {
+          if (controls && this.app === app) this.stopGatingTouch = gateTouchOrbit(controls, app.canvas);
+        });
         this.cover?.uncover();
         if (this.loadFired) return;
         this.loadFired = true;
@@ -245,8 +255,9 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     if (!app) return;
     const share = new URL(app.shareUrl());
     // A preset's culling camera is not in the share link (the lesson is): the preset comes first, the link's values over it.
-    const presets = this.settings().filter(([key]) => key === 'preset');
-    this.saved = { settings: [...presets, ...share.searchParams], playing: app.clock.playing };
+    const query = new URLSearchParams(this.settings().filter(([key]) => key === 'preset'));
+    for (const [key, value] of share.searchParams) query.append(key, value);
+    this.saved = { query: query.toString(), playing: app.clock.playing };
     this.pendingChanges = [];
     app.renderFrame(false);
     this.cover?.showStill(app.canvas);
@@ -263,6 +274,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     this.oceano = null;
     this.stopWatching?.();
     this.stopWatching = null;
+    this.stopGatingTouch?.();
+    this.stopGatingTouch = null;
     app?.dispose();
   }
 
