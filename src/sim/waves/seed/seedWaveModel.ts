@@ -1,6 +1,7 @@
 import { generateRippleHeightmaps, type Heightmap } from '../../noise/perlinNoise';
 import type { OceanParams } from '../../params/params';
-import { HEIGHTMAP_SIZE, maxDisplacement, surfaceHeight, surfaceNormal, surfaceStateAt, type SurfaceState } from './seedSurface';
+import { HEIGHTMAP_SIZE, maxDisplacement, NORMAL_DELTA, RIPPLE_TILE_SIZE, surfaceHeight, surfaceNormal, surfaceStateAt, type SurfaceState } from './seedSurface';
+import { heightmapSlopeVariance, seedSlopeVariance } from './seedSlopes';
 import type { DisplacementBounds, SurfaceSample, WaveModel } from '../waveModel';
 
 /** The parameters the seed's sea reads; everything else in OceanParams leaves it unchanged. */
@@ -16,6 +17,8 @@ export class SeedWaveModel implements WaveModel {
   readonly name = 'seed';
   private seed: number;
   heightmaps: [Heightmap, Heightmap];
+  /** Each heightmap's mean-square slope at unit strength, as the fabricated normal takes it. */
+  private heightmapSlopes: [number, number];
   private params: SeedWaveParams;
   // The state of the last time asked for: a frame samples many points at one time (boat,
   // underwater switch), and each state costs two square roots and seven reductions.
@@ -28,6 +31,11 @@ export class SeedWaveModel implements WaveModel {
     this.params = params;
     this.seed = params.seed;
     this.heightmaps = generateRippleHeightmaps(params.seed, HEIGHTMAP_SIZE);
+    this.heightmapSlopes = this.measureHeightmapSlopes();
+  }
+
+  private measureHeightmapSlopes(): [number, number] {
+    return this.heightmaps.map((map) => heightmapSlopeVariance(map, RIPPLE_TILE_SIZE, NORMAL_DELTA)) as [number, number];
   }
 
   /** Returns true when the heightmaps were regenerated (the seed changed). */
@@ -38,6 +46,7 @@ export class SeedWaveModel implements WaveModel {
     if (params.seed === this.seed) return false;
     this.seed = params.seed;
     this.heightmaps = generateRippleHeightmaps(params.seed, HEIGHTMAP_SIZE);
+    this.heightmapSlopes = this.measureHeightmapSlopes();
     return true;
   }
 
@@ -61,6 +70,11 @@ export class SeedWaveModel implements WaveModel {
   sample(x: number, z: number, time: number): SurfaceSample {
     const state = this.stateAt(time);
     return { height: surfaceHeight(state, this.heightmaps, x, z), normal: surfaceNormal(state, this.heightmaps, x, z) };
+  }
+
+  /** See LiveWaveModel: the swell's and the blended ripples' mean-square slope at `time`. */
+  slopeVariance(time: number): number {
+    return seedSlopeVariance(this.stateAt(time), this.heightmapSlopes);
   }
 
   bounds(): DisplacementBounds {
