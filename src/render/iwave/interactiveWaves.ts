@@ -1,4 +1,5 @@
 import type { WebGLRenderer } from 'three';
+import iwaveChunk from '../../../shaders/iwave.glsl?raw';
 import { GpuIWave } from './gpuIWave';
 import { IWAVE_DAMPING, IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, sampleField, type DisturbanceOptions, type FieldSnapshot } from '../../sim/iwave/interactiveField';
 import type { Disturbance } from '../../sim/iwave/iwaveGrid';
@@ -16,6 +17,8 @@ export type { InteractiveWaveUniforms };
  * recorded disturbances from there.
  */
 export class InteractiveWaves {
+  /** The ocean's GLSL for the field (`#include <oceano_iwave>`), handed to the wave binding when this part arrives. */
+  static readonly chunk: string = iwaveChunk;
   /** The GPU field itself (its render target can be read back). */
   readonly field: GpuIWave;
   private step = 0;

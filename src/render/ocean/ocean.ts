@@ -247,6 +247,7 @@ export class Ocean extends Object3D {
       const start = import('../iwave/interactiveWaves').then(({ InteractiveWaves }) => {
         if (!this.params.interactiveWaves || this.interactive || this.disposed) return;
         this.interactive = new InteractiveWaves(this.renderer, this.interactiveWaveUniforms);
+        this.binding.provideChunk('oceano_iwave', InteractiveWaves.chunk);
         this.material.setInteractiveWavesOn(true);
       });
       this.ready = Promise.all([this.ready, start]).then(() => undefined);

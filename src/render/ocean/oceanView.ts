@@ -10,7 +10,7 @@ import { modelsDrawn, modelsMissing } from '../waves/waveViewRegistry';
 import type { ProbeSample, SurfaceProbe } from '../teaching/surfaceProbe';
 import type { HeightmapView } from '../teaching/heightmapView';
 import { SceneLights } from '../sky/sceneLights';
-import { KelvinGuideView } from '../wake/kelvinGuideView';
+import type { KelvinGuideView } from '../wake/kelvinGuideView';
 import type { CompareRenderer } from '../compare/compareRenderer';
 import type { Strip } from '../../sim/compare/compareLayout';
 import { compareModelNames } from '../../sim/compare/compareLayout';
@@ -53,7 +53,10 @@ export class OceanView {
   readonly clearance = new EyeClearance();
   readonly underwater: UnderwaterStage;
   private readonly lights: SceneLights;
-  private readonly kelvinGuide: KelvinGuideView;
+  /** The ±19.47° teaching guide, fetched the first time it is shown (most views never show it). */
+  private kelvinGuide?: KelvinGuideView;
+  private kelvinGuideLoad?: Promise<void>;
+  private guideAt = { visible: false, x: 0, y: 0, z: 0, heading: 0 };
   /** A page's own cube map, loaded by the app: the view disposes it. */
   private customSky: CubeTexture | null;
   private params: OceanParams;
@@ -82,7 +85,6 @@ export class OceanView {
     this.ocean = new Ocean(this.renderer, params, customSky ? { sky: customSky } : {});
     this.scene.add(this.ocean.sky, this.ocean);
     this.lights = new SceneLights(this.scene);
-    this.kelvinGuide = new KelvinGuideView(this.scene);
     this.underwater = new UnderwaterStage(this.renderer, this.scene, this.camera, this.ocean, redraw, partFailed);
     this.applyParams(params);
   }
@@ -131,7 +133,20 @@ export class OceanView {
   /** The boat's wake for the coming frame, its culling bound, and the ±19.47° teaching guide at the boat. */
   setWake(data: WakeUniformData, bound: number, guide: { visible: boolean; x: number; y: number; z: number; heading: number }): void {
     this.ocean.setWake(data, bound);
-    this.kelvinGuide.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
+    this.guideAt = guide;
+    this.kelvinGuide?.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
+    if (guide.visible && !this.kelvinGuide) {
+      this.kelvinGuideLoad ??= import('../wake/kelvinGuideView').then(
+        ({ KelvinGuideView }) => {
+          if (this.disposed) return;
+          this.kelvinGuide = new KelvinGuideView(this.scene);
+          const at = this.guideAt;
+          this.kelvinGuide.update(at.visible, at.x, at.y, at.z, at.heading);
+          this.redraw();
+        },
+        (error: unknown) => console.warn('Oceano: the Kelvin guide\'s code could not be loaded.', error),
+      );
+    }
   }
 
   /** Lets the sunlight on a model (the boat) pass through the waves: caustics on its wet side. */
@@ -181,9 +196,9 @@ export class OceanView {
     ocean.shade(camera);
   }
 
-  /** Settles once every part asked for so far (the underwater passes, the compare code, the ocean's own) has loaded. */
+  /** Settles once every part asked for so far (the underwater passes, the compare code, the Kelvin guide, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad]).then(() => undefined);
+    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.heightmapLoad, this.kelvinGuideLoad]).then(() => undefined);
   }
 
   /**
@@ -273,7 +288,7 @@ export class OceanView {
     this.probe?.dispose();
     this.heightmapView?.dispose();
     this.underwater.dispose();
-    this.kelvinGuide.dispose();
+    this.kelvinGuide?.dispose();
     this.customSky?.dispose();
     this.renderer.dispose();
   }

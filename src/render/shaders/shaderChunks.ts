@@ -3,7 +3,6 @@ import waterVolume from '../../../shaders/waterVolume.glsl?raw';
 import caustics from '../../../shaders/caustics.glsl?raw';
 import waterline from '../../../shaders/waterline.glsl?raw';
 import wake from '../../../shaders/wake.glsl?raw';
-import iwave from '../../../shaders/iwave.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
@@ -30,8 +29,6 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_waterline: waterline,
   // The boat's Kelvin wake and its foam, added to whichever wave model is active.
   oceano_wake: wake,
-  // The interactive waves' height field (iWave), added to whichever wave model is active.
-  oceano_iwave: iwave,
   // The underwater passes' scene target, written after three's colour-space chunk (read back by
   // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,

@@ -18,6 +18,13 @@ interface BoundShader {
 export class WaveBinding {
   private readonly shaders: BoundShader[] = [];
   private readonly patched = new Set<Material>();
+  /**
+   * Chunks whose text arrives with a part loaded on first use: the interactive waves'
+   * height field (shaders/iwave.glsl, with src/render/iwave/interactiveWaves.ts). Empty until
+   * then, and included only behind the define that part sets (OCEAN_IWAVE), so no program
+   * without it reads it; the page's first load does not carry its text.
+   */
+  private readonly lateChunks: Record<string, string> = { oceano_iwave: '' };
 
   constructor(private active: WaveModelView) {}
 
@@ -32,7 +39,13 @@ export class WaveBinding {
 
   /** GLSL source with `#include <oceano_waves>` replaced by the active model's chunk, and Oceano's other chunks put in place. */
   resolve(source: string): string {
-    return resolveChunks(source, { oceano_waves: this.active.chunk });
+    return resolveChunks(source, { ...this.lateChunks, oceano_waves: this.active.chunk });
+  }
+
+  /** A late chunk's text has arrived: every bound material takes it (recompiled on its next draw). */
+  provideChunk(name: 'oceano_iwave', text: string): void {
+    this.lateChunks[name] = text;
+    for (const bound of this.shaders) this.bind(bound, null);
   }
 
   /** Binds a ShaderMaterial whose sources contain `#include <oceano_waves>`; returns it. */

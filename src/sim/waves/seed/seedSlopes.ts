@@ -1,5 +1,5 @@
 import type { Heightmap } from '../../noise/perlinNoise';
-import { sampleHeightmap, SECOND_SWELL, type SurfaceState } from './seedSurface';
+import { NORMAL_DELTA, RIPPLE_TILE_SIZE, sampleHeightmap, SECOND_SWELL, type SurfaceState } from './seedSurface';
 
 /**
  * The mean-square slope of the seed's sea as its normals show it (both horizontal directions
@@ -22,7 +22,7 @@ export function swellSlopeVariance(amplitude: number, frequency: number): number
  * it: the difference quotients (H(x + Δ, z) − H(x, z)) / Δ and (H(x, z + Δ) − H(x, z)) / Δ of
  * the bilinear field, squared and summed, averaged over one tile at every texel's centre.
  */
-export function heightmapSlopeVariance(map: Heightmap, tileSize: number, delta: number): number {
+export function heightmapSlopeVariance(map: Heightmap, tileSize = RIPPLE_TILE_SIZE, delta = NORMAL_DELTA): number {
   const step = tileSize / map.size;
   let sum = 0;
   for (let j = 0; j < map.size; j++) {

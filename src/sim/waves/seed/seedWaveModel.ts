@@ -1,11 +1,15 @@
 import { generateRippleHeightmaps, type Heightmap } from '../../noise/perlinNoise';
 import type { OceanParams } from '../../params/params';
-import { HEIGHTMAP_SIZE, maxDisplacement, NORMAL_DELTA, RIPPLE_TILE_SIZE, surfaceHeight, surfaceNormal, surfaceStateAt, type SurfaceState } from './seedSurface';
+import { HEIGHTMAP_SIZE, maxDisplacement, surfaceHeight, surfaceNormal, surfaceStateAt, type SurfaceState } from './seedSurface';
 import { heightmapSlopeVariance, seedSlopeVariance } from './seedSlopes';
 import type { DisplacementBounds, SurfaceSample, WaveModel } from '../waveModel';
 
-/** The parameters the seed's sea reads; everything else in OceanParams leaves it unchanged. */
-export type SeedWaveParams = Pick<OceanParams, 'seed' | 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed'>;
+/**
+ * The parameters the seed's sea reads; everything else in OceanParams leaves it unchanged. Its
+ * waves know no wind: the wind only sets the roughness its glint is given (Cox & Munk's σ²
+ * less the slopes its normals show, src/render/waves/seed/seedWaveView.ts).
+ */
+export type SeedWaveParams = Pick<OceanParams, 'seed' | 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed' | 'windSpeed'>;
 
 /**
  * The seed report's sea (sines for the swell, two blended Perlin heightmaps for the
@@ -31,11 +35,7 @@ export class SeedWaveModel implements WaveModel {
     this.params = params;
     this.seed = params.seed;
     this.heightmaps = generateRippleHeightmaps(params.seed, HEIGHTMAP_SIZE);
-    this.heightmapSlopes = this.measureHeightmapSlopes();
-  }
-
-  private measureHeightmapSlopes(): [number, number] {
-    return this.heightmaps.map((map) => heightmapSlopeVariance(map, RIPPLE_TILE_SIZE, NORMAL_DELTA)) as [number, number];
+    this.heightmapSlopes = this.heightmaps.map((map) => heightmapSlopeVariance(map)) as [number, number];
   }
 
   /** Returns true when the heightmaps were regenerated (the seed changed). */
@@ -46,7 +46,7 @@ export class SeedWaveModel implements WaveModel {
     if (params.seed === this.seed) return false;
     this.seed = params.seed;
     this.heightmaps = generateRippleHeightmaps(params.seed, HEIGHTMAP_SIZE);
-    this.heightmapSlopes = this.measureHeightmapSlopes();
+    this.heightmapSlopes = this.heightmaps.map((map) => heightmapSlopeVariance(map)) as [number, number];
     return true;
   }
 
@@ -70,6 +70,11 @@ export class SeedWaveModel implements WaveModel {
   sample(x: number, z: number, time: number): SurfaceSample {
     const state = this.stateAt(time);
     return { height: surfaceHeight(state, this.heightmaps, x, z), normal: surfaceNormal(state, this.heightmaps, x, z) };
+  }
+
+  /** U₁₀, m/s: the app's wind, which the seed's waves do not follow (see SeedWaveParams). */
+  get windSpeed(): number {
+    return this.params.windSpeed;
   }
 
   /** See LiveWaveModel: the swell's and the blended ripples' mean-square slope at `time`. */
