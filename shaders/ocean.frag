@@ -85,9 +85,9 @@ vec3 sunLobe(float cosFromSun, float sharpness, float strength) {
   return uSunColor * pow(max(cosFromSun, 0.0), sharpness) * strength * sunVisible;
 }
 
-// The sun's glint on a sea whose normal shows only some of its slopes (WAVE_SLOPE_ROUGHNESS,
-// a model that knows which): the rest, of mean-square slope `variance`, are facets within
-// the pixel, Gaussian as Cox & Munk measured them, and the glint is the microfacet BRDF
+// The sun's glint on a sea whose normal shows only some of its slopes (every model's chunk says
+// how much it leaves out: waveUnresolvedSlopeVariance): the rest, of mean-square slope
+// `variance`, are facets within the pixel, Gaussian as Cox & Munk measured them, and the glint is the microfacet BRDF
 // integrated over them (Bruneton, Neyret & Holzschuch 2010, eq. 7–9; the tested twin is
 // src/sim/optics/beckmannGlint.ts): E_sun F(v·h) p(tan θh) / (4 cos θv cos⁴θh (1 + Λv + Λl)).
 // It widens with the wind, fades at its edges, and where a pixel covers many waves it is
@@ -268,7 +268,10 @@ void main() {
   vec3 r = reflect(-v, n);
   // A reflected ray that points below the horizon would see the sea, not the sky.
   r.y = max(r.y, 0.0);
-  vec3 sky = skyCubeColor(normalize(r));
+  // The slopes the normal does not show, Cox & Munk's σ² less what the model resolves here:
+  // they blur the sky's reflection and spread the sun's glint alike.
+  float roughness = waveUnresolvedSlopeVariance();
+  vec3 sky = skyCubeColorRough(r, roughness);
 
 #ifdef OCEAN_WATER_OPTICS
   vec3 water = waterBodyColor();
@@ -281,13 +284,9 @@ void main() {
   vec3 color = mix(water, sky, reflectance);
 
   vec3 halfway = normalize(uSunDirection + v);
-#ifdef WAVE_SLOPE_ROUGHNESS
   // Each facet reflects the sun by its own Fresnel, at the angle between the eye and the half vector.
   float facetReflectance = uFresnelEnabled ? fresnelLookup(uFresnelTable, dot(v, halfway)) : 0.5;
-  color += sunGlint(n, v, waveUnresolvedSlopeVariance(), facetReflectance);
-#else
-  color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;
-#endif
+  color += sunGlint(n, v, roughness, facetReflectance);
 
   float foam = 0.0;
 #ifdef WAVE_FOAM
@@ -304,9 +303,7 @@ void main() {
   }
 
   color = mix(color, hazeColor(v), hazeWeight(distance));
-#ifdef WAVE_SLOPE_ROUGHNESS
   color = rollOffHighlights(color);
-#endif
 
 #ifdef OCEAN_LOD_COLORS
   // The LOD debugger's band colours, near to far; the far rings and the skirt (bands past

@@ -4,6 +4,8 @@
 // src/sim/lod/edgeSnap.ts), then displaced by the active wave model's chunk (waveDisplacement /
 // waveNormal, see shaders/waves/).
 #include <oceano_constants>
+// Tells a wave-model chunk it is compiled for the ocean's vertices (WAVE_VERTEX_SLOPES below).
+#define WAVE_VERTEX_STAGE
 #include <oceano_waves>
 // The boat's Kelvin wake, added to whichever model is active (src/sim/wake/boatWake.ts); compiled
 // in only while the wake is on (OceanMaterial).
@@ -41,11 +43,11 @@ attribute vec2 aTile;      // a tile's first grid point inside its chunk (compar
 uniform vec2 uRenderOrigin;
 uniform mat4 uViewRelative;
 varying vec3 vRelativePosition;
+uniform vec3 uEyeRelative;
 #ifdef OCEAN_NEAR_BANDS
 // The near bands' haze: its colour, the sky at the horizon beyond the vertex, and its weight
 // by the vertex's distance from the eye (see ocean.frag).
 #include <oceano_sky_cube>
-uniform vec3 uEyeRelative;
 uniform float uHazeDensity;
 varying vec3 vHorizon;
 varying float vHaze;
@@ -175,6 +177,10 @@ void main() {
   vBand = aChunk.z;
   vVertexSpacing = aChunk.w * float(farRing ? 1 : BAND_STEPS[band]);
   vWaveFade = waves;
+#ifdef WAVE_VERTEX_SLOPES
+  // A model that sums its long waves' slopes per vertex for ocean.frag (shaders/waves/gerstner.glsl).
+  waveVertexSlopes(gridXZ, vVertexSpacing, uEyeRelative - relative);
+#endif
   vec4 view = uViewRelative * vec4(relative, 1.0);
   // A vertex exactly in the eye's plane (view z = 0, so clip w = 0: a level camera whose z
   // lies on a grid row) made SwiftShader drop every triangle touching it, a hole in the

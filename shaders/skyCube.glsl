@@ -12,8 +12,23 @@ uniform float uSkyFlip;
 // 1 where the cube holds the square root of the colour (skyDome.frag), 0 where it holds the colour.
 uniform float uSkySquared;
 
+// The cube's full resolution (level 0): where a 2×2 block of pixels straddles an edge, the
+// directions they look up jump, and a level picked from their differences would blur the
+// sky there (a dark dash along the horizon).
 vec3 skyCubeColor(vec3 direction) {
-  vec3 stored = texture(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z)).rgb;
+  vec3 stored = textureLod(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z), 0.0).rgb;
+  return mix(stored, stored * stored, uSkySquared);
+}
+
+// The sky in a rough mirror: facets of mean-square slope `variance` (both axes) tilt by
+// √(variance / 2) per axis and turn the reflected ray by twice that, √(2 variance); the mip
+// level whose box of texels spreads as far is read: a box w wide spreads w / √12, and a face
+// of `size` texels spans π/2, so w = size √(24 variance) / (π/2) = size √(9.73 variance)
+// texels (textureLod takes a level below 0 as 0). The cube's mips are plain 2×2 means
+// (src/render/sky/sunSky.ts), of square roots for the default sky: where the sky changes fast
+// the mean comes out a little dark.
+vec3 skyCubeColorRough(vec3 direction, float variance) {
+  vec3 stored = textureLod(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z), log2(float(textureSize(uSky, 0).x) * sqrt(9.73 * variance))).rgb;
   return mix(stored, stored * stored, uSkySquared);
 }
 

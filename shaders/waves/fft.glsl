@@ -11,19 +11,19 @@
 //   vec3 waveDisplacement(vec2 gridXZ)  where the undisplaced grid point goes, (dx, dy, dz)
 //   vec3 waveNormal(vec2 gridXZ)        unit normal of the displaced surface there
 //   float waveLensHeight(vec2 worldXZ)  the short waves' height (focuses the god rays)
+//   float waveUnresolvedSlopeVariance()  (ocean.frag's pixels) the mean-square slope of the
+//                                       waves this pixel's normal does not show, which the
+//                                       sun's glint and the sky's reflection take as roughness
 // and, this model only (ocean.frag tests the defines):
 //   WAVE_PIXEL_NORMALS: waveNormal is exact (from spectral slopes): evaluate it per pixel,
 //     after wavePixelFields has read this pixel's fields
 //   WAVE_FOAM: float waveFoam(vec2 gridXZ), foam coverage in [0, 1]
 //   WAVE_FABRICATED_NORMAL: vec3 waveFabricatedNormal(vec2 gridXZ), the seed's finite-
 //     difference normal of the same surface, for the comparison teaching view
-//   WAVE_SLOPE_ROUGHNESS: float waveUnresolvedSlopeVariance(), the mean-square slope of the
-//     waves this pixel's normal does not show, which the sun's glint takes as roughness
 
 #define WAVE_PIXEL_NORMALS
 #define WAVE_FOAM
 #define WAVE_FABRICATED_NORMAL
-#define WAVE_SLOPE_ROUGHNESS
 
 uniform sampler2D uFftDisplacement0;
 uniform sampler2D uFftDisplacement1;

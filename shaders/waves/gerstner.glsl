@@ -7,10 +7,14 @@
 //   vec3 waveNormal(vec2 gridXZ)        unit normal of the displaced surface there
 //   float waveLensHeight(vec2 worldXZ)  the short waves' height, whose bumps focus sunlight
 //                                       into the underwater shafts (god rays)
-// and, because the normal is closed-form and cheap, it asks ocean.frag to evaluate
-// waveNormalNear per pixel at the interpolated grid point (WAVE_PIXEL_NORMALS), given
-// relative to the render origin (src/render/ocean/renderOrigin.ts): an absolute float32 grid point
-// 10⁶ m out is rounded to 6 cm, which put the glint in 6 cm blocks.
+//   float waveUnresolvedSlopeVariance()  (ocean.frag's pixels) the slopes the normal leaves
+//                                       out, the glint's and the sky reflection's roughness
+// and, because the normal is closed-form, it asks ocean.frag to evaluate waveNormalNear per
+// pixel at the interpolated grid point (WAVE_PIXEL_NORMALS), given relative to the render
+// origin (src/render/ocean/renderOrigin.ts): an absolute float32 grid point 10⁶ m out is
+// rounded to 6 cm, which put the glint in 6 cm blocks. Only the short waves are summed per
+// pixel: the waves many vertex steps long are summed per vertex (WAVE_VERTEX_SLOPES, ocean.vert)
+// and their derivatives interpolated, which is exact to first order across a triangle.
 //
 // Wave i moves grid point p to p + (−QᵢAᵢ k̂ᵢ sin θᵢ, Aᵢ cos θᵢ), θᵢ = kᵢ·p − ωᵢt + φᵢ.
 // Angles are in turns. The time part τᵢ = fract(φᵢ − ωᵢt/2π) arrives already reduced in
@@ -19,16 +23,24 @@
 
 #define GERSTNER_MAX_WAVES 64
 #define WAVE_PIXEL_NORMALS
+#define WAVE_VERTEX_SLOPES
 
 uniform int uGerstnerCount;
-// Per wave: (cₓ, c_z) the wavevector in cycles per metre, A the amplitude (m), QA the
-// horizontal amplitude (m).
+// Per wave, longest first (src/render/waves/gerstner/gerstnerWaveUniforms.ts): (cₓ, c_z) the
+// wavevector in cycles per metre, A the amplitude (m), QA the horizontal amplitude (m).
 uniform vec4 uGerstnerWaves[GERSTNER_MAX_WAVES];
 // τᵢ in turns, four waves per vec4 (a float array would take a whole vec4 slot per element).
 uniform vec4 uGerstnerPhases[GERSTNER_MAX_WAVES / 4];
 // τᵢ′ = fract(τᵢ + cₓ oₓ + c_z o_z), the phases at the render origin o, reduced in double
 // precision (src/sim/waves/originPhases.ts): the angle at o + r is fract(cₓ rₓ) + fract(c_z r_z) + τᵢ′.
 uniform vec4 uGerstnerNearPhases[GERSTNER_MAX_WAVES / 4];
+// Each wave's mean-square slope (src/sim/waves/gerstner/gerstnerSlopes.ts), four per vec4, and
+// the sea's, Cox & Munk's for the wind (src/sim/optics/coxMunk.ts): what the normals do not
+// show of it is the glint's roughness.
+uniform vec4 uGerstnerSlopes[GERSTNER_MAX_WAVES / 4];
+uniform float uSeaSlopeVariance;
+// Radians of view per pixel: the vertices' estimate of a pixel's footprint on the sea.
+uniform float uPixelAngle;
 
 #include <oceano_sin_turns>
 
@@ -60,34 +72,126 @@ vec3 waveDisplacement(vec2 gridXZ) {
   return d;
 }
 
-// Closed-form derivatives (see gerstnerDerivativesAt): the tangents ∂P/∂x, ∂P/∂z of the
-// displaced surface P = (x + dx, dy, z + dz), and their cross product. `near`: p is relative
-// to the render origin (a constant at each call, so the choice folds away).
-vec3 gerstnerNormal(vec2 p, bool near) {
-  float dxdx = 0.0;
-  float dxdz = 0.0;
-  float dzdz = 0.0;
-  float dydx = 0.0;
+// The share of a wave's slope that a pixel `footprint` metres across resolves: all of it
+// while two pixels fit in its wavelength, none once one pixel spans it, in between by the
+// octave (the FFT sea's resolvedShare for a band one octave wide, src/sim/optics/resolvedSlopes.ts).
+// What a pixel does not resolve would only alias (the fringe at the horizon); it goes into
+// the glint's roughness instead (Bruneton, Neyret & Holzschuch 2010).
+float gerstnerShare(vec4 wave, float footprint) {
+  return clamp(log2(1.0 / (length(wave.xy) * 2.0 * footprint)) + 0.5, 0.0, 1.0);
+}
+
+// Wave i's closed-form derivatives (see gerstnerDerivativesAt), times `share`, added to
+// (∂dx/∂x, ∂dx/∂z, ∂dz/∂z, ∂dy/∂x) and ∂dy/∂z.
+void gerstnerAddDerivatives(int i, float turns, float share, inout vec4 horizontal, inout float dydz) {
+  vec4 wave = uGerstnerWaves[i];
+  float s = sinTurns(turns);
+  float c = sinTurns(turns + 0.25);
+  vec2 k = TURN_RADIANS * wave.xy;
+  float qc = share * wave.w / length(k) * c;
+  float aSin = share * wave.z * s;
+  horizontal -= vec4(qc * k.x * k.x, qc * k.x * k.y, qc * k.y * k.y, aSin * k.x);
+  dydz -= aSin * k.y;
+}
+
+float gerstnerSlope(int i) {
+  return uGerstnerSlopes[i >> 2][i & 3];
+}
+
+// The tangents ∂P/∂x, ∂P/∂z of the displaced surface P = (x + dx, dy, z + dz), and their cross product.
+vec3 gerstnerNormalFrom(vec4 horizontal, float dydz) {
+  vec3 tx = vec3(1.0 + horizontal.x, horizontal.w, horizontal.y);
+  vec3 tz = vec3(horizontal.y, dydz, 1.0 + horizontal.z);
+  return normalize(cross(tz, tx));
+}
+
+// The whole sum at a grid point, unfiltered: the vertices' and other programs' normal (the
+// probe, caustics). `near`: p is relative to the render origin (a constant at each call, so the choice folds away).
+vec3 gerstnerFullNormal(vec2 p, bool near) {
+  vec4 horizontal = vec4(0.0);
   float dydz = 0.0;
   for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
     if (i >= uGerstnerCount) break;
-    vec4 wave = uGerstnerWaves[i];
-    float turns = gerstnerTurns(wave, near ? gerstnerNearPhase(i) : gerstnerPhase(i), p);
-    float s = sinTurns(turns);
-    float c = sinTurns(turns + 0.25);
-    vec2 k = TURN_RADIANS * wave.xy;
-    float qc = wave.w / length(k) * c;
-    dxdx -= qc * k.x * k.x;
-    dxdz -= qc * k.x * k.y;
-    dzdz -= qc * k.y * k.y;
-    float aSin = wave.z * s;
-    dydx -= aSin * k.x;
-    dydz -= aSin * k.y;
+    gerstnerAddDerivatives(i, gerstnerTurns(uGerstnerWaves[i], near ? gerstnerNearPhase(i) : gerstnerPhase(i), p), 1.0, horizontal, dydz);
   }
-  vec3 tx = vec3(1.0 + dxdx, dydx, dxdz);
-  vec3 tz = vec3(dxdz, dydz, 1.0 + dzdz);
-  return normalize(cross(tz, tx));
+  return gerstnerNormalFrom(horizontal, dydz);
 }
+
+// Waves at least this many vertex steps long are summed per vertex: linear interpolation
+// then misses a derivative by at most (2π / 8)² / 8 ≈ 8 % of the wave's own slope, where the
+// slope is long and gentle.
+const float GERSTNER_VERTEX_WAVELENGTHS = 8.0;
+
+#if defined(WAVE_VERTEX_STAGE) || defined(WAVE_FRAGMENT_STAGE)
+// From the vertices to the pixels: the first wave summed per pixel (the same for a whole
+// chunk, whose vertex step is one), the per-vertex waves' filtered derivatives (as
+// gerstnerAddDerivatives) and the slope variance they resolve.
+flat varying int vGerstnerFirstPixelWave;
+varying vec4 vGerstnerHorizontal;
+varying vec2 vGerstnerDydzAndVariance;
+#endif
+
+#ifdef WAVE_VERTEX_STAGE
+// `spacing`: the chunk's vertex step, m; `toEye`: from the vertex to the eye. A pixel there
+// spans about distance × uPixelAngle across the view and that over the sine of the grazing
+// angle along it; the longer side decides, as in the pixels (wavePixelFields).
+void waveVertexSlopes(vec2 gridXZ, float spacing, vec3 toEye) {
+  float distance = length(toEye);
+  float footprint = distance * uPixelAngle / max(abs(toEye.y) / distance, 1e-3);
+  vec4 horizontal = vec4(0.0);
+  float dydz = 0.0;
+  float variance = 0.0;
+  int first = 0;
+  for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
+    if (i >= uGerstnerCount || length(uGerstnerWaves[i].xy) * GERSTNER_VERTEX_WAVELENGTHS * spacing > 1.0) break;
+    float share = gerstnerShare(uGerstnerWaves[i], footprint);
+    gerstnerAddDerivatives(i, gerstnerTurns(uGerstnerWaves[i], gerstnerPhase(i), gridXZ), share, horizontal, dydz);
+    variance += share * share * gerstnerSlope(i);
+    first = i + 1;
+  }
+  vGerstnerFirstPixelWave = first;
+  vGerstnerHorizontal = horizontal;
+  vGerstnerDydzAndVariance = vec2(dydz, variance);
+}
+#endif
+
+#ifdef WAVE_FRAGMENT_STAGE
+// The pixel's footprint on the sea, m, read once at the top of ocean.frag's main (outside its
+// branches, where derivatives are defined): the longer side, as the FFT sea's.
+float gerstnerFootprint;
+float gerstnerUnresolvedVariance;
+
+void wavePixelFields(vec2 p, bool near) {
+  gerstnerFootprint = max(max(length(dFdx(p)), length(dFdy(p))), 1e-6);
+  // Where no normal is evaluated (the flat-normals teaching view) every slope is roughness.
+  gerstnerUnresolvedVariance = uSeaSlopeVariance;
+}
+
+// The per-vertex waves, interpolated, plus the short ones summed here, each by the share this
+// pixel resolves; the waves are longest first, so the loop ends at the first one it cannot.
+vec3 gerstnerNormal(vec2 p, bool near) {
+  vec4 horizontal = vGerstnerHorizontal;
+  float dydz = vGerstnerDydzAndVariance.x;
+  float variance = vGerstnerDydzAndVariance.y;
+  for (int i = vGerstnerFirstPixelWave; i < uGerstnerCount; i++) {
+    float share = gerstnerShare(uGerstnerWaves[i], gerstnerFootprint);
+    if (share <= 0.0) break;
+    gerstnerAddDerivatives(i, gerstnerTurns(uGerstnerWaves[i], near ? gerstnerNearPhase(i) : gerstnerPhase(i), p), share, horizontal, dydz);
+    variance += share * share * gerstnerSlope(i);
+  }
+  gerstnerUnresolvedVariance = max(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - variance);
+  return gerstnerNormalFrom(horizontal, dydz);
+}
+
+// The mean-square slope of the waves this pixel's normal does not show (after waveNormalNear).
+float waveUnresolvedSlopeVariance() {
+  return gerstnerUnresolvedVariance;
+}
+#else
+vec3 gerstnerNormal(vec2 p, bool near) {
+  return gerstnerFullNormal(p, near);
+}
+#endif
 
 vec3 waveNormal(vec2 gridXZ) {
   return gerstnerNormal(gridXZ, false);
@@ -97,10 +201,6 @@ vec3 waveNormal(vec2 gridXZ) {
 vec3 waveNormalNear(vec2 relativeXZ) {
   return gerstnerNormal(relativeXZ, true);
 }
-
-// ocean.frag reads a per-pixel model's fields first (wavePixelFields); the closed-form normal
-// reads only uniforms, so there is nothing to read ahead.
-void wavePixelFields(vec2 relativeXZ, bool near) {}
 
 // Waves shorter than this focus sunlight within the god-ray shafts' few metres; longer ones
 // only tilt the whole shaft field. Their height is taken at the world point itself (their

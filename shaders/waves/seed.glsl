@@ -9,6 +9,8 @@
 //   vec3 waveNormal(vec2 gridXZ)        unit normal of the displaced surface there
 //   float waveLensHeight(vec2 worldXZ)  the short waves' height, whose bumps focus sunlight
 //                                       into the underwater shafts (god rays)
+//   float waveUnresolvedSlopeVariance()  the slopes the normals leave out: the glint's and the
+//                                       sky reflection's roughness (ocean.frag)
 
 #include <oceano_tiled_heightmap>
 
@@ -94,6 +96,17 @@ vec3 waveNormal(vec2 gridXZ) {
 #define WAVE_DETAIL_NORMALS
 vec3 waveDetailNormal(vec2 p) {
   return oceanNormal(p, oceanHeight(p));
+}
+
+// The sun's glint and the sky's reflection take what this sea's normals do not show as
+// roughness (ocean.frag): Cox & Munk's σ² for the wind less the swell's and ripples' own,
+// set per frame (src/sim/waves/seed/seedSlopes.ts). The normals show those slopes at every
+// distance (the vertices' fabricated normals, a metre's difference quotient), so the
+// roughness is one number for the whole sea.
+uniform float uSlopeRoughness;
+
+float waveUnresolvedSlopeVariance() {
+  return uSlopeRoughness;
 }
 
 // The ripples alone: the swell is too long to focus light within the shafts' few metres.

@@ -14,7 +14,10 @@ const SLOW = 120_000;
 function gerstnerReport(windSpeed: number) {
   const params = { ...defaultParams(), waves: 'gerstner' as const, windSpeed, spectrum: 'pierson-moskowitz' as const };
   const model = new GerstnerLiveModel(params);
-  return measurePhysics({ name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params) }, 100);
+  return measurePhysics(
+    { name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params), slopeVariance: () => model.slopeVariance(), windSpeed },
+    100,
+  );
 }
 
 describe('the physics panel\'s report on the Gerstner sea (PM, seed 1, 32 waves, Q = 0.6, from t = 100 s)', () => {
@@ -47,7 +50,7 @@ describe('the physics panel\'s report on the Gerstner sea (PM, seed 1, 32 waves,
         dispersion: wrong,
       }),
     );
-    const r = measurePhysics({ name: 'gerstner', height: (x, z, t) => model.sample(x, z, t).height, sea }, 100);
+    const r = measurePhysics({ name: 'gerstner', height: (x, z, t) => model.sample(x, z, t).height, sea, slopeVariance: () => 0, windSpeed: 3 }, 100);
     // At U = 3 m/s the waves are short (k ≈ 1 rad/m), where the slip doubles ω² .
     expect(r.dispersion.fitRatio).toBeGreaterThan(1.2);
   }, SLOW);
@@ -68,9 +71,39 @@ describe('the seed model', () => {
   it('is measured without a spectrum theory and says its ripples follow no dispersion law', () => {
     const params = defaultParams();
     const model = new SeedWaveModel(params);
-    const r = measurePhysics({ name: 'seed', height: (x, z, t) => model.height(x, z, t), sea: { swellWavenumber: params.swellFrequency } }, 10);
+    const r = measurePhysics(
+      { name: 'seed', height: (x, z, t) => model.height(x, z, t), sea: { swellWavenumber: params.swellFrequency }, slopeVariance: (t) => model.slopeVariance(t), windSpeed: params.windSpeed },
+      10,
+    );
     expect(r.spectrum.theory).toBeNull();
     expect(r.hs.spectral).toBeNull();
     expect(r.notes.join(' ')).toMatch(/follow no dispersion law/);
+    // Its slopes and the roughness its glint adds make Cox & Munk's σ² for the app's wind,
+    // 0.003 + 5.12·10⁻³ · 10.201 = 0.05523 at U₁₀ = 10 m/s (U₁₂.₅ by the log profile).
+    expect(r.slopes.coxMunk).toBeCloseTo(0.05523, 5);
+    expect(r.slopes.wind).toBeCloseTo(10.201, 3);
+    expect(r.slopes.resolved).toBeCloseTo(model.slopeVariance(10), 12);
+    expect(r.slopes.total).toBeCloseTo(0.05523, 5);
+  }, SLOW);
+});
+
+describe('the slopes row: resolved + roughness against Cox & Munk', () => {
+  /** The Gerstner sea at this wind, reporting the slopes given: the row alone is under test. */
+  const flat = (slopeVariance: number, windSpeed: number) => {
+    const params = { ...defaultParams(), waves: 'gerstner' as const, windSpeed };
+    const model = new GerstnerLiveModel(params);
+    return measurePhysics({ name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params), slopeVariance: () => slopeVariance, windSpeed }, 100);
+  };
+
+  it('the roughness makes up Cox & Munk’s σ² at 5 and 15 m/s (0.02911, 0.08134); control: slopes steeper than Cox & Munk’s are shown above it, with a note', () => {
+    for (const [u, sigma2] of [[5, 0.02911], [15, 0.08134]]) {
+      const r = flat(0.01, u);
+      expect(r.slopes.coxMunk).toBeCloseTo(sigma2, 4);
+      expect(r.slopes.roughness).toBeCloseTo(r.slopes.coxMunk - 0.01, 12);
+      expect(r.slopes.total).toBeCloseTo(r.slopes.coxMunk, 12);
+    }
+    const steep = flat(0.13, 20);
+    expect(steep.slopes.total).toBeGreaterThan(steep.slopes.coxMunk + 0.004);
+    expect(steep.notes.join(' ')).toMatch(/exceed Cox & Munk/);
   }, SLOW);
 });

@@ -16,6 +16,8 @@ export interface ShadingFixes {
   clearanceNear: boolean;
   /** The glint from slopes a pixel cannot resolve turned into roughness (Cox–Munk, shaders/ocean.frag sunGlint). */
   slopeRoughness: boolean;
+  /** The roughness follows the wind (Cox & Munk's σ² for U less what the normals show); off: one roughness, a 10 m/s sea's, at every wind. */
+  windRoughness: boolean;
   /** Foam kept only by the smallest cascade, white only where its fold went deep (shaders/waves/fft.glsl fftFoamAt). */
   foamCoverage: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
@@ -40,15 +42,26 @@ const ABSOLUTE_PIXELS: ShaderFault = {
   ],
 };
 /**
- * The glint as it was: every cascade's slopes in every pixel, however far, and a fixed
- * pow(…, 900) highlight that does not know the wind.
+ * The glint as it was: a fixed pow(…, 900) highlight that does not know the wind, and the
+ * sky in a perfect mirror; with every slope in every pixel, however far: each cascade's
+ * (fft) or each trochoid's (gerstner).
  */
 const FIXED_GLINT: ShaderFault = {
   name: 'fixed-glint',
   fragment: [
-    ['vec3 share = clamp(', 'vec3 share = vec3(1.0) + 0.0 * clamp('],
-    ['color += sunGlint(n, v, waveUnresolvedSlopeVariance(), facetReflectance);', 'color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;'],
+    ['color += sunGlint(n, v, roughness, facetReflectance);', 'color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;'],
+    ['skyCubeColorRough(r, roughness)', 'skyCubeColor(normalize(r))'],
   ],
+};
+/** The roughness of a 10 m/s sea (Cox & Munk's 0.055 less a few thousandths resolved) whatever the wind. */
+const WINDLESS_ROUGHNESS: ShaderFault = {
+  name: 'windless-roughness',
+  fragment: [['float roughness = waveUnresolvedSlopeVariance();', 'float roughness = 0.05 + 0.0 * waveUnresolvedSlopeVariance();']],
+};
+const EVERY_CASCADE_SLOPE: ShaderFault = { name: 'every-cascade-slope', fragment: [['vec3 share = clamp(', 'vec3 share = vec3(1.0) + 0.0 * clamp(']] };
+const EVERY_TROCHOID_SLOPE: ShaderFault = {
+  name: 'every-trochoid-slope',
+  fragment: [['float share = gerstnerShare(uGerstnerWaves[i], gerstnerFootprint);', 'float share = 1.0;']],
 };
 /** The foam as it was: both smaller cascades' foam kept, white from just past their thresholds. */
 const BLOTCHY_FOAM: ShaderFault = {
@@ -92,6 +105,10 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(ABSOLUTE_PIXELS, fixes.relativePixelNormals);
   toggle(UNMARKED_SEA_BED, fixes.seaBedMark);
   toggle(FIXED_GLINT, fixes.slopeRoughness);
+  toggle(WINDLESS_ROUGHNESS, fixes.windRoughness);
+  const waves = view.ocean.getParams().waves;
+  toggle(EVERY_CASCADE_SLOPE, waves === 'fft' ? fixes.slopeRoughness : true);
+  toggle(EVERY_TROCHOID_SLOPE, waves === 'gerstner' ? fixes.slopeRoughness : true);
   toggle(BLOTCHY_FOAM, fixes.foamCoverage);
   const ocean = view.ocean;
   const material = ocean.material;

@@ -1,6 +1,5 @@
 import type { OceanParams } from '../../sim/params/params';
-import type { MeasuredSea, PhysicsReport } from '../../sim/physics/physicsReport';
-import { seaStateFromParams } from '../../sim/waves/spectra/seaState';
+import type { PhysicsReport } from '../../sim/physics/physicsReport';
 import type { LiveWaveModel } from '../../sim/waves/waveModel';
 
 /** What the panel reads of the running app: the active CPU twin, the parameters, the clock. */
@@ -8,13 +7,6 @@ export interface PhysicsSource {
   model(): LiveWaveModel;
   params(): OceanParams;
   time(): number;
-}
-
-/** The running sea as the estimators see it: heights above world points from the CPU twin. */
-export function measuredSea(model: LiveWaveModel, params: OceanParams): MeasuredSea {
-  const height = (x: number, z: number, t: number) => model.height(x, z, t);
-  if (model.name === 'seed') return { name: 'seed', height, sea: { swellWavenumber: params.swellFrequency } };
-  return { name: model.name, height, sea: seaStateFromParams(params) };
 }
 
 /** What the lazily loaded plots module exports (src/app/physics/physicsPlots.ts). */
@@ -58,7 +50,7 @@ export class PhysicsPanel {
 
   private measureNow(code: ReportModule, time = this.source.time()): PhysicsReport {
     this.runs++;
-    return code.measurePhysics(measuredSea(this.source.model(), this.source.params()), time);
+    return code.measurePhysics(code.measuredSea(this.source.model(), this.source.params()), time);
   }
 
   setOpen(open: boolean): void {

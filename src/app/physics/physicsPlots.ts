@@ -78,6 +78,11 @@ export class PhysicsView {
       ['Peak period Tp, s', fixed(r.peakPeriod.measured, 2), fixed(r.peakPeriod.theory, 2)],
       ['Hs = 4σ(η) vs 4√m₀, m', fixed(r.hs.measured, 2), fixed(r.hs.spectral, 2)],
       [`Hs empirical${r.hs.empiricalName ? ` (${r.hs.empiricalName})` : ''}, m`, '', fixed(r.hs.empirical, 2)],
+      [
+        `Slopes σ²: resolved + roughness vs Cox & Munk (U₁₂.₅ = ${fixed(r.slopes.wind, 1)} m/s)`,
+        `${fixed(r.slopes.resolved, 4)} + ${fixed(r.slopes.roughness, 4)} = ${fixed(r.slopes.total, 4)}`,
+        fixed(r.slopes.coxMunk, 4),
+      ],
     ];
     const table = document.createElement('table');
     const head = table.insertRow();

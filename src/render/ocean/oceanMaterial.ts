@@ -1,4 +1,4 @@
-import { BackSide, Color, DoubleSide, FrontSide, Matrix4, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture } from 'three';
+import { BackSide, Color, DoubleSide, FrontSide, Matrix4, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture, type WebGLRenderer } from 'three';
 import { renderOrigin } from './renderOrigin';
 import type { Submersion } from '../../sim/underwater/snellWindow';
 import vertexShader from '../../../shaders/ocean.vert?raw';
@@ -101,13 +101,14 @@ export class OceanMaterial extends ShaderMaterial {
    * view matrix for positions relative to it and the eye relative to it, all in double
    * precision here so that the shaders only see small numbers.
    */
-  override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
+  override onBeforeRender(renderer: unknown, _scene: unknown, camera: Camera): void {
     this.followWake();
     this.followWaterOptics();
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
     const [x, z] = (this.main ?? this).originFor(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
     this.waves.model.setRenderOrigin?.(x, z);
+    this.waves.model.setCamera?.(camera, renderer as WebGLRenderer);
     this.originShift.makeTranslation(x, 0, z);
     (this.uniforms.uViewRelative.value as Matrix4).multiplyMatrices(camera.matrixWorldInverse, this.originShift);
     (this.uniforms.uEyeRelative.value as Vector3).set(eye.x - x, eye.y, eye.z - z);

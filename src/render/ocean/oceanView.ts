@@ -204,7 +204,7 @@ export class OceanView {
     ocean.shade(camera);
   }
 
-  /** Settles once every part asked for so far (the underwater passes, the compare code, the ocean's own) has loaded. */
+  /** Settles once every part asked for so far (the underwater passes, the compare code, the Kelvin guide, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
     return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.figureLoad, this.kelvinGuideLoad]).then(() => undefined);
   }

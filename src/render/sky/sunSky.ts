@@ -5,6 +5,7 @@ import {
   CubeCamera,
   DataTexture,
   LinearFilter,
+  LinearMipmapLinearFilter,
   LinearSRGBColorSpace,
   Mesh,
   RedFormat,
@@ -48,8 +49,9 @@ export class SunSky {
   paintCount = 0;
 
   constructor(size = 512) {
-    // 8 bits a channel holding the colour's square root (shaders/skyCube.glsl says why).
-    this.target = new WebGLCubeRenderTarget(size, { type: UnsignedByteType, generateMipmaps: false, minFilter: LinearFilter, magFilter: LinearFilter });
+    // 8 bits a channel holding the colour's square root (shaders/skyCube.glsl says why), with
+    // mipmaps: a rough sea reflects the sky blurred (skyCubeColorRough).
+    this.target = new WebGLCubeRenderTarget(size, { type: UnsignedByteType, generateMipmaps: true, minFilter: LinearMipmapLinearFilter, magFilter: LinearFilter });
     this.target.texture.colorSpace = LinearSRGBColorSpace;
     this.target.texture.userData[SQUARE_ROOT_SKY] = true;
     const density = cloudDensityTile(CLOUD_TILE_SIZE);

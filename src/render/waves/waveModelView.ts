@@ -1,4 +1,4 @@
-import type { IUniform, Texture } from 'three';
+import type { Camera, IUniform, Texture, WebGLRenderer } from 'three';
 import type { PassTiming } from '../diagnostics/passTiming';
 import type { OceanParams } from '../../sim/params/params';
 import type { LiveWaveModel, WavesChoice } from '../../sim/waves/waveModel';
@@ -13,6 +13,9 @@ import type { LiveWaveModel, WavesChoice } from '../../sim/waves/waveModel';
  *   vec3 waveDisplacement(vec2 gridXZ);  // (dx, dy, dz): the vertex goes to grid + d
  *   vec3 waveNormal(vec2 gridXZ);        // unit normal of the displaced surface there
  *   float waveLensHeight(vec2 worldXZ);  // short waves' height: focuses the god-ray shafts
+ *   float waveUnresolvedSlopeVariance(); // ocean.frag's pixels: the mean-square slope the normal
+ *                                        // leaves out (Cox & Munk's σ² less what it shows),
+ *                                        // the glint's and the sky reflection's roughness
  * and nothing else that other shaders may rely on (helpers stay private by convention).
  * A chunk that defines WAVE_PIXEL_NORMALS also defines, for ocean.frag's pixels,
  *   void wavePixelFields(vec2 relativeXZ, bool near); // reads the pixel's fields once, first
@@ -52,6 +55,11 @@ export interface WaveModelView {
    * folds it into its phases in double precision. Absent where nothing is evaluated per pixel.
    */
   setRenderOrigin?(x: number, z: number): void;
+  /**
+   * The camera about to draw and its renderer (OceanMaterial.onBeforeRender), for a model that
+   * filters per vertex what a pixel cannot resolve (WAVE_VERTEX_SLOPES): the pixel's angle.
+   */
+  setCamera?(camera: Camera, renderer: WebGLRenderer): void;
   /**
    * For the profiler (oceano.debug.passTimings, `npm run bench`): runs this frame's GPU
    * passes once more, giving the same textures, calling `sync` (which waits for the GPU)

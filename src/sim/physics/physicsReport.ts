@@ -11,8 +11,12 @@ import {
   type HeightSampler,
 } from './physicsEstimators';
 import { windAt19_5 } from '../waves/spectra/piersonMoskowitz';
-import type { SeaState } from '../waves/spectra/seaState';
+import { seaStateFromParams, type SeaState } from '../waves/spectra/seaState';
+import type { LiveWaveModel } from '../waves/waveModel';
+import type { OceanParams } from '../params/params';
 import { frequencySpectrum } from '../waves/spectra/waveSpectrum';
+import { seaSlopeVariance, windAtHeight } from '../optics/coxMunk';
+import { unresolvedSlopeVariance } from '../optics/resolvedSlopes';
 
 /**
  * The physics panel's figures: the running sea measured through its CPU twin (heights above
@@ -58,6 +62,20 @@ export interface PhysicsReport {
     empirical: number | null;
     empiricalName: string | null;
   };
+  /**
+   * The sea's mean-square slope (both horizontal directions summed) as the picture draws it:
+   * what the model's normals show at full resolution, plus the Beckmann roughness the glint and
+   * the sky's reflection add, against Cox & Munk's σ² for the wind.
+   */
+  slopes: {
+    resolved: number;
+    /** Cox & Munk's σ² less the resolved, never below the sun's disc (src/sim/optics/resolvedSlopes.ts). */
+    roughness: number;
+    total: number;
+    coxMunk: number;
+    /** U₁₂.₅, m/s: the wind Cox & Munk's law is read at (U₁₀ by the log profile, src/sim/optics/coxMunk.ts). */
+    wind: number;
+  };
   citations: Citation[];
   /** Plain-language caveats (e.g. the seed's ripples follow no dispersion law). */
   notes: string[];
@@ -69,6 +87,18 @@ export interface MeasuredSea {
   height: HeightSampler;
   /** The wind sea's state (gerstner, fft), or the seed's swell wavenumber, rad/m. */
   sea: SeaState | { swellWavenumber: number };
+  /** The model's mean-square slope at a time (LiveWaveModel.slopeVariance). */
+  slopeVariance(time: number): number;
+  /** U₁₀, m/s: the wind the glint's roughness is read for (the seed's waves follow none, its glint does). */
+  windSpeed: number;
+}
+
+/** The running sea as the estimators see it: heights above world points from the CPU twin. */
+export function measuredSea(model: LiveWaveModel, params: OceanParams): MeasuredSea {
+  const height = (x: number, z: number, t: number) => model.height(x, z, t);
+  const slopes = { slopeVariance: (t: number) => model.slopeVariance(t), windSpeed: params.windSpeed };
+  if (model.name === 'seed') return { name: 'seed', height, sea: { swellWavenumber: params.swellFrequency }, ...slopes };
+  return { name: model.name, height, sea: seaStateFromParams(params), ...slopes };
 }
 
 /** Points where the series is taken: off the origin so no wave's phase is special there. */
@@ -105,6 +135,12 @@ const WELCH_CITATION: Citation = {
   what: 'Measured S(ω)',
   formula: 'Welch periodogram, Hann window, 512-sample segments overlapping by half',
   source: 'Welch 1967, IEEE Trans. Audio Electroacoust. 15(2)',
+};
+const SLOPE_CITATION: Citation = {
+  what: 'Slopes σ²',
+  formula:
+    'Cox & Munk: σ² = 0.003 + 5.12·10⁻³ U₁₂.₅, U₁₂.₅ = U₁₀ (1 + √C_D/κ ln 1.25) = 1.0201 U₁₀ (C_D = 1.3·10⁻³, κ = 0.4); roughness = σ² − resolved',
+  source: 'Cox & Munk 1954, J. Opt. Soc. Am. 44(11); Bruneton, Neyret & Holzschuch 2010, Comput. Graph. Forum 29(2)',
 };
 const HS_CITATION: Citation = {
   what: 'Hs',
@@ -164,8 +200,16 @@ export function measurePhysics(measured: MeasuredSea, time: number): PhysicsRepo
     measuredDensity.push(welch.density[i]);
   }
 
-  const citations: Citation[] = [DISPERSION_CITATION, WELCH_CITATION, HS_CITATION];
+  const citations: Citation[] = [DISPERSION_CITATION, WELCH_CITATION, HS_CITATION, SLOPE_CITATION];
   const notes: string[] = [];
+  const resolved = measured.slopeVariance(time);
+  const coxMunk = seaSlopeVariance(measured.windSpeed);
+  const roughness = unresolvedSlopeVariance(coxMunk, resolved);
+  if (resolved > coxMunk) {
+    notes.push(
+      `The ${measured.name} sea’s own slopes (σ² = ${resolved.toFixed(4)}) exceed Cox & Munk’s for this wind (${coxMunk.toFixed(4)}): its glint gets no roughness but the sun’s disc, and the total sits above the measured sea’s.`,
+    );
+  }
   let empirical: number | null = null;
   let empiricalName: string | null = null;
   if (sea) {
@@ -203,6 +247,7 @@ export function measurePhysics(measured: MeasuredSea, time: number): PhysicsRepo
       empirical,
       empiricalName,
     },
+    slopes: { resolved, roughness, total: resolved + roughness, coxMunk, wind: windAtHeight(measured.windSpeed, 12.5) },
     citations,
     notes,
   };

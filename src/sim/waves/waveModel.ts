@@ -90,6 +90,12 @@ export interface LiveWaveModel extends WaveModel {
   takeMainThreadMs?(): number;
   /** Where the model's CPU twin gets its data from a Worker: how much has arrived, and of which time (FftWaveModel). */
   twinStatus?(): TwinStatus;
+  /**
+   * The mean-square slope (both horizontal directions summed) of the surface the model draws
+   * at `time`: the slopes its normals resolve at full resolution. What Cox & Munk's σ² holds
+   * beyond it is the glint's roughness (src/sim/optics/resolvedSlopes.ts).
+   */
+  slopeVariance(time: number): number;
   /** Heightmaps the "heightmap" teaching view shows and the API returns, where the model has any. */
   readonly heightmaps?: readonly Heightmap[];
 }

@@ -1,12 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from '../harness';
+import type { ShadingFixes } from '../../../src/app/debug/shadingFaults';
 import { useHarness } from '../useHarness';
 import { glintWidth, meanChange } from './glintMeasure';
 import { GLINT_VIEW, HORIZON_VIEW, glintQuery, horizonQuery } from './lightViews';
 
 /**
- * The sun's glint on the spectral sea follows Cox & Munk: its width at 15 m/s against 5 m/s
+ * The sun's glint follows Cox & Munk on every wave model: its width at 15 m/s against 5 m/s
  * is √(σ²(15)/σ²(5)) = √(0.0798/0.0286) = 1.67. Tolerance: the range Cox & Munk's own
  * scatter of ±0.004 on σ² allows, √(0.0758/0.0326) = 1.52 to √(0.0838/0.0246) = 1.85.
  * And the far sea does not sparkle: between two frames 1/60 s apart, the band just below
@@ -23,11 +24,12 @@ async function frozenAt(page: Page, t: number): Promise<Buffer> {
   return canvasPng(page);
 }
 
-async function glintRatio(fixed: boolean): Promise<number> {
+/** The glint's width at 15 m/s over its width at 5 m/s, with `faults` planted (none: as it ships). */
+async function glintRatio(faults: Partial<ShadingFixes> | null, waves: 'fft' | 'seed' | 'gerstner' = 'fft'): Promise<number> {
   const widths: number[] = [];
   for (const wind of [5, 15]) {
-    const { page } = await openOcean(harness, glintQuery(wind), GLINT_VIEW.width, GLINT_VIEW.height);
-    if (!fixed) await page.evaluate(() => window.oceano.debug.setShadingFixes({ slopeRoughness: false }));
+    const { page } = await openOcean(harness, glintQuery(wind, waves), GLINT_VIEW.width, GLINT_VIEW.height);
+    if (faults) await page.evaluate((f) => window.oceano.debug.setShadingFixes(f), faults);
     widths.push(glintWidth(await frozenAt(page, GLINT_VIEW.t), GLINT_VIEW.seaTop, GLINT_VIEW.height));
     await page.close();
   }
@@ -48,12 +50,26 @@ async function flicker(fixed: boolean): Promise<{ far: number; near: number }> {
 
 describe('the glint follows Cox & Munk', () => {
   it('widens 1.52–1.85× from 5 to 15 m/s; control: the fixed highlight on every slope does not', { timeout: 240_000 }, async () => {
-    const ratio = await glintRatio(true);
+    const ratio = await glintRatio(null);
     expect(ratio).toBeGreaterThan(COX_MUNK_RATIO[0]);
     expect(ratio).toBeLessThan(COX_MUNK_RATIO[1]);
-    const control = await glintRatio(false);
+    const control = await glintRatio({ slopeRoughness: false });
     expect(control).toBeLessThan(COX_MUNK_RATIO[0]);
   });
+
+  // The seed's and Gerstner's normals show their own swell, ripples or trochoids; the rest of
+  // Cox & Munk's σ² is the same Beckmann roughness. Control: one roughness at every wind (the
+  // fixed highlight is no control for Gerstner: its trochoids lengthen with the wind, and
+  // that alone widened the old highlight 1.6×).
+  for (const waves of ['seed', 'gerstner'] as const) {
+    it(`on the ${waves} sea too; control: a 10 m/s sea's roughness at every wind does not widen`, { timeout: 240_000 }, async () => {
+      const ratio = await glintRatio(null, waves);
+      expect(ratio).toBeGreaterThan(COX_MUNK_RATIO[0]);
+      expect(ratio).toBeLessThan(COX_MUNK_RATIO[1]);
+      const control = await glintRatio({ windRoughness: false }, waves);
+      expect(control).toBeLessThan(COX_MUNK_RATIO[0]);
+    });
+  }
 
   it('the far sea flickers less than the near sea between frames 1/60 s apart; control: the fixed highlight flickers more', { timeout: 240_000 }, async () => {
     const fixed = await flicker(true);

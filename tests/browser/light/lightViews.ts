@@ -20,9 +20,10 @@ const glintTarget = towards(SUN_AZIMUTH, GLINT_PITCH, 100, glintEye);
 
 export const GLINT_VIEW = { width: 640, height: 360, seaTop: 100, t: 10 } as const;
 
-export function glintQuery(windSpeed: number): string {
+/** The glint's view on any wave model (foam off: it is the spectral sea's alone). */
+export function glintQuery(windSpeed: number, waves: 'fft' | 'seed' | 'gerstner' = 'fft'): string {
   const cam = [...glintEye, ...glintTarget].map((c) => c.toFixed(3)).join(',');
-  return `waves=fft&foam=false&windSpeed=${windSpeed}&sunElevation=${SUN_ELEVATION}&sunAzimuth=${SUN_AZIMUTH}&t=${GLINT_VIEW.t}&cam=${cam}`;
+  return `waves=${waves}&foam=false&windSpeed=${windSpeed}&sunElevation=${SUN_ELEVATION}&sunAzimuth=${SUN_AZIMUTH}&t=${GLINT_VIEW.t}&cam=${cam}`;
 }
 
 /** Rows just below the horizon (the far sea) and at the bottom of the frame (the sea near the eye). */

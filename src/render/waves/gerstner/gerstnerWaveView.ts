@@ -1,7 +1,9 @@
+import { Vector4, type Camera, type WebGLRenderer } from 'three';
 import type { OceanParams } from '../../../sim/params/params';
 import type { GerstnerLiveModel } from '../../../sim/waves/gerstner/gerstnerLiveModel';
 import { GerstnerWaveUniforms } from './gerstnerWaveUniforms';
 import type { WaveModelView } from '../waveModelView';
+import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
 
 /**
  * Gerstner's trochoids on the GPU: a table of at most 64 waves uploaded once per sea and 64
@@ -15,6 +17,7 @@ export class GerstnerWaveView implements WaveModelView {
   /** The trochoids' wavelengths are drawn from a continuum: the lens height never repeats. */
   readonly lensPeriod = null;
   private readonly table: GerstnerWaveUniforms;
+  private readonly viewport = new Vector4();
 
   constructor(readonly model: GerstnerLiveModel) {
     this.table = new GerstnerWaveUniforms(model.waves);
@@ -26,6 +29,7 @@ export class GerstnerWaveView implements WaveModelView {
 
   setParams(params: OceanParams): void {
     if (this.model.setParams(params)) this.table.setWaves(this.model.waves);
+    this.table.setSeaSlopeVariance(seaSlopeVariance(params.windSpeed));
   }
 
   update(time: number): void {
@@ -34,6 +38,11 @@ export class GerstnerWaveView implements WaveModelView {
 
   setRenderOrigin(x: number, z: number): void {
     this.table.setRenderOrigin(x, z);
+  }
+
+  /** The viewport's height spans 2 / P₁₁ of tangent at its centre (P₁₁ = cot(fov / 2)): that over its pixels. */
+  setCamera(camera: Camera, renderer: WebGLRenderer): void {
+    this.table.setPixelAngle(2 / (camera.projectionMatrix.elements[5] * renderer.getCurrentViewport(this.viewport).w));
   }
 
   dispose(): void {

@@ -13,7 +13,8 @@ export type SurfaceUniforms = Record<
   | 'uHeightmapSize'
   | 'uNormalDelta'
   | 'uHeightmap0'
-  | 'uHeightmap1',
+  | 'uHeightmap1'
+  | 'uSlopeRoughness',
   IUniform
 >;
 
@@ -30,6 +31,7 @@ export function createSurfaceUniforms(heightmaps?: [Texture, Texture]): SurfaceU
     uNormalDelta: { value: 1 },
     uHeightmap0: { value: null },
     uHeightmap1: { value: null },
+    uSlopeRoughness: { value: 0 },
   };
   if (heightmaps) applyHeightmaps(uniforms, heightmaps);
   return uniforms;

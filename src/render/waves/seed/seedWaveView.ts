@@ -4,6 +4,8 @@ import type { OceanParams } from '../../../sim/params/params';
 import type { SeedWaveModel } from '../../../sim/waves/seed/seedWaveModel';
 import { RIPPLE_TILE_SIZE, type SurfaceState } from '../../../sim/waves/seed/seedSurface';
 import { heightmapTexture } from '../../optics/dataTextures';
+import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
+import { SUN_DISC_SLOPE_VARIANCE } from '../../../sim/optics/sunDisc';
 import type { WaveModelView } from '../waveModelView';
 import { applyHeightmaps, applySurfaceState, createSurfaceUniforms, type SurfaceUniforms } from './seedUniforms';
 
@@ -38,6 +40,9 @@ export class SeedWaveView implements WaveModelView {
     if (state === this.applied) return;
     this.applied = state;
     applySurfaceState(this.uniforms, state);
+    // Cox & Munk's σ² for the app's wind less the slopes the normals show, never smoother than
+    // the sun's disc allows (as src/sim/optics/resolvedSlopes.ts unresolvedSlopeVariance).
+    this.uniforms.uSlopeRoughness.value = Math.max(SUN_DISC_SLOPE_VARIANCE, seaSlopeVariance(this.model.windSpeed) - this.model.slopeVariance(time));
   }
 
   dispose(): void {

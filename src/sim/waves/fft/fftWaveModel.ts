@@ -4,6 +4,7 @@ import type { TwinStatus } from './twinStatus';
 import type { OceanParams } from '../../params/params';
 import { seaStateFromParams, type SeaState } from '../spectra/seaState';
 import { undoHorizontalDisplacement, type DisplacementBounds, type SurfaceSample } from '../waveModel';
+import { cascadeSpread } from '../spectra/spectralBounds';
 
 /** Fixed-point steps of the inversion (FftWaveModel.invert); see there for the measured errors. */
 export const INVERSION_STEPS = 12;
@@ -208,6 +209,19 @@ export class FftWaveModel implements LiveWaveModel {
     const s = { height: p.height, normal: this.ocean.normalAt(p.x, p.z, at) };
     this.busyMs += this.now() - start;
     return s;
+  }
+
+  /** The sea the slope variance was summed for, and the sum. */
+  private slopes: { ocean: FftOcean; variance: number } | null = null;
+
+  /** See LiveWaveModel: every cascade's realised mean-square slope (i k h₀ over its tile), summed. */
+  slopeVariance(): number {
+    if (this.slopes?.ocean !== this.ocean) {
+      const { sea, tiles } = this.ocean.setup;
+      const variance = tiles.reduce((sum, tile) => sum + cascadeSpread(tile, sea.depth).slope ** 2, 0);
+      this.slopes = { ocean: this.ocean, variance };
+    }
+    return this.slopes.variance;
   }
 
   bounds(): DisplacementBounds {

@@ -1,6 +1,7 @@
 import { angularFrequency } from '../dispersion';
 import { spreadingFunction } from '../spectra/directionalSpreading';
 import { gerstnerSea } from './gerstnerSpectrum';
+import { gerstnerSlopeVariance } from './gerstnerSlopes';
 import { GerstnerWaveModel, type GerstnerWave } from './gerstnerWaves';
 import type { OceanParams } from '../../params/params';
 import { seaStateFromParams, windVector } from '../spectra/seaState';
@@ -94,6 +95,11 @@ export class GerstnerLiveModel implements LiveWaveModel {
 
   height(x: number, z: number, time: number): number {
     return this.twin.sample(x, z, time).height;
+  }
+
+  /** See LiveWaveModel: the trochoids' mean-square slopes summed (constant in time). */
+  slopeVariance(): number {
+    return gerstnerSlopeVariance(this.twin.waves);
   }
 
   bounds(): DisplacementBounds {

@@ -16,7 +16,7 @@ export const HEIGHTMAP_SIZE = 128;
 export const NORMAL_DELTA = 1.0;
 
 /** The second swell product is a smaller, shorter wave at another heading: without it the swell is a visible egg crate. */
-const SECOND_SWELL = { amplitude: 0.45, frequency: 1.73, cos: 0.8, sin: 0.6 };
+export const SECOND_SWELL = { amplitude: 0.45, frequency: 1.73, cos: 0.8, sin: 0.6 };
 /** Drift of each heightmap across the sea, m/s: the two layers slide past each other while they blend. */
 const RIPPLE_DRIFT: [[number, number], [number, number]] = [
   [0.55, 0.2],

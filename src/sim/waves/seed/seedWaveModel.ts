@@ -1,10 +1,15 @@
 import { generateRippleHeightmaps, type Heightmap } from '../../noise/perlinNoise';
 import type { OceanParams } from '../../params/params';
 import { HEIGHTMAP_SIZE, maxDisplacement, surfaceHeight, surfaceNormal, surfaceStateAt, type SurfaceState } from './seedSurface';
+import { heightmapSlopeVariance, seedSlopeVariance } from './seedSlopes';
 import type { DisplacementBounds, SurfaceSample, WaveModel } from '../waveModel';
 
-/** The parameters the seed's sea reads; everything else in OceanParams leaves it unchanged. */
-export type SeedWaveParams = Pick<OceanParams, 'seed' | 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed'>;
+/**
+ * The parameters the seed's sea reads; everything else in OceanParams leaves it unchanged. Its
+ * waves know no wind: the wind only sets the roughness its glint is given (Cox & Munk's σ²
+ * less the slopes its normals show, src/render/waves/seed/seedWaveView.ts).
+ */
+export type SeedWaveParams = Pick<OceanParams, 'seed' | 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed' | 'windSpeed'>;
 
 /**
  * The seed report's sea (sines for the swell, two blended Perlin heightmaps for the
@@ -16,6 +21,8 @@ export class SeedWaveModel implements WaveModel {
   readonly name = 'seed';
   private seed: number;
   heightmaps: [Heightmap, Heightmap];
+  /** Each heightmap's mean-square slope at unit strength, as the fabricated normal takes it. */
+  private heightmapSlopes: [number, number];
   private params: SeedWaveParams;
   // The state of the last time asked for: a frame samples many points at one time (boat,
   // underwater switch), and each state costs two square roots and seven reductions.
@@ -28,6 +35,7 @@ export class SeedWaveModel implements WaveModel {
     this.params = params;
     this.seed = params.seed;
     this.heightmaps = generateRippleHeightmaps(params.seed, HEIGHTMAP_SIZE);
+    this.heightmapSlopes = this.heightmaps.map((map) => heightmapSlopeVariance(map)) as [number, number];
   }
 
   /** Returns true when the heightmaps were regenerated (the seed changed). */
@@ -38,6 +46,7 @@ export class SeedWaveModel implements WaveModel {
     if (params.seed === this.seed) return false;
     this.seed = params.seed;
     this.heightmaps = generateRippleHeightmaps(params.seed, HEIGHTMAP_SIZE);
+    this.heightmapSlopes = this.heightmaps.map((map) => heightmapSlopeVariance(map)) as [number, number];
     return true;
   }
 
@@ -61,6 +70,16 @@ export class SeedWaveModel implements WaveModel {
   sample(x: number, z: number, time: number): SurfaceSample {
     const state = this.stateAt(time);
     return { height: surfaceHeight(state, this.heightmaps, x, z), normal: surfaceNormal(state, this.heightmaps, x, z) };
+  }
+
+  /** U₁₀, m/s: the app's wind, which the seed's waves do not follow (see SeedWaveParams). */
+  get windSpeed(): number {
+    return this.params.windSpeed;
+  }
+
+  /** See LiveWaveModel: the swell's and the blended ripples' mean-square slope at `time`. */
+  slopeVariance(time: number): number {
+    return seedSlopeVariance(this.stateAt(time), this.heightmapSlopes);
   }
 
   bounds(): DisplacementBounds {
