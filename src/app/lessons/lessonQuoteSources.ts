@@ -17,7 +17,7 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'normals-wrong': { file: 'shaders/ocean.vert', from: '#if defined(WAVE_PIXEL_NORMALS) && !defined(OCEAN_NORMALS_COMPARE)', to: '#endif' },
   'normals-right': { file: 'shaders/waves/seed.glsl', from: "// The seed's fabricated neighbours", to: 'return normalize(vec3(-(h2 - h1)' },
   'sky-cube': { file: 'shaders/skyCube.glsl', from: 'vec3 skyCubeColor(vec3 direction) {', to: '}' },
-  reflection: { file: 'shaders/ocean.frag', from: 'vec3 r = reflect(-v, n);', to: 'vec3 color = mix(water, sky, reflectance);' },
+  reflection: { file: 'shaders/ocean.frag', from: 'vec3 r = reflect(-v, n);', to: 'vec3 sky = skyCubeColorRough(r, roughness);' },
   fresnel: { file: 'src/sim/optics/fresnel.ts', from: 'export function fresnelReflectance(', to: 'return 0.5 * (rs * rs + rp * rp);' },
   'fresnel-schlick': { file: 'src/sim/optics/fresnel.ts', from: 'export function schlickReflectance(', to: '}' },
   'boat-twin': { file: 'src/sim/waves/seed/seedSurface.ts', from: 'export function swellHeight(state: SurfaceState', to: 'return state.swellAmplitude * (first' },

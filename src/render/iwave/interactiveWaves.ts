@@ -1,5 +1,4 @@
 import type { WebGLRenderer } from 'three';
-import iwaveChunk from '../../../shaders/iwave.glsl?raw';
 import { GpuIWave } from './gpuIWave';
 import { IWAVE_DAMPING, IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, equationKernels, sampleField, type DisturbanceOptions, type FieldSnapshot, type IWaveEquation } from '../../sim/iwave/interactiveField';
 import type { Disturbance, Stone } from '../../sim/iwave/iwaveGrid';
@@ -40,8 +39,6 @@ export interface LoggedDisturbance {
  * at every step (src/sim/iwave/movingHull.ts), on the course it holds at the latest frame.
  */
 export class InteractiveWaves {
-  /** The ocean's GLSL for the field (`#include <oceano_iwave>`), handed to the wave binding when this part arrives. */
-  static readonly chunk: string = iwaveChunk;
   /** The GPU field itself (its render target can be read back). */
   readonly field: GpuIWave;
   /** The step of the latest advance, and how far the field has been stepped (−∞: to be replayed from the log). */
