@@ -4,7 +4,7 @@ import { pickSea } from '../../sim/tools/seaPick';
 import { cursorStep, isCursorKey } from '../../sim/tools/seaCursor';
 import { SeaPin } from '../../render/teaching/seaMarkers';
 import { toolNumber, toolWord, type ToolWordId } from '../language/toolWords';
-import type { OceanApp } from '../oceanApp';
+import type { SeaToolsHost } from './seaToolsHost';
 import type { SeaTool, SeaToolContext, SeaXZ } from './seaTool';
 import { ProbeTool, type ProbeReading } from './probeTool';
 import { RulerTool } from './rulerTool';
@@ -66,7 +66,7 @@ export class SeaTools {
   private dragging = false;
   private readonly ray = new Vector3();
 
-  constructor(private readonly app: OceanApp) {
+  constructor(private readonly app: SeaToolsHost) {
     const view = app.view;
     this.context = {
       tr: app.tr,
@@ -174,7 +174,7 @@ export class SeaTools {
     const { app } = this;
     const t = app.clock.time;
     const sample = { height: app.view.waves.height(x, z, t), normal: UP };
-    return app.view.ocean.withInteractiveWaves(app.boatMotion.withWake(sample, x, z, t, app.getParams()), x, z).height;
+    return app.view.ocean.withInteractiveWaves(app.boatMotion.withWake(sample, x, z, t, app.getParams(), app.view.ocean.wakeWeight(x, z)), x, z).height;
   }
 
   private async dropStone(point: SeaXZ): Promise<void> {
