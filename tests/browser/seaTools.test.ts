@@ -44,6 +44,7 @@ async function chooseTool(page: Page, tool: 'none' | 'probe' | 'ruler' | 'distur
     await page.waitForSelector('.oceano-sea-tools:not([hidden])');
   }
   await page.click(`.oceano-sea-tools input[value="${tool}"]`);
+  await page.waitForFunction((name) => document.querySelector<HTMLInputElement>(`.oceano-sea-tools input[value="${name}"]`)!.checked, {}, tool);
 }
 
 /** Draws `n` frames `dt` seconds of simulation time apart, from the current time (the clock stays paused). */
@@ -189,9 +190,8 @@ describe('the ruler and the stones', () => {
   async function openFlat(query = FLAT): Promise<Page> {
     const { page } = await openOcean(harness, query, W, H);
     await page.evaluate((pose) => window.oceano.setCamera(pose), POSE);
-    // The lessons drawer folded to its header: the middle of the view is the sea's.
-    await page.waitForSelector('.oceano-lessons-toggle');
-    await page.click('.oceano-lessons-toggle');
+    // Under 1000 px the lessons drawer starts folded to its header: the middle of the view is the sea's.
+    await page.waitForSelector('.oceano-lessons-collapsed');
     await page.evaluate(() => window.oceano.renderFrame());
     return page;
   }
