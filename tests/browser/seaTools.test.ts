@@ -44,6 +44,7 @@ async function chooseTool(page: Page, tool: 'none' | 'probe' | 'ruler' | 'distur
     await page.waitForSelector('.oceano-sea-tools:not([hidden])');
   }
   await page.click(`.oceano-sea-tools input[value="${tool}"]`);
+  await page.waitForFunction((name) => document.querySelector<HTMLInputElement>(`.oceano-sea-tools input[value="${name}"]`)!.checked, {}, tool);
 }
 
 /** Draws `n` frames `dt` seconds of simulation time apart, from the current time (the clock stays paused). */
@@ -133,6 +134,53 @@ describe('the probe', () => {
   });
 });
 
+/** The tools card's box, and the boxes it must not cover: the lessons drawer, the panel, the play button. */
+function layout(page: Page) {
+  return page.evaluate(() => {
+    const box = (selector: string) => {
+      const el = document.querySelector<HTMLElement>(selector);
+      if (!el || el.offsetParent === null) return null;
+      const r = el.getBoundingClientRect();
+      return { left: r.left, right: r.right, top: r.top, bottom: r.bottom };
+    };
+    return { card: box('.oceano-sea-tools')!, canvas: box('canvas')!, others: ['.oceano-lessons', '.lil-gui.lil-root', '.oceano-play'].map(box).filter((b) => b !== null) };
+  });
+}
+type Box = { left: number; right: number; top: number; bottom: number };
+const overlaps = (a: Box, b: Box) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+
+describe('the tools card', () => {
+  it('lies where the drawer, the panel and the play button leave the view free: laptop beside them, phone above the sea (control: moved left, it covers the drawer)', async () => {
+    const laptop = await openOcean(harness, 't=5&probe=0,-20', 1366, 768);
+    await laptop.page.waitForSelector('.lil-gui.lil-root');
+    await laptop.page.waitForSelector('.oceano-lessons');
+    await laptop.page.evaluate(() => window.oceano.renderFrame());
+    let box = await layout(laptop.page);
+    expect(box.others).toHaveLength(3);
+    for (const other of box.others) expect(overlaps(box.card, other), JSON.stringify({ card: box.card, other })).toBe(false);
+    expect(box.card.bottom).toBeLessThanOrEqual(box.canvas.bottom);
+    // The sea between the drawer and the panel keeps most of its width above the card.
+    expect((box.card.right - box.card.left) / box.canvas.right).toBeLessThan(0.26);
+    await laptop.page.addStyleTag({ content: '#oceano-page .oceano-sea-tools { left: 100px !important; }' });
+    box = await layout(laptop.page);
+    expect(box.others.some((other) => overlaps(box.card, other))).toBe(true);
+    await laptop.page.close();
+
+    const phone = await openOcean(harness, 't=5&lang=es&probe=0,-20', 390, 844);
+    await phone.page.waitForSelector('.lil-gui.lil-root');
+    await phone.page.waitForSelector('.oceano-lessons');
+    await phone.page.evaluate(() => window.oceano.renderFrame());
+    box = await layout(phone.page);
+    for (const other of box.others) expect(overlaps(box.card, other), JSON.stringify({ card: box.card, other })).toBe(false);
+    // Between the card and the lessons' bottom sheet, at least a third of the view is sea.
+    const sheet = box.others.find((other) => other.bottom === box.canvas.bottom)!;
+    expect((sheet.top - box.card.bottom) / box.canvas.bottom).toBeGreaterThan(1 / 3);
+    expect(await phone.page.$eval('.oceano-sea-tools h2', (el) => el.textContent)).toBe('Herramientas del mar');
+    expect([...laptop.consoleErrors, ...phone.consoleErrors]).toEqual([]);
+    await phone.page.close();
+  });
+});
+
 describe('the ruler and the stones', () => {
   const [W, H] = [960, 540];
   /** Pixels on the sea that neither the folded drawer, the panel nor the tools card cover. */
@@ -142,9 +190,8 @@ describe('the ruler and the stones', () => {
   async function openFlat(query = FLAT): Promise<Page> {
     const { page } = await openOcean(harness, query, W, H);
     await page.evaluate((pose) => window.oceano.setCamera(pose), POSE);
-    // The lessons drawer folded to its header: the middle of the view is the sea's.
-    await page.waitForSelector('.oceano-lessons-toggle');
-    await page.click('.oceano-lessons-toggle');
+    // Under 1000 px the lessons drawer starts folded to its header: the middle of the view is the sea's.
+    await page.waitForSelector('.oceano-lessons-collapsed');
     await page.evaluate(() => window.oceano.renderFrame());
     return page;
   }

@@ -55,6 +55,11 @@ export class DisturbTool implements SeaTool {
     void this.drop(point);
   }
 
+  /** A line under the button: what the tool did besides dropping stones (it turned the interactive waves on). */
+  say(text: string): void {
+    this.count.textContent = text;
+  }
+
   cursorMoved(): void {}
   frame(): void {}
   placeLabels(): void {}

@@ -57,7 +57,8 @@ export class ProbeTool implements SeaTool {
     const remove = document.createElement('button');
     remove.type = 'button';
     remove.className = 'oceano-tool-button';
-    remove.textContent = toolWord(context.tr, 'probeRemove');
+    remove.textContent = toolWord(context.tr, 'remove');
+    remove.setAttribute('aria-label', toolWord(context.tr, 'probeRemove'));
     remove.addEventListener('click', () => this.clear());
     const head = document.createElement('div');
     head.className = 'oceano-tool-row';

@@ -35,7 +35,16 @@ export class RulerTool implements SeaTool {
     this.body.className = 'oceano-tool-ruler';
     this.distance.className = 'oceano-ruler-distance';
     this.detail.className = 'oceano-tool-note';
-    this.body.append(this.distance, this.detail);
+    const remove = document.createElement('button');
+    remove.type = 'button';
+    remove.className = 'oceano-tool-button';
+    remove.textContent = toolWord(context.tr, 'remove');
+    remove.setAttribute('aria-label', toolWord(context.tr, 'rulerRemove'));
+    remove.addEventListener('click', () => this.clear());
+    const head = document.createElement('div');
+    head.className = 'oceano-tool-row';
+    head.append(this.distance, remove);
+    this.body.append(head, this.detail);
     this.label.className = 'oceano-ruler-label';
     this.label.hidden = true;
     overlay.append(this.label);

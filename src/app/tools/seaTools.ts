@@ -21,6 +21,8 @@ const FINE_STEP = 0.1;
 const MAX_COORDINATE = 1e6;
 const CURSOR_COLOUR = 0x7fd4ff;
 const UP: [number, number, number] = [0, 1, 0];
+/** A phone held upright (as the page's stylesheets say it): the card starts with its help folded. */
+const NARROW = '(max-width: 560px)';
 /** Each toolbox's radio group needs a name of its own: a course page may hold several oceans. */
 let toolboxes = 0;
 
@@ -112,7 +114,7 @@ export class SeaTools {
     this.help.textContent = toolWord(this.app.tr, HELP[tool]);
     if (tool === 'disturb' && !this.app.getParams().interactiveWaves) {
       this.app.setParams({ interactiveWaves: true });
-      this.context.notify(toolWord(this.app.tr, 'wavesOn'));
+      this.disturb.say(toolWord(this.app.tr, 'wavesOn'));
     }
     this.showSections();
   }
@@ -270,7 +272,7 @@ export class SeaTools {
     const summary = document.createElement('summary');
     summary.textContent = toolWord(tr, 'howTo');
     this.howTo.append(summary, this.help);
-    this.howTo.open = true;
+    this.howTo.open = !window.matchMedia(NARROW).matches;
     this.keys.type = 'button';
     this.keys.className = 'oceano-tool-button oceano-tool-keys';
     this.keys.textContent = toolWord(tr, 'keys');
