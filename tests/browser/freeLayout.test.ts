@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { openOcean } from './harness';
 import { recordedPage, viewsReady } from './pages';
 import { useHarness } from './useHarness';
-import { measuredFreeArea, outside, viewBoxes, type ViewBoxes } from './layoutBoxes';
+import { addRules, measuredFreeArea, outside, viewBoxes, type ViewBoxes } from './layoutBoxes';
 import { compareStrips } from '../../src/sim/compare/compareLayout';
 import { figurePictures } from '../../src/sim/teaching/teachingFigures';
 import { contains, overlaps, type Rect } from '../../src/sim/layout/rect';
@@ -21,9 +21,10 @@ const harness = useHarness();
 /** The stylesheet rules as they were before the free area: the negative control. */
 const OLD_LAYOUT = `
   .oceano-compare { left: 0 !important; top: 0 !important; width: 100% !important; height: 100% !important; }
-  .oceano-fresnel-plot { left: 12px !important; bottom: 54px !important; max-width: calc(100% - 24px) !important; max-height: calc(100% - 66px) !important; }
+  .oceano-fresnel-plot { left: 12px !important; bottom: 54px !important; right: auto !important; top: auto !important; max-width: calc(100% - 24px) !important; max-height: calc(100% - 66px) !important; }
   .oceano-physics { left: 8px !important; bottom: 8px !important; width: 370px !important; max-height: calc(100% - 16px) !important; }
-  .oceano-lesson-label-hullPoints.oceano-lesson-label-leftwards { translate: none !important; padding: 0 5px 0 14px !important; }
+  .oceano-play { left: 10px !important; bottom: 10px !important; }
+  .oceano-lesson-label-hullPoints.oceano-lesson-label-leftwards { translate: 0 -50% !important; padding: 0 5px 0 14px !important; }
 `;
 
 /** Opens a lesson through the API (with extra parameters), then draws and places everything once its parts have loaded. */
@@ -106,7 +107,7 @@ describe('the free part of the canvas', () => {
       expect(consoleErrors).toEqual([]);
 
       // Control: with the old stylesheet rules the same views put overlays under the panels or past the canvas's edge.
-      await page.addStyleTag({ content: OLD_LAYOUT });
+      await addRules(page, OLD_LAYOUT);
       const failing: string[] = [];
       for (const [lesson, extra] of [['compare-models', { fresnelPlot: true, physics: true }], ['snell-window', {}]] as const) {
         boxes = await showLesson(page, lesson, extra);
@@ -160,14 +161,17 @@ describe('inside an <oceano-view>', () => {
       expect(result.card, id).not.toBeNull();
       expect(result.stray, id).toEqual([]);
     }
-    expect(results.wide.kinds).toEqual(['fresnelPlot', 'physicsPanel']);
-    expect(results.small.kinds).toEqual(['compareDivider', 'compareLabel', 'fresnelPlot', 'physicsPanel']);
-    expect(results.figure.kinds).toEqual(['figureCaption']);
+    expect(results.wide.kinds).toEqual(['fresnelPlot', 'physicsPanel', 'playButton']);
+    expect(results.small.kinds).toEqual(['compareDivider', 'compareLabel', 'fresnelPlot', 'physicsPanel', 'playButton']);
+    expect(results.figure.kinds).toEqual(['figureCaption', 'playButton']);
+    // A small figure's card starts folded to its lesson's title, the sea in sight; a wide one's open.
+    expect(results.small.card!.height).toBeLessThan(50);
+    expect(results.wide.card!.height).toBeGreaterThan(200);
     expect(results.small.box).toEqual({ x: 0, y: 0, width: 320, height: 180 });
     expect(consoleErrors).toEqual([]);
     expect(violations.filter((v) => v !== 'script-src-elem inline')).toEqual([]);
     // Control: the old stylesheet rules put the physics panel (370 px wide) past a 320-px figure's edge.
-    await page.addStyleTag({ content: OLD_LAYOUT });
+    await addRules(page, OLD_LAYOUT);
     const old = await measure();
     console.log(`[oceano] figures with the old layout: ${JSON.stringify(Object.fromEntries(Object.entries(old).map(([id, r]) => [id, r.stray])))}`);
     expect(old.small.stray.length).toBeGreaterThan(0);

@@ -199,7 +199,7 @@ describe('lessons', () => {
     expect(facts.dots.map((d) => d.name)).toEqual(names);
     expect(facts.dots.every((d) => !d.hidden)).toBe(true);
     for (const name of names) expect(facts.legend).toContain(name);
-    expect(worst(facts, 'projected')).toBeLessThan(1.5);
+    expect(worst(facts, 'projected')).toBeLessThan(0.75);
     expect(worst(facts, 'turned')).toBeGreaterThan(20);
     // They follow the boat: turned by 90° and a second later, the dots are where its new points are.
     await page.evaluate(() => {
@@ -208,7 +208,7 @@ describe('lessons', () => {
     });
     facts = await measure();
     console.log(`[oceano] hull sample points: worst ${worst(facts, 'projected').toFixed(2)} px from their projections; with the hull turned round ${worst(facts, 'turned').toFixed(1)} px`);
-    expect(worst(facts, 'projected')).toBeLessThan(1.5);
+    expect(worst(facts, 'projected')).toBeLessThan(0.75);
     expect(worst(facts, 'turned')).toBeGreaterThan(20);
     expect(consoleErrors).toEqual([]);
     await page.close();
