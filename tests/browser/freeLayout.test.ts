@@ -103,6 +103,16 @@ describe('the free part of the canvas', () => {
         console.log(`[oceano] ${width}×${height} ${lesson}: ${labels.length} labels in sight, ${labels.map((l) => `"${l.text}" ${Math.round(l.box.x)},${Math.round(l.box.y)}`).join('; ')}`);
         if (lesson === 'snell-window') expect(labels.map((l) => l.text)).toEqual(['48,6°: borde de la ventana de Snell']);
       }
+      if (width <= 560) {
+        // A phone: the open panel, a bottom sheet, takes the lessons' place instead of covering the card.
+        await page.click('.lil-gui.lil-root > .lil-title');
+        await new Promise((resolve) => setTimeout(resolve, 1000));
+        boxes = await showLesson(page, 'compare-models');
+        check('phone, panel open', boxes);
+        expect(boxes.panels, 'one sheet at a time').toHaveLength(1);
+        await page.click('.lil-gui.lil-root > .lil-title');
+        await new Promise((resolve) => setTimeout(resolve, 1000));
+      }
       expect(problems).toEqual([]);
       expect(consoleErrors).toEqual([]);
 
