@@ -10,6 +10,7 @@ export const OVERLAYS = {
   compareDivider: '.oceano-compare-divider',
   figureCaption: '.oceano-figure-caption',
   lessonLabel: '.oceano-lesson-label',
+  playButton: '.oceano-play',
 } as const;
 
 /** What takes room from the canvas: the lessons drawer and the control panel. */
@@ -72,4 +73,13 @@ export function measuredFreeArea(boxes: ViewBoxes): Rect {
 export function outside(boxes: ViewBoxes, free: Rect): string[] {
   const inside = (b: Rect) => b.x >= free.x - 0.5 && b.y >= free.y - 0.5 && b.x + b.width <= free.x + free.width + 0.5 && b.y + b.height <= free.y + free.height + 0.5;
   return boxes.overlays.filter((o) => !inside(o.box)).map((o) => `${o.kind} "${o.text.slice(0, 30)}" at ${[o.box.x, o.box.y, o.box.width, o.box.height].map(Math.round).join(',')}`);
+}
+
+/** Adds CSS rules to a page, a strict Content-Security-Policy's included (a constructed sheet is no inline style). */
+export async function addRules(page: Page, css: string): Promise<void> {
+  await page.evaluate((text) => {
+    const sheet = new CSSStyleSheet();
+    sheet.replaceSync(text);
+    document.adoptedStyleSheets = [...document.adoptedStyleSheets, sheet];
+  }, css);
 }

@@ -8,6 +8,8 @@ import { recordedPage, viewsReady } from './pages';
 import { LESSONS, lessonView } from '../../src/app/lessons/lessonCatalog';
 import { LESSON_TITLES } from '../../src/app/lessons/lessonOutline';
 import { quoteMatchesFile } from '../../src/app/lessons/quoteExtraction';
+import { PerspectiveCamera, Vector3 } from 'three';
+import { hullSamplePoints } from '../../src/sim/boat/boatPose';
 
 const harness = useHarness();
 const root = join(import.meta.dirname, '..', '..');
@@ -152,6 +154,63 @@ describe('lessons', () => {
     free = await freeShare(page);
     expect(free.down).toBeLessThan(0.5);
     expect(free.across).toBeLessThan(0.6);
+    await page.close();
+  });
+
+  it('the boat lessons mark the five points the CPU twin samples, on the hull and following it (control: the hull turned round)', async () => {
+    const width = 1366;
+    const height = 768;
+    const { page, consoleErrors } = await openOcean(harness, 'lesson=boat-twin&t=5', width, height);
+    await page.waitForSelector('.oceano-lesson-label-hullPoints:not([hidden])');
+    /** The dots' centres on the page, by name, and where the twin's sample points project. */
+    const measure = async () => {
+      await page.evaluate(() => window.oceano.renderFrame());
+      const facts = await page.evaluate(() => ({
+        dots: Array.from(document.querySelectorAll<HTMLElement>('.oceano-lesson-label-hullPoints'), (label) => {
+          const r = label.getBoundingClientRect();
+          // The dot sits 5 px inside the label's left end, or its right end when the name is written leftwards.
+          const x = label.classList.contains('oceano-lesson-label-leftwards') ? r.right - 5 : r.left + 5;
+          return { name: label.textContent, hidden: label.hidden, x, y: r.top + r.height / 2 };
+        }),
+        boat: window.oceano.boat(),
+        camera: window.oceano.getCamera(),
+        legend: document.querySelector('.oceano-lesson-legend')?.textContent ?? '',
+      }));
+      const camera = new PerspectiveCamera(55, width / height, 0.1, 1000);
+      camera.position.fromArray(facts.camera.position);
+      camera.lookAt(...facts.camera.target);
+      camera.updateMatrixWorld();
+      const project = async (heading: number) => {
+        const points = hullSamplePoints(facts.boat.position[0], facts.boat.position[2], heading, facts.boat.hull);
+        const out: Record<string, [number, number]> = {};
+        for (const [name, [x, z]] of Object.entries(points)) {
+          const y = await page.evaluate((px, pz) => window.oceano.sampleSurface(px, pz).height, x, z);
+          const p = new Vector3(x, y, z).project(camera);
+          out[name] = [((p.x + 1) / 2) * width, ((1 - p.y) / 2) * height];
+        }
+        return out;
+      };
+      return { ...facts, projected: await project(facts.boat.heading), turned: await project(facts.boat.heading + Math.PI) };
+    };
+    const names = ['centre', 'bow', 'stern', 'port', 'starboard'];
+    const worst = (facts: Awaited<ReturnType<typeof measure>>, which: 'projected' | 'turned') =>
+      Math.max(...facts.dots.map((dot, i) => Math.hypot(dot.x - facts[which][names[i]][0], dot.y - facts[which][names[i]][1])));
+    let facts = await measure();
+    expect(facts.dots.map((d) => d.name)).toEqual(names);
+    expect(facts.dots.every((d) => !d.hidden)).toBe(true);
+    for (const name of names) expect(facts.legend).toContain(name);
+    expect(worst(facts, 'projected')).toBeLessThan(0.75);
+    expect(worst(facts, 'turned')).toBeGreaterThan(20);
+    // They follow the boat: turned by 90° and a second later, the dots are where its new points are.
+    await page.evaluate(() => {
+      window.oceano.setParams({ boatHeading: 90 });
+      window.oceano.setTime(6);
+    });
+    facts = await measure();
+    console.log(`[oceano] hull sample points: worst ${worst(facts, 'projected').toFixed(2)} px from their projections; with the hull turned round ${worst(facts, 'turned').toFixed(1)} px`);
+    expect(worst(facts, 'projected')).toBeLessThan(0.75);
+    expect(worst(facts, 'turned')).toBeGreaterThan(20);
+    expect(consoleErrors).toEqual([]);
     await page.close();
   });
 

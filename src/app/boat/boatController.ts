@@ -26,6 +26,8 @@ export interface BoatInfo {
    * time or on a link without a boat state; a paused view keeps the damped pose, not this.
    */
   target: { position: [number, number, number]; pitch: number; roll: number };
+  /** The hull the surface is sampled under, metres: bow and stern lie length/2, port and starboard beam/2 from the centre. */
+  hull: HullSize;
   model: 'loading' | 'loaded' | 'failed';
 }
 
@@ -36,8 +38,7 @@ export interface BoatInfo {
 export class BoatController {
   private readonly motion = new BoatMotion();
   private state?: BoatMotionState;
-  /** The hull the boat is floated with: the model's size once it has loaded. */
-  hull: HullSize = NOMINAL_HULL;
+  private hull: HullSize = NOMINAL_HULL;
   private modelState: BoatInfo['model'] = 'loading';
   /** The wake the boat leaves, recorded every frame (src/sim/wake/boatWake.ts). */
   private readonly wake = new BoatWake();
@@ -126,6 +127,7 @@ export class BoatController {
       pitch: pose.pitch,
       roll: pose.roll,
       target: { position: [target.x, target.y, target.z], pitch: target.pitch, roll: target.roll },
+      hull: { ...this.hull },
       model: this.modelState,
     };
   }

@@ -44,6 +44,7 @@ export class FigureCaptions {
     captions.forEach((caption, i) => {
       const element = this.elements[i];
       element.textContent = caption.text;
+      element.title = caption.text;
       const rect = caption.below ?? caption.inside!;
       element.className = caption.below ? 'oceano-figure-caption' : 'oceano-figure-caption oceano-figure-face';
       // The canvas may not start at the container's corner (it does in the page and the element).

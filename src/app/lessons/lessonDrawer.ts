@@ -16,6 +16,8 @@ import { FigureCaptions } from './figureCaptions';
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
 const ROOMY_WIDTH = 1000;
+/** Figures in a course page narrower than this show their card folded to its title, the sea in sight; a click unfolds it. */
+const SMALL_FIGURE = 480;
 
 /** Keys that walk the lessons while the focus is in the drawer (outside its form fields). */
 const NEXT_KEYS = new Set(['ArrowRight', 'PageDown']);
@@ -52,6 +54,7 @@ export class LessonDrawer {
   private readonly card: HTMLElement;
   private readonly toggle: HTMLButtonElement;
   private readonly position: HTMLElement;
+  private readonly headerTitle: HTMLElement;
   private readonly lessonButtons = new Map<string, HTMLButtonElement>();
   private readonly controls = new Map<ParamKey, { field: HTMLInputElement | HTMLSelectElement; output: HTMLOutputElement | null; note: HTMLElement; row: HTMLElement }>();
   private readonly legend: LessonLegend;
@@ -71,8 +74,9 @@ export class LessonDrawer {
     const header = element('div', 'oceano-lessons-header');
     this.toggle = button('oceano-lessons-toggle', teachingWord(tr, 'lessonsCollapse'), '', () => this.setCollapsed(!this.root.classList.contains('oceano-lessons-collapsed')));
     this.toggle.setAttribute('aria-expanded', 'true');
-    const title = element('span', 'oceano-lessons-title', teachingWord(tr, 'lessonsTitle'));
-    this.toggle.append(element('span', 'oceano-lessons-chevron'), title);
+    // A figure's card (not listed) is titled with its lesson: folded, that title is all it shows.
+    this.headerTitle = element('span', 'oceano-lessons-title', teachingWord(tr, 'lessonsTitle'));
+    this.toggle.append(element('span', 'oceano-lessons-chevron'), this.headerTitle);
     this.position = element('span', 'oceano-lessons-position');
     header.append(this.toggle, this.position);
     if (listed) {
@@ -172,7 +176,8 @@ export class LessonDrawer {
 
   private updatePosition(): void {
     const index = this.current ? LESSONS.findIndex((lesson) => lesson.id === this.current?.id) : -1;
-    this.position.textContent = index < 0 ? '' : `${index + 1} / ${LESSONS.length}`;
+    // A figure shows one lesson: its place in the course would say nothing there.
+    this.position.textContent = index < 0 || !this.listed ? '' : `${index + 1} / ${LESSONS.length}`;
     this.position.title = index < 0 ? '' : teachingWord(this.tr, 'lessonPosition').replace('{n}', String(index + 1)).replace('{total}', String(LESSONS.length));
     for (const [id, b] of this.lessonButtons) {
       if (id === this.current?.id) b.setAttribute('aria-current', 'true');
@@ -190,7 +195,8 @@ export class LessonDrawer {
     this.renderCard(lesson);
     this.list.hidden = true;
     this.card.hidden = false;
-    this.setCollapsed(false);
+    if (!this.listed) this.headerTitle.textContent = LESSON_TITLES[lesson.id][this.tr.language];
+    if (this.listed || this.container.clientWidth >= SMALL_FIGURE) this.setCollapsed(false);
     this.updatePosition();
     this.legend.show(lesson, this.params);
   }

@@ -2,7 +2,6 @@ import type { OceanParams, ParamKey } from '../../sim/params/params';
 import type { Camera } from 'three';
 import type { CameraPose } from '../camera/cameraPose';
 import type { BoatInfo } from '../boat/boatController';
-import type { HullSize } from '../../sim/boat/boatPose';
 
 /** What the drawer asks of the app: open a lesson, change a parameter, place its labels on the sea. */
 export interface LessonHooks {
@@ -15,5 +14,5 @@ export interface LessonHooks {
    * canvas, the clock's time, the boat's pose and hull, and the height of the waves the
    * boat floats on at a point now.
    */
-  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; time: number; boat: BoatInfo; hull: HullSize; height(x: number, z: number): number };
+  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; time: number; boat: BoatInfo; height(x: number, z: number): number };
 }

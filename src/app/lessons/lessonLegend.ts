@@ -28,7 +28,7 @@ function srgb(linear: number): number {
  * marked where it meets the sea in front of the camera, and the five points where the boat
  * samples the waves. The labels are HTML over the canvas, placed after each frame from the
  * camera's projection, and only in the part of the canvas the panels leave free: a label
- * that would run past its right edge is written leftwards from its point instead.
+ * that would run past its right edge slides back in.
  */
 export class LessonLegend {
   private readonly labels: HTMLElement[] = [];
@@ -121,17 +121,24 @@ export class LessonLegend {
       const visible = point !== null && point[0] >= free.x && point[0] <= free.x + free.width && point[1] >= free.y && point[1] <= free.y + free.height;
       label.hidden = !visible;
       if (!visible) return;
-      label.style.transform = `translate(${point[0].toFixed(1)}px, ${point[1].toFixed(1)}px)`;
-      // Written leftwards from its point where it would run past the free part's right edge (lessons.css: 4 px from the point).
-      label.classList.toggle('oceano-lesson-label-leftwards', point[0] + 4 + label.offsetWidth > free.x + free.width);
+      const right = free.x + free.width;
+      let x = point[0];
+      if (this.kind === 'hullPoints') {
+        // A point's dot stays on its point: the name goes to the dot's left where it would run past the edge.
+        label.classList.toggle('oceano-lesson-label-leftwards', x + 4 + label.offsetWidth > right);
+      } else {
+        // A label begins 4 px right of its point (lessons.css); one that would run past the edge slides back in.
+        x = Math.max(free.x, Math.min(x, right - 8 - label.offsetWidth));
+      }
+      label.style.transform = `translate(${x.toFixed(1)}px, ${point[1].toFixed(1)}px)`;
     });
   }
 
   /** The world points the labels mark, in label order. */
   private points(params: OceanParams, scene: ReturnType<LessonHooks['scene']>): ([number, number, number] | null)[] {
     if (this.kind === 'hullPoints') {
-      const { position, heading } = scene.boat;
-      const points = hullSamplePoints(position[0], position[2], heading, scene.hull);
+      const { position, heading, hull } = scene.boat;
+      const points = hullSamplePoints(position[0], position[2], heading, hull);
       return HULL_POINTS.map((name) => {
         const [x, z] = points[name];
         return [x, scene.height(x, z), z];

@@ -226,10 +226,10 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
   },
   'compare-models': {
     text: {
-      en: 'The three wave models side by side, on one camera, one wind of 10 m/s and one seed. Left, the seed’s sines and Perlin ripples; middle, 32 Gerstner trochoids drawn from the wind spectrum; right, Tessendorf’s FFT of the same spectrum. Each model draws only its strip of the screen. Drag the dividers, or move them with the arrow keys.',
-      es: 'Los tres modelos de olas lado a lado, con una cámara, un viento de 10 m/s y una semilla. A la izquierda, los senos y las ondas de Perlin del informe; en el centro, 32 trocoides de Gerstner tomadas del espectro del viento; a la derecha, la FFT de Tessendorf del mismo espectro. Cada modelo dibuja solo su franja de la pantalla. Arrastra los divisores o muévelos con las flechas.',
+      en: 'The three wave models side by side, on one camera, one wind of 10 m/s and one seed. Left, the seed’s sines and Perlin ripples; middle, 32 Gerstner trochoids drawn from the wind spectrum; right, Tessendorf’s FFT of the same spectrum. Each model draws only its strip of the screen; the dividers stand at fractions f of the part the panels leave free, from x₀ to x₁. Drag them, or move them with the arrow keys.',
+      es: 'Los tres modelos de olas lado a lado, con una cámara, un viento de 10 m/s y una semilla. A la izquierda, los senos y las ondas de Perlin del informe; en el centro, 32 trocoides de Gerstner tomadas del espectro del viento; a la derecha, la FFT de Tessendorf del mismo espectro. Cada modelo dibuja solo su franja de la pantalla; los divisores están en fracciones f de la parte que dejan libre los paneles, de x₀ a x₁. Arrástralos o muévelos con las flechas.',
     },
-    math: m('<msub><mi>x</mi><mtext>split</mtext></msub><mo>=</mo><mtext>round</mtext><mo>(</mo><mi>f</mi><mo>·</mo><mi>W</mi><mo>)</mo>'),
+    math: m('<msub><mi>x</mi><mtext>split</mtext></msub><mo>=</mo><mtext>round</mtext><mo>(</mo><msub><mi>x</mi><mn>0</mn></msub><mo>+</mo><mi>f</mi><mo>·</mo><mo>(</mo><msub><mi>x</mi><mn>1</mn></msub><mo>−</mo><msub><mi>x</mi><mn>0</mn></msub><mo>)</mo><mo>)</mo>'),
   },
   'physics-panel': {
     text: {
