@@ -63,6 +63,14 @@ export const SCENARIOS: readonly BenchScenario[] = [
   { name: 'compare-models camera, fft alone', query: 't=10&preset=compare-models&compare=off&waves=fft', passes: true, stepSeconds: 1 / 60 },
   // The other candidate for the dearest model: 32 trochoids summed per vertex and per pixel.
   { name: 'compare-models camera, gerstner alone', query: 't=10&preset=compare-models&compare=off&waves=gerstner', passes: true, stepSeconds: 1 / 60 },
+  // Issue 33: the default view with the interactive waves on, the clock at 60 Hz so each frame
+  // steps the field once (its step pass, the read-back for sampleSurface, the field in the
+  // ocean's shaders); a stone in it, so the picture has waves to draw.
+  {
+    name: 'interactive waves on, default view (field stepped at 60 Hz)',
+    query: 't=10&interactiveWaves=1&stones=10,0,-20,1,0.5',
+    stepSeconds: 1 / 60,
+  },
 ];
 
 /** The ratios the issue's targets are stated in: [label, numerator scenario, denominator scenario or 'floor', target]. */
@@ -77,6 +85,8 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   // Issue 15: a split view costs no more than its dearest model alone.
   ['compare-models / fft alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, fft alone', 1],
   ['compare-models / gerstner alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, gerstner alone', 1],
+  // Issue 33: the interactive waves cost at most 15 % more than the default view without them.
+  ['interactive waves / default', 'interactive waves on, default view (field stepped at 60 Hz)', 'default view', 1.15],
   ['looking up / default', 'looking up', 'default view', null],
   ['looking down / default', 'looking down', 'default view', null],
 ];

@@ -60,6 +60,23 @@ describe('interactive waves in the Ocean', () => {
     expect(stoneChanged).toBeGreaterThan(0.01 * pixels);
   }, 600_000);
 
+  it('tints steep water and foams it as the slope nears Stokes\'s limit (planted fault: the tint and the foam cut out of ocean.frag leave no foam)', async () => {
+    const steep = (fault: boolean) => page.evaluate((f) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.steep(f), fault);
+    // Foam is white lit by the sun: every channel high, little colour between them.
+    const foamy = (p: number[]) => {
+      let count = 0;
+      for (let i = 0; i < p.length; i += 4) if (Math.min(p[i], p[i + 1], p[i + 2]) > 150 && Math.max(p[i], p[i + 1], p[i + 2]) - Math.min(p[i], p[i + 1], p[i + 2]) < 40) count++;
+      return count;
+    };
+    const shown = await steep(false);
+    const faulty = await steep(true);
+    const pixels = shown.pixels.length / 4;
+    console.log(`Steepest slope of the field ${shown.steepest.toFixed(2)} (Stokes's limit 0.58); foam pixels ${foamy(shown.pixels)} of ${pixels}, with the planted fault ${foamy(faulty.pixels)}; pixels changed by the tint and foam ${differing(shown.pixels, faulty.pixels, 2)}`);
+    expect(shown.steepest).toBeGreaterThan(0.58);
+    expect(foamy(shown.pixels)).toBeGreaterThan(0.002 * pixels);
+    expect(foamy(faulty.pixels)).toBe(0);
+  }, 600_000);
+
   it('gives the same field whether the clock plays, steps or jumps forward, and replays the stones after a jump back (planted fault: a stone a step later differs)', async () => {
     const played = (times: number[], stones: { time: number; x: number; z: number }[]) =>
       page.evaluate((t, s) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.played(t, s), times, stones);

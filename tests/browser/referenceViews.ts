@@ -1,6 +1,6 @@
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean, type Harness } from './harness';
-import { presetNames } from '../../src/app/url/presets';
+import { PRESETS, presetNames, type PresetName } from '../../src/app/url/presets';
 
 type Vec3 = [number, number, number];
 
@@ -34,9 +34,12 @@ export const LOD_COLOUR_VIEWS: ReferenceView[] = [
  * default view again.
  */
 export function presetView(name: string): ReferenceView {
+  // The interactive waves run every step since their first stone (or 10 s of the boat) before
+  // the first frame: 4 s of them, 240 steps, take a minute on SwiftShader, 10 s three.
+  const t = (PRESETS[name as PresetName]?.params as { interactiveWaves?: boolean } | undefined)?.interactiveWaves ? 4 : 10;
   return name === 'fresnel'
     ? { name: 'preset-fresnel-page', query: 'preset=fresnel&t=10', width: 640, height: 360, wholePage: true }
-    : { name: `preset-${name}`, query: `preset=${name}&t=10`, width: 640, height: 360 };
+    : { name: `preset-${name}`, query: `preset=${name}&t=${t}`, width: 640, height: 360 };
 }
 
 /** Every committed reference image, each once. */

@@ -1,5 +1,5 @@
 import { message, type Message } from '../../sim/params/message';
-import { isParamKey, paramKeys } from '../../sim/params/params';
+import { isParamKey, paramDefs, paramKeys } from '../../sim/params/params';
 import { createAutomationApi, createFailedApi, type OceanoApi } from '../api/automationApi';
 import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from '../boot/bootSupport';
 import { canvasLabel, preferredLanguage, Translator } from '../language/i18n';
@@ -12,7 +12,11 @@ import { gateTouchOrbit } from './touchOrbitGate';
 import { ContextBudget, distanceToViewport, type BudgetedFigure } from './contextBudget';
 
 /** HTML lower-cases attribute names: map them back to the URL's names (swellamplitude → swellAmplitude). */
-const SETTING_NAMES = new Map<string, string>([...paramKeys, ...PAGE_KEYS].map((name) => [name.toLowerCase(), name]));
+/** An attribute's name for a setting: its name lower-cased (HTML folds case), or written kebab-case (interactive-waves). */
+const kebab = (name: string) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
+const SETTING_NAMES = new Map<string, string>([...paramKeys, ...PAGE_KEYS].flatMap((name) => [[name.toLowerCase(), name], [kebab(name), name]] as [string, string][]));
+/** A boolean written bare (<oceano-view interactive-waves>) is on, as HTML's own are. */
+const settingText = (key: string, text: string) => (text === '' && isParamKey(key) && paramDefs[key].kind === 'boolean' ? '1' : text);
 
 /** Attributes that do not configure the ocean. */
 const HTML_ATTRIBUTES = new Set<string>(['id', 'class', 'style', 'title', 'hidden', 'tabindex', 'slot', 'part', 'role', 'dir', ...STARTUP_ATTRIBUTES]);
@@ -59,7 +63,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
 
   /** Parameters, time, camera and lesson follow their attributes while the element lives; the rest is read once, when it is connected. */
   static get observedAttributes(): string[] {
-    return [...paramKeys.map((key) => key.toLowerCase()), 't', 'cam', 'lesson'];
+    return [...paramKeys.flatMap((key) => [key.toLowerCase(), kebab(key)]), 't', 'cam', 'lesson'];
   }
 
   /** The automation API of the live ocean; null while the figure waits, starts or is released. */
@@ -113,9 +117,9 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
   attributeChangedCallback(name: string, _old: string | null, text: string | null): void {
     if (text === null) return;
     const key = SETTING_NAMES.get(name) ?? name;
-    if (this.phase === 'live' && this.app) this.applySetting(this.app, key, text);
+    if (this.phase === 'live' && this.app) this.applySetting(this.app, key, settingText(key, text));
     // Not live yet, or released: applied when it is (a waiting figure reads its attributes when it starts).
-    else if (this.phase === 'starting' || this.phase === 'released') this.pendingChanges.push([key, text]);
+    else if (this.phase === 'starting' || this.phase === 'released') this.pendingChanges.push([key, settingText(key, text)]);
   }
 
   /** Validated exactly as at start-up, with the same notice and the same fallback. */
@@ -308,7 +312,8 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     for (const attribute of Array.from(this.attributes)) {
       const name = attribute.name.toLowerCase();
       if (HTML_ATTRIBUTES.has(name) || name.startsWith('data-') || name.startsWith('aria-')) continue;
-      pairs.push([SETTING_NAMES.get(name) ?? attribute.name, attribute.value]);
+      const key = SETTING_NAMES.get(name) ?? attribute.name;
+      pairs.push([key, settingText(key, attribute.value)]);
     }
     return pairs;
   }

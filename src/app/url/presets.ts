@@ -168,9 +168,10 @@ export const PRESETS = {
    * this instant, r = g t²/(8πn), those the grid carries (src/sim/iwave/cauchyPoissonRings.ts).
    */
   stone: {
-    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveGuide: true },
-    camera: { position: [0, 30, 24], target: [0, 0, -4] },
-    stones: [[0, 0, -4, 1.2, 2]],
+    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveGuide: true, sunElevation: 10, sunAzimuth: 0 },
+    // Low, into the sun: its glint breaks on each crest. The field centres where the camera looks.
+    camera: { position: [-20, 7, 16], target: [-20, 0, -20] },
+    stones: [[0, -20, -20, 1.2, 2]],
   },
   /**
    * The same stone twice, 56 m apart: on the left deep water's equation (iWave, ω² = g k), on
@@ -178,9 +179,9 @@ export const PRESETS = {
    * along the field's centre. One ring for the wave equation, a spreading train for the sea.
    */
   'stone-compare': {
-    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveEquation: 'side-by-side', iwaveGuide: true },
-    camera: { position: [0, 44, 34], target: [0, 0, -4] },
-    stones: [[0, -28, -4, 1.2, 2], [0, 28, -4, 1.2, 2]],
+    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveEquation: 'side-by-side', iwaveGuide: true, sunElevation: 12, sunAzimuth: 345 },
+    camera: { position: [-60, 20, 25], target: [-60, 0, -20] },
+    stones: [[0, -88, -20, 1.2, 2], [0, -32, -20, 1.2, 2]],
   },
   /**
    * The boat at 4 m/s in the interactive waves, the camera following: its hull a solid in the
@@ -188,7 +189,7 @@ export const PRESETS = {
    * takes them over.
    */
   'boat-interactive': {
-    params: { swellAmplitude: 0, rippleStrength: 0.05, interactiveWaves: true, wake: true, boatSpeed: 4, boatHeading: 270, boatFollow: true, sunElevation: 25, sunAzimuth: 300 },
+    params: { swellAmplitude: 0, rippleStrength: 0.05, interactiveWaves: true, wake: true, boatSpeed: 4, boatHeading: 270, boatFollow: true, sunElevation: 22, sunAzimuth: 315 },
     camera: { position: [26, 16, 18], target: [1, 0, -5] },
   },
 } satisfies Record<string, Preset>;

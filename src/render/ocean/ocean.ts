@@ -223,11 +223,16 @@ export class Ocean extends Object3D {
 
   /** Everything a frame needs for `camera` at `time` (seconds): the waves, which side of the water the eye is on, and the chunks in view. */
   update(time: number, camera: PerspectiveCamera): void {
-    if (this.interactive) this.interactive.follow(...focusOf(camera));
+    this.follow(camera);
     this.advance(time);
     this.locateEye(camera, time);
     this.cull(camera);
     this.shade(camera);
+  }
+
+  /** Centres the interactive waves on where `camera` looks (update does; a view that calls advance itself calls this first). */
+  follow(camera: PerspectiveCamera): void {
+    if (this.interactive) this.interactive.follow(...focusOf(camera));
   }
 
   /** The waves at `time`: the model's GPU passes and uniforms. */

@@ -193,6 +193,7 @@ export class OceanView {
    */
   update(time: number): void {
     const { ocean, camera } = this;
+    ocean.follow(camera);
     ocean.advance(time);
     this.compare?.advance(time);
     this.clearance.fitNear(camera, ocean.cullingBounds().vertical, () => ocean.surfaceUnder(camera.position.x, camera.position.z, time));
