@@ -204,6 +204,9 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     ready.then(
       () => {
         if (this.generation !== generation) return;
+        // The poster or the still gives way once the picture is complete: a first frame may still
+        // lack the boat or a view whose code comes after it (the heightmaps, the underwater passes).
+        this.cover?.uncover();
         this.phase = 'live';
         this.saved = null;
         for (const [key, text] of this.pendingChanges.splice(0)) this.applySetting(app, key, text);
@@ -213,6 +216,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
       },
       (error: unknown) => {
         if (this.generation !== generation) return;
+        this.cover?.uncover();
         this.phase = 'failed';
         OceanoViewElement.contexts.free(this);
         this.dispatchError('start', error instanceof Error ? error.message : String(error));
@@ -238,7 +242,6 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
       onFirstFrame: () => {
         if (!current() || !this.app) return;
         this.stopGatingTouch = gateTouchOrbit(this.app.orbit.controls, this.app.canvas);
-        this.cover?.uncover();
         if (this.loadFired) return;
         this.loadFired = true;
         this.dispatchEvent(new CustomEvent('load'));
