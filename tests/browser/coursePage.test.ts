@@ -1,9 +1,10 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
 import { useHarness } from './useHarness';
 import { recordedPage } from './pages';
+import { ensurePosters } from './distPosters';
 
 const harness = useHarness();
 
@@ -31,6 +32,9 @@ async function visibleFiguresReady(page: Page): Promise<number> {
 }
 
 describe('the course page (dist/course/)', () => {
+  // Its figures point at the build's posters.
+  beforeAll(() => ensurePosters(harness), 600_000);
+
   it('is the seed report made live: every figure starts as it is scrolled to, with no lost context, notice or page error', async () => {
     const { page, consoleErrors, violations } = await recordedPage(harness, 800, 700);
     // Figures open paused under reduced motion: the page is scrolled, not watched.
@@ -66,6 +70,17 @@ describe('the course page (dist/course/)', () => {
     }
     expect(quotes.every((q) => /^\?(lesson|preset)=[a-z-]+&lang=es$/.test(q.link))).toBe(true);
 
+    // The figures far below, not started, show their posters: the build's picture of their preset.
+    await page.waitForFunction(() => Array.from(document.querySelectorAll<HTMLImageElement>('img.oceano-poster')).every((img) => img.complete));
+    const posters = await page.evaluate(() => ({
+      withPoster: document.querySelectorAll('oceano-view[poster]').length,
+      shown: Array.from(document.querySelectorAll<HTMLImageElement>('img.oceano-poster')).filter((img) => img.naturalWidth === 320).length,
+      waiting: (Array.from(document.querySelectorAll('oceano-view[poster]')) as ViewElement[]).filter((view) => view.oceano === null).length,
+    }));
+    expect(posters.withPoster).toBeGreaterThanOrEqual(23);
+    expect(posters.waiting).toBeGreaterThan(10);
+    expect(posters.shown).toBeGreaterThanOrEqual(posters.waiting);
+
     const started = new Set<number>();
     const bottom = await page.evaluate(() => document.documentElement.scrollHeight - innerHeight);
     for (let y = 0; ; y = Math.min(y + 700, bottom)) {
@@ -83,7 +98,7 @@ describe('the course page (dist/course/)', () => {
     expect(consoleErrors).toEqual([]);
     expect(violations).toEqual([]);
     await page.close();
-  });
+  }, 400_000);
 
   it('speaks English when asked, figures included', async () => {
     const { page, consoleErrors } = await recordedPage(harness, 800, 700);

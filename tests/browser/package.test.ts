@@ -273,4 +273,54 @@ describe('the npm package', () => {
       server.close();
     }
   });
+
+  it('registers <oceano-view> from a CDN that mirrors npm packages, with no configuration: a wave figure and an FFT one, whose Worker comes from the CDN too', async () => {
+    // The CDN: the installed package under /npm/oceano@VERSION/, on another origin (port), with the CORS header such CDNs send.
+    const version = (JSON.parse(readFileSync(join(site, 'node_modules', 'oceano', 'package.json'), 'utf8')) as { version: string }).version;
+    const fromCdn: string[] = [];
+    const cdn = await serveFolder(join(site, 'node_modules', 'oceano'), `/npm/oceano@${version}/`, (path, status) => fromCdn.push(`${status} ${path}`), { 'access-control-allow-origin': '*' });
+    const script = `${cdn.url}dist/element/oceano-view.js`;
+    const course = join(work, 'course');
+    mkdirSync(course, { recursive: true });
+    writeFileSync(
+      join(course, 'chapter.html'),
+      `<!doctype html><script type="module" src="${script}"></script>` +
+        '<oceano-view id="seed" t="3" style="display:block;width:320px"></oceano-view><oceano-view id="fft" waves="fft" t="3" style="display:block;width:320px"></oceano-view>',
+    );
+    const page = await serveFolder(course, '/courses/graphics/week-3/');
+    const tab = await browser.newPage();
+    try {
+      tab.setDefaultTimeout(120_000);
+      const errors: string[] = [];
+      tab.on('pageerror', (error) => errors.push(String(error)));
+      tab.on('console', (message) => {
+        if (message.type() === 'error' && !message.location().url?.endsWith('/favicon.ico')) errors.push(message.text());
+      });
+      await tab.goto(`${page.url}chapter.html`, { waitUntil: 'load' });
+      for (const id of ['seed', 'fft']) {
+        await tab.waitForFunction((i) => (document.getElementById(i) as { oceano?: unknown } | null)?.oceano, {}, id);
+        await tab.evaluate((i) => (document.getElementById(i) as unknown as { oceano: { ready: Promise<unknown> } }).oceano.ready, id);
+      }
+      const workers = tab.workers().map((worker) => worker.url());
+      // Control: the page may not start the CDN's Worker script itself; the element's stand-in does.
+      const direct = await tab.evaluate((url) => {
+        try {
+          new Worker(url, { type: 'module' }).terminate();
+          return 'started';
+        } catch (error) {
+          return (error as Error).name;
+        }
+      }, `${cdn.url}${fromCdn.map((line) => line.split(' ')[1]).find((path) => /fftFieldsWorker-[\w-]+\.js$/.test(path))!.slice(`/npm/oceano@${version}/`.length)}`);
+      expect(errors).toEqual([]);
+      expect(fromCdn.filter((line) => !line.startsWith('200 '))).toEqual([]);
+      expect(fromCdn).toContainEqual(expect.stringMatching(/^200 .*\/dist\/element\/models\/boat\.glb$/));
+      expect(fromCdn).toContainEqual(expect.stringMatching(/^200 .*\/dist\/element\/assets\/fftFieldsWorker-[\w-]+\.js$/));
+      expect(workers).toEqual([expect.stringMatching(/^blob:/)]);
+      expect(direct).toBe('SecurityError');
+    } finally {
+      await tab.close();
+      page.server.close();
+      cdn.server.close();
+    }
+  });
 });

@@ -23,9 +23,14 @@ export function serveUnderSubPath(): Promise<{ server: Server; url: string }> {
 
 /**
  * Serves `folder` under `subPath` on loopback, as serveUnderSubPath serves dist/; `served`
- * hears each request's path and status.
+ * hears each request's path and status; `headers` go with every file (a CDN's CORS header).
  */
-export function serveFolder(folder: string, subPath: string, served: (path: string, status: number) => void = () => {}): Promise<{ server: Server; url: string }> {
+export function serveFolder(
+  folder: string,
+  subPath: string,
+  served: (path: string, status: number) => void = () => {},
+  headers: Record<string, string> = {},
+): Promise<{ server: Server; url: string }> {
   const server = createServer(async (request, response) => {
     const path = decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname);
     if (!path.startsWith(subPath)) {
@@ -37,7 +42,7 @@ export function serveFolder(folder: string, subPath: string, served: (path: stri
     try {
       const body = await readFile(join(folder, relative));
       served(path, 200);
-      response.writeHead(200, { 'content-type': TYPES[extname(relative)] ?? 'application/octet-stream' }).end(body);
+      response.writeHead(200, { ...headers, 'content-type': TYPES[extname(relative)] ?? 'application/octet-stream' }).end(body);
     } catch {
       served(path, 404);
       response.writeHead(404).end();

@@ -2,7 +2,7 @@
  * What an <oceano-view> shows while it has no live picture: the page's poster before the
  * first frame, the last frame as a still image while its context is given back, and, for
  * reveal="interaction", the button that starts it. It lies over the canvas's place and is
- * taken away once a live frame is drawn.
+ * taken away once the live picture is complete.
  */
 export class FigureCover {
   private poster: HTMLImageElement | null = null;
@@ -15,9 +15,11 @@ export class FigureCover {
   ) {}
 
   showPoster(url: string): void {
-    this.poster ??= this.layer(document.createElement('img'), 'oceano-poster');
-    this.poster.alt = this.alt;
-    this.poster.src = url;
+    const poster = (this.poster ??= this.layer(document.createElement('img'), 'oceano-poster'));
+    poster.alt = this.alt;
+    // A poster that cannot be had leaves the figure's plain background, not a broken-image icon.
+    poster.addEventListener('error', () => poster.remove(), { once: true });
+    poster.src = url;
   }
 
   /** A real <button> in the middle of the figure: reachable with Tab, started with Enter or Space. */
@@ -52,7 +54,7 @@ export class FigureCover {
     return this.still !== null;
   }
 
-  /** A live frame is on screen: the poster and the still give way to it. */
+  /** The live picture is complete: the poster and the still give way to it. */
   uncover(): void {
     this.poster?.remove();
     this.poster = null;

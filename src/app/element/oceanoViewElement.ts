@@ -208,6 +208,9 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     ready.then(
       () => {
         if (this.generation !== generation) return;
+        // The poster or the still gives way once the picture is complete: a first frame may still
+        // lack the boat or a view whose code comes after it (the heightmaps, the underwater passes).
+        this.cover?.uncover();
         this.phase = 'live';
         this.saved = null;
         for (const [key, text] of this.pendingChanges.splice(0)) this.applySetting(app, key, text);
@@ -217,6 +220,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
       },
       (error: unknown) => {
         if (this.generation !== generation) return;
+        this.cover?.uncover();
         this.phase = 'failed';
         OceanoViewElement.contexts.free(this);
         this.dispatchError('start', error instanceof Error ? error.message : String(error));
@@ -245,7 +249,6 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
         void app.orbit.loaded.then((controls) => {
           if (controls && this.app === app) this.stopGatingTouch = gateTouchOrbit(controls, app.canvas);
         });
-        this.cover?.uncover();
         if (this.loadFired) return;
         this.loadFired = true;
         this.dispatchEvent(new CustomEvent('load'));

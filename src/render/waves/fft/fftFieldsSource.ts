@@ -2,6 +2,8 @@ import type { CascadeFields } from '../../../sim/waves/fft/fftOcean';
 import type { FieldSource } from '../../../sim/waves/fft/fftWaveModel';
 import type { SeaState } from '../../../sim/waves/spectra/seaState';
 import { fieldBuffers, type FieldsReply, type FieldsRequest } from './fftFieldsMessages';
+import { startModuleWorker } from './moduleWorker';
+import fieldsWorkerUrl from './fftFieldsWorker.ts?worker&url';
 
 /**
  * The FFT twin's fields from a Worker (fftFieldsWorker.ts), one request and one reply per
@@ -11,7 +13,7 @@ import { fieldBuffers, type FieldsReply, type FieldsRequest } from './fftFieldsM
  * (docs/worker-transport.md).
  */
 export class WorkerFieldSource implements FieldSource {
-  private readonly worker = new Worker(new URL('./fftFieldsWorker.ts', import.meta.url), { type: 'module' });
+  private readonly worker = startModuleWorker(new URL(fieldsWorkerUrl, import.meta.url));
   /** The request the Worker is working on (null when idle). */
   private inFlight: { sea: SeaState; time: number } | null = null;
   private pending: { sea: SeaState; time: number } | null = null;
