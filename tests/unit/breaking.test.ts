@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { breakingMeasure, breakingThreshold, jacobianCovariance, jacobianDeterminant, jacobianMinEigenvalue } from '../../src/sim/waves/fft/breaking';
-import { foamJacobianThreshold, whitecapCoverage } from '../../src/sim/waves/fft/whitecaps';
+import { upperNormalQuantile, whitecapCoverage } from '../../src/sim/waves/fft/whitecaps';
 import { FftOcean } from '../../src/sim/waves/fft/fftOcean';
 import { DEFAULT_SEA_STATE } from '../../src/sim/waves/spectra/seaState';
 import { seededRandom } from '../../src/sim/noise/integerHash';
@@ -84,7 +84,8 @@ describe('the breaking threshold from the sea\'s Jacobian statistics', { timeout
       let area = 0;
       let breaking = 0;
       let oldBreaking = 0;
-      const oldThreshold = foamJacobianThreshold(windSpeed, sea.choppiness);
+      // The threshold foam had before: det J taken as Gaussian about 1 with spread 0.125 λ.
+      const oldThreshold = 1 - 0.125 * sea.choppiness * upperNormalQuantile(coverage);
       for (let s = 0; s < 40_000; s++) {
         const d = windy.derivatives(random() * size, random() * size, s < 20_000 ? 10 : 200);
         const det = jacobianDeterminant(d.jxx, d.jzz, d.jxz);

@@ -16,8 +16,10 @@ export interface ShadingFixes {
   clearanceNear: boolean;
   /** The glint from slopes a pixel cannot resolve turned into roughness (Cox–Munk, shaders/ocean.frag sunGlint). */
   slopeRoughness: boolean;
-  /** Foam kept only by the smallest cascade, white only where its fold went deep (shaders/waves/fft.glsl fftFoamAt). */
+  /** The breaking measure min(det J, λ_min J) the foam thresholds (shaders/waves/fftBreaking.glsl), not det J alone. */
   foamCoverage: boolean;
+  /** The breakup field that keeps the whitecaps off the FFT tiles' lattice (shaders/foam/foamBreakup.glsl). */
+  foamBreakup: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -50,13 +52,18 @@ const FIXED_GLINT: ShaderFault = {
     ['color += sunGlint(n, v, waveUnresolvedSlopeVariance(), facetReflectance);', 'color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;'],
   ],
 };
-/** The foam as it was: both smaller cascades' foam kept, white from just past their thresholds. */
-const BLOTCHY_FOAM: ShaderFault = {
-  name: 'blotchy-foam',
-  fragment: [
-    ['float potential = fftFoamPotential(p, near);', 'float potential = max(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftFoamPotential(p, near));'],
-    ['float kept = smoothstep(1.25, 2.25, potential);', 'float kept = smoothstep(0.5, 1.5, potential);'],
-  ],
+/** The foam thresholded on det J alone (the threshold still set for min(det J, λ_min J)): crests folded across and stretched along do not foam. */
+const DETERMINANT_FOAM: ShaderFault = {
+  name: 'determinant-foam',
+  fragment: [['return min(determinant, minEigenvalue);', 'return determinant + 0.0 * minEigenvalue;']],
+};
+/**
+ * The whitecaps on the FFT tiles' lattice again: the breakup field read at the grid point
+ * folded into the smallest tile, so it repeats with that tile (same statistics, same coverage).
+ */
+const TILED_FOAM: ShaderFault = {
+  name: 'tiled-foam',
+  fragment: [['float breakup = foamBreakup(p, near);', 'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);']],
 };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
 const UNMARKED_SEA_BED: ShaderFault = { name: 'unmarked-sea-bed', fragment: [['SEA_BED_ALPHA);', '1.0);']] };
@@ -92,7 +99,8 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(ABSOLUTE_PIXELS, fixes.relativePixelNormals);
   toggle(UNMARKED_SEA_BED, fixes.seaBedMark);
   toggle(FIXED_GLINT, fixes.slopeRoughness);
-  toggle(BLOTCHY_FOAM, fixes.foamCoverage);
+  toggle(DETERMINANT_FOAM, fixes.foamCoverage);
+  toggle(TILED_FOAM, fixes.foamBreakup);
   const ocean = view.ocean;
   const material = ocean.material;
   const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);

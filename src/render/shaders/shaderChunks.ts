@@ -6,6 +6,7 @@ import wake from '../../../shaders/wake.glsl?raw';
 import iwave from '../../../shaders/iwave.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
+import foamMaterial from '../../../shaders/foam/foamMaterial.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 import { SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
 
@@ -32,6 +33,8 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_wake: wake,
   // The interactive waves' height field (iWave), added to whichever wave model is active.
   oceano_iwave: iwave,
+  // Foam as foam: the whitecaps' and the wake's (ocean.frag, OCEAN_FOAM_TEXTURE).
+  oceano_foam: foamMaterial,
   // The underwater passes' scene target, written after three's colour-space chunk (read back by
   // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,

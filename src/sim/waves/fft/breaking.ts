@@ -63,12 +63,12 @@ const SAMPLES = 40_000;
 
 /**
  * Seeded Gaussian samples of (Jxx, Jzz, Jxz) with the given covariance (Cholesky factor of it),
- * plus an independent Gaussian of variance `extraVariance` added to the breaking measure (a
- * modulation of the threshold the pixels add, see foamBreakup.ts), each with the area it covers
- * on the displaced surface, max(det J, 0) (a compressed patch covers less of the picture than
- * of the grid; a looped one is drawn over).
+ * each with `extra()` added to its breaking measure (a shift the pixels add, independent of
+ * the waves: foamBreakup.ts) and with the area it covers on the displaced surface,
+ * max(det J, 0) (a compressed patch covers less of the picture than of the grid; a looped one
+ * is drawn over).
  */
-function sampleMeasures(covariance: readonly number[], extraVariance: number): { measure: Float64Array; area: Float64Array } {
+function sampleMeasures(covariance: readonly number[], extra: () => number): { measure: Float64Array; area: Float64Array } {
   const [a, b, c, , d, e, , , f] = covariance;
   const l11 = Math.sqrt(Math.max(a, 0));
   const l21 = l11 > 0 ? b / l11 : 0;
@@ -77,7 +77,6 @@ function sampleMeasures(covariance: readonly number[], extraVariance: number): {
   const l32 = l22 > 0 ? (e - l31 * l21) / l22 : 0;
   const l33 = Math.sqrt(Math.max(f - l31 * l31 - l32 * l32, 0));
   const normal = gaussianRandom(0x0b5e, 7);
-  const extra = Math.sqrt(extraVariance);
   const measure = new Float64Array(SAMPLES);
   const area = new Float64Array(SAMPLES);
   for (let s = 0; s < SAMPLES; s++) {
@@ -87,20 +86,20 @@ function sampleMeasures(covariance: readonly number[], extraVariance: number): {
     const jxx = l11 * u;
     const jzz = l21 * u + l22 * v;
     const jxz = l31 * u + l32 * v + l33 * w;
-    measure[s] = breakingMeasure(jxx, jzz, jxz) + extra * normal();
+    measure[s] = breakingMeasure(jxx, jzz, jxz) + extra();
     area[s] = Math.max(jacobianDeterminant(jxx, jzz, jxz), 0);
   }
   return { measure, area };
 }
 
 /**
- * The threshold on the breaking measure (plus the modulation) below which the given share of
- * the displaced surface lies: the sea's Jacobian statistics from its spectrum, the share of the
- * picture from Monahan's coverage. The share of area is measured on the displaced surface, so
- * it is what a picture from above sees.
+ * The threshold on the breaking measure (plus the shift `extra` draws) below which the given
+ * share of the displaced surface lies: the sea's Jacobian statistics from its spectrum, the
+ * share of the picture from Monahan's coverage. The share of area is measured on the displaced
+ * surface, so it is what a picture from above sees.
  */
-export function breakingThreshold(covariance: readonly number[], coverage: number, extraVariance = 0): number {
-  const { measure, area } = sampleMeasures(covariance, extraVariance);
+export function breakingThreshold(covariance: readonly number[], coverage: number, extra: () => number = () => 0): number {
+  const { measure, area } = sampleMeasures(covariance, extra);
   const order = Array.from(measure.keys()).sort((i, j) => measure[i] - measure[j]);
   const total = area.reduce((sum, x) => sum + x, 0);
   const target = Math.min(Math.max(coverage, 0), 1) * total;
@@ -114,7 +113,7 @@ export function breakingThreshold(covariance: readonly number[], coverage: numbe
 
 /** The spread (standard deviation) of the breaking measure, for soft edges around the threshold. */
 export function breakingSpread(covariance: readonly number[]): number {
-  const { measure } = sampleMeasures(covariance, 0);
+  const { measure } = sampleMeasures(covariance, () => 0);
   let mean = 0;
   for (const m of measure) mean += m;
   mean /= measure.length;
