@@ -149,6 +149,10 @@ vec3 waterBodyColor() {
 }
 #endif
 
+#ifdef OCEAN_SUBSURFACE
+#include <oceano_subsurface>
+#endif
+
 // Foam drawn as foam (shaders/foam/foamMaterial.glsl), while its detail texture is there and
 // the foamTexture parameter is on; otherwise flat white paint, for the lesson that shows both.
 #ifdef OCEAN_FOAM_TEXTURE
@@ -276,6 +280,10 @@ void main() {
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
 #endif
   vec3 color = mix(water, sky, reflectance);
+#ifdef OCEAN_SUBSURFACE
+  // Sunlight through thin crests (shaders/subsurface.glsl), leaving through the surface as the water's own colour does.
+  color += (1.0 - reflectance) * subsurfaceGlow(n, v, vRelativePosition.y, crestPinch(n, vRelativePosition.xz));
+#endif
 
   vec3 halfway = normalize(uSunDirection + v);
 #ifdef WAVE_SLOPE_ROUGHNESS

@@ -19,11 +19,14 @@
 //     difference normal of the same surface, for the comparison teaching view
 //   WAVE_SLOPE_ROUGHNESS: float waveUnresolvedSlopeVariance(), the mean-square slope of the
 //     waves this pixel's normal does not show, which the sun's glint takes as roughness
+//   WAVE_PINCH: float wavePinch(), how pinched the surface is at this pixel, 1 − J in [0, 1]
+//     (the subsurface glow, shaders/subsurface.glsl)
 
 #define WAVE_PIXEL_NORMALS
 #define WAVE_FOAM
 #define WAVE_FABRICATED_NORMAL
 #define WAVE_SLOPE_ROUGHNESS
+#define WAVE_PINCH
 
 uniform sampler2D uFftDisplacement0;
 uniform sampler2D uFftDisplacement1;
@@ -177,6 +180,12 @@ float fftSlopeJxx(vec2 p, bool near) {
 
 float waveUnresolvedSlopeVariance() {
   return fftPixelUnresolvedVariance;
+}
+
+// 1 − J of the whole sea's choppy map at this pixel, clamped to [0, 1].
+float wavePinch() {
+  vec4 d = fftPixelDerivatives;
+  return clamp(-((1.0 + fftPixelJxx) * (1.0 + d.z) - d.w * d.w - 1.0), 0.0, 1.0);
 }
 #else
 // The vertices: the last grid point's displacement sums, kept per shader invocation, so a

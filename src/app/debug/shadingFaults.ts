@@ -16,10 +16,12 @@ export interface ShadingFixes {
   clearanceNear: boolean;
   /** The glint from slopes a pixel cannot resolve turned into roughness (Cox–Munk, shaders/ocean.frag sunGlint). */
   slopeRoughness: boolean;
-  /** The breaking measure min(det J, λ_min J) the foam thresholds (shaders/waves/fftBreaking.glsl), not det J alone. */
+  /** The foam left behind drawn as thin lace that fades (shaders/waves/fft.glsl fftFoamAt), not solid white. */
   foamCoverage: boolean;
   /** The breakup field that keeps the whitecaps off the FFT tiles' lattice (shaders/foam/foamBreakup.glsl). */
   foamBreakup: boolean;
+  /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
+  subsurfaceCrests: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -52,10 +54,10 @@ const FIXED_GLINT: ShaderFault = {
     ['color += sunGlint(n, v, waveUnresolvedSlopeVariance(), facetReflectance);', 'color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;'],
   ],
 };
-/** The foam thresholded on det J alone (the threshold still set for min(det J, λ_min J)): crests folded across and stretched along do not foam. */
-const DETERMINANT_FOAM: ShaderFault = {
-  name: 'determinant-foam',
-  fragment: [['return min(determinant, minEigenvalue);', 'return determinant + 0.0 * minEigenvalue;']],
+/** The foam left behind drawn solid white wherever it lies, as paint: blotches, and more white than Monahan's. */
+const SOLID_KEPT_FOAM: ShaderFault = {
+  name: 'solid-kept-foam',
+  fragment: [['FOAM_KEPT_THICKNESS * smoothstep(0.5, 2.5, potential)', 'smoothstep(0.5, 1.0, potential)']],
 };
 /**
  * The whitecaps on the FFT tiles' lattice again: the breakup field read at the grid point
@@ -65,6 +67,8 @@ const TILED_FOAM: ShaderFault = {
   name: 'tiled-foam',
   fragment: [['float breakup = foamBreakup(p, near);', 'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);']],
 };
+/** The subsurface glow on every pixel alike, crest or trough. */
+const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = pinch * (', 'float crest = 1.0 + 0.0 * pinch * (']] };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
 const UNMARKED_SEA_BED: ShaderFault = { name: 'unmarked-sea-bed', fragment: [['SEA_BED_ALPHA);', '1.0);']] };
 
@@ -99,8 +103,9 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(ABSOLUTE_PIXELS, fixes.relativePixelNormals);
   toggle(UNMARKED_SEA_BED, fixes.seaBedMark);
   toggle(FIXED_GLINT, fixes.slopeRoughness);
-  toggle(DETERMINANT_FOAM, fixes.foamCoverage);
+  toggle(SOLID_KEPT_FOAM, fixes.foamCoverage);
   toggle(TILED_FOAM, fixes.foamBreakup);
+  toggle(GLOW_EVERYWHERE, fixes.subsurfaceCrests);
   const ocean = view.ocean;
   const material = ocean.material;
   const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);

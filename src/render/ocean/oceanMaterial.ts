@@ -61,6 +61,7 @@ export class OceanMaterial extends ShaderMaterial {
         uLodCamera: { value: new Vector3() },
         uLodHeight: { value: 0 },
         uMorphZones: { value: morphZones(1, 1, false) },
+        uCrestHeight: { value: 1 },
       },
     });
     this.main = main;
@@ -105,6 +106,9 @@ export class OceanMaterial extends ShaderMaterial {
   override onBeforeRender(_renderer: unknown, _scene: unknown, camera: Camera): void {
     this.followWake();
     this.followWaterOptics();
+    // A sixth of the model's largest height: about one standard deviation of height (the spectral
+    // bounds are 6.6–7σ, src/sim/waves/spectra/spectralBounds.ts), for the subsurface glow.
+    this.uniforms.uCrestHeight.value = Math.max(this.waves.model.model.bounds().vertical / 6, 0.01);
     // Foam as foam once its detail texture is there (shaders/foam/foamMaterial.glsl), paint until then.
     setMaterialDefine(this, 'OCEAN_FOAM_TEXTURE', this.uniforms.uFoamDetail.value !== null);
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);

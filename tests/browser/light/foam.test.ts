@@ -30,10 +30,10 @@ async function coverageRatios(fixed: boolean): Promise<number[]> {
 }
 
 describe('foam from above follows Monahan', () => {
-  it('near-white share within ±30 % of W at 10, 15 and 20 m/s; control: the blotchy foam kept by two cascades is twice W in a gale', { timeout: 240_000 }, async () => {
+  it('near-white share within ±30 % of W at 10, 15 and 20 m/s; control: the foam left behind drawn solid white is 1.5–2.4 W', { timeout: 240_000 }, async () => {
     const ratios = await coverageRatios(true);
     for (const ratio of ratios) expect(Math.abs(ratio - 1), ratios.map((r) => r.toFixed(2)).join(', ')).toBeLessThan(TOLERANCE);
     const control = await coverageRatios(false);
-    expect(control[2]).toBeGreaterThan(1 + TOLERANCE);
+    expect(Math.min(...control), control.map((r) => r.toFixed(2)).join(', ')).toBeGreaterThan(1 + TOLERANCE);
   });
 });
