@@ -32,8 +32,12 @@ export function horizonQuery(windSpeed: number): string {
   return `waves=fft&windSpeed=${windSpeed}&t=${HORIZON_VIEW.t}&cam=0,10,0,0,10,-1000`;
 }
 
-/** Foam seen from 150 m straight above, the sun 30° high: its glint lies 60° off the nadir, outside the 55° frame. */
-export const FOAM_VIEW = { width: 480, height: 270, t: 10 } as const;
+/**
+ * Foam seen from 150 m straight above, the sun 30° high: its glint lies 60° off the nadir,
+ * outside the 55° frame. Four instants 30 s apart: in a gale the frame holds only a few of the
+ * whitecaps' groups (foamBreakup.ts), and one instant's white share scatters by ±30 %.
+ */
+export const FOAM_VIEW = { width: 480, height: 270, t: 10, times: [10, 40, 70, 100] } as const;
 
 export function foamQuery(windSpeed: number): string {
   return `waves=fft&windSpeed=${windSpeed}&sunElevation=30&t=${FOAM_VIEW.t}&cam=0,150,0,0,0,-0.01`;
