@@ -1,12 +1,10 @@
-// Foam of each cascade, accumulated in its own texture (the texel grid of its FFT tile):
-// where the choppy displacement folds or nearly folds, the Jacobian J of the horizontal map
-// x ↦ x + D(x) drops below a threshold (Tessendorf 2001, §4.3: J < 0 where crests loop), and
-// foam appears; elsewhere the foam already there fades as e^{−Δt/τ}. r = foam, g = this
-// cascade's J (for inspection), b = this cascade's ∂Dx/∂x, copied so that the ocean's pixels
-// find everything they need in this texture and the derivatives one, two filtered reads per
-// cascade instead of three (shaders/waves/fft.glsl). r is a foam potential, 1 at the
-// threshold: the ocean draws the smallest cascade's as foam left behind from r = 1.25 on.
-// One draw steps all three cascades (three colour attachments, MRT).
+// What the ocean's pixels read of each cascade besides its derivatives (shaders/waves/fft.glsl),
+// packed every frame into one texture per cascade so that a pixel makes two filtered reads per
+// cascade instead of three: r = the foam the smallest cascade remembers, faded from the last
+// lattice time to now (shaders/fftFoamMemory.frag; 0 in the other cascades), b = ∂Dx/∂x.
+// The memory is smoothed over 3 × 3 texels (binomial weights) as it is packed: it is a max of
+// thresholded deposits, and read bilinearly as it is, its patches came out as the texels' squares.
+// One draw packs all three cascades (three colour attachments, MRT).
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -14,36 +12,28 @@ precision highp sampler2D;
 uniform sampler2D uDisplacement0;  // per cascade: (dx, dy, dz, ∂Dx/∂x)
 uniform sampler2D uDisplacement1;
 uniform sampler2D uDisplacement2;
-uniform sampler2D uDerivatives0;   // per cascade: (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)
-uniform sampler2D uDerivatives1;
-uniform sampler2D uDerivatives2;
-uniform sampler2D uPrevious0;      // per cascade, r: foam at the previous step
-uniform sampler2D uPrevious1;
-uniform sampler2D uPrevious2;
-uniform float uDecay;              // e^{−Δt/τ}
-uniform vec3 uThreshold;           // each cascade's Jacobian threshold
-uniform vec3 uSoftness;            // half-width of the edge around it (a fraction of J's spread)
+uniform sampler2D uMemory;         // r: the smallest cascade's remembered potential
+uniform float uFade;               // e^{−(t − t_k)/τ} since the last lattice time t_k (0: no foam)
 
 layout(location = 0) out vec4 outFoam0;
 layout(location = 1) out vec4 outFoam1;
 layout(location = 2) out vec4 outFoam2;
 
-vec4 foamStep(sampler2D displacement, sampler2D derivatives, sampler2D previous, float threshold, float softness, ivec2 texel) {
-  float jxx = texelFetch(displacement, texel, 0).w;
-  vec4 d = texelFetch(derivatives, texel, 0);
-  float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
-  // Stored is not the foam but how far J went past the threshold, in units of the edge's
-  // half-width: 0 at threshold + 1 edge and above, 1 at the threshold, growing into the fold.
-  // Linear in J, so the ocean shader's bilinear read draws a smooth edge (foam/white at ≥ 1),
-  // not the texel squares a thresholded value gives; kept while it fades.
-  float fresh = clamp((threshold - jacobian) / softness + 1.0, 0.0, 4.0);
-  float old = texelFetch(previous, texel, 0).r * uDecay;
-  return vec4(max(old, fresh), jacobian, jxx, 1.0);
+float smoothedMemory(ivec2 texel) {
+  int n = textureSize(uMemory, 0).x;
+  float sum = 0.0;
+  for (int j = -1; j <= 1; j++) {
+    for (int i = -1; i <= 1; i++) {
+      float weight = (2.0 - abs(float(i))) * (2.0 - abs(float(j)));
+      sum += weight * texelFetch(uMemory, (texel + ivec2(i, j) + n) % n, 0).r;
+    }
+  }
+  return sum / 16.0;
 }
 
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  outFoam0 = foamStep(uDisplacement0, uDerivatives0, uPrevious0, uThreshold.x, uSoftness.x, texel);
-  outFoam1 = foamStep(uDisplacement1, uDerivatives1, uPrevious1, uThreshold.y, uSoftness.y, texel);
-  outFoam2 = foamStep(uDisplacement2, uDerivatives2, uPrevious2, uThreshold.z, uSoftness.z, texel);
+  outFoam0 = vec4(0.0, 0.0, texelFetch(uDisplacement0, texel, 0).w, 1.0);
+  outFoam1 = vec4(0.0, 0.0, texelFetch(uDisplacement1, texel, 0).w, 1.0);
+  outFoam2 = vec4(smoothedMemory(texel) * uFade, 0.0, texelFetch(uDisplacement2, texel, 0).w, 1.0);
 }

@@ -38,7 +38,7 @@ flat varying float vVertexSpacing;
 varying float vWaveFade;
 uniform bool uFlatNormals;
 
-// A spectral sea's foam is sea water whipped with air: white, lit by sun and sky.
+// Foam as flat paint (the foamTexture parameter off): white, lit by sun and sky.
 const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 
 // The haze towards the horizon: its colour, the sky at the horizon beyond the pixel, and its
@@ -153,6 +153,16 @@ vec3 waterBodyColor() {
   vec3 skyThrough = 3.14159265 * skyCubeColor(vec3(0.0, 1.0, 0.0));
   return WATER_BODY_REFLECTANCE * (sunThrough + skyThrough) / (3.14159265 * WATER_IOR * WATER_IOR);
 }
+#endif
+
+#ifdef OCEAN_SUBSURFACE
+#include <oceano_subsurface>
+#endif
+
+// Foam drawn as foam (shaders/foam/foamMaterial.glsl), while its detail texture is there and
+// the foamTexture parameter is on; otherwise flat white paint, for the lesson that shows both.
+#ifdef OCEAN_FOAM_TEXTURE
+#include <oceano_foam>
 #endif
 
 // The underside's shading, called only while the view may be under the water
@@ -282,6 +292,10 @@ void main() {
   water = iwaveTinted(water, vIWaveSlope);
 #endif
   vec3 color = mix(water, sky, reflectance);
+#ifdef OCEAN_SUBSURFACE
+  // Sunlight through thin crests (shaders/subsurface.glsl), leaving through the surface as the water's own colour does.
+  color += (1.0 - reflectance) * subsurfaceGlow(n, v, vRelativePosition.y, crestPinch(n, vRelativePosition.xz));
+#endif
 
   vec3 halfway = normalize(uSunDirection + v);
   // Each facet reflects the sun by its own Fresnel, at the angle between the eye and the half vector.
@@ -292,14 +306,18 @@ void main() {
 #ifdef WAVE_FOAM
   foam = waveFoamNear(vRelativeGridXZ);
 #endif
-  // The wake's foam (hull trail, bow wave) looks like the whitecaps: the same white, lit alike.
+  // The wake's foam (hull trail, bow wave) is the whitecaps' foam: the same material.
   foam = withWakeFoam(foam);
 #ifdef OCEAN_IWAVE
   foam = max(foam, iwaveFoam(vIWaveSlope));
 #endif
   if (foam > 0.0) {
+#ifdef OCEAN_FOAM_TEXTURE
+    color = foamOver(color, foam, n, v, vRelativeGridXZ);
+#else
     float foamLight = 0.35 + 0.65 * clamp(uSunDirection.y * 2.0 + 0.3, 0.0, 1.0);
     color = mix(color, FOAM_COLOR * foamLight, foam);
+#endif
   }
 
   color = mix(color, hazeColor(v), hazeWeight(distance));

@@ -20,10 +20,13 @@
 //   WAVE_FOAM: float waveFoam(vec2 gridXZ), foam coverage in [0, 1]
 //   WAVE_FABRICATED_NORMAL: vec3 waveFabricatedNormal(vec2 gridXZ), the seed's finite-
 //     difference normal of the same surface, for the comparison teaching view
+//   WAVE_PINCH: float wavePinch(), how pinched the surface is at this pixel, 1 − J in [0, 1]
+//     (the subsurface glow, shaders/subsurface.glsl)
 
 #define WAVE_PIXEL_NORMALS
 #define WAVE_FOAM
 #define WAVE_FABRICATED_NORMAL
+#define WAVE_PINCH
 
 uniform sampler2D uFftDisplacement0;
 uniform sampler2D uFftDisplacement1;
@@ -42,8 +45,9 @@ uniform vec3 uFftScale;      // n / L per cascade: texels per metre
 uniform vec2 uFftNearOffset[3];
 uniform float uFftN;
 uniform float uFoamEnabled;  // 0 or 1
-uniform float uFoamThreshold;
+uniform float uFoamThreshold;  // the whole sea's breaking threshold, breakup shift included (fftWaveView.ts)
 uniform float uFoamSoftness;   // half-width of the soft edge around the threshold
+uniform float uFoamBreakupStrength;  // the breakup field's weight, in units of the breaking measure
 uniform float uFabricatedDelta;
 // Per cascade: the mean-square slope of its waves (both axes), and its shortest and longest
 // wavelength, m; and the whole sea's mean-square slope, Cox & Munk's for this wind
@@ -108,8 +112,8 @@ vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, v
 // (wavePixelFields), outside any branch, and the normal and foam below only combine them.
 // perf: a "read only if not cached" branch would read the textures again on a software
 // rasterizer, which runs both sides of a branch (docs/shader-notes.md).
-// Per cascade: the derivatives texture (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z) and the foam texture
-// (foam potential, J, ∂Dx/∂x) (shaders/fftFoam.frag): 6 reads per pixel.
+// Per cascade: the derivatives texture (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z) and the packed texture
+// (remembered foam, 0, ∂Dx/∂x) (shaders/fftFoam.frag): 6 reads per pixel.
 //
 // Seamless from geometry to roughness (Bruneton, Neyret & Holzschuch 2010): a cascade whose
 // waves are shorter than two of this pixel's footprints would alias (the far sea sparkles),
@@ -177,6 +181,12 @@ float fftSlopeJxx(vec2 p, bool near) {
 float waveUnresolvedSlopeVariance() {
   return fftPixelUnresolvedVariance;
 }
+
+// 1 − J of the whole sea's choppy map at this pixel, clamped to [0, 1].
+float wavePinch() {
+  vec4 d = fftPixelDerivatives;
+  return clamp(-((1.0 + fftPixelJxx) * (1.0 + d.z) - d.w * d.w - 1.0), 0.0, 1.0);
+}
 #else
 // The vertices: the last grid point's displacement sums, kept per shader invocation, so a
 // vertex that asks for the displacement and then the normal (comparison view) reads once.
@@ -202,7 +212,7 @@ float fftJxx(vec2 p, bool near) {
   return fftDisplacementFields(p, near).w;
 }
 
-// The smallest cascade's foam potential at a grid point: the foam it remembers.
+// The smallest cascade's remembered foam potential at a grid point.
 float fftFoamPotential(vec2 p, bool near) {
   return fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near)).r;
 }
@@ -250,24 +260,26 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
   return normalize(cross(pz - p0, px - p0));
 }
 
-// Foam: where the whole sea's Jacobian folds right now, half white at the threshold itself and
-// fully white ¼σ deeper, and what the smallest cascade accumulated (fading over seconds,
-// src/render/waves/fft/fftFoam.ts, against its own band's threshold). Seen from 150 m above,
-// the near-white share of the picture is then within 30 % of Monahan's coverage at 10, 15
+// Foam in two layers (docs/light.md §5). Breaking now: where the whole sea's breaking measure,
+// min(det J, λ_min J) (shaders/waves/fftBreaking.glsl), shifted by the breakup field that keeps
+// the whitecaps off the tiles' lattice (shaders/foam/foamBreakup.glsl), is below the threshold
+// that marks Monahan's share of the sea for this wind: white (0.6 thick) at the threshold, solid
+// 0.45σ below it, thinning to nothing 0.55σ above it, so the whitecap's edge is a band of
+// thinning lace outside the white (shaders/foam/foamMaterial.glsl).
+// Left behind: what the smallest cascade remembers (shaders/fftFoamMemory.frag), a potential
+// fading as e^{−t/τ} in simulation time, thin foam (a lace, shaders/foam/foamMaterial.glsl)
+// thinning out as it fades, and only where the breakup field lets the group's foam lie. Seen
+// from 150 m above, the picture's white share is within 30 % of Monahan's coverage at 10, 15
 // and 20 m/s (tests/browser/light/foam.test.ts).
+const float FOAM_KEPT_THICKNESS = 0.7;
 float fftFoamAt(vec2 p, bool near) {
   float jxx = fftJxx(p, near);
   vec4 d = fftDerivativeFields(p, near);
-  float jacobian = (1.0 + jxx) * (1.0 + d.z) - d.w * d.w;
-  float now = smoothstep(uFoamThreshold + uFoamSoftness, uFoamThreshold - uFoamSoftness, jacobian);
-  // The two larger tiles' foam is left out: their texels are metres wide (4.6 m and 22 m in a
-  // gale), which drew rounded white floes tens of metres across and twice Monahan's white from
-  // above; breaking happens at the scale of the shorter waves. The potential is 1 at the
-  // cascade's threshold and grows into the fold (shaders/fftFoam.frag); the foam left behind
-  // is white only where the fold went deep, and thins out over a wide ramp as it fades
-  // (translucent, then gone) instead of shrinking as a hard-edged floe.
+  float breakup = foamBreakup(p, near);
+  float measure = fftBreaking(jxx, d.z, d.w) + uFoamBreakupStrength * breakup;
+  float now = smoothstep(uFoamThreshold + 2.25 * uFoamSoftness, uFoamThreshold - 1.75 * uFoamSoftness, measure);
   float potential = fftFoamPotential(p, near);
-  float kept = smoothstep(1.25, 2.25, potential);
+  float kept = FOAM_KEPT_THICKNESS * smoothstep(0.5, 2.5, potential) * smoothstep(0.2, -0.6, breakup);
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 

@@ -18,8 +18,12 @@ export interface ShadingFixes {
   slopeRoughness: boolean;
   /** The roughness follows the wind (Cox & Munk's σ² for U less what the normals show); off: one roughness, a 10 m/s sea's, at every wind. */
   windRoughness: boolean;
-  /** Foam kept only by the smallest cascade, white only where its fold went deep (shaders/waves/fft.glsl fftFoamAt). */
+  /** The foam left behind drawn as thin lace that fades (shaders/waves/fft.glsl fftFoamAt), not solid white. */
   foamCoverage: boolean;
+  /** The breakup field that keeps the whitecaps off the FFT tiles' lattice (shaders/foam/foamBreakup.glsl). */
+  foamBreakup: boolean;
+  /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
+  subsurfaceCrests: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -63,14 +67,21 @@ const EVERY_TROCHOID_SLOPE: ShaderFault = {
   name: 'every-trochoid-slope',
   fragment: [['float share = gerstnerShare(uGerstnerWaves[i], gerstnerFootprint);', 'float share = 1.0;']],
 };
-/** The foam as it was: both smaller cascades' foam kept, white from just past their thresholds. */
-const BLOTCHY_FOAM: ShaderFault = {
-  name: 'blotchy-foam',
-  fragment: [
-    ['float potential = fftFoamPotential(p, near);', 'float potential = max(fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near)).r, fftFoamPotential(p, near));'],
-    ['float kept = smoothstep(1.25, 2.25, potential);', 'float kept = smoothstep(0.5, 1.5, potential);'],
-  ],
+/** The foam left behind drawn solid white wherever it lies, as paint: blotches, and more white than Monahan's. */
+const SOLID_KEPT_FOAM: ShaderFault = {
+  name: 'solid-kept-foam',
+  fragment: [['FOAM_KEPT_THICKNESS * smoothstep(0.5, 2.5, potential)', 'smoothstep(0.5, 1.0, potential)']],
 };
+/**
+ * The whitecaps on the FFT tiles' lattice again: the breakup field read at the grid point
+ * folded into the smallest tile, so it repeats with that tile (same statistics, same coverage).
+ */
+const TILED_FOAM: ShaderFault = {
+  name: 'tiled-foam',
+  fragment: [['float breakup = foamBreakup(p, near);', 'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);']],
+};
+/** The subsurface glow on every pixel alike, crest or trough. */
+const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = pinch * (', 'float crest = 1.0 + 0.0 * pinch * (']] };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
 const UNMARKED_SEA_BED: ShaderFault = { name: 'unmarked-sea-bed', fragment: [['SEA_BED_ALPHA);', '1.0);']] };
 
@@ -109,7 +120,9 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   const waves = view.ocean.getParams().waves;
   toggle(EVERY_CASCADE_SLOPE, waves === 'fft' ? fixes.slopeRoughness : true);
   toggle(EVERY_TROCHOID_SLOPE, waves === 'gerstner' ? fixes.slopeRoughness : true);
-  toggle(BLOTCHY_FOAM, fixes.foamCoverage);
+  toggle(SOLID_KEPT_FOAM, fixes.foamCoverage);
+  toggle(TILED_FOAM, fixes.foamBreakup);
+  toggle(GLOW_EVERYWHERE, fixes.subsurfaceCrests);
   const ocean = view.ocean;
   const material = ocean.material;
   const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);

@@ -198,8 +198,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
   },
   'fft-gale': {
     text: {
-      en: 'A gale, 20 m/s. Choppiness moves points sideways towards the crests, which sharpen while the troughs widen. Where the sideways motion folds the surface over itself, the Jacobian of the horizontal map drops below zero: that is where a wave breaks, and where the shader makes foam. The foam then decays over seconds, leaving streaks behind the crests.',
-      es: 'Un temporal, 20 m/s. La agudeza de crestas desplaza los puntos de lado hacia las crestas, que se afilan mientras los senos se ensanchan. Donde el desplazamiento lateral pliega la superficie sobre sí misma, el jacobiano de la transformación horizontal baja de cero: ahí rompe una ola, y ahí el shader pone espuma. La espuma decae después en segundos y deja estelas tras las crestas.',
+      en: 'A gale, 20 m/s. Choppiness moves points sideways towards the crests, which sharpen while the troughs widen. Where the sideways motion folds the surface, the Jacobian of the horizontal map, or its smaller eigenvalue, drops towards zero: there a wave breaks and the shader makes foam. The foam left behind fades as e^(−t/τ), τ = 2.5 s, drawn out along the wind.',
+      es: 'Un temporal, 20 m/s. La agudeza de crestas desplaza los puntos de lado hacia las crestas, que se afilan mientras los senos se ensanchan. Donde el desplazamiento lateral pliega la superficie, el jacobiano de la transformación horizontal, o su menor autovalor, baja hacia cero: ahí rompe una ola y el shader pone espuma. La espuma que queda se desvanece como e^(−t/τ), τ = 2,5 s, estirada por el viento.',
     },
     math: m('<mi>J</mi><mo>=</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>D</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>)</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>D</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub><mo>)</mo><mo>−</mo><msubsup><mi>D</mi><mrow><mi>x</mi><mi>z</mi></mrow><mn>2</mn></msubsup>'),
   },

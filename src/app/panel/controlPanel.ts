@@ -13,12 +13,12 @@ import type { SeaTools } from '../tools/seaTools';
 const FOLDERS: { title: PanelWordId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
   // The wind sea that both waves=fft and waves=gerstner draw from.
-  { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel', 'choppiness', 'fftSize', 'foam', 'foamThreshold'] },
+  { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel', 'choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'foamTexture'] },
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderGerstner', keys: ['gerstnerCount', 'gerstnerSteepness'] },
   { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },
   { title: 'folderPhysics', keys: ['physics'] },
-  { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
+  { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'subsurface'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide', 'interactiveWaves', 'iwaveEquation', 'iwaveGuide'] },
   { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
   { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'lodMorph', 'freezeCulling', 'lodBruteForce'] },

@@ -9,13 +9,14 @@ import { createWaveModelView } from '../waves/waveViewRegistry';
 import type { WaveModelView } from '../waves/waveModelView';
 import type { WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
 import type { WakeUniforms } from '../wake/wakeUniforms';
+import type { FoamUniforms } from '../foam/foamUniforms';
 
 /** What every ocean material of one view shares: Fresnel tables, sky, water volume, sun colour. */
 export interface OceanMaterialInputs {
   fresnelTables: { fromAbove: Texture; fromBelow: Texture };
   sky: CubeTexture;
   /** Uniforms every ocean material shares: the water volume, the boat's wake (each material compiles it in while it has a track), the sun's colour. */
-  shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>;
+  shared: WaterVolumeUniforms & WakeUniforms & FoamUniforms & Record<'uSunColor', IUniform>;
 }
 
 /**

@@ -14,7 +14,7 @@ import { SeaBed } from '../underwater/seaBed';
 import { lightWithCaustics } from '../underwater/hullCaustics';
 import { fresnelTexture } from '../optics/dataTextures';
 import { WaveBinding } from '../waves/waveBinding';
-import { createWaveModelView, loadWaveModels, modelsMissing } from '../waves/waveViewRegistry';
+import { createWaveModelView, loadWaveModels, modelsDrawn, modelsMissing } from '../waves/waveViewRegistry';
 import type { WaveModelView } from '../waves/waveModelView';
 import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
 import { SkySource } from '../sky/skySource';
@@ -28,6 +28,8 @@ import type { Stone } from '../../sim/iwave/iwaveGrid';
 import { message, MessageError, type Message } from '../../sim/params/message';
 import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
+import { createFoamUniforms, setFoamWind } from '../foam/foamUniforms';
+import type { FoamDetail } from '../foam/foamDetail';
 
 export interface OceanOptions {
   /** A cube map of your own for the sea to reflect; by default the sky is painted from the sun parameters. */
@@ -35,7 +37,7 @@ export interface OceanOptions {
 }
 
 /** The parameters an ocean material shows (every model's material of a comparison alike). */
-const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors'];
+const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface'];
 
 /**
  * The ocean as a three.js object: add it to your scene, call `update(time, camera)` before
@@ -61,6 +63,8 @@ export class Ocean extends Object3D {
   readonly wakeUniforms = createWakeUniforms();
   /** The interactive waves' field and grid, for the ocean's shaders (read only while interactiveWaves is on). */
   readonly interactiveWaveUniforms = createInteractiveWaveUniforms();
+  /** The foam material's detail texture and the wind its streaks follow, for every ocean material of the view. */
+  readonly foamUniforms = createFoamUniforms();
   /** What a compared model's ocean material shares with this one's. */
   readonly materialInputs: OceanMaterialInputs;
   readonly binding: WaveBinding;
@@ -87,6 +91,8 @@ export class Ocean extends Object3D {
   private boat: BoatInField | null = null;
   /** Stones recorded while the interactive waves' code is on its way. */
   private stonesDue: Stone[] = [];
+  private foamDetail: FoamDetail | null = null;
+  private foamDetailLoad: Promise<void> | null = null;
 
   /** `params`: any subset of the parameters (src/sim/params/params.ts), validated as the URL and the GUI validate them. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, options: OceanOptions = {}) {
@@ -108,7 +114,7 @@ export class Ocean extends Object3D {
     this.materialInputs = {
       fresnelTables: this.fresnelTextures,
       sky: this.skySource.texture,
-      shared: { ...this.waterVolume, ...this.wakeUniforms, ...this.interactiveWaveUniforms, uSunColor: this.lightUniforms.uSunColor },
+      shared: { ...this.waterVolume, ...this.wakeUniforms, ...this.interactiveWaveUniforms, ...this.foamUniforms, uSunColor: this.lightUniforms.uSunColor },
     };
     this.material = new OceanMaterial(this.binding, this.fresnelTextures, this.skySource.texture, this.materialInputs.shared);
     this.chunks = new OceanChunks(this.material);
@@ -178,6 +184,8 @@ export class Ocean extends Object3D {
       if (this.params !== params) return;
       this.apply(params);
       this.visible = true;
+      // The foam's detail texture, asked for by the model that just arrived, is part of being ready.
+      return this.foamDetail ? undefined : (this.foamDetailLoad ?? undefined);
     });
   }
 
@@ -214,6 +222,8 @@ export class Ocean extends Object3D {
     if (changed('interactiveWaves')) this.setInteractiveWaves(params.interactiveWaves);
     this.interactive?.setEquation(params.iwaveEquation);
     this.interactive?.setGuide(params.iwaveGuide);
+    if (changed('windDirection')) setFoamWind(this.foamUniforms, params.windDirection);
+    this.setFoamTexture(params.foamTexture && ((params.foam && modelsDrawn(params).includes('fft')) || params.wake));
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
       this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
@@ -285,6 +295,25 @@ export class Ocean extends Object3D {
       this.interactive = null;
     }
     this.material.setInteractiveWavesOn(on && this.interactive !== null);
+  }
+
+  /**
+   * Foam drawn as foam needs its detail texture, whose code is fetched the first time a view
+   * draws foam (the spectral sea's whitecaps, the boat's wake); `ready` then settles once it is
+   * drawn. Off, or with no foam in view, the foam is flat paint (OceanMaterial compiles the
+   * material out while the texture is null).
+   */
+  private setFoamTexture(on: boolean): void {
+    if (on && !this.foamDetail) {
+      this.foamDetailLoad ??= import('../foam/foamDetail').then(({ FoamDetail }) => {
+        if (this.disposed) return;
+        this.foamDetail = new FoamDetail(this.renderer);
+        this.setFoamTexture(this.params.foamTexture && ((this.params.foam && modelsDrawn(this.params).includes('fft')) || this.params.wake));
+      });
+      this.ready = Promise.all([this.ready, this.foamDetailLoad]).then(() => undefined);
+      return;
+    }
+    this.foamUniforms.uFoamDetail.value = on && this.foamDetail ? this.foamDetail.texture : null;
   }
 
   /**
@@ -391,6 +420,7 @@ export class Ocean extends Object3D {
     this.chunks.forgetSelection();
     this.waveView.contextRestored?.();
     this.interactive?.contextRestored();
+    this.foamDetail?.draw(this.renderer);
     this.skySource.contextRestored(this.renderer, sunDirection(this.params.sunElevation, this.params.sunAzimuth));
   }
 
@@ -403,6 +433,7 @@ export class Ocean extends Object3D {
     this.seaBed.dispose();
     this.waveView.dispose();
     this.interactive?.dispose();
+    this.foamDetail?.dispose();
     this.fresnelTextures.fromAbove.dispose();
     this.fresnelTextures.fromBelow.dispose();
     this.skySource.dispose();
@@ -435,4 +466,5 @@ export function applyLook(material: OceanMaterial, params: OceanParams): void {
   material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
   material.setNormalsCompare(params.normalsCompare);
   material.setLodColors(params.lodColors);
+  material.setSubsurface(params.subsurface);
 }

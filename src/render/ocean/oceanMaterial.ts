@@ -10,6 +10,7 @@ import { markOceanoMaterial } from '../underwater/sceneEncoding';
 import type { WaveBinding } from '../waves/waveBinding';
 import type { WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
 import type { WakeUniforms } from '../wake/wakeUniforms';
+import type { FoamUniforms } from '../foam/foamUniforms';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from '../sky/skyCubeUniforms';
 import { setMaterialDefine } from '../shaders/materialDefines';
 
@@ -33,7 +34,7 @@ export class OceanMaterial extends ShaderMaterial {
     private readonly waves: WaveBinding,
     fresnelTables: { fromAbove: Texture; fromBelow: Texture },
     sky: CubeTexture,
-    shared: WaterVolumeUniforms & WakeUniforms & Record<'uSunColor', IUniform>,
+    shared: WaterVolumeUniforms & WakeUniforms & FoamUniforms & Record<'uSunColor', IUniform>,
     main: OceanMaterial | null = null,
   ) {
     super({
@@ -60,6 +61,7 @@ export class OceanMaterial extends ShaderMaterial {
         uLodCamera: { value: new Vector3() },
         uLodHeight: { value: 0 },
         uMorphZones: { value: morphZones(1, 1, false) },
+        uCrestHeight: { value: 1 },
       },
     });
     this.main = main;
@@ -104,6 +106,11 @@ export class OceanMaterial extends ShaderMaterial {
   override onBeforeRender(renderer: unknown, _scene: unknown, camera: Camera): void {
     this.followWake();
     this.followWaterOptics();
+    // A sixth of the model's largest height: about one standard deviation of height (the spectral
+    // bounds are 6.6–7σ, src/sim/waves/spectra/spectralBounds.ts), for the subsurface glow.
+    this.uniforms.uCrestHeight.value = Math.max(this.waves.model.model.bounds().vertical / 6, 0.01);
+    // Foam as foam once its detail texture is there (shaders/foam/foamMaterial.glsl), paint until then.
+    setMaterialDefine(this, 'OCEAN_FOAM_TEXTURE', this.uniforms.uFoamDetail.value !== null);
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
     const [x, z] = (this.main ?? this).originFor(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
@@ -157,6 +164,11 @@ export class OceanMaterial extends ShaderMaterial {
   setTeachingViews(flatNormals: boolean, showNormals: boolean): void {
     this.uniforms.uFlatNormals.value = flatNormals;
     this.setDefine('OCEAN_SHOW_NORMALS', showNormals);
+  }
+
+  /** Thin sunlit crests glowing (shaders/subsurface.glsl), compiled in while on. */
+  setSubsurface(enabled: boolean): void {
+    this.setDefine('OCEAN_SUBSURFACE', enabled);
   }
 
   /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */

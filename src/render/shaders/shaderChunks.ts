@@ -5,6 +5,8 @@ import waterline from '../../../shaders/waterline.glsl?raw';
 import wake from '../../../shaders/wake.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
+import foamMaterial from '../../../shaders/foam/foamMaterial.glsl?raw';
+import subsurface from '../../../shaders/subsurface.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 import { SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
 
@@ -33,6 +35,10 @@ const CHUNKS: Readonly<Record<string, string>> = {
   // on, hands the ocean's binding the real text (src/render/iwave/iwaveChunk.ts); until then
   // OCEAN_IWAVE is never defined, so nothing reads it.
   oceano_iwave: '',
+  // Foam as foam: the whitecaps' and the wake's (ocean.frag, OCEAN_FOAM_TEXTURE).
+  oceano_foam: foamMaterial,
+  // Thin sunlit crests glowing (ocean.frag, OCEAN_SUBSURFACE).
+  oceano_subsurface: subsurface,
   // The underwater passes' scene target, written after three's colour-space chunk (read back by
   // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,

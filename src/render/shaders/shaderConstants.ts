@@ -2,6 +2,7 @@ import { WATER_IOR } from '../../sim/optics/fresnel';
 import { SUN_IRRADIANCE } from '../../sim/optics/sun';
 import { SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/sunDisc';
 import { bodyColor } from '../../sim/optics/waterColor';
+import { crestScattering, PARTICLE_MEAN_COSINE } from '../../sim/optics/subsurfaceGlow';
 import { BLUR_MAX_TAPS } from '../underwater/blurLimits';
 import { BAND_STEPS, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
 import { GOD_RAY_RANGE } from '../underwater/godRayRange';
@@ -35,6 +36,8 @@ export function shaderConstantsChunk(): string {
     `#define SUN_IRRADIANCE ${glslFloat(SUN_IRRADIANCE)}`,
     `#define SUN_DISC_SLOPE_VARIANCE ${glslFloat(SUN_DISC_SLOPE_VARIANCE)}`,
     `#define WATER_BODY_REFLECTANCE ${glslVec3(bodyColor())}`,
+    `#define SUBSURFACE_SCATTER ${glslVec3(crestScattering())}`,
+    `#define PARTICLE_MEAN_COSINE ${glslFloat(PARTICLE_MEAN_COSINE)}`,
     `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
     `#define LOD_BAND_COUNT ${MAX_LOD_BANDS}`,
     `#define LOD_BAND_STEPS int[${BAND_STEPS.length}](${BAND_STEPS.join(', ')})`,

@@ -1,5 +1,6 @@
 import { message, type Message } from './message';
 import { COMPARE_OFF, compareOrderings } from '../compare/compareLayout';
+import { FOAM_FADE_SECONDS } from '../waves/fft/whitecaps';
 
 /** The wave models, in the order the `waves` parameter lists them (src/render/waves/waveViewRegistry.ts). */
 const WAVE_MODEL_NAMES = ['seed', 'fft', 'gerstner'] as const;
@@ -63,6 +64,12 @@ export const paramDefs = {
   foam: { kind: 'boolean', default: true, label: 'Foam' },
   // Added to the Jacobian threshold that gives Monahan's whitecap coverage for the wind (src/sim/waves/fft/whitecaps.ts).
   foamThreshold: { kind: 'number', default: 0, min: -0.5, max: 0.5, step: 0.01, unit: '', label: 'Foam threshold bias (Jacobian)' },
+  // e-folding time of the foam left behind (Callaghan et al. 2012: 0.5–8 s; src/sim/waves/fft/foamMemory.ts).
+  foamFade: { kind: 'number', default: FOAM_FADE_SECONDS, min: 0.5, max: 8, step: 0.1, unit: 's', label: 'Foam decay τ' },
+  // Foam drawn as foam (bubbles, feathered edges, streaks, lit with its own normal) or as flat white paint, for the lesson.
+  foamTexture: { kind: 'boolean', default: true, label: 'Foam texture' },
+  // Thin sunlit crests glowing green when the sun is behind them (shaders/subsurface.glsl).
+  subsurface: { kind: 'boolean', default: true, label: 'Subsurface glow' },
   seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },
   swellAmplitude: { kind: 'number', default: 1.4, min: 0, max: 4, step: 0.05, unit: 'm', label: 'Swell amplitude' },
   swellFrequency: { kind: 'number', default: 0.05, min: 0.005, max: 0.2, step: 0.001, unit: 'rad/m', label: 'Swell frequency' },

@@ -8,8 +8,8 @@ import { whitecapCoverage } from '../../../src/sim/waves/fft/whitecaps';
 /**
  * Foam seen from 150 m above (the sun 30° high, its glint outside the frame) covers what
  * Monahan & O'Muircheartaigh measured, W = 3.84·10⁻⁶ U^3.41 (1.0 %, 3.9 %, 10.5 % at 10,
- * 15, 20 m/s), within ±30 %: the share of near-white pixels in the picture, not the share of
- * the Jacobian below its threshold.
+ * 15, 20 m/s), within ±30 %: the share of near-white pixels in the picture, averaged over
+ * four instants, not the share of the Jacobian below its threshold.
  */
 const harness = useHarness();
 const TOLERANCE = 0.3;
@@ -19,21 +19,25 @@ async function coverageRatios(fixed: boolean): Promise<number[]> {
   for (const wind of [10, 15, 20]) {
     const { page } = await openOcean(harness, foamQuery(wind), FOAM_VIEW.width, FOAM_VIEW.height);
     if (!fixed) await page.evaluate(() => window.oceano.debug.setShadingFixes({ foamCoverage: false }));
-    await page.evaluate((t) => {
-      window.oceano.pause();
-      window.oceano.setTime(t);
-    }, FOAM_VIEW.t);
-    ratios.push(whiteShare(await canvasPng(page)) / whitecapCoverage(wind));
+    let white = 0;
+    for (const t of FOAM_VIEW.times) {
+      await page.evaluate((time) => {
+        window.oceano.pause();
+        window.oceano.setTime(time);
+      }, t);
+      white += whiteShare(await canvasPng(page)) / FOAM_VIEW.times.length;
+    }
+    ratios.push(white / whitecapCoverage(wind));
     await page.close();
   }
   return ratios;
 }
 
 describe('foam from above follows Monahan', () => {
-  it('near-white share within ±30 % of W at 10, 15 and 20 m/s; control: the blotchy foam kept by two cascades is twice W in a gale', { timeout: 240_000 }, async () => {
+  it('near-white share within ±30 % of W at 10, 15 and 20 m/s; control: the foam left behind drawn solid white is 1.5–2.3 W', { timeout: 240_000 }, async () => {
     const ratios = await coverageRatios(true);
     for (const ratio of ratios) expect(Math.abs(ratio - 1), ratios.map((r) => r.toFixed(2)).join(', ')).toBeLessThan(TOLERANCE);
     const control = await coverageRatios(false);
-    expect(control[2]).toBeGreaterThan(1 + TOLERANCE);
+    expect(Math.min(...control), control.map((r) => r.toFixed(2)).join(', ')).toBeGreaterThan(1 + TOLERANCE);
   });
 });

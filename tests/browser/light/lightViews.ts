@@ -33,9 +33,36 @@ export function horizonQuery(windSpeed: number): string {
   return `waves=fft&windSpeed=${windSpeed}&t=${HORIZON_VIEW.t}&cam=0,10,0,0,10,-1000`;
 }
 
-/** Foam seen from 150 m straight above, the sun 30° high: its glint lies 60° off the nadir, outside the 55° frame. */
-export const FOAM_VIEW = { width: 480, height: 270, t: 10 } as const;
+/**
+ * Foam seen from 150 m straight above, the sun 30° high: its glint lies 60° off the nadir,
+ * outside the 55° frame. Four instants 30 s apart: in a gale the frame holds only a few of the
+ * whitecaps' groups (foamBreakup.ts), and one instant's white share scatters by ±30 %.
+ */
+export const FOAM_VIEW = { width: 480, height: 270, t: 10, times: [10, 40, 70, 100] } as const;
 
 export function foamQuery(windSpeed: number): string {
   return `waves=fft&windSpeed=${windSpeed}&sunElevation=30&t=${FOAM_VIEW.t}&cam=0,150,0,0,0,-0.01`;
+}
+
+/** The sea seen from 400 m straight above, for the foam's repeat: 640 × 360 px, 1.16 m a pixel; four instants 30 s apart. */
+export const TILING_VIEW = { width: 640, height: 360, altitude: 400, times: [10, 40, 70, 100] } as const;
+
+export function tilingQuery(windSpeed: number): string {
+  return `waves=fft&windSpeed=${windSpeed}&sunElevation=30&t=${TILING_VIEW.times[0]}&cam=0,${TILING_VIEW.altitude},0,0,0,-0.01`;
+}
+
+/** Metres per pixel of TILING_VIEW: looking straight down, the sea plane is parallel to the picture, so the scale is the same everywhere. */
+export function tilingMetresPerPixel(): number {
+  return (2 * TILING_VIEW.altitude * Math.tan((27.5 * Math.PI) / 180)) / TILING_VIEW.height;
+}
+
+/**
+ * Crests seen against a low sun: the eye 6 m above a 15 m/s sea, looking 2° down towards the
+ * sun's azimuth less 12° (the glint off to one side), the sun 5° high, foam off.
+ */
+export const GLOW_VIEW = { width: 480, height: 270, t: 10, eye: [0, 6, 0], target: [0, 4, -100] } as const;
+
+export function glowQuery(subsurface: boolean): string {
+  const cam = [...GLOW_VIEW.eye, ...GLOW_VIEW.target].join(',');
+  return `waves=fft&windSpeed=15&sunElevation=5&sunAzimuth=12&foam=false&subsurface=${subsurface}&t=${GLOW_VIEW.t}&cam=${cam}`;
 }

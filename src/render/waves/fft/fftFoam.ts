@@ -1,13 +1,18 @@
-import { FloatType, GLSL3, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, Vector3, WebGLRenderTarget, type Texture } from 'three';
+import { FloatType, GLSL3, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, WebGLRenderTarget, type Texture } from 'three';
 import quadVertex from '../../../../shaders/fftQuad.vert?raw';
-import foamFragment from '../../../../shaders/fftFoam.frag?raw';
+import packFragment from '../../../../shaders/fftFoam.frag?raw';
+import memoryFragment from '../../../../shaders/fftFoamMemory.frag?raw';
+import breakingChunk from '../../../../shaders/waves/fftBreaking.glsl?raw';
+import { resolveChunks } from '../../shaders/shaderChunks';
+import { glslFloat } from '../../shaders/shaderConstants';
+import { FOAM_POTENTIAL_MAX, FOAM_POTENTIAL_VISIBLE } from '../../../sim/waves/fft/foamMemory';
 import type { GpuFftOcean } from './gpuFft';
 
-/** One texture per cascade (MRT). `filtered`: LINEAR, for the ocean's pixels' filtered reads (shaders/waves/fft.glsl). */
-function foamTarget(n: number, cascades: number, filtered: boolean): WebGLRenderTarget {
+/** `count` float textures of n × n (MRT); `filtered`: LINEAR, for the ocean's pixels' filtered reads (shaders/waves/fft.glsl). */
+function foamTarget(n: number, count: number, filtered: boolean): WebGLRenderTarget {
   const filter = filtered ? LinearFilter : NearestFilter;
   return new WebGLRenderTarget(n, n, {
-    count: cascades,
+    count,
     type: FloatType,
     format: RGBAFormat,
     minFilter: filter,
@@ -20,72 +25,84 @@ function foamTarget(n: number, cascades: number, filtered: boolean): WebGLRender
   });
 }
 
+function passMaterial(name: string, fragmentShader: string, uniforms: RawShaderMaterial['uniforms']): RawShaderMaterial {
+  return new RawShaderMaterial({ name, glslVersion: GLSL3, vertexShader: quadVertex, fragmentShader, uniforms, depthTest: false, depthWrite: false });
+}
+
+/** The cascade whose tile remembers foam: the smallest, whose texels are finer than a whitecap. */
+export const REMEMBERING_CASCADE = 2;
+
 /**
- * Per cascade, foam accumulated in the texel grid of its FFT tile (two targets of one texture
- * per cascade, ping-pong; one draw steps every cascade):
- * each step keeps the larger of the old foam faded by e^{−Δt/τ} and the foam where this
- * cascade's Jacobian is below its threshold now (shaders/fftFoam.frag). Each cascade has its
- * own threshold, from its own Jacobian spread (src/sim/waves/fft/whitecaps.ts foamThresholdForSpread):
- * one band alone folds less often than the whole sea does.
+ * The foam passes of the spectral sea:
+ * - remember: one step of the lattice of simulation times (src/sim/waves/fft/foamMemory.ts) on
+ *   the smallest cascade's fields, which the caller has just evolved to that lattice time
+ *   (shaders/fftFoamMemory.frag), ping-ponged between two targets;
+ * - pack: every frame, what the ocean's pixels read besides the derivatives, per cascade in one
+ *   texture of its tile's texel grid (shaders/fftFoam.frag): the remembered foam faded to now,
+ *   and ∂Dx/∂x (one draw, three colour attachments).
  */
 export class FftFoam {
-  private readonly pair: [WebGLRenderTarget, WebGLRenderTarget];
-  private readonly material: RawShaderMaterial;
+  private readonly memory: [WebGLRenderTarget, WebGLRenderTarget];
+  private readonly packed: WebGLRenderTarget;
+  private readonly memoryMaterial: RawShaderMaterial;
+  private readonly packMaterial: RawShaderMaterial;
   private current = 0;
 
   constructor(private readonly gpu: GpuFftOcean) {
     const n = gpu.fft.n;
-    if (gpu.targets.length !== 3) throw new RangeError(`shaders/fftFoam.frag steps 3 cascades, the sea has ${gpu.targets.length}.`);
-    this.pair = [foamTarget(n, 3, gpu.filtered), foamTarget(n, 3, gpu.filtered)];
-    this.material = new RawShaderMaterial({
-      name: 'FftFoam',
-      glslVersion: GLSL3,
-      vertexShader: quadVertex,
-      fragmentShader: foamFragment,
-      uniforms: {
-        uDisplacement0: { value: gpu.displacement[0] },
-        uDisplacement1: { value: gpu.displacement[1] },
-        uDisplacement2: { value: gpu.displacement[2] },
-        uDerivatives0: { value: gpu.derivatives[0] },
-        uDerivatives1: { value: gpu.derivatives[1] },
-        uDerivatives2: { value: gpu.derivatives[2] },
-        uPrevious0: { value: null },
-        uPrevious1: { value: null },
-        uPrevious2: { value: null },
-        uDecay: { value: 0 },
-        uThreshold: { value: new Vector3() },
-        uSoftness: { value: new Vector3(0.01, 0.01, 0.01) },
-      },
-      depthTest: false,
-      depthWrite: false,
+    if (gpu.targets.length !== 3) throw new RangeError(`shaders/fftFoam.frag packs 3 cascades, the sea has ${gpu.targets.length}.`);
+    this.memory = [foamTarget(n, 1, false), foamTarget(n, 1, false)];
+    this.packed = foamTarget(n, 3, gpu.filtered);
+    const constants = `#define FOAM_POTENTIAL_MAX ${glslFloat(FOAM_POTENTIAL_MAX)}\n#define FOAM_POTENTIAL_VISIBLE ${glslFloat(FOAM_POTENTIAL_VISIBLE)}\n`;
+    this.memoryMaterial = passMaterial('FftFoamMemory', constants + resolveChunks(memoryFragment, { oceano_fft_breaking: breakingChunk }), {
+      uDisplacement: { value: gpu.displacement[REMEMBERING_CASCADE] },
+      uDerivatives: { value: gpu.derivatives[REMEMBERING_CASCADE] },
+      uPrevious: { value: null },
+      uDecay: { value: 0 },
+      uThreshold: { value: 0 },
+      uSoftness: { value: 1 },
+    });
+    this.packMaterial = passMaterial('FftFoamPack', packFragment, {
+      uDisplacement0: { value: gpu.displacement[0] },
+      uDisplacement1: { value: gpu.displacement[1] },
+      uDisplacement2: { value: gpu.displacement[2] },
+      uMemory: { value: null },
+      uFade: { value: 0 },
     });
   }
 
-  /** The foam now, one texture per cascade (r channel). */
+  /** What the pixels read, one texture per cascade: (remembered foam now, 0, ∂Dx/∂x, 1). */
   get textures(): Texture[] {
-    return this.pair[this.current].textures.slice();
+    return this.packed.textures.slice();
   }
 
   /**
-   * One step on the GPU's current fields; decay = e^{−Δt/τ} (0 forgets all earlier foam).
-   * Per cascade its own Jacobian threshold and the half-width of the soft edge around it.
+   * One lattice step: decay = e^{−Δ/τ} (0 starts from nothing); the smallest cascade's
+   * breaking threshold and the potential's unit. `keep`: false draws the step without making it
+   * the memory (a timing of the pass that leaves the foam as it was).
    */
-  step(decay: number, thresholds: readonly number[], softness: readonly number[]): void {
+  remember(decay: number, threshold: number, softness: number, keep = true): void {
     const next = 1 - this.current;
-    const u = this.material.uniforms;
+    const u = this.memoryMaterial.uniforms;
     u.uDecay.value = decay;
-    (u.uThreshold.value as Vector3).set(thresholds[0], thresholds[1], thresholds[2]);
-    (u.uSoftness.value as Vector3).set(softness[0], softness[1], softness[2]);
-    const previous = this.pair[this.current].textures;
-    u.uPrevious0.value = previous[0];
-    u.uPrevious1.value = previous[1];
-    u.uPrevious2.value = previous[2];
-    this.gpu.fft.draw(this.material, this.pair[next]);
-    this.current = next;
+    u.uThreshold.value = threshold;
+    u.uSoftness.value = softness;
+    u.uPrevious.value = this.memory[this.current].texture;
+    this.gpu.fft.draw(this.memoryMaterial, this.memory[next]);
+    if (keep) this.current = next;
+  }
+
+  /** Packs the current fields with the memory faded by `fade` (0: no remembered foam). */
+  pack(fade: number): void {
+    this.packMaterial.uniforms.uMemory.value = this.memory[this.current].texture;
+    this.packMaterial.uniforms.uFade.value = fade;
+    this.gpu.fft.draw(this.packMaterial, this.packed);
   }
 
   dispose(): void {
-    this.material.dispose();
-    for (const t of this.pair) t.dispose();
+    this.memoryMaterial.dispose();
+    this.packMaterial.dispose();
+    for (const t of this.memory) t.dispose();
+    this.packed.dispose();
   }
 }

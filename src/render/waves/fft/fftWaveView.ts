@@ -1,33 +1,36 @@
-import { Vector2, Vector3, type IUniform, type Texture, type WebGLRenderer } from 'three';
+import { Vector2, Vector3, Vector4, type IUniform, type Texture, type WebGLRenderer } from 'three';
 import fftChunk from '../../../../shaders/waves/fft.glsl?raw';
+import breakingChunk from '../../../../shaders/waves/fftBreaking.glsl?raw';
+import breakupChunk from '../../../../shaders/foam/foamBreakup.glsl?raw';
 import type { OceanParams } from '../../../sim/params/params';
 import type { FftWaveModel } from '../../../sim/waves/fft/fftWaveModel';
 import { cascadeSpread } from '../../../sim/waves/spectra/spectralBounds';
-import { foamJacobianThreshold, foamRemaining, foamThresholdForSpread, JACOBIAN_SPREAD } from '../../../sim/waves/fft/whitecaps';
+import { foamRemaining, whitecapCoverage } from '../../../sim/waves/fft/whitecaps';
+import { breakingSpread, breakingThreshold, jacobianCovariance } from '../../../sim/waves/fft/breaking';
+import { BREAKUP_STREAM, BREAKUP_STRENGTH, breakupLattice, breakupNoise, foamBreakup, type FoamBreakup } from '../../../sim/waves/fft/foamBreakup';
+import { FOAM_STEP_SECONDS, foamSteps } from '../../../sim/waves/fft/foamMemory';
+import { seededRandom } from '../../../sim/noise/integerHash';
 import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
 import { cascadeWavelengths } from '../../../sim/optics/resolvedSlopes';
 import { tileOriginTexels } from '../../../sim/waves/originPhases';
-import { FftFoam } from './fftFoam';
+import { FftFoam, REMEMBERING_CASCADE } from './fftFoam';
 import { GpuFftOcean } from './gpuFft';
 import { WorkerFieldSource } from './fftFieldsSource';
 import type { HeightmapLayout, WaveModelView } from '../waveModelView';
 import type { PassTiming } from '../../diagnostics/passTiming';
 
-/** Steps longer than this (a seek, a paused jump) rebuild the foam from a short warm-up instead. */
-const FOAM_MAX_STEP = 0.25;
-/** The warm-up: foam at t is built from the sea at t − 3 s, t − 2.4 s, …, t, so a frozen t always draws the same foam. */
-const FOAM_WARMUP_STEPS = 5;
-const FOAM_WARMUP_DT = 0.6;
 /**
- * Half-width of the foam's soft edge around a Jacobian threshold, as a share of J's spread:
- * foam goes from none to full over ±¼σ, a crisp edge that the texels still resolve.
+ * Half-width of the foam's soft edge around a breaking threshold, as a share of the breaking
+ * measure's spread: foam goes from none to full over ±¼σ, a crisp edge that the texels still resolve.
  */
 const FOAM_EDGE = 0.25;
 /**
- * Share of Monahan's coverage each remembering cascade starts as fresh foam: the rest of the
- * white is the whole sea's folds now and the foam left behind while it fades.
+ * Share of Monahan's coverage that breaks now, on the whole sea (the active layer); the rest
+ * of the white is the foam left behind while it fades (the remembered layer).
  */
-const CASCADE_FOAM_SHARE = 1 / 3;
+const ACTIVE_FOAM_SHARE = 0.9;
+/** Share of Monahan's coverage the remembering cascade marks as fresh foam at each lattice time, against its own band's statistics. */
+const REMEMBERED_FOAM_SHARE = 1 / 6;
 /** Step of the fabricated-neighbour normal in the comparison view, m (the finest LOD band's grid step). */
 const FABRICATED_DELTA = 1;
 
@@ -36,7 +39,8 @@ type FftUniforms = Record<
   | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
   | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
   | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta'
-  | 'uFftSlopeVariance' | 'uFftShortestWave' | 'uFftLongestWave' | 'uSeaSlopeVariance',
+  | 'uFftSlopeVariance' | 'uFftShortestWave' | 'uFftLongestWave' | 'uSeaSlopeVariance'
+  | 'uFoamBreakupScale' | 'uFoamBreakupCells' | 'uFoamBreakupOffset' | 'uFoamBreakupOrigin' | 'uFoamBreakupSeed' | 'uFoamBreakupStrength',
   IUniform
 >;
 
@@ -58,10 +62,16 @@ export class FftWaveView implements WaveModelView {
   private time = Number.NaN;
   private origin: [number, number] = [0, 0];
   private foamEnabled = true;
-  private foamThreshold = 0.7;
-  /** Per cascade: its Jacobian threshold and soft edge (each band folds less often than the sea). */
-  private cascadeThresholds: number[] = [];
-  private cascadeSoftness: number[] = [];
+  /** e-folding time of the remembered foam, s. */
+  private foamFade = 2.5;
+  /** The remembering cascade's breaking threshold (bias included) and the unit of its potential. */
+  private memoryThreshold = 0;
+  private memorySoftness = 1;
+  /** The last lattice index the memory was stepped to; null: start from nothing at the next update. */
+  private foamDone: number | null = null;
+  /** Thresholds before the user's bias, from the sea's statistics: recomputed only when the sea is rebuilt. */
+  private baseThresholds: { active: number; activeSoftness: number; memory: number; memorySoftness: number } | null = null;
+  private breakup: FoamBreakup;
   /** The heightmap view's grey scale: each shown cascade's height at 3σ is white. */
   heightmapLayout: HeightmapLayout = { channel: 1, range: [1, 1] };
 
@@ -72,7 +82,8 @@ export class FftWaveView implements WaveModelView {
     // Float textures filterable: the ocean's pixels read normals and foam through the texture
     // unit's bilinear filter (see shaders/waves/fft.glsl); otherwise by hand, as the vertices.
     this.filtered = renderer.extensions.has('OES_texture_float_linear');
-    this.chunk = (this.filtered ? '#define FFT_FILTERED_FIELDS\n' : '') + fftChunk;
+    this.chunk = (this.filtered ? '#define FFT_FILTERED_FIELDS\n' : '') + [breakingChunk, breakupChunk, fftChunk].join('\n');
+    this.breakup = foamBreakup(model.ocean.setup.sea);
     this.uniforms = {
       uFftDisplacement0: { value: null },
       uFftDisplacement1: { value: null },
@@ -87,8 +98,14 @@ export class FftWaveView implements WaveModelView {
       uFftNearOffset: { value: [new Vector2(), new Vector2(), new Vector2()] },
       uFftN: { value: 1 },
       uFoamEnabled: { value: 1 },
-      uFoamThreshold: { value: this.foamThreshold },
+      uFoamThreshold: { value: 0.7 },
       uFoamSoftness: { value: 0.03 },
+      uFoamBreakupScale: { value: 1 },
+      uFoamBreakupCells: { value: new Vector4() },
+      uFoamBreakupOffset: { value: new Vector4() },
+      uFoamBreakupOrigin: { value: new Vector2() },
+      uFoamBreakupSeed: { value: 0 },
+      uFoamBreakupStrength: { value: 0 },
       uFabricatedDelta: { value: FABRICATED_DELTA },
       uFftSlopeVariance: { value: new Vector3() },
       uFftShortestWave: { value: new Vector3(1, 1, 1) },
@@ -139,6 +156,16 @@ export class FftWaveView implements WaveModelView {
     if (x === this.origin[0] && z === this.origin[1]) return;
     this.origin = [x, z];
     this.placeNearOffsets();
+    this.placeBreakup();
+  }
+
+  /** Where the render origin and the world's origin fall on the breakup field's drifting lattice at this time. */
+  private placeBreakup(): void {
+    const time = Number.isNaN(this.time) ? 0 : this.time;
+    const lattice = breakupLattice(this.breakup, this.origin[0], this.origin[1], time);
+    (this.uniforms.uFoamBreakupCells.value as Vector4).fromArray(lattice.cells);
+    (this.uniforms.uFoamBreakupOffset.value as Vector4).fromArray(lattice.offset);
+    (this.uniforms.uFoamBreakupOrigin.value as Vector2).fromArray(this.origin);
   }
 
   /** Where the render origin falls in each cascade's tile, in texels (src/sim/waves/originPhases.ts). */
@@ -153,24 +180,32 @@ export class FftWaveView implements WaveModelView {
   }
 
   setParams(params: OceanParams): void {
-    // Foam switched on starts from the warm-up (the picture of a frozen t does not depend on
-    // whether foam was off before), see update.
+    // Foam switched on starts from nothing at the next update (the picture of a frozen t does
+    // not depend on whether foam was off before), see update.
     const foamToggled = params.foam !== this.foamEnabled;
+    const fadeChanged = params.foamFade !== this.foamFade;
     this.foamEnabled = params.foam;
-    this.foamThreshold = foamJacobianThreshold(params.windSpeed, params.choppiness, params.foamThreshold);
+    this.foamFade = params.foamFade;
     this.uniforms.uFoamEnabled.value = params.foam ? 1 : 0;
-    this.uniforms.uFoamThreshold.value = this.foamThreshold;
-    this.uniforms.uFoamSoftness.value = FOAM_EDGE * JACOBIAN_SPREAD * params.choppiness;
     const rebuilt = this.model.setParams(params);
     const { sea, tiles } = this.model.ocean.setup;
     const cascadeSpreads = tiles.map((tile) => cascadeSpread(tile, sea.depth));
-    const spreads = cascadeSpreads.map((spread) => sea.choppiness * spread.slope);
     this.setSlopeStatistics(cascadeSpreads.map((spread) => spread.slope * spread.slope), params.windSpeed);
     this.heightmapLayout = { channel: 1, range: [3 * cascadeSpreads[0].height, 3 * cascadeSpreads[cascadeSpreads.length - 1].height] };
-    const thresholds = spreads.map((spread) => foamThresholdForSpread(spread, params.windSpeed, params.foamThreshold, CASCADE_FOAM_SHARE));
-    const changed = thresholds.some((t, c) => t !== this.cascadeThresholds[c]);
-    this.cascadeThresholds = thresholds;
-    this.cascadeSoftness = spreads.map((spread) => FOAM_EDGE * spread);
+    if (rebuilt || !this.baseThresholds) {
+      this.breakup = foamBreakup(sea);
+      this.baseThresholds = this.foamThresholds();
+      this.uniforms.uFoamBreakupScale.value = 1 / this.breakup.cell;
+      this.uniforms.uFoamBreakupSeed.value = (sea.seed ^ BREAKUP_STREAM) | 0;
+      this.placeBreakup();
+    }
+    const base = this.baseThresholds;
+    const memoryThreshold = base.memory + params.foamThreshold;
+    const changed = memoryThreshold !== this.memoryThreshold || base.memorySoftness !== this.memorySoftness;
+    this.memoryThreshold = memoryThreshold;
+    this.memorySoftness = base.memorySoftness;
+    this.uniforms.uFoamThreshold.value = base.active + params.foamThreshold;
+    this.uniforms.uFoamSoftness.value = base.activeSoftness;
     if (rebuilt) {
       this.foam.dispose();
       this.gpu.dispose();
@@ -178,8 +213,35 @@ export class FftWaveView implements WaveModelView {
       this.foam = new FftFoam(this.gpu);
       this.bindTextures();
     }
-    // New thresholds make other foam: rebuild it from the warm-up at the next update.
-    if (rebuilt || changed || foamToggled) this.time = Number.NaN;
+    // Other thresholds or another fade make other foam: rebuilt from nothing at the next update.
+    if (rebuilt || changed || foamToggled || fadeChanged) {
+      this.foamDone = null;
+      this.time = Number.NaN;
+    }
+  }
+
+  /**
+   * The breaking thresholds from the sea's Jacobian statistics (src/sim/waves/fft/breaking.ts):
+   * the whole sea's, with the breakup field's shift, for the foam breaking now, on
+   * ACTIVE_FOAM_SHARE of Monahan's coverage; the remembering cascade's own, for the foam it
+   * deposits, on REMEMBERED_FOAM_SHARE of it (one band alone folds less often than the sea).
+   */
+  private foamThresholds(): { active: number; activeSoftness: number; memory: number; memorySoftness: number } {
+    const { sea, tiles } = this.model.ocean.setup;
+    const coverage = whitecapCoverage(sea.windSpeed);
+    const whole = jacobianCovariance(tiles, sea.choppiness);
+    const spread = breakingSpread(whole);
+    const strength = BREAKUP_STRENGTH * spread;
+    this.uniforms.uFoamBreakupStrength.value = strength;
+    const random = seededRandom(0xb7ea);
+    const shift = () => strength * breakupNoise(1e4 * random(), 1e4 * random(), sea.seed);
+    const own = jacobianCovariance([tiles[REMEMBERING_CASCADE]], sea.choppiness);
+    return {
+      active: breakingThreshold(whole, ACTIVE_FOAM_SHARE * coverage, shift),
+      activeSoftness: FOAM_EDGE * spread,
+      memory: breakingThreshold(own, REMEMBERED_FOAM_SHARE * coverage),
+      memorySoftness: FOAM_EDGE * breakingSpread(own),
+    };
   }
 
   /**
@@ -195,37 +257,38 @@ export class FftWaveView implements WaveModelView {
     this.uniforms.uSeaSlopeVariance.value = seaSlopeVariance(windSpeed);
   }
 
-  /** FFT passes for every cascade at `time`, then the foam (stepped, or rebuilt after a jump). */
+  /**
+   * FFT passes for every cascade at `time`, then the foam: first the remembered foam's lattice
+   * steps up to `time` (src/sim/waves/fft/foamMemory.ts; each evolves the remembering cascade
+   * alone to its lattice time), then the pack the pixels read.
+   */
   update(time: number): void {
     if (Object.is(time, this.time)) return;
-    const previous = this.time;
     this.time = time;
     this.model.prefetch(time);
-    if (!this.foamEnabled) {
-      // The foam pass runs anyway, fresh (decay 0): its texture also carries ∂Dx/∂x for the
-      // ocean's pixels (shaders/fftFoam.frag); uFoamEnabled hides the foam itself.
-      this.gpu.update(time);
-      this.foam.step(0, this.cascadeThresholds, this.cascadeSoftness);
-      this.bindFoam();
-      return;
-    }
-    const dt = time - previous;
-    if (dt > 0 && dt <= FOAM_MAX_STEP) {
-      this.gpu.update(time);
-      this.foam.step(foamRemaining(dt), this.cascadeThresholds, this.cascadeSoftness);
-    } else {
-      for (let k = FOAM_WARMUP_STEPS; k >= 0; k--) {
-        this.gpu.update(time - k * FOAM_WARMUP_DT);
-        this.foam.step(k === FOAM_WARMUP_STEPS ? 0 : foamRemaining(FOAM_WARMUP_DT), this.cascadeThresholds, this.cascadeSoftness);
+    this.placeBreakup();
+    let fade = 0;
+    if (this.foamEnabled) {
+      const steps = foamSteps(this.foamDone, time, this.foamFade);
+      const decay = foamRemaining(FOAM_STEP_SECONDS, this.foamFade);
+      for (let k = steps.first; k <= steps.last; k++) {
+        this.gpu.update(k * FOAM_STEP_SECONDS, REMEMBERING_CASCADE);
+        this.foam.remember(k === steps.first && steps.fresh ? 0 : decay, this.memoryThreshold, this.memorySoftness);
       }
+      this.foamDone = steps.last;
+      fade = steps.fade;
+    } else {
+      this.foamDone = null;
     }
+    this.gpu.update(time);
+    this.foam.pack(fade);
     this.bindFoam();
   }
 
   /**
    * The FFT passes of every cascade at the current time again (same spectrum, same time: same
-   * textures), then one foam step with no fade (max(old, fresh) with fresh already in old:
-   * the foam is unchanged), each group timed between two GPU syncs.
+   * textures), one lattice step of the remembered foam drawn but not kept, and the pack, each
+   * group timed between two GPU syncs.
    */
   profilePasses(sync: () => void): PassTiming[] {
     if (Number.isNaN(this.time)) return [];
@@ -235,8 +298,9 @@ export class FftWaveView implements WaveModelView {
     sync();
     const timings: PassTiming[] = [{ name: 'fft', ms: performance.now() - start }];
     start = performance.now();
-    // Foam off, the pass still runs fresh (it carries ∂Dx/∂x for the pixels, see update).
-    this.foam.step(this.foamEnabled ? 1 : 0, this.cascadeThresholds, this.cascadeSoftness);
+    this.foam.remember(foamRemaining(FOAM_STEP_SECONDS, this.foamFade), this.memoryThreshold, this.memorySoftness, false);
+    const fade = this.foamEnabled && this.foamDone !== null ? foamSteps(this.foamDone, this.time, this.foamFade).fade : 0;
+    this.foam.pack(fade);
     sync();
     this.bindFoam();
     timings.push({ name: 'foam', ms: performance.now() - start });
@@ -246,6 +310,7 @@ export class FftWaveView implements WaveModelView {
   /** The fields and the foam lived in render targets: the next update runs the FFTs and the foam's warm-up again. */
   contextRestored(): void {
     this.time = Number.NaN;
+    this.foamDone = null;
   }
 
   dispose(): void {

@@ -259,10 +259,11 @@ export class GpuFftOcean {
     return this.targets.map((t) => t.textures[1]);
   }
 
-  /** Evolves every cascade to time t (s) and transforms it. t is reduced mod T in float64 here. */
-  update(time: number): void {
+  /** Evolves every cascade (or only cascade `only`) to time t (s) and transforms it. t is reduced mod T in float64 here. */
+  update(time: number, only?: number): void {
     const [x, y, z] = splitFraction(timeInPeriod(time, REPEAT_PERIOD) / REPEAT_PERIOD);
     this.spectrumMaterials.forEach((material, c) => {
+      if (only !== undefined && c !== only) return;
       (material.uniforms.uTauOverT.value as Vector3).set(x, y, z);
       this.fft.draw(material, this.evolved);
       this.fft.transform(this.evolved.textures[0], this.evolved.textures[1], this.targets[c]);

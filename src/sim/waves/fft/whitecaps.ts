@@ -17,39 +17,10 @@ export function upperNormalQuantile(p: number): number {
 }
 
 /**
- * Spread of the Jacobian J of the choppy map per unit choppiness λ. The cascades carry the
- * same range of wavelengths relative to the peak at every wind, so J's spread does not grow
- * with the wind by itself (measured over 20 000 points, seed 1, λ = 1: 10 % quantile 0.84 and
- * 1 % quantile 0.72 at U = 10, 15 and 20 m/s alike, a near-Gaussian spread of 0.125).
- */
-export const JACOBIAN_SPREAD = 0.125;
-
-/**
- * The Jacobian below which the sea foams, chosen so that the share of the sea below it is
- * Monahan's coverage for this wind (J taken as Gaussian about 1 with spread 0.125 λ), plus a
- * user's bias (the `foamThreshold` parameter): more foam as the wind rises, as observed.
- */
-export function foamJacobianThreshold(windSpeed: number, choppiness: number, bias = 0): number {
-  const coverage = Math.min(0.5, Math.max(1e-9, whitecapCoverage(windSpeed)));
-  return 1 - JACOBIAN_SPREAD * choppiness * upperNormalQuantile(coverage) + bias;
-}
-
-/**
- * The same threshold for a field whose Jacobian has spread `jacobianSpread` (one cascade's
- * band: λ times its RMS slope, src/sim/waves/spectra/spectralBounds.ts), so that each cascade's share of
- * folding crests is Monahan's coverage at the scale of its own waves. Measured (U = 10–20 m/s,
- * 128², seed 1): the three cascades' J spreads are 0.063, 0.079 and 0.095 λ, which the RMS
- * slopes give exactly. `share` takes that part of the coverage only.
- */
-export function foamThresholdForSpread(jacobianSpread: number, windSpeed: number, bias = 0, share = 1): number {
-  const coverage = Math.min(0.5, Math.max(1e-9, share * whitecapCoverage(windSpeed)));
-  return 1 - jacobianSpread * upperNormalQuantile(coverage) + bias;
-}
-
-/**
  * Foam left behind decays: whitecap patches fade with an e-folding time τ of 0.5–8 s, longer
  * for larger breakers (Callaghan, A. H., Deane, G. B. & Stokes, M. D. 2012, "Two regimes of
- * laboratory whitecap foam decay", J. Geophys. Res. 117, C09015); 2.5 s is a mid-sized one.
+ * laboratory whitecap foam decay", J. Geophys. Res. 117, C09015); 2.5 s is a mid-sized one,
+ * the default of the `foamFade` parameter.
  */
 export const FOAM_FADE_SECONDS = 2.5;
 

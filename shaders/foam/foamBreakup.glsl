@@ -1,0 +1,43 @@
+// The field that breaks the whitecaps' repeat (the GLSL twin of breakupNoise in
+// src/sim/waves/fft/foamBreakup.ts, read the why there): value noise whose lattice values come
+// from the seed's integer hash (src/sim/noise/integerHash.ts, MurmurHash3's finaliser), which
+// does not repeat within 2³² cells. Cells a quarter of the peak wavelength wide, carried
+// downwind at the group velocity. Where the render origin falls on each octave's lattice
+// arrives split in double precision into whole cells and the rest (breakupLattice).
+uniform float uFoamBreakupScale;        // 1 / cell, 1/m
+uniform ivec4 uFoamBreakupCells;        // whole cells of the render origin: first octave (xy), second (zw)
+uniform vec4 uFoamBreakupOffset;        // the rest, in cells: first octave (xy), second (zw)
+uniform vec2 uFoamBreakupOrigin;        // the render origin, m (for an absolute point only)
+uniform int uFoamBreakupSeed;           // the user's seed mixed with the field's stream
+
+float foamBreakupHash(ivec2 cell) {
+  uint h = uint(cell.x) * 0x27d4eb2du ^ uint(cell.y) * 0x165667b1u ^ uint(uFoamBreakupSeed) * 0x9e3779b1u;
+  h ^= h >> 16;
+  h *= 0x85ebca6bu;
+  h ^= h >> 13;
+  h *= 0xc2b2ae35u;
+  h ^= h >> 16;
+  return float(h) / 2147483648.0 - 1.0;
+}
+
+float foamBreakupOctave(vec2 u, ivec2 cells) {
+  vec2 whole = floor(u);
+  vec2 w = u - whole;
+  w = w * w * w * (w * (w * 6.0 - 15.0) + 10.0);
+  ivec2 cell = ivec2(whole) + cells;
+  float a = foamBreakupHash(cell);
+  float b = foamBreakupHash(cell + ivec2(1, 0));
+  float c = foamBreakupHash(cell + ivec2(0, 1));
+  float d = foamBreakupHash(cell + ivec2(1, 1));
+  return mix(mix(a, b, w.x), mix(c, d, w.x), w.y);
+}
+
+// The field at a grid point relative to the render origin (near) or absolute, in [−1, 1): two
+// octaves, the second on a lattice turned by 30° and 2.31 times finer (BREAKUP_SECOND_OCTAVE).
+float foamBreakup(vec2 p, bool near) {
+  vec2 u = (near ? p : p - uFoamBreakupOrigin) * uFoamBreakupScale;
+  const mat2 TURN = mat2(0.8660254, 0.5, -0.5, 0.8660254) * 2.31;
+  float first = foamBreakupOctave(u + uFoamBreakupOffset.xy, uFoamBreakupCells.xy);
+  float second = foamBreakupOctave(TURN * u + uFoamBreakupOffset.zw, uFoamBreakupCells.zw);
+  return (first + 0.5 * second) / 1.5;
+}
