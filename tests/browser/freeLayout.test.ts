@@ -103,6 +103,12 @@ describe('the free part of the canvas', () => {
         console.log(`[oceano] ${width}×${height} ${lesson}: ${labels.length} labels in sight, ${labels.map((l) => `"${l.text}" ${Math.round(l.box.x)},${Math.round(l.box.y)}`).join('; ')}`);
         if (lesson === 'snell-window') expect(labels.map((l) => l.text)).toEqual(['48,6°: borde de la ventana de Snell']);
       }
+      // The sea tools' card, opened from the panel's button as a user does.
+      await page.evaluate(() => Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((b) => /Sea tools|Herramientas/i.test(b.textContent ?? ''))!.click());
+      await page.waitForSelector('.oceano-sea-tools:not([hidden])');
+      boxes = await viewBoxes(page);
+      check('sea tools', boxes);
+      expect(boxes.overlays.some((o) => o.kind === 'seaTools')).toBe(true);
       if (width <= 560) {
         // A phone: the open panel, a bottom sheet, takes the lessons' place instead of covering the card.
         await page.click('.lil-gui.lil-root > .lil-title');

@@ -11,6 +11,7 @@ export const OVERLAYS = {
   figureCaption: '.oceano-figure-caption',
   lessonLabel: '.oceano-lesson-label',
   playButton: '.oceano-play',
+  seaTools: '.oceano-sea-tools',
 } as const;
 
 /** What takes room from the canvas: the lessons drawer and the control panel. */

@@ -58,7 +58,11 @@ export function noiseStages(seed: number, size: number): NoiseStages {
   };
 }
 
-/** The two heightmaps mixed as the shader mixes them, weight 0 the first, 1 the second (seedSurface's rippleBlend). */
+/**
+ * The two heightmaps mixed with weight `weight` (seedSurface's rippleBlend; 0 the first, 1 the
+ * second): the CPU twin of the blend picture (shaders/panelFigure.frag's mix), which the
+ * teaching-view tests hold that picture to.
+ */
 export function blendedStage(first: StageImage, second: StageImage, weight: number): StageImage {
   const data = new Float32Array(first.data.length);
   for (let k = 0; k < data.length; k++) data[k] = first.data[k] * (1 - weight) + second.data[k] * weight;
