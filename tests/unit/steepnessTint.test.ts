@@ -9,7 +9,7 @@ describe('the steep water of the interactive waves', () => {
   });
 
   it('leaves gentle water alone, tints steeper water, foams as a wave nears the limit, whatever the slope’s direction', () => {
-    expect(fieldTint(0.05, 0)).toBe(0);
+    expect(fieldTint(0.02, 0)).toBe(0);
     expect(fieldFoam(0.3, 0)).toBe(0);
     expect(fieldTint(0.2, 0.1)).toBeGreaterThan(0);
     expect(fieldTint(0.2, 0.1)).toBeLessThan(TINT_STRENGTH);

@@ -5,11 +5,11 @@
  *
  * The scale is the steepest wave there is: Stokes's limiting wave has a 120° corner at its
  * crest (Stokes 1880), so its slope reaches tan 30° = 0.577 there. Foam begins at 60 % of
- * that and covers the water at the limit; the tint begins at a slope of 0.1, where the
- * field's own waves become easy to see, and is full at the foam's start.
+ * that and covers the water at the limit; the tint begins at a slope of 0.03, about what a
+ * stone's rings have 10 s on, and is full at the foam's start.
  */
 export const STOKES_LIMIT_SLOPE = Math.tan(Math.PI / 6);
-export const TINT_FROM_SLOPE = 0.1;
+export const TINT_FROM_SLOPE = 0.03;
 export const FOAM_FROM_SLOPE = 0.6 * STOKES_LIMIT_SLOPE;
 /** The largest share of the water colour the tint replaces. */
 export const TINT_STRENGTH = 0.6;
