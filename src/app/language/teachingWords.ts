@@ -24,7 +24,8 @@ export type TeachingWordId =
   | 'unusedByNonFft'
   | 'unusedByNonGerstner'
   | 'timeScale'
-  | 'step';
+  | 'step'
+  | 'coursePage';
 
 const WORDS: Record<Language, Record<TeachingWordId, string>> = {
   en: {
@@ -47,6 +48,7 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     unusedByNonGerstner: 'read only by the gerstner waves',
     timeScale: 'Speed',
     step: 'Step one frame (1/60 s)',
+    coursePage: 'The course page: the seed report, live, every figure in one chapter',
   },
   es: {
     lessonsTitle: 'Lecciones',
@@ -68,6 +70,7 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     unusedByNonGerstner: 'solo lo leen las olas gerstner',
     timeScale: 'Velocidad',
     step: 'Avanzar un fotograma (1/60 s)',
+    coursePage: 'La página del curso: el informe semilla, en vivo, con todas sus figuras en un capítulo',
   },
 };
 
