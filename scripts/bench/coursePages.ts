@@ -1,21 +1,27 @@
 /**
- * `npx tsx scripts/bench/coursePages.ts [dist folder…]`: what a course page of 6, 20 and 30
- * <oceano-view> figures costs with each given build of dist/ (default: dist/). For each page
- * it prints the time until the figures on the first screen are drawn, the time until every
- * figure that starts by itself is drawn, the WebGL contexts alive (and the most at once),
- * the contexts the browser took away, and the JavaScript heap after a garbage collection;
- * then it scrolls to the bottom and back and prints the same again. Figures only, no
- * thresholds: docs/course-pages.md keeps the results.
+ * `npx tsx scripts/bench/coursePages.ts [dist folder…] [--shared] [--counts=6,20,30]`: what a
+ * course page of 6, 20 and 30 <oceano-view> figures costs with each given build of dist/
+ * (default: dist/). For each page it prints the time until the figures on the first screen are
+ * drawn (`ready`), the time until the first figure's first frame (`load`), the time until every
+ * figure that starts by itself is drawn, the WebGL contexts alive (and the most at once), the
+ * contexts the browser took away, the JavaScript heap after a garbage collection (and less V8's
+ * compiled code), and the time to draw every figure on screen once with the GPU (median); then
+ * it scrolls to the bottom and back and prints the same again. `--shared` measures the same
+ * chapters drawn through one shared renderer (scripts/bench/sharedRenderer/, a prototype).
+ * Figures only, no thresholds: docs/course-pages.md keeps the results.
  */
-import { cpSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import puppeteer, { type Browser, type Page } from 'puppeteer';
 import { BROWSER_ARGS, findBrowser } from '../../tests/browser/harness';
 import { serveFolder } from '../../tests/browser/staticServer';
 import { presetNames } from '../../src/app/url/presets';
+import { build } from 'vite';
+import { heapFigures, heapLessCode } from '../../tests/browser/heapFigures';
 
-const COUNTS = [6, 20, 30];
+const COUNTS = (process.argv.find((a) => a.startsWith('--counts='))?.slice('--counts='.length) ?? '6,20,30').split(',').map(Number);
+const FRAMES = 9;
 const VIEWPORT = { width: 1280, height: 720 };
 
 /** A chapter: one figure per preset (cycled), 320×180, frozen in time, each in a section of text height. */
@@ -51,15 +57,16 @@ interface Snapshot {
   maxLiveContexts: number;
   lostByBrowser: number;
   heapMB: number;
+  heapLessCodeMB: number;
 }
 
 async function snapshot(page: Page, tooMany: number): Promise<Snapshot> {
   const session = await page.createCDPSession();
-  await session.send('HeapProfiler.collectGarbage');
-  const { usedSize } = await session.send('Runtime.getHeapUsage');
+  const heap = await heapFigures(session);
   await session.detach();
   const counts = (await page.evaluate('({ liveContexts: window.__contexts.live(), maxLiveContexts: window.__contexts.maxLive })')) as { liveContexts: number; maxLiveContexts: number };
-  return { ...counts, lostByBrowser: tooMany, heapMB: Math.round(usedSize / 1e5) / 10 };
+  const mb = (bytes: number) => Math.round(bytes / 1e4) / 100;
+  return { ...counts, lostByBrowser: tooMany, heapMB: mb(heap.used), heapLessCodeMB: mb(heapLessCode(heap)) };
 }
 
 /** Seconds until every figure matching `which` has drawn; `which` runs in the page. */
@@ -73,7 +80,19 @@ const ON_SCREEN = `Array.from(document.querySelectorAll('oceano-view')).filter((
 /** Figures that start by themselves: every one before lazy loading; those with a context or starting after. */
 const STARTED = `Array.from(document.querySelectorAll('oceano-view')).filter((v) => v.oceano || v.querySelector('canvas.oceano-canvas'))`;
 
-async function measure(browser: Browser, url: string, count: number) {
+/** Milliseconds to draw every live figure on screen once, each waiting for the GPU (renderFrame), median of FRAMES rounds. */
+const ELEMENT_FRAME_MS = `(() => {
+  const views = ${ON_SCREEN}.filter((v) => v.oceano);
+  const times = [];
+  for (let i = 0; i < ${FRAMES}; i++) {
+    const start = performance.now();
+    for (const view of views) view.oceano.renderFrame();
+    times.push(performance.now() - start);
+  }
+  return Math.round(times.sort((a, b) => a - b)[${Math.floor(FRAMES / 2)}] * 10) / 10;
+})()`;
+
+async function openPage(browser: Browser): Promise<{ page: Page; tooMany: () => number }> {
   const page = await browser.newPage();
   page.setDefaultTimeout(600_000);
   await page.setViewport({ ...VIEWPORT, deviceScaleFactor: 1 });
@@ -82,11 +101,20 @@ async function measure(browser: Browser, url: string, count: number) {
     if (m.text().includes('Too many active WebGL contexts')) tooMany++;
   });
   await page.evaluateOnNewDocument(COUNT_CONTEXTS);
+  return { page, tooMany: () => tooMany };
+}
+
+async function measure(browser: Browser, url: string, count: number) {
+  const { page, tooMany } = await openPage(browser);
   const start = performance.now();
+  await page.evaluateOnNewDocument(`document.addEventListener('load', (e) => { if (e.target.localName === 'oceano-view') window.__firstLoad ??= performance.now(); }, true);`);
   await page.goto(url, { waitUntil: 'load' });
   const firstScreenS = await secondsUntilReady(page, start, ON_SCREEN);
+  // The first figure's first frame, from the page's own clock (navigation start).
+  const firstFrameS = Math.round(((await page.evaluate('window.__firstLoad')) as number) / 100) / 10;
   const allStartedS = await secondsUntilReady(page, start, STARTED);
-  const loaded = await snapshot(page, tooMany);
+  const frameMs = (await page.evaluate(ELEMENT_FRAME_MS)) as number;
+  const loaded = await snapshot(page, tooMany());
   const bottom = (await page.evaluate('document.documentElement.scrollHeight - innerHeight')) as number;
   for (let y = VIEWPORT.height; y < bottom + VIEWPORT.height; y += VIEWPORT.height) {
     await page.evaluate(`window.scrollTo(0, ${Math.min(y, bottom)})`);
@@ -94,24 +122,72 @@ async function measure(browser: Browser, url: string, count: number) {
   }
   await page.evaluate('window.scrollTo(0, 0)');
   await secondsUntilReady(page, start, ON_SCREEN);
-  const scrolled = await snapshot(page, tooMany);
+  const scrolled = await snapshot(page, tooMany());
   await page.close();
-  return { count, firstScreenS, allStartedS, loaded, afterScroll: scrolled };
+  return { count, firstFrameS, firstScreenS, allStartedS, frameMs, loaded, afterScroll: scrolled };
+}
+
+/** The prototype's page (scripts/bench/sharedRenderer/), built by Vite into a folder of its own. */
+async function buildShared(): Promise<string> {
+  const folder = mkdtempSync(join(tmpdir(), 'oceano-shared-'));
+  await build({ configFile: false, root: resolve('scripts/bench/sharedRenderer'), base: './', logLevel: 'warn', build: { outDir: folder, emptyOutDir: true, target: 'es2022', chunkSizeWarningLimit: 2000 } });
+  return folder;
+}
+
+async function measureShared(browser: Browser, url: string, count: number) {
+  const { page, tooMany } = await openPage(browser);
+  const start = performance.now();
+  await page.goto(`${url}index.html?count=${count}`, { waitUntil: 'load' });
+  await page.waitForFunction('window.shared');
+  const drawn = async () => {
+    await page.evaluate('window.shared.onScreenDrawn()');
+    return Math.round((performance.now() - start) / 100) / 10;
+  };
+  const firstScreenS = await drawn();
+  const frameMs = Math.round(((await page.evaluate(`window.shared.frameMs(${FRAMES})`)) as number) * 10) / 10;
+  const loaded = await snapshot(page, tooMany());
+  const bottom = (await page.evaluate('document.documentElement.scrollHeight - innerHeight')) as number;
+  for (let y = VIEWPORT.height; y < bottom + VIEWPORT.height; y += VIEWPORT.height) {
+    await page.evaluate(`window.scrollTo(0, ${Math.min(y, bottom)})`);
+    await drawn();
+  }
+  await page.evaluate('window.scrollTo(0, 0)');
+  await drawn();
+  const scrolled = await snapshot(page, tooMany());
+  const programs = await page.evaluate('window.shared.programs()');
+  await page.close();
+  return { count, firstScreenS, frameMs, programs, loaded, afterScroll: scrolled };
 }
 
 async function main(): Promise<void> {
-  const builds = process.argv.slice(2);
-  if (builds.length === 0) builds.push('dist');
-  const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true });
+  const builds = process.argv.slice(2).filter((a) => !a.startsWith('--'));
+  const shared = process.argv.includes('--shared');
+  if (builds.length === 0 && !shared) builds.push('dist');
+  const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true, protocolTimeout: 1_200_000 });
   try {
-    for (const build of builds) {
+    for (const dist of builds) {
       const folder = mkdtempSync(join(tmpdir(), 'oceano-chapter-'));
-      cpSync(resolve(build), folder, { recursive: true });
+      cpSync(resolve(dist), folder, { recursive: true });
       writeFileSync(join(folder, 'chapter.css'), CHAPTER_CSS);
       for (const count of COUNTS) writeFileSync(join(folder, `chapter-${count}.html`), chapter(count));
       const { server, url } = await serveFolder(folder, '/course/');
       try {
-        for (const count of COUNTS) console.log(JSON.stringify({ build, ...(await measure(browser, `${url}chapter-${count}.html`, count)) }));
+        for (const count of COUNTS) console.log(JSON.stringify({ build: dist, ...(await measure(browser, `${url}chapter-${count}.html`, count)) }));
+        // The course page itself (dist/course/, its figures about 640×360), where the build has one.
+        if (existsSync(join(folder, 'course', 'index.html'))) {
+          const figures = (readFileSync(join(folder, 'course', 'index.html'), 'utf8').match(/<oceano-view /g) ?? []).length;
+          console.log(JSON.stringify({ build: dist, page: 'course/index.html', ...(await measure(browser, `${url}course/index.html?lang=en`, figures)) }));
+        }
+      } finally {
+        server.close();
+        rmSync(folder, { recursive: true, force: true });
+      }
+    }
+    if (shared && existsSync('scripts/bench/sharedRenderer')) {
+      const folder = await buildShared();
+      const { server, url } = await serveFolder(folder, '/shared/');
+      try {
+        for (const count of COUNTS) console.log(JSON.stringify({ build: 'shared renderer (prototype)', ...(await measureShared(browser, url, count)) }));
       } finally {
         server.close();
         rmSync(folder, { recursive: true, force: true });

@@ -100,6 +100,20 @@ describe('the course page (dist/course/)', () => {
     await page.close();
   }, 400_000);
 
+  it('is linked from the app, after its lessons, in the reader\'s language', async () => {
+    const { page, consoleErrors } = await recordedPage(harness, 1366, 768);
+    await page.goto(`${harness.baseUrl}index.html?lang=es`, { waitUntil: 'load' });
+    const link = await page.waitForSelector('a.oceano-lessons-course');
+    const { href, text, last } = await link!.evaluate((a) => ({ href: (a as HTMLAnchorElement).href, text: a.textContent, last: a.closest('li') === a.closest('ol')!.lastElementChild }));
+    expect(last).toBe(true);
+    expect(text).toMatch(/^La página del curso/);
+    expect(href).toBe(`${harness.baseUrl}course/index.html?lang=es`);
+    await Promise.all([page.waitForNavigation(), link!.click()]);
+    expect(await page.evaluate(() => document.querySelectorAll('oceano-view').length)).toBeGreaterThanOrEqual(24);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
   it('speaks English when asked, figures included', async () => {
     const { page, consoleErrors } = await recordedPage(harness, 800, 700);
     await page.emulateMediaFeatures([{ name: 'prefers-reduced-motion', value: 'reduce' }]);

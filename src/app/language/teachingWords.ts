@@ -50,7 +50,8 @@ export type TeachingWordId =
   | 'timeScale'
   | 'step'
   | 'seaTools'
-  | 'dropStone';
+  | 'dropStone'
+  | 'coursePage';
 
 const WORDS: Record<Language, Record<TeachingWordId, string>> = {
   en: {
@@ -99,6 +100,7 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     step: 'Step one frame (1/60 s)',
     seaTools: 'Sea tools: probe, ruler, stones',
     dropStone: 'Drop a stone (interactive waves)',
+    coursePage: 'The course page: the seed report, live, every figure in one chapter',
   },
   es: {
     lessonsTitle: 'Lecciones',
@@ -146,6 +148,7 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     step: 'Avanzar un fotograma (1/60 s)',
     seaTools: 'Herramientas: sonda, regla, piedras',
     dropStone: 'Tirar una piedra (olas interactivas)',
+    coursePage: 'La página del curso: el informe semilla, en vivo, con todas sus figuras en un capítulo',
   },
 };
 

@@ -126,6 +126,12 @@ export class LessonDrawer {
       item.append(open);
       this.list.append(item);
     }
+    // The same course as a page of text with its figures live (dist/course/, beside the app).
+    const course = element('a', 'oceano-lessons-course', teachingWord(this.tr, 'coursePage'));
+    course.href = `course/index.html?lang=${this.tr.language}`;
+    const item = element('li', 'oceano-lessons-item');
+    item.append(course);
+    this.list.append(item);
   }
 
   private open(id: string): void {
