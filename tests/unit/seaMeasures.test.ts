@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { along, horizontalDistance } from '../../src/sim/tools/rulerDistance';
 import { cursorStep, isCursorKey } from '../../src/sim/tools/seaCursor';
+import { formatProbeText, isProbeCoordinate, parseProbeText } from '../../src/sim/tools/probePlace';
 
 describe('the ruler', () => {
   it('measures the horizontal distance: a 3-4-5 triangle, whatever the heights', () => {
@@ -30,5 +31,20 @@ describe('the keyboard’s point on the sea', () => {
     expect(cursorStep('ArrowUp', [1, 20, 1], [1, 0, 1], 1)).toEqual([0, -1]);
     expect(isCursorKey('ArrowLeft')).toBe(true);
     expect(isCursorKey('KeyW')).toBe(false);
+  });
+});
+
+describe('where a probe may stand (?probe=x,z)', () => {
+  it('reads "x,z" in metres and writes it back to the same doubles', () => {
+    expect(parseProbeText('13.7,-4.2')).toEqual({ x: 13.7, z: -4.2 });
+    expect(parseProbeText(' 0 , 1e3 ')).toEqual({ x: 0, z: 1000 });
+    const point = { x: 0.1 + 0.2, z: -1 / 3 };
+    expect(parseProbeText(formatProbeText(point))).toEqual(point);
+  });
+
+  it('refuses anything else: not two numbers, not finite, beyond ±1e6 m', () => {
+    for (const text of ['', '1', '1,2,3', '1,oops', ',2', '1,', 'NaN,0', 'Infinity,0', '2e6,0']) expect(parseProbeText(text), text).toBeNull();
+    expect(isProbeCoordinate(1e6)).toBe(true);
+    expect(isProbeCoordinate('1')).toBe(false);
   });
 });

@@ -43,6 +43,13 @@ describe('URL state round trip', () => {
     expect(parsed.sky).toBe('course/sky');
     expect(parsed.embed).toBe(true);
   });
+
+  it('carries the probe as written, and leaves it out without one (the sea tools check its text)', () => {
+    const parsed = parseUrlState(`?${formatUrlState({ ...randomState(10), probe: '13.7,-4.2' })}`);
+    expect(parsed.probe).toBe('13.7,-4.2');
+    expect(parsed.notices).toEqual([]);
+    expect(parseUrlState(`?${formatUrlState(randomState(10))}`).probe).toBeNull();
+  });
 });
 
 describe('camera text', () => {

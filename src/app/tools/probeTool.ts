@@ -1,3 +1,4 @@
+import type { ParamKey } from '../../sim/params/params';
 import { ProbeRecord } from '../../sim/tools/probeRecord';
 import { probeFigures, type ProbeFigures } from '../../sim/tools/probeStatistics';
 import { probeTheory, swellRecord, type ProbeTheory } from '../../sim/tools/probeTheory';
@@ -21,6 +22,30 @@ export interface ProbeReading {
 const PIN_COLOUR = 0xff9f43;
 /** The figures and chart are redrawn at most this often while the sea plays, ms of wall time. */
 const REFRESH_MS = 250;
+/**
+ * The parameters that make the sea (wave model, swell, ripples, wind spectrum, Gerstner's):
+ * when one changes, the record starts afresh, so it never mixes two seas and the theory always
+ * speaks of the sea recorded.
+ */
+const SEA_KEYS = [
+  'waves',
+  'swellAmplitude',
+  'swellFrequency',
+  'rippleStrength',
+  'rippleBlendSpeed',
+  'seed',
+  'windSpeed',
+  'windDirection',
+  'spectrum',
+  'fetch',
+  'depth',
+  'spreading',
+  'spreadingModel',
+  'choppiness',
+  'fftSize',
+  'gerstnerCount',
+  'gerstnerSteepness',
+] as const satisfies readonly ParamKey[];
 
 /**
  * The probe: a point of the sea whose height is recorded at every drawn frame, charted over
@@ -40,6 +65,8 @@ export class ProbeTool implements SeaTool {
   private chart?: ProbeChart;
   private chartLoad?: Promise<void>;
   private lastRefresh = -Infinity;
+  /** The sea the record was taken on: SEA_KEYS' values. */
+  private sea = '';
   private disposed = false;
 
   constructor(private readonly context: SeaToolContext) {
@@ -113,6 +140,12 @@ export class ProbeTool implements SeaTool {
   frame(): void {
     if (!this.point) return;
     const { x, z } = this.point;
+    const params = this.context.params();
+    const sea = SEA_KEYS.map((key) => params[key]).join('|');
+    if (sea !== this.sea) {
+      this.sea = sea;
+      this.record.clear();
+    }
     const height = this.context.height(x, z);
     this.pin.place(x, height, z, this.context.camera);
     if (!this.record.add(this.context.time(), height)) return;

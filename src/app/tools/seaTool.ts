@@ -22,7 +22,6 @@ export interface SeaToolContext {
   pose(): CameraPose;
   /** Height of the sea as drawn at (x, z) now (waves, wake, interactive waves), metres. */
   height(x: number, z: number): number;
-  setParams(change: Partial<OceanParams>): void;
   /** Drops a stone into the interactive waves, turning them on (and waiting for their code) if they are off. */
   dropStone(point: SeaXZ): Promise<void>;
   notify(text: string): void;

@@ -2,6 +2,7 @@ import { Vector3 } from 'three';
 import './seaTools.css';
 import { pickSea } from '../../sim/tools/seaPick';
 import { cursorStep, isCursorKey } from '../../sim/tools/seaCursor';
+import { formatProbeText, isProbeCoordinate, parseProbeText } from '../../sim/tools/probePlace';
 import { SeaPin } from '../../render/teaching/seaMarkers';
 import { toolNumber, toolWord, type ToolWordId } from '../language/toolWords';
 import type { SeaToolsHost } from './seaToolsHost';
@@ -17,26 +18,12 @@ const HELP: Record<SeaToolName, ToolWordId> = { none: 'helpNone', probe: 'helpPr
 /** The keyboard moves its point this far per arrow press, m; with Shift, FINE_STEP. */
 const STEP = 1;
 const FINE_STEP = 0.1;
-/** Coordinates a probe may be placed at, m: the camera's own range. */
-const MAX_COORDINATE = 1e6;
 const CURSOR_COLOUR = 0x7fd4ff;
 const UP: [number, number, number] = [0, 1, 0];
 /** A phone held upright (as the page's stylesheets say it): the card starts with its help folded. */
 const NARROW = '(max-width: 560px)';
 /** Each toolbox's radio group needs a name of its own: a course page may hold several oceans. */
 let toolboxes = 0;
-
-/** "x,z" in metres, each finite and within ±1e6; null otherwise. */
-export function parseProbeText(text: string): SeaXZ | null {
-  const parts = text.split(',');
-  if (parts.length !== 2 || parts.some((p) => p.trim() === '')) return null;
-  const [x, z] = parts.map(Number);
-  return isCoordinate(x) && isCoordinate(z) ? { x, z } : null;
-}
-
-function isCoordinate(value: unknown): value is number {
-  return typeof value === 'number' && Number.isFinite(value) && Math.abs(value) <= MAX_COORDINATE;
-}
 
 /**
  * The teacher's sea tools beside one ocean: a card to choose among the probe, the ruler and
@@ -79,7 +66,6 @@ export class SeaTools {
       params: () => app.getParams(),
       pose: () => app.camera(),
       height: (x, z) => this.height(x, z),
-      setParams: (change) => app.setParams(change),
       dropStone: (point) => this.dropStone(point),
       notify: (text) => app.notices.show(text),
       redraw: () => app.loop.requestRender(),
@@ -134,7 +120,7 @@ export class SeaTools {
       this.showSections();
       return null;
     }
-    if (args.length === 2 && isCoordinate(args[0]) && isCoordinate(args[1])) {
+    if (args.length === 2 && isProbeCoordinate(args[0]) && isProbeCoordinate(args[1])) {
       this.placeProbe({ x: args[0], z: args[1] });
       await this.probe.chartReady();
     } else if (args.length !== 0) {
@@ -146,7 +132,7 @@ export class SeaTools {
   /** The probe's place for a share link, "x,z", or null without one. */
   probeText(): string | null {
     const reading = this.probe.reading();
-    return reading ? `${reading.x},${reading.z}` : null;
+    return reading ? formatProbeText(reading) : null;
   }
 
   private placeProbe(point: SeaXZ): void {
