@@ -45,8 +45,8 @@ export class SeaTools {
   private readonly keys = document.createElement('button');
   /** Where the keyboard's point is, read out as it moves. */
   private readonly cursorText = document.createElement('p');
-  readonly probe: ProbeTool;
-  readonly ruler: RulerTool;
+  private readonly probe: ProbeTool;
+  private readonly ruler: RulerTool;
   private readonly disturb: DisturbTool;
   private readonly tools: Record<Exclude<SeaToolName, 'none'>, SeaTool>;
   private readonly cursorPin = new SeaPin(CURSOR_COLOUR);
