@@ -61,8 +61,12 @@ export const SCENARIOS: readonly BenchScenario[] = [
   // Each strip's render is timed apart ('scene <model> strip'), to see where a split frame's time goes.
   { name: 'compare-models (seed | gerstner | fft)', query: 't=10&preset=compare-models', passes: true, stepSeconds: 1 / 60 },
   { name: 'compare-models camera, fft alone', query: 't=10&preset=compare-models&compare=off&waves=fft', passes: true, stepSeconds: 1 / 60 },
-  // The other candidate for the dearest model: 32 trochoids summed per vertex and per pixel.
+  // The other candidate for the dearest model: 32 trochoids, the long ones summed per vertex, the short ones per pixel.
   { name: 'compare-models camera, gerstner alone', query: 't=10&preset=compare-models&compare=off&waves=gerstner', passes: true, stepSeconds: 1 / 60 },
+  // Issue 32: every model at most 2× the seed's frame from the same camera.
+  { name: 'compare-models camera, seed alone', query: 't=10&preset=compare-models&compare=off&waves=seed', stepSeconds: 1 / 60 },
+  // The steepest Gerstner lesson (4 trochoids at Q = 1, 1.2 m above the water).
+  { name: 'gerstner-steepness', query: 't=10&preset=gerstner-steepness', stepSeconds: 1 / 60 },
 ];
 
 /** The ratios the issue's targets are stated in: [label, numerator scenario, denominator scenario or 'floor', target]. */
@@ -77,6 +81,9 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   // Issue 15: a split view costs no more than its dearest model alone.
   ['compare-models / fft alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, fft alone', 1],
   ['compare-models / gerstner alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, gerstner alone', 1],
+  // Issue 32: each wave model at most 2× the seed's frame, at the compare-models camera.
+  ['gerstner alone / seed alone (compare-models camera)', 'compare-models camera, gerstner alone', 'compare-models camera, seed alone', 2],
+  ['fft alone / seed alone (compare-models camera)', 'compare-models camera, fft alone', 'compare-models camera, seed alone', 2],
   ['looking up / default', 'looking up', 'default view', null],
   ['looking down / default', 'looking down', 'default view', null],
 ];
