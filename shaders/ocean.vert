@@ -150,9 +150,6 @@ void main() {
     vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
   }
   vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
-  // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
-  // the rest is small. So the relative position keeps its bits wherever the camera is.
-  vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
 #ifdef OCEAN_IWAVE
   // Near the boat the interactive field carries its waves, farther out the analytic wake:
   // (the wake's weight, the field's), each wave counted once (shaders/iwave.glsl).
