@@ -87,6 +87,10 @@ void main() {
   int band = int(aChunk.z + 0.5);
   // The far rings never morph and always snap their sides.
   bool farRing = band > LAST_GRID_BAND;
+  // A refined chunk of the nearest band (src/render/lod/oceanChunks.ts) splits each quad
+  // `refine` times per side: its grid units, its neighbours' steps and its side count in those.
+  int refine = farRing ? 1 : int(LOD_BASE_STEP / aChunk.w + 0.5);
+  int quads = uChunkQuads * refine;
   int own = farRing ? 0 : BAND_STEPS[band];
   vec2 morphed = vec2(grid);
   if (band < LAST_GRID_BAND) {
@@ -96,21 +100,36 @@ void main() {
     vec2 fromCamera = (aChunk.xy + vec2(grid) * aChunk.w) - uLodCamera.xz;
     float dy = max(uLodCamera.y - uLodHeight, 0.0) + max(-uLodHeight - uLodCamera.y, 0.0);
     float factor = clamp((length(vec3(fromCamera.x, dy, fromCamera.y)) - uMorphZones[band].x) * uMorphZones[band].y, 0.0, 1.0);
-    int next = BAND_STEPS[band + 1];
+    int next = BAND_STEPS[band + 1] * refine;
     morphed += factor * (vec2(snapEdge(grid.x, next), snapEdge(grid.y, next)) - vec2(grid));
   }
   if (grid.x == 0 && int(aEdgeSteps.x) > own) morphed.y = float(snapEdge(grid.y, int(aEdgeSteps.x)));
-  else if (grid.x == uChunkQuads && int(aEdgeSteps.y) > own) morphed.y = float(snapEdge(grid.y, int(aEdgeSteps.y)));
+  else if (grid.x == quads && int(aEdgeSteps.y) > own) morphed.y = float(snapEdge(grid.y, int(aEdgeSteps.y)));
   if (grid.y == 0 && int(aEdgeSteps.z) > own) morphed.x = float(snapEdge(grid.x, int(aEdgeSteps.z)));
-  else if (grid.y == uChunkQuads && int(aEdgeSteps.w) > own) morphed.x = float(snapEdge(grid.x, int(aEdgeSteps.w)));
+  else if (grid.y == quads && int(aEdgeSteps.w) > own) morphed.x = float(snapEdge(grid.x, int(aEdgeSteps.w)));
 
+  // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
+  // the rest is small. So the relative position keeps its bits wherever the camera is.
+  vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
+  vVertexSpacing = aChunk.w * float(farRing ? 1 : BAND_STEPS[band]);
+#ifdef WAVE_VERTEX_SLOPES
+  // A model that sums its long waves' slopes per vertex for ocean.frag, in the same sum as the
+  // displacement (waveVertexDisplacement, shaders/waves/gerstner.glsl), is told the vertex
+  // step and the way to the eye.
+  waveVertexSpacing = vVertexSpacing;
+  waveVertexToEye = uEyeRelative - vec3(relativeGrid.x, 0.0, relativeGrid.y);
+#endif
   // Corner and step are whole multiples of the base step: unmorphed, the sum is exact in
   // float32, and a shared vertex's morph is computed from the same numbers by both chunks,
   // so they agree bit for bit on its position (and height).
   vec2 gridXZ = vec2(aChunk.x + morphed.x * aChunk.w, aChunk.y + morphed.y * aChunk.w);
   vec2 fromCenter = abs(gridXZ - uOceanCenter);
   float waves = 1.0 - smoothstep(uFarFade.x, uFarFade.y, max(fromCenter.x, fromCenter.y));
+#ifdef WAVE_VERTEX_SLOPES
+  vec3 d = waveVertexDisplacement(gridXZ);
+#else
   vec3 d = waveDisplacement(gridXZ);
+#endif
   // A model with WAVE_PIXEL_NORMALS has its normal evaluated per pixel by ocean.frag, which
   // then reads this one only on the comparison view's right half (OCEAN_NORMALS_COMPARE) or
   // flat: it is left out of the program otherwise (perf: a define, not a uniform branch,
@@ -131,9 +150,6 @@ void main() {
     vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
   }
   vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
-  // The chunk's corner less the origin is exact (both lie on the 2 m lattice and are close);
-  // the rest is small. So the relative position keeps its bits wherever the camera is.
-  vec2 relativeGrid = (aChunk.xy - uRenderOrigin) + morphed * aChunk.w;
 #ifdef OCEAN_IWAVE
   // Near the boat the interactive field carries its waves, farther out the analytic wake:
   // (the wake's weight, the field's), each wave counted once (shaders/iwave.glsl).
@@ -175,12 +191,7 @@ void main() {
 #endif
   vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;
-  vVertexSpacing = aChunk.w * float(farRing ? 1 : BAND_STEPS[band]);
   vWaveFade = waves;
-#ifdef WAVE_VERTEX_SLOPES
-  // A model that sums its long waves' slopes per vertex for ocean.frag (shaders/waves/gerstner.glsl).
-  waveVertexSlopes(gridXZ, vVertexSpacing, uEyeRelative - relative);
-#endif
   vec4 view = uViewRelative * vec4(relative, 1.0);
   // A vertex exactly in the eye's plane (view z = 0, so clip w = 0: a level camera whose z
   // lies on a grid row) made SwiftShader drop every triangle touching it, a hole in the

@@ -28,7 +28,10 @@ vec3 skyCubeColor(vec3 direction) {
 // (src/render/sky/sunSky.ts), of square roots for the default sky: where the sky changes fast
 // the mean comes out a little dark.
 vec3 skyCubeColorRough(vec3 direction, float variance) {
-  vec3 stored = textureLod(uSky, vec3(uSkyFlip * direction.x, direction.y, direction.z), log2(float(textureSize(uSky, 0).x) * sqrt(9.73 * variance))).rgb;
+  float lod = max(log2(float(textureSize(uSky, 0).x) * sqrt(9.73 * variance)), 0.0);
+  vec3 d = vec3(uSkyFlip * direction.x, direction.y, direction.z);
+  float level = floor(lod);
+  vec3 stored = mix(textureLod(uSky, d, level).rgb, textureLod(uSky, d, level + 1.0).rgb, lod - level);
   return mix(stored, stored * stored, uSkySquared);
 }
 

@@ -56,14 +56,14 @@ export const SCENARIOS: readonly BenchScenario[] = [
   // 60 Hz (every frame evolves the spectra, runs the FFTs and one foam step), and those
   // passes timed alone.
   { name: 'FFT view (waves=fft, clock running)', query: 't=10&waves=fft', passes: true, stepSeconds: 1 / 60, twin: true },
-  // Issue 15: the three models side by side against the dearest of them alone, same camera
+  // The three models side by side against the dearest of them alone, same camera
   // and wind, both with the clock running (the FFT passes run in both).
   // Each strip's render is timed apart ('scene <model> strip'), to see where a split frame's time goes.
   { name: 'compare-models (seed | gerstner | fft)', query: 't=10&preset=compare-models', passes: true, stepSeconds: 1 / 60 },
   { name: 'compare-models camera, fft alone', query: 't=10&preset=compare-models&compare=off&waves=fft', passes: true, stepSeconds: 1 / 60 },
-  // The other candidate for the dearest model: 32 trochoids summed per vertex and per pixel.
+  // The other candidate for the dearest model: 32 trochoids, the long ones summed per vertex, the short ones per pixel.
   { name: 'compare-models camera, gerstner alone', query: 't=10&preset=compare-models&compare=off&waves=gerstner', passes: true, stepSeconds: 1 / 60 },
-  // Issue 33: the default view with the interactive waves on, the clock at 60 Hz so each frame
+  // The default view with the interactive waves on, the clock at 60 Hz so each frame
   // steps the field once (its step pass, the read-back for sampleSurface, the field in the
   // ocean's shaders); a stone in it, so the picture has waves to draw.
   {
@@ -71,6 +71,10 @@ export const SCENARIOS: readonly BenchScenario[] = [
     query: 't=10&interactiveWaves=1&stones=10,0,-20,1,0.5',
     stepSeconds: 1 / 60,
   },
+  // Every model at most 2× the seed's frame from the same camera.
+  { name: 'compare-models camera, seed alone', query: 't=10&preset=compare-models&compare=off&waves=seed', stepSeconds: 1 / 60 },
+  // The steepest Gerstner lesson (4 trochoids at Q = 1, 1.2 m above the water).
+  { name: 'gerstner-steepness', query: 't=10&preset=gerstner-steepness', stepSeconds: 1 / 60 },
 ];
 
 /** The ratios the issue's targets are stated in: [label, numerator scenario, denominator scenario or 'floor', target]. */
@@ -80,13 +84,16 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['default / floor', 'default view', 'floor', 20],
   ['underwater / default', 'underwater (Snell window, god rays, blur)', 'default view', 2],
   ['underwater half-float / encoded', 'underwater, half-float scene target (library default)', 'underwater (Snell window, god rays, blur)', null],
-  // Issue 12: the spectral sea at most 1.3× the seed's frame, same camera, same run.
+  // The spectral sea at most 1.3× the seed's frame, same camera, same run.
   ['FFT view / default', 'FFT view (waves=fft, clock running)', 'default view', 1.3],
-  // Issue 15: a split view costs no more than its dearest model alone.
+  // A split view costs no more than its dearest model alone.
   ['compare-models / fft alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, fft alone', 1],
   ['compare-models / gerstner alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, gerstner alone', 1],
-  // Issue 33: the interactive waves cost at most 15 % more than the default view without them.
+  // The interactive waves cost at most 15 % more than the default view without them.
   ['interactive waves / default', 'interactive waves on, default view (field stepped at 60 Hz)', 'default view', 1.15],
+  // Each wave model at most 2× the seed's frame, at the compare-models camera.
+  ['gerstner alone / seed alone (compare-models camera)', 'compare-models camera, gerstner alone', 'compare-models camera, seed alone', 2],
+  ['fft alone / seed alone (compare-models camera)', 'compare-models camera, fft alone', 'compare-models camera, seed alone', 2],
   ['looking up / default', 'looking up', 'default view', null],
   ['looking down / default', 'looking down', 'default view', null],
 ];

@@ -13,8 +13,8 @@
 // pixel at the interpolated grid point (WAVE_PIXEL_NORMALS), given relative to the render
 // origin (src/render/ocean/renderOrigin.ts): an absolute float32 grid point 10⁶ m out is
 // rounded to 6 cm, which put the glint in 6 cm blocks. Only the short waves are summed per
-// pixel: the waves many vertex steps long are summed per vertex (WAVE_VERTEX_SLOPES, ocean.vert)
-// and their derivatives interpolated, which is exact to first order across a triangle.
+// pixel: the long ones, whose derivatives a triangle interpolates to within 0.02 of slope,
+// are summed per vertex (WAVE_VERTEX_SLOPES, ocean.vert) in the displacement's own sum.
 //
 // Wave i moves grid point p to p + (−QᵢAᵢ k̂ᵢ sin θᵢ, Aᵢ cos θᵢ), θᵢ = kᵢ·p − ωᵢt + φᵢ.
 // Angles are in turns. The time part τᵢ = fract(φᵢ − ωᵢt/2π) arrives already reduced in
@@ -56,6 +56,51 @@ float gerstnerNearPhase(int i) {
   return uGerstnerNearPhases[i >> 2][i & 3];
 }
 
+// The share of a wave's slope that a pixel `footprint` metres across resolves: all of it
+// while two pixels fit in its wavelength, none once one pixel spans it, in between by the
+// octave (the FFT sea's resolvedShare for a band one octave wide, src/sim/optics/resolvedSlopes.ts).
+// What a pixel does not resolve would only alias (the fringe at the horizon); it goes into
+// the glint's roughness instead (Bruneton, Neyret & Holzschuch 2010).
+float gerstnerShare(vec4 wave, float footprint) {
+  return clamp(log2(1.0 / (length(wave.xy) * 2.0 * footprint)) + 0.5, 0.0, 1.0);
+}
+
+// Wave `wave`'s closed-form derivatives (see gerstnerDerivativesAt) at the angle whose sine
+// and cosine are s and c, times `share`, added to (∂dx/∂x, ∂dx/∂z, ∂dz/∂z, ∂dy/∂x) and ∂dy/∂z.
+void gerstnerAddDerivatives(vec4 wave, float s, float c, float share, inout vec4 horizontal, inout float dydz) {
+  vec2 k = TURN_RADIANS * wave.xy;
+  float qc = share * wave.w / length(k) * c;
+  float aSin = share * wave.z * s;
+  horizontal -= vec4(qc * k.x * k.x, qc * k.x * k.y, qc * k.y * k.y, aSin * k.x);
+  dydz -= aSin * k.y;
+}
+
+float gerstnerSlope(int i) {
+  return uGerstnerSlopes[i >> 2][i & 3];
+}
+
+#if defined(WAVE_VERTEX_STAGE) || defined(WAVE_FRAGMENT_STAGE)
+// From the vertices to the pixels: the first wave summed per pixel (the same for a whole
+// chunk, whose vertex step is one), the per-vertex waves' filtered derivatives (as
+// gerstnerAddDerivatives) and the slope variance they resolve.
+flat varying int vGerstnerFirstPixelWave;
+varying vec4 vGerstnerHorizontal;
+varying vec2 vGerstnerDydzAndVariance;
+#endif
+
+#ifdef WAVE_VERTEX_STAGE
+// Set by ocean.vert before it asks for the displacement: the chunk's vertex step, m, and the
+// way from the vertex to the eye.
+float waveVertexSpacing;
+vec3 waveVertexToEye;
+
+// Linear interpolation across a triangle, whose sides reach s√2 along a wave, misses a slope of
+// amplitude a by at most a (k s √2)² / 8 = a (ks)² / 4: a wave's derivatives are summed per
+// vertex, from the longest on, while that stays within this (1.1°, well inside the glint's
+// roughness, √(σ²/2) ≈ 0.1 per axis at any wind), and per pixel from the first that misses by more.
+const float GERSTNER_VERTEX_SLOPE_ERROR = 0.02;
+#endif
+
 vec3 waveDisplacement(vec2 gridXZ) {
   vec3 d = vec3(0.0);
   for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
@@ -72,31 +117,46 @@ vec3 waveDisplacement(vec2 gridXZ) {
   return d;
 }
 
-// The share of a wave's slope that a pixel `footprint` metres across resolves: all of it
-// while two pixels fit in its wavelength, none once one pixel spans it, in between by the
-// octave (the FFT sea's resolvedShare for a band one octave wide, src/sim/optics/resolvedSlopes.ts).
-// What a pixel does not resolve would only alias (the fringe at the horizon); it goes into
-// the glint's roughness instead (Bruneton, Neyret & Holzschuch 2010).
-float gerstnerShare(vec4 wave, float footprint) {
-  return clamp(log2(1.0 / (length(wave.xy) * 2.0 * footprint)) + 0.5, 0.0, 1.0);
+#ifdef WAVE_VERTEX_STAGE
+// The same sum for the ocean's vertices (ocean.vert, WAVE_VERTEX_SLOPES), which also takes the
+// derivatives of the waves the vertices may interpolate (see GERSTNER_VERTEX_SLOPE_ERROR), each
+// by the share a pixel there resolves: a pixel spans about distance × uPixelAngle across the
+// view and that over the sine of the grazing angle along it; the longer side decides, as in
+// the pixels. No branch: a software rasterizer runs both sides of one (docs/shader-notes.md).
+vec3 waveVertexDisplacement(vec2 gridXZ) {
+  float distance = length(waveVertexToEye);
+  float footprint = distance * uPixelAngle / max(abs(waveVertexToEye.y) / distance, 1e-3);
+  vec3 d = vec3(0.0);
+  vec4 horizontal = vec4(0.0);
+  float dydz = 0.0;
+  float variance = 0.0;
+  int first = 0;
+  for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
+    // A wave shorter than two vertex steps cannot be drawn by the mesh, only aliased: far
+    // chunks leave it to the pixels' normals (and to the roughness once they too cannot).
+    if (i >= uGerstnerCount || length(uGerstnerWaves[i].xy) * 2.0 * waveVertexSpacing > 1.0) break;
+    vec4 wave = uGerstnerWaves[i];
+    float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
+    float s = sinTurns(turns);
+    float c = sinTurns(turns + 0.25);
+    vec2 dir = wave.xy / length(wave.xy);
+    d.x -= wave.w * dir.x * s;
+    d.z -= wave.w * dir.y * s;
+    d.y += wave.z * c;
+    float k = TURN_RADIANS * length(wave.xy);
+    float ks = k * waveVertexSpacing;
+    bool perVertex = first == i && max(wave.z, wave.w) * k * ks * ks <= 4.0 * GERSTNER_VERTEX_SLOPE_ERROR;
+    float share = perVertex ? gerstnerShare(wave, footprint) : 0.0;
+    gerstnerAddDerivatives(wave, s, c, share, horizontal, dydz);
+    variance += share * share * gerstnerSlope(i);
+    first = perVertex ? i + 1 : first;
+  }
+  vGerstnerFirstPixelWave = first;
+  vGerstnerHorizontal = horizontal;
+  vGerstnerDydzAndVariance = vec2(dydz, variance);
+  return d;
 }
-
-// Wave i's closed-form derivatives (see gerstnerDerivativesAt), times `share`, added to
-// (∂dx/∂x, ∂dx/∂z, ∂dz/∂z, ∂dy/∂x) and ∂dy/∂z.
-void gerstnerAddDerivatives(int i, float turns, float share, inout vec4 horizontal, inout float dydz) {
-  vec4 wave = uGerstnerWaves[i];
-  float s = sinTurns(turns);
-  float c = sinTurns(turns + 0.25);
-  vec2 k = TURN_RADIANS * wave.xy;
-  float qc = share * wave.w / length(k) * c;
-  float aSin = share * wave.z * s;
-  horizontal -= vec4(qc * k.x * k.x, qc * k.x * k.y, qc * k.y * k.y, aSin * k.x);
-  dydz -= aSin * k.y;
-}
-
-float gerstnerSlope(int i) {
-  return uGerstnerSlopes[i >> 2][i & 3];
-}
+#endif
 
 // The tangents ∂P/∂x, ∂P/∂z of the displaced surface P = (x + dx, dy, z + dz), and their cross product.
 vec3 gerstnerNormalFrom(vec4 horizontal, float dydz) {
@@ -105,55 +165,23 @@ vec3 gerstnerNormalFrom(vec4 horizontal, float dydz) {
   return normalize(cross(tz, tx));
 }
 
-// The whole sum at a grid point, unfiltered: the vertices' and other programs' normal (the
-// probe, caustics). `near`: p is relative to the render origin (a constant at each call, so the choice folds away).
+// Wave i's derivatives at grid point p, times `share`. `near`: p is relative to the render
+// origin (a constant at each call, so the choice folds away).
+void gerstnerAddWave(int i, vec2 p, bool near, float share, inout vec4 horizontal, inout float dydz) {
+  float turns = gerstnerTurns(uGerstnerWaves[i], near ? gerstnerNearPhase(i) : gerstnerPhase(i), p);
+  gerstnerAddDerivatives(uGerstnerWaves[i], sinTurns(turns), sinTurns(turns + 0.25), share, horizontal, dydz);
+}
+
+// The whole sum at a grid point, unfiltered: the vertices' and other programs' normal (the probe, caustics).
 vec3 gerstnerFullNormal(vec2 p, bool near) {
   vec4 horizontal = vec4(0.0);
   float dydz = 0.0;
   for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
     if (i >= uGerstnerCount) break;
-    gerstnerAddDerivatives(i, gerstnerTurns(uGerstnerWaves[i], near ? gerstnerNearPhase(i) : gerstnerPhase(i), p), 1.0, horizontal, dydz);
+    gerstnerAddWave(i, p, near, 1.0, horizontal, dydz);
   }
   return gerstnerNormalFrom(horizontal, dydz);
 }
-
-// Waves at least this many vertex steps long are summed per vertex: linear interpolation
-// then misses a derivative by at most (2π / 8)² / 8 ≈ 8 % of the wave's own slope, where the
-// slope is long and gentle.
-const float GERSTNER_VERTEX_WAVELENGTHS = 8.0;
-
-#if defined(WAVE_VERTEX_STAGE) || defined(WAVE_FRAGMENT_STAGE)
-// From the vertices to the pixels: the first wave summed per pixel (the same for a whole
-// chunk, whose vertex step is one), the per-vertex waves' filtered derivatives (as
-// gerstnerAddDerivatives) and the slope variance they resolve.
-flat varying int vGerstnerFirstPixelWave;
-varying vec4 vGerstnerHorizontal;
-varying vec2 vGerstnerDydzAndVariance;
-#endif
-
-#ifdef WAVE_VERTEX_STAGE
-// `spacing`: the chunk's vertex step, m; `toEye`: from the vertex to the eye. A pixel there
-// spans about distance × uPixelAngle across the view and that over the sine of the grazing
-// angle along it; the longer side decides, as in the pixels (wavePixelFields).
-void waveVertexSlopes(vec2 gridXZ, float spacing, vec3 toEye) {
-  float distance = length(toEye);
-  float footprint = distance * uPixelAngle / max(abs(toEye.y) / distance, 1e-3);
-  vec4 horizontal = vec4(0.0);
-  float dydz = 0.0;
-  float variance = 0.0;
-  int first = 0;
-  for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
-    if (i >= uGerstnerCount || length(uGerstnerWaves[i].xy) * GERSTNER_VERTEX_WAVELENGTHS * spacing > 1.0) break;
-    float share = gerstnerShare(uGerstnerWaves[i], footprint);
-    gerstnerAddDerivatives(i, gerstnerTurns(uGerstnerWaves[i], gerstnerPhase(i), gridXZ), share, horizontal, dydz);
-    variance += share * share * gerstnerSlope(i);
-    first = i + 1;
-  }
-  vGerstnerFirstPixelWave = first;
-  vGerstnerHorizontal = horizontal;
-  vGerstnerDydzAndVariance = vec2(dydz, variance);
-}
-#endif
 
 #ifdef WAVE_FRAGMENT_STAGE
 // The pixel's footprint on the sea, m, read once at the top of ocean.frag's main (outside its
@@ -176,7 +204,7 @@ vec3 gerstnerNormal(vec2 p, bool near) {
   for (int i = vGerstnerFirstPixelWave; i < uGerstnerCount; i++) {
     float share = gerstnerShare(uGerstnerWaves[i], gerstnerFootprint);
     if (share <= 0.0) break;
-    gerstnerAddDerivatives(i, gerstnerTurns(uGerstnerWaves[i], near ? gerstnerNearPhase(i) : gerstnerPhase(i), p), share, horizontal, dydz);
+    gerstnerAddWave(i, p, near, share, horizontal, dydz);
     variance += share * share * gerstnerSlope(i);
   }
   gerstnerUnresolvedVariance = max(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - variance);

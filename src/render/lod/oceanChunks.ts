@@ -6,8 +6,8 @@ import { gridBandBatch } from './gridBandBatch';
 import { StripTiles } from './stripTiles';
 import type { DisplacementBounds } from '../../sim/waves/waveModel';
 import { ChunkSelector, OCEAN_EXTENT, type SelectionInput } from '../../sim/lod/chunkSelection';
-import { BASE_STEP, CHUNK_SIZE, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
-import { chunkGrid } from '../../sim/lod/chunkGrid';
+import { BASE_STEP, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS, refinedEdgeStep } from '../../sim/lod/lodBands';
+import { chunkGrid, squareGrid } from '../../sim/lod/chunkGrid';
 import { morphZones } from '../../sim/lod/lodMorph';
 import type { OceanMaterial } from '../ocean/oceanMaterial';
 
@@ -64,6 +64,13 @@ export class OceanChunks {
   private readonly lastKey = new Float64Array(SELECTION_KEY_LENGTH).fill(NaN);
   private readonly key = new Float64Array(SELECTION_KEY_LENGTH);
   private readonly zones = new Float32Array(MAX_LOD_BANDS * 2);
+  /**
+   * The nearest band's chunks with each quad split `refine` times per side, by refinement,
+   * made the first time a sea asks for it (update's `refine`), and those chunks' edge steps in
+   * their own units.
+   */
+  private readonly refined = new Map<number, ChunkBatch<OceanMaterial>>();
+  private readonly refinedEdges = new Float32Array(4);
 
   constructor(private readonly material: OceanMaterial) {
     const capacity = this.selector.total;
@@ -80,8 +87,10 @@ export class OceanChunks {
    * Chooses and uploads this frame's chunks for `camera` (or the frozen one).
    * `bounds`: how far the waves can move a vertex up or down and sideways (WaveModel.bounds()), metres.
    * `tiles` (a compare strip's camera): chunks straddling the frustum are drawn as the tiles that reach it (see StripTiles).
+   * `refine`: how many times per side the nearest band's quads are split (src/sim/lod/lodBands.ts
+   * nearBandRefinement), for a sea whose short steep waves the 2 m grid cannot draw; not in compare strips.
    */
-  update(camera: PerspectiveCamera, settings: LodSettings, bounds: DisplacementBounds, tiles = false): void {
+  update(camera: PerspectiveCamera, settings: LodSettings, bounds: DisplacementBounds, tiles = false, refine = 1): void {
     const view = this.view;
     view.update(camera, settings.freezeCulling);
     this.bandsInUse = settings.lodBruteForce ? 1 : settings.lodBands;
@@ -96,11 +105,13 @@ export class OceanChunks {
     input.bruteForce = settings.lodBruteForce;
     // A still camera over an unchanged sea chooses the same chunks: the last frame's
     // selection and uploads stand, and the frame's CPU work is only this comparison.
-    if (this.sameSelectionAsLastFrame(settings, tiles)) return;
+    if (tiles) refine = 1;
+    if (this.sameSelectionAsLastFrame(settings, tiles, refine)) return;
     selector.select(input);
     this.material.setLodMorph(view.eye, bounds.vertical, morphZones(settings.lodDistance, this.bandsInUse, settings.lodMorph, this.zones));
-    for (const batch of this.batches) batch.clear();
+    for (const batch of [...this.batches, ...this.refined.values()]) batch.clear();
     this.tiles.clear();
+    const nearBand = refine > 1 ? this.refinedBatch(refine) : this.batches[0];
     const side = selector.side;
     const { originX, originZ } = input;
     for (let n = 0; n < selector.count; n++) {
@@ -111,14 +122,27 @@ export class OceanChunks {
       const x = originX + i * CHUNK_SIZE;
       const z = originZ + j * CHUNK_SIZE;
       if (tiles && this.tiles.add(view.planes, band, x, z, selector.edgeSteps, n * 4, bounds)) continue;
-      this.batches[band].add(x, z, band, BASE_STEP, selector.edgeSteps, n * 4);
+      if (band === 0 && refine > 1) {
+        for (let e = 0; e < 4; e++) this.refinedEdges[e] = refinedEdgeStep(selector.edgeSteps[n * 4 + e], refine);
+        nearBand.add(x, z, 0, BASE_STEP / refine, this.refinedEdges, 0);
+      } else this.batches[band].add(x, z, band, BASE_STEP, selector.edgeSteps, n * 4);
     }
     this.tiles.commit();
-    for (const batch of this.batches) batch.commit();
+    for (const batch of [...this.batches, ...this.refined.values()]) batch.commit();
     this.far.update(view.planes, originX + OCEAN_EXTENT / 2, originZ + OCEAN_EXTENT / 2, bounds);
   }
 
-  private sameSelectionAsLastFrame(settings: LodSettings, tiles: boolean): boolean {
+  private refinedBatch(refine: number): ChunkBatch<OceanMaterial> {
+    let batch = this.refined.get(refine);
+    if (!batch) {
+      batch = gridBandBatch(squareGrid(1, CHUNK_QUADS * refine), this.material, 0, this.selector.total);
+      this.refined.set(refine, batch);
+      this.group.add(batch.mesh);
+    }
+    return batch;
+  }
+
+  private sameSelectionAsLastFrame(settings: LodSettings, tiles: boolean, refine: number): boolean {
     const key = this.key;
     const { planes, eye } = this.view;
     const input = this.selectionInput;
@@ -140,7 +164,7 @@ export class OceanChunks {
     key[k++] = settings.lodBands;
     key[k++] = settings.lodBruteForce ? 1 : 0;
     key[k++] = settings.lodMorph ? 1 : 0;
-    key[k++] = tiles ? 1 : 0;
+    key[k++] = tiles ? refine : -refine;
     let same = true;
     for (let n = 0; n < SELECTION_KEY_LENGTH; n++) same &&= key[n] === this.lastKey[n];
     this.lastKey.set(key);
@@ -155,7 +179,7 @@ export class OceanChunks {
 
   /** What each batch draws (bands, their tiles, then the far cells): its chunks' records (ChunkBatch.record), for tests. */
   drawnRecords(): number[][][] {
-    const batches = [...this.batches, ...this.tiles.batches, this.far.cells];
+    const batches = [...this.batches, ...this.refined.values(), ...this.tiles.batches, this.far.cells];
     return batches.flatMap((batch) => (batch && batch.mesh.visible ? [Array.from({ length: batch.count }, (_, n) => batch.record(n))] : []));
   }
 
@@ -169,7 +193,7 @@ export class OceanChunks {
   }
 
   dispose(): void {
-    for (const batch of this.batches) batch.dispose();
+    for (const batch of [...this.batches, ...this.refined.values()]) batch.dispose();
     this.tiles.dispose();
     this.far.dispose();
     this.view.dispose();

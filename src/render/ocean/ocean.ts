@@ -14,6 +14,7 @@ import { SeaBed } from '../underwater/seaBed';
 import { lightWithCaustics } from '../underwater/hullCaustics';
 import { fresnelTexture } from '../optics/dataTextures';
 import { WaveBinding } from '../waves/waveBinding';
+import { BASE_STEP, nearBandRefinement } from '../../sim/lod/lodBands';
 import { createWaveModelView, loadWaveModels, modelsDrawn, modelsMissing } from '../waves/waveViewRegistry';
 import type { WaveModelView } from '../waves/waveModelView';
 import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
@@ -355,7 +356,7 @@ export class Ocean extends Object3D {
    * chunk straddling it is drawn as only the tiles that reach it.
    */
   cull(camera: PerspectiveCamera, tiles = false): void {
-    this.chunks.update(camera, this.lod, this.cullingBounds(), tiles);
+    this.chunks.update(camera, this.lod, this.cullingBounds(), tiles, nearBandRefinement(this.waveView.finestVertexStep ?? BASE_STEP));
   }
 
   /** The culling bounds: the model's, grown by the wake's. */

@@ -4,7 +4,7 @@ import { SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/sunDisc';
 import { bodyColor } from '../../sim/optics/waterColor';
 import { crestScattering, PARTICLE_MEAN_COSINE } from '../../sim/optics/subsurfaceGlow';
 import { BLUR_MAX_TAPS } from '../underwater/blurLimits';
-import { BAND_STEPS, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
+import { BAND_STEPS, BASE_STEP, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
 import { GOD_RAY_RANGE } from '../underwater/godRayRange';
 import { DEPTH_DARKENING, WATER_EXTINCTION } from '../../sim/underwater/waterFog';
 
@@ -40,6 +40,7 @@ export function shaderConstantsChunk(): string {
     `#define PARTICLE_MEAN_COSINE ${glslFloat(PARTICLE_MEAN_COSINE)}`,
     `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
     `#define LOD_BAND_COUNT ${MAX_LOD_BANDS}`,
+    `#define LOD_BASE_STEP ${glslFloat(BASE_STEP)}`,
     `#define LOD_BAND_STEPS int[${BAND_STEPS.length}](${BAND_STEPS.join(', ')})`,
     `#define LOD_BAND_COLORS vec3[${LOD_BAND_COLORS.length}](${LOD_BAND_COLORS.map(glslVec3).join(', ')})`,
     '#endif',

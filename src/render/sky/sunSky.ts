@@ -5,7 +5,7 @@ import {
   CubeCamera,
   DataTexture,
   LinearFilter,
-  LinearMipmapLinearFilter,
+  LinearMipmapNearestFilter,
   LinearSRGBColorSpace,
   Mesh,
   RedFormat,
@@ -51,7 +51,7 @@ export class SunSky {
   constructor(size = 512) {
     // 8 bits a channel holding the colour's square root (shaders/skyCube.glsl says why), with
     // mipmaps: a rough sea reflects the sky blurred (skyCubeColorRough).
-    this.target = new WebGLCubeRenderTarget(size, { type: UnsignedByteType, generateMipmaps: true, minFilter: LinearMipmapLinearFilter, magFilter: LinearFilter });
+    this.target = new WebGLCubeRenderTarget(size, { type: UnsignedByteType, generateMipmaps: true, minFilter: LinearMipmapNearestFilter, magFilter: LinearFilter });
     this.target.texture.colorSpace = LinearSRGBColorSpace;
     this.target.texture.userData[SQUARE_ROOT_SKY] = true;
     const density = cloudDensityTile(CLOUD_TILE_SIZE);

@@ -45,6 +45,12 @@ export interface WaveModelView {
    * black), per texture. Absent: channel 0 (r), ±1 (the seed's Perlin maps).
    */
   readonly heightmapLayout?: HeightmapLayout;
+  /**
+   * The spacing, metres, the vertices near the eye need to draw the model's steepest short
+   * waves (src/sim/lod/lodBands.ts nearBandRefinement splits the nearest band's quads to reach
+   * it, down to 0.5 m). Absent: the grid's 2 m does.
+   */
+  readonly finestVertexStep?: number;
   /** Passes new parameters to the model and re-uploads whatever they changed. */
   setParams(params: OceanParams): void;
   /** Prepares the uniforms (and any GPU passes) for a frame at `time`, seconds. */

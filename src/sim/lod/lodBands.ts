@@ -64,3 +64,28 @@ export function bandHasDetailNormals(band: number): boolean {
 export function bandTriangles(band: number): number {
   return 2 * bandQuads(band) ** 2;
 }
+
+/**
+ * The most times the nearest band's quads may be split per side: vertices 0.5 m apart. A sea
+ * whose short waves are steep enough to show the trochoid's cusp asks for it
+ * (WaveModelView.finestVertexStep): with 2 m between vertices a 4 m crest is drawn from two
+ * vertices, and the per-pixel normal's back slopes show on the coarse triangles as pale
+ * shelves (docs/light.md, "Gerstner's terraces").
+ */
+export const MAX_REFINEMENT = 4;
+
+/** How many times per side the nearest band's quads are split for vertices at most `step` metres apart: 1, 2 or 4. */
+export function nearBandRefinement(step: number): number {
+  let refine = 1;
+  while (refine < MAX_REFINEMENT && BASE_STEP / refine > step) refine *= 2;
+  return refine;
+}
+
+/**
+ * An edge step shared with a neighbour (in full-resolution quads) in a refined chunk's own
+ * units: between two refined chunks every refined vertex is shared (1); toward a coarser
+ * band its vertices snap onto the neighbour's, `refine` times as many units apart.
+ */
+export function refinedEdgeStep(edgeStep: number, refine: number): number {
+  return edgeStep > BAND_STEPS[0] ? edgeStep * refine : 1;
+}

@@ -4,6 +4,7 @@ import type { GerstnerLiveModel } from '../../../sim/waves/gerstner/gerstnerLive
 import { GerstnerWaveUniforms } from './gerstnerWaveUniforms';
 import type { WaveModelView } from '../waveModelView';
 import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
+import { gerstnerFinestVertexStep } from '../../../sim/waves/gerstner/gerstnerVertexStep';
 
 /**
  * Gerstner's trochoids on the GPU: a table of at most 64 waves uploaded once per sea and 64
@@ -21,14 +22,21 @@ export class GerstnerWaveView implements WaveModelView {
 
   constructor(readonly model: GerstnerLiveModel) {
     this.table = new GerstnerWaveUniforms(model.waves);
+    this.finestVertexStep = gerstnerFinestVertexStep(model.waves);
   }
 
   get uniforms(): GerstnerWaveUniforms['uniforms'] {
     return this.table.uniforms;
   }
 
+  /** See WaveModelView: the steep short waves' need (gerstnerFinestVertexStep), for the sea of the last setParams. */
+  finestVertexStep = Infinity;
+
   setParams(params: OceanParams): void {
-    if (this.model.setParams(params)) this.table.setWaves(this.model.waves);
+    if (this.model.setParams(params)) {
+      this.table.setWaves(this.model.waves);
+      this.finestVertexStep = gerstnerFinestVertexStep(this.model.waves);
+    }
     this.table.setSeaSlopeVariance(seaSlopeVariance(params.windSpeed));
   }
 
