@@ -1,14 +1,14 @@
 /**
- * `npx tsx scripts/bench/coursePages.ts [dist folder…] [--shared] [--counts=6,20,30]`: what a
+ * `npx tsx scripts/bench/coursePages.ts [dist folder…] [--counts=6,20,30]`: what a
  * course page of 6, 20 and 30 <oceano-view> figures costs with each given build of dist/
  * (default: dist/). For each page it prints the time until the figures on the first screen are
- * drawn (`ready`), the time until the first figure's first frame (`load`), the time until every
+ * drawn (`ready`), the time until the first figure's first frame (`load`) and its `ready`, until every
  * figure that starts by itself is drawn, the WebGL contexts alive (and the most at once), the
  * contexts the browser took away, the JavaScript heap after a garbage collection (and less V8's
  * compiled code), and the time to draw every figure on screen once with the GPU (median); then
- * it scrolls to the bottom and back and prints the same again. `--shared` measures the same
- * chapters drawn through one shared renderer (scripts/bench/sharedRenderer/, a prototype).
- * Figures only, no thresholds: docs/course-pages.md keeps the results.
+ * it scrolls to the bottom and back and prints the same again; and the same for the build's
+ * course page. Figures only, no thresholds: docs/course-pages.md keeps the results (and how to
+ * bring back the shared-renderer prototype this measured beside them).
  */
 import { cpSync, existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -17,10 +17,9 @@ import puppeteer, { type Browser, type Page } from 'puppeteer';
 import { BROWSER_ARGS, findBrowser } from '../../tests/browser/harness';
 import { serveFolder } from '../../tests/browser/staticServer';
 import { presetNames } from '../../src/app/url/presets';
-import { build } from 'vite';
 import { heapFigures, heapLessCode } from '../../tests/browser/heapFigures';
 
-const COUNTS = (process.argv.find((a) => a.startsWith('--counts='))?.slice('--counts='.length) ?? '6,20,30').split(',').map(Number);
+const COUNTS = (process.argv.find((a) => a.startsWith('--counts='))?.slice('--counts='.length) ?? '6,20,30').split(',').filter(Boolean).map(Number);
 const FRAMES = 9;
 const VIEWPORT = { width: 1280, height: 720 };
 
@@ -107,12 +106,13 @@ async function openPage(browser: Browser): Promise<{ page: Page; tooMany: () => 
 async function measure(browser: Browser, url: string, count: number) {
   const { page, tooMany } = await openPage(browser);
   const start = performance.now();
-  await page.evaluateOnNewDocument(`document.addEventListener('load', (e) => { if (e.target.localName === 'oceano-view') window.__firstLoad ??= performance.now(); }, true);`);
+  await page.evaluateOnNewDocument(`for (const type of ['load', 'ready']) document.addEventListener(type, (e) => { if (e.target.localName === 'oceano-view') window['__first_' + type] ??= performance.now(); }, true);`);
   await page.goto(url, { waitUntil: 'load' });
   const firstScreenS = await secondsUntilReady(page, start, ON_SCREEN);
-  // The first figure's first frame, from the page's own clock (navigation start).
-  const firstFrameS = Math.round(((await page.evaluate('window.__firstLoad')) as number) / 100) / 10;
   const allStartedS = await secondsUntilReady(page, start, STARTED);
+  // The first figure's first frame and its complete picture, from the page's own clock (navigation start).
+  const pageSeconds = async (name: string) => Math.round(((await page.evaluate(`window.__first_${name}`)) as number) / 100) / 10;
+  const [firstFrameS, firstReadyS] = [await pageSeconds('load'), await pageSeconds('ready')];
   const frameMs = (await page.evaluate(ELEMENT_FRAME_MS)) as number;
   const loaded = await snapshot(page, tooMany());
   const bottom = (await page.evaluate('document.documentElement.scrollHeight - innerHeight')) as number;
@@ -122,47 +122,16 @@ async function measure(browser: Browser, url: string, count: number) {
   }
   await page.evaluate('window.scrollTo(0, 0)');
   await secondsUntilReady(page, start, ON_SCREEN);
+  // Every figure still starting (near the screen, not on it) done too: a start's passing allocations are not what stays.
+  await secondsUntilReady(page, start, STARTED);
   const scrolled = await snapshot(page, tooMany());
   await page.close();
-  return { count, firstFrameS, firstScreenS, allStartedS, frameMs, loaded, afterScroll: scrolled };
-}
-
-/** The prototype's page (scripts/bench/sharedRenderer/), built by Vite into a folder of its own. */
-async function buildShared(): Promise<string> {
-  const folder = mkdtempSync(join(tmpdir(), 'oceano-shared-'));
-  await build({ configFile: false, root: resolve('scripts/bench/sharedRenderer'), base: './', logLevel: 'warn', build: { outDir: folder, emptyOutDir: true, target: 'es2022', chunkSizeWarningLimit: 2000 } });
-  return folder;
-}
-
-async function measureShared(browser: Browser, url: string, count: number) {
-  const { page, tooMany } = await openPage(browser);
-  const start = performance.now();
-  await page.goto(`${url}index.html?count=${count}`, { waitUntil: 'load' });
-  await page.waitForFunction('window.shared');
-  const drawn = async () => {
-    await page.evaluate('window.shared.onScreenDrawn()');
-    return Math.round((performance.now() - start) / 100) / 10;
-  };
-  const firstScreenS = await drawn();
-  const frameMs = Math.round(((await page.evaluate(`window.shared.frameMs(${FRAMES})`)) as number) * 10) / 10;
-  const loaded = await snapshot(page, tooMany());
-  const bottom = (await page.evaluate('document.documentElement.scrollHeight - innerHeight')) as number;
-  for (let y = VIEWPORT.height; y < bottom + VIEWPORT.height; y += VIEWPORT.height) {
-    await page.evaluate(`window.scrollTo(0, ${Math.min(y, bottom)})`);
-    await drawn();
-  }
-  await page.evaluate('window.scrollTo(0, 0)');
-  await drawn();
-  const scrolled = await snapshot(page, tooMany());
-  const programs = await page.evaluate('window.shared.programs()');
-  await page.close();
-  return { count, firstScreenS, frameMs, programs, loaded, afterScroll: scrolled };
+  return { count, firstFrameS, firstReadyS, firstScreenS, allStartedS, frameMs, loaded, afterScroll: scrolled };
 }
 
 async function main(): Promise<void> {
   const builds = process.argv.slice(2).filter((a) => !a.startsWith('--'));
-  const shared = process.argv.includes('--shared');
-  if (builds.length === 0 && !shared) builds.push('dist');
+  if (builds.length === 0) builds.push('dist');
   const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true, protocolTimeout: 1_200_000 });
   try {
     for (const dist of builds) {
@@ -178,16 +147,6 @@ async function main(): Promise<void> {
           const figures = (readFileSync(join(folder, 'course', 'index.html'), 'utf8').match(/<oceano-view /g) ?? []).length;
           console.log(JSON.stringify({ build: dist, page: 'course/index.html', ...(await measure(browser, `${url}course/index.html?lang=en`, figures)) }));
         }
-      } finally {
-        server.close();
-        rmSync(folder, { recursive: true, force: true });
-      }
-    }
-    if (shared && existsSync('scripts/bench/sharedRenderer')) {
-      const folder = await buildShared();
-      const { server, url } = await serveFolder(folder, '/shared/');
-      try {
-        for (const count of COUNTS) console.log(JSON.stringify({ build: 'shared renderer (prototype)', ...(await measureShared(browser, url, count)) }));
       } finally {
         server.close();
         rmSync(folder, { recursive: true, force: true });

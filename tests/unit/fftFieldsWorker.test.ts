@@ -84,6 +84,8 @@ describe('WorkerFieldSource: one request in flight, the newest waiting, the arra
 
   it('asks once per time, keeps only the newest request while one is in flight, and sends the recycled arrays with the next', () => {
     vi.stubGlobal('Worker', FakeWorker);
+    // A page that serves the Worker's script itself, as the app's does: its origin is the script's.
+    vi.stubGlobal('location', { origin: new URL(import.meta.url).origin });
     const delivered: { sea: unknown; time: number; fields: CascadeFields[] }[] = [];
     const spent: number[] = [];
     const source = new WorkerFieldSource((sea, time, fields) => delivered.push({ sea, time, fields }), (ms) => spent.push(ms));

@@ -16,8 +16,9 @@ function files(dir: string): string[] {
 
 /**
  * Every way a module names another here: `import … from`, `export … from`, a bare
- * `import '…'`, a dynamic `import('…')` (and so `typeof import('…')`), and the Worker's entry,
- * `new URL('…', import.meta.url)`. Each alternative captures the specifier in group 1.
+ * `import '…'`, a dynamic `import('…')` (and so `typeof import('…')`), and a Worker's entry,
+ * `new URL('…', import.meta.url)` or Vite's `import url from '…?worker&url'`. Each alternative
+ * captures the specifier in group 1.
  */
 const IMPORT_FORMS = [
   /^\s*(?:import|export)\s[^;]*?from\s+['"]([^'"]+)['"]/gm,
@@ -36,7 +37,7 @@ function importTargets(path: string, source: string): string[] {
   return importSpecifiers(source).map((spec) => {
     if (!spec.startsWith('.')) return spec;
     // `../sim/params` is the file `../sim/params.ts`; shaders and styles keep their extension.
-    const file = relative(ROOT, resolve(ROOT, dirname(path), spec.replace(/\?raw$/, '')));
+    const file = relative(ROOT, resolve(ROOT, dirname(path), spec.replace(/\?(raw|worker&url)$/, '')));
     return /\.[a-z]+$/.test(file) ? file : `${file}.ts`;
   });
 }
