@@ -35,8 +35,9 @@ export const LOD_COLOUR_VIEWS: ReferenceView[] = [
  */
 export function presetView(name: string): ReferenceView {
   // The interactive waves run every step since their first stone (or 10 s of the boat) before
-  // the first frame: 4 s of them, 240 steps, take a minute on SwiftShader, 10 s three.
-  const t = (PRESETS[name as PresetName]?.params as { interactiveWaves?: boolean } | undefined)?.interactiveWaves ? 4 : 10;
+  // the first frame: 3 s of them, 180 steps, take about a minute on SwiftShader, 10 s minutes,
+  // past the page's waits.
+  const t = (PRESETS[name as PresetName]?.params as { interactiveWaves?: boolean } | undefined)?.interactiveWaves ? 3 : 10;
   return name === 'fresnel'
     ? { name: 'preset-fresnel-page', query: 'preset=fresnel&t=10', width: 640, height: 360, wholePage: true }
     : { name: `preset-${name}`, query: `preset=${name}&t=${t}`, width: 640, height: 360 };

@@ -17,8 +17,9 @@ const drivenSeconds = full ? 600 : 60;
 const quietSeconds = 30;
 
 /**
- * The field's energy per unit density and area element, J/(kg/m³): kinetic ½ Σ ((h − h⁻)/Δt)² Δx²
- * and potential ½ Σ (g/Δx) h (G ∗ h) Δx², the quantity ∂²h/∂t² = −g √(−∇²) h keeps.
+ * The quadratic quantity ∂²h/∂t² = −g √(−∇²) h keeps, m⁴/s²: ½ Σ ((h − h⁻)/Δt)² Δx² plus
+ * ½ Σ (g/Δx) h (G ∗ h) Δx² (the kernel's response is positive, so both terms are). Damping,
+ * the sponge and the sources change it; nothing else does.
  */
 function energy(grid: IWaveGrid, dt: number): number {
   const convolved = new Float64Array(grid.height.length);
@@ -66,7 +67,7 @@ describe('the interactive field over a long run', () => {
     }
     const drivenWindows = windows.slice(0, drivenSeconds / 10);
     const settled = drivenWindows.slice(3);
-    console.log(`iWave ${n}², ${drivenSeconds} s driven: energy per 10 s window ${drivenWindows.map((e) => e.toFixed(3)).join(', ')} J/(kg/m³); largest ${largest.toFixed(3)}; at the stop ${atStop.toFixed(3)}, ${quietSeconds} s later ${windows.at(-1)!.toFixed(4)}`);
+    console.log(`iWave ${n}², ${drivenSeconds} s driven: energy per 10 s window ${drivenWindows.map((e) => e.toFixed(3)).join(', ')} m⁴/s²; largest ${largest.toFixed(3)}; at the stop ${atStop.toFixed(3)}, ${quietSeconds} s later ${windows.at(-1)!.toFixed(4)}`);
     // Bounded: once the sources have run 30 s, no window holds twice the middle one (a stone that
     // falls into the bow wave makes a spike), and the last third of them no more than the first
     // third give or take a quarter: a blow-up grows without end.

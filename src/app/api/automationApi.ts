@@ -37,7 +37,8 @@ export interface OceanoApi {
   /**
    * Drops a stone into the interactive waves (interactiveWaves on) at world (x, z): a bump of
    * `height` m (default 0.3, negative for a dip) and `radius` m (default 1). Bad arguments throw
-   * and change nothing; returns notices (a radius under one texel is raised to one texel).
+   * and change nothing; returns notices (a radius under one texel is raised to one texel). The
+   * page shows either in a notice too, in its language.
    */
   disturb(x: number, z: number, options?: { radius?: number; height?: number }): string[];
   /**
