@@ -132,9 +132,7 @@ vec3 waveVertexDisplacement(vec2 gridXZ) {
   float variance = 0.0;
   int first = 0;
   for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
-    // A wave shorter than two vertex steps cannot be drawn by the mesh, only aliased: far
-    // chunks leave it to the pixels' normals (and to the roughness once they too cannot).
-    if (i >= uGerstnerCount || length(uGerstnerWaves[i].xy) * 2.0 * waveVertexSpacing > 1.0) break;
+    if (i >= uGerstnerCount) break;
     vec4 wave = uGerstnerWaves[i];
     float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
     float s = sinTurns(turns);
