@@ -14,7 +14,7 @@ const FOLDERS: { title: UiTextId; keys: ParamKey[] }[] = [
   { title: 'folderGerstner', keys: ['gerstnerCount', 'gerstnerSteepness'] },
   { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },
   { title: 'folderPhysics', keys: ['physics'] },
-  { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel'] },
+  { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'seaRoughness'] },
   { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide', 'interactiveWaves'] },
   { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
   { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'lodMorph', 'freezeCulling', 'lodBruteForce'] },
