@@ -271,6 +271,14 @@ void main() {
     return;
   }
 #endif
+  // The slopes the normal does not show, Cox & Munk's σ² less what the model resolves here:
+  // they blur the sky's reflection and spread the sun's glint alike. A lesson of a windless
+  // mirror (seaRoughness off) keeps only the sun's disc.
+#ifdef OCEAN_SMOOTH_SEA
+  float roughness = SUN_DISC_SLOPE_VARIANCE;
+#else
+  float roughness = waveUnresolvedSlopeVariance();
+#endif
   float cosIncidence = max(dot(n, v), 0.0);
 
   float reflectance = uFresnelEnabled ? fresnelLookup(uFresnelTable, cosIncidence) : 0.5;
@@ -278,9 +286,7 @@ void main() {
   vec3 r = reflect(-v, n);
   // A reflected ray that points below the horizon would see the sea, not the sky.
   r.y = max(r.y, 0.0);
-  // The slopes the normal does not show, Cox & Munk's σ² less what the model resolves here:
-  // they blur the sky's reflection and spread the sun's glint alike.
-  float roughness = waveUnresolvedSlopeVariance();
+  // The sky blurred by the roughness below the pixel (above).
   vec3 sky = skyCubeColorRough(r, roughness);
 
 #ifdef OCEAN_WATER_OPTICS

@@ -24,9 +24,10 @@ vec3 skyCubeColor(vec3 direction) {
 // √(variance / 2) per axis and turn the reflected ray by twice that, √(2 variance); the mip
 // level whose box of texels spreads as far is read: a box w wide spreads w / √12, and a face
 // of `size` texels spans π/2, so w = size √(24 variance) / (π/2) = size √(9.73 variance)
-// texels (textureLod takes a level below 0 as 0). The cube's mips are plain 2×2 means
-// (src/render/sky/sunSky.ts), of square roots for the default sky: where the sky changes fast
-// the mean comes out a little dark.
+// texels, level log2 w. The two levels around it are blended here (perf: the cube is sampled
+// from one level, LinearMipmapNearest, since SwiftShader's own trilinear filter cost more than
+// two reads, docs/light.md). The cube's mips are plain 2×2 means (src/render/sky/sunSky.ts), of
+// square roots for the default sky: where the sky changes fast the mean comes out a little dark.
 vec3 skyCubeColorRough(vec3 direction, float variance) {
   float lod = max(log2(float(textureSize(uSky, 0).x) * sqrt(9.73 * variance)), 0.0);
   vec3 d = vec3(uSkyFlip * direction.x, direction.y, direction.z);

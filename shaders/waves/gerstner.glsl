@@ -122,7 +122,7 @@ vec3 waveDisplacement(vec2 gridXZ) {
 // derivatives of the waves the vertices may interpolate (see GERSTNER_VERTEX_SLOPE_ERROR), each
 // by the share a pixel there resolves: a pixel spans about distance × uPixelAngle across the
 // view and that over the sine of the grazing angle along it; the longer side decides, as in
-// the pixels. No branch: a software rasterizer runs both sides of one (docs/shader-notes.md).
+// the pixels. The first loop ends at the same wave for a whole chunk (its vertex step is one).
 vec3 waveVertexDisplacement(vec2 gridXZ) {
   float distance = length(waveVertexToEye);
   float footprint = distance * uPixelAngle / max(abs(waveVertexToEye.y) / distance, 1e-3);
@@ -130,11 +130,29 @@ vec3 waveVertexDisplacement(vec2 gridXZ) {
   vec4 horizontal = vec4(0.0);
   float dydz = 0.0;
   float variance = 0.0;
-  int first = 0;
-  for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
-    // A wave shorter than two vertex steps cannot be drawn by the mesh, only aliased: far
-    // chunks leave it to the pixels' normals (and to the roughness once they too cannot).
-    if (i >= uGerstnerCount || length(uGerstnerWaves[i].xy) * 2.0 * waveVertexSpacing > 1.0) break;
+  int i = 0;
+  // The long waves: displacement and derivatives, until the first a triangle cannot interpolate.
+  for (; i < GERSTNER_MAX_WAVES; i++) {
+    if (i >= uGerstnerCount) break;
+    vec4 wave = uGerstnerWaves[i];
+    float cycles = length(wave.xy);
+    float ks = TURN_RADIANS * cycles * waveVertexSpacing;
+    if (max(wave.z, wave.w) * TURN_RADIANS * cycles * ks * ks > 4.0 * GERSTNER_VERTEX_SLOPE_ERROR) break;
+    float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
+    float s = sinTurns(turns);
+    float c = sinTurns(turns + 0.25);
+    vec2 dir = wave.xy / cycles;
+    d.x -= wave.w * dir.x * s;
+    d.z -= wave.w * dir.y * s;
+    d.y += wave.z * c;
+    float share = gerstnerShare(wave, footprint);
+    gerstnerAddDerivatives(wave, s, c, share, horizontal, dydz);
+    variance += share * share * gerstnerSlope(i);
+  }
+  vGerstnerFirstPixelWave = i;
+  // The rest: displacement only (their slopes are the pixels').
+  for (; i < GERSTNER_MAX_WAVES; i++) {
+    if (i >= uGerstnerCount) break;
     vec4 wave = uGerstnerWaves[i];
     float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
     float s = sinTurns(turns);
@@ -143,15 +161,7 @@ vec3 waveVertexDisplacement(vec2 gridXZ) {
     d.x -= wave.w * dir.x * s;
     d.z -= wave.w * dir.y * s;
     d.y += wave.z * c;
-    float k = TURN_RADIANS * length(wave.xy);
-    float ks = k * waveVertexSpacing;
-    bool perVertex = first == i && max(wave.z, wave.w) * k * ks * ks <= 4.0 * GERSTNER_VERTEX_SLOPE_ERROR;
-    float share = perVertex ? gerstnerShare(wave, footprint) : 0.0;
-    gerstnerAddDerivatives(wave, s, c, share, horizontal, dydz);
-    variance += share * share * gerstnerSlope(i);
-    first = perVertex ? i + 1 : first;
   }
-  vGerstnerFirstPixelWave = first;
   vGerstnerHorizontal = horizontal;
   vGerstnerDydzAndVariance = vec2(dydz, variance);
   return d;

@@ -107,6 +107,8 @@ describe('LOD and culling in the browser', () => {
     { name: 'grazing, default bands', query: 'seed=1&t=10', position: [0, 1.5, 0], target: [70, 0.4, -100], size: [1280, 720] },
     { name: 'grazing, L = 10 m (neighbours several bands apart)', query: 'seed=2&t=3&lodDistance=10', position: [5, 2, 11], target: [-90, 0.2, -120], size: [960, 540] },
     { name: 'from 60 m, L = 30 m', query: 'seed=3&t=7&lodDistance=30&swellAmplitude=3', position: [13, 60, 7], target: [200, 0, -300], size: [960, 540] },
+    // The nearest band's quads split to 0.5 m (steep Gerstner waves) beside the 4 m band past it.
+    { name: 'Gerstner, the nearest band split (gerstner-steepness)', query: 'preset=gerstner-steepness&t=10', position: [-30, 4, 4], target: [40, 0.3, -100], size: [960, 540] },
   ];
   for (const view of crackViews) {
     it(`shows no background through the sea (crack test: ${view.name})`, async () => {

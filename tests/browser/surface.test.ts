@@ -63,9 +63,12 @@ describe('the ocean page', () => {
       });
       return [atTen, atTwenty, await canvasPng(page)];
     });
-    // The sky fills half the frame and does not move: the sea's half must change.
-    expect(diffPngs(base, later).share).toBeGreaterThan(0.03);
-    expect(diffPngs(base, reseeded).share).toBeGreaterThan(0.03);
+    // The sky fills half the frame and does not move: the sea's half must change. Since the
+    // sky's reflection is blurred by the roughness Cox & Munk leave beyond the seed's own slopes
+    // (docs/light.md), the ripples move about 2.2 % of the pixels past pixelmatch's threshold
+    // (6–7 % with a mirror sky).
+    expect(diffPngs(base, later).share).toBeGreaterThan(0.01);
+    expect(diffPngs(base, reseeded).share).toBeGreaterThan(0.01);
   });
 
   it('makes the README screenshot at 1280×720 and records its frame time', async () => {

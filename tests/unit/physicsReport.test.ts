@@ -15,7 +15,7 @@ function gerstnerReport(windSpeed: number) {
   const params = { ...defaultParams(), waves: 'gerstner' as const, windSpeed, spectrum: 'pierson-moskowitz' as const };
   const model = new GerstnerLiveModel(params);
   return measurePhysics(
-    { name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params), slopeVariance: () => model.slopeVariance(), windSpeed },
+    { name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params), slopeVariance: () => model.slopeVariance(), windSpeed, seaRoughness: true },
     100,
   );
 }
@@ -50,7 +50,7 @@ describe('the physics panel\'s report on the Gerstner sea (PM, seed 1, 32 waves,
         dispersion: wrong,
       }),
     );
-    const r = measurePhysics({ name: 'gerstner', height: (x, z, t) => model.sample(x, z, t).height, sea, slopeVariance: () => 0, windSpeed: 3 }, 100);
+    const r = measurePhysics({ name: 'gerstner', height: (x, z, t) => model.sample(x, z, t).height, sea, slopeVariance: () => 0, windSpeed: 3, seaRoughness: true }, 100);
     // At U = 3 m/s the waves are short (k ≈ 1 rad/m), where the slip doubles ω² .
     expect(r.dispersion.fitRatio).toBeGreaterThan(1.2);
   }, SLOW);
@@ -72,7 +72,7 @@ describe('the seed model', () => {
     const params = defaultParams();
     const model = new SeedWaveModel(params);
     const r = measurePhysics(
-      { name: 'seed', height: (x, z, t) => model.height(x, z, t), sea: { swellWavenumber: params.swellFrequency }, slopeVariance: (t) => model.slopeVariance(t), windSpeed: params.windSpeed },
+      { name: 'seed', height: (x, z, t) => model.height(x, z, t), sea: { swellWavenumber: params.swellFrequency }, slopeVariance: (t) => model.slopeVariance(t), windSpeed: params.windSpeed, seaRoughness: true },
       10,
     );
     expect(r.spectrum.theory).toBeNull();
@@ -92,7 +92,7 @@ describe('the slopes row: resolved + roughness against Cox & Munk', () => {
   const flat = (slopeVariance: number, windSpeed: number) => {
     const params = { ...defaultParams(), waves: 'gerstner' as const, windSpeed };
     const model = new GerstnerLiveModel(params);
-    return measurePhysics({ name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params), slopeVariance: () => slopeVariance, windSpeed }, 100);
+    return measurePhysics({ name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params), slopeVariance: () => slopeVariance, windSpeed, seaRoughness: true }, 100);
   };
 
   it('the roughness makes up Cox & Munk’s σ² at 5 and 15 m/s (0.02911, 0.08134); control: slopes steeper than Cox & Munk’s are shown above it, with a note', () => {

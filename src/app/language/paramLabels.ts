@@ -36,6 +36,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   sunAzimuth: 'Acimut del sol',
   waterColor: 'Color del agua profunda',
   fresnel: 'Fresnel',
+  seaRoughness: 'Rugosidad (Cox y Munk)',
   wireframe: 'Malla de alambre',
   shading: 'Sombreado',
   normals: 'Normales',

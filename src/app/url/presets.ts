@@ -25,9 +25,12 @@ export const PRESETS = {
     params: { swellAmplitude: 0, rippleStrength: 0, wireframe: true },
     camera: { position: [0, 45, 30], target: [0, 0, -10] },
   },
-  /** No swell, no ripples: the sea is a mirror, so what it shows is the reflected sky (and Fresnel). */
+  /**
+   * No swell, no ripples, no wind: the sea is a mirror (seaRoughness off: no slope below the
+   * pixel but the sun's disc), so what it shows is the reflected sky (and Fresnel).
+   */
   'still-ocean': {
-    params: { swellAmplitude: 0, rippleStrength: 0 },
+    params: { swellAmplitude: 0, rippleStrength: 0, seaRoughness: false },
     camera: { position: [0, 6, 40], target: [0, 2, -60] },
   },
   /** "Texturas y heightmaps": the two Perlin heightmaps as the vertex shader receives them. */
@@ -50,14 +53,14 @@ export const PRESETS = {
     params: { shading: 'normals', swellAmplitude: 2.5, swellFrequency: 0.08 },
     camera: { position: [0, 25, 40], target: [0, 0, -30] },
   },
-  /** "Frecuencia y amplitud normales": the swell alone at its default frequency and amplitude. */
+  /** "Frecuencia y amplitud normales": the swell alone at its default frequency and amplitude, no wind on it (seaRoughness off). */
   'swell-normal': {
-    params: { rippleStrength: 0 },
+    params: { rippleStrength: 0, seaRoughness: false },
     camera: { position: [0, 12, 40], target: [0, 0, -60] },
   },
-  /** "Máxima frecuencia y amplitud": the swell alone at the top of both ranges. */
+  /** "Máxima frecuencia y amplitud": the swell alone at the top of both ranges, no wind on it. */
   'swell-maximum': {
-    params: { rippleStrength: 0, swellAmplitude: 4, swellFrequency: 0.2 },
+    params: { rippleStrength: 0, swellAmplitude: 4, swellFrequency: 0.2, seaRoughness: false },
     camera: { position: [0, 12, 40], target: [0, 0, -60] },
   },
   /** The Fresnel table the shader samples, plotted against Schlick's approximation, over the sea. */
@@ -147,18 +150,18 @@ export const PRESETS = {
     camera: { position: [35, 9, 40], target: [35, 0, -60] },
   },
   /**
-   * The Cuña de Kelvin: a boat at 4 m/s (Fr = 0.45 for its 8 m hull) on a calm sea, seen from
+   * The Cuña de Kelvin: a boat at 4 m/s (Fr = 0.45 for its 8 m hull) on a calm, windless sea, seen from
    * 60 m up. The wake's sources lie along the boat's track (src/sim/wake/kelvinWake.ts); its cusps
    * fall on the ±19.47° lines that `wakeGuide=1` draws over it. The foam marks the hull's
    * trail and the bow wave.
    */
   'kelvin-wake': {
-    params: { swellAmplitude: 0, rippleStrength: 0.05, wake: true, boatSpeed: 4, boatHeading: 270, sunElevation: 25, sunAzimuth: 300 },
+    params: { swellAmplitude: 0, rippleStrength: 0.05, seaRoughness: false, wake: true, boatSpeed: 4, boatHeading: 270, sunElevation: 25, sunAzimuth: 300 },
     camera: { position: [60, 60, 60], target: [60, 0, -10] },
   },
   /** The same boat holding a 3 °/s turn to starboard (a 76 m radius): the wake follows the curved track, not a straight wedge. */
   'wake-turn': {
-    params: { swellAmplitude: 0, rippleStrength: 0.05, wake: true, boatSpeed: 4, boatHeading: 270, boatTurnRate: 3, sunElevation: 25, sunAzimuth: 300 },
+    params: { swellAmplitude: 0, rippleStrength: 0.05, seaRoughness: false, wake: true, boatSpeed: 4, boatHeading: 270, boatTurnRate: 3, sunElevation: 25, sunAzimuth: 300 },
     camera: { position: [50, 110, 70], target: [50, 0, -50] },
   },
   // Interactive waves (iWave, src/sim/iwave/): a height field stepped in time, where a stone or the boat makes waves.

@@ -38,7 +38,7 @@ export interface OceanOptions {
 }
 
 /** The parameters an ocean material shows (every model's material of a comparison alike). */
-const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface'];
+const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'seaRoughness', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface'];
 
 /**
  * The ocean as a three.js object: add it to your scene, call `update(time, camera)` before
@@ -463,6 +463,7 @@ export function applyLook(material: OceanMaterial, params: OceanParams): void {
   material.setWaterColor(params.waterColor);
   material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
   material.setFresnelEnabled(params.fresnel);
+  material.setSmoothSea(!params.seaRoughness);
   material.setWireframe(params.wireframe);
   material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
   material.setNormalsCompare(params.normalsCompare);

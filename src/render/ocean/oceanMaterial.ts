@@ -180,6 +180,11 @@ export class OceanMaterial extends ShaderMaterial {
     this.uniforms.uFresnelEnabled.value = enabled;
   }
 
+  /** seaRoughness off: no slopes below the pixel but the sun's disc (OCEAN_SMOOTH_SEA, compiled in or out). */
+  setSmoothSea(smooth: boolean): void {
+    this.setDefine('OCEAN_SMOOTH_SEA', smooth);
+  }
+
   /** The chunk grid's centre this frame, where the far rings' fade is measured from. */
   setOceanCenter(x: number, z: number): void {
     (this.uniforms.uOceanCenter.value as Vector2).set(x, z);

@@ -32,7 +32,7 @@ export interface RenderStats extends ChunkStats {
   composerPasses: number;
 }
 
-const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors'];
+const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'seaRoughness', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors'];
 
 /**
  * The app's view, built on the library's Ocean: its own renderer, scene and camera, the

@@ -79,6 +79,10 @@ export const paramDefs = {
   sunAzimuth: { kind: 'number', default: 20, min: 0, max: 360, step: 1, unit: '°', label: 'Sun azimuth' },
   waterColor: { kind: 'color', default: '#06283a', label: 'Deep water colour' },
   fresnel: { kind: 'boolean', default: true, label: 'Fresnel' },
+  // The slopes the picture does not show (Cox & Munk's σ² for the wind less the model's own)
+  // as the roughness of the sun's glint and the sky's reflection (docs/light.md); off, a mirror
+  // but for the sun's disc, as the seed's lessons of a windless sea show it.
+  seaRoughness: { kind: 'boolean', default: true, label: 'Roughness (Cox & Munk)' },
   wireframe: { kind: 'boolean', default: false, label: 'Wireframe' },
   boatSpeed: { kind: 'number', default: 0, min: -3, max: 12, step: 0.1, unit: 'm/s', label: 'Boat speed' },
   boatHeading: { kind: 'number', default: 290, min: 0, max: 360, step: 1, unit: '°', label: 'Boat heading' },

@@ -16,7 +16,7 @@ import type { LiveWaveModel } from '../waves/waveModel';
 import type { OceanParams } from '../params/params';
 import { frequencySpectrum } from '../waves/spectra/waveSpectrum';
 import { seaSlopeVariance, windAtHeight } from '../optics/coxMunk';
-import { unresolvedSlopeVariance } from '../optics/resolvedSlopes';
+import { SUN_DISC_SLOPE_VARIANCE, unresolvedSlopeVariance } from '../optics/resolvedSlopes';
 
 /**
  * The physics panel's figures: the running sea measured through its CPU twin (heights above
@@ -91,12 +91,14 @@ export interface MeasuredSea {
   slopeVariance(time: number): number;
   /** U₁₀, m/s: the wind the glint's roughness is read for (the seed's waves follow none, its glint does). */
   windSpeed: number;
+  /** Whether the picture adds that roughness (params.seaRoughness): off, only the sun's disc. */
+  seaRoughness: boolean;
 }
 
 /** The running sea as the estimators see it: heights above world points from the CPU twin. */
 export function measuredSea(model: LiveWaveModel, params: OceanParams): MeasuredSea {
   const height = (x: number, z: number, t: number) => model.height(x, z, t);
-  const slopes = { slopeVariance: (t: number) => model.slopeVariance(t), windSpeed: params.windSpeed };
+  const slopes = { slopeVariance: (t: number) => model.slopeVariance(t), windSpeed: params.windSpeed, seaRoughness: params.seaRoughness };
   if (model.name === 'seed') return { name: 'seed', height, sea: { swellWavenumber: params.swellFrequency }, ...slopes };
   return { name: model.name, height, sea: seaStateFromParams(params), ...slopes };
 }
@@ -204,8 +206,10 @@ export function measurePhysics(measured: MeasuredSea, time: number): PhysicsRepo
   const notes: string[] = [];
   const resolved = measured.slopeVariance(time);
   const coxMunk = seaSlopeVariance(measured.windSpeed);
-  const roughness = unresolvedSlopeVariance(coxMunk, resolved);
-  if (resolved > coxMunk) {
+  const roughness = measured.seaRoughness ? unresolvedSlopeVariance(coxMunk, resolved) : SUN_DISC_SLOPE_VARIANCE;
+  if (!measured.seaRoughness) {
+    notes.push('Roughness is off (seaRoughness): the sea is drawn as a mirror but for the sun’s disc, whatever the wind.');
+  } else if (resolved > coxMunk) {
     notes.push(
       `The ${measured.name} sea’s own slopes (σ² = ${resolved.toFixed(4)}) exceed Cox & Munk’s for this wind (${coxMunk.toFixed(4)}): its glint gets no roughness but the sun’s disc, and the total sits above the measured sea’s.`,
     );
