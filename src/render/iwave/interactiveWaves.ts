@@ -4,6 +4,10 @@ import { IWAVE_DAMPING, IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE
 import type { Disturbance } from '../../sim/iwave/iwaveGrid';
 
 import type { InteractiveWaveUniforms } from './interactiveWaveUniforms';
+import iwave from '../../../shaders/iwave.glsl?raw';
+
+/** The field's GLSL for the ocean's vertices (chunk `oceano_iwave`, src/render/shaders/lateChunks.ts): it comes with this code. */
+export const iwaveChunk = iwave;
 
 export type { InteractiveWaveUniforms };
 

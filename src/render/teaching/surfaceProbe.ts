@@ -17,6 +17,7 @@ import fragmentShader from '../../../shaders/probe.frag?raw';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import type { WaveBinding } from '../waves/waveBinding';
 import type { WakeUniforms } from '../wake/wakeUniforms';
+import { wakeChunk } from '../wake/wakeChunk';
 
 const TARGET_WIDTH = 256;
 
@@ -40,6 +41,8 @@ export class SurfaceProbe {
     private readonly waves: WaveBinding,
     wake: WakeUniforms,
   ) {
+    // probe.vert adds the wake wherever it is on: its GLSL comes with this code.
+    waves.late.provide('oceano_wake', wakeChunk);
     this.material = waves.attach(
       new ShaderMaterial({
         vertexShader,
