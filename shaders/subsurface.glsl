@@ -9,26 +9,24 @@
 // its visible face turned from the sun (Atlas's (½ − ½ n·l)³).
 uniform float uCrestHeight;  // the model's typical crest height, m: a sixth of its largest, about σ (OceanMaterial)
 
-// How pinched the crest is, 0 to 1: (1 − J) / PINCH_FULL where the model knows the Jacobian of
-// its choppy map (WAVE_PINCH); otherwise the surface's curvature, the divergence of the normal
-// from the pixel's neighbours (screen-space derivatives), times the crest height. A crest is
-// where the surface is pinched, wherever the swell under it has carried it; a high one glows more.
+// How pinched the crest is, 0 to 1: (1 − J) / PINCH_FULL where the model knows the Jacobian
+// of its choppy map (WAVE_PINCH: the FFT sea). Elsewhere (the seed's sines, Gerstner's
+// trochoids) the crest is known by its height alone: a curvature from the pixel's neighbours
+// (screen-space derivatives of the normal) is constant over each triangle where the normals
+// are the vertices' (the seed), and drew the glow in facets.
 const float PINCH_FULL = 0.3;
-float crestPinch(vec3 n, vec2 p) {
+float crestPinch() {
 #ifdef WAVE_PINCH
   return clamp(wavePinch() / PINCH_FULL, 0.0, 1.0);
 #else
-  // The normal's derivatives along the screen, carried onto the sea: dn/dp = (dn/ds) (dp/ds)⁻¹.
-  mat2 toSea = mat2(dFdx(p), dFdy(p));
-  mat2 slope = mat2(dFdx(n.xz), dFdy(n.xz)) * inverse(abs(determinant(toSea)) > 1e-8 ? toSea : mat2(1.0));
-  return clamp((slope[0][0] + slope[1][1]) * uCrestHeight / PINCH_FULL, 0.0, 1.0);
+  return clamp(vRelativePosition.y / uCrestHeight, 0.0, 1.0);
 #endif
 }
 
 // The glow leaving the surface at this pixel (height vRelativePosition.y, normal n), towards
 // the eye v, before its Fresnel transmission out of the water, which the caller applies.
 vec3 subsurfaceGlow(vec3 n, vec3 v) {
-  float crest = crestPinch(n, vRelativePosition.xz) * (0.5 + 0.5 * clamp(vRelativePosition.y / uCrestHeight, 0.0, 1.0));
+  float crest = crestPinch() * (0.5 + 0.5 * clamp(vRelativePosition.y / uCrestHeight, 0.0, 1.0));
   float backlit = pow(0.5 - 0.5 * dot(n, uSunDirection), 3.0);
   // The angle between the sun's ray and the line of sight inside the water, narrowed by refraction.
   float cosInWater = cos(acos(clamp(dot(-v, uSunDirection), -1.0, 1.0)) / WATER_IOR);
