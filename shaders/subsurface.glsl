@@ -27,9 +27,11 @@ float crestPinch() {
 // the eye v, before its Fresnel transmission out of the water, which the caller applies.
 vec3 subsurfaceGlow(vec3 n, vec3 v) {
   float crest = crestPinch() * (0.5 + 0.5 * clamp(vRelativePosition.y / uCrestHeight, 0.0, 1.0));
-  float backlit = pow(0.5 - 0.5 * dot(n, uSunDirection), 3.0);
-  // The angle between the sun's ray and the line of sight inside the water, narrowed by refraction.
-  float cosInWater = cos(acos(clamp(dot(-v, uSunDirection), -1.0, 1.0)) / WATER_IOR);
-  float phase = HENYEY_GREENSTEIN.x / pow(HENYEY_GREENSTEIN.y - HENYEY_GREENSTEIN.z * cosInWater, 1.5);
-  return uSunColor * SUN_IRRADIANCE * SUBSURFACE_SCATTER * phase * crest * backlit * step(0.0, uSunDirection.y);
+  float back = 0.5 - 0.5 * dot(n, uSunDirection);
+  // The angle between the sun's ray and the line of sight inside the water, narrowed by
+  // refraction to θ/n: 1 − cos(θ/n) ≈ (1 − cos θ)/n², exact where the forward lobe is (2 % off at 40°, 4 % at 60°).
+  float cosInWater = 1.0 - (1.0 - dot(-v, uSunDirection)) / (WATER_IOR * WATER_IOR);
+  float denominator = HENYEY_GREENSTEIN.y - HENYEY_GREENSTEIN.z * cosInWater;
+  float phase = HENYEY_GREENSTEIN.x / (denominator * sqrt(denominator));
+  return uSunColor * SUN_IRRADIANCE * SUBSURFACE_SCATTER * phase * crest * back * back * back * step(0.0, uSunDirection.y);
 }
