@@ -300,7 +300,7 @@ void main() {
   vec3 color = mix(water, sky, reflectance);
 #ifdef OCEAN_SUBSURFACE
   // Sunlight through thin crests (shaders/subsurface.glsl), leaving through the surface as the water's own colour does.
-  color += (1.0 - reflectance) * subsurfaceGlow(n, v, vRelativePosition.y, crestPinch(n, vRelativePosition.xz));
+  color += (1.0 - reflectance) * subsurfaceGlow(n, v);
 #endif
 
   vec3 halfway = normalize(uSunDirection + v);

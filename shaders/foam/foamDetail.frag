@@ -14,7 +14,7 @@ varying vec2 vUv;
 // Cells per tile of the two bubble sizes and the fractal's first octave.
 const float BIG_BUBBLES = 9.0;
 const float SMALL_BUBBLES = 29.0;
-const float PATCHES = 3.0;
+const float PATCHES = 8.0;
 
 float hash(vec2 cell, float salt) {
   return fract(sin(dot(cell, vec2(127.1, 311.7)) + salt * 74.7) * 43758.5453);

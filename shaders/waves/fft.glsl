@@ -22,11 +22,15 @@
 //     difference normal of the same surface, for the comparison teaching view
 //   WAVE_PINCH: float wavePinch(), how pinched the surface is at this pixel, 1 − J in [0, 1]
 //     (the subsurface glow, shaders/subsurface.glsl)
+//   WAVE_VERTEX_EXTRA: float waveVertexExtra(vec2 relativeGridXZ), per vertex, which ocean.vert
+//     hands to the pixels interpolated as vWaveExtra: here the foam's breakup field, smooth
+//     over tens of metres, so the vertices (metres apart near the eye) carry it exactly enough
 
 #define WAVE_PIXEL_NORMALS
 #define WAVE_FOAM
 #define WAVE_FABRICATED_NORMAL
 #define WAVE_PINCH
+#define WAVE_VERTEX_EXTRA
 
 uniform sampler2D uFftDisplacement0;
 uniform sampler2D uFftDisplacement1;
@@ -129,6 +133,12 @@ vec4 fftPixelSlopeDerivatives;
 float fftPixelSlopeJxx;
 float fftPixelUnresolvedVariance;
 
+// The breakup field at this pixel, interpolated from the vertices (waveVertexExtra).
+varying float vWaveExtra;
+float fftBreakup(vec2 p, bool near) {
+  return vWaveExtra;
+}
+
 void fftReadPixelFields(vec2 p, bool near) {
   // The footprint's longer side: at grazing angles a pixel runs far along the view.
   float footprint = max(max(length(dFdx(p)), length(dFdy(p))), 1e-6);
@@ -207,6 +217,15 @@ vec4 fftDerivativeFields(vec2 p, bool near) {
   return fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
 }
 
+// Per vertex: the breakup field at the grid point relative to the render origin.
+float waveVertexExtra(vec2 relativeGridXZ) {
+  return foamBreakup(relativeGridXZ, true);
+}
+
+float fftBreakup(vec2 p, bool near) {
+  return foamBreakup(p, near);
+}
+
 // ∂Dx/∂x of the whole sea at a grid point.
 float fftJxx(vec2 p, bool near) {
   return fftDisplacementFields(p, near).w;
@@ -275,7 +294,7 @@ const float FOAM_KEPT_THICKNESS = 0.7;
 float fftFoamAt(vec2 p, bool near) {
   float jxx = fftJxx(p, near);
   vec4 d = fftDerivativeFields(p, near);
-  float breakup = foamBreakup(p, near);
+  float breakup = fftBreakup(p, near);
   float measure = fftBreaking(jxx, d.z, d.w) + uFoamBreakupStrength * breakup;
   float now = smoothstep(uFoamThreshold + 2.25 * uFoamSoftness, uFoamThreshold - 1.75 * uFoamSoftness, measure);
   float potential = fftFoamPotential(p, near);

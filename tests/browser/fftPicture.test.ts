@@ -104,23 +104,37 @@ describe('waves=fft picture', () => {
 
   it('foam is white in the default view at 15 m/s, and gone with foam=false', async () => {
     const { page } = await openOcean(harness, 'waves=fft&windSpeed=15&t=10', WIDTH, HEIGHT);
-    const withFoam = whiteShare(await canvasPng(page));
+    // Whitecaps break in groups that travel (src/sim/waves/fft/foamBreakup.ts): the near sea of
+    // one instant may hold none, so the white share is the mean of four instants 30 s apart.
+    const meanWhite = async () => {
+      let sum = 0;
+      for (const t of [10, 40, 70, 100]) {
+        await page.evaluate((time) => {
+          window.oceano.pause();
+          window.oceano.setTime(time);
+        }, t);
+        sum += whiteShare(await canvasPng(page)) / 4;
+      }
+      return sum;
+    };
+    const withFoam = await meanWhite();
     await page.evaluate(() => window.oceano.setParams({ foam: false }));
-    const without = whiteShare(await canvasPng(page));
+    const without = await meanWhite();
     // Negative control for the lower bound: thresholds biased 0.1 lower in J foam far less.
     await page.evaluate(() => window.oceano.setParams({ foam: true, foamThreshold: -0.1 }));
-    const biased = whiteShare(await canvasPng(page));
+    const biased = await meanWhite();
     console.log(`[oceano] white share of the sea at 15 m/s: foam ${(withFoam * 100).toFixed(2)} %, foam=false ${(without * 100).toFixed(2)} %, threshold −0.1 ${(biased * 100).toFixed(2)} %`);
-    // Measured: 0.77 % of the left half's sea pixels white with foam, 0.00 % without (only
-    // fully white pixels count). This low camera sees the foam foreshortened into thin lines;
+    // Measured: 2.1 % of the left half's sea pixels white with foam (0.05, 0.10, 8.3, 0.01 % at
+    // the four instants: a group passes close at t = 70 s), 0.16 % without (the glitter of a
+    // steep face reaching the left half at one instant). This low camera sees the foam foreshortened, and far off as thin lace;
     // seen from 150 m above the same foam covers Monahan's share within 30 %
-    // (tests/browser/light/foam.test.ts). The look before the foam was calibrated per cascade,
-    // 0.12 %, is the planted fault the lower bound catches; the upper one, 3× Monahan's 3.9 %,
-    // that the sea has not turned white altogether.
-    expect(withFoam).toBeGreaterThan(0.004);
+    // (tests/browser/light/foam.test.ts). The thresholds biased 0.1 lower, 0.39 %, are the planted
+    // fault the lower bound catches; the upper one, 3× Monahan's 3.9 %, says that the sea has
+    // not turned white altogether.
+    expect(withFoam).toBeGreaterThan(0.01);
     expect(withFoam).toBeLessThan(0.12);
-    expect(without).toBeLessThan(0.001);
-    expect(biased).toBeLessThan(0.004);
+    expect(without).toBeLessThan(0.005);
+    expect(biased).toBeLessThan(0.01);
     await page.close();
   });
 });

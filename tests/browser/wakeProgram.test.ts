@@ -24,11 +24,13 @@ describe('the wake compiled into the ocean only while it is on', () => {
   it('shows the wake on the drawn sea once turned on, the same picture each time; the control (never compiled in) does not', async () => {
     const { page, consoleErrors } = await openOcean(harness, QUERY, 320, 180);
     try {
-      const result = await page.evaluate(() => {
+      const result = await page.evaluate(async () => {
         const o = window.oceano;
         const gl = o.three.renderer.getContext();
-        const picture = (wake: boolean) => {
+        // The wake's GLSL is fetched the first time the wake is on (src/render/wake/wakeChunk.ts): loaded() waits for it.
+        const picture = async (wake: boolean) => {
           o.setParams({ wake });
+          await o.loaded();
           o.renderFrame();
           const pixels = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
           gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
@@ -48,12 +50,12 @@ describe('the wake compiled into the ocean only while it is on', () => {
           if (m?.uniforms?.uWakeCount && m.uniforms.uFresnelTable) materials.add(m);
         });
         const compiledIn = () => [...materials].map((m) => 'OCEAN_WAKE' in m.defines);
-        const off = picture(false);
+        const off = await picture(false);
         const offDefines = compiledIn();
-        const on = picture(true);
+        const on = await picture(true);
         const onDefines = compiledIn();
-        const offAgain = picture(false);
-        const onAgain = picture(true);
+        const offAgain = await picture(false);
+        const onAgain = await picture(true);
         // The control: the wake's code taken out again after each material has compiled it in.
         const original = Object.getPrototypeOf([...materials][0]).onBeforeRender as (this: Material, ...args: unknown[]) => void;
         for (const m of materials) m.onBeforeRender = function (this: Material, ...args: unknown[]) {
@@ -63,8 +65,8 @@ describe('the wake compiled into the ocean only while it is on', () => {
             this.needsUpdate = true;
           }
         };
-        picture(false);
-        const faulty = picture(true);
+        await picture(false);
+        const faulty = await picture(true);
         for (const m of materials) delete (m as Partial<Material>).onBeforeRender;
         return {
           materials: materials.size,

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { cascadeLayout, inBand } from '../../src/sim/waves/fft/cascades';
+import { cascadeLayout, inBand, TILE_RATIOS } from '../../src/sim/waves/fft/cascades';
 import { waveNumber } from '../../src/sim/waves/dispersion';
 import { fftOceanSetup } from '../../src/sim/waves/fft/fftOcean';
 import { signedIndex } from '../../src/sim/waves/spectra/initialSpectrum';
@@ -31,6 +31,15 @@ describe('cascades', () => {
     expect(peakWavelength(gale)).toBeGreaterThan(340);
     expect(peakWavelength(gale)).toBeLessThan(360);
     expect(cascadeLayout(peakWavelength(gale), 128)[0].size).toBeGreaterThan(2700);
+  });
+
+  it('have sizes in ratios far from simple fractions: q tiles of one never come within 0.05 of a whole number of another for q ≤ 8, so no two tiles repeat together within 8 of the larger (control: 4.5 = 9/2 does; 4.37, the ratio before, came within 0.01 with the first)', () => {
+    /** How far q·r comes from a whole number at best, for q = 1 … 8: the misalignment, in tiles of the smaller, of the nearest joint repeat. */
+    const nearestRepeat = (r: number) => Math.min(...[1, 2, 3, 4, 5, 6, 7, 8].map((q) => Math.abs(q * r - Math.round(q * r))));
+    const [r1, r2] = TILE_RATIOS;
+    for (const ratio of [r1, r2, r1 * r2]) expect(nearestRepeat(ratio), String(ratio)).toBeGreaterThan(0.05);
+    expect(nearestRepeat(4.5)).toBeLessThan(0.05);
+    expect(nearestRepeat(r1 * 4.37)).toBeLessThan(0.05);
   });
 
   it('have at least 3 tiles whose bands touch without overlapping, each within its grid', () => {

@@ -78,10 +78,10 @@ const SOLID_KEPT_FOAM: ShaderFault = {
  */
 const TILED_FOAM: ShaderFault = {
   name: 'tiled-foam',
-  fragment: [['float breakup = foamBreakup(p, near);', 'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);']],
+  fragment: [['float breakup = fftBreakup(p, near);', 'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);']],
 };
 /** The subsurface glow on every pixel alike, crest or trough. */
-const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = pinch * (', 'float crest = 1.0 + 0.0 * pinch * (']] };
+const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
 const UNMARKED_SEA_BED: ShaderFault = { name: 'unmarked-sea-bed', fragment: [['SEA_BED_ALPHA);', '1.0);']] };
 

@@ -32,7 +32,7 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'fft-calm': { file: 'src/sim/waves/spectra/piersonMoskowitz.ts', from: 'export function piersonMoskowitz(', to: 'return ((PM_ALPHA' },
   'fft-fresh-breeze': { file: 'src/sim/waves/dispersion.ts', from: 'export function angularFrequency(', to: 'return Math.sqrt(GRAVITY * k * t);' },
   'fft-short-fetch': { file: 'src/sim/waves/spectra/jonswap.ts', from: 'export function jonswapWithShape(', to: 'return ((alpha' },
-  'fft-gale': { file: 'shaders/waves/fft.glsl', from: 'float fftFoamAt(vec2 p, bool near) {', to: 'return uFoamEnabled * clamp(max(now, kept)' },
+  'fft-gale': { file: 'shaders/waves/fftBreaking.glsl', from: 'float fftBreaking(float jxx, float jzz, float jxz) {', to: 'return min(determinant, minEigenvalue);' },
   'fft-normals': { file: 'shaders/waves/fft.glsl', from: 'vec3 fftNormal(vec2 p, bool near) {', to: 'return normalize(cross(tz, tx));' },
   'gerstner-gentle': { file: 'shaders/waves/gerstner.glsl', from: 'vec3 waveDisplacement(vec2 gridXZ) {', to: 'return d;' },
   'gerstner-steepness': { file: 'src/sim/waves/gerstner/gerstnerSpectrum.ts', from: 'export function limitSteepness(', to: 'return waves.map(' },

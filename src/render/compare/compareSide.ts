@@ -10,6 +10,7 @@ import type { WaveModelView } from '../waves/waveModelView';
 import type { WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
 import type { WakeUniforms } from '../wake/wakeUniforms';
 import type { FoamUniforms } from '../foam/foamUniforms';
+import type { LateChunks } from '../shaders/lateChunks';
 
 /** What every ocean material of one view shares: Fresnel tables, sky, water volume, sun colour. */
 export interface OceanMaterialInputs {
@@ -17,6 +18,8 @@ export interface OceanMaterialInputs {
   sky: CubeTexture;
   /** Uniforms every ocean material shares: the water volume, the boat's wake (each material compiles it in while it has a track), the sun's colour. */
   shared: WaterVolumeUniforms & WakeUniforms & FoamUniforms & Record<'uSunColor', IUniform>;
+  /** The shader chunks that arrive later, shared with the view's own binding. */
+  late: LateChunks;
 }
 
 /**
@@ -34,7 +37,7 @@ export class CompareSide {
 
   constructor(name: WavesChoice, params: OceanParams, renderer: WebGLRenderer, inputs: OceanMaterialInputs) {
     this.view = createWaveModelView({ ...params, waves: name }, renderer);
-    this.binding = new WaveBinding(this.view);
+    this.binding = new WaveBinding(this.view, inputs.late);
     this.material = new OceanMaterial(this.binding, inputs.fresnelTables, inputs.sky, inputs.shared);
     this.chunks = new OceanChunks(this.material);
     this.chunks.group.visible = false;
@@ -53,6 +56,7 @@ export class CompareSide {
     this.chunks.dispose();
     this.material.detachFrom(this.binding);
     this.material.dispose();
+    this.binding.dispose();
     this.view.dispose();
   }
 }

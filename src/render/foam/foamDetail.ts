@@ -2,6 +2,10 @@ import { LinearFilter, LinearMipmapLinearFilter, RepeatWrapping, ShaderMaterial,
 import { FullScreenQuad } from 'three/addons/postprocessing/Pass.js';
 import vertexShader from '../../../shaders/fullscreen.vert?raw';
 import fragmentShader from '../../../shaders/foam/foamDetail.frag?raw';
+import foamMaterial from '../../../shaders/foam/foamMaterial.glsl?raw';
+
+/** The foam material's GLSL (chunk `oceano_foam`, src/render/shaders/lateChunks.ts): it travels with the texture it samples. */
+export const foamMaterialChunk = foamMaterial;
 
 /** Texels per side of the detail tile: 512 over FOAM_DETAIL_TILE metres is about a centimetre per texel. */
 const SIZE = 512;

@@ -8,7 +8,6 @@ import type { HeightAt } from '../../sim/boat/boatPose';
 import { handOverDistance, handOverWeights, type HandOver } from '../../sim/iwave/kelvinHandOver';
 import type { Message } from '../../sim/params/message';
 import type { InteractiveWaveUniforms } from './interactiveWaveUniforms';
-
 export type { InteractiveWaveUniforms };
 export { iwaveChunk } from './iwaveChunk';
 

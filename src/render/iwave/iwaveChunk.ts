@@ -6,7 +6,7 @@ import { glslFloat } from '../shaders/shaderConstants';
 /**
  * The text of `#include <oceano_iwave>` (shaders/iwave.glsl) with the numbers it shares with
  * TypeScript put before it as #defines. It travels with the interactive waves' code, fetched
- * when they are first switched on, and is handed to the ocean's WaveBinding then (addChunks).
+ * when they are first switched on, and is handed to the ocean's late chunks then (src/render/shaders/lateChunks.ts).
  */
 export function iwaveChunk(): string {
   return [

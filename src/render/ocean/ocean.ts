@@ -94,6 +94,7 @@ export class Ocean extends Object3D {
   private stonesDue: Stone[] = [];
   private foamDetail: FoamDetail | null = null;
   private foamDetailLoad: Promise<void> | null = null;
+  private wakeCodeLoad: Promise<void> | null = null;
 
   /** `params`: any subset of the parameters (src/sim/params/params.ts), validated as the URL and the GUI validate them. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, options: OceanOptions = {}) {
@@ -115,6 +116,7 @@ export class Ocean extends Object3D {
     this.materialInputs = {
       fresnelTables: this.fresnelTextures,
       sky: this.skySource.texture,
+      late: this.binding.late,
       shared: { ...this.waterVolume, ...this.wakeUniforms, ...this.interactiveWaveUniforms, ...this.foamUniforms, uSunColor: this.lightUniforms.uSunColor },
     };
     this.material = new OceanMaterial(this.binding, this.fresnelTextures, this.skySource.texture, this.materialInputs.shared);
@@ -185,8 +187,8 @@ export class Ocean extends Object3D {
       if (this.params !== params) return;
       this.apply(params);
       this.visible = true;
-      // The foam's detail texture, asked for by the model that just arrived, is part of being ready.
-      return this.foamDetail ? undefined : (this.foamDetailLoad ?? undefined);
+      // The foam's detail texture and the wake's code, asked for as the model arrived, are part of being ready.
+      return Promise.all([this.foamDetail ? undefined : this.foamDetailLoad, this.wakeCodeLoad]).then(() => undefined);
     });
   }
 
@@ -223,8 +225,9 @@ export class Ocean extends Object3D {
     if (changed('interactiveWaves')) this.setInteractiveWaves(params.interactiveWaves);
     this.interactive?.setEquation(params.iwaveEquation);
     this.interactive?.setGuide(params.iwaveGuide);
+    if (params.wake || params.interactiveWaves) this.loadWakeCode();
     if (changed('windDirection')) setFoamWind(this.foamUniforms, params.windDirection);
-    this.setFoamTexture(params.foamTexture && ((params.foam && modelsDrawn(params).includes('fft')) || params.wake));
+    this.setFoamTexture(foamTextureWanted(params));
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
       this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
     }
@@ -285,7 +288,7 @@ export class Ocean extends Object3D {
         this.add(this.interactive.guide.lines);
         this.interactive.record(this.stonesDue);
         this.stonesDue = [];
-        this.binding.addChunks({ oceano_iwave: iwaveChunk() });
+        this.binding.late.provide('oceano_iwave', iwaveChunk());
         this.material.setInteractiveWavesOn(true);
       });
       this.ready = Promise.all([this.ready, start]).then(() => undefined);
@@ -298,6 +301,13 @@ export class Ocean extends Object3D {
     this.material.setInteractiveWavesOn(on && this.interactive !== null);
   }
 
+  /** The wake's GLSL, fetched the first time the wake or the interactive waves (whose slope reaches the pixels through it) are on; `ready` waits for it. */
+  private loadWakeCode(): void {
+    if (this.wakeCodeLoad) return;
+    this.wakeCodeLoad = import('../wake/wakeChunk').then(({ wakeChunk }) => this.binding.late.provide('oceano_wake', wakeChunk));
+    this.ready = Promise.all([this.ready, this.wakeCodeLoad]).then(() => undefined);
+  }
+
   /**
    * Foam drawn as foam needs its detail texture, whose code is fetched the first time a view
    * draws foam (the spectral sea's whitecaps, the boat's wake); `ready` then settles once it is
@@ -306,10 +316,11 @@ export class Ocean extends Object3D {
    */
   private setFoamTexture(on: boolean): void {
     if (on && !this.foamDetail) {
-      this.foamDetailLoad ??= import('../foam/foamDetail').then(({ FoamDetail }) => {
+      this.foamDetailLoad ??= import('../foam/foamDetail').then(({ FoamDetail, foamMaterialChunk }) => {
         if (this.disposed) return;
+        this.binding.late.provide('oceano_foam', foamMaterialChunk);
         this.foamDetail = new FoamDetail(this.renderer);
-        this.setFoamTexture(this.params.foamTexture && ((this.params.foam && modelsDrawn(this.params).includes('fft')) || this.params.wake));
+        this.setFoamTexture(foamTextureWanted(this.params));
       });
       this.ready = Promise.all([this.ready, this.foamDetailLoad]).then(() => undefined);
       return;
@@ -435,6 +446,7 @@ export class Ocean extends Object3D {
     this.waveView.dispose();
     this.interactive?.dispose();
     this.foamDetail?.dispose();
+    this.binding.dispose();
     this.fresnelTextures.fromAbove.dispose();
     this.fresnelTextures.fromBelow.dispose();
     this.skySource.dispose();
@@ -452,6 +464,11 @@ function focusOf(camera: PerspectiveCamera): [number, number] {
   const horizontal = Math.hypot(forward.x, forward.z);
   if (horizontal < 1e-6) return [x, z];
   return [x + forward.x * reach, z + forward.z * reach];
+}
+
+/** Whether foam is drawn as foam: the spectral sea's whitecaps or the wake's foam in view, and the foamTexture parameter on. */
+function foamTextureWanted(params: OceanParams): boolean {
+  return params.foamTexture && ((params.foam && modelsDrawn(params).includes('fft')) || params.wake);
 }
 
 /** The model the ocean itself draws: the first of a comparison, else `waves`. */

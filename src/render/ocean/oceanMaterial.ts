@@ -196,12 +196,15 @@ export class OceanMaterial extends ShaderMaterial {
    * too, draws the wake's heights, slope and foam from the same data. Off (the default view),
    * its code is left out: a software rasterizer compiles each program on its first draw, and
    * the wake's loops are a large part of that (docs/shader-notes.md). Turning the wake on or
-   * off builds the other program once, on the next draw; three.js keeps both.
+   * off builds the other program once, on the next draw; three.js keeps both. Its GLSL arrives
+   * with the wake's code (Ocean fetches it when the wake or the interactive waves are switched
+   * on, src/render/shaders/lateChunks.ts): until then the program leaves it out.
    */
   private interactiveWavesOn = false;
 
   private followWake(): void {
-    setMaterialDefine(this, 'OCEAN_WAKE', (this.uniforms.uWakeCount.value as number) >= 2 || this.interactiveWavesOn);
+    const wanted = (this.uniforms.uWakeCount.value as number) >= 2 || this.interactiveWavesOn;
+    setMaterialDefine(this, 'OCEAN_WAKE', wanted && this.waves.late.has('oceano_wake'));
   }
 
   /**

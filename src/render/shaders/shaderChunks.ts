@@ -2,10 +2,8 @@ import tiledHeightmap from '../../../shaders/tiledHeightmap.glsl?raw';
 import waterVolume from '../../../shaders/waterVolume.glsl?raw';
 import caustics from '../../../shaders/caustics.glsl?raw';
 import waterline from '../../../shaders/waterline.glsl?raw';
-import wake from '../../../shaders/wake.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
-import foamMaterial from '../../../shaders/foam/foamMaterial.glsl?raw';
 import subsurface from '../../../shaders/subsurface.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 import { SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
@@ -29,14 +27,6 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_caustics: caustics,
   // Needs <oceano_waves> included before it: the underwater passes' waterline test.
   oceano_waterline: waterline,
-  // The boat's Kelvin wake and its foam, added to whichever wave model is active.
-  oceano_wake: wake,
-  // The interactive waves (iWave): empty until their code, fetched when they are first switched
-  // on, hands the ocean's binding the real text (src/render/iwave/iwaveChunk.ts); until then
-  // OCEAN_IWAVE is never defined, so nothing reads it.
-  oceano_iwave: '',
-  // Foam as foam: the whitecaps' and the wake's (ocean.frag, OCEAN_FOAM_TEXTURE).
-  oceano_foam: foamMaterial,
   // Thin sunlit crests glowing (ocean.frag, OCEAN_SUBSURFACE).
   oceano_subsurface: subsurface,
   // The underwater passes' scene target, written after three's colour-space chunk (read back by

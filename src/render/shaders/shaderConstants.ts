@@ -37,7 +37,7 @@ export function shaderConstantsChunk(): string {
     `#define SUN_DISC_SLOPE_VARIANCE ${glslFloat(SUN_DISC_SLOPE_VARIANCE)}`,
     `#define WATER_BODY_REFLECTANCE ${glslVec3(bodyColor())}`,
     `#define SUBSURFACE_SCATTER ${glslVec3(crestScattering())}`,
-    `#define PARTICLE_MEAN_COSINE ${glslFloat(PARTICLE_MEAN_COSINE)}`,
+    `#define HENYEY_GREENSTEIN vec3(${[(1 - PARTICLE_MEAN_COSINE ** 2) / (4 * Math.PI), 1 + PARTICLE_MEAN_COSINE ** 2, 2 * PARTICLE_MEAN_COSINE].map(glslFloat).join(', ')})`,
     `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
     `#define LOD_BAND_COUNT ${MAX_LOD_BANDS}`,
     `#define LOD_BASE_STEP ${glslFloat(BASE_STEP)}`,

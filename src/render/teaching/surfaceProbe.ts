@@ -19,6 +19,7 @@ import type { WaveBinding } from '../waves/waveBinding';
 import type { WakeUniforms } from '../wake/wakeUniforms';
 import type { InteractiveWaveUniforms } from '../iwave/interactiveWaveUniforms';
 import { setMaterialDefine } from '../shaders/materialDefines';
+import { wakeChunk } from '../wake/wakeChunk';
 
 const TARGET_WIDTH = 256;
 
@@ -43,6 +44,8 @@ export class SurfaceProbe {
     wake: WakeUniforms,
     interactive: InteractiveWaveUniforms,
   ) {
+    // probe.vert adds the wake wherever it is on: its GLSL comes with this code.
+    waves.late.provide('oceano_wake', wakeChunk);
     this.material = waves.attach(
       new ShaderMaterial({
         vertexShader,

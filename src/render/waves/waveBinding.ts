@@ -1,6 +1,7 @@
 import type { IUniform, Material, ShaderMaterial } from 'three';
 import type { WaveModelView } from './waveModelView';
 import { resolveChunks } from '../shaders/shaderChunks';
+import { LateChunks } from '../shaders/lateChunks';
 
 interface BoundShader {
   material: ShaderMaterial;
@@ -18,16 +19,14 @@ interface BoundShader {
 export class WaveBinding {
   private readonly shaders: BoundShader[] = [];
   private readonly patched = new Set<Material>();
-  /** Chunks handed over after start (a part fetched on first use), over the shared ones. */
-  private chunks: Readonly<Record<string, string>> = {};
+  private readonly unsubscribe: () => void;
 
-  constructor(private active: WaveModelView) {}
-
-  /** Chunks that arrived with code fetched later (the interactive waves'): every bound material is resolved again with them. */
-  addChunks(chunks: Readonly<Record<string, string>>): void {
-    this.chunks = { ...this.chunks, ...chunks };
-    for (const bound of this.shaders) this.bind(bound, this.active);
-    for (const material of this.patched) material.needsUpdate = true;
+  /** `late`: the chunks that arrive with code fetched later (lateChunks.ts), shared by every binding of one view. */
+  constructor(
+    private active: WaveModelView,
+    readonly late = new LateChunks(),
+  ) {
+    this.unsubscribe = late.subscribe(() => this.rebind());
   }
 
   get model(): WaveModelView {
@@ -41,7 +40,7 @@ export class WaveBinding {
 
   /** GLSL source with `#include <oceano_waves>` replaced by the active model's chunk, and Oceano's other chunks put in place. */
   resolve(source: string): string {
-    return resolveChunks(source, { ...this.chunks, oceano_waves: this.active.chunk });
+    return resolveChunks(source, { ...this.late.texts, oceano_waves: this.active.chunk });
   }
 
   /** Binds a ShaderMaterial whose sources contain `#include <oceano_waves>`; returns it. */
@@ -70,6 +69,17 @@ export class WaveBinding {
     this.active = model;
     for (const bound of this.shaders) this.bind(bound, previous);
     for (const material of this.patched) material.needsUpdate = true;
+  }
+
+  /** Every bound material again, with the late chunks that have arrived since. */
+  private rebind(): void {
+    for (const bound of this.shaders) this.bind(bound, null);
+    for (const material of this.patched) material.needsUpdate = true;
+  }
+
+  /** Stops following the late chunks (the binding's materials are detached and disposed by their owner). */
+  dispose(): void {
+    this.unsubscribe();
   }
 
   private bind(bound: BoundShader, previous: WaveModelView | null): void {

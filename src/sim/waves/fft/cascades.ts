@@ -17,8 +17,13 @@ export interface Cascade {
 
 /** The largest tile holds this many peak wavelengths: the peak sits at |k| = 8 Δk, well inside, for every wind. */
 export const PEAK_WAVELENGTHS_PER_TILE = 8;
-/** Size ratios between successive tiles, chosen incommensurate so their repeats do not line up. */
-export const TILE_RATIOS = [4.73, 4.37] as const;
+/**
+ * Size ratios between successive tiles, chosen far from simple fractions so their repeats do
+ * not line up: for every pair of tiles, q tiles of one (q ≤ 8) miss a whole number of the other
+ * by at least 0.08 of a tile. (4.37 for the second ratio put 3 of the largest tiles within 0.01
+ * of 62 of the smallest: a joint repeat 3 L₀ away, 2 km at 10 m/s, seen from high above.)
+ */
+export const TILE_RATIOS = [4.73, 4.46] as const;
 
 /**
  * Tiles for a sea whose spectral peak has wavelength `peakWavelength` (m), each an n × n FFT.
