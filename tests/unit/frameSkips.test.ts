@@ -1,6 +1,7 @@
 import { describe, expect, it, vi } from 'vitest';
 import { BackSide, CubeTexture, DoubleSide, FrontSide, Group, PerspectiveCamera, Scene, Texture, type IUniform } from 'three';
 import { createWakeUniforms } from '../../src/render/wake/wakeUniforms';
+import { createFoamUniforms } from '../../src/render/foam/foamUniforms';
 import { OceanMaterial } from '../../src/render/ocean/oceanMaterial';
 import { BoatView } from '../../src/render/boat/boatView';
 import { WaveBinding } from '../../src/render/waves/waveBinding';
@@ -13,13 +14,16 @@ import { defaultParams } from '../../src/sim/params/params';
 
 /**
  * The update step's setters that skip a frame's repeat of the last frame's values
- * (stats().cpuMs, issue 14): skipping must leave the same state as setting.
+ * (stats().cpuMs): skipping must leave the same state as setting.
  */
 
-function material(): OceanMaterial {
-  const view = { name: 'seed', chunkName: 'oceano_waves_test', chunk: '', uniforms: {} } as unknown as WaveModelView;
-  const shared = { uSunColor: { value: null }, ...createWakeUniforms() } as unknown as ConstructorParameters<typeof OceanMaterial>[3];
-  return new OceanMaterial(new WaveBinding(view), { fromAbove: new Texture(), fromBelow: new Texture() }, new CubeTexture(), shared);
+function material(wakeCodeArrived = true): OceanMaterial {
+  const view = { name: 'seed', chunkName: 'oceano_waves_test', chunk: '', uniforms: {}, model: { bounds: () => ({ vertical: 1, horizontal: 0 }) } } as unknown as WaveModelView;
+  const shared = { uSunColor: { value: null }, ...createWakeUniforms(), ...createFoamUniforms() } as unknown as ConstructorParameters<typeof OceanMaterial>[3];
+  const binding = new WaveBinding(view);
+  // The wake's GLSL is fetched with the wake (lateChunks.ts); the define waits for it.
+  if (wakeCodeArrived) binding.late.provide('oceano_wake', '// the wake');
+  return new OceanMaterial(binding, { fromAbove: new Texture(), fromBelow: new Texture() }, new CubeTexture(), shared);
 }
 
 /** What setSeenFromBelow decides, for both programs. */
@@ -69,6 +73,13 @@ describe('OceanMaterial: the wake compiled in only while its shared uniforms hol
       else expect([m.version, m.near.version]).toEqual([versions[0] + 1, versions[1] + 1]);
       previous = on;
     }
+  });
+
+  it('leaves the wake out while its GLSL has not arrived, whatever the track', () => {
+    const m = material(false);
+    (m.uniforms.uWakeCount as IUniform<number>).value = 40;
+    m.onBeforeRender(null, null, new PerspectiveCamera());
+    expect('OCEAN_WAKE' in m.defines).toBe(false);
   });
 });
 
