@@ -30,10 +30,10 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
   },
   swell: {
     text: {
-      en: 'The swell is a product of a sine of x and a cosine of z, times an amplitude, with a phase that grows with time so the pattern travels. A second, smaller product turned by 37° breaks the regular egg-box look. The phase speed follows deep-water dispersion, ω = √(g k), so longer swell runs faster, as at sea. The frequency slider sets k, the amplitude slider A.',
-      es: 'El oleaje es el producto de un seno de x y un coseno de z, por una amplitud, con una fase que crece con el tiempo para que el dibujo avance. Un segundo producto, menor y girado 37°, rompe el aspecto regular de huevera. La velocidad de fase sigue la dispersión en aguas profundas, ω = √(g k): el oleaje largo corre más, como en el mar. El control de frecuencia fija k; el de amplitud, A.',
+      en: 'The swell is a product of a sine of x and a cosine of z, times an amplitude, with phases that grow with time (the cosine’s at 0.7 of the sine’s rate) so the pattern travels and changes. A second, smaller product turned by 37° breaks the regular egg-box look. The phase speed follows deep-water dispersion, ω = √(g k), so longer swell runs faster, as at sea. The frequency slider sets k, the amplitude slider A.',
+      es: 'El oleaje es el producto de un seno de x y un coseno de z, por una amplitud, con fases que crecen con el tiempo (la del coseno a 0,7 del ritmo de la del seno) para que el dibujo avance y cambie. Un segundo producto, menor y girado 37°, rompe el aspecto regular de huevera. La velocidad de fase sigue la dispersión en aguas profundas, ω = √(g k): el oleaje largo corre más, como en el mar. El control de frecuencia fija k; el de amplitud, A.',
     },
-    math: m('<mi>h</mi><mo>=</mo><mi>A</mi><mspace width="0.2em"/><mi>sin</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>+</mo><mi>ω</mi><mi>t</mi><mo>)</mo><mspace width="0.2em"/><mi>cos</mi><mo>(</mo><mi>k</mi><mi>z</mi><mo>+</mo><mi>ω</mi><mi>t</mi><mo>)</mo>') + m('<mi>ω</mi><mo>=</mo><msqrt><mi>g</mi><mi>k</mi></msqrt>'),
+    math: m('<mi>h</mi><mo>=</mo><mi>A</mi><mspace width="0.2em"/><mi>sin</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>+</mo><mi>ω</mi><mi>t</mi><mo>)</mo><mspace width="0.2em"/><mi>cos</mi><mo>(</mo><mi>k</mi><mi>z</mi><mo>+</mo><mn>0.7</mn><mi>ω</mi><mi>t</mi><mo>)</mo>') + m('<mi>ω</mi><mo>=</mo><msqrt><mi>g</mi><mi>k</mi></msqrt>'),
   },
   'swell-maximum': {
     text: {

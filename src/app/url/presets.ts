@@ -166,12 +166,12 @@ export const PRESETS = {
   },
   // Interactive waves (iWave, src/sim/iwave/): a height field stepped in time, where a stone or the boat makes waves.
   /**
-   * A stone (a bump 2 m high, 1.2 m across) dropped at t = 0 on a calm sea, seen from above:
+   * A stone (a bump 2 m high, 1.2 m across) dropped at t = 0 on a calm, windless sea (seaRoughness off: the sun's disc alone glints), seen from above:
    * long waves run ahead, short ones trail. The yellow rings are Cauchy–Poisson's crests for
    * this instant, r = g t²/(8πn), those the grid carries (src/sim/iwave/cauchyPoissonRings.ts).
    */
   stone: {
-    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveGuide: true, sunElevation: 10, sunAzimuth: 0 },
+    params: { swellAmplitude: 0, rippleStrength: 0, seaRoughness: false, interactiveWaves: true, iwaveGuide: true, sunElevation: 10, sunAzimuth: 0 },
     // Low, into the sun: its glint breaks on each crest. The field centres where the camera looks.
     camera: { position: [-20, 7, 16], target: [-20, 0, -20] },
     stones: [[0, -20, -20, 1.2, 2]],
@@ -182,7 +182,7 @@ export const PRESETS = {
    * along the field's centre. One ring for the wave equation, a spreading train for the sea.
    */
   'stone-compare': {
-    params: { swellAmplitude: 0, rippleStrength: 0, interactiveWaves: true, iwaveEquation: 'side-by-side', iwaveGuide: true, sunElevation: 12, sunAzimuth: 345 },
+    params: { swellAmplitude: 0, rippleStrength: 0, seaRoughness: false, interactiveWaves: true, iwaveEquation: 'side-by-side', iwaveGuide: true, sunElevation: 12, sunAzimuth: 345 },
     camera: { position: [-60, 20, 25], target: [-60, 0, -20] },
     stones: [[0, -88, -20, 1.2, 2], [0, -32, -20, 1.2, 2]],
   },
@@ -192,7 +192,7 @@ export const PRESETS = {
    * takes them over.
    */
   'boat-interactive': {
-    params: { swellAmplitude: 0, rippleStrength: 0.05, interactiveWaves: true, wake: true, boatSpeed: 4, boatHeading: 270, boatFollow: true, sunElevation: 22, sunAzimuth: 315 },
+    params: { swellAmplitude: 0, rippleStrength: 0.05, seaRoughness: false, interactiveWaves: true, wake: true, boatSpeed: 4, boatHeading: 270, boatFollow: true, sunElevation: 22, sunAzimuth: 315 },
     camera: { position: [26, 16, 18], target: [1, 0, -5] },
   },
 } satisfies Record<string, Preset>;
