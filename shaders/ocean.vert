@@ -63,8 +63,6 @@ varying vec2 vGridXZ;
 // The same relative to uRenderOrigin: a few km at most, so interpolated it keeps its bits
 // (vGridXZ 10⁶ m out moves in 6 cm steps). Models with WAVE_PIXEL_NORMALS shade from it.
 varying vec2 vRelativeGridXZ;
-// A model's smooth field the pixels want interpolated from the vertices (WAVE_VERTEX_EXTRA).
-varying float vWaveExtra;
 // The wake's slope (∂η/∂x, ∂η/∂z), to tilt per-pixel normals in ocean.frag, and its foam.
 varying vec2 vWakeSlope;
 varying float vWakeFoam;
@@ -192,9 +190,6 @@ void main() {
   vHaze = 1.0 - exp(-length(uEyeRelative - relative) * uHazeDensity);
 #endif
   vRelativeGridXZ = relativeGrid;
-#ifdef WAVE_VERTEX_EXTRA
-  vWaveExtra = waveVertexExtra(relativeGrid);
-#endif
   vBand = aChunk.z;
   vWaveFade = waves;
   vec4 view = uViewRelative * vec4(relative, 1.0);

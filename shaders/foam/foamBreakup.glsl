@@ -1,7 +1,7 @@
 // The field that breaks the whitecaps' repeat (the GLSL twin of breakupNoise in
 // src/sim/waves/fft/foamBreakup.ts, read the why there): value noise whose lattice values come
 // from the seed's integer hash (src/sim/noise/integerHash.ts, MurmurHash3's finaliser), which
-// does not repeat within 2³² cells. Cells a quarter of the peak wavelength wide, carried
+// does not repeat within 2³² cells. Cells an eighth of the peak wavelength wide, carried
 // downwind at the group velocity. Where the render origin falls on each octave's lattice
 // arrives split in double precision into whole cells and the rest (breakupLattice).
 uniform float uFoamBreakupScale;        // 1 / cell, 1/m

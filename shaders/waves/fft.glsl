@@ -22,15 +22,11 @@
 //     difference normal of the same surface, for the comparison teaching view
 //   WAVE_PINCH: float wavePinch(), how pinched the surface is at this pixel, 1 − J in [0, 1]
 //     (the subsurface glow, shaders/subsurface.glsl)
-//   WAVE_VERTEX_EXTRA: float waveVertexExtra(vec2 relativeGridXZ), per vertex, which ocean.vert
-//     hands to the pixels interpolated as vWaveExtra: here the foam's breakup field, smooth
-//     over tens of metres, so the vertices (metres apart near the eye) carry it exactly enough
 
 #define WAVE_PIXEL_NORMALS
 #define WAVE_FOAM
 #define WAVE_FABRICATED_NORMAL
 #define WAVE_PINCH
-#define WAVE_VERTEX_EXTRA
 
 uniform sampler2D uFftDisplacement0;
 uniform sampler2D uFftDisplacement1;
@@ -133,10 +129,10 @@ vec4 fftPixelSlopeDerivatives;
 float fftPixelSlopeJxx;
 float fftPixelUnresolvedVariance;
 
-// The breakup field at this pixel, interpolated from the vertices (waveVertexExtra).
-varying float vWaveExtra;
+// The breakup field at this pixel, evaluated here rather than interpolated from the vertices:
+// its second octave's cells are a few metres wide at 10 m/s, finer than the far bands' vertices.
 float fftBreakup(vec2 p, bool near) {
-  return vWaveExtra;
+  return foamBreakup(p, near);
 }
 
 void fftReadPixelFields(vec2 p, bool near) {
@@ -215,11 +211,6 @@ vec4 fftDisplacementFields(vec2 p, bool near) {
 
 vec4 fftDerivativeFields(vec2 p, bool near) {
   return fftCascadeSum(uFftDerivatives0, uFftDerivatives1, uFftDerivatives2, p, near);
-}
-
-// Per vertex: the breakup field at the grid point relative to the render origin.
-float waveVertexExtra(vec2 relativeGridXZ) {
-  return foamBreakup(relativeGridXZ, true);
 }
 
 float fftBreakup(vec2 p, bool near) {

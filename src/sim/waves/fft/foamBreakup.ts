@@ -10,8 +10,8 @@ import { windVector, type SeaState } from '../spectra/seaState';
  * Whitecaps do not fall on a lattice: waves break in groups (Donelan, Longuet-Higgins &
  * Turner 1972, "Periodicity in whitecaps", Nature 239), which travel at the group velocity of
  * the dominant waves. So the breaking measure is shifted by a smooth random field that does not
- * repeat (value noise on a lattice hashed by integerNoise, whose period is 2³² cells), of cells a
- * quarter of the peak wavelength wide, carried downwind at the peak's group velocity: the folds
+ * repeat (value noise on a lattice hashed by integerNoise, whose period is 2³² cells), of cells an
+ * eighth of the peak wavelength wide, carried downwind at the peak's group velocity: the folds
  * inside a "group" break more readily, the others less. Its strength, in units of the breaking
  * measure's own spread, is what the no-tiling test needs (tests/browser/light/foamTiling.test.ts);
  * the threshold takes it into account, so the coverage stays Monahan's (breaking.ts).
