@@ -3,8 +3,8 @@ import { openOcean, startHarness } from '../tests/browser/harness';
 
 /**
  * Screenshots of lessons as a user sees them (drawer, card and panel included), at a laptop's
- * and a phone's size in both languages: `npx tsx scripts/lessonScreenshots.ts OUT_DIR lesson…`
- * after `npx vite build`.
+ * and a phone's size in both languages, as JPEG for docs/figures:
+ * `npx tsx scripts/lessonScreenshots.ts OUT_DIR lesson…` after `npx vite build`.
  */
 const [outDir = 'lesson-screenshots', ...lessons] = process.argv.slice(2);
 const SIZES = [
@@ -20,8 +20,8 @@ try {
         const { page, consoleErrors } = await openOcean(harness, `lesson=${lesson}&lang=${language}&t=5`, size.width, size.height);
         await page.waitForSelector('.oceano-lesson-card:not([hidden])');
         await page.evaluate(() => window.oceano.loaded());
-        const file = `${outDir}/${lesson}-${size.name}-${language}.png`;
-        writeFileSync(file, await page.screenshot({ type: 'png' }));
+        const file = `${outDir}/lesson-${lesson}-${size.name}-${language}.jpg`;
+        writeFileSync(file, await page.screenshot({ type: 'jpeg', quality: 82 }));
         console.log(file, consoleErrors.length > 0 ? consoleErrors : '');
         await page.close();
       }

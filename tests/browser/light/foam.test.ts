@@ -36,8 +36,10 @@ async function coverageRatios(fixed: boolean): Promise<number[]> {
 describe('foam from above follows Monahan', () => {
   it('near-white share within ±30 % of W at 10, 15 and 20 m/s; control: the foam left behind drawn solid white is 1.5–2.3 W', { timeout: 240_000 }, async () => {
     const ratios = await coverageRatios(true);
+    console.log(`[oceano] foam coverage / Monahan's W at 10, 15, 20 m/s: ${ratios.map((r) => r.toFixed(2)).join(', ')}`);
     for (const ratio of ratios) expect(Math.abs(ratio - 1), ratios.map((r) => r.toFixed(2)).join(', ')).toBeLessThan(TOLERANCE);
     const control = await coverageRatios(false);
+    console.log(`[oceano] control, foam left behind drawn solid: ${control.map((r) => r.toFixed(2)).join(', ')}`);
     expect(Math.min(...control), control.map((r) => r.toFixed(2)).join(', ')).toBeGreaterThan(1 + TOLERANCE);
   });
 });
