@@ -280,7 +280,9 @@ export class Ocean extends Object3D {
    */
   private setInteractiveWaves(on: boolean): void {
     if (on && !this.interactive) {
-      const start = import('../iwave/interactiveWaves').then(({ InteractiveWaves, iwaveChunk }) => {
+      // The field's slope reaches the normals through the wake's GLSL (wakeTiltNormal): both must be here before OCEAN_IWAVE goes in.
+      this.loadWakeCode();
+      const start = Promise.all([import('../iwave/interactiveWaves'), this.wakeCodeLoad]).then(([{ InteractiveWaves, iwaveChunk }]) => {
         if (!this.params.interactiveWaves || this.interactive || this.disposed) return;
         this.interactive = new InteractiveWaves(this.renderer, this.interactiveWaveUniforms);
         this.interactive.setEquation(this.params.iwaveEquation);
