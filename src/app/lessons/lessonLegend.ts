@@ -11,8 +11,12 @@ import type { OutlinedLesson as Lesson } from './lessonOutline';
 import type { LessonHooks } from './lessonHooks';
 import { FreeArea } from '../layout/freeArea';
 
-/** How far along the wake guide (metres from the boat; the guide is 150 m long) its angle is written. */
-const KELVIN_LABEL_DISTANCE = 45;
+/**
+ * How far along the wake guide (metres from the boat; the guide is 150 m long) its angle is
+ * written: the first of these whose point is in the free part of the canvas, so a narrow
+ * screen that shows only the guide's start still names it.
+ */
+const KELVIN_LABEL_DISTANCES = [45, 35, 25, 60, 80, 15];
 /** The hull's sample points, in the order the labels are made. */
 const HULL_POINTS: readonly HullPointName[] = ['centre', 'bow', 'stern', 'port', 'starboard'];
 
@@ -113,14 +117,19 @@ export class LessonLegend {
     const width = scene.canvas.clientWidth;
     const height = scene.canvas.clientHeight;
     const free: Rect = FreeArea.of(this.container).rect ?? { x: 0, y: 0, width, height };
+    // A point's place on the canvas, CSS pixels from its top left, if it is in the free part; none behind the camera.
+    const inFree = (world: [number, number, number]): [number, number] | null => {
+      const p = new Vector3(...world).project(scene.camera);
+      if (Math.abs(p.z) > 1) return null;
+      const x = ((p.x + 1) / 2) * width;
+      const y = ((1 - p.y) / 2) * height;
+      return x >= free.x && x <= free.x + free.width && y >= free.y && y <= free.y + free.height ? [x, y] : null;
+    };
     this.labels.forEach((label, i) => {
-      const world = points[i];
-      // The point's place on the canvas, CSS pixels from its top left; none behind the camera.
-      const p = world ? new Vector3(...world).project(scene.camera) : null;
-      const point = p && Math.abs(p.z) <= 1 ? [((p.x + 1) / 2) * width, ((1 - p.y) / 2) * height] : null;
-      const visible = point !== null && point[0] >= free.x && point[0] <= free.x + free.width && point[1] >= free.y && point[1] <= free.y + free.height;
-      label.hidden = !visible;
-      if (!visible) return;
+      let point: [number, number] | null = null;
+      for (const world of points[i]) if ((point = inFree(world))) break;
+      label.hidden = point === null;
+      if (!point) return;
       const right = free.x + free.width;
       let x = point[0];
       if (this.kind === 'hullPoints') {
@@ -134,35 +143,32 @@ export class LessonLegend {
     });
   }
 
-  /** The world points the labels mark, in label order. */
-  private points(params: OceanParams, scene: ReturnType<LessonHooks['scene']>): ([number, number, number] | null)[] {
+  /** Where each label may go, in label order: world points, the preferred first; none when it has nothing to mark. */
+  private points(params: OceanParams, scene: ReturnType<LessonHooks['scene']>): [number, number, number][][] {
     if (this.kind === 'hullPoints') {
       const { position, heading, hull } = scene.boat;
       const points = hullSamplePoints(position[0], position[2], heading, hull);
       return HULL_POINTS.map((name) => {
         const [x, z] = points[name];
-        return [x, scene.height(x, z), z];
+        return [[x, scene.height(x, z), z]];
       });
     }
     if (this.kind === 'kelvinAngle') {
-      if (!params.wake || !params.wakeGuide) return [null, null];
+      if (!params.wake || !params.wakeGuide) return [[], []];
       const { position, heading } = scene.boat;
-      const [, , px, pz, sx, sz] = kelvinGuideLines(position[0], position[2], heading, KELVIN_LABEL_DISTANCE);
-      return [
-        [px, 0, pz],
-        [sx, 0, sz],
-      ];
+      const ends = KELVIN_LABEL_DISTANCES.map((distance) => kelvinGuideLines(position[0], position[2], heading, distance));
+      return [ends.map(([, , px, pz]): [number, number, number] => [px, 0, pz]), ends.map(([, , , , sx, sz]): [number, number, number] => [sx, 0, sz])];
     }
     // Where the cone of Snell's window, opening up from the eye, meets a flat sea straight ahead.
     const { position, target } = scene.pose;
     const depth = -position[1];
-    if (depth <= 0) return [null];
+    if (depth <= 0) return [[]];
     const dx = target[0] - position[0];
     const dz = target[2] - position[2];
     const across = Math.hypot(dx, dz);
-    if (across === 0) return [null];
+    if (across === 0) return [[]];
     const reach = depth * Math.tan(snellWindowHalfAngle());
-    return [[position[0] + (dx / across) * reach, 0, position[2] + (dz / across) * reach]];
+    return [[[position[0] + (dx / across) * reach, 0, position[2] + (dz / across) * reach]]];
   }
 
   dispose(): void {
