@@ -2,6 +2,7 @@ import { Vector3 } from 'three';
 import { along, horizontalDistance } from '../../sim/tools/rulerDistance';
 import { SeaLine, SeaPin } from '../../render/teaching/seaMarkers';
 import { toolNumber, toolWord } from '../language/toolWords';
+import { FreeArea } from '../layout/freeArea';
 import type { SeaTool, SeaToolContext, SeaXZ } from './seaTool';
 
 const RULER_COLOUR = 0xffe066;
@@ -111,11 +112,17 @@ export class RulerTool implements SeaTool {
     const middle = along(this.a, this.b, 0.5);
     const canvas = this.context.canvas;
     const p = new Vector3(middle.x, this.context.height(middle.x, middle.z), middle.z).project(this.context.camera);
-    const x = ((p.x + 1) / 2) * canvas.clientWidth;
-    const y = ((1 - p.y) / 2) * canvas.clientHeight;
-    const visible = Math.abs(p.z) <= 1 && x >= 0 && x <= canvas.clientWidth && y >= 0 && y <= canvas.clientHeight;
+    let x = ((p.x + 1) / 2) * canvas.clientWidth;
+    let y = ((1 - p.y) / 2) * canvas.clientHeight;
+    // Only in the part of the canvas the panels leave free, as the lessons' labels (the whole canvas in a figure without panels).
+    const free = (canvas.parentElement && FreeArea.of(canvas.parentElement).rect) || { x: 0, y: 0, width: canvas.clientWidth, height: canvas.clientHeight };
+    const visible = Math.abs(p.z) <= 1 && x >= free.x && x <= free.x + free.width && y >= free.y && y <= free.y + free.height;
     this.label.hidden = !visible;
-    if (visible) this.label.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px)`;
+    if (!visible) return;
+    // The label's box starts 20 px left of and 24 px above the point (seaTools.css): slid back in where it would cross the edge.
+    x = Math.max(free.x + 20, Math.min(x, free.x + free.width + 20 - this.label.offsetWidth));
+    y = Math.max(free.y + 24, y);
+    this.label.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px)`;
   }
 
   private show(): void {
