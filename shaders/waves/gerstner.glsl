@@ -101,18 +101,25 @@ vec3 waveVertexToEye;
 const float GERSTNER_VERTEX_SLOPE_ERROR = 0.02;
 #endif
 
+// Wave i's trochoid at a grid point added to d: its points circle, back along the wave's
+// direction and up; returns the phase's (sin, cos), which the derivatives reuse.
+vec2 gerstnerAddDisplacement(int i, vec2 gridXZ, inout vec3 d) {
+  vec4 wave = uGerstnerWaves[i];
+  float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
+  float s = sinTurns(turns);
+  float c = sinTurns(turns + 0.25);
+  vec2 dir = wave.xy / length(wave.xy);
+  d.x -= wave.w * dir.x * s;
+  d.z -= wave.w * dir.y * s;
+  d.y += wave.z * c;
+  return vec2(s, c);
+}
+
 vec3 waveDisplacement(vec2 gridXZ) {
   vec3 d = vec3(0.0);
   for (int i = 0; i < GERSTNER_MAX_WAVES; i++) {
     if (i >= uGerstnerCount) break;
-    vec4 wave = uGerstnerWaves[i];
-    float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
-    float s = sinTurns(turns);
-    float c = sinTurns(turns + 0.25);
-    vec2 dir = wave.xy / length(wave.xy);
-    d.x -= wave.w * dir.x * s;
-    d.z -= wave.w * dir.y * s;
-    d.y += wave.z * c;
+    gerstnerAddDisplacement(i, gridXZ, d);
   }
   return d;
 }
@@ -138,29 +145,16 @@ vec3 waveVertexDisplacement(vec2 gridXZ) {
     float cycles = length(wave.xy);
     float ks = TURN_RADIANS * cycles * waveVertexSpacing;
     if (max(wave.z, wave.w) * TURN_RADIANS * cycles * ks * ks > 4.0 * GERSTNER_VERTEX_SLOPE_ERROR) break;
-    float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
-    float s = sinTurns(turns);
-    float c = sinTurns(turns + 0.25);
-    vec2 dir = wave.xy / cycles;
-    d.x -= wave.w * dir.x * s;
-    d.z -= wave.w * dir.y * s;
-    d.y += wave.z * c;
+    vec2 sc = gerstnerAddDisplacement(i, gridXZ, d);
     float share = gerstnerShare(wave, footprint);
-    gerstnerAddDerivatives(wave, s, c, share, horizontal, dydz);
+    gerstnerAddDerivatives(wave, sc.x, sc.y, share, horizontal, dydz);
     variance += share * share * gerstnerSlope(i);
   }
   vGerstnerFirstPixelWave = i;
   // The rest: displacement only (their slopes are the pixels').
   for (; i < GERSTNER_MAX_WAVES; i++) {
     if (i >= uGerstnerCount) break;
-    vec4 wave = uGerstnerWaves[i];
-    float turns = gerstnerTurns(wave, gerstnerPhase(i), gridXZ);
-    float s = sinTurns(turns);
-    float c = sinTurns(turns + 0.25);
-    vec2 dir = wave.xy / length(wave.xy);
-    d.x -= wave.w * dir.x * s;
-    d.z -= wave.w * dir.y * s;
-    d.y += wave.z * c;
+    gerstnerAddDisplacement(i, gridXZ, d);
   }
   vGerstnerHorizontal = horizontal;
   vGerstnerDydzAndVariance = vec2(dydz, variance);

@@ -34,7 +34,7 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'fft-short-fetch': { file: 'src/sim/waves/spectra/jonswap.ts', from: 'export function jonswapWithShape(', to: 'return ((alpha' },
   'fft-gale': { file: 'shaders/waves/fftBreaking.glsl', from: 'float fftBreaking(float jxx, float jzz, float jxz) {', to: 'return min(determinant, minEigenvalue);' },
   'fft-normals': { file: 'shaders/waves/fft.glsl', from: 'vec3 fftNormal(vec2 p, bool near) {', to: 'return normalize(cross(tz, tx));' },
-  'gerstner-gentle': { file: 'shaders/waves/gerstner.glsl', from: 'vec3 waveDisplacement(vec2 gridXZ) {', to: 'return d;' },
+  'gerstner-gentle': { file: 'shaders/waves/gerstner.glsl', from: 'vec2 gerstnerAddDisplacement(int i, vec2 gridXZ, inout vec3 d) {', to: 'return vec2(s, c);' },
   'gerstner-steepness': { file: 'src/sim/waves/gerstner/gerstnerSpectrum.ts', from: 'export function limitSteepness(', to: 'return waves.map(' },
   'compare-models': { file: 'src/sim/compare/compareLayout.ts', from: 'export function compareStrips(', to: 'return strips;' },
   'physics-panel': { file: 'src/sim/physics/physicsEstimators.ts', from: 'export function significantWaveHeight(', to: 'return 4 * Math.sqrt(variance' },
