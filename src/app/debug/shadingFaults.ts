@@ -24,6 +24,8 @@ export interface ShadingFixes {
   foamBreakup: boolean;
   /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
   subsurfaceCrests: boolean;
+  /** The water's colour as its optics give it; off: 3 % brighter, the smallest change the reference comparison must catch. */
+  exactWaterColour: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -82,6 +84,8 @@ const TILED_FOAM: ShaderFault = {
 };
 /** The subsurface glow on every pixel alike, crest or trough. */
 const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
+/** The water's own colour 3 % brighter. */
+const BRIGHTER_WATER: ShaderFault = { name: 'brighter-water', fragment: [['vec3 water = waterBodyColor();', 'vec3 water = 1.03 * waterBodyColor();']] };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
 const UNMARKED_SEA_BED: ShaderFault = { name: 'unmarked-sea-bed', fragment: [['SEA_BED_ALPHA);', '1.0);']] };
 
@@ -123,6 +127,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(SOLID_KEPT_FOAM, fixes.foamCoverage);
   toggle(TILED_FOAM, fixes.foamBreakup);
   toggle(GLOW_EVERYWHERE, fixes.subsurfaceCrests);
+  toggle(BRIGHTER_WATER, fixes.exactWaterColour);
   const ocean = view.ocean;
   const material = ocean.material;
   const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);

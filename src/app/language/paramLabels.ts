@@ -35,6 +35,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   sunElevation: 'Elevación del sol',
   sunAzimuth: 'Acimut del sol',
   waterColor: 'Color del agua profunda',
+  waterColorPicked: 'Usar el color de agua elegido',
   fresnel: 'Fresnel',
   seaRoughness: 'Rugosidad (Cox y Munk)',
   wireframe: 'Malla de alambre',

@@ -38,7 +38,7 @@ export interface OceanOptions {
 }
 
 /** The parameters an ocean material shows (every model's material of a comparison alike). */
-const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'seaRoughness', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface'];
+export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface'];
 
 /**
  * The ocean as a three.js object: add it to your scene, call `update(time, camera)` before
@@ -480,6 +480,7 @@ export function firstModel(params: Pick<OceanParams, 'waves' | 'compare'>): Wave
 
 export function applyLook(material: OceanMaterial, params: OceanParams): void {
   material.setWaterColor(params.waterColor);
+  material.setWaterColorPicked(params.waterColorPicked);
   material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
   material.setFresnelEnabled(params.fresnel);
   material.setSmoothSea(!params.seaRoughness);

@@ -105,7 +105,6 @@ export class OceanMaterial extends ShaderMaterial {
    */
   override onBeforeRender(renderer: unknown, _scene: unknown, camera: Camera): void {
     this.followWake();
-    this.followWaterOptics();
     // A sixth of the model's largest height: about one standard deviation of height (the spectral
     // bounds are 6.6–7σ, src/sim/waves/spectra/spectralBounds.ts), for the subsurface glow.
     this.uniforms.uCrestHeight.value = Math.max(this.waves.model.model.bounds().vertical / 6, 0.01);
@@ -219,12 +218,12 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   /**
-   * The water's own colour from its optics (OCEAN_WATER_OPTICS in ocean.frag) on the spectral
-   * sea, lit by the same physics as its glint; the seed's sea keeps the picked colour, so the
-   * default view, the course's reference picture, stays as it is.
+   * The water's own colour from its optics (OCEAN_WATER_OPTICS in ocean.frag), lit by the same
+   * sun and sky as its glint, on every wave model; `picked`: the deep-water colour chosen by
+   * hand instead (waterColorPicked), an artistic override.
    */
-  private followWaterOptics(): void {
-    setMaterialDefine(this, 'OCEAN_WATER_OPTICS', this.waves.model.name === 'fft');
+  setWaterColorPicked(picked: boolean): void {
+    this.setDefine('OCEAN_WATER_OPTICS', !picked);
   }
 
   /**

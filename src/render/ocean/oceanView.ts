@@ -19,7 +19,7 @@ import { UnderwaterStage } from '../underwater/underwaterStage';
 import type { ChunkStats } from '../lod/oceanChunks';
 import { DEFAULT_NEAR } from './nearPlane';
 import { CAMERA_FAR, EyeClearance } from './eyeClearance';
-import { Ocean } from './ocean';
+import { LOOK_KEYS, Ocean } from './ocean';
 
 
 export interface RenderStats extends ChunkStats {
@@ -31,8 +31,6 @@ export interface RenderStats extends ChunkStats {
   /** EffectComposer passes run for the last frame: 0 when it was drawn directly. */
   composerPasses: number;
 }
-
-const LOOK_KEYS: ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'fresnel', 'seaRoughness', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors'];
 
 /**
  * The app's view, built on the library's Ocean: its own renderer, scene and camera, the

@@ -78,6 +78,9 @@ export const paramDefs = {
   sunElevation: { kind: 'number', default: 18, min: -10, max: 90, step: 0.5, unit: '°', label: 'Sun elevation' },
   sunAzimuth: { kind: 'number', default: 20, min: 0, max: 360, step: 1, unit: '°', label: 'Sun azimuth' },
   waterColor: { kind: 'color', default: '#06283a', label: 'Deep water colour' },
+  // The water's colour comes from its optics (absorption and scattering, docs/light.md) on
+  // every wave model; the picked colour above is an artistic override, used only when this is on.
+  waterColorPicked: { kind: 'boolean', default: false, label: 'Use the picked water colour' },
   fresnel: { kind: 'boolean', default: true, label: 'Fresnel' },
   // The slopes the picture does not show (Cox & Munk's σ² for the wind less the model's own)
   // as the roughness of the sun's glint and the sky's reflection (docs/light.md); off, a mirror
