@@ -64,8 +64,10 @@ export async function viewsReady(page: Page): Promise<void> {
   await page.waitForFunction(() => customElements.get('oceano-view') !== undefined);
   await page.waitForFunction(() => Array.from(document.querySelectorAll('oceano-view')).every((view) => (view as HTMLElement & { oceano: unknown }).oceano));
   await page.evaluate(async () => {
-    const views = Array.from(document.querySelectorAll('oceano-view')) as (HTMLElement & { oceano: { ready: Promise<void> } })[];
+    const views = Array.from(document.querySelectorAll('oceano-view')) as (HTMLElement & { oceano: { ready: Promise<void>; loaded(): Promise<void> } })[];
     await Promise.all(views.map((view) => view.oceano.ready));
+    // The parts fetched on first use (the foam's texture and GLSL) change the picture when they arrive.
+    await Promise.all(views.map((view) => view.oceano.loaded()));
   });
 }
 

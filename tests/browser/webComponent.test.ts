@@ -138,6 +138,8 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     await page.waitForFunction(() => (document.querySelector('#far') as ViewElement).oceano?.activity().looping === true);
     const farFrames = (await state('#far')).activity!.framesDrawn;
     await page.waitForFunction((n) => (document.querySelector('#far') as ViewElement).oceano!.activity().framesDrawn > n, {}, farFrames);
+    // The still gives way once the live picture is complete (ready), which may come after a first frame.
+    await page.waitForFunction(() => document.querySelector('#far .oceano-still') === null);
     expect(await state('#far')).toMatchObject({ live: true, webgl: true, still: false });
     // The first figure, now far above, has given its context back in turn.
     await page.waitForFunction(() => (document.querySelector('#near') as ViewElement).oceano === null);
