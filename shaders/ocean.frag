@@ -24,7 +24,7 @@ uniform vec3 uDeepColor;
 uniform vec3 uFacingTint;
 uniform vec3 uSunDirection;
 uniform vec3 uSunColor;
-uniform float uHazeDensity;
+#include <oceano_haze>
 
 // The pixel's position and the eye's relative to the render origin (see ocean.vert).
 varying vec3 vRelativePosition;
@@ -42,7 +42,7 @@ uniform bool uFlatNormals;
 const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 
 // The haze towards the horizon: its colour, the sky at the horizon beyond the pixel, and its
-// weight, 1 - exp(-distance · density). The near bands' material (OCEAN_NEAR_BANDS: vertices
+// weight (shaders/haze.glsl). The near bands' material (OCEAN_NEAR_BANDS: vertices
 // at most a few metres apart) interpolates both from its vertices (ocean.vert): where the
 // haze weighs anything a triangle spans about a degree of azimuth, too little for the sky's
 // colour to bend, and the distance across it is linear to a millimetre. The far bands, rings
@@ -52,10 +52,10 @@ const vec3 FOAM_COLOR = vec3(0.82, 0.86, 0.88);
 varying vec3 vHorizon;
 varying float vHaze;
 vec3 hazeColor(vec3 toEye) { return vHorizon; }
-float hazeWeight(float distance) { return vHaze; }
+float hazeWeight() { return vHaze; }
 #else
 vec3 hazeColor(vec3 toEye) { return skyCubeColor(normalize(vec3(-toEye.x, 0.0, -toEye.z))); }
-float hazeWeight(float distance) { return 1.0 - exp(-distance * uHazeDensity); }
+float hazeWeight() { return hazeWeightBetween(uEyeRelative, vRelativePosition); }
 #endif
 
 // The boat's wake, compiled in while it is on (OceanMaterial). Its slope and foam come
@@ -326,7 +326,7 @@ void main() {
 #endif
   }
 
-  color = mix(color, hazeColor(v), hazeWeight(distance));
+  color = mix(color, hazeColor(v), hazeWeight());
   color = rollOffHighlights(color);
 
 #ifdef OCEAN_LOD_COLORS

@@ -48,7 +48,7 @@ uniform vec3 uEyeRelative;
 // The near bands' haze: its colour, the sky at the horizon beyond the vertex, and its weight
 // by the vertex's distance from the eye (see ocean.frag).
 #include <oceano_sky_cube>
-uniform float uHazeDensity;
+#include <oceano_haze>
 varying vec3 vHorizon;
 varying float vHaze;
 #endif
@@ -187,7 +187,7 @@ void main() {
   // gets the +x horizon (the haze's weight is 0 there).
   vec2 away = relative.xz - uEyeRelative.xz + vec2(1e-20, 0.0);
   vHorizon = skyCubeColor(vec3(away.x, 0.0, away.y));
-  vHaze = 1.0 - exp(-length(uEyeRelative - relative) * uHazeDensity);
+  vHaze = hazeWeightBetween(uEyeRelative, relative);
 #endif
   vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;

@@ -59,6 +59,7 @@ export const SCENARIOS: readonly BenchScenario[] = [
   // What each new term of the light costs, the FFT view without it (docs/light.md).
   { name: 'FFT view, foam as paint (foamTexture=0)', query: 't=10&waves=fft&foamTexture=0', stepSeconds: 1 / 60 },
   { name: 'FFT view, no subsurface glow (subsurface=0)', query: 't=10&waves=fft&subsurface=0', stepSeconds: 1 / 60 },
+  { name: 'FFT view, no roughness (seaRoughness=0)', query: 't=10&waves=fft&seaRoughness=0', stepSeconds: 1 / 60 },
   // The three models side by side against the dearest of them alone, same camera
   // and wind, both with the clock running (the FFT passes run in both).
   // Each strip's render is timed apart ('scene <model> strip'), to see where a split frame's time goes.
@@ -91,6 +92,7 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['FFT view / default', 'FFT view (waves=fft, clock running)', 'default view', 1.3],
   ['FFT view / foam as paint', 'FFT view (waves=fft, clock running)', 'FFT view, foam as paint (foamTexture=0)', null],
   ['FFT view / no subsurface glow', 'FFT view (waves=fft, clock running)', 'FFT view, no subsurface glow (subsurface=0)', null],
+  ['FFT view / no roughness', 'FFT view (waves=fft, clock running)', 'FFT view, no roughness (seaRoughness=0)', null],
   // A split view costs no more than its dearest model alone.
   ['compare-models / fft alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, fft alone', 1],
   ['compare-models / gerstner alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, gerstner alone', 1],

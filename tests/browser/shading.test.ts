@@ -6,10 +6,10 @@ import { useHarness } from './useHarness';
 
 const harness = useHarness();
 
-// Measured at 640 × 360: 2.22 with detail normals, 1.54 with vertex normals only. (With the
-// old fixed highlight, before the glint took Cox & Munk's roughness, docs/light.md §4: 4.97 and
-// 3.60; the rough glint is smoother, the detail normals still show in it.)
-const MIN_FAR_ENERGY = 1.85;
+// Measured at 640 × 360 under a 20 km visibility's haze: 4.29 with detail normals, 3.08 with
+// vertex normals only; the bound lies between them, near their geometric mean. (Under the old
+// 3.26 km haze, which dimmed this band's contrast: 2.22 and 1.54, bound 1.85; docs/light.md §3.)
+const MIN_FAR_ENERGY = 3.6;
 // Measured: 3.05 / 3.07 = 0.99 with camera-relative positions, 5.79 / 3.07 = 1.89 with world
 // coordinates (main). The two spots have different waves, so not 1 exactly.
 const MAX_FAR_GLINT_RATIO = 1.3;

@@ -26,6 +26,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   foamFade: 'Decaimiento de la espuma τ',
   foamTexture: 'Textura de la espuma',
   subsurface: 'Brillo bajo la superficie',
+  visibility: 'Visibilidad (calima)',
   normalsCompare: 'Comparar normales de pendiente | fabricadas',
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',

@@ -13,6 +13,7 @@ import type { WakeUniforms } from '../wake/wakeUniforms';
 import type { FoamUniforms } from '../foam/foamUniforms';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from '../sky/skyCubeUniforms';
 import { setMaterialDefine } from '../shaders/materialDefines';
+import { hazeExtinction } from '../../sim/optics/haze';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
@@ -50,7 +51,7 @@ export class OceanMaterial extends ShaderMaterial {
         uDeepColor: { value: new Color() },
         uFacingTint: { value: new Color() },
         uSunDirection: { value: new Vector3(0, 1, 0) },
-        uHazeDensity: { value: 0.0012 },
+        uHazeExtinction: { value: hazeExtinction(20_000) },
         uFlatNormals: { value: false },
         uChunkQuads: { value: CHUNK_QUADS },
         uOceanCenter: { value: new Vector2() },
@@ -163,6 +164,11 @@ export class OceanMaterial extends ShaderMaterial {
   setTeachingViews(flatNormals: boolean, showNormals: boolean): void {
     this.uniforms.uFlatNormals.value = flatNormals;
     this.setDefine('OCEAN_SHOW_NORMALS', showNormals);
+  }
+
+  /** The air's clarity: the haze's extinction at sea level for a visibility in km (shaders/haze.glsl). */
+  setVisibility(kilometres: number): void {
+    this.uniforms.uHazeExtinction.value = hazeExtinction(kilometres * 1000);
   }
 
   /** Thin sunlit crests glowing (shaders/subsurface.glsl), compiled in while on. */

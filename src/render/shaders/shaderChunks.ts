@@ -5,6 +5,7 @@ import waterline from '../../../shaders/waterline.glsl?raw';
 import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
 import subsurface from '../../../shaders/subsurface.glsl?raw';
+import haze from '../../../shaders/haze.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 import { SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
 
@@ -29,6 +30,8 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_waterline: waterline,
   // Thin sunlit crests glowing (ocean.frag, OCEAN_SUBSURFACE).
   oceano_subsurface: subsurface,
+  // The air's haze between the eye and the sea (ocean.vert's near bands, ocean.frag's far ones).
+  oceano_haze: haze,
   // The underwater passes' scene target, written after three's colour-space chunk (read back by
   // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,

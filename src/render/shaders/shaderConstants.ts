@@ -1,5 +1,6 @@
 import { WATER_IOR } from '../../sim/optics/fresnel';
 import { SUN_IRRADIANCE } from '../../sim/optics/sun';
+import { AEROSOL_SCALE_HEIGHT } from '../../sim/optics/haze';
 import { SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/sunDisc';
 import { bodyColor } from '../../sim/optics/waterColor';
 import { crestScattering, PARTICLE_MEAN_COSINE } from '../../sim/optics/subsurfaceGlow';
@@ -34,6 +35,7 @@ export function shaderConstantsChunk(): string {
     `#define WATER_EXTINCTION ${glslVec3(WATER_EXTINCTION)}`,
     `#define DEPTH_DARKENING ${glslVec3(DEPTH_DARKENING)}`,
     `#define SUN_IRRADIANCE ${glslFloat(SUN_IRRADIANCE)}`,
+    `#define AEROSOL_SCALE_HEIGHT ${glslFloat(AEROSOL_SCALE_HEIGHT)}`,
     `#define SUN_DISC_SLOPE_VARIANCE ${glslFloat(SUN_DISC_SLOPE_VARIANCE)}`,
     `#define WATER_BODY_REFLECTANCE ${glslVec3(bodyColor())}`,
     `#define SUBSURFACE_SCATTER ${glslVec3(crestScattering())}`,

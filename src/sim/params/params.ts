@@ -86,6 +86,9 @@ export const paramDefs = {
   // as the roughness of the sun's glint and the sky's reflection (docs/light.md); off, a mirror
   // but for the sun's disc, as the seed's lessons of a windless sea show it.
   seaRoughness: { kind: 'boolean', default: true, label: 'Roughness (Cox & Munk)' },
+  // How far a dark object can be told from the horizon (Koschmieder's 2 % contrast): the haze
+  // between the eye and the sea (src/sim/optics/haze.ts). 20 km: a clear day at sea.
+  visibility: { kind: 'number', default: 20, min: 1, max: 60, step: 0.5, unit: 'km', label: 'Visibility (haze)' },
   wireframe: { kind: 'boolean', default: false, label: 'Wireframe' },
   boatSpeed: { kind: 'number', default: 0, min: -3, max: 12, step: 0.1, unit: 'm/s', label: 'Boat speed' },
   boatHeading: { kind: 'number', default: 290, min: 0, max: 360, step: 1, unit: '°', label: 'Boat heading' },

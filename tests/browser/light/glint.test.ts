@@ -13,10 +13,17 @@ import { GLINT_VIEW, HORIZON_VIEW, glintQuery, horizonQuery } from './lightViews
  * lower end taken down to 1.50 because the picture's core clips at the display's white: the
  * narrower, brighter 5 m/s glint is measured wider than it is (docs/light.md, §3).
  * And the far sea does not sparkle: between two frames 1/60 s apart, the band just below
- * the horizon changes no more than the sea near the eye.
+ * the horizon changes by less than FLICKER_BOUND on every model, and on the FFT sea, whose
+ * near sea moves fastest, by less than the sea near the eye.
  */
 const harness = useHarness();
 const COX_MUNK_RATIO = [1.5, 1.85] as const;
+/**
+ * Mean change of the far band's luminance (0–255) between two frames 1/60 s apart, 10 m/s.
+ * Measured: FFT 0.71 (its near band 1.77), seed 0.26, Gerstner 0.24; the fixed highlight on
+ * the FFT sea 7.05 (near 1.95). The bound lies above the three by 29 % at least.
+ */
+const FLICKER_BOUND = 1.0;
 
 async function frozenAt(page: Page, t: number): Promise<Buffer> {
   await page.evaluate((t) => {
@@ -38,8 +45,8 @@ async function glintRatio(faults: Partial<ShadingFixes> | null, waves: 'fft' | '
   return widths[1] / widths[0];
 }
 
-async function flicker(fixed: boolean): Promise<{ far: number; near: number }> {
-  const { page } = await openOcean(harness, horizonQuery(10), HORIZON_VIEW.width, HORIZON_VIEW.height);
+async function flicker(fixed: boolean, waves: 'fft' | 'seed' | 'gerstner' = 'fft'): Promise<{ far: number; near: number }> {
+  const { page } = await openOcean(harness, horizonQuery(10, waves), HORIZON_VIEW.width, HORIZON_VIEW.height);
   if (!fixed) await page.evaluate(() => window.oceano.debug.setShadingFixes({ slopeRoughness: false }));
   const a = await frozenAt(page, HORIZON_VIEW.t);
   const b = await frozenAt(page, HORIZON_VIEW.t + 1 / 60);
@@ -75,10 +82,16 @@ describe('the glint follows Cox & Munk', () => {
     });
   }
 
-  it('the far sea flickers less than the near sea between frames 1/60 s apart; control: the fixed highlight flickers more', { timeout: 240_000 }, async () => {
-    const fixed = await flicker(true);
-    expect(fixed.far).toBeLessThan(fixed.near);
+  it(`the far sea changes by at most ${FLICKER_BOUND} levels between frames 1/60 s apart, on every wave model, and less than the near sea on the FFT sea; control: the fixed highlight flickers more`, { timeout: 300_000 }, async () => {
+    for (const waves of ['fft', 'seed', 'gerstner'] as const) {
+      const fixed = await flicker(true, waves);
+      console.log(`[oceano] ${waves} flicker, mean Δ levels over 1/60 s: far ${fixed.far.toFixed(2)}, near ${fixed.near.toFixed(2)}`);
+      expect(fixed.far).toBeLessThan(FLICKER_BOUND);
+      if (waves === 'fft') expect(fixed.far).toBeLessThan(fixed.near);
+    }
     const control = await flicker(false);
+    console.log(`[oceano] fft flicker with the fixed highlight: far ${control.far.toFixed(2)}, near ${control.near.toFixed(2)}`);
+    expect(control.far).toBeGreaterThan(FLICKER_BOUND);
     expect(control.far).toBeGreaterThan(control.near);
   });
 });

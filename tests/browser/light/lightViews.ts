@@ -29,8 +29,8 @@ export function glintQuery(windSpeed: number, waves: 'fft' | 'seed' | 'gerstner'
 /** Rows just below the horizon (the far sea) and at the bottom of the frame (the sea near the eye). */
 export const HORIZON_VIEW = { width: 640, height: 360, t: 10, farBand: [182, 198], nearBand: [330, 360] } as const;
 
-export function horizonQuery(windSpeed: number): string {
-  return `waves=fft&windSpeed=${windSpeed}&t=${HORIZON_VIEW.t}&cam=0,10,0,0,10,-1000`;
+export function horizonQuery(windSpeed: number, waves: 'fft' | 'seed' | 'gerstner' = 'fft'): string {
+  return `waves=${waves}&windSpeed=${windSpeed}&t=${HORIZON_VIEW.t}&cam=0,10,0,0,10,-1000`;
 }
 
 /**
