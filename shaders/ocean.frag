@@ -127,32 +127,12 @@ vec3 rollOffHighlights(vec3 c) {
   return min(c, HIGHLIGHT_KNEE) + (1.0 - HIGHLIGHT_KNEE) * (1.0 - exp(-over));
 }
 
-// Linear interpolation between table entries done by hand: float textures are not
-// filterable everywhere in WebGL2.
-float fresnelLookup(sampler2D table, float cosIncidence) {
-  int size = textureSize(table, 0).x;
-  float x = clamp(cosIncidence, 0.0, 1.0) * float(size - 1);
-  int i = int(floor(x));
-  int j = min(i + 1, size - 1);
-  float a = texelFetch(table, ivec2(i, 0), 0).r;
-  float b = texelFetch(table, ivec2(j, 0), 0).r;
-  return mix(a, b, x - float(i));
-}
+#include <oceano_fresnel_lookup>
 
-// The colour of the water itself from its optics (OCEAN_WATER_OPTICS; src/sim/optics/waterColor.ts):
-// the light that reaches just below the surface, the sun's through the surface plus the
-// sky's (taken as a sky as bright as its zenith all over, π L), is scattered back up by the
-// water molecules in the share R(λ) = 0.33 b_b/(a + b_b), evenly over the upward directions
-// (radiance R E / π), and leaves through the surface, its beam widened by n² (the (1 − F)
-// is the mix with the reflected sky below). Red is absorbed within metres, blue scattered:
-// deep clear water is dark blue, whatever colour was picked.
+// The water's own colour from its optics (shaders/waterBody.glsl): the same at every point, so
+// worked out once a vertex, not once a pixel (perf: docs/light.md §6).
 #ifdef OCEAN_WATER_OPTICS
-vec3 waterBodyColor() {
-  float sunHeight = max(uSunDirection.y, 0.0);
-  vec3 sunThrough = uSunColor * SUN_IRRADIANCE * sunHeight * (1.0 - fresnelLookup(uFresnelTable, sunHeight));
-  vec3 skyThrough = 3.14159265 * skyCubeColor(vec3(0.0, 1.0, 0.0));
-  return WATER_BODY_REFLECTANCE * (sunThrough + skyThrough) / (3.14159265 * WATER_IOR * WATER_IOR);
-}
+flat varying vec3 vWaterBody;
 #endif
 
 #ifdef OCEAN_SUBSURFACE
@@ -290,7 +270,7 @@ void main() {
   vec3 sky = skyCubeColorRough(r, roughness);
 
 #ifdef OCEAN_WATER_OPTICS
-  vec3 water = waterBodyColor();
+  vec3 water = vWaterBody;
 #else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
 #endif

@@ -44,6 +44,16 @@ uniform vec2 uRenderOrigin;
 uniform mat4 uViewRelative;
 varying vec3 vRelativePosition;
 uniform vec3 uEyeRelative;
+#ifdef OCEAN_WATER_OPTICS
+// The water's own colour (shaders/waterBody.glsl), handed to the pixels as it is.
+#include <oceano_sky_cube>
+#include <oceano_fresnel_lookup>
+#include <oceano_water_body>
+uniform vec3 uSunDirection;
+uniform vec3 uSunColor;
+uniform sampler2D uFresnelTable;
+flat varying vec3 vWaterBody;
+#endif
 #ifdef OCEAN_NEAR_BANDS
 // The near bands' haze: its colour, the sky at the horizon beyond the vertex, and its weight
 // by the vertex's distance from the eye (see ocean.frag).
@@ -188,6 +198,9 @@ void main() {
   vec2 away = relative.xz - uEyeRelative.xz + vec2(1e-20, 0.0);
   vHorizon = skyCubeColor(vec3(away.x, 0.0, away.y));
   vHaze = hazeWeightBetween(uEyeRelative, relative);
+#endif
+#ifdef OCEAN_WATER_OPTICS
+  vWaterBody = waterBodyColor(uSunDirection, uSunColor, uFresnelTable);
 #endif
   vRelativeGridXZ = relativeGrid;
   vBand = aChunk.z;

@@ -85,7 +85,7 @@ const TILED_FOAM: ShaderFault = {
 /** The subsurface glow on every pixel alike, crest or trough. */
 const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
 /** The water's own colour 3 % brighter. */
-const BRIGHTER_WATER: ShaderFault = { name: 'brighter-water', fragment: [['vec3 water = waterBodyColor();', 'vec3 water = 1.03 * waterBodyColor();']] };
+const BRIGHTER_WATER: ShaderFault = { name: 'brighter-water', fragment: [['vec3 water = vWaterBody;', 'vec3 water = 1.03 * vWaterBody;']] };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */
 const UNMARKED_SEA_BED: ShaderFault = { name: 'unmarked-sea-bed', fragment: [['SEA_BED_ALPHA);', '1.0);']] };
 

@@ -6,6 +6,8 @@ import sinTurns from '../../../shaders/sinTurns.glsl?raw';
 import skyCube from '../../../shaders/skyCube.glsl?raw';
 import subsurface from '../../../shaders/subsurface.glsl?raw';
 import haze from '../../../shaders/haze.glsl?raw';
+import fresnelLookup from '../../../shaders/fresnelLookup.glsl?raw';
+import waterBody from '../../../shaders/waterBody.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 import { SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
 
@@ -32,6 +34,10 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_subsurface: subsurface,
   // The air's haze between the eye and the sea (ocean.vert's near bands, ocean.frag's far ones).
   oceano_haze: haze,
+  // The exact Fresnel reflectance from its table (the ocean's pixels, and its vertices for the water's colour).
+  oceano_fresnel_lookup: fresnelLookup,
+  // The water's own colour from its optics, the same everywhere: worked out per vertex (ocean.vert).
+  oceano_water_body: waterBody,
   // The underwater passes' scene target, written after three's colour-space chunk (read back by
   // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,
