@@ -19,8 +19,10 @@ const onePixel = process.env.PROBE_ONE_PIXEL === '1';
 const inPage = `(() => {
   const o = window.oceano;
   const variants = ${JSON.stringify(variants)};
-  const group = o.three.scene.children.find((c) => c.type === 'Group');
-  const materials = [...new Set(group.children.map((c) => c.material))];
+  // The ocean's materials: every mesh's material with the ocean's uniforms (uEyeRelative).
+  const found = new Set();
+  o.three.scene.traverse((c) => { if (c.material && c.material.uniforms && c.material.uniforms.uEyeRelative) found.add(c.material); });
+  const materials = [...found];
   const originals = materials.map((m) => m.${stage});
   if (${onePixel}) { o.three.renderer.setScissorTest(true); o.three.renderer.setScissor(0, 0, 1, 1); }
   const time = (frames) => {

@@ -1,0 +1,37 @@
+// The largest autocorrelation past 50 m of the sea seen straight down, averaged over four
+// instants 30 s apart, as tests/browser/light/foamTiling.test.ts measures it, at any height,
+// wind and measure: `tsx scripts/probes/tilingPeaks.ts ALTITUDE WIND foam|picture [breakupOff|-] [MIN_LAG_METRES]`.
+// "foam": pixels brighter than 190; "picture": the luminance itself.
+import { PNG } from 'pngjs';
+import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
+import { autocorrelation, peakBeyond, type Autocorrelation } from '../../tests/support/autocorrelation';
+
+const [altitude = '1500', wind = '10', measure = 'foam', fault = '', minLag = '50'] = process.argv.slice(2);
+const width = 640;
+const height = 360;
+const metresPerPixel = (2 * Number(altitude) * Math.tan((27.5 * Math.PI) / 180)) / height;
+const harness = await startHarness();
+try {
+  const { page } = await openOcean(harness, `waves=fft&windSpeed=${wind}&sunElevation=30&t=10&cam=0,${altitude},0,0,0,-0.01`, width, height);
+  if (fault === 'breakupOff') await page.evaluate(() => window.oceano.debug.setShadingFixes({ foamBreakup: false }));
+  const correlations: Autocorrelation[] = [];
+  for (const t of [10, 40, 70, 100]) {
+    await page.evaluate((time) => {
+      window.oceano.pause();
+      window.oceano.setTime(time);
+    }, t);
+    const image = PNG.sync.read(await canvasPng(page));
+    const values = new Float64Array(width * height);
+    for (let i = 0; i < values.length; i++) {
+      const luma = 0.2126 * image.data[4 * i] + 0.7152 * image.data[4 * i + 1] + 0.0722 * image.data[4 * i + 2];
+      values[i] = measure === 'foam' ? (luma > 190 ? 1 : 0) : luma;
+    }
+    correlations.push(autocorrelation(values, width, height));
+  }
+  const [first] = correlations;
+  const mean: Autocorrelation = { maxX: first.maxX, maxY: first.maxY, at: (dx, dy) => correlations.reduce((sum, c) => sum + c.at(dx, dy), 0) / correlations.length };
+  const peak = peakBeyond(mean, Number(minLag) / metresPerPixel, 1);
+  console.log(`${altitude} m, ${wind} m/s, ${measure}${fault === 'breakupOff' ? ' (breakupOff)' : ''}, past ${minLag} m: peak ${peak.rho.toFixed(3)} at (${(peak.dx * metresPerPixel).toFixed(0)}, ${(peak.dy * metresPerPixel).toFixed(0)}) m; ${metresPerPixel.toFixed(2)} m a pixel`);
+} finally {
+  await harness.close();
+}
