@@ -70,7 +70,7 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'iwave-stone': { section: 'interactive', controls: ['iwaveGuide', 'timeScale', 'interactiveWaves'] },
   'iwave-compare': { section: 'interactive', controls: ['iwaveEquation', 'iwaveGuide', 'timeScale'] },
   'iwave-boat': { section: 'interactive', controls: ['boatSpeed', 'wake', 'wakeStrength', 'interactiveWaves'] },
-  'horizon': { section: 'horizon', controls: ['lodColors', 'lodDistance'], legend: 'lodBands' },
+  'horizon': { section: 'horizon', controls: ['lodColors', 'lodDistance', 'visibility'], legend: 'lodBands' },
 };
 
 /** A lesson with where it sits in the course, its controls and its legend. */

@@ -290,9 +290,11 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
   },
   horizon: {
     text: {
-      en: 'Beyond the 4 km grid of chunks the sea continues to the horizon in square rings, each ring’s cells twice the size of the previous ring’s, so a triangle keeps about the same size on screen at any distance. A skirt of triangles runs out past the last ring. The waves fade out over the first rings, where the vertices lie too far apart to sample them.',
-      es: 'Más allá de la malla de parcelas de 4 km, el mar sigue hasta el horizonte en anillos cuadrados, cada uno con celdas del doble de tamaño que el anterior, de modo que un triángulo mantiene en pantalla un tamaño parecido a cualquier distancia. Una falda de triángulos se extiende más allá del último anillo. Las olas se desvanecen en los primeros anillos, donde los vértices están demasiado separados para muestrearlas.',
+      en: 'Beyond the 4 km grid of chunks the sea continues to the horizon in square rings, each ring’s cells twice the size of the previous ring’s, so a triangle keeps about the same size on screen at any distance. A skirt of triangles runs out past the last ring. The waves fade out over the first rings, where the vertices lie too far apart to sample them. Far off, the air’s haze lays the horizon’s colour over the sea: its extinction is 3.912 / V for a visibility V (Koschmieder), thinning with height, so from an aircraft the sea stays clear.',
+      es: 'Más allá de la malla de parcelas de 4 km, el mar sigue hasta el horizonte en anillos cuadrados, cada uno con celdas del doble de tamaño que el anterior, de modo que un triángulo mantiene en pantalla un tamaño parecido a cualquier distancia. Una falda de triángulos se extiende más allá del último anillo. Las olas se desvanecen en los primeros anillos, donde los vértices están demasiado separados para muestrearlas. A lo lejos, la calima del aire cubre el mar con el color del horizonte: su extinción es 3,912 / V para una visibilidad V (Koschmieder) y disminuye con la altura.',
     },
-    math: m('<msub><mi>c</mi><mrow><mi>k</mi><mo>+</mo><mn>1</mn></mrow></msub><mo>=</mo><mn>2</mn><msub><mi>c</mi><mi>k</mi></msub>'),
+    math:
+      m('<msub><mi>c</mi><mrow><mi>k</mi><mo>+</mo><mn>1</mn></mrow></msub><mo>=</mo><mn>2</mn><msub><mi>c</mi><mi>k</mi></msub>') +
+      m('<msub><mi>β</mi><mn>0</mn></msub><mo>=</mo><mfrac><mrow><mi>ln</mi><mspace width="0.17em"/><mn>50</mn></mrow><mi>V</mi></mfrac><mo>,</mo><mspace width="0.5em"/><mi>β</mi><mo>(</mo><mi>y</mi><mo>)</mo><mo>=</mo><msub><mi>β</mi><mn>0</mn></msub><msup><mi>e</mi><mrow><mo>−</mo><mi>y</mi><mo>/</mo><mi>H</mi></mrow></msup>'),
   },
 };
