@@ -14,6 +14,7 @@ import type { FoamUniforms } from '../foam/foamUniforms';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from '../sky/skyCubeUniforms';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import { hazeExtinction } from '../../sim/optics/haze';
+import { paramDefs } from '../../sim/params/params';
 
 /** Lighter tint where the water faces the viewer, relative to the deep colour. */
 const FACING_TINT_LIFT = new Color(0.045, 0.11, 0.12);
@@ -51,7 +52,7 @@ export class OceanMaterial extends ShaderMaterial {
         uDeepColor: { value: new Color() },
         uFacingTint: { value: new Color() },
         uSunDirection: { value: new Vector3(0, 1, 0) },
-        uHazeExtinction: { value: hazeExtinction(20_000) },
+        uHazeExtinction: { value: hazeExtinction(paramDefs.visibility.default * 1000) },
         uFlatNormals: { value: false },
         uChunkQuads: { value: CHUNK_QUADS },
         uOceanCenter: { value: new Vector2() },

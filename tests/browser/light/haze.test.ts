@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
+import { Color, SRGBColorSpace } from 'three';
 import { canvasPng, openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { pixelRay, type Vec3 } from '../viewRays';
@@ -60,10 +61,8 @@ const PARITY_SIZE = { width: 320, height: 180 };
 // Measured: median 0.0082 (95th percentile 0.0218) over 3966 pixels; the control 0.065 (0.108).
 const PARITY_MEDIAN_LIMIT = 0.02;
 
-const srgbToLinear = (level: number) => {
-  const c = level / 255;
-  return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
-};
+/** An 8-bit sRGB level as linear light, by three.js's own colour management. */
+const srgbToLinear = (level: number) => new Color().setRGB(level / 255, 0, 0, SRGBColorSpace).r;
 
 async function hazeRatios(cpuWeight: (beta: number, distance: number) => number): Promise<{ median: number; worst: number; pixels: number }> {
   const { width, height } = PARITY_SIZE;
