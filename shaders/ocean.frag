@@ -92,16 +92,25 @@ vec3 sunLobe(float cosFromSun, float sharpness, float strength) {
 // src/sim/optics/beckmannGlint.ts): E_sun F(v·h) p(tan θh) / (4 cos θv cos⁴θh (1 + Λv + Λl)).
 // It widens with the wind, fades at its edges, and where a pixel covers many waves it is
 // their average, not one of them picked at random.
-float erfcApprox(float x) {
-  float t = 1.0 / (1.0 + 0.3275911 * x);
-  return t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429)))) * exp(-x * x);
-}
-
-// Smith's shadowing of Gaussian facets of mean-square slope σ² (σ²/2 in the plane of incidence), seen at cos θ.
+// Smith's shadowing of Gaussian facets of mean-square slope σ² (σ²/2 in the plane of incidence),
+// seen at cos θ, in Walter et al.'s rational form (2007, eq. 27; the twin is
+// src/sim/optics/beckmannGlint.ts smithLambdaRational): no exponential and no erfc per pixel.
 float smithLambda(float cosTheta, float variance) {
   float c = clamp(cosTheta, 1e-4, 0.999999);
   float nu = c / sqrt((1.0 - c * c) * variance);
-  return max(0.0, (exp(-nu * nu) / (nu * 1.7724539) - erfcApprox(nu)) * 0.5);
+  return nu < 1.6 ? (1.0 - 1.259 * nu + 0.396 * nu * nu) / (3.535 * nu + 2.181 * nu * nu) : 0.0;
+}
+
+// The exact Fresnel reflectance from air into water in closed form (Cook & Torrance 1982;
+// the twin is src/sim/optics/fresnel.ts fresnelClosedForm): each facet's reflectance of the
+// sun, at the angle between the eye and the half vector. perf: cheaper than two table reads
+// on a software rasterizer (docs/light.md §6).
+float facetFresnel(float cosIncidence) {
+  float c = clamp(cosIncidence, 0.0, 1.0);
+  float g = sqrt(WATER_IOR * WATER_IOR - 1.0 + c * c);
+  float a = (g - c) / (g + c);
+  float b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+  return 0.5 * a * a * (1.0 + b * b);
 }
 
 vec3 sunGlint(vec3 n, vec3 v, float variance, float fresnel) {
@@ -285,7 +294,7 @@ void main() {
 
   vec3 halfway = normalize(uSunDirection + v);
   // Each facet reflects the sun by its own Fresnel, at the angle between the eye and the half vector.
-  float facetReflectance = uFresnelEnabled ? fresnelLookup(uFresnelTable, dot(v, halfway)) : 0.5;
+  float facetReflectance = uFresnelEnabled ? facetFresnel(dot(v, halfway)) : 0.5;
   color += sunGlint(n, v, roughness, facetReflectance);
 
   float foam = 0.0;

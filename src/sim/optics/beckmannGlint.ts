@@ -7,8 +7,9 @@
  *
  * with h the half vector between the sun l and the eye v, ζ_h = tan θ_h its slope relative to
  * the mean normal, p the slope density of total mean-square slope σ² (σ²/2 per axis,
- * isotropic), and Λ Smith's shadowing of the Beckmann surface. shaders/ocean.frag evaluates
- * the same expression; this twin is what the tests hold to the published values.
+ * isotropic), and Λ Smith's shadowing of the Beckmann surface, in Walter et al.'s rational
+ * form. shaders/ocean.frag evaluates the same expression; this twin is what the tests hold to
+ * the published values.
  */
 
 /** Isotropic Gaussian density of the slope vector ζ with total variance σ²: e^{−|ζ|²/σ²} / (π σ²). */
@@ -34,6 +35,19 @@ export function smithLambda(cosTheta: number, directionalVariance: number): numb
   return Math.max(0, (Math.exp(-nu * nu) / (nu * Math.sqrt(Math.PI)) - complementaryErrorFunction(nu)) / 2);
 }
 
+/**
+ * Walter, Marschner, Li & Torrance 2007 ("Microfacet Models for Refraction through Rough
+ * Surfaces", eq. 27): Smith's Beckmann shadowing as a rational function of the same ν,
+ * Λ ≈ (1 − 1.259 ν + 0.396 ν²) / (3.535 ν + 2.181 ν²) below ν = 1.6 and 0 above: the shadowing
+ * factor 1 / (1 + Λ) is within 0.004 of smithLambda's (tests/unit/beckmannGlint.test.ts). The
+ * glint uses it: no exponential and no erfc per pixel.
+ */
+export function smithLambdaRational(cosTheta: number, directionalVariance: number): number {
+  const c = Math.min(Math.max(cosTheta, 1e-4), 0.999999);
+  const nu = c / Math.sqrt((1 - c * c) * 2 * directionalVariance);
+  return nu < 1.6 ? (1 - 1.259 * nu + 0.396 * nu * nu) / (3.535 * nu + 2.181 * nu * nu) : 0;
+}
+
 type Vec3 = readonly [number, number, number];
 const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
@@ -51,6 +65,6 @@ export function glintPerIrradiance(sun: Vec3, view: Vec3, normal: Vec3, variance
   const zL = Math.max(dot(sun, normal), 0.01);
   if (zH <= 0) return 0;
   const slopeSquared = (1 - zH * zH) / (zH * zH);
-  const shadowing = 1 + smithLambda(zV, variance / 2) + smithLambda(zL, variance / 2);
+  const shadowing = 1 + smithLambdaRational(zV, variance / 2) + smithLambdaRational(zL, variance / 2);
   return beckmannSlopeDensity(slopeSquared, variance) / (4 * zV * zH ** 4 * shadowing);
 }

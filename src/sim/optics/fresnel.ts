@@ -17,6 +17,20 @@ export function fresnelReflectance(cosIncidence: number, n1: number, n2: number)
   return 0.5 * (rs * rs + rp * rp);
 }
 
+/**
+ * The same reflectance in Cook & Torrance's closed form (1982, eq. in §3.4), as each facet of
+ * the sun's glint evaluates it (shaders/ocean.frag facetFresnel): with g = √(n² − 1 + c²) and
+ * n = n2 / n1 > 1, F = ½ ((g − c)/(g + c))² (1 + ((c (g + c) − 1)/(c (g − c) + 1))²).
+ */
+export function fresnelClosedForm(cosIncidence: number, n1: number, n2: number): number {
+  const c = Math.min(1, Math.max(0, cosIncidence));
+  const n = n2 / n1;
+  const g = Math.sqrt(n * n - 1 + c * c);
+  const a = (g - c) / (g + c);
+  const b = (c * (g + c) - 1) / (c * (g - c) + 1);
+  return 0.5 * a * a * (1 + b * b);
+}
+
 /** Schlick's approximation, kept for comparison with the exact function. */
 export function schlickReflectance(cosIncidence: number, n1: number, n2: number): number {
   const r0 = ((n1 - n2) / (n1 + n2)) ** 2;
