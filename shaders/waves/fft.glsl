@@ -49,12 +49,13 @@ uniform float uFoamThreshold;  // the whole sea's breaking threshold, breakup sh
 uniform float uFoamSoftness;   // half-width of the soft edge around the threshold
 uniform float uFoamBreakupStrength;  // the breakup field's weight, in units of the breaking measure
 uniform float uFabricatedDelta;
-// Per cascade: the mean-square slope of its waves (both axes), and its shortest and longest
-// wavelength, m; and the whole sea's mean-square slope, Cox & Munk's for this wind
-// (src/sim/optics/coxMunk.ts), of which the cascades resolve only the waves longer than a metre or so.
+// Per cascade: the mean-square slope of its waves (both axes), the logarithm of its longest
+// wavelength (m) and 1 / ln(longest / shortest), its band's width in e-folds; and the whole
+// sea's mean-square slope, Cox & Munk's for this wind (src/sim/optics/coxMunk.ts), of which the
+// cascades resolve only the waves longer than a metre or so.
 uniform vec3 uFftSlopeVariance;
-uniform vec3 uFftShortestWave;
-uniform vec3 uFftLongestWave;
+uniform vec3 uFftLogLongestWave;
+uniform vec3 uFftPerLogBand;
 uniform float uSeaSlopeVariance;
 
 // The CPU twin's bilinear read: u = x n/L, texel floor(u) mod n and the next, weights fract(u).
@@ -138,7 +139,8 @@ float fftBreakup(vec2 p, bool near) {
 void fftReadPixelFields(vec2 p, bool near) {
   // The footprint's longer side: at grazing angles a pixel runs far along the view.
   float footprint = max(max(length(dFdx(p)), length(dFdy(p))), 1e-6);
-  vec3 share = clamp(log(uFftLongestWave / (2.0 * footprint)) / log(uFftLongestWave / uFftShortestWave), 0.0, 1.0);
+  // ln(longest / 2 footprint) / ln(longest / shortest), with the cascades' logarithms from the uniforms.
+  vec3 share = clamp((uFftLogLongestWave - log(2.0 * footprint)) * uFftPerLogBand, 0.0, 1.0);
   vec4 derivatives0 = fftField(uFftDerivatives0, p, uFftScale.x, fftOffset(0, near));
   vec4 derivatives1 = fftField(uFftDerivatives1, p, uFftScale.y, fftOffset(1, near));
   vec4 derivatives2 = fftField(uFftDerivatives2, p, uFftScale.z, fftOffset(2, near));

@@ -39,7 +39,7 @@ type FftUniforms = Record<
   | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
   | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
   | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta'
-  | 'uFftSlopeVariance' | 'uFftShortestWave' | 'uFftLongestWave' | 'uSeaSlopeVariance'
+  | 'uFftSlopeVariance' | 'uFftLogLongestWave' | 'uFftPerLogBand' | 'uSeaSlopeVariance'
   | 'uFoamBreakupScale' | 'uFoamBreakupCells' | 'uFoamBreakupOffset' | 'uFoamBreakupOrigin' | 'uFoamBreakupSeed' | 'uFoamBreakupStrength',
   IUniform
 >;
@@ -108,8 +108,8 @@ export class FftWaveView implements WaveModelView {
       uFoamBreakupStrength: { value: 0 },
       uFabricatedDelta: { value: FABRICATED_DELTA },
       uFftSlopeVariance: { value: new Vector3() },
-      uFftShortestWave: { value: new Vector3(1, 1, 1) },
-      uFftLongestWave: { value: new Vector3(2, 2, 2) },
+      uFftLogLongestWave: { value: new Vector3(Math.LN2, Math.LN2, Math.LN2) },
+      uFftPerLogBand: { value: new Vector3(1 / Math.LN2, 1 / Math.LN2, 1 / Math.LN2) },
       uSeaSlopeVariance: { value: 0 },
     };
     this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
@@ -252,8 +252,9 @@ export class FftWaveView implements WaveModelView {
     const { sea, cascades } = this.model.ocean.setup;
     const bands = cascades.map((cascade) => cascadeWavelengths(cascade, sea.fftSize));
     (this.uniforms.uFftSlopeVariance.value as Vector3).fromArray(cascadeVariances);
-    (this.uniforms.uFftShortestWave.value as Vector3).fromArray(bands.map((band) => band.shortest));
-    (this.uniforms.uFftLongestWave.value as Vector3).fromArray(bands.map((band) => band.longest));
+    // The pixels' resolvedShare (src/sim/optics/resolvedSlopes.ts) with its logarithms taken once here.
+    (this.uniforms.uFftLogLongestWave.value as Vector3).fromArray(bands.map((band) => Math.log(band.longest)));
+    (this.uniforms.uFftPerLogBand.value as Vector3).fromArray(bands.map((band) => 1 / Math.log(band.longest / band.shortest)));
     this.uniforms.uSeaSlopeVariance.value = seaSlopeVariance(windSpeed);
   }
 
