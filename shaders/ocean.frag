@@ -275,8 +275,12 @@ void main() {
   vec3 r = reflect(-v, n);
   // A reflected ray that points below the horizon would see the sea, not the sky.
   r.y = max(r.y, 0.0);
-  // The sky blurred by the roughness below the pixel (above).
+  // The sky blurred by the roughness below the pixel (above), unless a lesson asks for it sharp (skyBlur off).
+#ifdef OCEAN_SHARP_SKY
+  vec3 sky = skyCubeColor(r);
+#else
   vec3 sky = skyCubeColorRough(r, roughness);
+#endif
 
 #ifdef OCEAN_WATER_OPTICS
   vec3 water = vWaterBody;

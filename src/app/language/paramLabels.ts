@@ -39,6 +39,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   waterColorPicked: 'Usar el color de agua elegido',
   fresnel: 'Fresnel',
   seaRoughness: 'Rugosidad (Cox y Munk)',
+  skyBlur: 'Cielo difuminado por la rugosidad',
   wireframe: 'Malla de alambre',
   shading: 'Sombreado',
   normals: 'Normales',

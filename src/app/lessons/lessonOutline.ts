@@ -43,7 +43,7 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'normals-wrong': { section: 'normals', controls: ['normals', 'shading'] },
   'normals-right': { section: 'normals', controls: ['normals', 'shading', 'swellAmplitude'] },
   'sky-cube': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'view'] },
-  'reflection': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'fresnel', 'seaRoughness'] },
+  'reflection': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'fresnel', 'seaRoughness', 'skyBlur'] },
   'fresnel': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
   'fresnel-schlick': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
   'boat-twin': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatResponse'], legend: 'hullPoints' },

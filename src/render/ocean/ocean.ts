@@ -38,7 +38,7 @@ export interface OceanOptions {
 }
 
 /** The parameters an ocean material shows (every model's material of a comparison alike). */
-export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface', 'visibility'];
+export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'skyBlur', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface', 'visibility'];
 
 /**
  * The ocean as a three.js object: add it to your scene, call `update(time, camera)` before
@@ -484,6 +484,7 @@ export function applyLook(material: OceanMaterial, params: OceanParams): void {
   material.setSunDirection(sunDirection(params.sunElevation, params.sunAzimuth));
   material.setFresnelEnabled(params.fresnel);
   material.setSmoothSea(!params.seaRoughness);
+  material.setSkyBlur(params.skyBlur);
   material.setWireframe(params.wireframe);
   material.setTeachingViews(params.normals === 'flat', params.shading === 'normals');
   material.setNormalsCompare(params.normalsCompare);

@@ -191,6 +191,11 @@ export class OceanMaterial extends ShaderMaterial {
     this.setDefine('OCEAN_SMOOTH_SEA', smooth);
   }
 
+  /** The sky's reflection blurred by the roughness (a mip level of the cube), or sharp (OCEAN_SHARP_SKY). */
+  setSkyBlur(blurred: boolean): void {
+    this.setDefine('OCEAN_SHARP_SKY', !blurred);
+  }
+
   /** The chunk grid's centre this frame, where the far rings' fade is measured from. */
   setOceanCenter(x: number, z: number): void {
     (this.uniforms.uOceanCenter.value as Vector2).set(x, z);

@@ -2,6 +2,7 @@ import { GRAVITY } from './iwaveGrid';
 import { fittedVerticalDerivativeKernel, waveEquationKernel, type ConvolutionKernel } from './verticalDerivativeKernel';
 
 import { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP } from './fieldSize';
+import { smoothstep } from '../math/smoothstep';
 
 export { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP };
 export { checkDisturbance, type DisturbanceOptions } from './disturbanceChecks';
@@ -61,7 +62,3 @@ export function sampleField(field: FieldSnapshot, x: number, z: number): [number
   return [fade * h, fade * dx, fade * dz];
 }
 
-function smoothstep(edge0: number, edge1: number, x: number): number {
-  const t = Math.min(1, Math.max(0, (x - edge0) / (edge1 - edge0)));
-  return t * t * (3 - 2 * t);
-}

@@ -1,3 +1,5 @@
+import { smoothstep } from '../math/smoothstep';
+
 /**
  * How the interactive field marks its steep water: light through a thin, steep crest (a paler,
  * greener water colour), and foam where a wave nears breaking. The GLSL twin is
@@ -19,11 +21,6 @@ export const TINT_STRENGTH = 0.6;
  * Picked by eye within that; not computed.
  */
 export const CREST_COLOR: readonly [number, number, number] = [0.05, 0.32, 0.3];
-
-function smoothstep(edge0: number, edge1: number, x: number): number {
-  const t = Math.min(1, Math.max(0, (x - edge0) / (edge1 - edge0)));
-  return t * t * (3 - 2 * t);
-}
 
 /** The share of CREST_COLOR mixed into the water's colour where the field's slope is (sx, sz). */
 export function fieldTint(sx: number, sz: number): number {

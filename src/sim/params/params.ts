@@ -86,6 +86,8 @@ export const paramDefs = {
   // as the roughness of the sun's glint and the sky's reflection (docs/light.md); off, a mirror
   // but for the sun's disc, as the seed's lessons of a windless sea show it.
   seaRoughness: { kind: 'boolean', default: true, label: 'Roughness (Cox & Munk)' },
+  // The sky's reflection blurred by that roughness (a mip level of the sky cube, shaders/skyCube.glsl), or read as from a mirror while the glint stays rough.
+  skyBlur: { kind: 'boolean', default: true, label: 'Sky blurred by roughness' },
   // How far a dark object can be told from the horizon (Koschmieder's 2 % contrast): the haze
   // between the eye and the sea (src/sim/optics/haze.ts). 20 km: a clear day at sea.
   visibility: { kind: 'number', default: 20, min: 1, max: 60, step: 0.5, unit: 'km', label: 'Visibility (haze)' },

@@ -1,5 +1,6 @@
 import { froudeNumber } from './kelvinWake';
 import type { TrackPoint } from './wakeTrack';
+import { smoothstep } from '../math/smoothstep';
 
 /**
  * Foam behind the boat, read from the same recorded track as the wake (the GLSL twin is
@@ -26,11 +27,6 @@ export const TRAIL_DECAY = 20;
 export const BOW_DECAY = 4;
 /** The bow wave's foam spreads sideways at this fraction of the boat's speed (its crest leaves the bow at ≈ 20°, tan 20° ≈ 0.36). */
 export const BOW_SPREAD = 0.36;
-
-function smoothstep(a: number, b: number, x: number): number {
-  const s = Math.min(1, Math.max(0, (x - a) / (b - a)));
-  return s * s * (3 - 2 * s);
-}
 
 /**
  * Foam intensity in [0, 1] at world (x, z) at `time`, from the track (newest first, as

@@ -1,0 +1,49 @@
+import { describe, expect, it } from 'vitest';
+import { PNG } from 'pngjs';
+import { canvasPng, openOcean } from '../harness';
+import { useHarness } from '../useHarness';
+import { meanChange } from './glintMeasure';
+
+/**
+ * The lesson's switch for the sky's blur (skyBlur, shaders/skyCube.glsl skyCubeColorRough):
+ * off, the sea reflects the sky as a mirror would, while the slopes below the pixels stay
+ * rough. Seen from the default camera at 640×360, the far sea (rows 150–200, left of the
+ * glint) changes with the switch, and the blurred reflection has less detail from pixel to
+ * pixel than the sharp one: the mean luminance step between horizontal neighbours there.
+ */
+const harness = useHarness();
+const FAR_ROWS = [150, 200] as const;
+const LEFT_OF_GLINT = 300;
+
+function farDetail(png: Buffer): number {
+  const image = PNG.sync.read(png);
+  const luma = (x: number, y: number) => {
+    const i = (y * image.width + x) * 4;
+    return 0.2126 * image.data[i] + 0.7152 * image.data[i + 1] + 0.0722 * image.data[i + 2];
+  };
+  let sum = 0;
+  let count = 0;
+  for (let y = FAR_ROWS[0]; y < FAR_ROWS[1]; y++) for (let x = 0; x + 1 < LEFT_OF_GLINT; x++, count++) sum += Math.abs(luma(x + 1, y) - luma(x, y));
+  return sum / count;
+}
+
+async function shot(query: string): Promise<Buffer> {
+  const { page } = await openOcean(harness, query, 640, 360);
+  const png = await canvasPng(page);
+  await page.close();
+  return png;
+}
+
+describe('the sky blurred by the roughness', () => {
+  it('the switch reaches the far sea, and the blurred sky there has less detail than the sharp one, on the seed and FFT seas', async () => {
+    for (const waves of ['seed', 'fft']) {
+      const blurred = await shot(`t=10&waves=${waves}`);
+      const sharp = await shot(`t=10&waves=${waves}&skyBlur=0`);
+      const change = meanChange(blurred, sharp, FAR_ROWS[0], FAR_ROWS[1]);
+      const say = `${waves}: far sea changes by ${change.toFixed(1)} levels; detail blurred ${farDetail(blurred).toFixed(2)}, sharp ${farDetail(sharp).toFixed(2)}`;
+      console.log(`[oceano] skyBlur ${say}`);
+      expect(change, say).toBeGreaterThan(5);
+      expect(farDetail(blurred), say).toBeLessThan(farDetail(sharp));
+    }
+  });
+});
