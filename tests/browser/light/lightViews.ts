@@ -62,7 +62,7 @@ export function tilingMetresPerPixel(): number {
  */
 export const GLOW_VIEW = { width: 480, height: 270, t: 10, eye: [0, 6, 0], target: [0, 4, -100] } as const;
 
-export function glowQuery(subsurface: boolean): string {
+export function glowQuery(subsurface: boolean, waves: 'fft' | 'seed' | 'gerstner' = 'fft'): string {
   const cam = [...GLOW_VIEW.eye, ...GLOW_VIEW.target].join(',');
-  return `waves=fft&windSpeed=15&sunElevation=5&sunAzimuth=12&foam=false&subsurface=${subsurface}&t=${GLOW_VIEW.t}&cam=${cam}`;
+  return `waves=${waves}&windSpeed=15&sunElevation=5&sunAzimuth=12&foam=false&subsurface=${subsurface}&t=${GLOW_VIEW.t}&cam=${cam}`;
 }
