@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Color } from 'three';
-import { FOG_HIDES_BELOW, WATER_EXTINCTION, daylightAtDepth, fogHidingDistance } from '../../src/sim/underwater/waterFog';
+import { DEPTH_DARKENING, FOG_HIDES_BELOW, WATER_EXTINCTION, daylightAtDepth, fogHidingDistance } from '../../src/sim/underwater/waterFog';
 import { applyWaterVolume, createWaterVolumeUniforms, setEyeDepth } from '../../src/render/underwater/waterVolumeUniforms';
 import { SCENE_BRIGHTEST } from '../../src/render/underwater/sceneEncoding';
 import { paramDefs } from '../../src/sim/params/params';
@@ -16,11 +16,11 @@ describe('how far the water fog lets anything be seen (src/sim/underwater/waterF
     }
   });
 
-  it('is 396 m at the default density, and infinite without fog', () => {
+  it('is 743 m at the default density (blue, the least attenuated, sets it), and infinite without fog', () => {
     expect(paramDefs.fogDensity.default).toBe(0.035);
-    expect(fogHidingDistance(0.035)).toBeCloseTo(Math.log(65536) / (0.8 * 0.035), 9);
-    expect(fogHidingDistance(0.035)).toBeGreaterThan(395);
-    expect(fogHidingDistance(0.035)).toBeLessThan(397);
+    expect(fogHidingDistance(0.035)).toBeCloseTo(Math.log(65536) / (WATER_EXTINCTION[2] * 0.035), 9);
+    expect(fogHidingDistance(0.035)).toBeGreaterThan(742);
+    expect(fogHidingDistance(0.035)).toBeLessThan(744);
     expect(fogHidingDistance(0)).toBe(Number.POSITIVE_INFINITY);
   });
 
@@ -31,14 +31,40 @@ describe('how far the water fog lets anything be seen (src/sim/underwater/waterF
   });
 });
 
+describe("the water's extinction and the daylight's fading, from pure water's optics", () => {
+  // Pope & Fry 1997 absorption at 650, 510, 475 nm and Morel 1974's 0.00288 (λ/500)^−4.3 scattering.
+  const a = [0.34, 0.0325, 0.0114];
+  const b = [650, 510, 475].map((l) => 0.00288 * Math.pow(l / 500, -4.3));
+
+  it('extinction is c = a + b relative to green: 9.70 : 1 : 0.427, and the default density is pure water\'s c at 510 nm; control: absorption alone gives blue 0.351', () => {
+    const c = a.map((x, i) => x + b[i]);
+    WATER_EXTINCTION.forEach((e, i) => expect(e).toBeCloseTo(c[i] / c[1], 9));
+    expect(WATER_EXTINCTION[0]).toBeCloseTo(9.7, 2);
+    expect(WATER_EXTINCTION[2]).toBeCloseTo(0.4265, 3);
+    expect(paramDefs.fogDensity.default).toBeCloseTo(c[1], 3);
+    expect(a[2] / a[1]).not.toBeCloseTo(WATER_EXTINCTION[2], 2);
+  });
+
+  it('the daylight fades by Gordon\'s K_d = 1.0395 (a + b/2): 0.354, 0.0352, 0.0137 per metre; control: a alone for blue is 17 % low', () => {
+    DEPTH_DARKENING.forEach((k, i) => expect(k).toBeCloseTo(1.0395 * (a[i] + b[i] / 2), 12));
+    expect(DEPTH_DARKENING[0]).toBeCloseTo(0.354, 3);
+    expect(DEPTH_DARKENING[1]).toBeCloseTo(0.0352, 4);
+    expect(DEPTH_DARKENING[2]).toBeCloseTo(0.0137, 4);
+    expect(1.0395 * a[2]).toBeLessThan(0.87 * DEPTH_DARKENING[2]);
+  });
+
+});
+
 describe("the daylight left at the eye's depth (the water's colour there, uWaterAtEye)", () => {
   it('fades each channel by its own exponential with depth, and is whole at and above the surface', () => {
     expect(daylightAtDepth(0)).toEqual([1, 1, 1]);
     expect(daylightAtDepth(-3)).toEqual([1, 1, 1]);
     const [r, g, b] = daylightAtDepth(10);
-    expect(r).toBeCloseTo(Math.exp(-1.2), 12);
-    expect(g).toBeCloseTo(Math.exp(-0.45), 12);
-    expect(b).toBeCloseTo(Math.exp(-0.3), 12);
+    expect(r).toBeCloseTo(Math.exp(-10 * DEPTH_DARKENING[0]), 12);
+    expect(g).toBeCloseTo(Math.exp(-10 * DEPTH_DARKENING[1]), 12);
+    expect(b).toBeCloseTo(Math.exp(-10 * DEPTH_DARKENING[2]), 12);
+    // 10 m down: 3 % of the red is left, 70 % of the green, 87 % of the blue.
+    expect(r).toBeCloseTo(0.029, 3);
     // Red is lost first: the deep water turns blue-green.
     expect(r).toBeLessThan(g);
     expect(g).toBeLessThan(b);

@@ -136,6 +136,7 @@ export const paramDefs = {
   freezeCulling: { kind: 'boolean', default: false, label: 'Freeze culling' },
   lodBruteForce: { kind: 'boolean', default: false, label: 'Brute force (full grid, no culling)' },
   blurStrength: { kind: 'number', default: 1.5, min: 0, max: 8, step: 0.1, unit: 'px', label: 'Underwater blur (σ)' },
+  // The water's beam attenuation at 510 nm (green), 1/m; the default is pure water's (src/sim/underwater/waterFog.ts).
   fogDensity: { kind: 'number', default: 0.035, min: 0, max: 0.3, step: 0.001, unit: '1/m', label: 'Water fog density' },
   seaBedDepth: { kind: 'number', default: 20, min: 2, max: 200, step: 0.5, unit: 'm', label: 'Sea bed depth' },
   caustics: { kind: 'boolean', default: true, label: 'Caustics' },

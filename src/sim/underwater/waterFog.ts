@@ -1,14 +1,29 @@
+import { molecularScattering, PURE_WATER_ABSORPTION, WAVELENGTHS } from '../optics/waterColor';
+
 /**
  * The water's fog as the CPU needs it: how far under the water anything can still be seen.
  * The shaders' fog is shaders/waterVolume.glsl: transmittance exp(-fogDensity · extinction · d)
  * per channel, the colour behind weighted by it and the water's own colour by the rest.
  */
 
-/** Per-channel extinction relative to fogDensity: pure water absorbs red about 2.5 times as fast as green. */
-export const WATER_EXTINCTION = [2.5, 1.0, 0.8] as const;
+/** Pure water's beam attenuation c = a + b, m⁻¹, at the screen's three wavelengths (src/sim/optics/waterColor.ts: Pope & Fry 1997, Morel 1974). */
+const BEAM_ATTENUATION = PURE_WATER_ABSORPTION.map((a, i) => a + molecularScattering(WAVELENGTHS[i]));
 
-/** How fast daylight fades with depth, per metre, per channel (red first, as the extinction). */
-export const DEPTH_DARKENING = [0.12, 0.045, 0.03] as const;
+/**
+ * Per-channel extinction relative to fogDensity, which is the green channel's (510 nm) beam
+ * attenuation: pure water's spectrum, c(λ) / c(510 nm) = 9.7 : 1 : 0.43, so red is gone within
+ * a few metres and blue carries farthest. The default density, 0.035 m⁻¹, is pure water's own
+ * c(510 nm); a larger one stands for water with more in it, at the same spectral shape.
+ */
+export const WATER_EXTINCTION = BEAM_ATTENUATION.map((c) => c / BEAM_ATTENUATION[1]) as unknown as readonly [number, number, number];
+
+/**
+ * How fast daylight fades with depth, per metre, per channel (red first): the diffuse
+ * attenuation of pure water for a sun overhead, K_d ≈ 1.0395 (a + b_b) with b_b = b / 2
+ * (Gordon, H. R. 1989, "Can the Lambert-Beer law be applied to the diffuse attenuation
+ * coefficient of ocean water?", Limnol. Oceanogr. 34(8), 1389–1409).
+ */
+export const DEPTH_DARKENING = PURE_WATER_ABSORPTION.map((a, i) => 1.0395 * (a + molecularScattering(WAVELENGTHS[i]) / 2)) as unknown as readonly [number, number, number];
 
 /** The share of the daylight, per channel, left at `depth` metres under the surface (1 at or above it). */
 export function daylightAtDepth(depth: number): [number, number, number] {
