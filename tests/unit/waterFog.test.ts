@@ -4,6 +4,7 @@ import { DEPTH_DARKENING, FOG_HIDES_BELOW, WATER_EXTINCTION, daylightAtDepth, fo
 import { applyWaterVolume, createWaterVolumeUniforms, setEyeDepth } from '../../src/render/underwater/waterVolumeUniforms';
 import { SCENE_BRIGHTEST } from '../../src/render/underwater/sceneEncoding';
 import { paramDefs } from '../../src/sim/params/params';
+import { bodyColor } from '../../src/sim/optics/waterColor';
 
 const transmittance = (fogDensity: number, distance: number) => WATER_EXTINCTION.map((e) => Math.exp(-fogDensity * e * distance));
 
@@ -72,7 +73,7 @@ describe("the daylight left at the eye's depth (the water's colour there, uWater
 
   it('is the scattered colour times that daylight', () => {
     const u = createWaterVolumeUniforms();
-    applyWaterVolume(u, '#0d4a5c', 0.8, 0.035);
+    applyWaterVolume(u, '#0d4a5c', true, 0.8, 0.035);
     setEyeDepth(u, 6);
     const scatter = u.uWaterScatter.value as Color;
     const atEye = u.uWaterAtEye.value as Color;
@@ -80,5 +81,21 @@ describe("the daylight left at the eye's depth (the water's colour there, uWater
     expect(atEye.r).toBeCloseTo(scatter.r * r, 12);
     expect(atEye.g).toBeCloseTo(scatter.g * g, 12);
     expect(atEye.b).toBeCloseTo(scatter.b * b, 12);
+  });
+
+  it('is the body colour from optics unless the colour is picked: the same ratios as bodyColor, and the picked default as bright; control: the picked colour is greener', () => {
+    const body = bodyColor();
+    const optics = createWaterVolumeUniforms();
+    applyWaterVolume(optics, '#06283a', false, 1, 0.035);
+    const c = optics.uWaterScatter.value as Color;
+    expect(c.r / c.b).toBeCloseTo(body[0] / body[2], 9);
+    expect(c.g / c.b).toBeCloseTo(body[1] / body[2], 9);
+    const picked = createWaterVolumeUniforms();
+    applyWaterVolume(picked, '#06283a', true, 1, 0.035);
+    const p = picked.uWaterScatter.value as Color;
+    const luminance = (x: Color) => 0.2126 * x.r + 0.7152 * x.g + 0.0722 * x.b;
+    expect(luminance(c) / luminance(p)).toBeGreaterThan(0.98);
+    expect(luminance(c) / luminance(p)).toBeLessThan(1.02);
+    expect(p.g / p.b).toBeGreaterThan(1.5 * (c.g / c.b));
   });
 });

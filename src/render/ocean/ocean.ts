@@ -213,11 +213,11 @@ export class Ocean extends Object3D {
     // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
     this.bounds = this.waveView.model.bounds();
     if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
-    if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'fogDensity', 'caustics', 'causticsIntensity')) {
+    if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fogDensity', 'caustics', 'causticsIntensity')) {
       const sun = sunDirection(params.sunElevation, params.sunAzimuth);
       this.skySource.paint(this.renderer, sun);
       (this.lightUniforms.uRefractedSun.value as Vector3).fromArray(refractedSunDirection(sun) ?? [0, 0, 0]);
-      applyWaterVolume(this.waterVolume, params.waterColor, sun[1], params.fogDensity);
+      applyWaterVolume(this.waterVolume, params.waterColor, params.waterColorPicked, sun[1], params.fogDensity);
       applyCaustics(this.caustics, sun, params.caustics, params.causticsIntensity);
       this.seaBed.setSunTransmission(1 - fresnelReflectance(Math.max(0, sun[1]), AIR_IOR, WATER_IOR));
     }
