@@ -18,7 +18,7 @@ export function fresnelReflectance(cosIncidence: number, n1: number, n2: number)
 }
 
 /**
- * The same reflectance in Cook & Torrance's closed form (1982, eq. in §3.4), as each facet of
+ * The same reflectance in the closed form Cook & Torrance (1982) give for it, as each facet of
  * the sun's glint evaluates it (shaders/ocean.frag facetFresnel): with g = √(n² − 1 + c²) and
  * n = n2 / n1 > 1, F = ½ ((g − c)/(g + c))² (1 + ((c (g + c) − 1)/(c (g − c) + 1))²).
  */

@@ -6,8 +6,12 @@ import { molecularScattering, PURE_WATER_ABSORPTION, WAVELENGTHS } from '../opti
  * per channel, the colour behind weighted by it and the water's own colour by the rest.
  */
 
-/** Pure water's beam attenuation c = a + b, m⁻¹, at the screen's three wavelengths (src/sim/optics/waterColor.ts: Pope & Fry 1997, Morel 1974). */
-const BEAM_ATTENUATION = PURE_WATER_ABSORPTION.map((a, i) => a + molecularScattering(WAVELENGTHS[i]));
+type Rgb = readonly [number, number, number];
+const perChannel = (value: (channel: number) => number): Rgb => [value(0), value(1), value(2)];
+
+/** Pure water's scattering b and beam attenuation c = a + b, m⁻¹, at the screen's three wavelengths (src/sim/optics/waterColor.ts: Pope & Fry 1997, Morel 1974). */
+const SCATTERING = WAVELENGTHS.map(molecularScattering);
+const BEAM_ATTENUATION = PURE_WATER_ABSORPTION.map((a, i) => a + SCATTERING[i]);
 
 /**
  * Per-channel extinction relative to fogDensity, which is the green channel's (510 nm) beam
@@ -15,7 +19,7 @@ const BEAM_ATTENUATION = PURE_WATER_ABSORPTION.map((a, i) => a + molecularScatte
  * a few metres and blue carries farthest. The default density, 0.035 m⁻¹, is pure water's own
  * c(510 nm); a larger one stands for water with more in it, at the same spectral shape.
  */
-export const WATER_EXTINCTION = BEAM_ATTENUATION.map((c) => c / BEAM_ATTENUATION[1]) as unknown as readonly [number, number, number];
+export const WATER_EXTINCTION = perChannel((i) => BEAM_ATTENUATION[i] / BEAM_ATTENUATION[1]);
 
 /**
  * How fast daylight fades with depth, per metre, per channel (red first): the diffuse
@@ -23,7 +27,7 @@ export const WATER_EXTINCTION = BEAM_ATTENUATION.map((c) => c / BEAM_ATTENUATION
  * (Gordon, H. R. 1989, "Can the Lambert-Beer law be applied to the diffuse attenuation
  * coefficient of ocean water?", Limnol. Oceanogr. 34(8), 1389–1409).
  */
-export const DEPTH_DARKENING = PURE_WATER_ABSORPTION.map((a, i) => 1.0395 * (a + molecularScattering(WAVELENGTHS[i]) / 2)) as unknown as readonly [number, number, number];
+export const DEPTH_DARKENING = perChannel((i) => 1.0395 * (PURE_WATER_ABSORPTION[i] + SCATTERING[i] / 2));
 
 /** The share of the daylight, per channel, left at `depth` metres under the surface (1 at or above it). */
 export function daylightAtDepth(depth: number): [number, number, number] {
