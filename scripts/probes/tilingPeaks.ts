@@ -1,6 +1,7 @@
 // The largest autocorrelation past 50 m of the sea seen straight down, averaged over four
 // instants 30 s apart, as tests/browser/light/foamTiling.test.ts measures it, at any height,
-// wind and measure: `tsx scripts/probes/tilingPeaks.ts ALTITUDE WIND foam|picture [breakupOff|-] [MIN_LAG_METRES]`.
+// wind and measure: `tsx scripts/probes/tilingPeaks.ts ALTITUDE WIND foam|picture [breakupOff|groupsOff|-] [MIN_LAG_METRES]`.
+// breakupOff: the breakup field repeating with the smallest tile (the test's control); groupsOff: foamBreakup=0.
 // "foam": pixels brighter than 190; "picture": the luminance itself.
 import { PNG } from 'pngjs';
 import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
@@ -12,7 +13,7 @@ const height = 360;
 const metresPerPixel = (2 * Number(altitude) * Math.tan((27.5 * Math.PI) / 180)) / height;
 const harness = await startHarness();
 try {
-  const { page } = await openOcean(harness, `waves=fft&windSpeed=${wind}&sunElevation=30&t=10&cam=0,${altitude},0,0,0,-0.01`, width, height);
+  const { page } = await openOcean(harness, `waves=fft&windSpeed=${wind}&sunElevation=30&t=10&cam=0,${altitude},0,0,0,-0.01${fault === 'groupsOff' ? '&foamBreakup=0' : ''}`, width, height);
   if (fault === 'breakupOff') await page.evaluate(() => window.oceano.debug.setShadingFixes({ foamBreakup: false }));
   const correlations: Autocorrelation[] = [];
   for (const t of [10, 40, 70, 100]) {
@@ -31,7 +32,7 @@ try {
   const [first] = correlations;
   const mean: Autocorrelation = { maxX: first.maxX, maxY: first.maxY, at: (dx, dy) => correlations.reduce((sum, c) => sum + c.at(dx, dy), 0) / correlations.length };
   const peak = peakBeyond(mean, Number(minLag) / metresPerPixel, 1);
-  console.log(`${altitude} m, ${wind} m/s, ${measure}${fault === 'breakupOff' ? ' (breakupOff)' : ''}, past ${minLag} m: peak ${peak.rho.toFixed(3)} at (${(peak.dx * metresPerPixel).toFixed(0)}, ${(peak.dy * metresPerPixel).toFixed(0)}) m; ${metresPerPixel.toFixed(2)} m a pixel`);
+  console.log(`${altitude} m, ${wind} m/s, ${measure}${fault && fault !== '-' ? ` (${fault})` : ''}, past ${minLag} m: peak ${peak.rho.toFixed(3)} at (${(peak.dx * metresPerPixel).toFixed(0)}, ${(peak.dy * metresPerPixel).toFixed(0)}) m; ${metresPerPixel.toFixed(2)} m a pixel`);
 } finally {
   await harness.close();
 }

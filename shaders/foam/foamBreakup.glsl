@@ -10,6 +10,7 @@ uniform vec4 uFoamBreakupOffset;        // the rest, in cells: first octave (xy)
 uniform vec2 uFoamBreakupOrigin;        // the render origin, m (for an absolute point only)
 uniform int uFoamBreakupSeed;           // the user's seed mixed with the field's stream
 
+#ifdef OCEAN_FOAM_BREAKUP
 float foamBreakupHash(ivec2 cell) {
   uint h = uint(cell.x) * 0x27d4eb2du ^ uint(cell.y) * 0x165667b1u ^ uint(uFoamBreakupSeed) * 0x9e3779b1u;
   h ^= h >> 16;
@@ -41,3 +42,22 @@ float foamBreakup(vec2 p, bool near) {
   float second = foamBreakupOctave(TURN * u + uFoamBreakupOffset.zw, uFoamBreakupCells.zw);
   return (first + 0.5 * second) / 1.5;
 }
+
+// The share of the foam left behind that lies where the group lets it: all of it in a group
+// (the field below −0.6), none between groups (above 0.2).
+float foamGroupShare(float breakup) {
+  return smoothstep(0.2, -0.6, breakup);
+}
+#else
+// The foamBreakup parameter off, for the lesson: no groups, so nothing shifts the breaking
+// measure, and the foam left behind lies everywhere, thinned to what keeps the coverage
+// seen from above Monahan's (FOAM_SHARE_WITHOUT_GROUPS, tests/browser/light/foam.test.ts).
+float foamBreakup(vec2 p, bool near) {
+  return 0.0;
+}
+
+const float FOAM_SHARE_WITHOUT_GROUPS = 0.31;
+float foamGroupShare(float breakup) {
+  return FOAM_SHARE_WITHOUT_GROUPS;
+}
+#endif

@@ -291,7 +291,7 @@ float fftFoamAt(vec2 p, bool near) {
   float measure = fftBreaking(jxx, d.z, d.w) + uFoamBreakupStrength * breakup;
   float now = smoothstep(uFoamThreshold + 2.25 * uFoamSoftness, uFoamThreshold - 1.75 * uFoamSoftness, measure);
   float potential = fftFoamPotential(p, near);
-  float kept = FOAM_KEPT_THICKNESS * smoothstep(0.5, 2.5, potential) * smoothstep(0.2, -0.6, breakup);
+  float kept = FOAM_KEPT_THICKNESS * smoothstep(0.5, 2.5, potential) * foamGroupShare(breakup);
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 

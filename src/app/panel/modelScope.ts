@@ -8,7 +8,7 @@ type WaveModelName = OceanParams['waves'];
 const READ_BY: { keys: ParamKey[]; models: WaveModelName[]; reason: TeachingWordId }[] = [
   { keys: ['swellAmplitude', 'swellFrequency', 'rippleStrength', 'rippleBlendSpeed'], models: ['seed'], reason: 'unusedBySpectral' },
   { keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel'], models: ['fft', 'gerstner'], reason: 'unusedBySeed' },
-  { keys: ['choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'normalsCompare'], models: ['fft'], reason: 'unusedByNonFft' },
+  { keys: ['choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'foamBreakup', 'normalsCompare'], models: ['fft'], reason: 'unusedByNonFft' },
   { keys: ['gerstnerCount', 'gerstnerSteepness'], models: ['gerstner'], reason: 'unusedByNonGerstner' },
 ];
 

@@ -177,6 +177,11 @@ export class OceanMaterial extends ShaderMaterial {
     this.setDefine('OCEAN_SUBSURFACE', enabled);
   }
 
+  /** The spectral sea's whitecaps in wave groups (shaders/foam/foamBreakup.glsl), compiled in while on. */
+  setFoamBreakup(enabled: boolean): void {
+    this.setDefine('OCEAN_FOAM_BREAKUP', enabled);
+  }
+
   /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */
   setNormalsCompare(enabled: boolean): void {
     this.setDefine('OCEAN_NORMALS_COMPARE', enabled);

@@ -29,6 +29,13 @@ const FOAM_EDGE = 0.25;
  * of the white is the foam left behind while it fades (the remembered layer).
  */
 const ACTIVE_FOAM_SHARE = 0.9;
+/**
+ * The same without wave groups (the foamBreakup parameter off, for the lesson). The breaking
+ * measure is then narrower, so more of what breaks lies in the soft edge's lace, which does
+ * not read as white: this share keeps the white seen from above Monahan's (measured on the
+ * rendered frame, tests/browser/light/foam.test.ts).
+ */
+const ACTIVE_FOAM_SHARE_WITHOUT_GROUPS = 1.12;
 /** Share of Monahan's coverage the remembering cascade marks as fresh foam at each lattice time, against its own band's statistics. */
 const REMEMBERED_FOAM_SHARE = 1 / 6;
 /** Step of the fabricated-neighbour normal in the comparison view, m (the finest LOD band's grid step). */
@@ -72,6 +79,8 @@ export class FftWaveView implements WaveModelView {
   /** Thresholds before the user's bias, from the sea's statistics: recomputed only when the sea is rebuilt. */
   private baseThresholds: { active: number; activeSoftness: number; memory: number; memorySoftness: number } | null = null;
   private breakup: FoamBreakup;
+  /** Whether the whitecaps break in groups (the foamBreakup parameter): the threshold counts the field's shift. */
+  private groups = true;
   /** The heightmap view's grey scale: each shown cascade's height at 3σ is white. */
   heightmapLayout: HeightmapLayout = { channel: 1, range: [1, 1] };
 
@@ -192,7 +201,9 @@ export class FftWaveView implements WaveModelView {
     const cascadeSpreads = tiles.map((tile) => cascadeSpread(tile, sea.depth));
     this.setSlopeStatistics(cascadeSpreads.map((spread) => spread.slope * spread.slope), params.windSpeed);
     this.heightmapLayout = { channel: 1, range: [3 * cascadeSpreads[0].height, 3 * cascadeSpreads[cascadeSpreads.length - 1].height] };
-    if (rebuilt || !this.baseThresholds) {
+    const groupsToggled = params.foamBreakup !== this.groups;
+    this.groups = params.foamBreakup;
+    if (rebuilt || !this.baseThresholds || groupsToggled) {
       this.breakup = foamBreakup(sea);
       this.baseThresholds = this.foamThresholds();
       this.uniforms.uFoamBreakupScale.value = 1 / this.breakup.cell;
@@ -222,7 +233,7 @@ export class FftWaveView implements WaveModelView {
 
   /**
    * The breaking thresholds from the sea's Jacobian statistics (src/sim/waves/fft/breaking.ts):
-   * the whole sea's, with the breakup field's shift, for the foam breaking now, on
+   * the whole sea's, with the breakup field's shift while the whitecaps break in groups, for the foam breaking now, on
    * ACTIVE_FOAM_SHARE of Monahan's coverage; the remembering cascade's own, for the foam it
    * deposits, on REMEMBERED_FOAM_SHARE of it (one band alone folds less often than the sea).
    */
@@ -237,7 +248,7 @@ export class FftWaveView implements WaveModelView {
     const shift = () => strength * breakupNoise(1e4 * random(), 1e4 * random(), sea.seed);
     const own = jacobianCovariance([tiles[REMEMBERING_CASCADE]], sea.choppiness);
     return {
-      active: breakingThreshold(whole, ACTIVE_FOAM_SHARE * coverage, shift),
+      active: this.groups ? breakingThreshold(whole, ACTIVE_FOAM_SHARE * coverage, shift) : breakingThreshold(whole, ACTIVE_FOAM_SHARE_WITHOUT_GROUPS * coverage),
       activeSoftness: FOAM_EDGE * spread,
       memory: breakingThreshold(own, REMEMBERED_FOAM_SHARE * coverage),
       memorySoftness: FOAM_EDGE * breakingSpread(own),
