@@ -5,7 +5,7 @@ import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
 import { LESSON_QUOTE_SOURCES } from '../../src/app/lessons/lessonQuoteSources';
 import { PRESETS, presetNames } from '../../src/app/url/presets';
 import { isParamKey, defaultParams } from '../../src/sim/params/params';
-import { unreadParams } from '../../src/app/panel/modelScope';
+import { unreadParams } from '../../src/app/panel/unreadParams';
 import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
 
 const words = (text: string) => text.trim().split(/\s+/).length;
@@ -91,5 +91,22 @@ describe('parameters a wave model does not read', () => {
     expect(compared.size).toBe(0);
     expect(of('seed', 'seed,fft').has('gerstnerCount')).toBe(true);
     expect(of('seed', 'seed,fft').has('windSpeed')).toBe(false);
+  });
+
+  it('what a switch turns off: the foam’s bias with foam off, the sky’s blur on a mirror, the picked colour under optics; the model’s reason first', () => {
+    const all = defaultParams();
+    const bySwitch = (params: typeof all) => [...unreadParams(params).entries()].filter(([, reason]) => reason.startsWith('unusedWithout'));
+    // By default the water's colour comes from optics, so only the picked colour is left unread.
+    expect(bySwitch({ ...all, waves: 'fft' })).toEqual([['waterColor', 'unusedWithoutPickedColor']]);
+    expect(unreadParams({ ...all, waves: 'fft', foam: false }).get('foamFade')).toBe('unusedWithoutFoam');
+    expect(unreadParams({ ...all, waves: 'fft', foam: true }).has('foamFade')).toBe(false);
+    expect(unreadParams({ ...all, seaRoughness: false }).get('skyBlur')).toBe('unusedWithoutRoughness');
+    expect(unreadParams({ ...all, seaRoughness: true }).has('skyBlur')).toBe(false);
+    expect(unreadParams({ ...all, waterColorPicked: false }).get('waterColor')).toBe('unusedWithoutPickedColor');
+    expect(unreadParams({ ...all, waterColorPicked: true }).has('waterColor')).toBe(false);
+    expect(unreadParams({ ...all, caustics: false }).get('causticsIntensity')).toBe('unusedWithoutCaustics');
+    expect(unreadParams({ ...all, godRays: false }).get('godRaysIntensity')).toBe('unusedWithoutGodRays');
+    // Foam's bias on the seed sea: not read by the model, whatever the switch says.
+    expect(unreadParams({ ...all, waves: 'seed', foam: false }).get('foamFade')).toBe('unusedByNonFft');
   });
 });

@@ -47,6 +47,11 @@ export type TeachingWordId =
   | 'unusedBySpectral'
   | 'unusedByNonFft'
   | 'unusedByNonGerstner'
+  | 'unusedWithoutFoam'
+  | 'unusedWithoutRoughness'
+  | 'unusedWithoutPickedColor'
+  | 'unusedWithoutCaustics'
+  | 'unusedWithoutGodRays'
   | 'timeScale'
   | 'step'
   | 'seaTools'
@@ -96,6 +101,11 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     unusedBySpectral: 'read only by the seed waves',
     unusedByNonFft: 'read only by the fft waves',
     unusedByNonGerstner: 'read only by the gerstner waves',
+    unusedWithoutFoam: 'read only while Foam is on',
+    unusedWithoutRoughness: 'read only while Roughness (Cox & Munk) is on: a mirror has nothing to blur',
+    unusedWithoutPickedColor: 'read only while Use the picked water colour is on: the colour comes from optics',
+    unusedWithoutCaustics: 'read only while Caustics is on',
+    unusedWithoutGodRays: 'read only while God rays is on',
     timeScale: 'Speed',
     step: 'Step one frame (1/60 s)',
     seaTools: 'Sea tools: probe, ruler, stones',
@@ -144,6 +154,11 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     unusedBySpectral: 'solo lo leen las olas semilla',
     unusedByNonFft: 'solo lo leen las olas fft',
     unusedByNonGerstner: 'solo lo leen las olas gerstner',
+    unusedWithoutFoam: 'solo se lee con Espuma activada',
+    unusedWithoutRoughness: 'solo se lee con Rugosidad (Cox y Munk) activada: un espejo no tiene nada que difuminar',
+    unusedWithoutPickedColor: 'solo se lee con Usar el color de agua elegido activado: el color sale de la óptica',
+    unusedWithoutCaustics: 'solo se lee con Cáusticas activadas',
+    unusedWithoutGodRays: 'solo se lee con Rayos de luz activados',
     timeScale: 'Velocidad',
     step: 'Avanzar un fotograma (1/60 s)',
     seaTools: 'Herramientas: sonda, regla, piedras',

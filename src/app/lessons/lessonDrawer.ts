@@ -4,7 +4,7 @@ import { paramDefs, type OceanParams, type ParamDef, type ParamKey } from '../..
 import type { Translator } from '../language/i18n';
 import { teachingWord } from '../language/teachingWords';
 import { paramLabel } from '../language/paramLabels';
-import { unreadParams } from '../panel/modelScope';
+import { unreadParams } from '../panel/unreadParams';
 import { LESSONS, findLesson } from './lessonCatalog';
 import { LESSON_TITLES, SECTION_NAMES, outlined, type OutlinedLesson } from './lessonOutline';
 import type { LessonHooks } from './lessonHooks';

@@ -6,7 +6,7 @@ import { teachingWord } from '../language/teachingWords';
 import { paramLabel } from '../language/paramLabels';
 import { froudeNumber } from '../../sim/wake/kelvinWake';
 import { WAKE_HULL } from '../../sim/wake/boatWake';
-import { unreadParams } from './modelScope';
+import { unreadParams } from './unreadParams';
 import { FreeArea } from '../layout/freeArea';
 import type { SeaTools } from '../tools/seaTools';
 

@@ -12,6 +12,16 @@ const READ_BY: { keys: ParamKey[]; models: WaveModelName[]; reason: TeachingWord
   { keys: ['gerstnerCount', 'gerstnerSteepness'], models: ['gerstner'], reason: 'unusedByNonGerstner' },
 ];
 
+/** The parameters read only while a switch is on: a foam bias with no foam, the sky's blur on a mirror. */
+const READ_WHILE_ON: { keys: ParamKey[]; switchKey: SwitchKey; reason: TeachingWordId }[] = [
+  { keys: ['foamThreshold', 'foamFade', 'foamBreakup'], switchKey: 'foam', reason: 'unusedWithoutFoam' },
+  { keys: ['skyBlur'], switchKey: 'seaRoughness', reason: 'unusedWithoutRoughness' },
+  { keys: ['waterColor'], switchKey: 'waterColorPicked', reason: 'unusedWithoutPickedColor' },
+  { keys: ['causticsIntensity'], switchKey: 'caustics', reason: 'unusedWithoutCaustics' },
+  { keys: ['godRaysIntensity'], switchKey: 'godRays', reason: 'unusedWithoutGodRays' },
+];
+type SwitchKey = 'foam' | 'seaRoughness' | 'waterColorPicked' | 'caustics' | 'godRays';
+
 /** The models on screen: `waves`, or every model of a side-by-side comparison. */
 export function modelsShown(params: Pick<OceanParams, 'waves' | 'compare'>): WaveModelName[] {
   const compared = compareModelNames<WaveModelName>(params.compare);
@@ -19,15 +29,20 @@ export function modelsShown(params: Pick<OceanParams, 'waves' | 'compare'>): Wav
 }
 
 /**
- * Each parameter no model on screen reads, with the words that say why: the panel and the
- * lesson cards show these disabled, so a control that changes nothing never looks live.
+ * Each parameter nothing on screen reads, with the words that say why: no model on screen
+ * reads it, or its switch is off (a switch left out counts as on). The panel and the lesson
+ * cards show these disabled, so a control that changes nothing never looks live.
  */
-export function unreadParams(params: Pick<OceanParams, 'waves' | 'compare'>): Map<ParamKey, TeachingWordId> {
+export function unreadParams(params: Pick<OceanParams, 'waves' | 'compare'> & Partial<Pick<OceanParams, SwitchKey>>): Map<ParamKey, TeachingWordId> {
   const shown = modelsShown(params);
   const unread = new Map<ParamKey, TeachingWordId>();
   for (const group of READ_BY) {
     if (group.models.some((model) => shown.includes(model))) continue;
     for (const key of group.keys) unread.set(key, group.reason);
+  }
+  for (const group of READ_WHILE_ON) {
+    if (params[group.switchKey] !== false) continue;
+    for (const key of group.keys) if (!unread.has(key)) unread.set(key, group.reason);
   }
   return unread;
 }
