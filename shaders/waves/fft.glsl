@@ -169,6 +169,7 @@ void fftReadPixelFields(vec2 p, bool near) {
 #ifdef OCEAN_FOAM_BREAKUP
   vec2 octaves = foamBreakupOctaves(p, near);
   fftPixelGroups = (octaves.x + 0.5 * octaves.y) / 1.5;
+#ifndef OCEAN_NEAR_BANDS
   float copyField = foamBreakupOther(octaves);
   float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);
   float copyShare = smoothstep(-0.05, 0.05, copyField) * far;
@@ -180,6 +181,7 @@ void fftReadPixelFields(vec2 p, bool near) {
   fftPixelPotential = mix(fftPixelPotential, foam2Copy.r, smoothstep(-0.05, 0.05, copyField) * far);
   float keep = 1.0 - copyShare;
   foam2.b = (keep * foam2.b + copyShare * foam2Copy.b) * inversesqrt(keep * keep + copyShare * copyShare);
+#endif
 #endif
   fftPixelDerivatives = derivatives0 + derivatives1 + derivatives2;
   fftPixelJxx = foam0.b + foam1.b + foam2.b;
