@@ -33,14 +33,27 @@ float foamBreakupOctave(vec2 u, ivec2 cells) {
   return mix(mix(a, b, w.x), mix(c, d, w.x), w.y);
 }
 
-// The field at a grid point relative to the render origin (near) or absolute, in [−1, 1): two
-// octaves, the second on a lattice turned by 30° and 2.31 times finer (BREAKUP_SECOND_OCTAVE).
-float foamBreakup(vec2 p, bool near) {
+// The field's two octaves at a grid point relative to the render origin (near) or absolute,
+// each in [−1, 1): the second on a lattice turned by 30° and 2.31 times finer (BREAKUP_SECOND_OCTAVE).
+vec2 foamBreakupOctaves(vec2 p, bool near) {
   vec2 u = (near ? p : p - uFoamBreakupOrigin) * uFoamBreakupScale;
   const mat2 TURN = mat2(0.8660254, 0.5, -0.5, 0.8660254) * 2.31;
   float first = foamBreakupOctave(u + uFoamBreakupOffset.xy, uFoamBreakupCells.xy);
   float second = foamBreakupOctave(TURN * u + uFoamBreakupOffset.zw, uFoamBreakupCells.zw);
-  return (first + 0.5 * second) / 1.5;
+  return vec2(first, second);
+}
+
+// The field, in [−1, 1).
+float foamBreakup(vec2 p, bool near) {
+  vec2 octaves = foamBreakupOctaves(p, near);
+  return (octaves.x + 0.5 * octaves.y) / 1.5;
+}
+
+// A second field from the same octaves, uncorrelated with the first (their covariance,
+// ½ var − ½ var, is zero): where the tiles' copies are blended (shaders/waves/fft.glsl), so
+// that the foam, which gathers where the first is low, is not all on one copy.
+float foamBreakupOther(vec2 octaves) {
+  return (0.5 * octaves.x - octaves.y) / 1.5;
 }
 
 // The share of the foam left behind that lies where the group lets it: all of it in a group
@@ -54,6 +67,10 @@ float foamGroupShare(float breakup) {
 // seen from above Monahan's (FOAM_SHARE_WITHOUT_GROUPS, tests/browser/light/foam.test.ts).
 float foamBreakup(vec2 p, bool near) {
   return 0.0;
+}
+
+vec2 foamBreakupOctaves(vec2 p, bool near) {
+  return vec2(0.0);
 }
 
 const float FOAM_SHARE_WITHOUT_GROUPS = 0.31;

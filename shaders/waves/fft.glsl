@@ -129,11 +129,29 @@ float fftPixelPotential;
 vec4 fftPixelSlopeDerivatives;
 float fftPixelSlopeJxx;
 float fftPixelUnresolvedVariance;
+float fftPixelGroups;
 
-// The breakup field at this pixel, evaluated here rather than interpolated from the vertices:
-// its second octave's cells are a few metres wide at 10 m/s, finer than the far bands' vertices.
+// The breakup field at this pixel (fftReadPixelFields), evaluated per pixel rather than
+// interpolated from the vertices: its second octave's cells are a few metres wide at 10 m/s,
+// finer than the far bands' vertices.
 float fftBreakup(vec2 p, bool near) {
-  return foamBreakup(p, near);
+  return fftPixelGroups;
+}
+
+// Seen from high above, the two shorter cascades' tiles would show in the glitter: each tile
+// is one periodic pattern, and a pixel there resolves most of its waves. So where the pixel's
+// footprint passes TILE_COPY_FROM (the geometry no longer shows these waves), each is read a
+// second time, TILE_COPY_SHIFT of a tile away, and the two readings are blended by the group
+// field, which never repeats, with weights whose squares add to one, so the slopes keep their
+// variance (Heitz & Neyret 2018, "High-performance by-example noise using a
+// histogram-preserving blending operator").
+const float TILE_COPY_FROM = 0.3;
+const float TILE_COPY_FULL = 1.0;
+const vec2 TILE_COPY_SHIFT = vec2(0.382, 0.618);
+vec4 fftTileCopies(vec4 own, sampler2D map, vec2 p, float scale, vec2 offset, float copyShare) {
+  vec4 copy = fftField(map, p, scale, offset + TILE_COPY_SHIFT * uFftN);
+  float keep = 1.0 - copyShare;
+  return (keep * own + copyShare * copy) * inversesqrt(keep * keep + copyShare * copyShare);
 }
 
 void fftReadPixelFields(vec2 p, bool near) {
@@ -147,9 +165,29 @@ void fftReadPixelFields(vec2 p, bool near) {
   vec4 foam0 = fftField(uFftFoam0, p, uFftScale.x, fftOffset(0, near));
   vec4 foam1 = fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near));
   vec4 foam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
+  fftPixelPotential = foam2.r;
+#ifdef OCEAN_FOAM_BREAKUP
+  vec2 octaves = foamBreakupOctaves(p, near);
+  fftPixelGroups = (octaves.x + 0.5 * octaves.y) / 1.5;
+#ifndef OCEAN_NEAR_BANDS
+  float copyField = foamBreakupOther(octaves);
+  float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);
+  float copyShare = smoothstep(-0.05, 0.05, copyField) * far;
+  derivatives1 = fftTileCopies(derivatives1, uFftDerivatives1, p, uFftScale.y, fftOffset(1, near), copyShare);
+  derivatives2 = fftTileCopies(derivatives2, uFftDerivatives2, p, uFftScale.z, fftOffset(2, near), copyShare);
+  foam1 = fftTileCopies(foam1, uFftFoam1, p, uFftScale.y, fftOffset(1, near), copyShare);
+  // The foam left behind lives on the smallest tile too: far away, one copy or the other.
+  vec4 foam2Copy = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near) + TILE_COPY_SHIFT * uFftN);
+  fftPixelPotential = mix(fftPixelPotential, foam2Copy.r, smoothstep(-0.05, 0.05, copyField) * far);
+  float keep = 1.0 - copyShare;
+  foam2.b = (keep * foam2.b + copyShare * foam2Copy.b) * inversesqrt(keep * keep + copyShare * copyShare);
+#endif
+#endif
   fftPixelDerivatives = derivatives0 + derivatives1 + derivatives2;
   fftPixelJxx = foam0.b + foam1.b + foam2.b;
-  fftPixelPotential = foam2.r;
+#ifndef OCEAN_FOAM_BREAKUP
+  fftPixelGroups = 0.0;
+#endif
   fftPixelSlopeDerivatives = share.x * derivatives0 + share.y * derivatives1 + share.z * derivatives2;
   fftPixelSlopeJxx = dot(share, vec3(foam0.b, foam1.b, foam2.b));
   fftPixelUnresolvedVariance = max(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - dot(share * share, uFftSlopeVariance));
