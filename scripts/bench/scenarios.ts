@@ -61,7 +61,7 @@ export const SCENARIOS: readonly BenchScenario[] = [
   { name: 'FFT view, no subsurface glow (subsurface=0)', query: 't=10&waves=fft&subsurface=0', stepSeconds: 1 / 60 },
   { name: 'FFT view, no roughness (seaRoughness=0)', query: 't=10&waves=fft&seaRoughness=0', stepSeconds: 1 / 60 },
   { name: 'FFT view, sharp sky (skyBlur=0)', query: 't=10&waves=fft&skyBlur=0', stepSeconds: 1 / 60 },
-  { name: 'FFT view, no wave groups (foamBreakup=0)', query: 't=10&waves=fft&foamBreakup=0', stepSeconds: 1 / 60 },
+  { name: 'FFT view, no wave groups (waveGroups=0)', query: 't=10&waves=fft&waveGroups=0', stepSeconds: 1 / 60 },
   { name: 'default view, sharp sky (skyBlur=0)', query: 't=10&skyBlur=0' },
   // The three models side by side against the dearest of them alone, same camera
   // and wind, both with the clock running (the FFT passes run in both).
@@ -97,7 +97,7 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['FFT view / no subsurface glow', 'FFT view (waves=fft, clock running)', 'FFT view, no subsurface glow (subsurface=0)', null],
   ['FFT view / no roughness', 'FFT view (waves=fft, clock running)', 'FFT view, no roughness (seaRoughness=0)', null],
   ['FFT view / sharp sky', 'FFT view (waves=fft, clock running)', 'FFT view, sharp sky (skyBlur=0)', null],
-  ['FFT view / no wave groups', 'FFT view (waves=fft, clock running)', 'FFT view, no wave groups (foamBreakup=0)', null],
+  ['FFT view / no wave groups', 'FFT view (waves=fft, clock running)', 'FFT view, no wave groups (waveGroups=0)', null],
   ['default / sharp sky', 'default view', 'default view, sharp sky (skyBlur=0)', null],
   // A split view costs no more than its dearest model alone.
   ['compare-models / fft alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, fft alone', 1],

@@ -1,6 +1,6 @@
 // Prints the share of near-white pixels seen from 150 m above at 10, 15 and 20 m/s (the mean of
 // four instants, and each), against Monahan's whitecap coverage. `tsx scripts/probes/foamCoverage.ts [out-dir] ["&more=query"]`
-// also writes the frames; the second argument is added to the view's query (e.g. "&foamBreakup=0").
+// also writes the frames; the second argument is added to the view's query (e.g. "&waveGroups=0").
 import { writeFileSync } from 'node:fs';
 import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
 import { whiteShare } from '../../tests/browser/light/glintMeasure';

@@ -1,7 +1,7 @@
 // The largest autocorrelation past 50 m of the sea seen straight down, averaged over four
-// instants 30 s apart, as tests/browser/light/foamTiling.test.ts measures it, at any height,
+// instants 30 s apart, as tests/browser/light/tiling.test.ts measures it, at any height,
 // wind and measure: `tsx scripts/probes/tilingPeaks.ts ALTITUDE WIND foam|picture [breakupOff|groupsOff|-] [MIN_LAG_METRES]`.
-// breakupOff: the breakup field repeating with the smallest tile (the test's control); groupsOff: foamBreakup=0.
+// breakupOff: the breakup field repeating with the smallest tile (the test's control); groupsOff: waveGroups=0.
 // WAVES=seed|gerstner measures another wave model (default fft); EXTRA_QUERY is added to the query.
 // "foam": pixels brighter than 190; "picture": the luminance itself; "detail": the luminance less
 // its mean over a box 2·HIGHPASS_METRES wide (default 40 m), so the glint's and the sky's broad
@@ -9,29 +9,15 @@
 import { PNG } from 'pngjs';
 import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
 import { autocorrelation, peakBeyond, type Autocorrelation } from '../../tests/support/autocorrelation';
+import { highPass } from '../../tests/support/highPass';
 
 const [altitude = '1500', wind = '10', measure = 'foam', fault = '', minLag = '50'] = process.argv.slice(2);
 const width = 640;
 const height = 360;
 const metresPerPixel = (2 * Number(altitude) * Math.tan((27.5 * Math.PI) / 180)) / height;
-/** In place: each value less the mean of the (2r + 1)² box around it (clipped at the edges), from a summed-area table. */
-function highPass(values: Float64Array, r: number): void {
-  const sums = new Float64Array((width + 1) * (height + 1));
-  for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) sums[(y + 1) * (width + 1) + x + 1] = values[y * width + x] + sums[y * (width + 1) + x + 1] + sums[(y + 1) * (width + 1) + x] - sums[y * (width + 1) + x];
-  const out = new Float64Array(values.length);
-  for (let y = 0; y < height; y++) {
-    for (let x = 0; x < width; x++) {
-      const x0 = Math.max(0, x - r), x1 = Math.min(width, x + r + 1), y0 = Math.max(0, y - r), y1 = Math.min(height, y + r + 1);
-      const sum = sums[y1 * (width + 1) + x1] - sums[y0 * (width + 1) + x1] - sums[y1 * (width + 1) + x0] + sums[y0 * (width + 1) + x0];
-      out[y * width + x] = values[y * width + x] - sum / ((x1 - x0) * (y1 - y0));
-    }
-  }
-  values.set(out);
-}
-
 const harness = await startHarness();
 try {
-  const { page } = await openOcean(harness, `waves=${process.env.WAVES ?? 'fft'}&windSpeed=${wind}&sunElevation=30&t=10&cam=0,${altitude},0,0,0,-0.01${fault === 'groupsOff' ? '&foamBreakup=0' : ''}${process.env.EXTRA_QUERY ?? ''}`, width, height);
+  const { page } = await openOcean(harness, `waves=${process.env.WAVES ?? 'fft'}&windSpeed=${wind}&sunElevation=30&t=10&cam=0,${altitude},0,0,0,-0.01${fault === 'groupsOff' ? '&waveGroups=0' : ''}${process.env.EXTRA_QUERY ?? ''}`, width, height);
   if (fault === 'breakupOff') await page.evaluate(() => window.oceano.debug.setShadingFixes({ foamBreakup: false }));
   const correlations: Autocorrelation[] = [];
   for (const t of [10, 40, 70, 100]) {
@@ -45,7 +31,7 @@ try {
       const luma = 0.2126 * image.data[4 * i] + 0.7152 * image.data[4 * i + 1] + 0.0722 * image.data[4 * i + 2];
       values[i] = measure === 'foam' ? (luma > 190 ? 1 : 0) : luma;
     }
-    if (measure === 'detail') highPass(values, Math.round(Number(process.env.HIGHPASS_METRES ?? 40) / metresPerPixel));
+    if (measure === 'detail') highPass(values, width, height, Math.round(Number(process.env.HIGHPASS_METRES ?? 40) / metresPerPixel));
     correlations.push(autocorrelation(values, width, height));
   }
   const [first] = correlations;

@@ -10,7 +10,7 @@ uniform vec4 uFoamBreakupOffset;        // the rest, in cells: first octave (xy)
 uniform vec2 uFoamBreakupOrigin;        // the render origin, m (for an absolute point only)
 uniform int uFoamBreakupSeed;           // the user's seed mixed with the field's stream
 
-#ifdef OCEAN_FOAM_BREAKUP
+#ifdef OCEAN_WAVE_GROUPS
 float foamBreakupHash(ivec2 cell) {
   uint h = uint(cell.x) * 0x27d4eb2du ^ uint(cell.y) * 0x165667b1u ^ uint(uFoamBreakupSeed) * 0x9e3779b1u;
   h ^= h >> 16;

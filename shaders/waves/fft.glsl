@@ -166,7 +166,7 @@ void fftReadPixelFields(vec2 p, bool near) {
   vec4 foam1 = fftField(uFftFoam1, p, uFftScale.y, fftOffset(1, near));
   vec4 foam2 = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
   fftPixelPotential = foam2.r;
-#ifdef OCEAN_FOAM_BREAKUP
+#ifdef OCEAN_WAVE_GROUPS
   vec2 octaves = foamBreakupOctaves(p, near);
   fftPixelGroups = (octaves.x + 0.5 * octaves.y) / 1.5;
 #ifndef OCEAN_NEAR_BANDS
@@ -185,7 +185,7 @@ void fftReadPixelFields(vec2 p, bool near) {
 #endif
   fftPixelDerivatives = derivatives0 + derivatives1 + derivatives2;
   fftPixelJxx = foam0.b + foam1.b + foam2.b;
-#ifndef OCEAN_FOAM_BREAKUP
+#ifndef OCEAN_WAVE_GROUPS
   fftPixelGroups = 0.0;
 #endif
   fftPixelSlopeDerivatives = share.x * derivatives0 + share.y * derivatives1 + share.z * derivatives2;

@@ -22,6 +22,8 @@ export interface ShadingFixes {
   foamCoverage: boolean;
   /** The breakup field that keeps the whitecaps off the FFT tiles' lattice (shaders/foam/foamBreakup.glsl). */
   foamBreakup: boolean;
+  /** Far away, the two shorter FFT tiles read twice and blended by a field that never repeats (shaders/waves/fft.glsl fftTileCopies). */
+  tileCopies: boolean;
   /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
   subsurfaceCrests: boolean;
   /** The water's colour as its optics give it; off: 3 % brighter, the smallest change the reference comparison must catch. */
@@ -82,6 +84,8 @@ const TILED_FOAM: ShaderFault = {
   name: 'tiled-foam',
   fragment: [['float breakup = fftBreakup(p, near);', 'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);']],
 };
+/** Every FFT tile read once at every distance: its repeat shows from high above. */
+const SINGLE_TILES: ShaderFault = { name: 'single-tiles', fragment: [['float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);', 'float far = 0.0;']] };
 /** The subsurface glow on every pixel alike, crest or trough. */
 const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
 /** The water's own colour 3 % brighter. */
@@ -126,6 +130,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(EVERY_TROCHOID_SLOPE, waves === 'gerstner' ? fixes.slopeRoughness : true);
   toggle(SOLID_KEPT_FOAM, fixes.foamCoverage);
   toggle(TILED_FOAM, fixes.foamBreakup);
+  toggle(SINGLE_TILES, waves === 'fft' ? fixes.tileCopies : true);
   toggle(GLOW_EVERYWHERE, fixes.subsurfaceCrests);
   toggle(BRIGHTER_WATER, fixes.exactWaterColour);
   const ocean = view.ocean;

@@ -25,7 +25,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   foamThreshold: 'Sesgo del umbral de espuma (jacobiano)',
   foamFade: 'Decaimiento de la espuma τ',
   foamTexture: 'Textura de la espuma',
-  foamBreakup: 'Rompientes por grupos de olas',
+  waveGroups: 'Grupos de olas',
   subsurface: 'Brillo bajo la superficie',
   visibility: 'Visibilidad (calima)',
   normalsCompare: 'Comparar normales de pendiente | fabricadas',

@@ -38,7 +38,7 @@ export interface OceanOptions {
 }
 
 /** The parameters an ocean material shows (every model's material of a comparison alike). */
-export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'skyBlur', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface', 'foamBreakup', 'visibility'];
+export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'skyBlur', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface', 'waveGroups', 'visibility'];
 
 /**
  * The ocean as a three.js object: add it to your scene, call `update(time, camera)` before
@@ -490,6 +490,6 @@ export function applyLook(material: OceanMaterial, params: OceanParams): void {
   material.setNormalsCompare(params.normalsCompare);
   material.setLodColors(params.lodColors);
   material.setSubsurface(params.subsurface);
-  material.setFoamBreakup(params.foamBreakup);
+  material.setWaveGroups(params.waveGroups);
   material.setVisibility(params.visibility);
 }

@@ -177,9 +177,9 @@ export class OceanMaterial extends ShaderMaterial {
     this.setDefine('OCEAN_SUBSURFACE', enabled);
   }
 
-  /** The spectral sea's whitecaps in wave groups (shaders/foam/foamBreakup.glsl), compiled in while on. */
-  setFoamBreakup(enabled: boolean): void {
-    this.setDefine('OCEAN_FOAM_BREAKUP', enabled);
+  /** The spectral sea's wave groups: where whitecaps break, and far away which copy of the shorter tiles shows (shaders/foam/foamBreakup.glsl, shaders/waves/fft.glsl), compiled in while on. */
+  setWaveGroups(enabled: boolean): void {
+    this.setDefine('OCEAN_WAVE_GROUPS', enabled);
   }
 
   /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */

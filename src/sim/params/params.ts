@@ -68,8 +68,8 @@ export const paramDefs = {
   foamFade: { kind: 'number', default: FOAM_FADE_SECONDS, min: 0.5, max: 8, step: 0.1, unit: 's', label: 'Foam decay τ' },
   // Foam drawn as foam (bubbles, feathered edges, streaks, lit with its own normal) or as flat white paint, for the lesson.
   foamTexture: { kind: 'boolean', default: true, label: 'Foam texture' },
-  // Whitecaps in wave groups: a field that never repeats decides where waves break (src/sim/waves/fft/foamBreakup.ts); off, the lesson shows the foam without it.
-  foamBreakup: { kind: 'boolean', default: true, label: 'Whitecaps in wave groups' },
+  // Wave groups: a field that never repeats decides where waves break and, far away, which copy of the shorter tiles shows (src/sim/waves/fft/foamBreakup.ts, shaders/waves/fft.glsl); off, the lesson shows the tiles' repeat.
+  waveGroups: { kind: 'boolean', default: true, label: 'Wave groups' },
   // Thin sunlit crests glowing green when the sun is behind them (shaders/subsurface.glsl).
   subsurface: { kind: 'boolean', default: true, label: 'Subsurface glow' },
   seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },

@@ -10,7 +10,7 @@ import { whitecapCoverage } from '../../../src/sim/waves/fft/whitecaps';
  * Monahan & O'Muircheartaigh measured, W = 3.84·10⁻⁶ U^3.41 (1.0 %, 3.9 %, 10.5 % at 10,
  * 15, 20 m/s), within ±30 %: the share of near-white pixels in the picture, averaged over
  * four instants, not the share of the Jacobian below its threshold. So it does with the
- * whitecaps' wave groups switched off for the lesson (foamBreakup=0).
+ * whitecaps' wave groups switched off for the lesson (waveGroups=0).
  */
 const harness = useHarness();
 const TOLERANCE = 0.3;
@@ -39,8 +39,8 @@ describe('foam from above follows Monahan', () => {
     const ratios = await coverageRatios(true);
     console.log(`[oceano] foam coverage / Monahan's W at 10, 15, 20 m/s: ${ratios.map((r) => r.toFixed(2)).join(', ')}`);
     for (const ratio of ratios) expect(Math.abs(ratio - 1), ratios.map((r) => r.toFixed(2)).join(', ')).toBeLessThan(TOLERANCE);
-    const withoutGroups = await coverageRatios(true, '&foamBreakup=0');
-    console.log(`[oceano] without wave groups (foamBreakup=0): ${withoutGroups.map((r) => r.toFixed(2)).join(', ')}`);
+    const withoutGroups = await coverageRatios(true, '&waveGroups=0');
+    console.log(`[oceano] without wave groups (waveGroups=0): ${withoutGroups.map((r) => r.toFixed(2)).join(', ')}`);
     for (const ratio of withoutGroups) expect(Math.abs(ratio - 1), `without groups: ${withoutGroups.map((r) => r.toFixed(2)).join(', ')}`).toBeLessThan(TOLERANCE);
     const control = await coverageRatios(false);
     console.log(`[oceano] control, foam left behind drawn solid: ${control.map((r) => r.toFixed(2)).join(', ')}`);

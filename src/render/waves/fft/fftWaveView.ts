@@ -30,7 +30,7 @@ const FOAM_EDGE = 0.25;
  */
 const ACTIVE_FOAM_SHARE = 0.9;
 /**
- * The same without wave groups (the foamBreakup parameter off, for the lesson). The breaking
+ * The same without wave groups (the waveGroups parameter off, for the lesson). The breaking
  * measure is then narrower, so more of what breaks lies in the soft edge's lace, which does
  * not read as white: this share keeps the white seen from above Monahan's (measured on the
  * rendered frame, tests/browser/light/foam.test.ts).
@@ -79,7 +79,7 @@ export class FftWaveView implements WaveModelView {
   /** Thresholds before the user's bias, from the sea's statistics: recomputed only when the sea is rebuilt. */
   private baseThresholds: { active: number; activeSoftness: number; memory: number; memorySoftness: number } | null = null;
   private breakup: FoamBreakup;
-  /** Whether the whitecaps break in groups (the foamBreakup parameter): the threshold counts the field's shift. */
+  /** Whether the whitecaps break in groups (the waveGroups parameter): the threshold counts the field's shift. */
   private groups = true;
   /** The heightmap view's grey scale: each shown cascade's height at 3σ is white. */
   heightmapLayout: HeightmapLayout = { channel: 1, range: [1, 1] };
@@ -201,8 +201,8 @@ export class FftWaveView implements WaveModelView {
     const cascadeSpreads = tiles.map((tile) => cascadeSpread(tile, sea.depth));
     this.setSlopeStatistics(cascadeSpreads.map((spread) => spread.slope * spread.slope), params.windSpeed);
     this.heightmapLayout = { channel: 1, range: [3 * cascadeSpreads[0].height, 3 * cascadeSpreads[cascadeSpreads.length - 1].height] };
-    const groupsToggled = params.foamBreakup !== this.groups;
-    this.groups = params.foamBreakup;
+    const groupsToggled = params.waveGroups !== this.groups;
+    this.groups = params.waveGroups;
     if (rebuilt || !this.baseThresholds || groupsToggled) {
       this.breakup = foamBreakup(sea);
       this.baseThresholds = this.foamThresholds();

@@ -13,7 +13,7 @@ import { windVector, type SeaState } from '../spectra/seaState';
  * repeat (value noise on a lattice hashed by integerNoise, whose period is 2³² cells), of cells an
  * eighth of the peak wavelength wide, carried downwind at the peak's group velocity: the folds
  * inside a "group" break more readily, the others less. Its strength, in units of the breaking
- * measure's own spread, is what the no-tiling test needs (tests/browser/light/foamTiling.test.ts);
+ * measure's own spread, is what the no-tiling test needs (tests/browser/light/tiling.test.ts);
  * the threshold takes it into account, so the coverage stays Monahan's (breaking.ts).
  */
 export const BREAKUP_CELLS_PER_PEAK_WAVELENGTH = 8;
