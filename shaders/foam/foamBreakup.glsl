@@ -43,10 +43,13 @@ vec2 foamBreakupOctaves(vec2 p, bool near) {
   return vec2(first, second);
 }
 
-// The field, in [−1, 1).
-float foamBreakup(vec2 p, bool near) {
-  vec2 octaves = foamBreakupOctaves(p, near);
+// The field from its two octaves, in [−1, 1).
+float foamBreakupOfOctaves(vec2 octaves) {
   return (octaves.x + 0.5 * octaves.y) / 1.5;
+}
+
+float foamBreakup(vec2 p, bool near) {
+  return foamBreakupOfOctaves(foamBreakupOctaves(p, near));
 }
 
 // A second field from the same octaves, uncorrelated with the first (their covariance,
@@ -62,15 +65,11 @@ float foamGroupShare(float breakup) {
   return smoothstep(0.2, -0.6, breakup);
 }
 #else
-// The foamBreakup parameter off, for the lesson: no groups, so nothing shifts the breaking
-// measure, and the foam left behind lies everywhere, thinned to what keeps the coverage
-// seen from above Monahan's (FOAM_SHARE_WITHOUT_GROUPS, tests/browser/light/foam.test.ts).
+// The waveGroups parameter off, for the lesson: no groups, so nothing shifts the breaking
+// measure, and the foam left behind lies everywhere, at the share of it the groups let lie on
+// average. The sea's threshold without the shift: ACTIVE_FOAM_SHARE_WITHOUT_GROUPS (fftWaveView.ts).
 float foamBreakup(vec2 p, bool near) {
   return 0.0;
-}
-
-vec2 foamBreakupOctaves(vec2 p, bool near) {
-  return vec2(0.0);
 }
 
 const float FOAM_SHARE_WITHOUT_GROUPS = 0.31;

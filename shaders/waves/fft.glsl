@@ -141,15 +141,18 @@ float fftBreakup(vec2 p, bool near) {
 // Seen from high above, the two shorter cascades' tiles would show in the glitter: each tile
 // is one periodic pattern, and a pixel there resolves most of its waves. So where the pixel's
 // footprint passes TILE_COPY_FROM (the geometry no longer shows these waves), each is read a
-// second time, TILE_COPY_SHIFT of a tile away, and the two readings are blended by the group
-// field, which never repeats, with weights whose squares add to one, so the slopes keep their
-// variance (Heitz & Neyret 2018, "High-performance by-example noise using a
-// histogram-preserving blending operator").
+// second time, TILE_COPY_SHIFT of a tile away, and the two readings are blended by a field that
+// never repeats and is uncorrelated with the groups (foamBreakupOther), with weights whose
+// squares add to one, so the slopes keep their variance (Heitz & Neyret 2018,
+// "High-performance by-example noise using a histogram-preserving blending operator").
 const float TILE_COPY_FROM = 0.3;
 const float TILE_COPY_FULL = 1.0;
 const vec2 TILE_COPY_SHIFT = vec2(0.382, 0.618);
-vec4 fftTileCopies(vec4 own, sampler2D map, vec2 p, float scale, vec2 offset, float copyShare) {
-  vec4 copy = fftField(map, p, scale, offset + TILE_COPY_SHIFT * uFftN);
+vec4 fftTileCopy(sampler2D map, vec2 p, float scale, vec2 offset) {
+  return fftField(map, p, scale, offset + TILE_COPY_SHIFT * uFftN);
+}
+
+vec4 fftBlendCopies(vec4 own, vec4 copy, float copyShare) {
   float keep = 1.0 - copyShare;
   return (keep * own + copyShare * copy) * inversesqrt(keep * keep + copyShare * copyShare);
 }
@@ -168,26 +171,23 @@ void fftReadPixelFields(vec2 p, bool near) {
   fftPixelPotential = foam2.r;
 #ifdef OCEAN_WAVE_GROUPS
   vec2 octaves = foamBreakupOctaves(p, near);
-  fftPixelGroups = (octaves.x + 0.5 * octaves.y) / 1.5;
+  fftPixelGroups = foamBreakupOfOctaves(octaves);
 #ifndef OCEAN_NEAR_BANDS
-  float copyField = foamBreakupOther(octaves);
   float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);
-  float copyShare = smoothstep(-0.05, 0.05, copyField) * far;
-  derivatives1 = fftTileCopies(derivatives1, uFftDerivatives1, p, uFftScale.y, fftOffset(1, near), copyShare);
-  derivatives2 = fftTileCopies(derivatives2, uFftDerivatives2, p, uFftScale.z, fftOffset(2, near), copyShare);
-  foam1 = fftTileCopies(foam1, uFftFoam1, p, uFftScale.y, fftOffset(1, near), copyShare);
+  float copyShare = smoothstep(-0.05, 0.05, foamBreakupOther(octaves)) * far;
+  derivatives1 = fftBlendCopies(derivatives1, fftTileCopy(uFftDerivatives1, p, uFftScale.y, fftOffset(1, near)), copyShare);
+  derivatives2 = fftBlendCopies(derivatives2, fftTileCopy(uFftDerivatives2, p, uFftScale.z, fftOffset(2, near)), copyShare);
+  foam1 = fftBlendCopies(foam1, fftTileCopy(uFftFoam1, p, uFftScale.y, fftOffset(1, near)), copyShare);
+  vec4 foam2Copy = fftTileCopy(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
+  foam2.b = fftBlendCopies(foam2, foam2Copy, copyShare).b;
   // The foam left behind lives on the smallest tile too: far away, one copy or the other.
-  vec4 foam2Copy = fftField(uFftFoam2, p, uFftScale.z, fftOffset(2, near) + TILE_COPY_SHIFT * uFftN);
-  fftPixelPotential = mix(fftPixelPotential, foam2Copy.r, smoothstep(-0.05, 0.05, copyField) * far);
-  float keep = 1.0 - copyShare;
-  foam2.b = (keep * foam2.b + copyShare * foam2Copy.b) * inversesqrt(keep * keep + copyShare * copyShare);
+  fftPixelPotential = mix(fftPixelPotential, foam2Copy.r, copyShare);
 #endif
+#else
+  fftPixelGroups = 0.0;
 #endif
   fftPixelDerivatives = derivatives0 + derivatives1 + derivatives2;
   fftPixelJxx = foam0.b + foam1.b + foam2.b;
-#ifndef OCEAN_WAVE_GROUPS
-  fftPixelGroups = 0.0;
-#endif
   fftPixelSlopeDerivatives = share.x * derivatives0 + share.y * derivatives1 + share.z * derivatives2;
   fftPixelSlopeJxx = dot(share, vec3(foam0.b, foam1.b, foam2.b));
   fftPixelUnresolvedVariance = max(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - dot(share * share, uFftSlopeVariance));

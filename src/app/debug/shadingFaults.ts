@@ -22,7 +22,7 @@ export interface ShadingFixes {
   foamCoverage: boolean;
   /** The breakup field that keeps the whitecaps off the FFT tiles' lattice (shaders/foam/foamBreakup.glsl). */
   foamBreakup: boolean;
-  /** Far away, the two shorter FFT tiles read twice and blended by a field that never repeats (shaders/waves/fft.glsl fftTileCopies). */
+  /** Far away, the two shorter FFT tiles read twice and blended by a field that never repeats (shaders/waves/fft.glsl fftBlendCopies). */
   tileCopies: boolean;
   /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
   subsurfaceCrests: boolean;

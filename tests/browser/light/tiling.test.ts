@@ -42,6 +42,15 @@ function pictureDetail(png: Buffer): Float64Array {
   return values;
 }
 
+interface Peak {
+  rho: number;
+  lag: [number, number];
+}
+
+function describePeak(peak: Peak): string {
+  return `${peak.rho.toFixed(3)} at (${peak.lag.map((m) => m.toFixed(0)).join(', ')}) m`;
+}
+
 interface RepeatOptions {
   fixes?: Parameters<typeof window.oceano.debug.setShadingFixes>[0];
   extraQuery?: string;
@@ -49,11 +58,11 @@ interface RepeatOptions {
   minLagMetres?: number;
 }
 
-async function repeatPeak(windSpeed: number, fixed: boolean, extraQuery = ''): Promise<{ rho: number; lag: [number, number] }> {
+async function repeatPeak(windSpeed: number, fixed: boolean, extraQuery = ''): Promise<Peak> {
   return measuredPeak(windSpeed, { fixes: fixed ? undefined : { foamBreakup: false }, extraQuery });
 }
 
-async function measuredPeak(windSpeed: number, { fixes, extraQuery = '', measure = foamMask, minLagMetres = MIN_LAG_METRES }: RepeatOptions): Promise<{ rho: number; lag: [number, number] }> {
+async function measuredPeak(windSpeed: number, { fixes, extraQuery = '', measure = foamMask, minLagMetres = MIN_LAG_METRES }: RepeatOptions): Promise<Peak> {
   const { page } = await openOcean(harness, tilingQuery(windSpeed) + extraQuery, TILING_VIEW.width, TILING_VIEW.height);
   if (fixes) await page.evaluate((f) => window.oceano.debug.setShadingFixes(f), fixes);
   const correlations: Autocorrelation[] = [];
@@ -77,7 +86,7 @@ describe('no tile period in the foam or the picture', () => {
     for (const windSpeed of [10, 15]) {
       const peak = await repeatPeak(windSpeed, true);
       const control = await repeatPeak(windSpeed, false);
-      const say = `${windSpeed} m/s: peak ${peak.rho.toFixed(3)} at (${peak.lag.map((m) => m.toFixed(0)).join(', ')}) m; control ${control.rho.toFixed(3)} at (${control.lag.map((m) => m.toFixed(0)).join(', ')}) m`;
+      const say = `${windSpeed} m/s: peak ${describePeak(peak)}; control ${describePeak(control)}`;
       console.log(`[oceano] ${say}`);
       expect(peak.rho, say).toBeLessThan(LIMIT);
       expect(control.rho, say).toBeGreaterThan(LIMIT);
@@ -88,7 +97,7 @@ describe('no tile period in the foam or the picture', () => {
   // 15 m/s foam repeats with the tiles again (0.100 at 334 m when measured, with the groups 0.026).
   it('with the wave groups switched off, the 15 m/s foam repeats: a peak above 0.05 past 50 m', { timeout: 300_000 }, async () => {
     const peak = await repeatPeak(15, true, '&waveGroups=0');
-    const say = `15 m/s without groups: peak ${peak.rho.toFixed(3)} at (${peak.lag.map((m) => m.toFixed(0)).join(', ')}) m`;
+    const say = `15 m/s without groups: peak ${describePeak(peak)}`;
     console.log(`[oceano] ${say}`);
     expect(peak.rho, say).toBeGreaterThan(LIMIT);
   });
@@ -100,7 +109,7 @@ describe('no tile period in the foam or the picture', () => {
     const picture = { measure: pictureDetail, minLagMetres: PICTURE_MIN_LAG_METRES };
     const peak = await measuredPeak(15, picture);
     const control = await measuredPeak(15, { ...picture, fixes: { tileCopies: false } });
-    const say = `15 m/s picture detail: peak ${peak.rho.toFixed(3)} at (${peak.lag.map((m) => m.toFixed(0)).join(', ')}) m; control ${control.rho.toFixed(3)} at (${control.lag.map((m) => m.toFixed(0)).join(', ')}) m`;
+    const say = `15 m/s picture detail: peak ${describePeak(peak)}; control ${describePeak(control)}`;
     console.log(`[oceano] ${say}`);
     expect(peak.rho, say).toBeLessThan(LIMIT);
     expect(control.rho, say).toBeGreaterThan(LIMIT);
