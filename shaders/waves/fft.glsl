@@ -141,10 +141,12 @@ float fftBreakup(vec2 p, bool near) {
 // Seen from high above, the two shorter cascades' tiles would show in the glitter: each tile
 // is one periodic pattern, and a pixel there resolves most of its waves. So where the pixel's
 // footprint passes TILE_COPY_FROM (the geometry no longer shows these waves), each is read a
-// second time, TILE_COPY_SHIFT of a tile away, and the two readings are blended by a field that
-// never repeats and is uncorrelated with the groups (foamBreakupOther), with weights whose
-// squares add to one, so the slopes keep their variance (Heitz & Neyret 2018,
+// second time, TILE_COPY_SHIFT of a tile away, and the two readings are blended as a rotation,
+// own · cos θ + copy · sin θ, which keeps the slopes' variance (Heitz & Neyret 2018,
 // "High-performance by-example noise using a histogram-preserving blending operator").
+// θ turns with a field that never repeats and is uncorrelated with the groups
+// (foamBreakupOther), TILE_COPY_TURN radians per unit of it, fast enough that cos θ and sin θ
+// average to zero, so no share of the repeat is left (src/sim/waves/fft/tileCopies.ts).
 const float TILE_COPY_FROM = 0.3;
 const float TILE_COPY_FULL = 1.0;
 const vec2 TILE_COPY_SHIFT = vec2(0.382, 0.618);
@@ -152,9 +154,14 @@ vec4 fftTileCopy(sampler2D map, vec2 p, float scale, vec2 offset) {
   return fftField(map, p, scale, offset + TILE_COPY_SHIFT * uFftN);
 }
 
-vec4 fftBlendCopies(vec4 own, vec4 copy, float copyShare) {
-  float keep = 1.0 - copyShare;
-  return (keep * own + copyShare * copy) * inversesqrt(keep * keep + copyShare * copyShare);
+// The weights (cos θ, sin θ) of a tile's own reading and its copy.
+vec2 fftCopyWeights(float field, float far) {
+  float angle = far * TILE_COPY_TURN * field;
+  return vec2(cos(angle), sin(angle));
+}
+
+vec4 fftBlendCopies(vec4 own, vec4 copy, vec2 weights) {
+  return weights.x * own + weights.y * copy;
 }
 
 void fftReadPixelFields(vec2 p, bool near) {
@@ -174,14 +181,15 @@ void fftReadPixelFields(vec2 p, bool near) {
   fftPixelGroups = foamBreakupOfOctaves(octaves);
 #ifndef OCEAN_NEAR_BANDS
   float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);
-  float copyShare = smoothstep(-0.05, 0.05, foamBreakupOther(octaves)) * far;
-  derivatives1 = fftBlendCopies(derivatives1, fftTileCopy(uFftDerivatives1, p, uFftScale.y, fftOffset(1, near)), copyShare);
-  derivatives2 = fftBlendCopies(derivatives2, fftTileCopy(uFftDerivatives2, p, uFftScale.z, fftOffset(2, near)), copyShare);
-  foam1 = fftBlendCopies(foam1, fftTileCopy(uFftFoam1, p, uFftScale.y, fftOffset(1, near)), copyShare);
+  vec2 weights = fftCopyWeights(foamBreakupOther(octaves), far);
+  derivatives1 = fftBlendCopies(derivatives1, fftTileCopy(uFftDerivatives1, p, uFftScale.y, fftOffset(1, near)), weights);
+  derivatives2 = fftBlendCopies(derivatives2, fftTileCopy(uFftDerivatives2, p, uFftScale.z, fftOffset(2, near)), weights);
+  foam1 = fftBlendCopies(foam1, fftTileCopy(uFftFoam1, p, uFftScale.y, fftOffset(1, near)), weights);
   vec4 foam2Copy = fftTileCopy(uFftFoam2, p, uFftScale.z, fftOffset(2, near));
-  foam2.b = fftBlendCopies(foam2, foam2Copy, copyShare).b;
-  // The foam left behind lives on the smallest tile too: far away, one copy or the other.
-  fftPixelPotential = mix(fftPixelPotential, foam2Copy.r, copyShare);
+  foam2.b = fftBlendCopies(foam2, foam2Copy, weights).b;
+  // The foam left behind lives on the smallest tile too, and is never negative, so it cannot
+  // be turned: its two readings are mixed by the weights' squares, which add to one.
+  fftPixelPotential = mix(fftPixelPotential, foam2Copy.r, weights.y * weights.y);
 #endif
 #else
   fftPixelGroups = 0.0;

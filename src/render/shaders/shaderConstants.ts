@@ -8,6 +8,7 @@ import { BLUR_MAX_TAPS } from '../underwater/blurLimits';
 import { BAND_STEPS, BASE_STEP, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
 import { GOD_RAY_RANGE } from '../underwater/godRayRange';
 import { DEPTH_DARKENING, WATER_EXTINCTION } from '../../sim/underwater/waterFog';
+import { TILE_COPY_TURN } from '../../sim/waves/fft/tileCopies';
 
 /** A GLSL float literal: always with a decimal point, since GLSL ES will not take `1` as a float. */
 export function glslFloat(value: number): string {
@@ -40,6 +41,7 @@ export function shaderConstantsChunk(): string {
     `#define WATER_BODY_REFLECTANCE ${glslVec3(bodyColor())}`,
     `#define SUBSURFACE_SCATTER ${glslVec3(crestScattering())}`,
     `#define HENYEY_GREENSTEIN vec3(${[(1 - PARTICLE_MEAN_COSINE ** 2) / (4 * Math.PI), 1 + PARTICLE_MEAN_COSINE ** 2, 2 * PARTICLE_MEAN_COSINE].map(glslFloat).join(', ')})`,
+    `#define TILE_COPY_TURN ${glslFloat(TILE_COPY_TURN)}`,
     `#define DETAIL_NORMALS_FROM ${glslFloat(DETAIL_NORMALS_FROM)}`,
     `#define LOD_BAND_COUNT ${MAX_LOD_BANDS}`,
     `#define LOD_BASE_STEP ${glslFloat(BASE_STEP)}`,

@@ -103,8 +103,8 @@ describe('no tile period in the foam or the picture', () => {
   });
 
   // The picture, not only the foam: far away the two shorter tiles are read twice and blended by
-  // a field that never repeats (shaders/waves/fft.glsl fftTileCopies). At 15 m/s from 400 m the
-  // smallest tile's repeat measured 0.055 without the copies.
+  // a rotation that turns with a field that never repeats (shaders/waves/fft.glsl fftBlendCopies).
+  // At 15 m/s from 400 m the tiles' repeat measured 0.055 without the copies.
   it('from 400 m above at 15 m/s, the picture’s detail has no autocorrelation peak above 0.05 past 100 m; control: every tile read once peaks above it', { timeout: 300_000 }, async () => {
     const picture = { measure: pictureDetail, minLagMetres: PICTURE_MIN_LAG_METRES };
     const peak = await measuredPeak(15, picture);

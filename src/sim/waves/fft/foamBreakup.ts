@@ -60,12 +60,28 @@ function valueNoise(u: number, v: number, seed: number): number {
  */
 export const BREAKUP_SECOND_OCTAVE = { cos: Math.cos(Math.PI / 6), sin: Math.sin(Math.PI / 6), scale: 2.31, weight: 0.5 } as const;
 
+/** The field's two octaves at lattice coordinates (u, v) (metres / cell), each in [−1, 1): foamBreakupOctaves's twin. */
+export function breakupOctaves(u: number, v: number, seed: number): [first: number, second: number] {
+  const s = (seed ^ BREAKUP_STREAM) | 0;
+  const { cos, sin, scale } = BREAKUP_SECOND_OCTAVE;
+  return [valueNoise(u, v, s), valueNoise(scale * (cos * u - sin * v), scale * (sin * u + cos * v), s)];
+}
+
 /** The field at lattice coordinates (u, v) (metres / cell): the TS twin of foamBreakup in shaders/foam/foamBreakup.glsl. */
 export function breakupNoise(u: number, v: number, seed: number): number {
-  const s = (seed ^ BREAKUP_STREAM) | 0;
-  const { cos, sin, scale, weight } = BREAKUP_SECOND_OCTAVE;
-  const second = valueNoise(scale * (cos * u - sin * v), scale * (sin * u + cos * v), s);
-  return (valueNoise(u, v, s) + weight * second) / (1 + weight);
+  const [first, second] = breakupOctaves(u, v, seed);
+  const { weight } = BREAKUP_SECOND_OCTAVE;
+  return (first + weight * second) / (1 + weight);
+}
+
+/**
+ * A second field from the same octaves, uncorrelated with breakupNoise (their covariance,
+ * ½ var − ½ var, is zero): foamBreakupOther's twin, which chooses between the tiles' copies
+ * (tileCopies.ts).
+ */
+export function breakupOther([first, second]: [number, number]): number {
+  const { weight } = BREAKUP_SECOND_OCTAVE;
+  return (weight * first - second) / (1 + weight);
 }
 
 /**
