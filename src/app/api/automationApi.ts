@@ -103,6 +103,7 @@ function lazyDebugTools(app: OceanApp): Promisified<DebugTools> {
     lodUpdateMs: call('lodUpdateMs'),
     forceShaftLightWindow: call('forceShaftLightWindow'),
     setShadingFixes: call('setShadingFixes'),
+    foamMemory: call('foamMemory'),
     stripCulling: call('stripCulling'),
     underwaterScene: call('underwaterScene'),
   };
@@ -207,6 +208,7 @@ export function createFailedApi(reason: Error): OceanoApi {
       lodUpdateMs: failed,
       forceShaftLightWindow: failed,
       setShadingFixes: failed,
+      foamMemory: failed,
       stripCulling: failed,
       underwaterScene: failed,
       physicsRuns: failed,

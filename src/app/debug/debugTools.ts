@@ -19,6 +19,10 @@ export function debugTools(app: OceanApp) {
     lodUpdateMs: (batches?: number): number => timeLodUpdate(view(), checkBatches(batches)),
     forceShaftLightWindow: (on: boolean): void => view().underwater.forceShaftLightWindow(on === true),
     setShadingFixes: (fixes: Partial<ShadingFixes>): void => setShadingFixes(view(), fixes),
+    foamMemory: (): { n: number; texel: number; data: number[] } | null => {
+      const memory = view().ocean.waveModelView.readFoamMemory?.();
+      return memory ? { n: memory.n, texel: memory.texel, data: Array.from(memory.data) } : null;
+    },
     stripCulling: (on: boolean): void => void (view().stripCulling = on === true),
     /** The underwater passes' scene target: 'linear' (the library's default) or an encoded one (the app's). */
     underwaterScene: (mode: EncodedScene): void => view().underwater.setEncodedScene(mode),

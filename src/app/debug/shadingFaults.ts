@@ -24,6 +24,8 @@ export interface ShadingFixes {
   foamBreakup: boolean;
   /** Far away, the two shorter FFT tiles read twice and blended by a field that never repeats (shaders/waves/fft.glsl fftBlendCopies). */
   tileCopies: boolean;
+  /** The foam left behind carried by the surface's wind drift (src/sim/waves/fft/foamDrift.ts); off: it stays where it was laid. */
+  foamDrift: boolean;
   /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
   subsurfaceCrests: boolean;
   /** The water's colour as its optics give it; off: 3 % brighter, the smallest change the reference comparison must catch. */
@@ -139,6 +141,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   for (const m of [material, material.near]) plant(m, oceanFaults);
   plant(ocean.seaBed.material, faults.has(UNMARKED_SEA_BED) ? [UNMARKED_SEA_BED] : []);
   if (fixes.cameraRelative !== undefined) material.originFor = fixes.cameraRelative ? renderOrigin : () => [0, 0];
+  if (fixes.foamDrift !== undefined) ocean.waveModelView.setFoamDrift?.(fixes.foamDrift);
   if (fixes.clearanceNear !== undefined) view.clearance.nearFitted = fixes.clearanceNear;
   if (fixes.underwaterShortcuts !== undefined) {
     ocean.underwaterShortcuts = fixes.underwaterShortcuts;

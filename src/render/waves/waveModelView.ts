@@ -72,6 +72,10 @@ export interface WaveModelView {
    * after each group, and returns each group's time. Absent for models with no GPU passes.
    */
   profilePasses?(sync: () => void): PassTiming[];
+  /** For oceano.debug.foamMemory: the remembered foam's tile (n × n potentials, row by row, texels `texel` m wide), where the model remembers foam. */
+  readFoamMemory?(): { n: number; texel: number; data: Float32Array };
+  /** For the foam drift's negative control (oceano.debug.setShadingFixes({ foamDrift: false })): the remembered foam drifts or stays put. */
+  setFoamDrift?(on: boolean): void;
   /**
    * After a lost WebGL context comes back: what the model's GPU passes drew into render
    * targets is gone, so the next update must draw it again even at the same time. Absent

@@ -1,4 +1,4 @@
-import { FloatType, GLSL3, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, WebGLRenderTarget, type Texture } from 'three';
+import { FloatType, GLSL3, Vector2, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, WebGLRenderTarget, type Texture } from 'three';
 import quadVertex from '../../../../shaders/fftQuad.vert?raw';
 import packFragment from '../../../../shaders/fftFoam.frag?raw';
 import memoryFragment from '../../../../shaders/fftFoamMemory.frag?raw';
@@ -58,6 +58,7 @@ export class FftFoam {
       uDisplacement: { value: gpu.displacement[REMEMBERING_CASCADE] },
       uDerivatives: { value: gpu.derivatives[REMEMBERING_CASCADE] },
       uPrevious: { value: null },
+      uDrift: { value: new Vector2() },
       uDecay: { value: 0 },
       uThreshold: { value: 0 },
       uSoftness: { value: 1 },
@@ -78,18 +79,28 @@ export class FftFoam {
 
   /**
    * One lattice step: decay = e^{−Δ/τ} (0 starts from nothing); the smallest cascade's
-   * breaking threshold and the potential's unit. `keep`: false draws the step without making it
-   * the memory (a timing of the pass that leaves the foam as it was).
+   * breaking threshold and the potential's unit; the whole texels the older foam drifts
+   * (src/sim/waves/fft/foamDrift.ts). `keep`: false draws the step without making it the
+   * memory (a timing of the pass that leaves the foam as it was).
    */
-  remember(decay: number, threshold: number, softness: number, keep = true): void {
+  remember(decay: number, threshold: number, softness: number, drift: readonly [number, number], keep = true): void {
     const next = 1 - this.current;
     const u = this.memoryMaterial.uniforms;
+    (u.uDrift.value as Vector2).fromArray(drift);
     u.uDecay.value = decay;
     u.uThreshold.value = threshold;
     u.uSoftness.value = softness;
     u.uPrevious.value = this.memory[this.current].texture;
     this.gpu.fft.draw(this.memoryMaterial, this.memory[next]);
     if (keep) this.current = next;
+  }
+
+  /** The memory as it stands: n × n potentials, row by row (for oceano.debug.foamMemory). */
+  readMemory(): Float32Array {
+    const n = this.gpu.fft.n;
+    const rgba = new Float32Array(4 * n * n);
+    this.gpu.fft.read(this.memory[this.current], rgba);
+    return Float32Array.from({ length: n * n }, (_, i) => rgba[4 * i]);
   }
 
   /** Packs the current fields with the memory faded by `fade` (0: no remembered foam). */

@@ -9,6 +9,7 @@ import { foamRemaining, whitecapCoverage } from '../../../sim/waves/fft/whitecap
 import { breakingSpread, breakingThreshold, jacobianCovariance } from '../../../sim/waves/fft/breaking';
 import { BREAKUP_STREAM, BREAKUP_STRENGTH, breakupLattice, breakupNoise, foamBreakup, type FoamBreakup } from '../../../sim/waves/fft/foamBreakup';
 import { FOAM_STEP_SECONDS, foamSteps } from '../../../sim/waves/fft/foamMemory';
+import { foamDriftStep, foamDriftVelocity } from '../../../sim/waves/fft/foamDrift';
 import { seededRandom } from '../../../sim/noise/integerHash';
 import { seaSlopeVariance } from '../../../sim/optics/coxMunk';
 import { cascadeWavelengths } from '../../../sim/optics/resolvedSlopes';
@@ -81,6 +82,9 @@ export class FftWaveView implements WaveModelView {
   private breakup: FoamBreakup;
   /** Whether the whitecaps break in groups (the waveGroups parameter): the threshold counts the field's shift. */
   private groups = true;
+  /** The surface drift that carries the remembered foam, m/s (x, z); zero for the drift's negative control. */
+  private foamDrift: [number, number] = [0, 0];
+  private foamDrifts = true;
   /** The heightmap view's grey scale: each shown cascade's height at 3σ is white. */
   heightmapLayout: HeightmapLayout = { channel: 1, range: [1, 1] };
 
@@ -224,8 +228,11 @@ export class FftWaveView implements WaveModelView {
       this.foam = new FftFoam(this.gpu);
       this.bindTextures();
     }
-    // Other thresholds or another fade make other foam: rebuilt from nothing at the next update.
-    if (rebuilt || changed || foamToggled || fadeChanged) {
+    const drift = this.foamDrifts ? foamDriftVelocity(sea) : ([0, 0] as [number, number]);
+    const driftChanged = drift[0] !== this.foamDrift[0] || drift[1] !== this.foamDrift[1];
+    this.foamDrift = drift;
+    // Other thresholds, another fade or another drift make other foam: rebuilt from nothing at the next update.
+    if (rebuilt || changed || foamToggled || fadeChanged || driftChanged) {
       this.foamDone = null;
       this.time = Number.NaN;
     }
@@ -285,7 +292,8 @@ export class FftWaveView implements WaveModelView {
       const decay = foamRemaining(FOAM_STEP_SECONDS, this.foamFade);
       for (let k = steps.first; k <= steps.last; k++) {
         this.gpu.update(k * FOAM_STEP_SECONDS, REMEMBERING_CASCADE);
-        this.foam.remember(k === steps.first && steps.fresh ? 0 : decay, this.memoryThreshold, this.memorySoftness);
+        const drift = foamDriftStep(this.foamDrift, this.memoryTexel(), k);
+        this.foam.remember(k === steps.first && steps.fresh ? 0 : decay, this.memoryThreshold, this.memorySoftness, drift);
       }
       this.foamDone = steps.last;
       fade = steps.fade;
@@ -295,6 +303,23 @@ export class FftWaveView implements WaveModelView {
     this.gpu.update(time);
     this.foam.pack(fade);
     this.bindFoam();
+  }
+
+  /** The side of one texel of the remembering cascade's tile, m. */
+  private memoryTexel(): number {
+    const { sea, cascades } = this.model.ocean.setup;
+    return cascades[REMEMBERING_CASCADE].size / sea.fftSize;
+  }
+
+  readFoamMemory(): { n: number; texel: number; data: Float32Array } {
+    return { n: this.model.ocean.setup.sea.fftSize, texel: this.memoryTexel(), data: this.foam.readMemory() };
+  }
+
+  setFoamDrift(on: boolean): void {
+    this.foamDrifts = on;
+    this.foamDrift = on ? foamDriftVelocity(this.model.ocean.setup.sea) : [0, 0];
+    this.foamDone = null;
+    this.time = Number.NaN;
   }
 
   /**
@@ -310,7 +335,7 @@ export class FftWaveView implements WaveModelView {
     sync();
     const timings: PassTiming[] = [{ name: 'fft', ms: performance.now() - start }];
     start = performance.now();
-    this.foam.remember(foamRemaining(FOAM_STEP_SECONDS, this.foamFade), this.memoryThreshold, this.memorySoftness, false);
+    this.foam.remember(foamRemaining(FOAM_STEP_SECONDS, this.foamFade), this.memoryThreshold, this.memorySoftness, [0, 0], false);
     const fade = this.foamEnabled && this.foamDone !== null ? foamSteps(this.foamDone, this.time, this.foamFade).fade : 0;
     this.foam.pack(fade);
     sync();

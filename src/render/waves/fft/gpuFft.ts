@@ -136,6 +136,11 @@ export class GpuInverseFft {
     this.renderer.autoClear = autoClear;
   }
 
+  /** Reads an n × n float target back into `rgba` (4 n² values), for diagnostics. */
+  read(target: WebGLRenderTarget, rgba: Float32Array): void {
+    this.renderer.readRenderTargetPixels(target, 0, 0, this.n, this.n, rgba);
+  }
+
   /** Inverse-transforms the two textures (rows, then columns) into `target`. */
   transform(input0: Texture, input1: Texture, target: WebGLRenderTarget): void {
     let source: [Texture, Texture] = [input0, input1];
