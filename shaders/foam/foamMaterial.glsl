@@ -48,10 +48,13 @@ vec3 foamOver(vec3 color, float amount, vec3 n, vec3 v, vec2 p) {
   vec2 slopeUv = (t.gb - 0.5) * 64.0;
   vec2 slope = (slopeUv.x / (FOAM_TILE * FOAM_STRETCH)) * along + (slopeUv.y / FOAM_TILE) * across;
   float laced = smoothstep(1.0 - amount - FOAM_FEATHER, 1.0 - amount + FOAM_FEATHER, density);
-  // Where a pixel covers many bubbles the mipmaps average the lace away: there the foam's
-  // share of the pixel is its thickness itself, so far foam keeps its coverage.
+  // Where a pixel covers many bubbles the mipmaps average them away, but not the lace's
+  // coarser patches and streaks: there the foam's share of the pixel is its thickness, shaded
+  // by the density the mipmaps give over the pixel against the whole tile's (the last, 1 × 1
+  // level), so far foam keeps its coverage on average and its streaks where they are.
   float texels = length(fwidth(p)) * 512.0 / FOAM_TILE;
-  float cover = mix(laced, amount, smoothstep(1.0, 6.0, log2(max(texels, 1.0))));
+  float meanDensity = textureLod(uFoamDetail, vec2(0.5), 9.0).r;
+  float cover = mix(laced, clamp(amount * density / meanDensity, 0.0, 1.0), smoothstep(1.0, 6.0, log2(max(texels, 1.0))));
   vec3 nf = normalize(n - FOAM_RELIEF * vec3(slope.x, 0.0, slope.y));
   float sunUp = step(0.0, uSunDirection.y);
   vec3 sunLight = uSunColor * SUN_IRRADIANCE * max(dot(nf, uSunDirection), 0.0) * sunUp;

@@ -26,6 +26,8 @@ export interface ShadingFixes {
   tileCopies: boolean;
   /** The foam left behind carried by the surface's wind drift (src/sim/waves/fft/foamDrift.ts); off: it stays where it was laid. */
   foamDrift: boolean;
+  /** Far foam shaded by the lace's density where the pixel covers many bubbles (shaders/foam/foamMaterial.glsl foamOver), not by its thickness alone. */
+  farLace: boolean;
   /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
   subsurfaceCrests: boolean;
   /** The water's colour as its optics give it; off: 3 % brighter, the smallest change the reference comparison must catch. */
@@ -88,6 +90,8 @@ const TILED_FOAM: ShaderFault = {
 };
 /** Every FFT tile read once at every distance: its repeat shows from high above. */
 const SINGLE_TILES: ShaderFault = { name: 'single-tiles', fragment: [['float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);', 'float far = 0.0;']] };
+/** Far foam's share of a pixel its thickness alone, as smooth grey patches: the lace's patches and streaks averaged away. */
+const SMOOTH_FAR_FOAM: ShaderFault = { name: 'smooth-far-foam', fragment: [['clamp(amount * density / meanDensity, 0.0, 1.0)', 'amount']] };
 /** The subsurface glow on every pixel alike, crest or trough. */
 const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
 /** The water's own colour 3 % brighter. */
@@ -133,6 +137,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(SOLID_KEPT_FOAM, fixes.foamCoverage);
   toggle(TILED_FOAM, fixes.foamBreakup);
   toggle(SINGLE_TILES, waves === 'fft' ? fixes.tileCopies : true);
+  toggle(SMOOTH_FAR_FOAM, fixes.farLace);
   toggle(GLOW_EVERYWHERE, fixes.subsurfaceCrests);
   toggle(BRIGHTER_WATER, fixes.exactWaterColour);
   const ocean = view.ocean;
