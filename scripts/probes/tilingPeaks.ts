@@ -6,10 +6,10 @@
 // "foam": pixels brighter than 190; "picture": the luminance itself; "detail": the luminance less
 // its mean over a box 2·HIGHPASS_METRES wide (default 40 m), so the glint's and the sky's broad
 // gradients drop out and what is left is the waves' own pattern.
-import { PNG } from 'pngjs';
 import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
 import { autocorrelation, peakBeyond, type Autocorrelation } from '../../tests/support/autocorrelation';
 import { highPass } from '../../tests/support/highPass';
+import { pngLuminances } from '../../tests/support/luminance';
 
 const [altitude = '1500', wind = '10', measure = 'foam', fault = '', minLag = '50'] = process.argv.slice(2);
 const width = 640;
@@ -25,12 +25,8 @@ try {
       window.oceano.pause();
       window.oceano.setTime(time);
     }, t);
-    const image = PNG.sync.read(await canvasPng(page));
-    const values = new Float64Array(width * height);
-    for (let i = 0; i < values.length; i++) {
-      const luma = 0.2126 * image.data[4 * i] + 0.7152 * image.data[4 * i + 1] + 0.0722 * image.data[4 * i + 2];
-      values[i] = measure === 'foam' ? (luma > 190 ? 1 : 0) : luma;
-    }
+    const luminances = pngLuminances(await canvasPng(page));
+    const values = measure === 'foam' ? luminances.map((luma) => (luma > 190 ? 1 : 0)) : luminances;
     if (measure === 'detail') highPass(values, width, height, Math.round(Number(process.env.HIGHPASS_METRES ?? 40) / metresPerPixel));
     correlations.push(autocorrelation(values, width, height));
   }

@@ -8,6 +8,7 @@
 // sheen from a rough microfacet lobe, off-white (sea foam reflects less red than blue: Frouin,
 // Schwindling & Deschamps 1996, J. Geophys. Res. 101(C6)).
 uniform sampler2D uFoamDetail;
+uniform float uFoamDensityMean; // the detail tile's mean density, read back once it is drawn (foamDetail.ts)
 uniform vec2 uWindDirection;   // unit (x, z) the wind blows towards
 uniform vec2 uRenderOrigin;    // the render origin (ocean.vert): only its place within a tile matters
 
@@ -50,11 +51,10 @@ vec3 foamOver(vec3 color, float amount, vec3 n, vec3 v, vec2 p) {
   float laced = smoothstep(1.0 - amount - FOAM_FEATHER, 1.0 - amount + FOAM_FEATHER, density);
   // Where a pixel covers many bubbles the mipmaps average them away, but not the lace's
   // coarser patches and streaks: there the foam's share of the pixel is its thickness, shaded
-  // by the density the mipmaps give over the pixel against the whole tile's (the last, 1 × 1
-  // level), so far foam keeps its coverage on average and its streaks where they are.
+  // by the density the mipmaps give over the pixel against the whole tile's mean, so far foam
+  // keeps its coverage on average and its streaks where they are.
   float texels = length(fwidth(p)) * 512.0 / FOAM_TILE;
-  float meanDensity = textureLod(uFoamDetail, vec2(0.5), 9.0).r;
-  float cover = mix(laced, clamp(amount * density / meanDensity, 0.0, 1.0), smoothstep(1.0, 6.0, log2(max(texels, 1.0))));
+  float cover = mix(laced, clamp(amount * density / uFoamDensityMean, 0.0, 1.0), smoothstep(1.0, 6.0, log2(max(texels, 1.0))));
   vec3 nf = normalize(n - FOAM_RELIEF * vec3(slope.x, 0.0, slope.y));
   float sunUp = step(0.0, uSunDirection.y);
   vec3 sunLight = uSunColor * SUN_IRRADIANCE * max(dot(nf, uSunDirection), 0.0) * sunUp;

@@ -91,7 +91,7 @@ const TILED_FOAM: ShaderFault = {
 /** Every FFT tile read once at every distance: its repeat shows from high above. */
 const SINGLE_TILES: ShaderFault = { name: 'single-tiles', fragment: [['float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);', 'float far = 0.0;']] };
 /** Far foam's share of a pixel its thickness alone, as smooth grey patches: the lace's patches and streaks averaged away. */
-const SMOOTH_FAR_FOAM: ShaderFault = { name: 'smooth-far-foam', fragment: [['clamp(amount * density / meanDensity, 0.0, 1.0)', 'amount']] };
+const SMOOTH_FAR_FOAM: ShaderFault = { name: 'smooth-far-foam', fragment: [['clamp(amount * density / uFoamDensityMean, 0.0, 1.0)', 'amount']] };
 /** The subsurface glow on every pixel alike, crest or trough. */
 const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
 /** The water's own colour 3 % brighter. */

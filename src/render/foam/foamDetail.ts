@@ -17,6 +17,8 @@ const SIZE = 512;
  */
 export class FoamDetail {
   private readonly target: WebGLRenderTarget;
+  /** The tile's mean density (r), read back once it is drawn: far foam is shaded against it (foamOver). */
+  meanDensity = 0.5;
 
   constructor(renderer: WebGLRenderer) {
     this.target = new WebGLRenderTarget(SIZE, SIZE, {
@@ -42,9 +44,14 @@ export class FoamDetail {
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(this.target);
     quad.render(renderer);
+    const texels = new Uint8Array(4 * SIZE * SIZE);
+    renderer.readRenderTargetPixels(this.target, 0, 0, SIZE, SIZE, texels);
     renderer.setRenderTarget(previous);
     quad.dispose();
     material.dispose();
+    let sum = 0;
+    for (let i = 0; i < texels.length; i += 4) sum += texels[i];
+    this.meanDensity = Math.max(sum / (255 * SIZE * SIZE), 1 / 255);
   }
 
   dispose(): void {

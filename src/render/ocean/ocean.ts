@@ -328,6 +328,7 @@ export class Ocean extends Object3D {
       return;
     }
     this.foamUniforms.uFoamDetail.value = on && this.foamDetail ? this.foamDetail.texture : null;
+    this.foamUniforms.uFoamDensityMean.value = this.foamDetail?.meanDensity ?? 0.5;
   }
 
   /**

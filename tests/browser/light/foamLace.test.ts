@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer-core';
 import { canvasPng, openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { highPass } from '../../support/highPass';
+import { pngLuminances } from '../../support/luminance';
 
 /**
  * Foam seen from 30 m straight down (15 m/s, the wind towards +x) keeps its lace: a pixel there
@@ -28,13 +28,6 @@ const PATCH_BOX = Math.round(0.55 / METRES_PER_PIXEL);
 const PATCH_LEVELS = 6;
 const THIN_LEVELS = 40;
 
-function luminances(png: Buffer): Float64Array {
-  const image = PNG.sync.read(png);
-  const values = new Float64Array(image.width * image.height);
-  for (let i = 0; i < values.length; i++) values[i] = 0.2126 * image.data[4 * i] + 0.7152 * image.data[4 * i + 1] + 0.0722 * image.data[4 * i + 2];
-  return values;
-}
-
 async function frameAt(page: Page, time: number, foam: boolean): Promise<Float64Array> {
   await page.evaluate(
     (t, on) => {
@@ -45,7 +38,7 @@ async function frameAt(page: Page, time: number, foam: boolean): Promise<Float64
     time,
     foam,
   );
-  return luminances(await canvasPng(page));
+  return pngLuminances(await canvasPng(page));
 }
 
 /** The lace: the foam's light finer than the box over its mean, inside the patches; and how many pixels those are. */

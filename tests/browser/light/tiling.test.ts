@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { TILING_VIEW, tilingMetresPerPixel, tilingQuery } from './lightViews';
 import { autocorrelation, peakBeyond, type Autocorrelation } from '../../support/autocorrelation';
 import { highPass } from '../../support/highPass';
+import { pngLuminances } from '../../support/luminance';
 
 /**
  * No tile shows in the foam: seen from 400 m straight above, the foam mask (pixels brighter
@@ -25,19 +25,12 @@ const LIMIT = 0.05;
 const DETAIL_BOX_METRES = 40;
 const PICTURE_MIN_LAG_METRES = 100;
 
-function luminances(png: Buffer): Float64Array {
-  const image = PNG.sync.read(png);
-  const values = new Float64Array(image.width * image.height);
-  for (let i = 0; i < values.length; i++) values[i] = 0.2126 * image.data[4 * i] + 0.7152 * image.data[4 * i + 1] + 0.0722 * image.data[4 * i + 2];
-  return values;
-}
-
 function foamMask(png: Buffer): Float64Array {
-  return luminances(png).map((luminance) => (luminance > MASK_LEVEL ? 1 : 0));
+  return pngLuminances(png).map((luminance) => (luminance > MASK_LEVEL ? 1 : 0));
 }
 
 function pictureDetail(png: Buffer): Float64Array {
-  const values = luminances(png);
+  const values = pngLuminances(png);
   highPass(values, TILING_VIEW.width, TILING_VIEW.height, Math.round(DETAIL_BOX_METRES / tilingMetresPerPixel()));
   return values;
 }
