@@ -228,9 +228,7 @@ export class FftWaveView implements WaveModelView {
       this.foam = new FftFoam(this.gpu);
       this.bindTextures();
     }
-    const drift = this.foamDrifts ? foamDriftVelocity(sea) : ([0, 0] as [number, number]);
-    const driftChanged = drift[0] !== this.foamDrift[0] || drift[1] !== this.foamDrift[1];
-    this.foamDrift = drift;
+    const driftChanged = this.placeFoamDrift();
     // Other thresholds, another fade or another drift make other foam: rebuilt from nothing at the next update.
     if (rebuilt || changed || foamToggled || fadeChanged || driftChanged) {
       this.foamDone = null;
@@ -290,9 +288,10 @@ export class FftWaveView implements WaveModelView {
     if (this.foamEnabled) {
       const steps = foamSteps(this.foamDone, time, this.foamFade);
       const decay = foamRemaining(FOAM_STEP_SECONDS, this.foamFade);
+      const texel = this.memoryTexel();
       for (let k = steps.first; k <= steps.last; k++) {
         this.gpu.update(k * FOAM_STEP_SECONDS, REMEMBERING_CASCADE);
-        const drift = foamDriftStep(this.foamDrift, this.memoryTexel(), k);
+        const drift = foamDriftStep(this.foamDrift, texel, k);
         this.foam.remember(k === steps.first && steps.fresh ? 0 : decay, this.memoryThreshold, this.memorySoftness, drift);
       }
       this.foamDone = steps.last;
@@ -317,9 +316,18 @@ export class FftWaveView implements WaveModelView {
 
   setFoamDrift(on: boolean): void {
     this.foamDrifts = on;
-    this.foamDrift = on ? foamDriftVelocity(this.model.ocean.setup.sea) : [0, 0];
-    this.foamDone = null;
-    this.time = Number.NaN;
+    if (this.placeFoamDrift()) {
+      this.foamDone = null;
+      this.time = Number.NaN;
+    }
+  }
+
+  /** The remembered foam's drift for the current sea (none while the control turns it off); whether it changed. */
+  private placeFoamDrift(): boolean {
+    const drift = this.foamDrifts ? foamDriftVelocity(this.model.ocean.setup.sea) : ([0, 0] as [number, number]);
+    const changed = drift[0] !== this.foamDrift[0] || drift[1] !== this.foamDrift[1];
+    this.foamDrift = drift;
+    return changed;
   }
 
   /**
