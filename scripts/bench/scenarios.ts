@@ -63,6 +63,9 @@ export const SCENARIOS: readonly BenchScenario[] = [
   { name: 'FFT view, sharp sky (skyBlur=0)', query: 't=10&waves=fft&skyBlur=0', stepSeconds: 1 / 60 },
   { name: 'FFT view, no wave groups (waveGroups=0)', query: 't=10&waves=fft&waveGroups=0', stepSeconds: 1 / 60 },
   { name: 'default view, sharp sky (skyBlur=0)', query: 't=10&skyBlur=0' },
+  // The windrows are compiled in only from Beaufort 7 (13.9 m/s): the gale pays for them, the FFT view does not.
+  { name: 'gale (preset=gale, clock running)', query: 't=10&preset=gale', stepSeconds: 1 / 60 },
+  { name: 'gale, no windrows (windrows=0)', query: 't=10&preset=gale&windrows=0', stepSeconds: 1 / 60 },
   // The three models side by side against the dearest of them alone, same camera
   // and wind, both with the clock running (the FFT passes run in both).
   // Each strip's render is timed apart ('scene <model> strip'), to see where a split frame's time goes.
@@ -99,6 +102,7 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['FFT view / sharp sky', 'FFT view (waves=fft, clock running)', 'FFT view, sharp sky (skyBlur=0)', null],
   ['FFT view / no wave groups', 'FFT view (waves=fft, clock running)', 'FFT view, no wave groups (waveGroups=0)', null],
   ['default / sharp sky', 'default view', 'default view, sharp sky (skyBlur=0)', null],
+  ['gale / no windrows', 'gale (preset=gale, clock running)', 'gale, no windrows (windrows=0)', null],
   // A split view costs no more than its dearest model alone.
   ['compare-models / fft alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, fft alone', 1],
   ['compare-models / gerstner alone', 'compare-models (seed | gerstner | fft)', 'compare-models camera, gerstner alone', 1],

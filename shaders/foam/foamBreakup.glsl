@@ -4,15 +4,16 @@
 // does not repeat within 2³² cells. Cells an eighth of the peak wavelength wide, carried
 // downwind at the group velocity. Where the render origin falls on each octave's lattice
 // arrives split in double precision into whole cells and the rest (breakupLattice).
+#include <oceano_constants>
 uniform float uFoamBreakupScale;        // 1 / cell, 1/m
 uniform ivec4 uFoamBreakupCells;        // whole cells of the render origin: first octave (xy), second (zw)
 uniform vec4 uFoamBreakupOffset;        // the rest, in cells: first octave (xy), second (zw)
 uniform vec2 uFoamBreakupOrigin;        // the render origin, m (for an absolute point only)
 uniform int uFoamBreakupSeed;           // the user's seed mixed with the field's stream
 
-#ifdef OCEAN_WAVE_GROUPS
-float foamBreakupHash(ivec2 cell) {
-  uint h = uint(cell.x) * 0x27d4eb2du ^ uint(cell.y) * 0x165667b1u ^ uint(uFoamBreakupSeed) * 0x9e3779b1u;
+// The seed's integer hash of a lattice cell, in [−1, 1) (integerNoise's twin).
+float foamLatticeHash(ivec2 cell, int seed) {
+  uint h = uint(cell.x) * 0x27d4eb2du ^ uint(cell.y) * 0x165667b1u ^ uint(seed) * 0x9e3779b1u;
   h ^= h >> 16;
   h *= 0x85ebca6bu;
   h ^= h >> 13;
@@ -21,25 +22,29 @@ float foamBreakupHash(ivec2 cell) {
   return float(h) / 2147483648.0 - 1.0;
 }
 
-float foamBreakupOctave(vec2 u, ivec2 cells) {
+// One octave of value noise at lattice coordinates `whole cells + u` (src/sim/noise/valueNoise.ts
+// is the twin), in [−1, 1): the cells' hashes blended by the quintic fade. Also read by the
+// windrows (shaders/foam/foamWindrows.glsl).
+float foamValueNoise(vec2 u, ivec2 cells, int seed) {
   vec2 whole = floor(u);
   vec2 w = u - whole;
   w = w * w * w * (w * (w * 6.0 - 15.0) + 10.0);
   ivec2 cell = ivec2(whole) + cells;
-  float a = foamBreakupHash(cell);
-  float b = foamBreakupHash(cell + ivec2(1, 0));
-  float c = foamBreakupHash(cell + ivec2(0, 1));
-  float d = foamBreakupHash(cell + ivec2(1, 1));
+  float a = foamLatticeHash(cell, seed);
+  float b = foamLatticeHash(cell + ivec2(1, 0), seed);
+  float c = foamLatticeHash(cell + ivec2(0, 1), seed);
+  float d = foamLatticeHash(cell + ivec2(1, 1), seed);
   return mix(mix(a, b, w.x), mix(c, d, w.x), w.y);
 }
 
+#ifdef OCEAN_WAVE_GROUPS
 // The field's two octaves at a grid point relative to the render origin (near) or absolute,
 // each in [−1, 1): the second on a lattice turned by 30° and 2.31 times finer (BREAKUP_SECOND_OCTAVE).
 vec2 foamBreakupOctaves(vec2 p, bool near) {
   vec2 u = (near ? p : p - uFoamBreakupOrigin) * uFoamBreakupScale;
   const mat2 TURN = mat2(0.8660254, 0.5, -0.5, 0.8660254) * 2.31;
-  float first = foamBreakupOctave(u + uFoamBreakupOffset.xy, uFoamBreakupCells.xy);
-  float second = foamBreakupOctave(TURN * u + uFoamBreakupOffset.zw, uFoamBreakupCells.zw);
+  float first = foamValueNoise(u + uFoamBreakupOffset.xy, uFoamBreakupCells.xy, uFoamBreakupSeed);
+  float second = foamValueNoise(TURN * u + uFoamBreakupOffset.zw, uFoamBreakupCells.zw, uFoamBreakupSeed);
   return vec2(first, second);
 }
 
@@ -60,7 +65,8 @@ float foamBreakupOther(vec2 octaves) {
 }
 
 // The share of the foam left behind that lies where the group lets it: all of it in a group
-// (the field below −0.6), none between groups (above 0.2).
+// (the field below −0.6), none between groups (above 0.2); FOAM_GROUP_SHARE_MEAN on average
+// (foamGroupShare in src/sim/waves/fft/foamBreakup.ts is the twin).
 float foamGroupShare(float breakup) {
   return smoothstep(0.2, -0.6, breakup);
 }
@@ -72,8 +78,7 @@ float foamBreakup(vec2 p, bool near) {
   return 0.0;
 }
 
-const float FOAM_SHARE_WITHOUT_GROUPS = 0.31;
 float foamGroupShare(float breakup) {
-  return FOAM_SHARE_WITHOUT_GROUPS;
+  return FOAM_GROUP_SHARE_MEAN;
 }
 #endif

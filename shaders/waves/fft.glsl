@@ -326,7 +326,8 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
 // thinning lace outside the white (shaders/foam/foamMaterial.glsl).
 // Left behind: what the smallest cascade remembers (shaders/fftFoamMemory.frag), a potential
 // fading as e^{−t/τ} in simulation time, thin foam (a lace, shaders/foam/foamMaterial.glsl)
-// thinning out as it fades, and only where the breakup field lets the group's foam lie. Seen
+// thinning out as it fades, only where the breakup field lets the group's foam lie, or in a
+// strong wind where the windrows sweep it, in streaks along the wind (shaders/foam/foamWindrows.glsl). Seen
 // from 150 m above, the picture's white share is within 30 % of Monahan's coverage at 10, 15
 // and 20 m/s (tests/browser/light/foam.test.ts).
 const float FOAM_KEPT_THICKNESS = 0.7;
@@ -337,7 +338,7 @@ float fftFoamAt(vec2 p, bool near) {
   float measure = fftBreaking(jxx, d.z, d.w) + uFoamBreakupStrength * breakup;
   float now = smoothstep(uFoamThreshold + 2.25 * uFoamSoftness, uFoamThreshold - 1.75 * uFoamSoftness, measure);
   float potential = fftFoamPotential(p, near);
-  float kept = FOAM_KEPT_THICKNESS * smoothstep(0.5, 2.5, potential) * foamGroupShare(breakup);
+  float kept = FOAM_KEPT_THICKNESS * smoothstep(0.5, 2.5, potential) * foamWindrowShare(p, near, foamGroupShare(breakup));
   return uFoamEnabled * clamp(max(now, kept), 0.0, 1.0);
 }
 

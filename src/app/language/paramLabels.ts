@@ -26,6 +26,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   foamFade: 'Decaimiento de la espuma τ',
   foamTexture: 'Textura de la espuma',
   waveGroups: 'Grupos de olas',
+  windrows: 'Hileras de espuma',
   subsurface: 'Brillo bajo la superficie',
   visibility: 'Visibilidad (calima)',
   normalsCompare: 'Comparar normales de pendiente | fabricadas',

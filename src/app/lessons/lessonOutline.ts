@@ -58,7 +58,7 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'fft-calm': { section: 'spectral', controls: ['windSpeed', 'spectrum', 'waves'] },
   'fft-fresh-breeze': { section: 'spectral', controls: ['windSpeed', 'windDirection', 'spreading', 'depth'] },
   'fft-short-fetch': { section: 'spectral', controls: ['fetch', 'windSpeed', 'spectrum'] },
-  'fft-gale': { section: 'spectral', controls: ['windSpeed', 'choppiness', 'foamFade', 'foamTexture', 'waveGroups'] },
+  'fft-gale': { section: 'spectral', controls: ['windSpeed', 'choppiness', 'foamFade', 'waveGroups', 'windrows'] },
   'fft-normals': { section: 'spectral', controls: ['normalsCompare', 'shading'] },
   'gerstner-gentle': { section: 'gerstner', controls: ['gerstnerSteepness', 'gerstnerCount'] },
   'gerstner-steepness': { section: 'gerstner', controls: ['gerstnerSteepness', 'gerstnerCount'] },

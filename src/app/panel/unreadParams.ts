@@ -8,13 +8,13 @@ type WaveModelName = OceanParams['waves'];
 const READ_BY: { keys: ParamKey[]; models: WaveModelName[]; reason: TeachingWordId }[] = [
   { keys: ['swellAmplitude', 'swellFrequency', 'rippleStrength', 'rippleBlendSpeed'], models: ['seed'], reason: 'unusedBySpectral' },
   { keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel'], models: ['fft', 'gerstner'], reason: 'unusedBySeed' },
-  { keys: ['choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'waveGroups', 'normalsCompare'], models: ['fft'], reason: 'unusedByNonFft' },
+  { keys: ['choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'waveGroups', 'windrows', 'normalsCompare'], models: ['fft'], reason: 'unusedByNonFft' },
   { keys: ['gerstnerCount', 'gerstnerSteepness'], models: ['gerstner'], reason: 'unusedByNonGerstner' },
 ];
 
 /** The parameters read only while a switch is on: a foam bias with no foam, the sky's blur on a mirror. */
 const READ_WHILE_ON: { keys: ParamKey[]; switchKey: SwitchKey; reason: TeachingWordId }[] = [
-  { keys: ['foamThreshold', 'foamFade', 'waveGroups'], switchKey: 'foam', reason: 'unusedWithoutFoam' },
+  { keys: ['foamThreshold', 'foamFade', 'waveGroups', 'windrows'], switchKey: 'foam', reason: 'unusedWithoutFoam' },
   { keys: ['skyBlur'], switchKey: 'seaRoughness', reason: 'unusedWithoutRoughness' },
   { keys: ['waterColor'], switchKey: 'waterColorPicked', reason: 'unusedWithoutPickedColor' },
   { keys: ['causticsIntensity'], switchKey: 'caustics', reason: 'unusedWithoutCaustics' },

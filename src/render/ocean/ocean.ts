@@ -2,6 +2,7 @@ import { Color, Object3D, Vector3, type CubeTexture, type DataTexture, type IUni
 import { defaultParams, validateParams, type OceanParams, type ParamKey } from '../../sim/params/params';
 import { paramsChanged } from '../../sim/params/paramChanges';
 import type { LiveWaveModel, SurfaceSample, WavesChoice } from '../../sim/waves/waveModel';
+import { windrowStrength } from '../../sim/waves/fft/windrows';
 import { COMPARE_OFF, compareModelNames } from '../../sim/compare/compareLayout';
 import { AIR_IOR, fresnelReflectance, fresnelTable, WATER_IOR } from '../../sim/optics/fresnel';
 import { SUN_LIGHT_COLOR, sunDirection } from '../../sim/optics/sun';
@@ -38,7 +39,7 @@ export interface OceanOptions {
 }
 
 /** The parameters an ocean material shows (every model's material of a comparison alike). */
-export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'skyBlur', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface', 'waveGroups', 'visibility'];
+export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'skyBlur', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface', 'waveGroups', 'windrows', 'windSpeed', 'visibility'];
 
 /**
  * The ocean as a three.js object: add it to your scene, call `update(time, camera)` before
@@ -492,5 +493,7 @@ export function applyLook(material: OceanMaterial, params: OceanParams): void {
   material.setLodColors(params.lodColors);
   material.setSubsurface(params.subsurface);
   material.setWaveGroups(params.waveGroups);
+  // Only in a wind strong enough to draw them: below Beaufort 7 the field would cost its hashes for nothing.
+  material.setWindrows(params.windrows && windrowStrength(params.windSpeed) > 0);
   material.setVisibility(params.visibility);
 }

@@ -182,6 +182,11 @@ export class OceanMaterial extends ShaderMaterial {
     this.setDefine('OCEAN_WAVE_GROUPS', enabled);
   }
 
+  /** The spectral sea's foam left behind gathered into streaks along a strong wind (shaders/foam/foamWindrows.glsl), compiled in while on. */
+  setWindrows(enabled: boolean): void {
+    this.setDefine('OCEAN_WINDROWS', enabled);
+  }
+
   /** waves=fft: slope normals on the left half of the screen, fabricated ones on the right. */
   setNormalsCompare(enabled: boolean): void {
     this.setDefine('OCEAN_NORMALS_COMPARE', enabled);

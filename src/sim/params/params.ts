@@ -70,6 +70,8 @@ export const paramDefs = {
   foamTexture: { kind: 'boolean', default: true, label: 'Foam texture' },
   // Wave groups: a field that never repeats decides where waves break and, far away, which copy of the shorter tiles shows (src/sim/waves/fft/foamBreakup.ts, shaders/waves/fft.glsl); off, the lesson shows the tiles' repeat.
   waveGroups: { kind: 'boolean', default: true, label: 'Wave groups' },
+  // Windrows: from Beaufort 7 (13.9 m/s) the foam left behind lies in streaks along the wind (src/sim/waves/fft/windrows.ts); off, for the lesson, it lies where it was laid.
+  windrows: { kind: 'boolean', default: true, label: 'Windrows' },
   // Thin sunlit crests glowing green when the sun is behind them (shaders/subsurface.glsl).
   subsurface: { kind: 'boolean', default: true, label: 'Subsurface glow' },
   seed: { kind: 'integer', default: 1, min: 0, max: 2147483647, unit: '', label: 'Noise seed' },

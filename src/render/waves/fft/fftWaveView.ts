@@ -2,11 +2,13 @@ import { Vector2, Vector3, Vector4, type IUniform, type Texture, type WebGLRende
 import fftChunk from '../../../../shaders/waves/fft.glsl?raw';
 import breakingChunk from '../../../../shaders/waves/fftBreaking.glsl?raw';
 import breakupChunk from '../../../../shaders/foam/foamBreakup.glsl?raw';
+import windrowsChunk from '../../../../shaders/foam/foamWindrows.glsl?raw';
 import type { OceanParams } from '../../../sim/params/params';
 import type { FftWaveModel } from '../../../sim/waves/fft/fftWaveModel';
 import { cascadeSpread } from '../../../sim/waves/spectra/spectralBounds';
 import { foamRemaining, whitecapCoverage } from '../../../sim/waves/fft/whitecaps';
 import { breakingSpread, breakingThreshold, jacobianCovariance } from '../../../sim/waves/fft/breaking';
+import { WINDROW_STREAM, windrowLattice, windrowStrength } from '../../../sim/waves/fft/windrows';
 import { BREAKUP_STREAM, BREAKUP_STRENGTH, breakupLattice, breakupNoise, foamBreakup, type FoamBreakup } from '../../../sim/waves/fft/foamBreakup';
 import { FOAM_STEP_SECONDS, foamSteps } from '../../../sim/waves/fft/foamMemory';
 import { foamDriftStep, foamDriftVelocity } from '../../../sim/waves/fft/foamDrift';
@@ -48,7 +50,8 @@ type FftUniforms = Record<
   | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
   | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta'
   | 'uFftSlopeVariance' | 'uFftLogLongestWave' | 'uFftPerLogBand' | 'uSeaSlopeVariance'
-  | 'uFoamBreakupScale' | 'uFoamBreakupCells' | 'uFoamBreakupOffset' | 'uFoamBreakupOrigin' | 'uFoamBreakupSeed' | 'uFoamBreakupStrength',
+  | 'uFoamBreakupScale' | 'uFoamBreakupCells' | 'uFoamBreakupOffset' | 'uFoamBreakupOrigin' | 'uFoamBreakupSeed' | 'uFoamBreakupStrength'
+  | 'uWindrowAxes' | 'uWindrowCells' | 'uWindrowOffset' | 'uWindrowSeed' | 'uWindrowStrength',
   IUniform
 >;
 
@@ -95,7 +98,7 @@ export class FftWaveView implements WaveModelView {
     // Float textures filterable: the ocean's pixels read normals and foam through the texture
     // unit's bilinear filter (see shaders/waves/fft.glsl); otherwise by hand, as the vertices.
     this.filtered = renderer.extensions.has('OES_texture_float_linear');
-    this.chunk = (this.filtered ? '#define FFT_FILTERED_FIELDS\n' : '') + [breakingChunk, breakupChunk, fftChunk].join('\n');
+    this.chunk = (this.filtered ? '#define FFT_FILTERED_FIELDS\n' : '') + [breakingChunk, breakupChunk, windrowsChunk, fftChunk].join('\n');
     this.breakup = foamBreakup(model.ocean.setup.sea);
     this.uniforms = {
       uFftDisplacement0: { value: null },
@@ -119,6 +122,11 @@ export class FftWaveView implements WaveModelView {
       uFoamBreakupOrigin: { value: new Vector2() },
       uFoamBreakupSeed: { value: 0 },
       uFoamBreakupStrength: { value: 0 },
+      uWindrowAxes: { value: new Vector4() },
+      uWindrowCells: { value: new Vector2() },
+      uWindrowOffset: { value: new Vector2() },
+      uWindrowSeed: { value: 0 },
+      uWindrowStrength: { value: 0 },
       uFabricatedDelta: { value: FABRICATED_DELTA },
       uFftSlopeVariance: { value: new Vector3() },
       uFftLogLongestWave: { value: new Vector3(Math.LN2, Math.LN2, Math.LN2) },
@@ -169,16 +177,20 @@ export class FftWaveView implements WaveModelView {
     if (x === this.origin[0] && z === this.origin[1]) return;
     this.origin = [x, z];
     this.placeNearOffsets();
-    this.placeBreakup();
+    this.placeFoamLattices();
   }
 
-  /** Where the render origin and the world's origin fall on the breakup field's drifting lattice at this time. */
-  private placeBreakup(): void {
+  /** Where the render origin falls on the foam's drifting lattices at this time: the breakup field's and the windrows'. */
+  private placeFoamLattices(): void {
     const time = Number.isNaN(this.time) ? 0 : this.time;
     const lattice = breakupLattice(this.breakup, this.origin[0], this.origin[1], time);
     (this.uniforms.uFoamBreakupCells.value as Vector4).fromArray(lattice.cells);
     (this.uniforms.uFoamBreakupOffset.value as Vector4).fromArray(lattice.offset);
     (this.uniforms.uFoamBreakupOrigin.value as Vector2).fromArray(this.origin);
+    const rows = windrowLattice(this.model.ocean.setup.sea, this.origin[0], this.origin[1], time);
+    (this.uniforms.uWindrowAxes.value as Vector4).fromArray(rows.axes);
+    (this.uniforms.uWindrowCells.value as Vector2).fromArray(rows.cells);
+    (this.uniforms.uWindrowOffset.value as Vector2).fromArray(rows.offset);
   }
 
   /** Where the render origin falls in each cascade's tile, in texels (src/sim/waves/originPhases.ts). */
@@ -212,7 +224,9 @@ export class FftWaveView implements WaveModelView {
       this.baseThresholds = this.foamThresholds();
       this.uniforms.uFoamBreakupScale.value = 1 / this.breakup.cell;
       this.uniforms.uFoamBreakupSeed.value = (sea.seed ^ BREAKUP_STREAM) | 0;
-      this.placeBreakup();
+      this.uniforms.uWindrowSeed.value = (sea.seed ^ WINDROW_STREAM) | 0;
+      this.uniforms.uWindrowStrength.value = windrowStrength(sea.windSpeed);
+      this.placeFoamLattices();
     }
     const base = this.baseThresholds;
     const memoryThreshold = base.memory + params.foamThreshold;
@@ -283,7 +297,7 @@ export class FftWaveView implements WaveModelView {
     if (Object.is(time, this.time)) return;
     this.time = time;
     this.model.prefetch(time);
-    this.placeBreakup();
+    this.placeFoamLattices();
     let fade = 0;
     if (this.foamEnabled) {
       const steps = foamSteps(this.foamDone, time, this.foamFade);

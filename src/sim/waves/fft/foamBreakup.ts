@@ -1,4 +1,4 @@
-import { integerNoise } from '../../noise/integerHash';
+import { valueNoise } from '../../noise/valueNoise';
 import { groupVelocity, waveNumber } from '../dispersion';
 import { frequencySpectrum, peakWavelength } from '../spectra/waveSpectrum';
 import { windVector, type SeaState } from '../spectra/seaState';
@@ -33,25 +33,6 @@ export function foamBreakup(sea: SeaState): FoamBreakup {
   const speed = groupVelocity(waveNumber(frequencySpectrum(sea).peak, sea.depth), sea.depth);
   const [wx, wz] = windVector(sea.windDirection);
   return { cell, velocity: [speed * wx, speed * wz] };
-}
-
-function quintic(t: number): number {
-  return t * t * t * (t * (t * 6 - 15) + 10);
-}
-
-/** One octave: value noise on the integer lattice of (u, v), in [−1, 1). */
-function valueNoise(u: number, v: number, seed: number): number {
-  const i = Math.floor(u);
-  const j = Math.floor(v);
-  const wu = quintic(u - i);
-  const wv = quintic(v - j);
-  const a = integerNoise(i, j, seed);
-  const b = integerNoise(i + 1, j, seed);
-  const c = integerNoise(i, j + 1, seed);
-  const d = integerNoise(i + 1, j + 1, seed);
-  const top = a + (b - a) * wu;
-  const bottom = c + (d - c) * wu;
-  return top + (bottom - top) * wv;
 }
 
 /**
@@ -99,3 +80,16 @@ export function breakupLattice(breakup: FoamBreakup, originX: number, originZ: n
   const cells: [number, number, number, number] = [Math.floor(u), Math.floor(v), Math.floor(su), Math.floor(sv)];
   return { cells, offset: [u - cells[0], v - cells[1], su - cells[2], sv - cells[3]] };
 }
+
+/**
+ * The share of the foam left behind that lies where a wave group lets it (foamGroupShare in
+ * shaders/foam/foamBreakup.glsl): all of it in a group (the field below −0.6), none between
+ * groups (above 0.2).
+ */
+export function foamGroupShare(breakup: number): number {
+  const t = Math.min(1, Math.max(0, (breakup - 0.2) / (-0.6 - 0.2)));
+  return t * t * (3 - 2 * t);
+}
+
+/** foamGroupShare's mean over the field (tests/unit/windrows.test.ts measures it): the share everywhere without groups. */
+export const FOAM_GROUP_SHARE_MEAN = 0.31;
