@@ -2,8 +2,8 @@
 // so the wind runs along the picture's x): the streak anisotropy of tests/browser/light/windrows.test.ts
 // at each instant and their mean. Prints figures, asserts nothing.
 // Usage: npx vite build && npx tsx scripts/probes/foamStreaks.ts [altitude] [wind] ["&more=query"]
-import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
-import { pngLuminances } from '../../tests/support/luminance';
+import { openOcean, startHarness } from '../../tests/browser/harness';
+import { foamOwnLight } from '../../tests/browser/light/foamLight';
 import { streakAnisotropy } from '../../tests/browser/light/streakMeasure';
 
 const [altitude = '150', wind = '20', extra = ''] = process.argv.slice(2);
@@ -16,19 +16,9 @@ const query = `waves=fft&windSpeed=${wind}&windDirection=90&sunElevation=30&cam=
 const harness = await startHarness();
 try {
   const { page } = await openOcean(harness, query, W, H);
-  const frame = async (t: number, foam: boolean) => {
-    await page.evaluate((time, on) => {
-      window.oceano.setParams({ foam: on });
-      window.oceano.pause();
-      window.oceano.setTime(time);
-    }, t, foam);
-    return pngLuminances(await canvasPng(page));
-  };
   const each: number[] = [];
   for (const t of TIMES) {
-    const water = await frame(t, false);
-    const light = (await frame(t, true)).map((v, i) => v - water[i]);
-    each.push(streakAnisotropy(light, W, H, BOX));
+    each.push(streakAnisotropy(await foamOwnLight(page, t), W, H, BOX));
   }
   const mean = each.reduce((a, b) => a + b, 0) / each.length;
   console.log(JSON.stringify({ query, anisotropy: Number(mean.toFixed(3)), instants: each.map((a) => Number(a.toFixed(3))) }));

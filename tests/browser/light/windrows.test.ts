@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { canvasPng, openOcean } from '../harness';
+import { openOcean } from '../harness';
 import { useHarness } from '../useHarness';
-import { pngLuminances } from '../../support/luminance';
+import { foamOwnLight } from './foamLight';
 import { streakAnisotropy } from './streakMeasure';
 
 /**
@@ -24,23 +24,9 @@ const LIMIT = 0.16;
 
 async function anisotropy(windrows: boolean): Promise<number> {
   const { page } = await openOcean(harness, `${QUERY}&windrows=${windrows ? 1 : 0}`, W, H);
-  const frame = async (t: number, foam: boolean) => {
-    await page.evaluate(
-      (time, on) => {
-        window.oceano.setParams({ foam: on });
-        window.oceano.pause();
-        window.oceano.setTime(time);
-      },
-      t,
-      foam,
-    );
-    return pngLuminances(await canvasPng(page));
-  };
   let sum = 0;
   for (const t of TIMES) {
-    const water = await frame(t, false);
-    const light = (await frame(t, true)).map((v, i) => v - water[i]);
-    sum += streakAnisotropy(light, W, H, BOX);
+    sum += streakAnisotropy(await foamOwnLight(page, t), W, H, BOX);
   }
   await page.close();
   return sum / TIMES.length;
