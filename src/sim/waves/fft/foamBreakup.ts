@@ -1,3 +1,4 @@
+import { smoothstep } from '../../math/smoothstep';
 import { valueNoise } from '../../noise/valueNoise';
 import { groupVelocity, waveNumber } from '../dispersion';
 import { frequencySpectrum, peakWavelength } from '../spectra/waveSpectrum';
@@ -87,8 +88,7 @@ export function breakupLattice(breakup: FoamBreakup, originX: number, originZ: n
  * groups (above 0.2).
  */
 export function foamGroupShare(breakup: number): number {
-  const t = Math.min(1, Math.max(0, (breakup - 0.2) / (-0.6 - 0.2)));
-  return t * t * (3 - 2 * t);
+  return smoothstep(0.2, -0.6, breakup);
 }
 
 /** foamGroupShare's mean over the field (tests/unit/windrows.test.ts measures it): the share everywhere without groups. */

@@ -1,3 +1,4 @@
+import { smoothstep } from '../../math/smoothstep';
 import { valueNoise } from '../../noise/valueNoise';
 import { windVector, type SeaState } from '../spectra/seaState';
 import { foamDriftVelocity } from './foamDrift';
@@ -5,13 +6,13 @@ import { FOAM_GROUP_SHARE_MEAN } from './foamBreakup';
 
 /**
  * Windrows: in a strong wind the foam left behind lies in streaks along the wind. The Beaufort
- * scale's sea criteria say when: at force 7 (from 13.9 m/s) "foam from breaking waves begins to
- * be blown in streaks along the direction of the wind", at force 8 "well-marked streaks", at
- * force 9 (from 20.8 m/s) "dense streaks of foam along the direction of the wind" (the Beaufort
- * scale's sea criteria as the WMO adopted them; the UK Met Office's table has the same words). What gathers it is Langmuir circulation: pairs of vortices with
- * their axes along the wind, whose surface flow converges on lines a few metres to a few hundred
- * metres apart, where whatever floats collects (Langmuir 1938, Science 87; Leibovich 1983,
- * Annu. Rev. Fluid Mech. 15).
+ * scale's sea criteria (as the WMO adopted them; the UK Met Office's table has the same words)
+ * say when: at force 7 (from 13.9 m/s) "foam from breaking waves begins to be blown in streaks
+ * along the direction of the wind", at force 8 "well-marked streaks", at force 9 (from
+ * 20.8 m/s) "dense streaks of foam along the direction of the wind". What gathers the foam is
+ * Langmuir circulation: pairs of vortices with their axes along the wind, whose surface flow
+ * converges on lines a few metres to a few hundred metres apart, where whatever floats
+ * collects (Langmuir 1938, Science 87; Leibovich 1983, Annu. Rev. Fluid Mech. 15).
  *
  * Here, in a strong wind, where the foam left behind lies is no longer where its wave group
  * broke (foamGroupShare) but where the windrows sweep it: value noise on a lattice laid along
@@ -20,10 +21,13 @@ import { FOAM_GROUP_SHARE_MEAN } from './foamBreakup';
  * FOAM_GROUP_SHARE_MEAN, so the foam is moved, not made. The strength of the hand-over grows
  * from nothing at force 7's lower bound to all of it at force 9's.
  */
+/** A lattice cell across the wind, m: the streaks lie about two cells apart. */
 export const WINDROW_SPACING = 6;
+/** How many times longer a cell is along the wind than across it. */
 export const WINDROW_STRETCH = 12;
 /** Mixed into the hash with the user's seed, so the windrows differ from the seed's other noises. */
 export const WINDROW_STREAM = 0x51d3;
+/** The lower bounds of Beaufort forces 7 and 9, m/s at 10 m. */
 export const BEAUFORT_7_FROM = 13.9;
 export const BEAUFORT_9_FROM = 20.8;
 /** Where the noise gathers the foam: none at or below FROM, all of it from TO. */
@@ -31,11 +35,6 @@ export const WINDROW_GATHER_FROM = 0.15;
 export const WINDROW_GATHER_TO = 0.5;
 /** The gathering's mean over the noise (tests/unit/windrows.test.ts measures it), so the windrows' share has the groups' mean. */
 export const WINDROW_GATHER_MEAN = 0.269;
-
-function smoothstep(from: number, to: number, x: number): number {
-  const t = Math.min(1, Math.max(0, (x - from) / (to - from)));
-  return t * t * (3 - 2 * t);
-}
 
 /** How much of the gathering the wind makes: 0 up to Beaufort 7, 1 from Beaufort 9. */
 export function windrowStrength(windSpeed: number): number {
