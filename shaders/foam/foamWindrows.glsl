@@ -13,12 +13,20 @@ uniform int uWindrowSeed;      // the user's seed mixed with the windrows' strea
 uniform float uWindrowStrength;  // 0 up to Beaufort 7, 1 from Beaufort 9
 
 // The share of the foam left behind that lies at p, given the share its group would let lie.
+// Where a pixel spans more than a quarter of a cell across, the streaks would alias into
+// flicker far away: they hand back to the groups, fully at half a cell.
 #ifdef OCEAN_WINDROWS
 float foamWindrowShare(vec2 p, bool near, float groupShare) {
   vec2 r = near ? p : p - uFoamBreakupOrigin;
   vec2 u = vec2(dot(uWindrowAxes.xy, r), dot(uWindrowAxes.zw, r)) + uWindrowOffset;
   float gathered = smoothstep(WINDROW_GATHER_FROM, WINDROW_GATHER_TO, foamValueNoise(u, uWindrowCells, uWindrowSeed));
-  return mix(groupShare, FOAM_GROUP_SHARE_MEAN * gathered / WINDROW_GATHER_MEAN, uWindrowStrength);
+#ifdef WAVE_FRAGMENT_STAGE
+  float footprint = max(length(dFdx(p)), length(dFdy(p)));
+  float resolved = 1.0 - smoothstep(0.25 * WINDROW_SPACING, 0.5 * WINDROW_SPACING, footprint);
+#else
+  const float resolved = 1.0;
+#endif
+  return mix(groupShare, FOAM_GROUP_SHARE_MEAN * gathered / WINDROW_GATHER_MEAN, uWindrowStrength * resolved);
 }
 #else
 float foamWindrowShare(vec2 p, bool near, float groupShare) {

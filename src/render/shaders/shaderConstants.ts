@@ -10,7 +10,7 @@ import { GOD_RAY_RANGE } from '../underwater/godRayRange';
 import { DEPTH_DARKENING, WATER_EXTINCTION } from '../../sim/underwater/waterFog';
 import { TILE_COPY_TURN } from '../../sim/waves/fft/tileCopies';
 import { FOAM_GROUP_SHARE_MEAN } from '../../sim/waves/fft/foamBreakup';
-import { WINDROW_GATHER_FROM, WINDROW_GATHER_MEAN, WINDROW_GATHER_TO } from '../../sim/waves/fft/windrows';
+import { WINDROW_GATHER_FROM, WINDROW_GATHER_MEAN, WINDROW_GATHER_TO, WINDROW_SPACING } from '../../sim/waves/fft/windrows';
 
 /** A GLSL float literal: always with a decimal point, since GLSL ES will not take `1` as a float. */
 export function glslFloat(value: number): string {
@@ -45,6 +45,7 @@ export function shaderConstantsChunk(): string {
     `#define HENYEY_GREENSTEIN vec3(${[(1 - PARTICLE_MEAN_COSINE ** 2) / (4 * Math.PI), 1 + PARTICLE_MEAN_COSINE ** 2, 2 * PARTICLE_MEAN_COSINE].map(glslFloat).join(', ')})`,
     `#define TILE_COPY_TURN ${glslFloat(TILE_COPY_TURN)}`,
     `#define FOAM_GROUP_SHARE_MEAN ${glslFloat(FOAM_GROUP_SHARE_MEAN)}`,
+    `#define WINDROW_SPACING ${glslFloat(WINDROW_SPACING)}`,
     `#define WINDROW_GATHER_FROM ${glslFloat(WINDROW_GATHER_FROM)}`,
     `#define WINDROW_GATHER_TO ${glslFloat(WINDROW_GATHER_TO)}`,
     `#define WINDROW_GATHER_MEAN ${glslFloat(WINDROW_GATHER_MEAN)}`,

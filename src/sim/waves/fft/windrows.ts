@@ -48,7 +48,8 @@ export function windrowGathering(noise: number): number {
 
 /**
  * The share of the foam left behind that lies at lattice coordinates (u along, v across the
- * wind), given the share its group would let lie: foamWindrowShare's twin (shaders/foam/foamWindrows.glsl).
+ * wind), given the share its group would let lie: foamWindrowShare's twin (shaders/foam/foamWindrows.glsl),
+ * for a pixel that spans under a quarter of a cell (a wider one hands back to the groups there).
  */
 export function windrowShare(u: number, v: number, seed: number, strength: number, groupShare: number): number {
   const swept = (FOAM_GROUP_SHARE_MEAN * windrowGathering(valueNoise(u, v, (seed ^ WINDROW_STREAM) | 0))) / WINDROW_GATHER_MEAN;
