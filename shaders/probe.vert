@@ -3,6 +3,9 @@
 // even index waveDisplacement (dx, dy, dz), odd index waveNormal; with the boat's wake on,
 // both with the wake added exactly as ocean.vert adds it (at the displaced point), and with
 // the interactive waves on, their field too, the two weighted by the hand-over as there.
+// The normal texel's w: on the spectral sea, the windrows' share of the foam left behind at
+// the grid point (shaders/foam/foamWindrows.glsl, compiled in here at every wind), for the
+// parity check of windrowShare (src/sim/waves/fft/windrows.ts); 0 on the other seas.
 #include <oceano_waves>
 #include <oceano_wake>
 #ifdef OCEAN_IWAVE
@@ -35,7 +38,12 @@ void main() {
   d.y += field.x;
   n = wakeTiltNormal(n, field.yz);
 #endif
-  vResult = vec4(normalTexel ? n : d, 0.0);
+#ifdef WAVE_FOAM
+  float windrows = foamWindrowShare(aSample, false, 0.0);
+#else
+  const float windrows = 0.0;
+#endif
+  vResult = normalTexel ? vec4(n, windrows) : vec4(d, 0.0);
   vec2 texel = vec2(mod(aIndex, uTargetSize.x), floor(aIndex / uTargetSize.x)) + 0.5;
   gl_Position = vec4(texel / uTargetSize * 2.0 - 1.0, 0.0, 1.0);
   gl_PointSize = 1.0;

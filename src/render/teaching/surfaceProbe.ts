@@ -27,6 +27,8 @@ const TARGET_WIDTH = 256;
 export interface ProbeSample extends SurfaceSample {
   /** waveDisplacement(gridXZ): where the grid point goes, metres. `height` is its dy. */
   displacement: [number, number, number];
+  /** On the spectral sea, the windrows' share of the foam left behind at the grid point, for a group share of 0; 0 on the other seas. */
+  windrowShare: number;
 }
 
 /**
@@ -55,6 +57,8 @@ export class SurfaceProbe {
         depthWrite: false,
       }),
     );
+    // The windrows' field is read at every wind here, for its parity check (probe.vert).
+    setMaterialDefine(this.material, 'OCEAN_WINDROWS', true);
   }
 
   /** Whether the interactive waves are added (their chunk must have reached the binding first). */
@@ -113,6 +117,7 @@ export class SurfaceProbe {
         displacement: [pixels[d], pixels[d + 1], pixels[d + 2]] as [number, number, number],
         height: pixels[d + 1],
         normal: [pixels[d + 4], pixels[d + 5], pixels[d + 6]] as [number, number, number],
+        windrowShare: pixels[d + 7],
       };
     });
   }

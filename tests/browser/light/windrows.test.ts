@@ -3,6 +3,8 @@ import { openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { foamOwnLight } from './foamLight';
 import { streakAnisotropy } from './streakMeasure';
+import { seededRandom } from '../../../src/sim/noise/integerHash';
+import { windrowLattice, windrowShare, windrowStrength } from '../../../src/sim/waves/fft/windrows';
 
 /**
  * In a gale the foam left behind lies in streaks along the wind (the Beaufort scale from force 7;
@@ -40,5 +42,45 @@ describe('windrows: a gale’s foam in streaks along the wind', () => {
     console.log(`[oceano] ${say}`);
     expect(streaks, say).toBeGreaterThan(LIMIT);
     expect(patches, say).toBeLessThan(LIMIT);
+  });
+});
+
+/**
+ * The GPU's windrows against their CPU twin: the probe runs the real chunk
+ * (shaders/foam/foamWindrows.glsl) at grid points up to 3 km out and late in time, and
+ * windrowShare is asked the same on the lattice that windrowLattice places.
+ * Control: the twin without the surface's drift.
+ */
+const PARITY = { seed: 5, windSpeed: 20, windDirection: 35, times: [0, 37.25, 4321.5], points: 64, extent: 3000 } as const;
+
+function twinShare(x: number, z: number, t: number, drifting: boolean): number {
+  const lattice = windrowLattice(PARITY, 0, 0, drifting ? t : 0);
+  const u = lattice.axes[0] * x + lattice.axes[1] * z + lattice.offset[0] + lattice.cells[0];
+  const v = lattice.axes[2] * x + lattice.axes[3] * z + lattice.offset[1] + lattice.cells[1];
+  return windrowShare(u, v, PARITY.seed, windrowStrength(PARITY.windSpeed), 0);
+}
+
+describe('windrows: the GPU against the CPU twin', () => {
+  it('agree within 1e-3 at seeded random grid points up to 3 km out and t up to 4,321 s; control: the twin without the drift is caught', { timeout: 120_000 }, async () => {
+    const random = seededRandom(20261127);
+    const cases = PARITY.times.map((t) => ({
+      t,
+      points: Array.from({ length: PARITY.points }, () => [Math.fround((random() * 2 - 1) * PARITY.extent), Math.fround((random() * 2 - 1) * PARITY.extent)] as [number, number]),
+    }));
+    const { page } = await openOcean(harness, `waves=fft&seed=${PARITY.seed}&windSpeed=${PARITY.windSpeed}&windDirection=${PARITY.windDirection}&t=0`, 320, 180);
+    let worst = 0;
+    let control = 0;
+    for (const { t, points } of cases) {
+      const gpu = await page.evaluate(async (p, time) => (await window.oceano.probeGpu(p, time)).map((s) => s.windrowShare), points, t);
+      points.forEach(([x, z], i) => {
+        worst = Math.max(worst, Math.abs(gpu[i] - twinShare(x, z, t, true)));
+        if (t > 0) control = Math.max(control, Math.abs(gpu[i] - twinShare(x, z, t, false)));
+      });
+    }
+    await page.close();
+    const say = `windrows GPU–CPU: max |Δshare| ${worst.toExponential(2)}; control (no drift) ${control.toFixed(3)}`;
+    console.log(`[oceano] ${say}`);
+    expect(worst, say).toBeLessThan(1e-3);
+    expect(control, say).toBeGreaterThan(0.1);
   });
 });
