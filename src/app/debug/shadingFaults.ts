@@ -28,6 +28,8 @@ export interface ShadingFixes {
   foamDrift: boolean;
   /** Far foam shaded by the lace's density where the pixel covers many bubbles (shaders/foam/foamMaterial.glsl foamOver), not by its thickness alone. */
   farLace: boolean;
+  /** Foam's edges feathered: thinning foam shows only the densest lace (shaders/foam/foamMaterial.glsl foamOver); off, every foam is solid above half its thickness and absent below, cut along a hard line. */
+  featheredEdges: boolean;
   /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
   subsurfaceCrests: boolean;
   /** The water's colour as its optics give it; off: 3 % brighter, the smallest change the reference comparison must catch. */
@@ -92,6 +94,14 @@ const TILED_FOAM: ShaderFault = {
 const SINGLE_TILES: ShaderFault = { name: 'single-tiles', fragment: [['float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);', 'float far = 0.0;']] };
 /** Far foam's share of a pixel its thickness alone, as smooth grey patches: the lace's patches and streaks averaged away. */
 const SMOOTH_FAR_FOAM: ShaderFault = { name: 'smooth-far-foam', fragment: [['clamp(amount * density / uFoamDensityMean, 0.0, 1.0)', 'amount']] };
+/** Foam cut hard at half its thickness, near and far: no lace thinning towards its edges. */
+const HARD_FOAM_EDGES: ShaderFault = {
+  name: 'hard-foam-edges',
+  fragment: [
+    ['float laced = smoothstep(1.0 - amount - FOAM_FEATHER, 1.0 - amount + FOAM_FEATHER, density);', 'float laced = step(0.5, amount);'],
+    ['clamp(amount * density / uFoamDensityMean, 0.0, 1.0)', 'step(0.5, amount)'],
+  ],
+};
 /** The subsurface glow on every pixel alike, crest or trough. */
 const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
 /** The water's own colour 3 % brighter. */
@@ -138,6 +148,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(TILED_FOAM, fixes.foamBreakup);
   toggle(SINGLE_TILES, waves === 'fft' ? fixes.tileCopies : true);
   toggle(SMOOTH_FAR_FOAM, fixes.farLace);
+  toggle(HARD_FOAM_EDGES, fixes.featheredEdges);
   toggle(GLOW_EVERYWHERE, fixes.subsurfaceCrests);
   toggle(BRIGHTER_WATER, fixes.exactWaterColour);
   const ocean = view.ocean;
