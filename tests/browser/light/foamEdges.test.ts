@@ -7,17 +7,17 @@ import { foamOwnLight } from './foamLight';
  * A whitecap's edge feathers: outside its solid white the foam thins into lace and bubbles
  * before the water shows (shaders/foam/foamMaterial.glsl foamOver, and the band of thinning
  * foam around the breaking threshold in shaders/waves/fft.glsl), rather than ending on a line.
- * Seen from 30 m straight down at 15 m/s (4.3 cm a pixel), the foam's own light (the frame
+ * Seen from 15 m straight down at 15 m/s (640 × 360, 4.3 cm a pixel), the foam's own light (the frame
  * with foam less the same instant without) in a ring 13–39 cm outside the solid foam, against
  * the solid foam's own.
  * Control: foam cut hard at half its thickness (`featheredEdges: false`), where the ring holds
  * almost nothing.
  */
 const harness = useHarness();
-const W = 1280;
-const H = 720;
+const W = 640;
+const H = 360;
 const TIMES = [10, 40, 70, 100];
-const QUERY = 'waves=fft&windSpeed=15&windDirection=90&sunElevation=30&cam=0,30,0,0,0,-0.01';
+const QUERY = 'waves=fft&windSpeed=15&windDirection=90&sunElevation=30&cam=0,15,0,0,0,-0.01';
 // Solid foam: lighter by this many levels than the water under it.
 const SOLID_LEVELS = 120;
 // The ring, in pixels of chessboard distance from the solid foam.
@@ -76,16 +76,16 @@ async function feathering(feathered: boolean): Promise<{ ratio: number; solid: n
   return { ratio: ringLight / ringPixels / (solidLight / solidPixels), solid: solidPixels, ring: ringPixels };
 }
 
-// Measured: 0.097 feathered, 0.000 cut hard (the pictures are deterministic, so the bound sits between).
+// Measured: 0.091 feathered, 0.000 cut hard (the pictures are deterministic, so the bound sits between).
 const LIMIT = 0.05;
 
 describe('foam’s edges feather', () => {
-  it('from 30 m straight down at 15 m/s the ring 13–39 cm outside solid foam keeps over 5 % of its light; control: foam cut hard at half its thickness', { timeout: 240_000 }, async () => {
+  it('from 15 m straight down at 15 m/s the ring 13–39 cm outside solid foam keeps over 5 % of its light; control: foam cut hard at half its thickness', { timeout: 240_000 }, async () => {
     const soft = await feathering(true);
     const hard = await feathering(false);
     const say = `ring/solid light ${soft.ratio.toFixed(3)} (solid ${soft.solid} px, ring ${soft.ring} px), control ${hard.ratio.toFixed(3)} (solid ${hard.solid} px, ring ${hard.ring} px)`;
     console.log(`[oceano] ${say}`);
-    expect(soft.solid, say).toBeGreaterThan(20_000);
+    expect(soft.solid, say).toBeGreaterThan(10_000);
     expect(soft.ratio, say).toBeGreaterThan(LIMIT);
     expect(hard.ratio, say).toBeLessThan(LIMIT);
   });
