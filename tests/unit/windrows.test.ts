@@ -4,6 +4,7 @@ import { foamDriftVelocity } from '../../src/sim/waves/fft/foamDrift';
 import {
   BEAUFORT_7_FROM,
   BEAUFORT_9_FROM,
+  windrowCoordinates,
   windrowGathering,
   windrowLattice,
   WINDROW_GATHER_MEAN,
@@ -30,13 +31,9 @@ function meanOver(f: (u: number, v: number, seed: number) => number): number {
   return sum / count;
 }
 
-/** The windrows' share at world (x, z) at `time`, through the lattice as the shader reads it (render origin at ox, oz). */
+/** The windrows' share at world (x, z), through the lattice as the shader reads it (render origin at ox, oz). */
 function shareAt(lattice: WindrowLattice, ox: number, oz: number, x: number, z: number, seed: number): number {
-  const [ax, az, bx, bz] = lattice.axes;
-  const rx = x - ox;
-  const rz = z - oz;
-  const u = ax * rx + az * rz + lattice.offset[0] + lattice.cells[0];
-  const v = bx * rx + bz * rz + lattice.offset[1] + lattice.cells[1];
+  const [u, v] = windrowCoordinates(lattice, x - ox, z - oz);
   return windrowShare(u, v, seed, 1, 0);
 }
 

@@ -4,7 +4,7 @@ import { useHarness } from '../useHarness';
 import { foamOwnLight } from './foamLight';
 import { streakAnisotropy } from './streakMeasure';
 import { seededRandom } from '../../../src/sim/noise/integerHash';
-import { windrowLattice, windrowShare, windrowStrength } from '../../../src/sim/waves/fft/windrows';
+import { windrowCoordinates, windrowLattice, windrowShare, windrowStrength } from '../../../src/sim/waves/fft/windrows';
 
 /**
  * In a gale the foam left behind lies in streaks along the wind (the Beaufort scale from force 7;
@@ -54,9 +54,7 @@ describe('windrows: a gale’s foam in streaks along the wind', () => {
 const PARITY = { seed: 5, windSpeed: 20, windDirection: 35, times: [0, 37.25, 4321.5], points: 64, extent: 3000 } as const;
 
 function twinShare(x: number, z: number, t: number, drifting: boolean): number {
-  const lattice = windrowLattice(PARITY, 0, 0, drifting ? t : 0);
-  const u = lattice.axes[0] * x + lattice.axes[1] * z + lattice.offset[0] + lattice.cells[0];
-  const v = lattice.axes[2] * x + lattice.axes[3] * z + lattice.offset[1] + lattice.cells[1];
+  const [u, v] = windrowCoordinates(windrowLattice(PARITY, 0, 0, drifting ? t : 0), x, z);
   return windrowShare(u, v, PARITY.seed, windrowStrength(PARITY.windSpeed), 0);
 }
 

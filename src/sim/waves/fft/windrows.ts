@@ -82,3 +82,9 @@ export function windrowLattice(sea: Pick<SeaState, 'windSpeed' | 'windDirection'
   const cells: [number, number] = [Math.floor(u), Math.floor(v)];
   return { axes, cells, offset: [u - cells[0], v - cells[1]] };
 }
+
+/** The lattice coordinates (u along, v across the wind) of the point origin + (rx, rz): what foamWindrowShare works out from the uniforms. */
+export function windrowCoordinates(lattice: WindrowLattice, rx: number, rz: number): [u: number, v: number] {
+  const [ax, az, bx, bz] = lattice.axes;
+  return [ax * rx + az * rz + lattice.offset[0] + lattice.cells[0], bx * rx + bz * rz + lattice.offset[1] + lattice.cells[1]];
+}
