@@ -7,6 +7,9 @@
 // (src/render/underwater/gaussianKernel.ts: linearSampledKernel) and the sum is still the exact Gaussian.
 
 #include <oceano_constants>
+#ifdef ENCODE_OUTPUT
+#include <oceano_highlight_roll_off>
+#endif
 
 uniform sampler2D tDiffuse;
 uniform vec2 uStep;
@@ -32,11 +35,15 @@ void main() {
 #endif
 #ifdef ENCODE_OUTPUT
   // The last pass, into RGBA8 for the composite: the water colour already as the canvas will
-  // hold it (sRGB, clipped at 1 as the canvas clips it; no tone mapping, as the renderer has
-  // none), premultiplied again so that the composite's bilinear upsample still weighs each
-  // texel by its share of water. The composite then only divides: the encoding's pow ran for
-  // every canvas pixel there, four times as many as here.
-  vec3 water = clamp(sum.rgb / max(sum.a, 1e-6), 0.0, 1.0);
+  // hold it (through the renderer's tone curve where it has ours, OCEANO_TONE_CURVE, then sRGB,
+  // clipped at 1 as the canvas clips it), premultiplied again so that the composite's bilinear
+  // upsample still weighs each texel by its share of water. The composite then only divides:
+  // the curve and the encoding's pow ran for every canvas pixel there, four times as many as here.
+  vec3 water = sum.rgb / max(sum.a, 1e-6);
+#ifdef OCEANO_TONE_CURVE
+  water = rollOffHighlights(water);
+#endif
+  water = clamp(water, 0.0, 1.0);
   gl_FragColor = vec4(sRGBTransferOETF(vec4(water, 1.0)).rgb * sum.a, sum.a);
 #else
   gl_FragColor = sum;

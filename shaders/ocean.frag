@@ -125,16 +125,14 @@ vec3 sunGlint(vec3 n, vec3 v, float variance, float fresnel) {
   return uSunColor * SUN_IRRADIANCE * fresnel * density / (4.0 * cosV * cosH * cosH * cosH * cosH * shadowing) * sunVisible;
 }
 
-// The glint is the sun's own radiance, many times the sky's: a display shows it only through
-// a tone curve. Below the knee colours are left exactly as they were (the water, most of the
-// sky's reflection); above it they roll off towards white instead of clipping, so the glint
-// keeps its falloff, and its width, where it is brighter than the screen. The foam's white
-// comes out a little greyer (0.88 → 0.80).
-const float HIGHLIGHT_KNEE = 0.6;
-vec3 rollOffHighlights(vec3 c) {
-  vec3 over = max(c - HIGHLIGHT_KNEE, 0.0) / (1.0 - HIGHLIGHT_KNEE);
-  return min(c, HIGHLIGHT_KNEE) + (1.0 - HIGHLIGHT_KNEE) * (1.0 - exp(-over));
-}
+// The glint is the sun's own radiance, many times the sky's: a display shows it only through a
+// tone curve. The app's renderer runs one over the whole frame (shaders/highlightRollOff.glsl);
+// in a scene of yours whose renderer has none (NoToneMapping), the sea rolls its own highlights
+// off (OCEAN_OWN_ROLL_OFF) rather than clip them, and in one with a curve of its own it leaves
+// them to that curve.
+#ifdef OCEAN_OWN_ROLL_OFF
+#include <oceano_highlight_roll_off>
+#endif
 
 #include <oceano_fresnel_lookup>
 
@@ -320,13 +318,16 @@ void main() {
   }
 
   color = mix(color, hazeColor(v), hazeWeight());
+#ifdef OCEAN_OWN_ROLL_OFF
   color = rollOffHighlights(color);
+#endif
 
 #ifdef OCEAN_LOD_COLORS
   // The LOD debugger's band colours, near to far; the far rings and the skirt (bands past
-  // the grid's) take the last one.
+  // the grid's) take the last one. The sea under them is clipped at white first, so that the
+  // glint's light, many times white before the tone curve, does not wash them out.
   const vec3 bandColors[LOD_BAND_COUNT] = LOD_BAND_COLORS;
-  color = mix(color, bandColors[min(int(vBand + 0.5), LOD_BAND_COUNT - 1)], 0.7);
+  color = mix(min(color, 1.0), bandColors[min(int(vBand + 0.5), LOD_BAND_COUNT - 1)], 0.7);
 #endif
 
   gl_FragColor = vec4(color, uMarkSides ? 0.0 : 1.0);

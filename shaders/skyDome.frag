@@ -3,6 +3,8 @@
 // PNG faces never had. Written as linear colour into a half-float cube render target;
 // the painter's constants are sRGB, so the result is decoded once at the end.
 
+#include <oceano_sun_disc>
+
 uniform vec3 uSunDirection;
 uniform sampler2D uClouds;
 uniform vec3 uZenith;
@@ -63,9 +65,9 @@ void main() {
     color = mix(color, lit, cover * 0.85);
   }
 
-  // No disc once the sun's centre is below the horizon.
-  float sunDisc = smoothstep(0.99985, 0.99992, cosSun) * step(0.0, sun.y);
-  color = mix(color, vec3(1.0), sunDisc);
+  // The disc as white as the cube can hold; the sky behind the scene draws it in its full
+  // brightness (skyBackground.frag), which no 8-bit cube could.
+  color = mix(color, vec3(1.0), sunDiscCoverage(d, sun));
   // Stored as the square root of the linear colour, in 8 bits (see skyCube.glsl).
   gl_FragColor = vec4(sqrt(srgbToLinear(clamp(color, 0.0, 1.0))), 1.0);
 }

@@ -1,5 +1,5 @@
 import { describe, expect, it, vi } from 'vitest';
-import { BackSide, CubeTexture, DoubleSide, FrontSide, Group, PerspectiveCamera, Scene, Texture, type IUniform } from 'three';
+import { ACESFilmicToneMapping, BackSide, CubeTexture, CustomToneMapping, DoubleSide, FrontSide, Group, NoToneMapping, PerspectiveCamera, Scene, Texture, type IUniform } from 'three';
 import { createWakeUniforms } from '../../src/render/wake/wakeUniforms';
 import { createFoamUniforms } from '../../src/render/foam/foamUniforms';
 import { OceanMaterial } from '../../src/render/ocean/oceanMaterial';
@@ -25,6 +25,9 @@ function material(wakeCodeArrived = true): OceanMaterial {
   if (wakeCodeArrived) binding.late.provide('oceano_wake', '// the wake');
   return new OceanMaterial(binding, { fromAbove: new Texture(), fromBelow: new Texture() }, new CubeTexture(), shared);
 }
+
+/** What onBeforeRender reads of a renderer: a scene's renderer with no tone curve, three.js's default. */
+const plainRenderer = { toneMapping: NoToneMapping };
 
 /** What setSeenFromBelow decides, for both programs. */
 function seen(m: OceanMaterial) {
@@ -57,6 +60,9 @@ describe('OceanMaterial: the wake compiled in only while its shared uniforms hol
     const camera = new PerspectiveCamera();
     // Nothing drawn yet: no track, no wake code.
     expect('OCEAN_WAKE' in m.defines || 'OCEAN_WAKE' in m.near.defines).toBe(false);
+    // The first draw compiles in what the renderer asks for (its tone curve): not what is counted here.
+    m.onBeforeRender(plainRenderer, null, camera);
+    m.near.onBeforeRender(plainRenderer, null, camera);
     let previous = false;
     for (const count of [0, 1, 2, 40, 0, 64, 1, 0]) {
       const on = count >= 2;
@@ -64,8 +70,8 @@ describe('OceanMaterial: the wake compiled in only while its shared uniforms hol
       // The count is shared by every ocean material of a view (compare strips too); each program
       // reads it as it is drawn.
       (m.uniforms.uWakeCount as IUniform<number>).value = count;
-      m.onBeforeRender(null, null, camera);
-      m.near.onBeforeRender(null, null, camera);
+      m.onBeforeRender(plainRenderer, null, camera);
+      m.near.onBeforeRender(plainRenderer, null, camera);
       expect('OCEAN_WAKE' in m.defines).toBe(on);
       expect('OCEAN_WAKE' in m.near.defines).toBe(on);
       // Drawn every frame: a repeat must not rebuild the programs.
@@ -78,8 +84,31 @@ describe('OceanMaterial: the wake compiled in only while its shared uniforms hol
   it('leaves the wake out while its GLSL has not arrived, whatever the track', () => {
     const m = material(false);
     (m.uniforms.uWakeCount as IUniform<number>).value = 40;
-    m.onBeforeRender(null, null, new PerspectiveCamera());
+    m.onBeforeRender(plainRenderer, null, new PerspectiveCamera());
     expect('OCEAN_WAKE' in m.defines).toBe(false);
+  });
+});
+
+describe('OceanMaterial: the sea rolls its own highlights off only under a renderer with no tone curve', () => {
+  it('compiles the roll-off in for NoToneMapping and out for the app\'s curve or a scene\'s own (ACES), and a repeat recompiles nothing', () => {
+    const m = material();
+    const camera = new PerspectiveCamera();
+    for (const [toneMapping, own] of [
+      [NoToneMapping, true],
+      [NoToneMapping, true],
+      [CustomToneMapping, false],
+      [ACESFilmicToneMapping, false],
+      [NoToneMapping, true],
+    ] as const) {
+      m.onBeforeRender({ toneMapping }, null, camera);
+      expect('OCEAN_OWN_ROLL_OFF' in m.defines).toBe(own);
+    }
+    // Drawn twice under the same renderer: the second draw leaves the program as it was.
+    const before = m.version;
+    m.onBeforeRender({ toneMapping: NoToneMapping }, null, camera);
+    expect(m.version).toBe(before);
+    // The define is what ocean.frag rolls the highlights off by.
+    expect(m.fragmentShader).toMatch(/#ifdef OCEAN_OWN_ROLL_OFF\s+color = rollOffHighlights\(color\);\s+#endif/);
   });
 });
 

@@ -1,4 +1,5 @@
-import type { Material } from 'three';
+import { NoToneMapping, type Material } from 'three';
+import { drawThroughHighlightRollOff } from '../../render/tone/wholeFrameToneCurve';
 import type { OceanView } from '../../render/ocean/oceanView';
 import { renderOrigin } from '../../render/ocean/renderOrigin';
 
@@ -34,6 +35,10 @@ export interface ShadingFixes {
   subsurfaceCrests: boolean;
   /** The water's colour as its optics give it; off: 3 % brighter, the smallest change the reference comparison must catch. */
   exactWaterColour: boolean;
+  /** The whole frame through the highlight roll-off (src/render/tone/wholeFrameToneCurve.ts); off: the renderer has no tone curve, the sea rolls its own highlights off and the rest clips at white. */
+  wholeFrameToneCurve: boolean;
+  /** The sun's disc in the sky in its full brightness (src/render/sky/skyBackground.ts); off: only as the cube holds it, white (1). */
+  sunInFullBrightness: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -156,6 +161,11 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   const oceanFaults = [...faults].filter((f) => f !== UNMARKED_SEA_BED);
   for (const m of [material, material.near]) plant(m, oceanFaults);
   plant(ocean.seaBed.material, faults.has(UNMARKED_SEA_BED) ? [UNMARKED_SEA_BED] : []);
+  if (fixes.wholeFrameToneCurve !== undefined) {
+    if (fixes.wholeFrameToneCurve) drawThroughHighlightRollOff(view.renderer);
+    else view.renderer.toneMapping = NoToneMapping;
+  }
+  if (fixes.sunInFullBrightness !== undefined) ocean.skyBackground.setSunInFullBrightness(fixes.sunInFullBrightness);
   if (fixes.cameraRelative !== undefined) material.originFor = fixes.cameraRelative ? renderOrigin : () => [0, 0];
   if (fixes.foamDrift !== undefined) ocean.waveModelView.setFoamDrift?.(fixes.foamDrift);
   if (fixes.clearanceNear !== undefined) view.clearance.nearFitted = fixes.clearanceNear;

@@ -20,6 +20,7 @@ import { createWaveModelView, loadWaveModels, modelsDrawn, modelsMissing } from 
 import type { WaveModelView } from '../waves/waveModelView';
 import { applyWakeUniforms, createWakeUniforms } from '../wake/wakeUniforms';
 import { SkySource } from '../sky/skySource';
+import type { SkyBackground } from '../sky/skyBackground';
 import type { OceanMaterialInputs } from '../compare/compareSide';
 import { OceanMaterial } from './oceanMaterial';
 import type { BoatInField, InteractiveWaves } from '../iwave/interactiveWaves';
@@ -156,6 +157,11 @@ export class Ocean extends Object3D {
   /** The sky texture the sea reflects. */
   get skyTexture(): CubeTexture {
     return this.skySource.texture;
+  }
+
+  /** The sky drawn behind the scene (its mesh is `sky`). */
+  get skyBackground(): SkyBackground {
+    return this.skySource.background;
   }
 
   /** How many times the sun's sky has been painted (0 with a cube map of your own). */

@@ -1,4 +1,4 @@
-import { BackSide, Color, DoubleSide, FrontSide, Matrix4, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture, type WebGLRenderer } from 'three';
+import { BackSide, Color, DoubleSide, FrontSide, Matrix4, NoToneMapping, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture, type WebGLRenderer } from 'three';
 import { renderOrigin } from './renderOrigin';
 import type { Submersion } from '../../sim/underwater/snellWindow';
 import vertexShader from '../../../shaders/ocean.vert?raw';
@@ -112,6 +112,8 @@ export class OceanMaterial extends ShaderMaterial {
     this.uniforms.uCrestHeight.value = Math.max(this.waves.model.model.bounds().vertical / 6, 0.01);
     // Foam as foam once its detail texture is there (shaders/foam/foamMaterial.glsl), paint until then.
     setMaterialDefine(this, 'OCEAN_FOAM_TEXTURE', this.uniforms.uFoamDetail.value !== null);
+    // The highlights rolled off here only where the renderer has no tone curve of its own (ocean.frag).
+    setMaterialDefine(this, 'OCEAN_OWN_ROLL_OFF', (renderer as WebGLRenderer).toneMapping === NoToneMapping);
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
     const [x, z] = (this.main ?? this).originFor(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);

@@ -1,4 +1,5 @@
 import { PerspectiveCamera, Scene, WebGLRenderer, type CubeTexture, type Object3D } from 'three';
+import { drawThroughHighlightRollOff } from '../tone/wholeFrameToneCurve';
 import type { OceanParams, ParamKey } from '../../sim/params/params';
 import { paramsChanged } from '../../sim/params/paramChanges';
 import type { LiveWaveModel } from '../../sim/waves/waveModel';
@@ -80,6 +81,7 @@ export class OceanView {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
+    drawThroughHighlightRollOff(this.renderer);
     this.camera = new PerspectiveCamera(55, 16 / 9, DEFAULT_NEAR, CAMERA_FAR);
     this.camera.position.fromArray(DEFAULT_CAMERA.position);
     this.camera.lookAt(...DEFAULT_CAMERA.target);

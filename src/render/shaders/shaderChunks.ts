@@ -8,6 +8,8 @@ import subsurface from '../../../shaders/subsurface.glsl?raw';
 import haze from '../../../shaders/haze.glsl?raw';
 import fresnelLookup from '../../../shaders/fresnelLookup.glsl?raw';
 import waterBody from '../../../shaders/waterBody.glsl?raw';
+import highlightRollOff from '../../../shaders/highlightRollOff.glsl?raw';
+import sunDisc from '../../../shaders/sunDisc.glsl?raw';
 import { shaderConstantsChunk } from './shaderConstants';
 import { SCENE_ENCODE_CHUNK } from '../underwater/sceneEncoding';
 
@@ -38,6 +40,10 @@ const CHUNKS: Readonly<Record<string, string>> = {
   oceano_fresnel_lookup: fresnelLookup,
   // The water's own colour from its optics, the same everywhere: worked out per vertex (ocean.vert).
   oceano_water_body: waterBody,
+  // The whole frame's tone curve: the app's renderer runs it on every pixel (src/render/tone/wholeFrameToneCurve.ts).
+  oceano_highlight_roll_off: highlightRollOff,
+  // The sun's disc in the sky: where it is (the painted cube, the sky behind the scene) and how bright.
+  oceano_sun_disc: sunDisc,
   // The underwater passes' scene target, written after three's colour-space chunk (read back by
   // the passes' own chunks, src/render/underwater/passChunks.ts).
   oceano_scene_encode: SCENE_ENCODE_CHUNK,

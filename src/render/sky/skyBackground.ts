@@ -1,4 +1,6 @@
-import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, type Camera, type CubeTexture } from 'three';
+import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, Vector3, type Camera, type CubeTexture } from 'three';
+import { SUN_IRRADIANCE, SUN_LIGHT_COLOR } from '../../sim/optics/sun';
+import { sunDiscRadiance } from '../../sim/optics/sunDisc';
 import vertexShader from '../../../shaders/skyBackground.vert?raw';
 import fragmentShader from '../../../shaders/skyBackground.frag?raw';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
@@ -35,7 +37,12 @@ export class SkyBackground {
     const material = markOceanoMaterial(new ShaderMaterial({
       vertexShader: resolveChunks(vertexShader),
       fragmentShader: resolveChunks(fragmentShader),
-      uniforms: { ...createSkyCubeUniforms(sky), uClipToWorldDirection: { value: this.clipToWorld } },
+      uniforms: {
+        ...createSkyCubeUniforms(sky),
+        uClipToWorldDirection: { value: this.clipToWorld },
+        uSunDirection: { value: new Vector3(0, 1, 0) },
+        uSunRadiance: { value: new Vector3() },
+      },
       depthWrite: false,
     }));
     this.mesh = new Mesh(geometry, material);
@@ -47,6 +54,31 @@ export class SkyBackground {
       // Directions only: the camera's rotation without its position, after the inverse projection.
       this.clipToWorld.extractRotation(camera.matrixWorld).multiply(camera.projectionMatrixInverse);
     };
+  }
+
+  private painted = false;
+  private fullBrightness = true;
+
+  /**
+   * The sun the sky shows: `painted` for the sky painted from it, whose disc is drawn here in its
+   * full brightness (the sun's irradiance over the disc's solid angle, in the sunlight's colour);
+   * a cube map of the user's keeps the sun in its own pixels.
+   */
+  setSun(direction: readonly [number, number, number], painted: boolean): void {
+    (this.mesh.material.uniforms.uSunDirection.value as Vector3).fromArray(direction).normalize();
+    this.painted = painted;
+    this.updateSunRadiance();
+  }
+
+  /** Off: the disc only as the cube holds it, white (1), as a negative control (src/app/debug/shadingFaults.ts). */
+  setSunInFullBrightness(on: boolean): void {
+    this.fullBrightness = on;
+    this.updateSunRadiance();
+  }
+
+  private updateSunRadiance(): void {
+    const radiance = this.painted && this.fullBrightness ? sunDiscRadiance(SUN_IRRADIANCE) : 0;
+    (this.mesh.material.uniforms.uSunRadiance.value as Vector3).fromArray(SUN_LIGHT_COLOR).multiplyScalar(radiance);
   }
 
   setSky(sky: CubeTexture): void {

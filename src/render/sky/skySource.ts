@@ -26,6 +26,7 @@ export class SkySource {
   /** Paints the sun's sky for this sun (nothing when it already shows it, or the sky is the user's). */
   paint(renderer: WebGLRenderer, sun: readonly [number, number, number]): void {
     this.sunSky?.update(renderer, sun);
+    this.background.setSun(sun, this.sunSky !== null);
   }
 
   /** A restored WebGL context gives render targets back empty: the sun's sky is painted again. */
@@ -41,6 +42,7 @@ export class SkySource {
     this.sunSky = null;
     this.custom = sky;
     this.background.setSky(sky);
+    this.background.setSun([0, 1, 0], false);
   }
 
   /** How many times the sun's sky has been painted (0 with a cube map of the user's). */

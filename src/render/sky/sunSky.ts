@@ -20,6 +20,7 @@ import {
 } from 'three';
 import vertexShader from '../../../shaders/skyDome.vert?raw';
 import fragmentShader from '../../../shaders/skyDome.frag?raw';
+import { resolveChunks } from '../shaders/shaderChunks';
 import { BELOW_HORIZON, CLOUD_LIT, CLOUD_SHADE, DUSK_HORIZON, DUSK_ZENITH, HORIZON, NIGHT_HORIZON, NIGHT_ZENITH, SUN, ZENITH, cloudDensityTile } from '../../sim/optics/skyPainter';
 import { SQUARE_ROOT_SKY } from './skyCubeUniforms';
 
@@ -65,7 +66,7 @@ export class SunSky {
     this.clouds.needsUpdate = true;
     this.material = new ShaderMaterial({
       vertexShader,
-      fragmentShader,
+      fragmentShader: resolveChunks(fragmentShader),
       side: BackSide,
       depthTest: false,
       depthWrite: false,

@@ -1,5 +1,6 @@
 import {
   ClampToEdgeWrapping,
+  CustomToneMapping,
   DepthTexture,
   HalfFloatType,
   LinearFilter,
@@ -87,6 +88,8 @@ class QuadPass extends Pass {
   }
 
   render(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget): void {
+    // A pass that writes what the canvas will show (ENCODE_OUTPUT) runs the renderer's curve itself, where that is ours (src/render/tone/wholeFrameToneCurve.ts).
+    if ('ENCODE_OUTPUT' in this.material.defines) setMaterialDefine(this.material, 'OCEANO_TONE_CURVE', renderer.toneMapping === CustomToneMapping);
     const target = this.prepare(readBuffer);
     this.needsSwap = target === 'composer';
     renderer.setRenderTarget(target !== 'composer' ? target : this.renderToScreen ? null : writeBuffer);

@@ -1,4 +1,5 @@
 import { TilingPerlinNoise } from '../noise/perlinNoise';
+import { SUN_DISC_COS_CORE, SUN_DISC_COS_EDGE } from './sunDisc';
 
 /**
  * A procedural sky, painted once into the six faces of a cube map: a gradient from a
@@ -95,7 +96,7 @@ export class SkyPainter {
       color = mix(color, lit, cover * 0.85);
     }
 
-    const sunDisc = smoothstep(0.99985, 0.99992, cosSun);
+    const sunDisc = smoothstep(SUN_DISC_COS_EDGE, SUN_DISC_COS_CORE, cosSun);
     return mix(color, [1, 1, 1], sunDisc);
   }
 

@@ -1,0 +1,21 @@
+// The sun's disc as the sky draws it (src/sim/optics/sunDisc.ts).
+#ifndef OCEANO_SUN_DISC
+#define OCEANO_SUN_DISC
+#include <oceano_constants>
+
+// Its soft edge, as the 8-bit sky cube holds it: how much of a pixel looking along `direction`
+// it covers, from its edge (SUN_DISC_COS_EDGE) to its core (SUN_DISC_COS_CORE).
+float sunDiscCoverage(vec3 direction, vec3 sun) {
+  // No disc once the sun's centre is below the horizon.
+  return smoothstep(SUN_DISC_COS_EDGE, SUN_DISC_COS_CORE, dot(direction, sun)) * step(0.0, sun.y);
+}
+
+// Its full brightness, which only the sky behind the scene draws (skyBackground.frag): within
+// the middle of that edge, SUN_DISC_COS_MID, the disc of the same solid angle (a smoothstep
+// averages one half over its ramp). Any pixel it covers at all is far brighter than white, so
+// it is not feathered: the soft edge outside it is the cube's.
+float insideSunDisc(vec3 direction, vec3 sun) {
+  return step(SUN_DISC_COS_MID, dot(direction, sun)) * step(0.0, sun.y);
+}
+
+#endif
