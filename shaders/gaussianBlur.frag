@@ -7,8 +7,9 @@
 // (src/render/underwater/gaussianKernel.ts: linearSampledKernel) and the sum is still the exact Gaussian.
 
 #include <oceano_constants>
-#ifdef ENCODE_OUTPUT
-#include <oceano_highlight_roll_off>
+#ifdef OCEANO_TONE_MAPPING
+// three.js's tone-mapping functions, which it leaves out of a pass into a render target.
+#include <tonemapping_pars_fragment>
 #endif
 
 uniform sampler2D tDiffuse;
@@ -35,13 +36,13 @@ void main() {
 #endif
 #ifdef ENCODE_OUTPUT
   // The last pass, into RGBA8 for the composite: the water colour already as the canvas will
-  // hold it (through the renderer's tone curve where it has ours, OCEANO_TONE_CURVE, then sRGB,
-  // clipped at 1 as the canvas clips it), premultiplied again so that the composite's bilinear
-  // upsample still weighs each texel by its share of water. The composite then only divides:
-  // the curve and the encoding's pow ran for every canvas pixel there, four times as many as here.
+  // hold it (through the renderer's tone curve, OCEANO_TONE_MAPPING naming its function, then
+  // sRGB, clipped at 1 as the canvas clips it), premultiplied again so that the composite's
+  // bilinear upsample still weighs each texel by its share of water. The composite then only
+  // divides: the curve and the encoding ran for every canvas pixel there, four times as many as here.
   vec3 water = sum.rgb / max(sum.a, 1e-6);
-#ifdef OCEANO_TONE_CURVE
-  water = rollOffHighlights(water);
+#ifdef OCEANO_TONE_MAPPING
+  water = OCEANO_TONE_MAPPING(water);
 #endif
   water = clamp(water, 0.0, 1.0);
   gl_FragColor = vec4(sRGBTransferOETF(vec4(water, 1.0)).rgb * sum.a, sum.a);

@@ -125,3 +125,33 @@ describe('a camera moved in place is captured again', () => {
     expect(changedFrames).toBeGreaterThan(30);
   });
 });
+
+describe('a compare strip draws the nearest band split as the model alone does', () => {
+  it('uploads the same split chunks as tiles or whole; the strip\'s tiles are only for unsplit bands (control: no split in strips draws the 2 m grid)', () => {
+    const step: Step = {
+      position: [0, 1.2, 10],
+      target: [30, 0, -60],
+      fov: 30,
+      settings: { lodDistance: 100, lodBands: 3, lodBruteForce: false, freezeCulling: false, lodMorph: true },
+      bounds: { vertical: 1.5, horizontal: 1 },
+    };
+    const alone = chunks();
+    alone.update(camera(step), step.settings, step.bounds, false, 4);
+    const strip = chunks();
+    strip.update(camera(step), step.settings, step.bounds, true, 4);
+    const refinedOf = (ocean: OceanChunks) => (ocean as unknown as { refined: Map<number, { count: number; record(n: number): number[] }> }).refined.get(4);
+    /** The split nearest band's records (its quads 2 m / 4), as the frame uploads them. */
+    const records = (ocean: OceanChunks) => {
+      const batch = refinedOf(ocean);
+      return batch ? Array.from({ length: batch.count }, (_, n) => batch.record(n).join(',')).join('|') : '';
+    };
+    expect(records(alone).length).toBeGreaterThan(0);
+    expect(records(strip)).toBe(records(alone));
+    // The strip still tiles the coarser bands' straddling chunks: the tiling is not switched off wholesale.
+    expect(uploaded(strip)).not.toBe(uploaded(alone));
+    // Control: a strip drawn with no split (what strips did) has no split chunk at all.
+    const unsplit = chunks();
+    unsplit.update(camera(step), step.settings, step.bounds, true, 1);
+    expect(records(unsplit)).not.toBe(records(alone));
+  });
+});

@@ -5,6 +5,7 @@ import { compareModelNames, compareStrips, type Strip } from '../../sim/compare/
 import type { PassTiming } from '../diagnostics/passTiming';
 import { applyLook, type Ocean } from '../ocean/ocean';
 import { CompareSide } from './compareSide';
+import { BASE_STEP, nearBandRefinement } from '../../sim/lod/lodBands';
 
 /**
  * compare=a,b[,c]: the models after the first drawn side by side with the ocean's own, each
@@ -79,7 +80,7 @@ export class CompareRenderer {
       if (i === 0) this.ocean.cull(stripCamera, this.stripCulling);
       else {
         const side = this.sides[i - 1];
-        side.chunks.update(stripCamera, this.ocean.lodSettings, this.ocean.grownByWake(side.bounds()), this.stripCulling);
+        side.chunks.update(stripCamera, this.ocean.lodSettings, this.ocean.grownByWake(side.bounds()), this.stripCulling, nearBandRefinement(side.view.finestVertexStep ?? BASE_STEP));
       }
     });
   }

@@ -88,7 +88,8 @@ export class OceanChunks {
    * `bounds`: how far the waves can move a vertex up or down and sideways (WaveModel.bounds()), metres.
    * `tiles` (a compare strip's camera): chunks straddling the frustum are drawn as the tiles that reach it (see StripTiles).
    * `refine`: how many times per side the nearest band's quads are split (src/sim/lod/lodBands.ts
-   * nearBandRefinement), for a sea whose short steep waves the 2 m grid cannot draw; not in compare strips.
+   * nearBandRefinement), for a sea whose short steep waves the 2 m grid cannot draw. A compare
+   * strip draws its split chunks whole rather than as tiles, so it draws them as the model alone does.
    */
   update(camera: PerspectiveCamera, settings: LodSettings, bounds: DisplacementBounds, tiles = false, refine = 1): void {
     const view = this.view;
@@ -105,7 +106,6 @@ export class OceanChunks {
     input.bruteForce = settings.lodBruteForce;
     // A still camera over an unchanged sea chooses the same chunks: the last frame's
     // selection and uploads stand, and the frame's CPU work is only this comparison.
-    if (tiles) refine = 1;
     if (this.sameSelectionAsLastFrame(settings, tiles, refine)) return;
     selector.select(input);
     this.material.setLodMorph(view.eye, bounds.vertical, morphZones(settings.lodDistance, this.bandsInUse, settings.lodMorph, this.zones));
@@ -121,8 +121,9 @@ export class OceanChunks {
       const j = (leaf - i) / side;
       const x = originX + i * CHUNK_SIZE;
       const z = originZ + j * CHUNK_SIZE;
-      if (tiles && this.tiles.add(view.planes, band, x, z, selector.edgeSteps, n * 4, bounds)) continue;
-      if (band === 0 && refine > 1) {
+      const split = band === 0 && refine > 1;
+      if (tiles && !split && this.tiles.add(view.planes, band, x, z, selector.edgeSteps, n * 4, bounds)) continue;
+      if (split) {
         for (let e = 0; e < 4; e++) this.refinedEdges[e] = refinedEdgeStep(selector.edgeSteps[n * 4 + e], refine);
         nearBand.add(x, z, 0, BASE_STEP / refine, this.refinedEdges, 0);
       } else this.batches[band].add(x, z, band, BASE_STEP, selector.edgeSteps, n * 4);

@@ -1,6 +1,12 @@
 import {
   ClampToEdgeWrapping,
+  ACESFilmicToneMapping,
+  AgXToneMapping,
+  CineonToneMapping,
   CustomToneMapping,
+  LinearToneMapping,
+  NeutralToneMapping,
+  ReinhardToneMapping,
   DepthTexture,
   HalfFloatType,
   LinearFilter,
@@ -15,6 +21,7 @@ import {
   type IUniform,
   type PerspectiveCamera,
   type Scene,
+  type ToneMapping,
   type WebGLRenderer,
 } from 'three';
 import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
@@ -88,8 +95,8 @@ class QuadPass extends Pass {
   }
 
   render(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget): void {
-    // A pass that writes what the canvas will show (ENCODE_OUTPUT) runs the renderer's curve itself, where that is ours (src/render/tone/wholeFrameToneCurve.ts).
-    if ('ENCODE_OUTPUT' in this.material.defines) setMaterialDefine(this.material, 'OCEANO_TONE_CURVE', renderer.toneMapping === CustomToneMapping);
+    // A pass that writes what the canvas will show (ENCODE_OUTPUT) runs the renderer's tone curve itself.
+    if ('ENCODE_OUTPUT' in this.material.defines) setToneMappingDefine(this.material, renderer.toneMapping);
     const target = this.prepare(readBuffer);
     this.needsSwap = target === 'composer';
     renderer.setRenderTarget(target !== 'composer' ? target : this.renderToScreen ? null : writeBuffer);
@@ -100,6 +107,26 @@ class QuadPass extends Pass {
     this.material.dispose();
     this.quad.dispose();
   }
+}
+
+/** three.js's tone-mapping functions (its tonemapping_pars_fragment chunk), by the renderer's setting. */
+const TONE_MAPPING_FUNCTIONS: Readonly<Record<number, string>> = {
+  [LinearToneMapping]: 'LinearToneMapping',
+  [ReinhardToneMapping]: 'ReinhardToneMapping',
+  [CineonToneMapping]: 'CineonToneMapping',
+  [ACESFilmicToneMapping]: 'ACESFilmicToneMapping',
+  [CustomToneMapping]: 'CustomToneMapping',
+  [AgXToneMapping]: 'AgXToneMapping',
+  [NeutralToneMapping]: 'NeutralToneMapping',
+};
+
+/** OCEANO_TONE_MAPPING: the name of the renderer's tone-mapping function, absent for none; a change recompiles. */
+function setToneMappingDefine(material: ShaderMaterial, toneMapping: ToneMapping): void {
+  const wanted = TONE_MAPPING_FUNCTIONS[toneMapping];
+  if (material.defines.OCEANO_TONE_MAPPING === wanted) return;
+  if (wanted === undefined) delete material.defines.OCEANO_TONE_MAPPING;
+  else material.defines.OCEANO_TONE_MAPPING = wanted;
+  material.needsUpdate = true;
 }
 
 function blurMaterial(name: string, step: Vector2, encodeOutput = false): ShaderMaterial {
