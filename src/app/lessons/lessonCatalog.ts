@@ -39,6 +39,8 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'reflection', preset: 'still-ocean' },
   { id: 'fresnel', preset: 'fresnel' },
   { id: 'fresnel-schlick', preset: 'fresnel', params: { fresnel: false } },
+  // From 20 m up towards a 25° sun: the glitter's centre, 43 m ahead, in the middle of the view.
+  { id: 'sun-glint', params: { waves: 'fft', windSpeed: 5, sunElevation: 25, sunAzimuth: 20 }, camera: { position: [0, 20, 0], target: [14.7, 0, -40.4] } },
   {
     id: 'boat-twin',
     preset: 'boat-pitch',

@@ -20,6 +20,7 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   reflection: { file: 'shaders/ocean.frag', from: 'vec3 r = reflect(-v, n);', to: 'vec3 sky = skyCubeColorRough(r, roughness);' },
   fresnel: { file: 'src/sim/optics/fresnel.ts', from: 'export function fresnelReflectance(', to: 'return 0.5 * (rs * rs + rp * rp);' },
   'fresnel-schlick': { file: 'src/sim/optics/fresnel.ts', from: 'export function schlickReflectance(', to: '}' },
+  'sun-glint': { file: 'shaders/highlightRollOff.glsl', from: 'vec3 rollOffHighlights(vec3 c) {', to: '}' },
   'boat-twin': { file: 'src/sim/waves/seed/seedSurface.ts', from: 'export function swellHeight(state: SurfaceState', to: 'return state.swellAmplitude * (first' },
   'boat-pitch': { file: 'src/sim/boat/boatPose.ts', from: 'const points = hullSamplePoints(', to: 'roll: Math.atan2(' },
   'snell-window': { file: 'shaders/ocean.frag', from: 'vec3 shadeFromBelow(vec3 v, vec3 n) {', to: 'float reflectance = uFresnelEnabled ? fresnelLookup(uFresnelFromBelow' },

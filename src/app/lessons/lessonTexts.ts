@@ -112,6 +112,15 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
     },
     math: m('<mi>F</mi><mo>≈</mo><msub><mi>R</mi><mn>0</mn></msub><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><msub><mi>R</mi><mn>0</mn></msub><mo>)</mo><msup><mrow><mo>(</mo><mn>1</mn><mo>−</mo><mi>cos</mi><mi>θ</mi><mo>)</mo></mrow><mn>5</mn></msup>') + m('<msub><mi>R</mi><mn>0</mn></msub><mo>=</mo><msup><mrow><mo>(</mo><mfrac><mrow><mi>n</mi><mo>−</mo><mn>1</mn></mrow><mrow><mi>n</mi><mo>+</mo><mn>1</mn></mrow></mfrac><mo>)</mo></mrow><mn>2</mn></msup><mo>=</mo><mn>0.0204</mn>'),
   },
+  'sun-glint': {
+    text: {
+      en: 'The sun’s glitter is the sun seen in countless tilted facets. Cox and Munk photographed it from the air in 1951 and found the facets’ mean-square slope σ² = 0.003 + 0.00512 U: raise the wind and the glitter widens. The shader reflects the sun through a Beckmann distribution of that σ², less the slopes the waves already draw. The sun is far brighter than a screen’s white, so the whole frame goes through one tone curve: colours below k = 0.6 stay as they are, brighter ones roll off towards white instead of clipping.',
+      es: 'El destello es el sol visto en incontables facetas inclinadas. Cox y Munk lo fotografiaron desde el aire en 1951 y hallaron que la pendiente cuadrática media de las facetas es σ² = 0,003 + 0,00512 U: sube el viento y el destello se ensancha. El shader refleja el sol con una distribución de Beckmann de esa σ², menos las pendientes que las olas ya dibujan. El sol brilla mucho más que el blanco de una pantalla, así que todo el cuadro pasa por una sola curva de tono: los colores por debajo de k = 0,6 quedan igual y los más brillantes se acercan al blanco en lugar de recortarse.',
+    },
+    math:
+      m('<msup><mi>σ</mi><mn>2</mn></msup><mo>=</mo><mn>0.003</mn><mo>+</mo><mn>5.12</mn><mo>·</mo><msup><mn>10</mn><mrow><mo>−</mo><mn>3</mn></mrow></msup><mi>U</mi>') +
+      m('<mi>f</mi><mo>(</mo><mi>c</mi><mo>)</mo><mo>=</mo><mi>k</mi><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo><mo>(</mo><mn>1</mn><mo>−</mo><msup><mi>e</mi><mrow><mo>−</mo><mo>(</mo><mi>c</mi><mo>−</mo><mi>k</mi><mo>)</mo><mo>/</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo></mrow></msup><mo>)</mo>'),
+  },
   'boat-twin': {
     text: {
       en: 'The GPU moves the vertices, but it cannot tell the page where the water is. So the displacement function is written twice: in GLSL for the picture and in TypeScript for the CPU, with the same phases and the same heightmaps. A test reads the shader’s heights back from the GPU and compares them with this twin. The boat floats on the twin’s heights, taken at the five points marked on its hull.',
