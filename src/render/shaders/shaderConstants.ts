@@ -2,7 +2,7 @@ import { WATER_IOR } from '../../sim/optics/fresnel';
 import { SUN_IRRADIANCE } from '../../sim/optics/sun';
 import { HIGHLIGHT_KNEE } from '../../sim/optics/highlightRollOff';
 import { AEROSOL_SCALE_HEIGHT } from '../../sim/optics/haze';
-import { SUN_DISC_COS_CORE, SUN_DISC_COS_EDGE, SUN_DISC_COS_MID, SUN_DISC_SLOPE_VARIANCE, sunDiscRadiance } from '../../sim/optics/sunDisc';
+import { SUN_DISC_COS_CORE, SUN_DISC_COS_EDGE, SUN_DISC_COS_MID, SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/sunDisc';
 import { bodyColor } from '../../sim/optics/waterColor';
 import { crestScattering, PARTICLE_MEAN_COSINE } from '../../sim/optics/subsurfaceGlow';
 import { BLUR_MAX_TAPS } from '../underwater/blurLimits';
@@ -45,7 +45,6 @@ export function shaderConstantsChunk(): string {
     `#define SUN_DISC_COS_EDGE ${glslFloat(SUN_DISC_COS_EDGE)}`,
     `#define SUN_DISC_COS_CORE ${glslFloat(SUN_DISC_COS_CORE)}`,
     `#define SUN_DISC_COS_MID ${glslFloat(SUN_DISC_COS_MID)}`,
-    `#define SUN_DISC_RADIANCE ${glslFloat(sunDiscRadiance(SUN_IRRADIANCE))}`,
     `#define WATER_BODY_REFLECTANCE ${glslVec3(bodyColor())}`,
     `#define SUBSURFACE_SCATTER ${glslVec3(crestScattering())}`,
     `#define HENYEY_GREENSTEIN vec3(${[(1 - PARTICLE_MEAN_COSINE ** 2) / (4 * Math.PI), 1 + PARTICLE_MEAN_COSINE ** 2, 2 * PARTICLE_MEAN_COSINE].map(glslFloat).join(', ')})`,
