@@ -3,7 +3,7 @@
 // also writes the frames; the second argument is added to the view's query (e.g. "&waveGroups=0").
 import { writeFileSync } from 'node:fs';
 import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
-import { whiteShare } from '../../tests/browser/light/glintMeasure';
+import { measureFoam, solidFoamLevels } from '../../tests/browser/light/foamMeasure';
 import { FOAM_VIEW, foamQuery } from '../../tests/browser/light/lightViews';
 import { whitecapCoverage } from '../../src/sim/waves/fft/whitecaps';
 
@@ -21,7 +21,7 @@ try {
       }, t);
       const png = await canvasPng(page);
       if (out) writeFileSync(`${out}/foam-${wind}-t${t}.png`, png);
-      white.push(whiteShare(png));
+      white.push(measureFoam(png, solidFoamLevels(FOAM_VIEW.sunElevation)).white);
     }
     const mean = white.reduce((a, b) => a + b, 0) / white.length;
     console.log(JSON.stringify({ wind, white: mean, instants: white, monahan: whitecapCoverage(wind), ratio: mean / whitecapCoverage(wind) }));

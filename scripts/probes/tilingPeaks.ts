@@ -3,13 +3,14 @@
 // wind and measure: `tsx scripts/probes/tilingPeaks.ts ALTITUDE WIND foam|picture [breakupOff|groupsOff|-] [MIN_LAG_METRES]`.
 // breakupOff: the breakup field repeating with the smallest tile (the test's control); groupsOff: waveGroups=0.
 // WAVES=seed|gerstner measures another wave model (default fft); EXTRA_QUERY is added to the query.
-// "foam": pixels brighter than 190; "picture": the luminance itself; "detail": the luminance less
+// "foam": the pixels that read as white foam (tests/browser/light/foamMeasure.ts foamMask); "picture": the luminance itself; "detail": the luminance less
 // its mean over a box 2·HIGHPASS_METRES wide (default 40 m), so the glint's and the sky's broad
 // gradients drop out and what is left is the waves' own pattern.
 import { canvasPng, openOcean, startHarness } from '../../tests/browser/harness';
 import { autocorrelation, peakBeyond, type Autocorrelation } from '../../tests/support/autocorrelation';
 import { highPass } from '../../tests/support/highPass';
 import { pngLuminances } from '../../tests/support/luminance';
+import { foamMask, solidFoamLevels } from '../../tests/browser/light/foamMeasure';
 
 const [altitude = '1500', wind = '10', measure = 'foam', fault = '', minLag = '50'] = process.argv.slice(2);
 const width = 640;
@@ -25,8 +26,8 @@ try {
       window.oceano.pause();
       window.oceano.setTime(time);
     }, t);
-    const luminances = pngLuminances(await canvasPng(page));
-    const values = measure === 'foam' ? luminances.map((luma) => (luma > 190 ? 1 : 0)) : luminances;
+    const png = await canvasPng(page);
+    const values = measure === 'foam' ? foamMask(png, solidFoamLevels(30)) : pngLuminances(png);
     if (measure === 'detail') highPass(values, width, height, Math.round(Number(process.env.HIGHPASS_METRES ?? 40) / metresPerPixel));
     correlations.push(autocorrelation(values, width, height));
   }

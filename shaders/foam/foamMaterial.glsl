@@ -5,15 +5,13 @@
 // there, so the lace is drawn out into streaks, and pushed about by a field that never repeats,
 // so neither does the tile. Foam is a rough, bright,
 // nearly diffuse surface: lit by the sun on its own bumpy normal and by the sky, with a wet
-// sheen from a rough microfacet lobe, off-white (sea foam reflects less red than blue: Frouin,
-// Schwindling & Deschamps 1996, J. Geophys. Res. 101(C6)).
+// sheen from a rough microfacet lobe. Its reflectance, FOAM_REFLECTANCE, is measured foam's:
+// 0.55, a little less in the red (src/sim/optics/foamReflectance.ts).
 uniform sampler2D uFoamDetail;
 uniform float uFoamDensityMean; // the detail tile's mean density, read back once it is drawn (foamDetail.ts)
 uniform vec2 uWindDirection;   // unit (x, z) the wind blows towards
 uniform vec2 uRenderOrigin;    // the render origin (ocean.vert): only its place within a tile matters
 
-// Foam's reflectance (fresh whitecaps about 0.5–0.6 in the visible, Whitlock, Bartlett & Gurganus 1982; less in the red).
-const vec3 FOAM_ALBEDO = vec3(0.72, 0.77, 0.80);
 // The wet sheen: mean-square slope of the bubbles' facets, and water's Fresnel at normal incidence.
 const float FOAM_SHEEN_VARIANCE = 0.3;
 const float FOAM_SHEEN_FRESNEL = 0.02;
@@ -65,6 +63,6 @@ vec3 foamOver(vec3 color, float amount, vec3 n, vec3 v, vec2 p) {
   float cosH = max(dot(h, nf), 0.05);
   float tan2 = (1.0 - cosH * cosH) / (cosH * cosH);
   float sheen = FOAM_SHEEN_FRESNEL * exp(-tan2 / FOAM_SHEEN_VARIANCE) / (3.14159265 * FOAM_SHEEN_VARIANCE * cosH * cosH * cosH * cosH * 4.0 * max(dot(nf, v), 0.05));
-  vec3 foam = FOAM_ALBEDO * (sunLight + skyLight) / 3.14159265 + uSunColor * SUN_IRRADIANCE * sheen * sunUp;
+  vec3 foam = FOAM_REFLECTANCE * (sunLight + skyLight) / 3.14159265 + uSunColor * SUN_IRRADIANCE * sheen * sunUp;
   return mix(color, foam, cover);
 }

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
+import { foamWhiteFrom, solidFoamLevels } from './light/foamMeasure';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
@@ -32,23 +33,29 @@ function seaStatistics(png: Buffer): { mean: number; std: number; energy: number
   return { mean, std: Math.sqrt(squares / n - mean * mean), energy: highFrequencyEnergy(data, image.width, rows) };
 }
 
+/** Solid foam's levels under the default sun (18° high), from foam's measured reflectance. */
+const SOLID_FOAM = solidFoamLevels(18);
+
 /**
- * Share of white sea pixels (bright and grey) in the left half of the frame: the sun (azimuth
- * 20°) puts its glitter, white too, in the right half.
+ * Share of white sea pixels (bright and grey, foam at least 70 % of the pixel: foamMeasure.ts) in
+ * the left half of the frame below its middle: the sun (azimuth 20°) puts its glitter, white too, in the right half.
  */
 function whiteShare(png: Buffer): number {
   const image = PNG.sync.read(png);
   const top = Math.round(image.height * 0.55);
   const right = Math.round(image.width / 2);
-  let white = 0;
+  const darkest: number[] = [];
+  const spreads: number[] = [];
   for (let y = top; y < image.height; y++) {
     for (let x = 0; x < right; x++) {
       const i = 4 * (y * image.width + x);
       const [r, g, b] = [image.data[i], image.data[i + 1], image.data[i + 2]];
-      if (Math.min(r, g, b) > 170 && Math.max(r, g, b) - Math.min(r, g, b) < 40) white++;
+      darkest.push(Math.min(r, g, b));
+      spreads.push(Math.max(r, g, b) - Math.min(r, g, b));
     }
   }
-  return white / (right * (image.height - top));
+  const from = foamWhiteFrom(darkest.slice().sort((a, b) => a - b)[Math.floor(darkest.length / 2)], SOLID_FOAM);
+  return darkest.filter((level, i) => level > from && spreads[i] < 40).length / darkest.length;
 }
 
 async function frameAt(page: Page, t: number): Promise<Buffer> {
@@ -124,13 +131,12 @@ describe('waves=fft picture', () => {
     await page.evaluate(() => window.oceano.setParams({ foam: true, foamThreshold: -0.1 }));
     const biased = await meanWhite();
     console.log(`[oceano] white share of the sea at 15 m/s: foam ${(withFoam * 100).toFixed(2)} %, foam=false ${(without * 100).toFixed(2)} %, threshold −0.1 ${(biased * 100).toFixed(2)} %`);
-    // Measured: 2.1 % of the left half's sea pixels white with foam (0.05, 0.10, 8.3, 0.01 % at
-    // the four instants: a group passes close at t = 70 s), 0.16 % without (the glitter of a
-    // steep face reaching the left half at one instant). This low camera sees the foam foreshortened, and far off as thin lace;
-    // seen from 150 m above the same foam covers Monahan's share within 30 %
-    // (tests/browser/light/foam.test.ts). The thresholds biased 0.1 lower, 0.39 %, are the planted
-    // fault the lower bound catches; the upper one, 3× Monahan's 3.9 %, says that the sea has
-    // not turned white altogether.
+    // Measured: 4.06 % of the left half's sea pixels white with foam (a group passes close at
+    // t = 70 s), 0.09 % without (the glitter of a steep face reaching the left half at one
+    // instant). This low camera sees the foam foreshortened, and far off as thin lace; seen from
+    // 150 m above the same foam covers Monahan's share within 30 % (tests/browser/light/foam.test.ts).
+    // The thresholds biased 0.1 lower, 0.58 %, are the planted fault the lower bound catches; the
+    // upper one, 3× Monahan's 3.9 %, says that the sea has not turned white altogether.
     expect(withFoam).toBeGreaterThan(0.01);
     expect(withFoam).toBeLessThan(0.12);
     expect(without).toBeLessThan(0.005);

@@ -31,6 +31,10 @@ export interface ShadingFixes {
   farLace: boolean;
   /** Foam's edges feathered: thinning foam shows only the densest lace (shaders/foam/foamMaterial.glsl foamOver); off, every foam is solid above half its thickness and absent below, cut along a hard line. */
   featheredEdges: boolean;
+  /** Foam reflects what measured foam reflects (src/sim/optics/foamReflectance.ts); off: the brighter albedo drawn before, (0.72, 0.77, 0.80), above every measurement. */
+  foamReflectance: boolean;
+  /** Foam lit by the sky's colour (shaders/foam/foamMaterial.glsl foamOver); off: by the sky's luminance alone, as a grey ambient light. */
+  foamSkyColour: boolean;
   /** The subsurface glow only where the surface is a crest (shaders/subsurface.glsl), not on every wave alike. */
   subsurfaceCrests: boolean;
   /** The water's colour as its optics give it; off: 3 % brighter, the smallest change the reference comparison must catch. */
@@ -107,6 +111,13 @@ const HARD_FOAM_EDGES: ShaderFault = {
     ['clamp(amount * density / uFoamDensityMean, 0.0, 1.0)', 'step(0.5, amount)'],
   ],
 };
+/** Foam as bright as the albedo it was drawn with before its reflectance was measured foam's. */
+const BRIGHTER_FOAM: ShaderFault = { name: 'brighter-foam', fragment: [['vec3 foam = FOAM_REFLECTANCE *', 'vec3 foam = vec3(0.72, 0.77, 0.80) *']] };
+/** Foam lit by a grey sky of the sky's luminance: no blue from above. */
+const GREY_SKY_ON_FOAM: ShaderFault = {
+  name: 'grey-sky-on-foam',
+  fragment: [['vec3 skyLight = 3.14159265 * skyCubeColor(normalize(nf + vec3(0.0, 1.0, 0.0)));', 'vec3 skyLight = vec3(3.14159265 * dot(skyCubeColor(normalize(nf + vec3(0.0, 1.0, 0.0))), vec3(0.2126, 0.7152, 0.0722)));']],
+};
 /** The subsurface glow on every pixel alike, crest or trough. */
 const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
 /** The water's own colour 3 % brighter. */
@@ -154,6 +165,8 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(SINGLE_TILES, waves === 'fft' ? fixes.tileCopies : true);
   toggle(SMOOTH_FAR_FOAM, fixes.farLace);
   toggle(HARD_FOAM_EDGES, fixes.featheredEdges);
+  toggle(BRIGHTER_FOAM, fixes.foamReflectance);
+  toggle(GREY_SKY_ON_FOAM, fixes.foamSkyColour);
   toggle(GLOW_EVERYWHERE, fixes.subsurfaceCrests);
   toggle(BRIGHTER_WATER, fixes.exactWaterColour);
   const ocean = view.ocean;

@@ -43,14 +43,3 @@ export function meanChange(a: Buffer, b: Buffer, top: number, bottom: number): n
   }
   return count === 0 ? 0 : sum / count;
 }
-
-/** Share of near-white pixels (every channel above 170, grey within 40 levels): foam, seen where no glint is in view. */
-export function whiteShare(png: Buffer): number {
-  const image = PNG.sync.read(png);
-  let white = 0;
-  for (let i = 0; i < image.width * image.height; i++) {
-    const [r, g, b] = [image.data[4 * i], image.data[4 * i + 1], image.data[4 * i + 2]];
-    if (Math.min(r, g, b) > 170 && Math.max(r, g, b) - Math.min(r, g, b) < 40) white++;
-  }
-  return white / (image.width * image.height);
-}

@@ -38,17 +38,17 @@ export function horizonQuery(windSpeed: number, waves: 'fft' | 'seed' | 'gerstne
  * outside the 55° frame. Four instants 30 s apart: in a gale the frame holds only a few of the
  * whitecaps' groups (foamBreakup.ts), and one instant's white share scatters by ±30 %.
  */
-export const FOAM_VIEW = { width: 480, height: 270, t: 10, times: [10, 40, 70, 100] } as const;
+export const FOAM_VIEW = { width: 480, height: 270, t: 10, sunElevation: 30, times: [10, 40, 70, 100] } as const;
 
 export function foamQuery(windSpeed: number): string {
-  return `waves=fft&windSpeed=${windSpeed}&sunElevation=30&t=${FOAM_VIEW.t}&cam=0,150,0,0,0,-0.01`;
+  return `waves=fft&windSpeed=${windSpeed}&sunElevation=${FOAM_VIEW.sunElevation}&t=${FOAM_VIEW.t}&cam=0,150,0,0,0,-0.01`;
 }
 
 /** The sea seen from 400 m straight above, for the foam's repeat: 640 × 360 px, 1.16 m a pixel; four instants 30 s apart. */
-export const TILING_VIEW = { width: 640, height: 360, altitude: 400, times: [10, 40, 70, 100] } as const;
+export const TILING_VIEW = { width: 640, height: 360, altitude: 400, sunElevation: 30, times: [10, 40, 70, 100] } as const;
 
 export function tilingQuery(windSpeed: number): string {
-  return `waves=fft&windSpeed=${windSpeed}&sunElevation=30&t=${TILING_VIEW.times[0]}&cam=0,${TILING_VIEW.altitude},0,0,0,-0.01`;
+  return `waves=fft&windSpeed=${windSpeed}&sunElevation=${TILING_VIEW.sunElevation}&t=${TILING_VIEW.times[0]}&cam=0,${TILING_VIEW.altitude},0,0,0,-0.01`;
 }
 
 /** Metres per pixel of TILING_VIEW: looking straight down, the sea plane is parallel to the picture, so the scale is the same everywhere. */
