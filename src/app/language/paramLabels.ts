@@ -29,6 +29,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   windrows: 'Hileras de espuma',
   subsurface: 'Brillo bajo la superficie',
   visibility: 'Visibilidad (calima)',
+  exposure: 'Exposición',
   normalsCompare: 'Comparar normales de pendiente | fabricadas',
   seed: 'Semilla del ruido',
   swellAmplitude: 'Amplitud del oleaje',

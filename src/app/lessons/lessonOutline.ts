@@ -46,7 +46,7 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'reflection': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'fresnel', 'seaRoughness', 'skyBlur'] },
   'fresnel': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
   'fresnel-schlick': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
-  'sun-glint': { section: 'optics', controls: ['windSpeed', 'seaRoughness', 'sunElevation'] },
+  'sun-glint': { section: 'optics', controls: ['windSpeed', 'seaRoughness', 'sunElevation', 'exposure'] },
   'boat-twin': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatResponse'], legend: 'hullPoints' },
   'boat-pitch': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatHeading'], legend: 'hullPoints' },
   'snell-window': { section: 'underwater', controls: ['fresnel', 'blurStrength'], legend: 'snellWindow' },

@@ -123,6 +123,7 @@ export class OceanView {
     if (changed(...LOOK_KEYS)) this.compare?.applyLook(params);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor')) this.lights.update(sunDirection(params.sunElevation, params.sunAzimuth), params.waterColor);
     if (changed('view')) this.showFigure = params.view !== 'ocean';
+    if (changed('exposure')) this.renderer.toneMappingExposure = 2 ** params.exposure;
     // The teaching views' code is fetched the first time one is shown; until then the frame is clear.
     if (this.showFigure) {
       this.figureLoad ??= import('../teaching/teachingFigure').then(

@@ -95,6 +95,10 @@ export const paramDefs = {
   // How far a dark object can be told from the horizon (Koschmieder's 2 % contrast): the haze
   // between the eye and the sea (src/sim/optics/haze.ts). 20 km: a clear day at sea.
   visibility: { kind: 'number', default: 20, min: 1, max: 60, step: 0.5, unit: 'km', label: 'Visibility (haze)' },
+  // A camera's exposure, in stops: the frame's light is multiplied by 2^exposure before the
+  // tone curve (src/render/tone/wholeFrameToneCurve.ts), so −1 halves it and the glint's core
+  // stays white while the sea beside it darkens.
+  exposure: { kind: 'number', default: 0, min: -3, max: 3, step: 0.1, unit: 'EV', label: 'Exposure' },
   wireframe: { kind: 'boolean', default: false, label: 'Wireframe' },
   boatSpeed: { kind: 'number', default: 0, min: -3, max: 12, step: 0.1, unit: 'm/s', label: 'Boat speed' },
   boatHeading: { kind: 'number', default: 290, min: 0, max: 360, step: 1, unit: '°', label: 'Boat heading' },

@@ -23,6 +23,10 @@ import { SUN_DISC_SOLID_ANGLE } from '../../../src/sim/optics/sunDisc';
  * The sun: the disc's pixels white (every channel 250 or more), about as many as its solid
  * angle covers. Control: the disc only as bright as the 8-bit cube holds it (white, 1), which
  * the curve shows as 0.85 (239 levels): no white pixel.
+ *
+ * The exposure: the `exposure` parameter multiplies the light by 2^exposure before the curve, so
+ * the same sky pixels match the painter's colour at half and at twice its light. Control: the
+ * picture drawn at exposure 0, which a view that ignored the parameter would draw, against half.
  */
 const harness = useHarness();
 const W = 640;
@@ -47,7 +51,8 @@ interface SkyFit {
   whiteDisc: number;
 }
 
-function fitSky(png: PNG): SkyFit {
+/** The sky against the painter's colour times `gain` (the exposure's 2^EV) through the curve. */
+function fitSky(png: PNG, gain = 1): SkyFit {
   const painter = new SkyPainter(SUN);
   const differences: number[] = [];
   let whiteDisc = 0;
@@ -63,7 +68,7 @@ function fitSky(png: PNG): SkyFit {
       }
       const linear = painter.color(ray).map(srgbToLinear);
       if (Math.max(...linear) < BRIGHT) continue;
-      differences.push(Math.max(...[0, 1, 2].map((c) => Math.abs(png.data[o + c] - srgbLevel(rollOffHighlight(linear[c]))))));
+      differences.push(Math.max(...[0, 1, 2].map((c) => Math.abs(png.data[o + c] - srgbLevel(rollOffHighlight(gain * linear[c]))))));
     }
   }
   differences.sort((a, b) => a - b);
@@ -94,6 +99,26 @@ describe('the whole frame through one tone curve', () => {
     expect(clipped.offCurve, say).toBeGreaterThan(MAX_OFF_CURVE);
     expect(curve.whiteDisc, say).toBeGreaterThan(0.7 * DISC_PIXELS);
     expect(dimSun.whiteDisc, say).toBe(0);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it('multiplies the light by 2^exposure before the curve, at −1 and +1 stop; control: the picture at 0 stops is off half the light', { timeout: 180_000 }, async () => {
+    const { page, consoleErrors } = await openOcean(harness, QUERY, W, H);
+    await page.evaluate(() => window.oceano.pause());
+    const shotAt = async (exposure: number) => {
+      await page.evaluate((ev) => window.oceano.setParams({ exposure: ev }), exposure);
+      return PNG.sync.read(await canvasPng(page));
+    };
+    const darker = fitSky(await shotAt(-1), 0.5);
+    const brighter = fitSky(await shotAt(1), 2);
+    const ignored = fitSky(await shotAt(0), 0.5);
+    const say = `exposure −1: ${darker.offCurve.toFixed(2)} levels off (${darker.pixels} px), +1: ${brighter.offCurve.toFixed(2)}; the picture at 0 against half the light: ${ignored.offCurve.toFixed(2)}`;
+    console.log(`[oceano] ${say}`);
+    expect(darker.pixels, say).toBeGreaterThan(300);
+    expect(darker.offCurve, say).toBeLessThan(MAX_OFF_CURVE);
+    expect(brighter.offCurve, say).toBeLessThan(MAX_OFF_CURVE);
+    expect(ignored.offCurve, say).toBeGreaterThan(MAX_OFF_CURVE);
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
