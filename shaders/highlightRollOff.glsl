@@ -12,4 +12,10 @@ vec3 rollOffHighlights(vec3 c) {
   return min(c, HIGHLIGHT_KNEE) + (1.0 - HIGHLIGHT_KNEE) * (1.0 - exp(-over));
 }
 
+// Its inverse: the light the curve shows as y, for y below white (kept under 0.9999 of it).
+vec3 unrollHighlights(vec3 y) {
+  vec3 over = max(y - HIGHLIGHT_KNEE, 0.0) / (1.0 - HIGHLIGHT_KNEE);
+  return min(y, HIGHLIGHT_KNEE) - (1.0 - HIGHLIGHT_KNEE) * log(1.0 - min(over, 0.9999));
+}
+
 #endif

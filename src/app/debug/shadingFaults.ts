@@ -43,6 +43,8 @@ export interface ShadingFixes {
   wholeFrameToneCurve: boolean;
   /** The sun's disc in the sky in its full brightness (src/render/sky/skyBackground.ts); off: only as the cube holds it, white (1). */
   sunInFullBrightness: boolean;
+  /** The disc's edge antialiased after the tone curve (src/render/sky/sunDiscSprite.ts); off: it steps by whole pixels. */
+  sunDiscEdge: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -179,6 +181,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
     else view.renderer.toneMapping = NoToneMapping;
   }
   if (fixes.sunInFullBrightness !== undefined) ocean.skyBackground.setSunInFullBrightness(fixes.sunInFullBrightness);
+  if (fixes.sunDiscEdge !== undefined) ocean.skyBackground.setSunDiscEdge(fixes.sunDiscEdge);
   if (fixes.cameraRelative !== undefined) material.originFor = fixes.cameraRelative ? renderOrigin : () => [0, 0];
   if (fixes.foamDrift !== undefined) ocean.waveModelView.setFoamDrift?.(fixes.foamDrift);
   if (fixes.clearanceNear !== undefined) view.clearance.nearFitted = fixes.clearanceNear;

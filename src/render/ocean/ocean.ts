@@ -108,6 +108,7 @@ export class Ocean extends Object3D {
     this.params = full;
     this.skySource = new SkySource(options.sky ?? null);
     this.sky = this.skySource.background.mesh;
+    this.ready = this.skySource.background.ready;
     const first = firstModel(full);
     // A model whose code has not arrived yet: the seed's sea stands in, hidden, until it has.
     const available = modelsMissing([first]).length === 0 ? first : 'seed';

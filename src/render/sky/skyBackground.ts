@@ -6,6 +6,7 @@ import fragmentShader from '../../../shaders/skyBackground.frag?raw';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
 import { resolveChunks } from '../shaders/shaderChunks';
 import { markOceanoMaterial } from '../underwater/sceneEncoding';
+import type { SunDiscSprite } from './sunDiscSprite';
 
 /** What scenes call the sky mesh, so a test can take it out (to see what is behind the sea). */
 export const SKY_BACKGROUND_NAME = 'oceano-sky';
@@ -28,6 +29,11 @@ export const SKY_RENDER_ORDER = -1;
  */
 export class SkyBackground {
   readonly mesh: Mesh<BufferGeometry, ShaderMaterial>;
+  /** Settles once the disc's square (src/render/sky/sunDiscSprite.ts, fetched on first use) is in place. */
+  readonly ready: Promise<void>;
+  private sunDisc: SunDiscSprite | null = null;
+  private sunDiscEdge = true;
+  private disposed = false;
   private readonly clipToWorld = new Matrix4();
 
   constructor(sky: CubeTexture) {
@@ -54,6 +60,23 @@ export class SkyBackground {
       // Directions only: the camera's rotation without its position, after the inverse projection.
       this.clipToWorld.extractRotation(camera.matrixWorld).multiply(camera.projectionMatrixInverse);
     };
+    // The disc drawn again with an antialiased edge, after the sky and before what lies at the
+    // far plane itself. Until its code arrives (or if it never does) the sky's own edge shows.
+    this.ready = import('./sunDiscSprite').then(
+      ({ SunDiscSprite }) => {
+        if (this.disposed) return;
+        this.sunDisc = new SunDiscSprite(material.uniforms, SKY_RENDER_ORDER + 0.5);
+        this.sunDisc.antialiased = this.sunDiscEdge;
+        this.mesh.add(this.sunDisc.mesh);
+      },
+      () => undefined,
+    );
+  }
+
+  /** Off: the disc's edge as the sky draws it, stepping by whole pixels (a negative control, src/app/debug/shadingFaults.ts). */
+  setSunDiscEdge(antialiased: boolean): void {
+    this.sunDiscEdge = antialiased;
+    if (this.sunDisc) this.sunDisc.antialiased = antialiased;
   }
 
   private painted = false;
@@ -86,6 +109,8 @@ export class SkyBackground {
   }
 
   dispose(): void {
+    this.disposed = true;
+    this.sunDisc?.dispose();
     this.mesh.geometry.dispose();
     this.mesh.material.dispose();
   }

@@ -30,3 +30,8 @@ export function drawThroughHighlightRollOff(renderer: WebGLRenderer): boolean {
   renderer.toneMapping = CustomToneMapping;
   return true;
 }
+
+/** Whether `renderer` draws through our curve (drawThroughHighlightRollOff), so a shader may use the curve's inverse. */
+export function runsHighlightRollOff(renderer: WebGLRenderer): boolean {
+  return renderer.toneMapping === CustomToneMapping && ShaderChunk.tonemapping_pars_fragment.includes('rollOffHighlights');
+}

@@ -24,6 +24,10 @@ import { SUN_DISC_SOLID_ANGLE } from '../../../src/sim/optics/sunDisc';
  * angle covers. Control: the disc only as bright as the 8-bit cube holds it (white, 1), which
  * the curve shows as 0.85 (239 levels): no white pixel.
  *
+ * The disc's edge: a pixel it crosses shows its share of the disc's white and the rest of the
+ * sky's colour after the curve, not white whatever its share. Control: the edge stepping by whole
+ * pixels, as the sky alone draws it.
+ *
  * The exposure: the `exposure` parameter multiplies the light by 2^exposure before the curve, so
  * the same sky pixels match the painter's colour at half and at twice its light. Control: the
  * picture drawn at exposure 0, which a view that ignored the parameter would draw, against half.
@@ -49,6 +53,26 @@ interface SkyFit {
   pixels: number;
   /** Pixels of the disc seen white (every channel 250 or more). */
   whiteDisc: number;
+}
+
+/**
+ * Pixels of the disc's rim shown between the sky beside it and white (darkest channel 232–249),
+ * within 1.2° of the sun's centre: where the disc covers part of a pixel. A hard edge has none:
+ * any share of the disc is white, the sky outside it below 232.
+ */
+function discRim(png: PNG): number {
+  let rim = 0;
+  for (let py = 0; py < H; py++) {
+    for (let px = 0; px < W; px++) {
+      const ray = pixelRay(px, py, W, H, POSITION, TARGET);
+      const fromSun = Math.acos(Math.min(1, ray[0] * SUN[0] + ray[1] * SUN[1] + ray[2] * SUN[2]));
+      if (fromSun > (1.2 * Math.PI) / 180) continue;
+      const o = (py * W + px) * 4;
+      const darkest = Math.min(png.data[o], png.data[o + 1], png.data[o + 2]);
+      if (darkest >= 232 && darkest < 250) rim++;
+    }
+  }
+  return rim;
 }
 
 /** The sky against the painter's colour times `gain` (the exposure's 2^EV) through the curve. */
@@ -81,6 +105,8 @@ const MAX_OFF_CURVE = 2.5;
 const BRIGHT = 0.8;
 /** The disc's pixels: its solid angle over one pixel's at the picture's centre. */
 const DISC_PIXELS = SUN_DISC_SOLID_ANGLE / ((2 * Math.tan((FOV / 2) * (Math.PI / 180))) / H) ** 2;
+/** The length of its edge, px: the circumference of a circle of DISC_PIXELS. */
+const RIM_PIXELS = 2 * Math.sqrt(Math.PI * DISC_PIXELS);
 
 describe('the whole frame through one tone curve', () => {
   it('draws the bright sky as the sky painter\'s colour through the curve, and the sun\'s disc white; controls: no curve, a disc no brighter than the cube', { timeout: 180_000 }, async () => {
@@ -119,6 +145,20 @@ describe('the whole frame through one tone curve', () => {
     expect(darker.offCurve, say).toBeLessThan(MAX_OFF_CURVE);
     expect(brighter.offCurve, say).toBeLessThan(MAX_OFF_CURVE);
     expect(ignored.offCurve, say).toBeGreaterThan(MAX_OFF_CURVE);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  });
+
+  it("draws the disc's edge antialiased after the curve: its rim pixels between the sky and white; control: the edge stepping by whole pixels", { timeout: 120_000 }, async () => {
+    const { page, consoleErrors } = await openOcean(harness, QUERY, W, H);
+    await page.evaluate(() => window.oceano.pause());
+    const smooth = discRim(PNG.sync.read(await canvasPng(page)));
+    await page.evaluate(() => window.oceano.debug.setShadingFixes({ sunDiscEdge: false }));
+    const stepped = discRim(PNG.sync.read(await canvasPng(page)));
+    const say = `the disc's rim: ${smooth} px between the sky and white (its edge ${RIM_PIXELS.toFixed(0)} px round); stepping by whole pixels: ${stepped}`;
+    console.log(`[oceano] ${say}`);
+    expect(smooth, say).toBeGreaterThan(0.3 * RIM_PIXELS);
+    expect(stepped, say).toBe(0);
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
