@@ -5,7 +5,7 @@
 // there, so the lace is drawn out into streaks, and pushed about by a field that never repeats,
 // so neither does the tile. Foam is a rough, bright,
 // nearly diffuse surface: lit by the sun on its own bumpy normal and by the sky, with a wet
-// sheen from a rough microfacet lobe. Its reflectance, FOAM_REFLECTANCE, is measured foam's:
+// sheen from a rough microfacet lobe. Its reflectance, FOAM_REFLECTANCE (defined before this text by foamDetail.ts), is measured foam's:
 // 0.55, a little less in the red (src/sim/optics/foamReflectance.ts).
 uniform sampler2D uFoamDetail;
 uniform float uFoamDensityMean; // the detail tile's mean density, read back once it is drawn (foamDetail.ts)

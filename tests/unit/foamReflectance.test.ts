@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { FOAM_WATER_PATH, foamReflectance, foamReflectanceAt, WATER_ABSORPTION_850NM } from '../../src/sim/optics/foamReflectance';
-import { shaderConstantsChunk } from '../../src/render/shaders/shaderConstants';
+import { foamMaterialChunk } from '../../src/render/foam/foamDetail';
 
 describe("foam's reflectance (Whitlock et al. 1982, Frouin et al. 1996, Pope & Fry 1997)", () => {
   it('is 0.55 over the visible, within Whitlock et al.\'s 0.5–0.6 for fresh foam at every wavelength (control: the albedo drawn before, 0.72–0.80, is above it)', () => {
@@ -26,8 +26,9 @@ describe("foam's reflectance (Whitlock et al. 1982, Frouin et al. 1996, Pope & F
     expect(foamReflectanceAt(WATER_ABSORPTION_850NM) / b).toBeLessThan(0.61);
   });
 
-  it('reaches the shaders as FOAM_REFLECTANCE, from these values', () => {
+  it('reaches the foam material as FOAM_REFLECTANCE, from these values', () => {
     const [r, g, b] = foamReflectance();
-    expect(shaderConstantsChunk()).toContain(`#define FOAM_REFLECTANCE vec3(${r}, ${g}, ${b})`);
+    expect(foamMaterialChunk.startsWith(`#define FOAM_REFLECTANCE vec3(${r}, ${g}, ${b})\n`)).toBe(true);
+    expect(foamMaterialChunk).toContain('vec3 foam = FOAM_REFLECTANCE *');
   });
 });

@@ -3,9 +3,14 @@ import { FullScreenQuad } from 'three/addons/postprocessing/Pass.js';
 import vertexShader from '../../../shaders/fullscreen.vert?raw';
 import fragmentShader from '../../../shaders/foam/foamDetail.frag?raw';
 import foamMaterial from '../../../shaders/foam/foamMaterial.glsl?raw';
+import { glslVec3 } from '../shaders/shaderConstants';
+import { foamReflectance } from '../../sim/optics/foamReflectance';
 
-/** The foam material's GLSL (chunk `oceano_foam`, src/render/shaders/lateChunks.ts): it travels with the texture it samples. */
-export const foamMaterialChunk = foamMaterial;
+/**
+ * The foam material's GLSL (chunk `oceano_foam`, src/render/shaders/lateChunks.ts), with foam's
+ * measured reflectance as FOAM_REFLECTANCE: it travels with the texture it samples.
+ */
+export const foamMaterialChunk = `#define FOAM_REFLECTANCE ${glslVec3(foamReflectance())}\n${foamMaterial}`;
 
 /** Texels per side of the detail tile: 512 over FOAM_DETAIL_TILE metres is about a centimetre per texel. */
 const SIZE = 512;

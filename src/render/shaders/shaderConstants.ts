@@ -5,7 +5,6 @@ import { AEROSOL_SCALE_HEIGHT } from '../../sim/optics/haze';
 import { SUN_DISC_COS_CORE, SUN_DISC_COS_EDGE, SUN_DISC_COS_MID, SUN_DISC_SLOPE_VARIANCE } from '../../sim/optics/sunDisc';
 import { bodyColor } from '../../sim/optics/waterColor';
 import { crestScattering, PARTICLE_MEAN_COSINE } from '../../sim/optics/subsurfaceGlow';
-import { foamReflectance } from '../../sim/optics/foamReflectance';
 import { BLUR_MAX_TAPS } from '../underwater/blurLimits';
 import { BAND_STEPS, BASE_STEP, DETAIL_NORMALS_FROM, LOD_BAND_COLORS, MAX_LOD_BANDS } from '../../sim/lod/lodBands';
 import { GOD_RAY_RANGE } from '../underwater/godRayRange';
@@ -21,7 +20,7 @@ export function glslFloat(value: number): string {
   return /[.e]/.test(text) ? text : `${text}.0`;
 }
 
-function glslVec3(rgb: readonly [number, number, number]): string {
+export function glslVec3(rgb: readonly [number, number, number]): string {
   return `vec3(${rgb.map(glslFloat).join(', ')})`;
 }
 
@@ -48,7 +47,6 @@ export function shaderConstantsChunk(): string {
     `#define SUN_DISC_COS_MID ${glslFloat(SUN_DISC_COS_MID)}`,
     `#define WATER_BODY_REFLECTANCE ${glslVec3(bodyColor())}`,
     `#define SUBSURFACE_SCATTER ${glslVec3(crestScattering())}`,
-    `#define FOAM_REFLECTANCE ${glslVec3(foamReflectance())}`,
     `#define HENYEY_GREENSTEIN vec3(${[(1 - PARTICLE_MEAN_COSINE ** 2) / (4 * Math.PI), 1 + PARTICLE_MEAN_COSINE ** 2, 2 * PARTICLE_MEAN_COSINE].map(glslFloat).join(', ')})`,
     `#define TILE_COPY_TURN ${glslFloat(TILE_COPY_TURN)}`,
     `#define FOAM_GROUP_SHARE_MEAN ${glslFloat(FOAM_GROUP_SHARE_MEAN)}`,
