@@ -29,11 +29,11 @@ const inPage = `(() => {
   const renderer = o.three.renderer;
   samples.onePixel = [];
   samples.onePixelNoSea = [];
-  const group = o.three.scene.children.find((c) => c.type === 'Group');
+  const sea = o.three.scene.getObjectByName('oceano-ocean');
   for (let r = 0; r < ${rounds}; r++) {
     renderer.setScissorTest(true); renderer.setScissor(0, 0, 1, 1);
     samples.onePixel.push(time(7));
-    group.visible = false; samples.onePixelNoSea.push(time(7)); group.visible = true;
+    sea.visible = false; samples.onePixelNoSea.push(time(7)); sea.visible = true;
     renderer.setScissorTest(false);
   }
   // Lower bounds. trivialOcean: the sea's pixels write a constant (its vertices, triangles and
@@ -41,8 +41,10 @@ const inPage = `(() => {
   // itself given a constant colour: the bench's floor (clear + full-screen quad), in this page.
   const TRIVIAL = 'void main() { gl_FragColor = vec4(0.2, 0.4, 0.6, 1.0); }';
   const swap = (material, fragment) => { const was = material.fragmentShader; material.fragmentShader = fragment; material.needsUpdate = true; return was; };
-  const oceanMaterials = [...new Set(group.children.map((c) => c.material))];
-  const sky = o.three.scene.children[0];
+  const found = new Set();
+  sea.traverse((c) => { if (c.material && c.material.uniforms && c.material.uniforms.uEyeRelative) found.add(c.material); });
+  const oceanMaterials = [...found];
+  const sky = o.three.scene.getObjectByName('oceano-sky');
   samples.trivialOcean = [];
   samples.floor = [];
   for (let r = 0; r < ${rounds}; r++) {
