@@ -3,12 +3,11 @@ import { SkyPainter, type Rgb } from '../../../src/sim/optics/skyPainter';
 import { sunDirection, SUN_IRRADIANCE, SUN_LIGHT_COLOR } from '../../../src/sim/optics/sun';
 import { foamReflectance } from '../../../src/sim/optics/foamReflectance';
 import { rollOffHighlight } from '../../../src/sim/optics/highlightRollOff';
+import { linearToSrgb, srgbToLinear } from '../../support/srgb';
 
-const srgbToLinear = (level: number): number => {
-  const c = level / 255;
-  return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
-};
-const linearToSrgb = (l: number): number => 255 * (l <= 0.0031308 ? 12.92 * l : 1.055 * l ** (1 / 2.4) - 0.055);
+/** An 8-bit sRGB level's linear light, and back. */
+const levelToLinear = (level: number): number => srgbToLinear(level / 255);
+const linearToLevel = (linear: number): number => 255 * linearToSrgb(linear);
 
 /**
  * Level foam is counted white from: this share of the way, in light, from the water to solid
@@ -26,17 +25,17 @@ const WHITE_FROM = 0.7;
  */
 export function solidFoamLevels(sunElevation: number): Rgb {
   const sun = sunDirection(sunElevation, 0);
-  const skyAbove = new SkyPainter(sun).color([0, 1, 0]).map((c) => srgbToLinear(255 * c));
+  const skyAbove = new SkyPainter(sun).color([0, 1, 0]).map(srgbToLinear);
   return foamReflectance().map((r, c) => {
     const light = SUN_LIGHT_COLOR[c] * SUN_IRRADIANCE * sun[1] + Math.PI * skyAbove[c];
-    return linearToSrgb(rollOffHighlight((r * light) / Math.PI));
+    return linearToLevel(rollOffHighlight((r * light) / Math.PI));
   }) as Rgb;
 }
 
 /** The level a pixel's darkest channel must pass to read as white foam, where the water's darkest channel is at `waterLevel`. */
 export function foamWhiteFrom(waterLevel: number, solid: Rgb): number {
-  const water = srgbToLinear(waterLevel);
-  return linearToSrgb(water + WHITE_FROM * (srgbToLinear(Math.min(...solid)) - water));
+  const water = levelToLinear(waterLevel);
+  return linearToLevel(water + WHITE_FROM * (levelToLinear(Math.min(...solid)) - water));
 }
 
 interface Levels {

@@ -7,6 +7,7 @@ import { SkyPainter } from '../../../src/sim/optics/skyPainter';
 import { sunDirection } from '../../../src/sim/optics/sun';
 import { rollOffHighlight } from '../../../src/sim/optics/highlightRollOff';
 import { SUN_DISC_SOLID_ANGLE } from '../../../src/sim/optics/sunDisc';
+import { linearToSrgb, srgbToLinear } from '../../support/srgb';
 
 /**
  * The whole frame goes through one tone curve (src/render/tone/wholeFrameToneCurve.ts), the sky
@@ -44,8 +45,7 @@ const LOOK = sunDirection(ELEVATION - 5, AZIMUTH + 8);
 const TARGET = POSITION.map((p, k) => p + LOOK[k] * 1000) as Vec3;
 const QUERY = `t=10&sunElevation=${ELEVATION}&sunAzimuth=${AZIMUTH}&cam=${[...POSITION, ...TARGET].map((v) => v.toFixed(3)).join(',')}`;
 
-const srgbLevel = (linear: number): number => 255 * (linear <= 0.0031308 ? 12.92 * linear : 1.055 * linear ** (1 / 2.4) - 0.055);
-const srgbToLinear = (c: number): number => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
+const srgbLevel = (linear: number): number => 255 * linearToSrgb(linear);
 
 interface SkyFit {
   /** Median over the bright sky pixels of the largest channel's difference from the curve's colour, in levels. */
