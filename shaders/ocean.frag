@@ -15,6 +15,11 @@
 #include <oceano_waves>
 
 #include <oceano_sky_cube>
+#ifdef OCEAN_PREFILTERED_SKY
+// The sky as a sea of this one roughness reflects it, blurred once for the whole sea
+// (src/render/sky/prefilteredSky.ts), holding the colour's square root as the sky's cube does.
+uniform samplerCube uPrefilteredSky;
+#endif
 uniform sampler2D uFresnelTable;
 uniform sampler2D uFresnelFromBelow;
 uniform bool uFresnelEnabled;
@@ -273,9 +278,13 @@ void main() {
   vec3 r = reflect(-v, n);
   // A reflected ray that points below the horizon would see the sea, not the sky.
   r.y = max(r.y, 0.0);
-  // The sky blurred by the roughness below the pixel (above), unless a lesson asks for it sharp (skyBlur off).
-#ifdef OCEAN_SHARP_SKY
+  // The sky blurred by the roughness below the pixel (above), unless a lesson asks for it sharp
+  // (skyBlur off); where that roughness is the same everywhere, blurred once for the whole sea.
+#if defined(OCEAN_SHARP_SKY)
   vec3 sky = skyCubeColor(r);
+#elif defined(OCEAN_PREFILTERED_SKY)
+  vec3 stored = textureLod(uPrefilteredSky, r, 0.0).rgb;
+  vec3 sky = stored * stored;
 #else
   vec3 sky = skyCubeColorRough(r, roughness);
 #endif

@@ -1,4 +1,4 @@
-// The sky painter's dome: a cube around the cube camera; each fragment paints the world
+// A cube around a cube camera (src/render/sky/cubePainter.ts); each fragment paints the world
 // direction from the centre through it.
 varying vec3 vDirection;
 

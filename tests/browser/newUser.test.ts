@@ -275,8 +275,8 @@ describe('packaging', () => {
     expect(loaded.size).toBeLessThan(scripts.length);
     // Fetched on first use, never before the first frame: the glTF loader (with the boat), the
     // underwater passes, the FFT and Gerstner models, the control panel (lil-gui, after the
-    // first frame), the physics estimators and the GPU probe.
-    for (const lazy of ['GLTFLoader', 'oceanUnderwater', 'fftModelCode', 'gerstnerModelCode', 'controlPanel', 'physicsReport', 'surfaceProbe']) {
+    // first frame), the physics estimators, the GPU probe and the sky prefiltered for the seed's sea.
+    for (const lazy of ['GLTFLoader', 'oceanUnderwater', 'fftModelCode', 'gerstnerModelCode', 'controlPanel', 'physicsReport', 'surfaceProbe', 'prefilteredSky']) {
       const chunk = scripts.find((file) => file.startsWith(`assets/${lazy}-`));
       expect(chunk, lazy).toBeDefined();
       expect(loaded.has(chunk!), lazy).toBe(false);

@@ -122,27 +122,34 @@ describe('the sky painted from the sun', () => {
     });
   });
 
-  it('paints the cube only when the sun moves, never per frame', async () => {
+  it('paints the cube only when the sun moves, never per frame, and the sky prefiltered for the sea with it', async () => {
     const paints = await shared.restoring((page) => page.evaluate(async () => {
       const { renderer, scene } = window.oceano.three;
-      let other = 0;
+      const sky = (scene.getObjectByName('oceano-ocean') as unknown as { skyTexture: unknown }).skyTexture;
+      let skyFaces = 0;
       const render = renderer.render;
       renderer.render = (s, c) => {
-        if (s !== scene) other++;
+        if (s !== scene && renderer.getRenderTarget()?.texture === sky) skyFaces++;
         render.call(renderer, s, c);
       };
       const frames = () => new Promise<void>((done) => requestAnimationFrame(() => requestAnimationFrame(() => requestAnimationFrame(() => done()))));
+      await frames();
+      const prefilteredAtStart = await window.oceano.debug.prefilteredSkyPaints();
       window.oceano.setParams({ waterColor: '#103050' });
       await frames();
-      const still = other;
+      const still = skyFaces;
+      const prefilteredStill = (await window.oceano.debug.prefilteredSkyPaints()) - prefilteredAtStart;
       window.oceano.setParams({ sunAzimuth: 90 });
       await frames();
       renderer.render = render;
-      return { still, moved: other - still };
+      const prefilteredMoved = (await window.oceano.debug.prefilteredSkyPaints()) - prefilteredAtStart - prefilteredStill;
+      return { still, moved: skyFaces - still, prefilteredStill, prefilteredMoved };
     }));
     expect(paints.still).toBe(0);
     // One repaint: the cube camera's six faces.
     expect(paints.moved).toBe(6);
+    // The seed's sea reflects the sky blurred once for its roughness (src/render/sky/prefilteredSky.ts): painted again with the sky, not per frame.
+    expect([paints.prefilteredStill, paints.prefilteredMoved]).toEqual([0, 1]);
   });
 
   /**

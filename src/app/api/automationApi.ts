@@ -87,26 +87,38 @@ export interface OceanoApi {
 /** Each method of T, answering a promise of what it returned. */
 type Promisified<T> = { [K in keyof T]: T[K] extends (...args: infer A) => infer R ? (...args: A) => Promise<Awaited<R>> : never };
 
+/** The calls of `oceano.debug` that live in src/app/debug/debugTools.ts, each named once here. */
+const DEBUG_CALLS = [
+  'fresnelTable',
+  'fresnelTableFromBelow',
+  'passTimings',
+  'heightmaps',
+  'lodUpdateMs',
+  'forceShaftLightWindow',
+  'setShadingFixes',
+  'foamMemory',
+  'prefilteredSkyPaints',
+  'stripCulling',
+  'underwaterScene',
+] as const satisfies readonly (keyof DebugTools)[];
+// Fails to compile while a call of debugTools.ts is missing from the list.
+const EVERY_DEBUG_CALL: Exclude<keyof DebugTools, (typeof DEBUG_CALLS)[number]> extends never ? true : never = true;
+void EVERY_DEBUG_CALL;
+
+/** Each of `oceano.debug`'s calls answering `answer(name)`. */
+function debugCalls(answer: (name: keyof DebugTools) => (...args: never[]) => Promise<unknown>): Promisified<DebugTools> {
+  return Object.fromEntries(DEBUG_CALLS.map((name) => [name, answer(name)])) as Promisified<DebugTools>;
+}
+
 /** `oceano.debug`: each call fetches src/app/debug/debugTools.ts the first time, then runs there. */
 function lazyDebugTools(app: OceanApp): Promisified<DebugTools> {
   let tools: Promise<DebugTools> | undefined;
   const load = () => (tools ??= import('../debug/debugTools').then((code) => code.debugTools(app)));
-  const call =
-    <K extends keyof DebugTools>(name: K) =>
-    (...args: Parameters<DebugTools[K]>) =>
-      load().then((t) => (t[name] as (...a: Parameters<DebugTools[K]>) => ReturnType<DebugTools[K]>)(...args));
-  return {
-    fresnelTable: call('fresnelTable'),
-    fresnelTableFromBelow: call('fresnelTableFromBelow'),
-    passTimings: call('passTimings'),
-    heightmaps: call('heightmaps'),
-    lodUpdateMs: call('lodUpdateMs'),
-    forceShaftLightWindow: call('forceShaftLightWindow'),
-    setShadingFixes: call('setShadingFixes'),
-    foamMemory: call('foamMemory'),
-    stripCulling: call('stripCulling'),
-    underwaterScene: call('underwaterScene'),
-  };
+  return debugCalls(
+    (name) =>
+      (...args: unknown[]) =>
+        load().then((t) => (t[name] as (...a: unknown[]) => unknown)(...args)),
+  );
 }
 
 declare global {
@@ -201,16 +213,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     activity: fail,
     physics: () => Promise.reject(reason),
     debug: {
-      fresnelTable: failed,
-      fresnelTableFromBelow: failed,
-      passTimings: failed,
-      heightmaps: failed,
-      lodUpdateMs: failed,
-      forceShaftLightWindow: failed,
-      setShadingFixes: failed,
-      foamMemory: failed,
-      stripCulling: failed,
-      underwaterScene: failed,
+      ...debugCalls(() => failed),
       physicsRuns: failed,
     },
     get three(): never {

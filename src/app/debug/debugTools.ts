@@ -23,6 +23,8 @@ export function debugTools(app: OceanApp) {
       const memory = view().ocean.waveModelView.readFoamMemory?.();
       return memory ? { n: memory.n, texel: memory.texel, data: Array.from(memory.data) } : null;
     },
+    /** How many times the sky prefiltered for the sea's one roughness has been painted (0 where the roughness varies by pixel). */
+    prefilteredSkyPaints: (): number => view().ocean.material.prefilteredSky?.paintCount ?? 0,
     stripCulling: (on: boolean): void => void (view().stripCulling = on === true),
     /** The underwater passes' scene target: 'linear' (the library's default) or an encoded one (the app's). */
     underwaterScene: (mode: EncodedScene): void => view().underwater.setEncodedScene(mode),

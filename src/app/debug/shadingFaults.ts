@@ -45,6 +45,10 @@ export interface ShadingFixes {
   sunInFullBrightness: boolean;
   /** The disc's edge antialiased after the tone curve (src/render/sky/sunDiscSprite.ts); off: it steps by whole pixels. */
   sunDiscEdge: boolean;
+  /** A sea of one roughness everywhere (the seed's) reads the sky blurred once for it (src/render/sky/prefilteredSky.ts); off: two of the sky's mip levels per pixel, blended. */
+  prefilteredSky: boolean;
+  /** The prefiltered sky painted again when the sun moves (and the sky with it); off: it keeps the sky of the sun it was first painted for. */
+  prefilterFollowsSun: boolean;
   /** Whole view under the water: back faces only, the sea bed's test skipped below every trough, the far plane at the fog's reach. */
   underwaterShortcuts: boolean;
 }
@@ -76,6 +80,7 @@ const FIXED_GLINT: ShaderFault = {
   fragment: [
     ['color += sunGlint(n, v, roughness, facetReflectance);', 'color += sunLobe(dot(n, halfway), 900.0, 40.0) * reflectance;'],
     ['skyCubeColorRough(r, roughness)', 'skyCubeColor(normalize(r))'],
+    ['textureLod(uPrefilteredSky, r, 0.0).rgb', 'sqrt(skyCubeColor(normalize(r)))'],
   ],
 };
 /** The roughness of a 10 m/s sea (Cox & Munk's 0.055 less a few thousandths resolved) whatever the wind. */
@@ -182,6 +187,8 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   }
   if (fixes.sunInFullBrightness !== undefined) ocean.skyBackground.setSunInFullBrightness(fixes.sunInFullBrightness);
   if (fixes.sunDiscEdge !== undefined) ocean.skyBackground.setSunDiscEdge(fixes.sunDiscEdge);
+  if (fixes.prefilteredSky !== undefined) material.prefiltering = fixes.prefilteredSky;
+  if (fixes.prefilterFollowsSun !== undefined && material.prefilteredSky) material.prefilteredSky.followsSun = fixes.prefilterFollowsSun;
   if (fixes.cameraRelative !== undefined) material.originFor = fixes.cameraRelative ? renderOrigin : () => [0, 0];
   if (fixes.foamDrift !== undefined) ocean.waveModelView.setFoamDrift?.(fixes.foamDrift);
   if (fixes.clearanceNear !== undefined) view.clearance.nearFitted = fixes.clearanceNear;

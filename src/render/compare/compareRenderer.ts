@@ -124,7 +124,10 @@ export class CompareRenderer {
 
   /** After a lost WebGL context comes back: each compared model redoes what lived in render targets. */
   contextRestored(): void {
-    for (const side of this.sides) side.view.contextRestored?.();
+    for (const side of this.sides) {
+      side.view.contextRestored?.();
+      side.material.contextRestored();
+    }
   }
 
   dispose(): void {

@@ -123,6 +123,7 @@ export class Ocean extends Object3D {
       shared: { ...this.waterVolume, ...this.wakeUniforms, ...this.interactiveWaveUniforms, ...this.foamUniforms, uSunColor: this.lightUniforms.uSunColor },
     };
     this.material = new OceanMaterial(this.binding, this.fresnelTextures, this.skySource.texture, this.materialInputs.shared);
+    this.ready = Promise.all([this.ready, this.material.ready]).then(() => undefined);
     this.chunks = new OceanChunks(this.material);
     this.add(this.chunks.group);
     this.lod = full;
@@ -441,6 +442,7 @@ export class Ocean extends Object3D {
   /** After a lost WebGL context comes back: paints again what lived only in render targets. */
   contextRestored(): void {
     this.chunks.forgetSelection();
+    this.material.contextRestored();
     this.waveView.contextRestored?.();
     this.interactive?.contextRestored();
     this.foamDetail?.draw(this.renderer);

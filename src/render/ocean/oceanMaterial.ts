@@ -12,6 +12,7 @@ import type { WaterVolumeUniforms } from '../underwater/waterVolumeUniforms';
 import type { WakeUniforms } from '../wake/wakeUniforms';
 import type { FoamUniforms } from '../foam/foamUniforms';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from '../sky/skyCubeUniforms';
+import type { PrefilteredSky } from '../sky/prefilteredSky';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import { hazeExtinction } from '../../sim/optics/haze';
 import { paramDefs } from '../../sim/params/params';
@@ -31,6 +32,13 @@ export class OceanMaterial extends ShaderMaterial {
   private readonly main: OceanMaterial | null;
   /** The last setSeenFromBelow's answer; null before the first. */
   private seenFrom: Submersion | null = null;
+  /** Whether a sea of one roughness reads the sky prefiltered for it (src/render/sky/prefilteredSky.ts); a negative control turns it off. */
+  prefiltering = true;
+  /** The sky blurred for a sea of one roughness, once its code has arrived (the main material's, which `near` uses). */
+  private prefiltered: PrefilteredSky | null = null;
+  private disposed = false;
+  /** Settles once the prefiltered sky's code has arrived (or failed to: the sky is then blended per pixel). */
+  readonly ready: Promise<void>;
 
   constructor(
     private readonly waves: WaveBinding,
@@ -45,6 +53,7 @@ export class OceanMaterial extends ShaderMaterial {
       uniforms: {
         ...shared,
         ...createSkyCubeUniforms(sky),
+        uPrefilteredSky: { value: null },
         uFresnelTable: { value: fresnelTables.fromAbove },
         uFresnelFromBelow: { value: fresnelTables.fromBelow },
         uFresnelEnabled: { value: true },
@@ -74,6 +83,8 @@ export class OceanMaterial extends ShaderMaterial {
     }
     waves.attach(this);
     this.near = main ? this : new OceanMaterial(waves, fresnelTables, sky, shared, this);
+    // Fetched after the first frame, which blends two of the sky's levels per pixel: the same picture, dearer.
+    this.ready = main ? Promise.resolve() : this.loadPrefilteredSky();
   }
 
   /** The binding's switches reach both programs; a caller detaching this one detaches both. */
@@ -84,7 +95,14 @@ export class OceanMaterial extends ShaderMaterial {
 
   override dispose(): void {
     super.dispose();
+    this.disposed = true;
+    this.prefiltered?.dispose();
     if (this.near !== this) this.near.dispose();
+  }
+
+  /** After a lost WebGL context comes back: the prefiltered sky, which lived only in a render target, is painted again. */
+  contextRestored(): void {
+    this.prefiltered?.forget();
   }
 
   setWireframe(on: boolean): void {
@@ -114,6 +132,9 @@ export class OceanMaterial extends ShaderMaterial {
     setMaterialDefine(this, 'OCEAN_FOAM_TEXTURE', this.uniforms.uFoamDetail.value !== null);
     // The highlights rolled off here only where the renderer has no tone curve of its own (ocean.frag).
     setMaterialDefine(this, 'OCEAN_OWN_ROLL_OFF', (renderer as WebGLRenderer).toneMapping === NoToneMapping);
+    // A sea whose unresolved slopes are one number (the seed's) reads the sky blurred once for them.
+    const { prefiltered, prefiltering } = this.main ?? this;
+    prefiltered?.prepare(this, renderer as WebGLRenderer, prefiltering ? this.waves.model.uniformRoughness?.() : undefined);
     const eye = this.eye.setFromMatrixPosition(camera.matrixWorld);
     const [x, z] = (this.main ?? this).originFor(eye.x, eye.z);
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
@@ -122,6 +143,17 @@ export class OceanMaterial extends ShaderMaterial {
     this.originShift.makeTranslation(x, 0, z);
     (this.uniforms.uViewRelative.value as Matrix4).multiplyMatrices(camera.matrixWorldInverse, this.originShift);
     (this.uniforms.uEyeRelative.value as Vector3).set(eye.x - x, eye.y, eye.z - z);
+  }
+
+  /** Without its code the sea blends two of the sky's levels per pixel, as every other sea does. */
+  private async loadPrefilteredSky(): Promise<void> {
+    const { PrefilteredSky } = await import('../sky/prefilteredSky').catch(() => ({ PrefilteredSky: null }));
+    if (PrefilteredSky && !this.disposed) this.prefiltered = new PrefilteredSky();
+  }
+
+  /** The sky prefiltered for this sea's one roughness, once its code has arrived (shared with `near`). */
+  get prefilteredSky(): PrefilteredSky | null {
+    return (this.main ?? this).prefiltered;
   }
 
   /**

@@ -1,26 +1,19 @@
 import {
-  BackSide,
-  BoxGeometry,
   Color,
-  CubeCamera,
   DataTexture,
   LinearFilter,
   LinearMipmapNearestFilter,
   LinearSRGBColorSpace,
-  Mesh,
   RedFormat,
   RepeatWrapping,
-  Scene,
-  ShaderMaterial,
   UnsignedByteType,
   Vector3,
   WebGLCubeRenderTarget,
   type CubeTexture,
   type WebGLRenderer,
 } from 'three';
-import vertexShader from '../../../shaders/skyDome.vert?raw';
 import fragmentShader from '../../../shaders/skyDome.frag?raw';
-import { resolveChunks } from '../shaders/shaderChunks';
+import { CubePainter } from './cubePainter';
 import { BELOW_HORIZON, CLOUD_LIT, CLOUD_SHADE, DUSK_HORIZON, DUSK_ZENITH, HORIZON, NIGHT_HORIZON, NIGHT_ZENITH, SUN, ZENITH, cloudDensityTile } from '../../sim/optics/skyPainter';
 import { SQUARE_ROOT_SKY } from './skyCubeUniforms';
 
@@ -41,9 +34,7 @@ const rgb = (c: readonly [number, number, number]) => new Color(c[0], c[1], c[2]
  */
 export class SunSky {
   readonly target: WebGLCubeRenderTarget;
-  private readonly scene = new Scene();
-  private readonly camera: CubeCamera;
-  private readonly material: ShaderMaterial;
+  private readonly painter: CubePainter;
   private readonly clouds: DataTexture;
   private readonly painted = new Vector3(Number.NaN, Number.NaN, Number.NaN);
   /** How many times the cube has been painted: the test that it is not repainted per frame reads it. */
@@ -64,29 +55,20 @@ export class SunSky {
     this.clouds.wrapS = this.clouds.wrapT = RepeatWrapping;
     this.clouds.minFilter = this.clouds.magFilter = LinearFilter;
     this.clouds.needsUpdate = true;
-    this.material = new ShaderMaterial({
-      vertexShader,
-      fragmentShader: resolveChunks(fragmentShader),
-      side: BackSide,
-      depthTest: false,
-      depthWrite: false,
-      uniforms: {
-        uSunDirection: { value: new Vector3(0, 1, 0) },
-        uClouds: { value: this.clouds },
-        uZenith: { value: rgb(ZENITH) },
-        uHorizon: { value: rgb(HORIZON) },
-        uBelowHorizon: { value: rgb(BELOW_HORIZON) },
-        uSun: { value: rgb(SUN) },
-        uCloudLit: { value: rgb(CLOUD_LIT) },
-        uCloudShade: { value: rgb(CLOUD_SHADE) },
-        uDuskHorizon: { value: rgb(DUSK_HORIZON) },
-        uDuskZenith: { value: rgb(DUSK_ZENITH) },
-        uNightZenith: { value: rgb(NIGHT_ZENITH) },
-        uNightHorizon: { value: rgb(NIGHT_HORIZON) },
-      },
+    this.painter = new CubePainter(this.target, fragmentShader, {
+      uSunDirection: { value: new Vector3(0, 1, 0) },
+      uClouds: { value: this.clouds },
+      uZenith: { value: rgb(ZENITH) },
+      uHorizon: { value: rgb(HORIZON) },
+      uBelowHorizon: { value: rgb(BELOW_HORIZON) },
+      uSun: { value: rgb(SUN) },
+      uCloudLit: { value: rgb(CLOUD_LIT) },
+      uCloudShade: { value: rgb(CLOUD_SHADE) },
+      uDuskHorizon: { value: rgb(DUSK_HORIZON) },
+      uDuskZenith: { value: rgb(DUSK_ZENITH) },
+      uNightZenith: { value: rgb(NIGHT_ZENITH) },
+      uNightHorizon: { value: rgb(NIGHT_HORIZON) },
     });
-    this.scene.add(new Mesh(new BoxGeometry(2, 2, 2), this.material));
-    this.camera = new CubeCamera(0.1, 10, this.target);
   }
 
   get texture(): CubeTexture {
@@ -97,8 +79,8 @@ export class SunSky {
   update(renderer: WebGLRenderer, sun: readonly [number, number, number]): boolean {
     if (this.painted.x === sun[0] && this.painted.y === sun[1] && this.painted.z === sun[2]) return false;
     this.painted.fromArray(sun);
-    (this.material.uniforms.uSunDirection.value as Vector3).fromArray(sun);
-    this.camera.update(renderer, this.scene);
+    (this.painter.material.uniforms.uSunDirection.value as Vector3).fromArray(sun);
+    this.painter.paint(renderer);
     this.paintCount++;
     return true;
   }
@@ -113,8 +95,7 @@ export class SunSky {
 
   dispose(): void {
     this.target.dispose();
-    this.material.dispose();
+    this.painter.dispose();
     this.clouds.dispose();
-    for (const child of this.scene.children) (child as Mesh).geometry.dispose();
   }
 }

@@ -56,6 +56,12 @@ export interface WaveModelView {
   /** Prepares the uniforms (and any GPU passes) for a frame at `time`, seconds. */
   update(time: number): void;
   /**
+   * The mean-square slope of the waves the normals leave out, where it is one number for the
+   * whole sea (the seed's): the sky it reflects is then blurred once for it, not per pixel
+   * (src/render/sky/prefilteredSky.ts). Absent where it varies from pixel to pixel.
+   */
+  uniformRoughness?(): number;
+  /**
    * The render origin (src/render/ocean/renderOrigin.ts) the ocean's pixels measure their grid points
    * from, before each draw (OceanMaterial.onBeforeRender): a model with per-pixel normals
    * folds it into its phases in double precision. Absent where nothing is evaluated per pixel.

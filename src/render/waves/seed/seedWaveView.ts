@@ -45,6 +45,10 @@ export class SeedWaveView implements WaveModelView {
     this.uniforms.uSlopeRoughness.value = Math.max(SUN_DISC_SLOPE_VARIANCE, seaSlopeVariance(this.model.windSpeed) - this.model.slopeVariance(time));
   }
 
+  uniformRoughness(): number {
+    return this.uniforms.uSlopeRoughness.value as number;
+  }
+
   dispose(): void {
     for (const texture of this.heightmapTextures) texture.dispose();
   }
