@@ -1,4 +1,4 @@
-import { CubeTexture, CubeTextureLoader, DataTexture, RGBAFormat, SRGBColorSpace, UnsignedByteType, LinearFilter } from 'three';
+import { CubeTexture, CubeTextureLoader, DataTexture, RGBAFormat, SRGBColorSpace, UnsignedByteType, LinearFilter, LinearMipmapNearestFilter } from 'three';
 import { CUBE_FACES, SkyPainter } from '../../sim/optics/skyPainter';
 
 /** The six face URLs under a base path, in three.js's loader order. */
@@ -13,8 +13,7 @@ export function loadSkyCube(base: string): Promise<CubeTexture> {
       skyFaceUrls(base),
       (texture) => {
         texture.colorSpace = SRGBColorSpace;
-        texture.generateMipmaps = false;
-        texture.minFilter = LinearFilter;
+        withBlurLevels(texture);
         resolve(texture);
       },
       undefined,
@@ -37,9 +36,19 @@ export function paintedSkyCube(sun: [number, number, number], size = 32): CubeTe
   cube.format = RGBAFormat;
   cube.type = UnsignedByteType;
   cube.colorSpace = SRGBColorSpace;
-  cube.minFilter = LinearFilter;
   cube.magFilter = LinearFilter;
-  cube.generateMipmaps = false;
+  withBlurLevels(cube);
   cube.needsUpdate = true;
   return cube;
+}
+
+/**
+ * Mip levels for a sky made of images, as the painted sky has (sunSky.ts): a rough sea reads
+ * the sky blurred from them (shaders/skyCube.glsl skyCubeColorRough), and without them it
+ * would mirror every image sharply whatever the wind. Read one level at a time, as the painted
+ * sky's (perf: SwiftShader's trilinear cube filter, docs/light.md).
+ */
+function withBlurLevels(cube: CubeTexture): void {
+  cube.generateMipmaps = true;
+  cube.minFilter = LinearMipmapNearestFilter;
 }

@@ -10,6 +10,9 @@ import { meanChange } from './glintMeasure';
  * rough. Seen from the default camera at 640×360, the far sea (rows 150–200, left of the
  * glint) changes with the switch, and the blurred reflection has less detail from pixel to
  * pixel than the sharp one: the mean luminance step between horizontal neighbours there.
+ * The sky may be made of images (`sky=sky`, the shipped faces): they are given mip levels too
+ * (src/render/sky/skyCube.ts). Without them the switch changed nothing there (0.00 levels on
+ * the seed and FFT seas, measured): a rough sea mirrored the images sharply.
  */
 const harness = useHarness();
 const FAR_ROWS = [150, 200] as const;
@@ -35,12 +38,12 @@ async function shot(query: string): Promise<Buffer> {
 }
 
 describe('the sky blurred by the roughness', () => {
-  it('the switch reaches the far sea, and the blurred sky there has less detail than the sharp one, on the seed and FFT seas', async () => {
-    for (const waves of ['seed', 'fft']) {
-      const blurred = await shot(`t=10&waves=${waves}`);
-      const sharp = await shot(`t=10&waves=${waves}&skyBlur=0`);
+  it('the switch reaches the far sea, and the blurred sky there has less detail than the sharp one, on the seed and FFT seas, and under a sky of images', async () => {
+    for (const view of ['waves=seed', 'waves=fft', 'waves=seed&sky=sky']) {
+      const blurred = await shot(`t=10&${view}`);
+      const sharp = await shot(`t=10&${view}&skyBlur=0`);
       const change = meanChange(blurred, sharp, FAR_ROWS[0], FAR_ROWS[1]);
-      const say = `${waves}: far sea changes by ${change.toFixed(1)} levels; detail blurred ${farDetail(blurred).toFixed(2)}, sharp ${farDetail(sharp).toFixed(2)}`;
+      const say = `${view}: far sea changes by ${change.toFixed(1)} levels; detail blurred ${farDetail(blurred).toFixed(2)}, sharp ${farDetail(sharp).toFixed(2)}`;
       console.log(`[oceano] skyBlur ${say}`);
       expect(change, say).toBeGreaterThan(5);
       expect(farDetail(blurred), say).toBeLessThan(farDetail(sharp));
