@@ -30,7 +30,7 @@ function skyFaceSize(sky: CubeTexture): number | null {
   return first?.width ?? first?.image?.width ?? null;
 }
 
-/** Whether a sky cube has the mip levels a rough mirror reads (the painted sky has; images made into a cube have not). */
+/** Whether a sky cube has the mip levels a rough mirror reads (the painted sky and skies of images have; a cube of a user's own may not). */
 function skyHasMipmaps(sky: CubeTexture): boolean {
   return sky.generateMipmaps && MIPMAP_FILTERS.includes(sky.minFilter);
 }
@@ -100,7 +100,7 @@ export class PrefilteredSky {
     const last = this.painted;
     const sunStill = !this.followsSun || (last !== null && last.sunX === sun.x && last.sunY === sun.y && last.sunZ === sun.z);
     const same = last !== null && last.sky === sky && last.version === sky.version && sunStill;
-    if (same && (last as { level: number }).level === level) return true;
+    if (same && last.level === level) return true;
     this.painted = { sky, version: sky.version, level, sunX: sun.x, sunY: sun.y, sunZ: sun.z };
     // At level 0 (a mirror, or nearly) every variance reads the sky's full resolution alike.
     const variance = level > 0 ? slopeVarianceAtLevel(faceSize, level) : slopeVariance;
