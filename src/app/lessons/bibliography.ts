@@ -13,11 +13,13 @@ export interface Reference {
 
 export const BIBLIOGRAPHY = {
   airy1845: { authors: 'G. B. Airy', year: 1845, title: 'Tides and waves', where: 'Encyclopaedia Metropolitana, vol. 5, 241–396' },
+  assarssonMoller2000: { authors: 'U. Assarsson, T. Möller', year: 2000, title: 'Optimized view frustum culling algorithms for bounding boxes', where: 'Journal of Graphics Tools 5(1), 9–22' },
   bruneton2010: { authors: 'E. Bruneton, F. Neyret, N. Holzschuch', year: 2010, title: 'Real-time realistic ocean lighting using seamless transitions from geometry to BRDF', where: 'Computer Graphics Forum 29(2), 487–496 (Eurographics 2010)' },
   callaghan2012: { authors: 'A. H. Callaghan, G. B. Deane, M. D. Stokes, B. Ward', year: 2012, title: 'Observed variation in the decay time of oceanic whitecap foam', where: 'Journal of Geophysical Research 117, C09015' },
   coxMunk1954: { authors: 'C. Cox, W. Munk', year: 1954, title: 'Measurement of the roughness of the sea surface from photographs of the sun’s glitter', where: 'Journal of the Optical Society of America 44(11), 838–850' },
   darmon2014: { authors: 'A. Darmon, M. Benzaquen, E. Raphaël', year: 2014, title: 'Kelvin wake pattern at large Froude numbers', where: 'Journal of Fluid Mechanics 738, R3' },
   deanDalrymple1991: { authors: 'R. G. Dean, R. A. Dalrymple', year: 1991, title: 'Water Wave Mechanics for Engineers and Scientists', where: 'World Scientific, Advanced Series on Ocean Engineering 2' },
+  dupuyBruneton2012: { authors: 'J. Dupuy, E. Bruneton', year: 2012, title: 'Real-time animation and rendering of ocean whitecaps', where: 'SIGGRAPH Asia 2012 Technical Briefs' },
   fournierReeves1986: { authors: 'A. Fournier, W. T. Reeves', year: 1986, title: 'A simple model of ocean waves', where: 'SIGGRAPH ’86, Computer Graphics 20(4), 75–84' },
   gerstner1802: { authors: 'F. J. Gerstner', year: 1802, title: 'Theorie der Wellen', where: 'Abhandlungen der Königlichen Böhmischen Gesellschaft der Wissenschaften, Prague' },
   hasselmann1973: { authors: 'K. Hasselmann et al.', year: 1973, title: 'Measurements of wind-wave growth and swell decay during the Joint North Sea Wave Project (JONSWAP)', where: 'Ergänzungsheft zur Deutschen Hydrographischen Zeitschrift, Reihe A, 8(12)' },
@@ -37,6 +39,7 @@ export const BIBLIOGRAPHY = {
   reinhard2002: { authors: 'E. Reinhard, M. Stark, P. Shirley, J. Ferwerda', year: 2002, title: 'Photographic tone reproduction for digital images', where: 'ACM Transactions on Graphics 21(3), 267–276 (SIGGRAPH 2002)' },
   schlick1994: { authors: 'C. Schlick', year: 1994, title: 'An inexpensive BRDF model for physically-based rendering', where: 'Computer Graphics Forum 13(3), 233–246' },
   stewart2008: { authors: 'R. H. Stewart', year: 2008, title: 'Introduction to Physical Oceanography', where: 'Texas A&M University, ch. 16' },
+  strugar2009: { authors: 'F. Strugar', year: 2009, title: 'Continuous distance-dependent level of detail for rendering heightmaps', where: 'Journal of Graphics, GPU, and Game Tools 14(4), 57–74' },
   tessendorf2001: { authors: 'J. Tessendorf', year: 2001, title: 'Simulating ocean water', where: 'SIGGRAPH 2001 course notes, Simulating Nature: Realistic and Interactive Techniques' },
   tessendorf2004: { authors: 'J. Tessendorf', year: 2004, title: 'Interactive water surfaces', where: 'Game Programming Gems 4, ed. A. Kirmse, Charles River Media, 265–274' },
   walter2007: { authors: 'B. Walter, S. R. Marschner, H. Li, K. E. Torrance', year: 2007, title: 'Microfacet models for refraction through rough surfaces', where: 'Eurographics Symposium on Rendering 2007, 195–206' },

@@ -104,7 +104,7 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'lod-bands': { en: 'Distance bands', es: 'Bandas de distancia' },
   'lod-morph': { en: 'Geomorphing between bands', es: 'Geomorfismo entre bandas' },
   'frustum-culling': { en: 'The quadtree and the frozen frustum', es: 'El quadtree y el frustum congelado' },
-  'fft-calm': { en: 'A wind spectrum: light air', es: 'Un espectro de viento: ventolina' },
+  'fft-calm': { en: 'A wind spectrum: a gentle breeze', es: 'Un espectro de viento: brisa débil' },
   'fft-fresh-breeze': { en: 'Dispersion: a fresh breeze', es: 'Dispersión: brisa fresca' },
   'fft-short-fetch': { en: 'JONSWAP: a young sea', es: 'JONSWAP: un mar joven' },
   'fft-gale': { en: 'Choppiness and foam from the Jacobian', es: 'Crestas y espuma desde el jacobiano' },
