@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { LESSON_TEXTS } from '../../../src/app/lessons/lessonTexts';
 import { findLesson, lessonView } from '../../../src/app/lessons/lessonCatalog';
-import { defaultParams, type OceanParams } from '../../../src/sim/params/params';
+import type { OceanParams } from '../../../src/sim/params/params';
 import { seaStateFromParams, type SeaState } from '../../../src/sim/waves/spectra/seaState';
 import { frequencySpectrum, peakWavelength } from '../../../src/sim/waves/spectra/waveSpectrum';
 import { spectralTheory } from '../../../src/sim/tools/probeTheory';
