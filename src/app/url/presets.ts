@@ -95,12 +95,12 @@ export const PRESETS = {
     params: { waves: 'fft', windSpeed: 4 },
     camera: { position: [0, 9, 40], target: [0, 0, -60] },
   },
-  /** Beaufort 5, U = 10 m/s on a fully developed Pierson–Moskowitz sea: Hs ≈ 2 m, peak ≈ 90 m. */
+  /** Beaufort 5, U = 10 m/s on a fully developed Pierson–Moskowitz sea: Hs ≈ 2.2 m, peak ≈ 88 m. */
   'fresh-breeze': {
     params: { waves: 'fft', windSpeed: 10, spectrum: 'pierson-moskowitz' },
     camera: { position: [0, 9, 40], target: [0, 0, -60] },
   },
-  /** Beaufort 8, U = 20 m/s: Hs ≈ 8 m, peak ≈ 350 m, choppy crests folding into foam (Jacobian < threshold). */
+  /** Beaufort 8, U = 20 m/s: Hs ≈ 9 m, peak ≈ 350 m, choppy crests folding into foam (Jacobian < threshold). */
   gale: {
     params: { waves: 'fft', windSpeed: 20, foam: true },
     camera: { position: [0, 14, 40], target: [0, 2, -60] },
