@@ -20,6 +20,7 @@ export const BIBLIOGRAPHY = {
   darmon2014: { authors: 'A. Darmon, M. Benzaquen, E. Raphaël', year: 2014, title: 'Kelvin wake pattern at large Froude numbers', where: 'Journal of Fluid Mechanics 738, R3' },
   deanDalrymple1991: { authors: 'R. G. Dean, R. A. Dalrymple', year: 1991, title: 'Water Wave Mechanics for Engineers and Scientists', where: 'World Scientific, Advanced Series on Ocean Engineering 2' },
   dupuyBruneton2012: { authors: 'J. Dupuy, E. Bruneton', year: 2012, title: 'Real-time animation and rendering of ocean whitecaps', where: 'SIGGRAPH Asia 2012 Technical Briefs' },
+  ebert2003: { authors: 'D. S. Ebert, F. K. Musgrave, D. Peachey, K. Perlin, S. Worley', year: 2003, title: 'Texturing and Modeling: A Procedural Approach, 3rd edition', where: 'Morgan Kaufmann, ch. 2 (lattice noises: value noise and gradient noise)' },
   fournierReeves1986: { authors: 'A. Fournier, W. T. Reeves', year: 1986, title: 'A simple model of ocean waves', where: 'SIGGRAPH ’86, Computer Graphics 20(4), 75–84' },
   gerstner1802: { authors: 'F. J. Gerstner', year: 1802, title: 'Theorie der Wellen', where: 'Abhandlungen der Königlichen Böhmischen Gesellschaft der Wissenschaften, Prague' },
   hasselmann1973: { authors: 'K. Hasselmann et al.', year: 1973, title: 'Measurements of wind-wave growth and swell decay during the Joint North Sea Wave Project (JONSWAP)', where: 'Ergänzungsheft zur Deutschen Hydrographischen Zeitschrift, Reihe A, 8(12)' },
