@@ -261,23 +261,23 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'The seed’s sines and value noise are an artistic model drawn from no spectrum; only the Gerstner and FFT strips come from the wind’s spectrum.',
-      es: 'Los senos y el ruido de valor del informe son un modelo artístico que no sale de ningún espectro; solo las franjas de Gerstner y de la FFT salen del espectro del viento.',
+      en: 'The seed’s sines and value noise are an artistic model drawn from no spectrum; only the Gerstner and FFT strips come from the wind.',
+      es: 'Los senos y el ruido de valor del informe son un modelo artístico sin espectro; solo Gerstner y la FFT salen del espectro del viento.',
     },
     references: ['gerstner1802', 'fournierReeves1986', 'tessendorf2001', 'piersonMoskowitz1964'],
   },
   'physics-panel': {
     text: {
-      en: 'Does the sea obey physics? The panel measures it through its CPU twin. At one point it records the height over time: four times its standard deviation σ_η is the measured significant wave height Hs, and its spectrum’s peak ωp gives the peak period Tp. Beside them stands theory: 4√m₀, m₀ being the variance of the model’s spectrum, and Pierson and Moskowitz’s law at U₁₉.₅ = 1.026 U₁₀, the wind 19.5 m up. At 10 m/s theory gives Hs ≈ 2.2 m and Tp ≈ 7.5 s. On a patch, the panel also times each Fourier mode’s phase, ω, against √(g k tanh kh), k being its wavenumber and h the depth.',
-      es: 'El panel mide el mar con su gemelo en CPU. En un punto registra la altura en el tiempo: cuatro veces su desviación típica σ_η es la altura significativa medida Hs, y el pico ωp de su espectro da el periodo de pico Tp. Al lado está la teoría: 4√m₀, con m₀ la varianza del espectro del modelo, y la ley de Pierson y Moskowitz con U₁₉.₅ = 1,026 U₁₀, el viento a 19,5 m. A 10 m/s da Hs ≈ 2,2 m y Tp ≈ 7,5 s. En un parche cronometra además la fase de cada modo de Fourier, ω, frente a √(g k tanh kh), con k su número de onda y h la profundidad.',
+      en: 'Does the sea obey physics? The panel measures it through its CPU twin. At one point it records the height over time: four times its standard deviation σ_η is the measured significant wave height Hs, and its spectrum’s peak ωp gives the peak period Tp. Beside them stands theory: 4√m₀, m₀ being the variance of the model’s spectrum, and Pierson and Moskowitz’s law at U₁₉.₅ = 1.026 U₁₀, the wind 19.5 m up. At 10 m/s theory gives Hs ≈ 2.25 m and Tp ≈ 7.5 s. On a patch, the panel also times each Fourier mode’s phase, ω, against √(g k tanh kh), k being its wavenumber and h the depth.',
+      es: 'El panel mide el mar con su gemelo en CPU. En un punto registra la altura en el tiempo: cuatro veces su desviación típica σ_η es la altura significativa medida Hs, y el pico ωp de su espectro da el periodo de pico Tp. Al lado está la teoría: 4√m₀, con m₀ la varianza del espectro del modelo, y la ley de Pierson y Moskowitz con U₁₉.₅ = 1,026 U₁₀, el viento a 19,5 m. A 10 m/s da Hs ≈ 2,25 m y Tp ≈ 7,5 s. En un parche cronometra además la fase de cada modo de Fourier, ω, frente a √(g k tanh kh), con k su número de onda y h la profundidad.',
     },
     math:
       m('<msub><mi>H</mi><mi>s</mi></msub><mo>=</mo><mn>4</mn><msub><mi>σ</mi><mi>η</mi></msub><mo>≈</mo><mn>4</mn><msqrt><msub><mi>m</mi><mn>0</mn></msub></msqrt><mo>≈</mo><mn>0.21</mn><mfrac><msubsup><mi>U</mi><mn>19.5</mn><mn>2</mn></msubsup><mi>g</mi></mfrac>') +
       m('<msub><mi>T</mi><mi>p</mi></msub><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi></mrow><msub><mi>ω</mi><mi>p</mi></msub></mfrac><mo>,</mo><mspace width="0.5em"/><msub><mi>ω</mi><mi>p</mi></msub><mo>=</mo><mn>0.877</mn><mfrac><mi>g</mi><msub><mi>U</mi><mn>19.5</mn></msub></mfrac><mo>,</mo><mspace width="0.5em"/><msub><mi>U</mi><mn>19.5</mn></msub><mo>=</mo><mn>1.026</mn><msub><mi>U</mi><mn>10</mn></msub>'),
     question: {
       ask: {
-        en: 'At 10 m/s theory’s Hs is about 2.2 m. If you double Wind speed to 20 m/s, will Hs double, or grow by more? And the peak period?',
-        es: 'A 10 m/s la Hs de la teoría ronda los 2,2 m. Si duplicas la velocidad del viento a 20 m/s, ¿se duplica Hs o crece más? ¿Y el periodo de pico?',
+        en: 'At 10 m/s theory’s Hs is about 2.25 m. If you double Wind speed to 20 m/s, will Hs double, or grow by more? And the peak period?',
+        es: 'A 10 m/s la Hs de la teoría ronda los 2,25 m. Si duplicas la velocidad del viento a 20 m/s, ¿se duplica Hs o crece más? ¿Y el periodo de pico?',
       },
       answer: {
         en: 'Hs grows about fourfold, to ≈ 9.0 m: Pierson and Moskowitz’s Hs, and 4√m₀ of the spectrum the sea is drawn from, go as U². The peak period doubles, from ≈ 7.5 s to ≈ 15 s, because ωp ∝ g/U. Move Wind speed and let the panel measure the new sea.',
@@ -306,8 +306,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'The hull is a Gaussian pressure patch, each source’s response is taken in its far field (softened under the hull), and waves older than 56–76 s fade out.',
-      es: 'El casco es una mancha de presión gaussiana, la respuesta de cada fuente se toma en su campo lejano (suavizada bajo el casco) y las olas de más de 56–76 s se desvanecen.',
+      en: 'The hull is a Gaussian pressure patch, each source taken in its far field (softened under the hull); waves older than 56–76 s fade out.',
+      es: 'El casco es una mancha de presión gaussiana, cada fuente en su campo lejano (suavizada bajo el casco); las olas de más de 56–76 s se desvanecen.',
     },
     references: ['kelvin1887', 'lamb1932', 'lighthill1978', 'darmon2014', 'rabaudMoisy2013'],
   },
@@ -330,8 +330,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'The track keeps 64 points, every 0.5 s near the boat and every 2 s further back, and waves older than 56–76 s fade out: a budget, not physics.',
-      es: 'La derrota guarda 64 puntos, cada 0,5 s cerca del barco y cada 2 s más atrás, y las olas de más de 56–76 s se desvanecen: un presupuesto, no física.',
+      en: 'The track keeps 64 points, every 0.5 s near the boat, every 2 s further back; waves older than 56–76 s fade out: a budget, not physics.',
+      es: 'La derrota guarda 64 puntos, cada 0,5 s cerca del barco y cada 2 s más atrás; las olas de más de 56–76 s se desvanecen: presupuesto, no física.',
     },
     references: ['lamb1932', 'lighthill1978', 'darmon2014'],
   },
@@ -354,8 +354,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'The kernel is fitted by least squares, not Tessendorf’s Bessel sum; a light damping (waves lose a factor e in 100 s) and a sponge at the border are numerical choices.',
-      es: 'El núcleo se ajusta por mínimos cuadrados, no es la suma de Bessel de Tessendorf; un amortiguamiento leve (las olas pierden un factor e en 100 s) y una esponja en el borde son decisiones numéricas.',
+      en: 'The kernel is fitted by least squares, not Tessendorf’s Bessel sum; the damping (a factor e in 100 s) and the border’s sponge are numerical.',
+      es: 'El núcleo se ajusta por mínimos cuadrados, no es la suma de Bessel de Tessendorf; el amortiguamiento (factor e en 100 s) y la esponja del borde son numéricos.',
     },
     references: ['tessendorf2001', 'tessendorf2004'],
   },
@@ -378,8 +378,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'The stone is a Gaussian bump of water, 2 m high, released at rest, not a falling body with its splash; rings are drawn only where the grid carries the waves.',
-      es: 'La piedra es un bulto gaussiano de agua de 2 m de alto, soltado en reposo, no un cuerpo que cae con su salpicadura; los anillos se dibujan solo donde la malla lleva las olas.',
+      en: 'The stone is a Gaussian bump of water 2 m high released at rest, not a falling body; rings show only where the grid carries waves.',
+      es: 'La piedra es un bulto gaussiano de agua de 2 m de alto soltado en reposo, no un cuerpo que cae; hay anillos solo donde la malla lleva olas.',
     },
     references: ['lamb1932', 'tessendorf2004'],
   },
@@ -402,8 +402,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'c = 2.56 m/s is a choice: deep water’s phase speed for a 1.5 rad/m wave, mid-band; the sponge between the halves is a numerical wall, not a coast.',
-      es: 'c = 2,56 m/s es una elección: la velocidad de fase del agua profunda para una ola de 1,5 rad/m, a mitad de banda; la esponja entre las mitades es un muro numérico, no una costa.',
+      en: 'c = 2.56 m/s is chosen: deep water’s phase speed at 1.5 rad/m, mid-band; the sponge between the halves is a numerical wall.',
+      es: 'c = 2,56 m/s es una elección: la velocidad de fase del agua profunda a 1,5 rad/m; la esponja entre las mitades es un muro numérico.',
     },
     references: ['tessendorf2004', 'lamb1932'],
   },
@@ -426,8 +426,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'The hull’s flow is a stand-in: a bow source and a stern sink of equal flux; the hand-over at D and its 8 m blend are choices too.',
-      es: 'El flujo del casco es un sustituto: una fuente en la proa y un sumidero en la popa de igual caudal; el relevo en D y su mezcla de 8 m también son elecciones.',
+      en: 'The hull’s flow is a stand-in: a bow source and a stern sink of equal flux; the hand-over at D and its 8 m blend are choices.',
+      es: 'El flujo del casco es un sustituto: fuente en proa y sumidero en popa de igual caudal; el relevo en D y su mezcla de 8 m son elecciones.',
     },
     references: ['tessendorf2004', 'kelvin1887', 'lighthill1978'],
   },
