@@ -15,6 +15,7 @@ export const BIBLIOGRAPHY = {
   airy1845: { authors: 'G. B. Airy', year: 1845, title: 'Tides and waves', where: 'Encyclopaedia Metropolitana, vol. 5, 241–396' },
   assarssonMoller2000: { authors: 'U. Assarsson, T. Möller', year: 2000, title: 'Optimized view frustum culling algorithms for bounding boxes', where: 'Journal of Graphics Tools 5(1), 9–22' },
   bruneton2010: { authors: 'E. Bruneton, F. Neyret, N. Holzschuch', year: 2010, title: 'Real-time realistic ocean lighting using seamless transitions from geometry to BRDF', where: 'Computer Graphics Forum 29(2), 487–496 (Eurographics 2010)' },
+  brunetonNeyret2008: { authors: 'E. Bruneton, F. Neyret', year: 2008, title: 'Precomputed atmospheric scattering', where: 'Computer Graphics Forum 27(4), 1079–1086 (EGSR 2008)' },
   callaghan2012: { authors: 'A. H. Callaghan, G. B. Deane, M. D. Stokes, B. Ward', year: 2012, title: 'Observed variation in the decay time of oceanic whitecap foam', where: 'Journal of Geophysical Research 117, C09015' },
   coxMunk1954: { authors: 'C. Cox, W. Munk', year: 1954, title: 'Measurement of the roughness of the sea surface from photographs of the sun’s glitter', where: 'Journal of the Optical Society of America 44(11), 838–850' },
   darmon2014: { authors: 'A. Darmon, M. Benzaquen, E. Raphaël', year: 2014, title: 'Kelvin wake pattern at large Froude numbers', where: 'Journal of Fluid Mechanics 738, R3' },
@@ -29,7 +30,10 @@ export const BIBLIOGRAPHY = {
   holthuijsen2007: { authors: 'L. H. Holthuijsen', year: 2007, title: 'Waves in Oceanic and Coastal Waters', where: 'Cambridge University Press' },
   kelvin1887: { authors: 'W. Thomson (Lord Kelvin)', year: 1887, title: 'On ship waves', where: 'Proceedings of the Institution of Mechanical Engineers 38, 409–434' },
   kinsman1965: { authors: 'B. Kinsman', year: 1965, title: 'Wind Waves: Their Generation and Propagation on the Ocean Surface', where: 'Prentice-Hall' },
+  koschmieder1924: { authors: 'H. Koschmieder', year: 1924, title: 'Theorie der horizontalen Sichtweite', where: 'Beiträge zur Physik der freien Atmosphäre 12' },
   lamb1932: { authors: 'H. Lamb', year: 1932, title: 'Hydrodynamics, 6th edition', where: 'Cambridge University Press, §§ 228–255' },
+  lighthill1978: { authors: 'J. Lighthill', year: 1978, title: 'Waves in Fluids', where: 'Cambridge University Press, § 3.10 (ship waves)' },
+  losassoHoppe2004: { authors: 'F. Losasso, H. Hoppe', year: 2004, title: 'Geometry clipmaps: terrain rendering using nested regular grids', where: 'ACM Transactions on Graphics 23(3), 769–776 (SIGGRAPH 2004)' },
   mitsuyasu1975: { authors: 'H. Mitsuyasu et al.', year: 1975, title: 'Observations of the directional spectrum of ocean waves using a cloverleaf buoy', where: 'Journal of Physical Oceanography 5, 750–760' },
   monahan1980: { authors: 'E. C. Monahan, I. O’Muircheartaigh', year: 1980, title: 'Optimal power-law description of oceanic whitecap coverage dependence on wind speed', where: 'Journal of Physical Oceanography 10, 2094–2099' },
   morel1974: { authors: 'A. Morel', year: 1974, title: 'Optical properties of pure water and pure sea water', where: 'Optical Aspects of Oceanography, eds. N. G. Jerlov, E. Steemann Nielsen, Academic Press, 1–24' },
@@ -37,6 +41,7 @@ export const BIBLIOGRAPHY = {
   phillips1958: { authors: 'O. M. Phillips', year: 1958, title: 'The equilibrium range in the spectrum of wind-generated waves', where: 'Journal of Fluid Mechanics 4(4), 426–434' },
   piersonMoskowitz1964: { authors: 'W. J. Pierson, L. Moskowitz', year: 1964, title: 'A proposed spectral form for fully developed wind seas based on the similarity theory of S. A. Kitaigorodskii', where: 'Journal of Geophysical Research 69(24), 5181–5190' },
   popeFry1997: { authors: 'R. M. Pope, E. S. Fry', year: 1997, title: 'Absorption spectrum (380–700 nm) of pure water. II. Integrating cavity measurements', where: 'Applied Optics 36(33), 8710–8723' },
+  rabaudMoisy2013: { authors: 'M. Rabaud, F. Moisy', year: 2013, title: 'Ship wakes: Kelvin or Mach angle?', where: 'Physical Review Letters 110, 214503' },
   reinhard2002: { authors: 'E. Reinhard, M. Stark, P. Shirley, J. Ferwerda', year: 2002, title: 'Photographic tone reproduction for digital images', where: 'ACM Transactions on Graphics 21(3), 267–276 (SIGGRAPH 2002)' },
   schlick1994: { authors: 'C. Schlick', year: 1994, title: 'An inexpensive BRDF model for physically-based rendering', where: 'Computer Graphics Forum 13(3), 233–246' },
   stewart2008: { authors: 'R. H. Stewart', year: 2008, title: 'Introduction to Physical Oceanography', where: 'Texas A&M University, ch. 16' },
@@ -44,6 +49,7 @@ export const BIBLIOGRAPHY = {
   tessendorf2001: { authors: 'J. Tessendorf', year: 2001, title: 'Simulating ocean water', where: 'SIGGRAPH 2001 course notes, Simulating Nature: Realistic and Interactive Techniques' },
   tessendorf2004: { authors: 'J. Tessendorf', year: 2004, title: 'Interactive water surfaces', where: 'Game Programming Gems 4, ed. A. Kirmse, Charles River Media, 265–274' },
   walter2007: { authors: 'B. Walter, S. R. Marschner, H. Li, K. E. Torrance', year: 2007, title: 'Microfacet models for refraction through rough surfaces', where: 'Eurographics Symposium on Rendering 2007, 195–206' },
+  welch1967: { authors: 'P. D. Welch', year: 1967, title: 'The use of fast Fourier transform for the estimation of power spectra: a method based on time averaging over short, modified periodograms', where: 'IEEE Transactions on Audio and Electroacoustics 15(2), 70–73' },
 } satisfies Record<string, Reference>;
 
 export type ReferenceKey = keyof typeof BIBLIOGRAPHY;
