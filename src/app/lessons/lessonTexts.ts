@@ -101,8 +101,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
     },
     math: m('<mi>s</mi><mo>=</mo><mtext>textureLod</mtext><mo>(</mo><mtext>sky</mtext><mo>,</mo><mover><mi>d</mi><mo>^</mo></mover><mo>,</mo><mn>0</mn><mo>)</mo><mo>,</mo><mspace width="0.6em"/><mtext>color</mtext><mo>=</mo><msup><mi>s</mi><mn>2</mn></msup>'),
     choice: {
-      en: 'The sky is painted, not computed from scattering in the air: a zenith-to-horizon gradient, painted clouds, and a sun disc drawn 0.99° wide where the real one is 0.27°.',
-      es: 'El cielo está pintado, no calculado por dispersión en el aire: degradado del cenit al horizonte, nubes pintadas y un disco solar de 0,99° donde el real mide 0,27°.',
+      en: 'The sky is painted, not computed from scattering in the air: a zenith-to-horizon gradient, painted clouds, and a sun disc drawn 0.99° in radius where the real one’s is 0.27°.',
+      es: 'El cielo está pintado, no calculado por dispersión en el aire: degradado del cenit al horizonte, nubes pintadas y un disco solar de 0,99° de radio donde el real tiene 0,27°.',
     },
     question: {
       ask: {
@@ -110,8 +110,8 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
         es: 'El sol está en el acimut 20°. Pon el acimut del sol en 200°: ¿en qué celda de la cruz aparecerá su disco?',
       },
       answer: {
-        en: 'In the rightmost cell of the middle row, +z, behind the default camera. Azimuth counts clockwise from −z, so 200° points along (−0.34, ·, +0.94), and a direction shows in the face whose axis it is nearest. At 20° the disc sat in the −z cell, right of its centre.',
-        es: 'En la celda derecha de la fila central, +z, detrás de la cámara por defecto. El acimut crece en sentido horario desde −z: 200° apunta hacia (−0,34, ·, +0,94), y una dirección aparece en la cara de cuyo eje está más cerca. A 20° el disco estaba en la celda −z, a la derecha del centro.',
+        en: 'In the rightmost cell of the middle row, +z, behind the default camera. Azimuth counts clockwise from −z, so at 200° its (x, z) is along (−0.34, 0.94), and a direction shows in the face whose axis it is nearest. At 20° the disc sat in the −z cell, right of its centre.',
+        es: 'En la celda derecha de la fila central, +z, detrás de la cámara por defecto. El acimut crece en sentido horario desde −z: a 200° su (x, z) va según (−0,34; 0,94), y una dirección aparece en la cara de cuyo eje está más cerca. A 20° el disco estaba en la celda −z, a la derecha del centro.',
       },
     },
     references: ['greene1986'],
