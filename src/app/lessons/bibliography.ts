@@ -14,6 +14,7 @@ export interface Reference {
 export const BIBLIOGRAPHY = {
   airy1845: { authors: 'G. B. Airy', year: 1845, title: 'Tides and waves', where: 'Encyclopaedia Metropolitana, vol. 5, 241–396' },
   assarssonMoller2000: { authors: 'U. Assarsson, T. Möller', year: 2000, title: 'Optimized view frustum culling algorithms for bounding boxes', where: 'Journal of Graphics Tools 5(1), 9–22' },
+  blinnNewell1976: { authors: 'J. F. Blinn, M. E. Newell', year: 1976, title: 'Texture and reflection in computer generated images', where: 'Communications of the ACM 19(10), 542–547' },
   bruneton2010: { authors: 'E. Bruneton, F. Neyret, N. Holzschuch', year: 2010, title: 'Real-time realistic ocean lighting using seamless transitions from geometry to BRDF', where: 'Computer Graphics Forum 29(2), 487–496 (Eurographics 2010)' },
   brunetonNeyret2008: { authors: 'E. Bruneton, F. Neyret', year: 2008, title: 'Precomputed atmospheric scattering', where: 'Computer Graphics Forum 27(4), 1079–1086 (EGSR 2008)' },
   callaghan2012: { authors: 'A. H. Callaghan, G. B. Deane, M. D. Stokes, B. Ward', year: 2012, title: 'Observed variation in the decay time of oceanic whitecap foam', where: 'Journal of Geophysical Research 117, C09015' },
@@ -24,6 +25,7 @@ export const BIBLIOGRAPHY = {
   ebert2003: { authors: 'D. S. Ebert, F. K. Musgrave, D. Peachey, K. Perlin, S. Worley', year: 2003, title: 'Texturing and Modeling: A Procedural Approach, 3rd edition', where: 'Morgan Kaufmann, ch. 2 (lattice noises: value noise and gradient noise)' },
   fournierReeves1986: { authors: 'A. Fournier, W. T. Reeves', year: 1986, title: 'A simple model of ocean waves', where: 'SIGGRAPH ’86, Computer Graphics 20(4), 75–84' },
   gerstner1802: { authors: 'F. J. Gerstner', year: 1802, title: 'Theorie der Wellen', where: 'Abhandlungen der Königlichen Böhmischen Gesellschaft der Wissenschaften, Prague' },
+  greene1986: { authors: 'N. Greene', year: 1986, title: 'Environment mapping and other applications of world projections', where: 'IEEE Computer Graphics and Applications 6(11), 21–29' },
   hasselmann1973: { authors: 'K. Hasselmann et al.', year: 1973, title: 'Measurements of wind-wave growth and swell decay during the Joint North Sea Wave Project (JONSWAP)', where: 'Ergänzungsheft zur Deutschen Hydrographischen Zeitschrift, Reihe A, 8(12)' },
   hasselmann1980: { authors: 'D. E. Hasselmann, M. Dunckel, J. A. Ewing', year: 1980, title: 'Directional wave spectra observed during JONSWAP 1973', where: 'Journal of Physical Oceanography 10, 1264–1280' },
   hecht2017: { authors: 'E. Hecht', year: 2017, title: 'Optics, 5th edition', where: 'Pearson, ch. 4 (Snell’s law, the Fresnel equations)' },
@@ -49,6 +51,7 @@ export const BIBLIOGRAPHY = {
   tessendorf2001: { authors: 'J. Tessendorf', year: 2001, title: 'Simulating ocean water', where: 'SIGGRAPH 2001 course notes, Simulating Nature: Realistic and Interactive Techniques' },
   tessendorf2004: { authors: 'J. Tessendorf', year: 2004, title: 'Interactive water surfaces', where: 'Game Programming Gems 4, ed. A. Kirmse, Charles River Media, 265–274' },
   walter2007: { authors: 'B. Walter, S. R. Marschner, H. Li, K. E. Torrance', year: 2007, title: 'Microfacet models for refraction through rough surfaces', where: 'Eurographics Symposium on Rendering 2007, 195–206' },
+  watt1990: { authors: 'M. Watt', year: 1990, title: 'Light-water interaction using backward beam tracing', where: 'SIGGRAPH ’90, Computer Graphics 24(4), 377–385' },
   welch1967: { authors: 'P. D. Welch', year: 1967, title: 'The use of fast Fourier transform for the estimation of power spectra: a method based on time averaging over short, modified periodograms', where: 'IEEE Transactions on Audio and Electroacoustics 15(2), 70–73' },
 } satisfies Record<string, Reference>;
 
