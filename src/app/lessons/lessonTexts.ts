@@ -51,6 +51,12 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       es: 'El oleaje en lo más alto de ambos rangos: 4 m de amplitud y 0,2 rad/m, una longitud de onda de unos 31 m. Las crestas son ahora empinadas y cercanas, y la malla empieza a mostrar sus vértices en ellas. El shader cuenta los ángulos en vueltas y conserva solo la fracción, así que el argumento k x sigue siendo pequeño incluso a kilómetros del origen, donde float32 perdería la fase.',
     },
     math: m('<mi>λ</mi><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi></mrow><mi>k</mi></mfrac><mo>≈</mo><mn>31</mn><mspace width="0.2em"/><mtext>m</mtext>'),
+    question: {
+      ask: { en: 'At k = 0.2 rad/m, how far apart will two crests be?', es: 'Con k = 0,2 rad/m, ¿a qué distancia estarán dos crestas?' },
+      answer: { en: 'About 31 m: the wavelength is 2π/k = 2π/0.2 ≈ 31.4 m.', es: 'Unos 31 m: la longitud de onda es 2π/k = 2π/0,2 ≈ 31,4 m.' },
+    },
+    choice: { en: 'The sliders’ ends, 4 m and 0.2 rad/m, are the app’s limits, not the sea’s.', es: 'Los extremos de los controles, 4 m y 0,2 rad/m, son límites de la aplicación, no del mar.' },
+    references: ['deanDalrymple1991'],
   },
   'perlin-hash': {
     text: {
@@ -151,6 +157,11 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
       es: 'Visto desde abajo, todo el cielo se comprime en un círculo sobre la cabeza: la ventana de Snell. Un rayo que pasa del agua al aire se aleja de la normal y, más allá del ángulo crítico, arcsen(1/1,333) = 48,6°, no puede salir: se refleja totalmente y se ve el color del agua reflejado. El borde de la ventana se mueve con las olas, porque cada faceta tiene su propia normal.',
     },
     math: m('<msub><mi>θ</mi><mi>c</mi></msub><mo>=</mo><mi>arcsin</mi><mfrac><msub><mi>n</mi><mtext>air</mtext></msub><msub><mi>n</mi><mtext>water</mtext></msub></mfrac><mo>=</mo><mn>48.6</mn><mo>°</mo>'),
+    question: {
+      ask: { en: 'Looking straight up from under the water, how wide is the circle through which you see the sky?', es: 'Mirando hacia arriba desde debajo del agua, ¿qué anchura tiene el círculo por el que se ve el cielo?' },
+      answer: { en: 'A cone of half-angle 48.6° about the vertical, the critical angle arcsin(1/1.333); beyond it the surface mirrors the water.', es: 'Un cono de 48,6° de semiángulo en torno a la vertical, el ángulo crítico arcsen(1/1,333); más allá, la superficie refleja el agua.' },
+    },
+    references: ['hecht2017'],
   },
   'underwater-fog': {
     text: {
