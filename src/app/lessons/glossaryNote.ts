@@ -67,6 +67,8 @@ export class GlossaryNote {
     this.definition.textContent = term.definition[this.tr.language];
     this.element.dataset.term = key;
     this.element.hidden = false;
+    // On a phone's short sheet the note can open below the fold: bring it into sight, no further.
+    this.element.scrollIntoView({ block: 'nearest' });
   }
 
   /** Closes the note; true if it was open. With `refocus`, the focus returns to the term that opened it. */

@@ -167,6 +167,8 @@ export class LessonDrawer {
     this.list.hidden = true;
     this.card.hidden = true;
     this.listView.hidden = false;
+    // From its top, wherever the card or the list had been scrolled to.
+    this.body.scrollTop = 0;
     heading.focus({ preventScroll: true });
   }
 
