@@ -56,7 +56,16 @@ export type TeachingWordId =
   | 'step'
   | 'seaTools'
   | 'dropStone'
-  | 'coursePage';
+  | 'coursePage'
+  | 'lessonQuestion'
+  | 'showAnswer'
+  | 'hideAnswer'
+  | 'lessonChoice'
+  | 'lessonReferences'
+  | 'bibliography'
+  | 'glossary'
+  | 'backToLessons'
+  | 'glossaryTermHint';
 
 const WORDS: Record<Language, Record<TeachingWordId, string>> = {
   en: {
@@ -111,6 +120,15 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     seaTools: 'Sea tools: probe, ruler, stones',
     dropStone: 'Drop a stone (interactive waves)',
     coursePage: 'The course page: the seed report, live, every figure in one chapter',
+    lessonQuestion: 'Before you touch anything',
+    showAnswer: 'Show the answer',
+    hideAnswer: 'Hide the answer',
+    lessonChoice: 'A choice, not physics:',
+    lessonReferences: 'References',
+    bibliography: 'Bibliography',
+    glossary: 'Glossary',
+    backToLessons: 'Back to the lessons',
+    glossaryTermHint: '{term}: what it means',
   },
   es: {
     lessonsTitle: 'Lecciones',
@@ -164,6 +182,15 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     seaTools: 'Herramientas: sonda, regla, piedras',
     dropStone: 'Tirar una piedra (olas interactivas)',
     coursePage: 'La página del curso: el informe semilla, en vivo, con todas sus figuras en un capítulo',
+    lessonQuestion: 'Antes de tocar nada',
+    showAnswer: 'Mostrar la respuesta',
+    hideAnswer: 'Ocultar la respuesta',
+    lessonChoice: 'Una elección, no física:',
+    lessonReferences: 'Referencias',
+    bibliography: 'Bibliografía',
+    glossary: 'Glosario',
+    backToLessons: 'Volver a las lecciones',
+    glossaryTermHint: '{term}: qué significa',
   },
 };
 

@@ -12,6 +12,8 @@ import { LESSON_TEXTS } from './lessonTexts';
 import { LessonLegend } from './lessonLegend';
 import { FreeArea } from '../layout/freeArea';
 import { FigureCaptions } from './figureCaptions';
+import { GlossaryNote } from './glossaryNote';
+import { bibliographyList, glossaryList, referencesFold } from './referenceLists';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -24,6 +26,9 @@ const NEXT_KEYS = new Set(['ArrowRight', 'PageDown']);
 const PREVIOUS_KEYS = new Set(['ArrowLeft', 'PageUp']);
 /** Keys that move the focus along the list of lessons. */
 const LIST_KEYS = new Set(['ArrowDown', 'ArrowUp', 'Home', 'End']);
+
+/** The views reachable from the list beside the lessons: every work cited, every term defined. */
+type ListView = 'bibliography' | 'glossary';
 
 function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: string, text?: string): HTMLElementTagNameMap[K] {
   const el = document.createElement(tag);
@@ -52,6 +57,8 @@ export class LessonDrawer {
   private readonly body: HTMLElement;
   private readonly list: HTMLOListElement;
   private readonly card: HTMLElement;
+  private readonly listView: HTMLElement;
+  private glossaryNote: GlossaryNote | null = null;
   private readonly toggle: HTMLButtonElement;
   private readonly position: HTMLElement;
   private readonly headerTitle: HTMLElement;
@@ -92,7 +99,16 @@ export class LessonDrawer {
     this.list = element('ol', 'oceano-lessons-list');
     this.card = element('article', 'oceano-lesson-card');
     this.card.hidden = true;
-    this.body.append(this.list, this.card);
+    // Escape closes a term's definition and returns to the term, before anything else hears it.
+    this.card.addEventListener('keydown', (event) => {
+      if (event.key === 'Escape' && this.glossaryNote?.close(true)) {
+        event.preventDefault();
+        event.stopPropagation();
+      }
+    });
+    this.listView = element('section', 'oceano-lessons-view');
+    this.listView.hidden = true;
+    this.body.append(this.list, this.card, this.listView);
     this.root.append(header, this.body);
     if (listed) this.buildList();
     else this.list.hidden = true;
@@ -132,6 +148,28 @@ export class LessonDrawer {
     const item = element('li', 'oceano-lessons-item');
     item.append(course);
     this.list.append(item);
+    for (const view of ['bibliography', 'glossary'] as const) {
+      const open = button('oceano-lessons-extra', teachingWord(this.tr, view), teachingWord(this.tr, view), () => this.showListView(view));
+      open.dataset.view = view;
+      const entry = element('li', 'oceano-lessons-item');
+      entry.append(open);
+      this.list.append(entry);
+    }
+  }
+
+  /** The bibliography or the glossary in place of the list, with a way back to it. */
+  private showListView(view: ListView): void {
+    const heading = element('h2', 'oceano-lessons-view-title', teachingWord(this.tr, view));
+    heading.tabIndex = -1;
+    const back = button('oceano-lessons-back', teachingWord(this.tr, 'backToLessons'), `‹ ${teachingWord(this.tr, 'backToLessons')}`, () => this.showList());
+    this.listView.replaceChildren(back, heading, view === 'bibliography' ? bibliographyList() : glossaryList(this.tr));
+    this.listView.dataset.view = view;
+    this.list.hidden = true;
+    this.card.hidden = true;
+    this.listView.hidden = false;
+    // From its top, wherever the card or the list had been scrolled to.
+    this.body.scrollTop = 0;
+    heading.focus({ preventScroll: true });
   }
 
   private open(id: string): void {
@@ -147,9 +185,14 @@ export class LessonDrawer {
 
   private showList(): void {
     this.setCollapsed(false);
+    const fromView = !this.listView.hidden ? this.listView.dataset.view : undefined;
     this.card.hidden = true;
+    this.listView.hidden = true;
     this.list.hidden = false;
     this.legend.show(null, null);
+    // Back from the bibliography or the glossary: to the item that opened it.
+    const opener = fromView ? this.list.querySelector<HTMLElement>(`[data-view="${fromView}"]`) : null;
+    if (opener) return opener.focus();
     (this.current ? this.lessonButtons.get(this.current.id) : this.list.querySelector('button'))?.focus();
   }
 
@@ -200,6 +243,7 @@ export class LessonDrawer {
     this.hooks.openFolders(lesson.controls);
     this.renderCard(lesson);
     this.list.hidden = true;
+    this.listView.hidden = true;
     this.card.hidden = false;
     if (!this.listed) this.headerTitle.textContent = LESSON_TITLES[lesson.id][this.tr.language];
     if (this.listed || this.container.clientWidth >= SMALL_FIGURE) this.setCollapsed(false);
@@ -218,7 +262,8 @@ export class LessonDrawer {
     const title = element('h2', 'oceano-lesson-title', LESSON_TITLES[lesson.id][language]);
     title.tabIndex = -1;
     const section = element('p', 'oceano-lesson-section', SECTION_NAMES[lesson.section][language]);
-    const text = element('p', 'oceano-lesson-text', words.text[language]);
+    this.glossaryNote = new GlossaryNote(this.tr, `${this.body.id}-term`);
+    const text = this.glossaryNote.paragraph('oceano-lesson-text', words.text[language]);
     const math = element('div', 'oceano-lesson-math');
     // Our own MathML, from lessonTexts.ts: never text from the URL or the user.
     math.innerHTML = words.math;
@@ -233,11 +278,42 @@ export class LessonDrawer {
     controls.append(element('legend', '', teachingWord(this.tr, 'lessonControls')));
     this.controls.clear();
     for (const key of lesson.controls) controls.append(this.buildControl(key));
-    this.card.append(title, section, text, math, code, controls);
+    this.card.append(title, section);
+    if (words.question) this.card.append(this.questionBlock(words.question.ask[language], words.question.answer[language]));
+    this.card.append(text, this.glossaryNote.element);
+    if (words.choice) {
+      const choice = element('p', 'oceano-lesson-choice');
+      choice.append(element('strong', 'oceano-lesson-choice-label', teachingWord(this.tr, 'lessonChoice')), ' ', words.choice[language]);
+      this.card.append(choice);
+    }
+    this.card.append(math, code, controls);
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);
+    if (words.references && words.references.length > 0) this.card.append(referencesFold(this.tr, words.references));
     if (this.params) this.sync(this.params);
     if (focusInCard) title.focus({ preventScroll: true });
+  }
+
+  /** The question asked before anything is touched; its answer stays hidden until the button is pressed. */
+  private questionBlock(ask: string, answer: string): HTMLElement {
+    const block = element('section', 'oceano-lesson-question');
+    const label = element('p', 'oceano-lesson-question-label', teachingWord(this.tr, 'lessonQuestion'));
+    label.id = `${this.body.id}-question`;
+    block.setAttribute('aria-labelledby', label.id);
+    const shown = element('p', 'oceano-lesson-answer', answer);
+    shown.id = `${this.body.id}-answer`;
+    shown.hidden = true;
+    const reveal = element('button', 'oceano-lesson-reveal', teachingWord(this.tr, 'showAnswer'));
+    reveal.type = 'button';
+    reveal.setAttribute('aria-expanded', 'false');
+    reveal.setAttribute('aria-controls', shown.id);
+    reveal.addEventListener('click', () => {
+      shown.hidden = !shown.hidden;
+      reveal.setAttribute('aria-expanded', String(!shown.hidden));
+      reveal.textContent = teachingWord(this.tr, shown.hidden ? 'showAnswer' : 'hideAnswer');
+    });
+    block.append(label, element('p', 'oceano-lesson-question-ask', ask), reveal, shown);
+    return block;
   }
 
   private buildControl(key: ParamKey): HTMLElement {
