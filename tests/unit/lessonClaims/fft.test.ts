@@ -6,8 +6,8 @@ import { seaStateFromParams, type SeaState } from '../../../src/sim/waves/spectr
 import { frequencySpectrum, peakWavelength } from '../../../src/sim/waves/spectra/waveSpectrum';
 import { spectralTheory } from '../../../src/sim/tools/probeTheory';
 import { PM_ALPHA, PM_BETA, windAt19_5 } from '../../../src/sim/waves/spectra/piersonMoskowitz';
-import { JONSWAP_GAMMA, JONSWAP_SIGMA_ABOVE, JONSWAP_SIGMA_BELOW } from '../../../src/sim/waves/spectra/jonswap';
-import { waveNumber } from '../../../src/sim/waves/dispersion';
+import { JONSWAP_GAMMA, JONSWAP_SIGMA_ABOVE, JONSWAP_SIGMA_BELOW, jonswapShape } from '../../../src/sim/waves/spectra/jonswap';
+import { GRAVITY, quantiseFrequency, waveNumber } from '../../../src/sim/waves/dispersion';
 import { REPEAT_PERIOD } from '../../../src/sim/waves/spectra/initialSpectrum';
 import { FOAM_FADE_SECONDS, foamRemaining, whitecapCoverage } from '../../../src/sim/waves/fft/whitecaps';
 import { WIND_DRIFT_SHARE } from '../../../src/sim/waves/fft/foamDrift';
@@ -65,7 +65,7 @@ describe('each FFT card’s Hs and peak wavelength come from the spectrum code a
     const sea = viewSea(id);
     for (const lang of LANGS) {
       const text = LESSON_TEXTS[id].text[lang];
-      expect(agrees(numberAfter(text, hsBefore[lang]), hs(sea), 0.12), `${lang} Hs`).toBe(true);
+      expect(agrees(numberAfter(text, hsBefore[lang]), hs(sea), 0.03), `${lang} Hs`).toBe(true);
       expect(agrees(numberAfter(text, peak[lang]), peakWavelength(sea), 0.05), `${lang} λp`).toBe(true);
     }
   });
@@ -123,6 +123,27 @@ describe('fft-fresh-breeze', () => {
     // Control: the deep-water length is not the shallow one.
     expect(agrees(88, peakWavelength(shallow), 0.05)).toBe(false);
   });
+  it('names the view’s wind’s Beaufort force and rounds ω down to a multiple of 2π/1000 s, as the choice says', () => {
+    const p = viewParams('fft-fresh-breeze');
+    // Beaufort 5 is 8.0–10.7 m/s (WMO).
+    const force5 = (u: number) => u >= 8.0 && u < 10.8;
+    for (const lang of LANGS) {
+      const t = cardText('fft-fresh-breeze', lang);
+      expect(numberAfter(t, 'U₁₀ =')).toBe(p.windSpeed);
+      expect(numberAfter(t, 'Beaufort')).toBe(5);
+      expect(numberAfter(t, '2π/')).toBe(REPEAT_PERIOD);
+    }
+    expect(force5(p.windSpeed)).toBe(true);
+    const step = (2 * Math.PI) / REPEAT_PERIOD;
+    const wp = frequencySpectrum(viewSea('fft-fresh-breeze')).peak;
+    const q = quantiseFrequency(wp, REPEAT_PERIOD);
+    expect(q).toBeLessThanOrEqual(wp);
+    expect(wp - q).toBeLessThan(step);
+    expect((q / step) % 1).toBeCloseTo(0, 9);
+    // Controls: the gale's 20 m/s is no Beaufort 5; rounding to nearest would sometimes go up.
+    expect(force5(viewParams('fft-gale').windSpeed)).toBe(false);
+    expect(quantiseFrequency(step * 2.9, REPEAT_PERIOD)).not.toBeCloseTo(step * 3, 9);
+  });
 });
 
 describe('fft-short-fetch', () => {
@@ -140,6 +161,22 @@ describe('fft-short-fetch', () => {
       expect(JONSWAP_SIGMA_ABOVE).toBe(0.09);
       expect(agrees(numberAfter(t, lang === 'en' ? 'against' : 'frente a'), hs(developed), 0.02)).toBe(true);
       expect(agrees(numberAfter(t, lang === 'en' ? 'm and' : 'm y'), peakWavelength(developed), 0.01)).toBe(true);
+    }
+  });
+  it('the card’s ωp = 22 (g²/(U₁₀F))^⅓ and α = 0.076 (gF/U₁₀²)^−0.22 are the code’s at the view', () => {
+    const sea = viewSea('fft-short-fetch');
+    const shape = jonswapShape(sea.windSpeed, sea.fetch);
+    for (const lang of LANGS) {
+      const t = cardText('fft-short-fetch', lang);
+      const a = numberAfter(t, 'ωp =');
+      const b = numberAfter(t, 'α =');
+      const e = numberAfter(t, '\\^−');
+      const peak = a * ((GRAVITY * GRAVITY) / (sea.windSpeed * sea.fetch)) ** (1 / 3);
+      const alpha = b * ((GRAVITY * sea.fetch) / sea.windSpeed ** 2) ** -e;
+      expect(peak).toBeCloseTo(shape.peak, 12);
+      expect(alpha).toBeCloseTo(shape.alpha, 12);
+      // Control: a planted exponent of 0.33 (the peak's) for α fails.
+      expect(b * ((GRAVITY * sea.fetch) / sea.windSpeed ** 2) ** -0.33).not.toBeCloseTo(shape.alpha, 4);
     }
   });
   it('eight times the fetch gives the answer’s fourfold, 109 m peak wave', () => {
@@ -167,7 +204,7 @@ describe('fft-gale', () => {
       expect(numberAfter(t, lang === 'en' ? 'drifts at' : 'deriva al') / 100).toBe(WIND_DRIFT_SHARE);
       expect(numberAfter(t, 'Beaufort')).toBe(8);
       expect(t).toContain('Beaufort 7');
-      expect(agrees(numberAfter(t, lang === 'en' ? 'leaves about' : 'blanco un') / 100, whitecapCoverage(p.windSpeed), 0.1)).toBe(true);
+      expect(agrees(numberAfter(t, lang === 'en' ? 'so that about' : 'rompa un') / 100, whitecapCoverage(p.windSpeed), 0.1)).toBe(true);
       const a = LESSON_TEXTS['fft-gale'].question!.answer[lang];
       expect(agrees(numberAfter(a, lang === 'en' ? 'leaves about' : 'deja un') / 100, foamRemaining(5, 2.5), 0.05)).toBe(true);
       expect(agrees(numberAfter(a, lang === 'en' ? 'and about' : 'y un') / 100, foamRemaining(5, 8), 0.02)).toBe(true);
@@ -212,6 +249,11 @@ describe('lod-bands', () => {
     }
     expect(bottom).toBeGreaterThan(bandStart(2, L));
     expect(bottom).toBeLessThan(bandStart(3, L));
+    for (const lang of LANGS) {
+      const raised = numberAfter(LESSON_TEXTS['lod-bands'].question!.answer[lang], lang === 'en' ? 'L to about' : 'L hasta unos');
+      expect(bottom).toBeLessThan(raised);
+      expect(bottom).toBeGreaterThan(raised - 25);
+    }
     // Control: with the camera at 60 m the nearest band would be 0.
     expect(60 / Math.sin(pitch + fov / 2)).toBeLessThan(bandStart(1, L));
   });
@@ -229,7 +271,16 @@ describe('lod-morph', () => {
       expect(Math.round(numberAfter(t, lang === 'en' ? 'first' : 'primeros'))).toBe(Math.round(CHUNK_REACH + MORPH_SAFETY));
       expect(agrees(numberAfter(LESSON_TEXTS['lod-morph'].question!.answer[lang], lang === 'en' ? 'zone' : 'zona de'), 1 / z100.inverseWidth, 0.02)).toBe(true);
     }
+    for (const lang of LANGS) {
+      const a = LESSON_TEXTS['lod-morph'].question!.answer[lang];
+      expect(numberAfter(a, lang === 'en' ? 'only from' : 'solo de')).toBe(bandStart(1, L));
+      expect(numberAfter(a, lang === 'en' ? `from ${L} to` : `de ${L} a`)).toBe(bandStart(2, L));
+      expect(numberAfter(a, lang === 'en' ? 'chunk’s diagonal,' : 'parcela,')).toBe(CHUNK_SIZE);
+    }
     expect(CHUNK_REACH).toBeCloseTo(CHUNK_SIZE * Math.SQRT2, 12);
+    // Control: band 0 is exempt from the 69 m rule (the card's "past band 0"), so at L = 40 m its zone is half the band.
+    expect(1 / morphZone(0, L, MAX_LOD_BANDS).inverseWidth).toBeCloseTo(L / 2, 9);
+    expect(CHUNK_REACH + MORPH_SAFETY).toBeGreaterThan(L);
     // Control: at L = 100 m band 1 does have a zone.
     expect(Number.isFinite(z100.start)).toBe(true);
   });
@@ -252,8 +303,17 @@ describe('gerstner-gentle and gerstner-steepness', () => {
       const a = LESSON_TEXTS['gerstner-gentle'].question!.answer[lang];
       expect(agrees(numberAfter(a, lang === 'en' ? 'from' : 'de'), w[0].horizontal, 0.02)).toBe(true);
     }
-    expect(lengths[1]).toBeGreaterThan(25);
-    expect(lengths[3]).toBeLessThan(38.5);
+    for (const lang of LANGS) {
+      const t = cardText('gerstner-gentle', lang);
+      const shortest = numberAfter(t, lang === 'en' ? 'three of' : 'tres de');
+      const longest = numberAfter(t, lang === 'en' ? `three of ${shortest} to` : `tres de ${shortest} a`);
+      expect(Math.round(lengths[1])).toBeGreaterThanOrEqual(shortest);
+      expect(Math.round(lengths[3])).toBeLessThanOrEqual(longest);
+      expect(Math.round(lengths[1])).toBe(shortest);
+      expect(Math.round(lengths[3])).toBe(longest);
+    }
+    // Control: the shortest wave is not among the three.
+    expect(lengths[0]).toBeLessThan(25);
     expect(p.spectrum).toBe('jonswap');
     expect(p.fetch).toBe(20);
     // Control: at Q = 0.2 the orbit is no circle.
@@ -276,5 +336,21 @@ describe('gerstner-gentle and gerstner-steepness', () => {
     expect(many.reduce((s, w) => s + (w.horizontal / w.amplitude) * kA(w), 0)).toBeCloseTo(1, 9);
     // Control: a planted Σ kA of 1.28 for four waves fails.
     expect(agrees(1.28, sum4, 0.05)).toBe(false);
+  });
+});
+
+describe('frustum-culling and fft-normals', () => {
+  it('the drawn step is a chunk; the normals view is the 10 m/s sea with vertices 2 m apart, so ripples under 4 m are lost', () => {
+    for (const lang of LANGS) {
+      const f = LESSON_TEXTS['frustum-culling'].question!.answer[lang];
+      expect(numberAfter(f, lang === 'en' ? 'whole,' : 'entera, de')).toBe(CHUNK_SIZE);
+      const t = cardText('fft-normals', lang);
+      expect(numberAfter(t, lang === 'en' ? 'sea at' : 'mar a')).toBe(viewParams('fft-normals').windSpeed);
+      expect(numberAfter(t, lang === 'en' ? 'vertex,' : 'vértice, a')).toBe(BASE_STEP);
+      expect(numberAfter(t, lang === 'en' ? 'shorter than about' : 'de menos de unos')).toBe(2 * BASE_STEP);
+    }
+    expect(viewParams('fft-normals').waves).toBe('fft');
+    // Control: the nearest band's vertices are not 1 m apart.
+    expect(BAND_STEPS[0] * BASE_STEP).not.toBe(1);
   });
 });
