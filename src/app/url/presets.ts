@@ -90,7 +90,7 @@ export const PRESETS = {
     camera: { position: [0, -8, 20], target: [0, 5, -20] },
   },
   // The spectral sea (waves=fft): the same seed and camera, only the wind and spectrum change.
-  /** A light air, U = 4 m/s: short, low wind waves, no foam; the peak wavelength is about 14 m. */
+  /** A gentle breeze (Beaufort 3), U = 4 m/s: short, low wind waves, no foam; the peak wavelength is about 14 m. */
   calm: {
     params: { waves: 'fft', windSpeed: 4 },
     camera: { position: [0, 9, 40], target: [0, 0, -60] },
