@@ -184,17 +184,19 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
     expect(Math.abs(slow - ratio)).toBeGreaterThan(0.8);
   });
 
-  it('the question: a bump moves √(1 + 0.7²)·√(g/k): about 17 m/s at 0.05, 8.5 at 0.2; period 2π/ω 9 s then 4.5 s', () => {
+  it('the question: a bump moves √(1 + 0.7²)·√(g/k): about 17 m/s at 0.05, 8.5 at 0.2; ω = √(g k) from 0.70 to 1.40 rad/s', () => {
     const speed = (k: number) => Math.hypot(1, cosineRate) * Math.sqrt(GRAVITY / k);
-    const period = (k: number) => (2 * Math.PI) / Math.sqrt(GRAVITY * k);
+    const omega = (k: number) => Math.sqrt(GRAVITY * k);
     for (const text of [card('swell').question!.answer.en, card('swell').question!.answer.es]) {
       const plain = text.replace(/(\d),(\d)/g, '$1.$2');
       const [v1, v2] = [...plain.matchAll(/(\d+(?:\.\d+)?) m\/s/g)].map((m) => Number(m[1]));
       expect(agrees(v1, speed(0.05))).toBe(true);
       expect(agrees(v2, speed(0.2))).toBe(true);
-      const [, t1, t2] = plain.match(/(\d+(?:\.\d+)?) s (?:to|a) (\d+(?:\.\d+)?) s/)!.map(Number);
-      expect(agrees(t1, period(0.05))).toBe(true);
-      expect(agrees(t2, period(0.2))).toBe(true);
+      const [, w1, w2] = plain.match(/(\d+\.\d+) (?:to|a) (\d+\.\d+) rad\/s/)!.map(Number);
+      expect(agrees(w1, omega(0.05))).toBe(true);
+      expect(agrees(w2, omega(0.2))).toBe(true);
+      // Four times closer (2π/k) at half the speed: twice as often past a point, as ω says.
+      expect((speed(0.2) / ((2 * Math.PI) / 0.2)) / (speed(0.05) / ((2 * Math.PI) / 0.05))).toBeCloseTo(w2 / w1, 2);
     }
     // A bump is where sin = 1 and cos = ±1: check it moves so in the code.
     const k = 0.05;
@@ -208,6 +210,40 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
 
   it('control: a planted 14 m/s (ω/k alone) is not the bumps’ speed at 0.05', () => {
     expect(agrees(14, Math.hypot(1, cosineRate) * Math.sqrt(GRAVITY / 0.05))).toBe(false);
+  });
+
+  // The card: the first product slides rigidly towards −x and −z; the second slides another way, so the sum changes shape.
+  const k = 0.05;
+  const omega = Math.sqrt(GRAVITY * k);
+  const velocity: [number, number] = [-omega / k, -cosineRate * omega / k];
+  const at = (t: number) => surfaceStateAt({ ...defaultParams(), swellFrequency: k }, t);
+  const points = [[0, 0], [13, -40], [-77, 21], [250, 310]];
+
+  it('the first product keeps its shape: at time t it is the pattern of t = 0 moved by (−ω/k, −0.7 ω/k) t', () => {
+    for (const text of both('swell')) expect(text).toContain('−x');
+    for (const t of [2.5, 11]) {
+      for (const [x, z] of points) {
+        expect(firstProduct(at(t), x, z)).toBeCloseTo(firstProduct(at(0), x - velocity[0] * t, z - velocity[1] * t), 9);
+      }
+    }
+  });
+
+  it('control: the whole swell, moved at that velocity, is not the same pattern (the second product slides another way)', () => {
+    const t = 11;
+    const worst = Math.max(...points.map(([x, z]) => Math.abs(swellHeight(at(t), x, z) - swellHeight(at(0), x - velocity[0] * t, z - velocity[1] * t))));
+    expect(worst).toBeGreaterThan(0.1);
+  });
+
+  it('only the first product repeats every 2π/k: the whole swell does not (displaced-plane’s and swell-maximum’s “the first”)', () => {
+    for (const id of ['displaced-plane', 'swell-maximum']) {
+      const text = id === 'displaced-plane' ? card(id).question!.answer.en : card(id).text.en;
+      expect(text).toContain('the first');
+    }
+    const lambda = (2 * Math.PI) / k;
+    const state = at(3);
+    for (const [x, z] of points) expect(firstProduct(state, x + lambda, z)).toBeCloseTo(firstProduct(state, x, z), 9);
+    const worst = Math.max(...points.map(([x, z]) => Math.abs(swellHeight(state, x + lambda, z) - swellHeight(state, x, z))));
+    expect(worst).toBeGreaterThan(0.1);
   });
 });
 
