@@ -17,7 +17,7 @@ export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { b
   normals: { en: 'Normals', es: 'Normales', beyondSeed: false },
   envmap: { en: 'Environment map', es: 'Environment map', beyondSeed: false },
   optics: { en: 'Optics: Snell, Fresnel', es: 'Óptica: Snell, Fresnel', beyondSeed: false },
-  boat: { en: 'CPU shader and the boat', es: 'CPU shader y el bote', beyondSeed: false },
+  boat: { en: 'CPU shader and the boat', es: 'CPU shader y el barco', beyondSeed: false },
   underwater: { en: 'Under the water', es: 'Bajo el agua', beyondSeed: false },
   lod: { en: 'Optimisation: LOD', es: 'Optimización: LOD', beyondSeed: false },
   culling: { en: 'Frustum culling', es: 'Frustum culling', beyondSeed: false },

@@ -2,7 +2,8 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { LESSON_TEXTS, type LessonText } from '../../../src/app/lessons/lessonTexts';
 import { findLesson, lessonView } from '../../../src/app/lessons/lessonCatalog';
-import { defaultParams } from '../../../src/sim/params/params';
+import { defaultParams, paramDefs } from '../../../src/sim/params/params';
+import { PURE_WATER_ABSORPTION, WAVELENGTHS, molecularScattering } from '../../../src/sim/optics/waterColor';
 import { sunDirection } from '../../../src/sim/optics/sun';
 import { crossPoint } from '../../../src/sim/optics/cubeCross';
 import { SUN_DISC_COS_EDGE } from '../../../src/sim/optics/sunDisc';
@@ -11,7 +12,7 @@ import { COX_MUNK_INTERCEPT, COX_MUNK_SLOPE, seaSlopeVariance } from '../../../s
 import { HIGHLIGHT_KNEE, rollOffHighlight } from '../../../src/sim/optics/highlightRollOff';
 import { SECOND_SWELL, surfaceStateAt, swellHeight } from '../../../src/sim/waves/seed/seedSurface';
 import { ANGLE_BAND, HEAVE_BAND } from '../../../src/sim/boat/boatMotion';
-import { targetPose } from '../../../src/sim/boat/boatPose';
+import { hullSamplePoints, targetPose } from '../../../src/sim/boat/boatPose';
 import { fresnelTableFromBelow, refractedSunDirection } from '../../../src/sim/underwater/snellWindow';
 import { WATER_EXTINCTION } from '../../../src/sim/underwater/waterFog';
 import { GOD_RAY_RANGE } from '../../../src/render/underwater/godRayRange';
@@ -460,5 +461,75 @@ describe('god-rays', () => {
 
   it('control: without extinction the denser fog would brighten the shafts, so the answer rests on it', () => {
     expect(shafts(0.3, 0)).toBeGreaterThan(shafts(0.035, 0));
+  });
+});
+
+describe('second reading: the remaining numbers the code can compute', () => {
+  it('sky-cube: the default sky’s cube holds 8 bits a channel', () => {
+    expect(numberIn(card('sky-cube').text.en, /in (\d+) bits/)).toBe(8);
+    expect(source('src/render/sky/sunSky.ts')).toMatch(/new WebGLCubeRenderTarget\(size, \{ type: UnsignedByteType,/);
+  });
+
+  it('control: a cube of half floats would not be the card’s 8 bits', () => {
+    expect(source('src/render/sky/sunSky.ts')).not.toMatch(/new WebGLCubeRenderTarget\(size, \{ type: HalfFloatType,/);
+    expect(numberIn(card('sky-cube').text.en, /in (\d+) bits/)).not.toBe(16);
+  });
+
+  it('fresnel: still under a quarter at 75°, then most of the rise to 1 comes after it', () => {
+    const c = card('fresnel');
+    const knee = numberIn(c.question!.answer.en, /only past (\d+)°/);
+    const F = (deg: number) => fresnelReflectance(Math.cos(radians(deg)), AIR_IOR, WATER_IOR);
+    expect(F(knee)).toBeLessThan(0.25);
+    expect(1 - F(knee)).toBeGreaterThan(0.75);
+    // Per degree, the rise after the knee is at least three times the rise over the 15° before it.
+    expect((F(84) - F(knee)) / (84 - knee)).toBeGreaterThan((3 * (F(knee) - F(knee - 15))) / 15);
+  });
+
+  it('control: a knee claimed at 84° would fail, the curve is at one half there', () => {
+    expect(fresnelReflectance(Math.cos(radians(84)), AIR_IOR, WATER_IOR)).not.toBeLessThan(0.25);
+  });
+
+  it('boat-twin: the question starts from the default response time and ends at the slider’s maximum', () => {
+    const ask = card('boat-twin').question!.ask.en;
+    expect(numberIn(ask, /from ([\d.]+) s/)).toBe(paramDefs.boatResponse.default);
+    expect(numberIn(ask, /to ([\d.]+) s/)).toBe(paramDefs.boatResponse.max);
+  });
+
+  it('boat-twin and boat-pitch: five sample points on the hull', () => {
+    const points = Object.keys(hullSamplePoints(0, 0, 0, { length: 8, beam: 2.6 })).length;
+    expect(points).toBe(5);
+    for (const id of ['boat-twin', 'boat-pitch']) {
+      expect(card(id).text.en).toContain('five points');
+      expect(card(id).text.es).toContain('cinco puntos');
+    }
+  });
+
+  it('control: a planted response of 0.5 s is not the default, and four points are not the hull’s', () => {
+    expect(paramDefs.boatResponse.default).not.toBe(0.5);
+    expect(Object.keys(hullSamplePoints(0, 0, 0, { length: 8, beam: 2.6 })).length).not.toBe(4);
+  });
+
+  it('snell-window: n_air is the code’s air index', () => {
+    expect(claim(card('snell-window').text.en, /n_air = ([\d.]+)\)/, AIR_IOR)).toBe(true);
+  });
+
+  it('underwater-fog: 0.035 is pure water’s beam attenuation at the green channel’s wavelength, absorption plus scattering', () => {
+    const green = PURE_WATER_ABSORPTION[1] + molecularScattering(WAVELENGTHS[1]);
+    expect(claim(card('underwater-fog').text.en, /\(([\d.]+) is pure water/, green)).toBe(true);
+  });
+
+  it('control: absorption alone (0.0325) would not give the card’s 0.035', () => {
+    expect(claim(card('underwater-fog').text.en, /\(([\d.]+) is pure water/, PURE_WATER_ABSORPTION[1])).toBe(false);
+  });
+
+  it('caustics: the choice’s intensities 2 and 3 lie on the slider, and 1 is the physical one', () => {
+    const [a, b] = [numberIn(card('caustics').choice!.en, /intensity (\d) or/), numberIn(card('caustics').choice!.en, /or (\d) exaggerates/)];
+    expect(a).toBeGreaterThan(1);
+    expect(b).toBeLessThanOrEqual(paramDefs.causticsIntensity.max);
+    expect(source('shaders/caustics.glsl')).toContain('uniform float uCausticsStrength;    // 0: flat light, 1: physical concentration');
+  });
+
+  it('control: an intensity of 4 would be off the slider', () => {
+    expect(4).toBeGreaterThan(paramDefs.causticsIntensity.max);
   });
 });
