@@ -48,5 +48,6 @@ float causticLight(vec3 p) {
   float landedArea = abs(ab.x * ac.y - ab.y * ac.x);
   float patchArea = CAUSTICS_PATCH * CAUSTICS_PATCH;
   float gain = patchArea / max(landedArea, patchArea / CAUSTICS_MAX_GAIN);
-  return mix(1.0, gain, uCausticsStrength);
+  // Above an intensity of 1 the mix would go below zero where the light spreads: no light is less than none.
+  return max(mix(1.0, gain, uCausticsStrength), 0.0);
 }

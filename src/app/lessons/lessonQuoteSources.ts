@@ -25,7 +25,7 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'boat-pitch': { file: 'src/sim/boat/boatPose.ts', from: 'const points = hullSamplePoints(', to: 'roll: Math.atan2(' },
   'snell-window': { file: 'shaders/ocean.frag', from: 'vec3 shadeFromBelow(vec3 v, vec3 n) {', to: 'float reflectance = uFresnelEnabled ? fresnelLookup(uFresnelFromBelow' },
   'underwater-fog': { file: 'shaders/waterVolume.glsl', from: 'vec3 waterTransmittance(float distance) {', to: 'return color * transmittance' },
-  caustics: { file: 'shaders/caustics.glsl', from: 'vec2 a = causticLanding(s, p.y, light);', to: 'return mix(1.0, gain, uCausticsStrength);' },
+  caustics: { file: 'shaders/caustics.glsl', from: 'vec2 a = causticLanding(s, p.y, light);', to: 'return max(mix(1.0, gain, uCausticsStrength), 0.0);' },
   'god-rays': { file: 'shaders/godRays.frag', from: 'vec3 godRays(vec3 origin, vec3 direction, float distance) {', to: 'vec2 s = origin.xz' },
   'lod-bands': { file: 'src/sim/lod/lodBands.ts', from: 'export function bandStart(', to: 'return band;' },
   'lod-morph': { file: 'src/sim/lod/lodMorph.ts', from: 'export function morphCoordinate(', to: '}' },

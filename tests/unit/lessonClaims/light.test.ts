@@ -412,7 +412,7 @@ describe('caustics', () => {
     expect(claim(c.text.en, /of a ([\d.]+) m patch/, numberIn(glsl, /CAUSTICS_PATCH = ([\d.]+);/))).toBe(true);
     expect(claim(c.text.en, /capped at (\d+)/, numberIn(glsl, /CAUSTICS_MAX_GAIN = ([\d.]+);/))).toBe(true);
     expect(claim(c.math, /<mo>,<\/mo><mn>(\d+)<\/mn><mo>\)<\/mo>/, numberIn(glsl, /CAUSTICS_MAX_GAIN = ([\d.]+);/))).toBe(true);
-    expect(glsl).toContain('return mix(1.0, gain, uCausticsStrength);');
+    expect(glsl).toContain('return max(mix(1.0, gain, uCausticsStrength), 0.0);');
     expect(source('src/render/underwater/causticsUniforms.ts')).toContain('u.uCausticsStrength.value = enabled ? intensity : 0;');
   });
 
