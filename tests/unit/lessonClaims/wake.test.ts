@@ -21,7 +21,8 @@ import { hullSources } from '../../../src/sim/iwave/movingHull';
 import { HAND_OVER_WIDTH, handOverDistance } from '../../../src/sim/iwave/kelvinHandOver';
 import { FAR_FADE_END, FAR_FADE_START, farRings } from '../../../src/sim/lod/farRings';
 import { OCEAN_EXTENT } from '../../../src/sim/lod/chunkSelection';
-import { AEROSOL_SCALE_HEIGHT, hazeExtinction } from '../../../src/sim/optics/haze';
+import { AEROSOL_SCALE_HEIGHT, hazeExtinction, hazeWeight } from '../../../src/sim/optics/haze';
+import { WAKE_HULL } from '../../../src/sim/wake/boatWake';
 
 /**
  * The wake group's cards (compare-models … horizon) checked against the code: every number a
@@ -31,9 +32,9 @@ import { AEROSOL_SCALE_HEIGHT, hazeExtinction } from '../../../src/sim/optics/ha
  * card, fails. Each kind of check has a negative control: a planted wrong value must not be found.
  */
 
-/** The project's boat: its waterline length and beam (src/app/boat/boatController.ts, NOMINAL_HULL). */
-const HULL_LENGTH = 8;
-const HULL_BEAM = 2.6;
+/** The hull the wake and the interactive waves are made for: its waterline length and beam. */
+const HULL_LENGTH = WAKE_HULL.length;
+const HULL_BEAM = WAKE_HULL.beam;
 /** The Earth's mean radius, metres, for the flat sea's missing horizon. */
 const EARTH_RADIUS = 6.371e6;
 
@@ -176,6 +177,8 @@ describe('kelvin-wake', () => {
     expect(stated('kelvin-wake', (2 * Math.PI * speed * speed) / GRAVITY, 1, { math: true, suffix: ' m' })).toBe(true);
     expect(stated('kelvin-wake', (2 * Math.PI * 36) / GRAVITY, 0, { suffix: ' m' })).toBe(true);
     expect(stated('kelvin-wake', froudeNumber(6, HULL_LENGTH), 2)).toBe(true);
+    for (const language of ['en', 'es'] as const) expect(card('kelvin-wake').text[language]).toContain(`L = ${HULL_LENGTH} m`);
+    expect(card('kelvin-wake').text.en).not.toContain(`L = ${HULL_LENGTH + 2} m`);
   });
 
   it('the largest crests stand where the card says: ≈ 18.3° at 14 λ for 4 m/s, and 16–17° at 6 m/s', () => {
@@ -298,9 +301,23 @@ describe('iwave-stone', () => {
     expect(card('iwave-stone').choice!.es).toContain(`${stone[4]} m de alto`);
   });
 
+  it('the gaps between those rings, 6.5, 3.3 and 2.0 m, widen towards the front of the train', () => {
+    const radii = rings();
+    const gaps = radii.slice(1).map((r, i) => radii[i] - r);
+    for (let i = 1; i < gaps.length; i++) expect(gaps[i]).toBeLessThan(gaps[i - 1]);
+    for (const language of ['en', 'es'] as const) {
+      const m = card('iwave-stone').question!.answer[language].match(/(?:gaps of|separaciones de) ([0-9.,]+), ([0-9.,]+) (?:and|y) ([0-9.,]+) m/)!;
+      const said = m.slice(1).map((s) => Number(s.replace(',', '.')));
+      expect(said.length).toBe(gaps.length);
+      said.forEach((v, i) => expect(Math.abs(v - gaps[i])).toBeLessThan(0.05));
+    }
+  });
+
   it('negative control: with gravity 10 % off the rings are not the card’s', () => {
     const wrong = rings(1.1 * GRAVITY);
     expect(said('en').some((v, i) => Math.abs(v - (wrong[i] ?? 0)) >= 0.05)).toBe(true);
+    const wrongGaps = wrong.slice(1).map((r, i) => wrong[i] - r);
+    expect(Math.abs(wrongGaps[0] - 6.5)).toBeGreaterThan(0.05);
   });
 });
 
@@ -366,6 +383,17 @@ describe('horizon', () => {
     expect(stated('horizon', eye, 0, { suffix: ' m' })).toBe(true);
     expect(stated('horizon', Math.sqrt(2 * EARTH_RADIUS * eye) / 1000, 0, { suffix: ' km' })).toBe(true);
     expect(stated('horizon', (Math.sqrt((2 * eye) / EARTH_RADIUS) * 180) / Math.PI, 2, { suffix: '°' })).toBe(true);
+  });
+
+  it('the sea below an aircraft is only lightly veiled; the far sea seen from the view’s 120 m is not', () => {
+    const beta = hazeExtinction(view('horizon').params.visibility * 1000);
+    // Straight down from 10 km: at most 1 − e^(−β₀H), about a fifth at 20 km visibility.
+    const below = hazeWeight(beta, 10_000, 0, 10_000);
+    expect(below).toBeLessThan(-Math.expm1(-beta * AEROSOL_SCALE_HEIGHT) + 1e-12);
+    expect(below).toBeLessThan(0.25);
+    expect(card('horizon').text.en).toContain('only lightly veiled');
+    // Negative control: along the surface, 20 km off, the haze all but hides the sea.
+    expect(hazeWeight(beta, view('horizon').camera.position[1], 0, 20_000)).toBeGreaterThan(0.9);
   });
 
   it('negative control: a planted 3.91 or a 2 km scale height is not the card’s', () => {
