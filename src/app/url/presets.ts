@@ -141,7 +141,7 @@ export const PRESETS = {
   },
   /**
    * The three wave models side by side on one camera, wind (10 m/s, Pierson–Moskowitz) and
-   * seed: left, the seed's sines and Perlin ripples; middle, 32 Gerstner trochoids drawn from
+   * seed: left, the seed's sines and value-noise ripples; middle, 32 Gerstner trochoids drawn from
    * the wind spectrum; right, Tessendorf's FFT of the same spectrum.
    */
   'compare-models': {
@@ -151,8 +151,8 @@ export const PRESETS = {
   },
   /**
    * The Cuña de Kelvin: a boat at 4 m/s (Fr = 0.45 for its 8 m hull) on a calm, windless sea, seen from
-   * 60 m up. The wake's sources lie along the boat's track (src/sim/wake/kelvinWake.ts); its cusps
-   * fall on the ±19.47° lines that `wakeGuide=1` draws over it. The foam marks the hull's
+   * 60 m up. The wake's sources lie along the boat's track (src/sim/wake/kelvinWake.ts); its largest
+   * crests stand at about 18.3°, just inside the ±19.47° lines that `wakeGuide=1` draws over it. The foam marks the hull's
    * trail and the bow wave.
    */
   'kelvin-wake': {
