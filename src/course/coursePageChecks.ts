@@ -1,5 +1,9 @@
 import { findLesson, lessonView } from '../app/lessons/lessonCatalog';
 import { parseSettings } from '../app/url/urlState';
+import { paramKeys } from '../sim/params/params';
+
+/** HTML lowercases attribute names: the parameter each lowercase name stands for, as <oceano-view> reads it. */
+const PARAM_BY_LOWERCASE = new Map(paramKeys.map((key) => [key.toLowerCase(), key]));
 
 /**
  * What the course page's tests hold it to, as pure functions of what the page shows: each
@@ -9,9 +13,13 @@ import { parseSettings } from '../app/url/urlState';
 /** The other register's words (COMMON glossary: malla, barco, balanceo, controles). */
 export const BANNED_SPANISH = ['grilla', 'grillas', 'bote', 'botes', 'rolido', 'perilla', 'perillas'] as const;
 
-/** The banned words a Spanish text uses, each once, as found. */
+/**
+ * The banned words a Spanish text uses, each once, as found. Words inside quotation marks
+ * (“…”, «…») are left alone: they cite the report's own titles (“Quiero mover el bote”).
+ */
 export function bannedSpanishWords(text: string): string[] {
-  const found = text.toLowerCase().match(new RegExp(`(?<![\\p{L}])(${BANNED_SPANISH.join('|')})(?![\\p{L}])`, 'gu')) ?? [];
+  const own = text.replace(/“[^”]*”|«[^»]*»/g, ' ');
+  const found = own.toLowerCase().match(new RegExp(`(?<![\\p{L}])(${BANNED_SPANISH.join('|')})(?![\\p{L}])`, 'gu')) ?? [];
   return [...new Set(found)];
 }
 
@@ -45,7 +53,7 @@ export function shownLessonFaults(shown: ShownLesson, card: CardSource): string[
   if (shown.text !== card.text(lesson.id)) faults.push(`${lesson.id}: the caption's text is not the card's`);
   if (shown.code !== card.code(lesson.id)) faults.push(`${lesson.id}: the quoted code is not the lesson's`);
   if (shown.attributes) {
-    const state = parseSettings(shown.attributes);
+    const state = parseSettings(shown.attributes.map(([name, value]): [string, string] => [PARAM_BY_LOWERCASE.get(name.toLowerCase()) ?? name, value]));
     const view = lessonView(lesson);
     if (JSON.stringify(state.params) !== JSON.stringify(view.params)) faults.push(`${lesson.id}: the figure's parameters are not the lesson's`);
     if (JSON.stringify(state.camera) !== JSON.stringify(view.camera)) faults.push(`${lesson.id}: the figure's camera is not the lesson's`);

@@ -43,5 +43,8 @@ describe('the course page (course/index.html)', () => {
     // Control: each banned word is found in a sentence, and its right word is not.
     expect(bannedSpanishWords('La grilla del bote, el rolido y las perillas.')).toEqual(['grilla', 'bote', 'rolido', 'perillas']);
     expect(bannedSpanishWords('La malla del barco, el balanceo, los controles y un rebote.')).toEqual([]);
+    // The report's own title, quoted, is a citation; the same words unquoted are not.
+    expect(bannedSpanishWords('El “Quiero mover el bote” del informe.')).toEqual([]);
+    expect(bannedSpanishWords('Quiero mover el bote.')).toEqual(['bote']);
   });
 });
