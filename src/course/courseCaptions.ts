@@ -71,6 +71,7 @@ export function writeCaptions(language: Language): void {
     } else {
       const picture = appLink(id, language);
       picture.className = 'lesson-poster';
+      picture.textContent = '';
       const image = element('img', '');
       image.src = lessonPoster(id);
       image.alt = title;
