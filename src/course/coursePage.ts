@@ -1,11 +1,14 @@
 import './course.css';
-import { LESSON_QUOTES } from 'virtual:oceano-lesson-quotes';
-import { LESSONS } from '../app/lessons/lessonCatalog';
+import { findLesson } from '../app/lessons/lessonCatalog';
+import { LESSON_TITLES } from '../app/lessons/lessonOutline';
+import { lessonPoster, lessonViewAttributes } from './lessonFigure';
 
 /**
- * The course page's one script: picks the language (?lang=, else the browser's, else
- * Spanish, the report's own) before <oceano-view> is defined, so each figure starts in it,
- * with its alt text in that language too.
+ * The course page's first script: picks the language (?lang=, else the browser's, else
+ * Spanish, the report's own) and gives each figure its lesson's view, poster and alt text,
+ * all before <oceano-view> is defined, so each figure starts as its lesson in that language.
+ * Each figure and card names its lesson (data-lesson); its caption is that lesson's card,
+ * fetched after this script (courseCaptions.ts), so the page cannot drift from the cards.
  */
 type Language = 'es' | 'en';
 
@@ -22,43 +25,15 @@ function pageLanguage(): Language {
 const language = pageLanguage();
 document.documentElement.lang = language;
 document.documentElement.dataset.language = language;
-for (const figure of Array.from(document.querySelectorAll<HTMLElement>('oceano-view'))) {
-  figure.setAttribute('lang', language);
-  const alt = figure.dataset[language === 'es' ? 'altEs' : 'altEn'];
-  if (alt) figure.setAttribute('alt', alt);
+for (const figure of Array.from(document.querySelectorAll<HTMLElement>('figure[data-lesson]'))) {
+  const id = figure.dataset.lesson!;
+  const lesson = findLesson(id);
+  const view = figure.querySelector('oceano-view');
+  if (!lesson || !view) throw new Error(`The course page's figure names no lesson of the catalog: "${id}".`);
+  for (const [name, value] of lessonViewAttributes(lesson)) view.setAttribute(name, value);
+  view.setAttribute('lang', language);
+  view.setAttribute('poster', lessonPoster(id));
+  view.setAttribute('alt', LESSON_TITLES[id][language]);
 }
 
-/**
- * Each figure's "open in the app" link goes to the lesson that starts from its preset, and
- * its caption gets that lesson's lines of code, quoted from the source when the page is
- * built (the lesson cards' quotes), so what the page shows is what runs.
- */
-function linkLessons(): void {
-  for (const figure of Array.from(document.querySelectorAll<HTMLElement>('figure'))) {
-    const preset = figure.querySelector('oceano-view')?.getAttribute('preset');
-    const lesson = LESSONS.find((l) => l.preset === preset);
-    const link = figure.querySelector<HTMLAnchorElement>('a.open-in-app');
-    if (!link) continue;
-    const url = new URL(link.href);
-    if (lesson) {
-      url.searchParams.delete('preset');
-      url.searchParams.set('lesson', lesson.id);
-    }
-    url.searchParams.set('lang', language);
-    link.href = url.href;
-    if (!lesson) continue;
-    const quote = LESSON_QUOTES[lesson.id];
-    if (!quote) continue;
-    const details = document.createElement('details');
-    details.className = 'code-quote';
-    const summary = document.createElement('summary');
-    summary.textContent = `${language === 'es' ? 'El código' : 'The code'}: ${quote.file}, ${quote.firstLine}–${quote.lastLine}`;
-    const code = document.createElement('code');
-    code.textContent = quote.text;
-    const pre = document.createElement('pre');
-    pre.appendChild(code);
-    details.append(summary, pre);
-    figure.querySelector('figcaption')?.appendChild(details);
-  }
-}
-linkLessons();
+void import('./courseCaptions').then(({ writeCaptions }) => writeCaptions(language));

@@ -1,12 +1,33 @@
-import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import type { Page } from 'puppeteer';
 import { useHarness } from './useHarness';
 import { recordedPage } from './pages';
 import { ensurePosters } from './distPosters';
+import { lessonIds } from '../../src/app/lessons/lessonCatalog';
+import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
+import { readLessonQuotes } from '../../scripts/build/lessonQuotes';
+import { bannedSpanishWords, shownLessonFaults, type CardSource, type ShownLesson } from '../../src/course/coursePageChecks';
 
 const harness = useHarness();
+const quotes = readLessonQuotes(join(import.meta.dirname, '..', '..'));
+const cards = (language: 'es' | 'en'): CardSource => ({ text: (id) => LESSON_TEXTS[id].text[language], code: (id) => quotes[id]?.text ?? null });
+
+/** Every figure and card as the page shows it, once its captions are written. */
+async function shownLessons(page: Page): Promise<ShownLesson[]> {
+  await page.waitForFunction(() => document.documentElement.dataset.captions === 'written');
+  return page.evaluate(() =>
+    Array.from(document.querySelectorAll<HTMLElement>('[data-lesson]'), (holder) => {
+      const view = holder.querySelector('oceano-view');
+      return {
+        lesson: holder.dataset.lesson!,
+        text: holder.querySelector('.lesson-text')?.textContent ?? '',
+        code: holder.querySelector('.code-quote code')?.textContent ?? null,
+        attributes: view ? view.getAttributeNames().filter((n) => !['lang', 'poster', 'alt', 'class', 'style'].includes(n)).map((n): [string, string] => [n, view.getAttribute(n)!]) : null,
+      };
+    }),
+  );
+}
 
 type ViewElement = HTMLElement & { oceano: (typeof window)['oceano'] | null };
 
@@ -48,27 +69,24 @@ describe('the course page (dist/course/)', () => {
       figureLanguages: new Set(Array.from(document.querySelectorAll('oceano-view'), (v) => v.getAttribute('lang'))).size,
       englishShown: Array.from(document.querySelectorAll('.en')).some((e) => (e as HTMLElement).offsetParent !== null),
     }));
-    expect(outline.figures).toBeGreaterThanOrEqual(24);
-    expect(outline.sections.slice(0, 10)).toEqual(['Superficie del agua', 'Movimiento', 'Ruido de Perlin', 'Normales', 'Environment map', 'Óptica: Snell y Fresnel', 'CPU shader: mover el bote', 'Bajo el agua', 'Optimización: niveles de detalle', 'Frustum culling']);
+    expect(outline.figures).toBe(21);
+    expect(outline.sections.slice(0, 10)).toEqual(['Superficie del agua', 'Movimiento', 'Ruido de valor (el «Perlin» del informe)', 'Normales', 'Environment map', 'Óptica: Snell y Fresnel', 'CPU shader: mover el barco', 'Bajo el agua', 'Optimización: niveles de detalle', 'Frustum culling']);
     expect(outline.lang).toBe('es');
     expect(outline.figureLanguages).toBe(1);
     expect(outline.englishShown).toBe(false);
 
-    // Each figure's caption quotes the lines of code behind it, as they are in the source now.
-    const quotes = await page.evaluate(() =>
-      Array.from(document.querySelectorAll('figure'), (figure) => ({
-        summary: figure.querySelector('.code-quote summary')?.textContent ?? null,
-        code: figure.querySelector('.code-quote code')?.textContent ?? null,
-        link: figure.querySelector<HTMLAnchorElement>('a.open-in-app')!.search,
-      })),
-    );
-    const quoted = quotes.filter((q) => q.code !== null);
-    expect(quoted.length).toBeGreaterThanOrEqual(20);
-    for (const q of quoted) {
-      const [, file] = /^El código: (.+), \d+–\d+$/.exec(q.summary!)!;
-      expect(readFileSync(join(import.meta.dirname, '..', '..', file), 'utf8')).toContain(q.code);
-    }
-    expect(quotes.every((q) => /^\?(lesson|preset)=[a-z-]+&lang=es$/.test(q.link))).toBe(true);
+    // Every lesson of the catalog, as a figure or a card; each shows its own card's words and code, and a figure its lesson's view.
+    const shown = await shownLessons(page);
+    expect(shown.map((s) => s.lesson).sort()).toEqual([...lessonIds].sort());
+    expect(shown.filter((s) => s.attributes).length).toBe(outline.figures);
+    expect(shown.flatMap((s) => shownLessonFaults(s, cards('es')))).toEqual([]);
+    // Control: each one read as if it named the next lesson is caught.
+    for (let i = 0; i < shown.length; i++) expect(shownLessonFaults({ ...shown[i], lesson: shown[(i + 1) % shown.length].lesson }, cards('es'))).not.toEqual([]);
+    // One Spanish register, cards included.
+    expect(bannedSpanishWords(await page.evaluate(() => document.body.innerText))).toEqual([]);
+    const links = await page.evaluate(() => Array.from(document.querySelectorAll<HTMLAnchorElement>('a.open-in-app'), (a) => a.search));
+    expect(links.length).toBe(lessonIds.length);
+    expect(links.every((link) => /^\?lesson=[a-z-]+&lang=es$/.test(link))).toBe(true);
 
     // The figures far below, not started, show their posters: the build's picture of their preset.
     await page.waitForFunction(() => Array.from(document.querySelectorAll<HTMLImageElement>('img.oceano-poster')).every((img) => img.complete));
@@ -77,7 +95,7 @@ describe('the course page (dist/course/)', () => {
       shown: Array.from(document.querySelectorAll<HTMLImageElement>('img.oceano-poster')).filter((img) => img.naturalWidth === 320).length,
       waiting: (Array.from(document.querySelectorAll('oceano-view[poster]')) as ViewElement[]).filter((view) => view.oceano === null).length,
     }));
-    expect(posters.withPoster).toBeGreaterThanOrEqual(23);
+    expect(posters.withPoster).toBe(outline.figures);
     expect(posters.waiting).toBeGreaterThan(10);
     expect(posters.shown).toBeGreaterThanOrEqual(posters.waiting);
 
@@ -109,7 +127,7 @@ describe('the course page (dist/course/)', () => {
     expect(text).toMatch(/^La página del curso/);
     expect(href).toBe(`${harness.baseUrl}course/index.html?lang=es`);
     await Promise.all([page.waitForNavigation(), link!.click()]);
-    expect(await page.evaluate(() => document.querySelectorAll('oceano-view').length)).toBeGreaterThanOrEqual(24);
+    expect(await page.evaluate(() => document.querySelectorAll('oceano-view').length)).toBe(21);
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
@@ -126,7 +144,12 @@ describe('the course page (dist/course/)', () => {
       label: document.querySelector('oceano-view canvas.oceano-canvas')!.getAttribute('aria-label'),
       link: (document.querySelector('a.open-in-app') as HTMLAnchorElement).search,
     }));
-    expect(facts).toEqual({ title: true, label: 'The flat wireframe grid, before any displacement', link: '?lesson=flat-plane&lang=en' });
+    expect(facts).toEqual({ title: true, label: 'A flat grid of vertices', link: '?lesson=flat-plane&lang=en' });
+    // The captions are the cards' English words.
+    const shown = await shownLessons(page);
+    expect(shown.flatMap((s) => shownLessonFaults(s, cards('en')))).toEqual([]);
+    // Control: held to the Spanish cards, every one fails.
+    expect(shown.every((s) => shownLessonFaults(s, cards('es')).length > 0)).toBe(true);
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
