@@ -31,6 +31,8 @@ describe('the lessons', () => {
     const beyond = LESSON_SECTIONS.map((section) => SECTION_NAMES[section].beyondSeed);
     expect(beyond.indexOf(true)).toBe(10);
     expect(beyond.slice(10).every(Boolean)).toBe(true);
+    // The ideas under every model (concept lessons) come after the models themselves.
+    expect(LESSON_SECTIONS.slice(LESSON_SECTIONS.indexOf('horizon') + 1)).toEqual(['linearWaves', 'spectra']);
   });
 
   it.each(lessonIds)('%s: 40–120 words in each language, MathML, 1–5 real controls', (id) => {
