@@ -7,6 +7,7 @@ import { PRESETS, presetNames } from '../../src/app/url/presets';
 import { isParamKey, defaultParams } from '../../src/sim/params/params';
 import { unreadParams } from '../../src/app/panel/unreadParams';
 import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
+import { CONCEPT_PATH, CONCEPT_STAGES } from '../../src/app/lessons/conceptPath';
 
 const words = (text: string) => text.trim().split(/\s+/).length;
 /** The presets no lesson opens. */
@@ -76,6 +77,38 @@ describe('the lessons', () => {
     expect(unknown.lesson).toBeNull();
     expect(unknown.params).toEqual(defaultParams());
     expect(unknown.notices.map((n) => n.id)).toEqual(['lessonUnknown']);
+  });
+});
+
+describe('the ideas’ order (conceptPath.ts)', () => {
+  /** What is wrong with an order: unknown ids, repeats, and concept lessons it leaves out. */
+  const faults = (path: readonly string[]) => {
+    const concept = LESSONS.filter((lesson) => ['linearWaves', 'spectra'].includes(LESSON_OUTLINE[lesson.id].section)).map((lesson) => lesson.id);
+    return {
+      unknown: path.filter((id) => !lessonIds.includes(id)),
+      repeated: path.filter((id, i) => path.indexOf(id) !== i),
+      missing: concept.filter((id) => !path.includes(id)),
+    };
+  };
+
+  it('holds every concept lesson, only known ids, each once, every stage named in both languages and not empty', () => {
+    expect(faults(CONCEPT_PATH)).toEqual({ unknown: [], repeated: [], missing: [] });
+    expect(CONCEPT_PATH.length).toBeGreaterThanOrEqual(4);
+    for (const stage of CONCEPT_STAGES) {
+      expect(stage.lessons.length).toBeGreaterThan(0);
+      expect(stage.name.es).not.toBe(stage.name.en);
+    }
+    // Linear waves first, group velocity before Gerstner, spectra before the FFT.
+    const at = (id: string) => CONCEPT_PATH.indexOf(id);
+    expect(at('airy-waves')).toBe(0);
+    expect(at('group-velocity')).toBeLessThan(at('gerstner-gentle'));
+    expect(at('spectra-compared')).toBeLessThan(at('fft-transform'));
+  });
+
+  it('controls: an unknown id, a repeat and a dropped concept lesson are each reported', () => {
+    expect(faults([...CONCEPT_PATH, 'no-such-lesson']).unknown).toEqual(['no-such-lesson']);
+    expect(faults([...CONCEPT_PATH, 'fresnel']).repeated).toEqual(['fresnel']);
+    expect(faults(CONCEPT_PATH.filter((id) => id !== 'fft-transform')).missing).toEqual(['fft-transform']);
   });
 });
 

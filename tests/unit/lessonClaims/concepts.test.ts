@@ -271,7 +271,7 @@ describe('fft-transform: Hermitian amplitudes, log₂N butterfly stages, tiles',
       return [re, im];
     };
     const stages = (count: number) => {
-      let data = input;
+      let data: Float64Array = input;
       for (let s = 0, half = 1; s < count; s++, half *= 2) data = stockhamStage(data, m, half);
       return data;
     };
