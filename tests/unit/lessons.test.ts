@@ -4,7 +4,7 @@ import { LESSON_OUTLINE, LESSON_SECTIONS, LESSON_TITLES, SECTION_NAMES, lessonLi
 import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
 import { LESSON_QUOTE_SOURCES } from '../../src/app/lessons/lessonQuoteSources';
 import { PRESETS, presetNames } from '../../src/app/url/presets';
-import { isParamKey, defaultParams } from '../../src/sim/params/params';
+import { isParamKey, defaultParams, validateParams } from '../../src/sim/params/params';
 import { unreadParams } from '../../src/app/panel/unreadParams';
 import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
 import { CONCEPT_PATH, CONCEPT_STAGES } from '../../src/app/lessons/conceptPath';
@@ -49,6 +49,11 @@ describe('the lessons', () => {
     expect(controls.length).toBeGreaterThanOrEqual(1);
     expect(controls.length).toBeLessThanOrEqual(5);
     for (const key of controls) expect(isParamKey(key), key).toBe(true);
+  });
+
+  it('every lesson’s view lies within its parameters’ ranges (control: Q = 0, below Gerstner steepness’s least, is refused)', () => {
+    for (const lesson of LESSONS) expect(() => validateParams(lessonView(lesson).params), lesson.id).not.toThrow();
+    expect(() => validateParams({ ...lessonView(findLesson('airy-waves')!).params, gerstnerSteepness: 0 })).toThrow(/gerstnerSteepness/);
   });
 
   it('the word count check fails a 30-word text (control)', () => {

@@ -1,10 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { LESSON_TEXTS } from '../../../src/app/lessons/lessonTexts';
 import { findLesson, lessonView } from '../../../src/app/lessons/lessonCatalog';
-import type { OceanParams } from '../../../src/sim/params/params';
+import { paramDefs, type OceanParams } from '../../../src/sim/params/params';
 import { orbitSemiAxes, waveEnergy, SEA_WATER_DENSITY } from '../../../src/sim/waves/airyWave';
 import { GRAVITY, angularFrequency, groupVelocity } from '../../../src/sim/waves/dispersion';
 import { gerstnerWavesFor } from '../../../src/sim/waves/gerstner/gerstnerLiveModel';
+import { limitSteepness } from '../../../src/sim/waves/gerstner/gerstnerSpectrum';
 import { crestRadii } from '../../../src/sim/iwave/cauchyPoissonRings';
 import { KELVIN_HALF_ANGLE } from '../../../src/sim/wake/kelvinGuide';
 import { seaStateFromParams } from '../../../src/sim/waves/spectra/seaState';
@@ -48,13 +49,15 @@ function agrees(quoted: number, computed: number, relative: number): boolean {
 const viewParams = (id: string): OceanParams => lessonView(findLesson(id)!).params;
 
 describe('airy-waves: orbits shrink as e^{kz}, E = ½ ρ g a², and the view’s amplitudes', () => {
-  it('the view is Airy’s linear sea: Q = 0, four waves from JONSWAP', () => {
+  it('the view is Gerstner’s sea at the least Q the control allows, 0.2, four waves from JONSWAP; at Q = 0 they would be Airy’s', () => {
     const p = viewParams('airy-waves');
     for (const lang of LANGS) expect(numberAfter(cardText('airy-waves', lang), 'Q =')).toBe(p.gerstnerSteepness);
+    expect(p.gerstnerSteepness).toBe(paramDefs.gerstnerSteepness.min);
     expect(p.gerstnerCount).toBe(4);
     expect(p.spectrum).toBe('jonswap');
-    // With Q = 0 no point moves sideways: the surface is the sum of Airy's cosines.
-    expect(gerstnerWavesFor(p).every((w) => w.horizontal === 0)).toBe(true);
+    // Sideways motion is at most Q = 0.2 of the height's; at Q = 0 none: the sum of Airy's cosines.
+    expect(gerstnerWavesFor(p).every((w) => w.horizontal <= 0.2 * w.amplitude + 1e-12)).toBe(true);
+    expect(limitSteepness(gerstnerWavesFor(p), 0).every((w) => w.horizontal === 0)).toBe(true);
   });
 
   it('half a wavelength down the orbit is e^{−π} ≈ 4 % of the surface’s, deep water and the finite-depth formula’s limit alike', () => {
