@@ -4,9 +4,10 @@ import { LESSON_OUTLINE, LESSON_SECTIONS, LESSON_TITLES, SECTION_NAMES, lessonLi
 import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
 import { LESSON_QUOTE_SOURCES } from '../../src/app/lessons/lessonQuoteSources';
 import { PRESETS, presetNames } from '../../src/app/url/presets';
-import { isParamKey, defaultParams } from '../../src/sim/params/params';
+import { isParamKey, defaultParams, validateParams } from '../../src/sim/params/params';
 import { unreadParams } from '../../src/app/panel/unreadParams';
 import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
+import { CONCEPT_PATH, CONCEPT_STAGES } from '../../src/app/lessons/conceptPath';
 
 const words = (text: string) => text.trim().split(/\s+/).length;
 /** The presets no lesson opens. */
@@ -31,6 +32,8 @@ describe('the lessons', () => {
     const beyond = LESSON_SECTIONS.map((section) => SECTION_NAMES[section].beyondSeed);
     expect(beyond.indexOf(true)).toBe(10);
     expect(beyond.slice(10).every(Boolean)).toBe(true);
+    // The ideas under every model (concept lessons) come after the models themselves.
+    expect(LESSON_SECTIONS.slice(LESSON_SECTIONS.indexOf('horizon') + 1)).toEqual(['linearWaves', 'spectra']);
   });
 
   it.each(lessonIds)('%s: 40–120 words in each language, MathML, 1–5 real controls', (id) => {
@@ -46,6 +49,11 @@ describe('the lessons', () => {
     expect(controls.length).toBeGreaterThanOrEqual(1);
     expect(controls.length).toBeLessThanOrEqual(5);
     for (const key of controls) expect(isParamKey(key), key).toBe(true);
+  });
+
+  it('every lesson’s view lies within its parameters’ ranges (control: Q = 0, below Gerstner steepness’s least, is refused)', () => {
+    for (const lesson of LESSONS) expect(() => validateParams(lessonView(lesson).params), lesson.id).not.toThrow();
+    expect(() => validateParams({ ...lessonView(findLesson('airy-waves')!).params, gerstnerSteepness: 0 })).toThrow(/gerstnerSteepness/);
   });
 
   it('the word count check fails a 30-word text (control)', () => {
@@ -74,6 +82,38 @@ describe('the lessons', () => {
     expect(unknown.lesson).toBeNull();
     expect(unknown.params).toEqual(defaultParams());
     expect(unknown.notices.map((n) => n.id)).toEqual(['lessonUnknown']);
+  });
+});
+
+describe('the ideas’ order (conceptPath.ts)', () => {
+  /** What is wrong with an order: unknown ids, repeats, and concept lessons it leaves out. */
+  const faults = (path: readonly string[]) => {
+    const concept = LESSONS.filter((lesson) => ['linearWaves', 'spectra'].includes(LESSON_OUTLINE[lesson.id].section)).map((lesson) => lesson.id);
+    return {
+      unknown: path.filter((id) => !lessonIds.includes(id)),
+      repeated: path.filter((id, i) => path.indexOf(id) !== i),
+      missing: concept.filter((id) => !path.includes(id)),
+    };
+  };
+
+  it('holds every concept lesson, only known ids, each once, every stage named in both languages and not empty', () => {
+    expect(faults(CONCEPT_PATH)).toEqual({ unknown: [], repeated: [], missing: [] });
+    expect(CONCEPT_PATH.length).toBeGreaterThanOrEqual(4);
+    for (const stage of CONCEPT_STAGES) {
+      expect(stage.lessons.length).toBeGreaterThan(0);
+      expect(stage.name.es).not.toBe(stage.name.en);
+    }
+    // Linear waves first, group velocity before Gerstner, spectra before the FFT.
+    const at = (id: string) => CONCEPT_PATH.indexOf(id);
+    expect(at('airy-waves')).toBe(0);
+    expect(at('group-velocity')).toBeLessThan(at('gerstner-gentle'));
+    expect(at('spectra-compared')).toBeLessThan(at('fft-transform'));
+  });
+
+  it('controls: an unknown id, a repeat and a dropped concept lesson are each reported', () => {
+    expect(faults([...CONCEPT_PATH, 'no-such-lesson']).unknown).toEqual(['no-such-lesson']);
+    expect(faults([...CONCEPT_PATH, 'fresnel']).repeated).toEqual(['fresnel']);
+    expect(faults(CONCEPT_PATH.filter((id) => id !== 'fft-transform')).missing).toEqual(['fft-transform']);
   });
 });
 

@@ -92,6 +92,11 @@ export const LESSONS: readonly Lesson[] = [
     preset: 'lod-bands',
     camera: { position: [0, 120, 60], target: [0, 60, -1500] }
   },
+  // The ideas under the models (conceptPath.ts walks them in the ideas' order).
+  { id: 'airy-waves', preset: 'gerstner-gentle' },
+  { id: 'group-velocity', preset: 'stone', params: { iwaveGuide: true } },
+  { id: 'spectra-compared', preset: 'fresh-breeze', params: { spectrum: 'phillips' } },
+  { id: 'fft-transform', preset: 'fresh-breeze', params: { physics: true } },
 ];
 
 export const lessonIds = LESSONS.map((lesson) => lesson.id);

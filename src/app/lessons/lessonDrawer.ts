@@ -14,6 +14,7 @@ import { FreeArea } from '../layout/freeArea';
 import { FigureCaptions } from './figureCaptions';
 import { GlossaryNote } from './glossaryNote';
 import { bibliographyList, glossaryList, referencesFold } from './referenceLists';
+import { CONCEPT_STAGES, LESSON_ORDERS, ORDER_NAMES, type LessonOrder } from './conceptPath';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -67,6 +68,8 @@ export class LessonDrawer {
   private readonly legend: LessonLegend;
   private readonly captions: FigureCaptions;
   private current: OutlinedLesson | null = null;
+  /** Which order the list shows and ‹ › walk: the seed report's, or the ideas' (conceptPath.ts). */
+  private order: LessonOrder = 'report';
   private params: OceanParams | null = null;
 
   constructor(
@@ -125,22 +128,55 @@ export class LessonDrawer {
   }
 
   private buildList(): void {
-    let section = '';
-    for (const [index, lesson] of LESSONS.map(outlined).entries()) {
-      if (lesson.section !== section) {
-        section = lesson.section;
-        const info = SECTION_NAMES[lesson.section];
-        const heading = element('li', 'oceano-lessons-section', info[this.tr.language]);
-        heading.setAttribute('role', 'presentation');
-        if (info.beyondSeed) heading.classList.add('oceano-lessons-beyond');
-        this.list.append(heading);
-      }
+    const language = this.tr.language;
+    // The two orders, as a switch at the top of the list; choosing one rebuilds the list.
+    const orders = element('li', 'oceano-lessons-order');
+    orders.setAttribute('role', 'group');
+    orders.setAttribute('aria-label', LESSON_ORDERS.map((order) => ORDER_NAMES[order][language]).join(' / '));
+    for (const order of LESSON_ORDERS) {
+      const choose = button('oceano-lessons-order-option', ORDER_NAMES[order][language], ORDER_NAMES[order][language], () => {
+        if (this.order === order) return;
+        this.order = order;
+        this.list.replaceChildren();
+        this.lessonButtons.clear();
+        this.buildList();
+        this.updatePosition();
+        this.list.querySelector<HTMLElement>(`[data-order="${order}"]`)?.focus();
+      });
+      choose.dataset.order = order;
+      choose.setAttribute('aria-pressed', String(this.order === order));
+      orders.append(choose);
+    }
+    this.list.append(orders);
+    const heading = (text: string, beyondSeed: boolean) => {
+      const item = element('li', 'oceano-lessons-section', text);
+      item.setAttribute('role', 'presentation');
+      if (beyondSeed) item.classList.add('oceano-lessons-beyond');
+      this.list.append(item);
+    };
+    const entry = (id: string, number: number) => {
       const item = element('li', 'oceano-lessons-item');
-      const open = button('oceano-lessons-open', LESSON_TITLES[lesson.id][this.tr.language], `${index + 1}. ${LESSON_TITLES[lesson.id][this.tr.language]}`, () => this.open(lesson.id));
-      open.dataset.lesson = lesson.id;
-      this.lessonButtons.set(lesson.id, open);
+      const open = button('oceano-lessons-open', LESSON_TITLES[id][language], `${number}. ${LESSON_TITLES[id][language]}`, () => this.open(id));
+      open.dataset.lesson = id;
+      this.lessonButtons.set(id, open);
       item.append(open);
       this.list.append(item);
+    };
+    if (this.order === 'ideas') {
+      let number = 0;
+      for (const stage of CONCEPT_STAGES) {
+        heading(stage.name[language], false);
+        for (const id of stage.lessons) entry(id, ++number);
+      }
+    } else {
+      let section = '';
+      for (const [index, lesson] of LESSONS.map(outlined).entries()) {
+        if (lesson.section !== section) {
+          section = lesson.section;
+          heading(SECTION_NAMES[lesson.section][language], SECTION_NAMES[lesson.section].beyondSeed);
+        }
+        entry(lesson.id, index + 1);
+      }
     }
     // The same course as a page of text with its figures live (dist/course/, beside the app).
     const course = element('a', 'oceano-lessons-course', teachingWord(this.tr, 'coursePage'));
@@ -176,11 +212,16 @@ export class LessonDrawer {
     if (this.hooks.openLesson(id)) this.card.querySelector<HTMLElement>('.oceano-lesson-title')?.focus({ preventScroll: true });
   }
 
-  /** Opens the next (+1) or previous (−1) lesson; from the list with none open, the first or the last. */
+  /**
+   * Opens the next (+1) or previous (−1) lesson in the chosen order; from the list with none
+   * open, or from a lesson the ideas' order leaves out, the first or the last.
+   */
   private step(direction: 1 | -1): void {
-    const index = this.current ? LESSONS.findIndex((lesson) => lesson.id === this.current?.id) : direction === 1 ? -1 : LESSONS.length;
-    const next = LESSONS[index + direction];
-    if (next) this.hooks.openLesson(next.id);
+    const ids = this.order === 'ideas' ? CONCEPT_STAGES.flatMap((stage) => stage.lessons) : LESSONS.map((lesson) => lesson.id);
+    const at = this.current ? ids.indexOf(this.current.id) : -1;
+    const index = at >= 0 ? at : direction === 1 ? -1 : ids.length;
+    const next = ids[index + direction];
+    if (next) this.hooks.openLesson(next);
   }
 
   private showList(): void {

@@ -3,7 +3,7 @@ import type { ParamKey } from '../../sim/params/params';
 import { LESSONS, type Lesson } from './lessonCatalog';
 
 /** The course's chapters: the seed report's sections in its order, then what lies beyond it (names below). */
-export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'interactive', 'horizon'] as const;
+export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'interactive', 'horizon', 'linearWaves', 'spectra'] as const;
 export type LessonSection = (typeof LESSON_SECTIONS)[number];
 
 /** What a lesson draws over the picture besides its card (lessonLegend.ts). */
@@ -28,6 +28,8 @@ export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { b
   wake: { en: 'The Kelvin wake', es: 'La estela de Kelvin', beyondSeed: true },
   interactive: { en: 'Interactive waves (iWave)', es: 'Olas interactivas (iWave)', beyondSeed: true },
   horizon: { en: 'The sea to the horizon', es: 'El mar hasta el horizonte', beyondSeed: true },
+  linearWaves: { en: 'Ideas: linear waves and their groups', es: 'Ideas: olas lineales y sus grupos', beyondSeed: true },
+  spectra: { en: 'Ideas: spectra and the FFT', es: 'Ideas: espectros y la FFT', beyondSeed: true },
 };
 
 /** Where each lesson sits in the course, the one to five parameters its card offers, and its legend. */
@@ -72,6 +74,10 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'iwave-compare': { section: 'interactive', controls: ['iwaveEquation', 'iwaveGuide', 'timeScale'] },
   'iwave-boat': { section: 'interactive', controls: ['boatSpeed', 'wake', 'wakeStrength', 'interactiveWaves'] },
   'horizon': { section: 'horizon', controls: ['lodColors', 'lodDistance', 'visibility'], legend: 'lodBands' },
+  'airy-waves': { section: 'linearWaves', controls: ['gerstnerCount', 'gerstnerSteepness', 'windSpeed'] },
+  'group-velocity': { section: 'linearWaves', controls: ['iwaveGuide', 'timeScale'] },
+  'spectra-compared': { section: 'spectra', controls: ['spectrum', 'windSpeed', 'fetch'] },
+  'fft-transform': { section: 'spectra', controls: ['seed', 'physics', 'windSpeed'] },
 };
 
 /** A lesson with where it sits in the course, its controls and its legend. */
@@ -120,6 +126,10 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'iwave-compare': { en: 'Dispersion against the wave equation', es: 'Dispersión frente a la ecuación de ondas' },
   'iwave-boat': { en: 'The boat pushes water', es: 'El barco empuja el agua' },
   'horizon': { en: 'Rings out to the horizon', es: 'Anillos hasta el horizonte' },
+  'airy-waves': { en: 'Linear (Airy) waves: orbits and energy', es: 'Olas lineales (Airy): órbitas y energía' },
+  'group-velocity': { en: 'Phase speed and group velocity', es: 'Velocidad de fase y velocidad de grupo' },
+  'spectra-compared': { en: 'Phillips beside Pierson–Moskowitz and JONSWAP', es: 'Phillips junto a Pierson–Moskowitz y JONSWAP' },
+  'fft-transform': { en: 'The FFT itself: random amplitudes, butterflies, tiles', es: 'La FFT en sí: amplitudes aleatorias, mariposas, teselas' },
 };
 
 /** `[{ id, title, section }]` in a language, in the course's order (oceano.lessons()). */

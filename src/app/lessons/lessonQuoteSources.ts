@@ -46,4 +46,8 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'iwave-compare': { file: 'src/sim/iwave/verticalDerivativeKernel.ts', from: 'export function waveEquationKernel(', to: 'return { radius: 1, weights };' },
   'iwave-boat': { file: 'src/sim/iwave/movingHull.ts', from: 'export function hullSources(', to: '];' },
   horizon: { file: 'src/sim/lod/farRings.ts', from: 'export function farRings(', to: 'return rings;' },
+  'airy-waves': { file: 'src/sim/waves/gerstner/gerstnerSpectrum.ts', from: 'let m0 = 0;', to: 'const amplitude = Math.sqrt(' },
+  'group-velocity': { file: 'src/sim/waves/dispersion.ts', from: 'export function groupVelocity(', to: 'return (GRAVITY * (t + kh * sech2)) / (2 * omega);' },
+  'spectra-compared': { file: 'src/sim/waves/spectra/phillips.ts', from: 'export function phillips(', to: 'return ((PHILLIPS_ALPHA' },
+  'fft-transform': { file: 'src/sim/waves/fft/spectralFields.ts', from: '// h₀(k) e^{iφ} + conj(h₀(−k)) e^{−iφ}; ω(−k) = ω(k).', to: 'const hi = ar * s' },
 };

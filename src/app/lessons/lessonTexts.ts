@@ -905,4 +905,93 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
     },
     references: ['losassoHoppe2004', 'koschmieder1924', 'brunetonNeyret2008'],
   },
+  'airy-waves': {
+    text: {
+      en: 'Linear (Airy) theory keeps only first-order terms in a wave’s steepness a k: η = a cos(kx − ωt), with amplitude a, wavenumber k, angular frequency ω and time t. A water particle at depth z ≤ 0 runs round an orbit of radius a e^{kz}: half a wavelength down, e^{−π} ≈ 4 % of the surface’s. The mean energy per square metre is E = ½ ρ g a² (ρ water’s density, g gravity), half kinetic, half potential. Here Q = 0.2, the least the control allows (at Q = 0 Gerstner’s waves are Airy’s): four waves from JONSWAP, each with an equal share of the band’s variance m₀ᴮ, so a = √(2 m₀ᴮ/N) for N waves.',
+      es: 'La teoría lineal (de Airy) conserva el primer orden en la pendiente a k: η = a cos(kx − ωt), con amplitud a, número de onda k, frecuencia angular ω y tiempo t. Una partícula a profundidad z ≤ 0 recorre una órbita de radio a e^{kz}: a media longitud de onda, e^{−π} ≈ 4 % de la superficial. La energía media por metro cuadrado es E = ½ ρ g a² (ρ densidad del agua, g gravedad), mitad cinética, mitad potencial. Aquí Q = 0,2, el mínimo del control (con Q = 0 serían las de Airy): cuatro olas de JONSWAP con igual parte de la varianza m₀ᴮ de la banda: a = √(2 m₀ᴮ/N) para N olas.',
+    },
+    math: m('<mi>η</mi><mo>=</mo><mi>a</mi><mspace width="0.2em"/><mi>cos</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>−</mo><mi>ω</mi><mi>t</mi><mo>)</mo><mo>,</mo><mspace width="1em"/><mi>r</mi><mo>(</mo><mi>z</mi><mo>)</mo><mo>=</mo><mi>a</mi><mspace width="0.1em"/><msup><mi>e</mi><mrow><mi>k</mi><mi>z</mi></mrow></msup>')
+      + m('<mi>E</mi><mo>=</mo><mfrac><mn>1</mn><mn>2</mn></mfrac><mi>ρ</mi><mi>g</mi><msup><mi>a</mi><mn>2</mn></msup><mo>,</mo><mspace width="1em"/><mi>a</mi><mo>=</mo><msqrt><mfrac><mrow><mn>2</mn><msubsup><mi>m</mi><mn>0</mn><mi>B</mi></msubsup></mrow><mi>N</mi></mfrac></msqrt>'),
+    question: {
+      ask: {
+        en: 'Raise the number of Gerstner waves from 4 to 16, Q staying 0.2: will each wave be higher or lower, and will the sea as a whole carry more energy?',
+        es: 'Sube el número de olas de Gerstner de 4 a 16, con Q en 0,2: ¿cada ola será más alta o más baja, y llevará el mar en conjunto más energía?',
+      },
+      answer: {
+        en: 'Each wave drops from 0.28 m to 0.14 m: a = √(2 m₀ᴮ/N) halves when N grows fourfold, so each wave carries a quarter of the energy, about 100 J/m² instead of 400. The total, ρ g m₀ᴮ ≈ 1.6 kJ/m², stays: the sea looks less regular, not higher. Move the Gerstner waves control.',
+        es: 'Cada ola baja de 0,28 m a 0,14 m: a = √(2 m₀ᴮ/N) se reduce a la mitad cuando N se multiplica por cuatro, así que cada ola lleva un cuarto de la energía, unos 100 J/m² en vez de 400. El total, ρ g m₀ᴮ ≈ 1,6 kJ/m², se mantiene: el mar parece menos regular, no más alto. Mueve el control de olas de Gerstner.',
+      },
+    },
+    choice: {
+      en: 'Only the surface is drawn, not the orbits beneath it; giving every wave an equal share of the variance is a sampling choice, not physics.',
+      es: 'Solo se dibuja la superficie, no las órbitas bajo ella; dar a cada ola una parte igual de la varianza es una elección de muestreo, no física.',
+    },
+    references: ['airy1845', 'lamb1932', 'deanDalrymple1991'],
+  },
+  'group-velocity': {
+    text: {
+      en: 'Crests travel at the phase speed c = ω/k; energy, and so a group of waves, at the group velocity c_g = dω/dk. In deep water ω = √(g k) gives c_g = c/2: crests are born at a group’s back, run through it and die at its front. At depth h, c_g = ½ c (1 + 2kh / sinh 2kh), rising to c in shallow water. A stone’s rings rest on c_g = c/2: waves of wavenumber k have run r = c_g t in a time t; at radius r stand k = g t²/(4 r²), long waves ahead. Kelvin’s wedge, arcsin(1/3) ≈ 19.47°, comes from the same ½.',
+      es: 'Las crestas avanzan a la velocidad de fase c = ω/k; la energía y los grupos de olas, a la velocidad de grupo c_g = dω/dk. En aguas profundas ω = √(g k) da c_g = c/2: las crestas nacen en la cola del grupo, lo cruzan y mueren en su frente. A profundidad h, c_g = ½ c (1 + 2kh / senh 2kh), c en aguas someras. Los anillos de una piedra se deben a c_g = c/2: las olas de número de onda k han recorrido r = c_g t en un tiempo t; en el radio r, k = g t²/(4 r²), las largas delante. La cuña de Kelvin, arcsen(1/3) ≈ 19,47°, sale del mismo ½.',
+    },
+    math: m('<mi>c</mi><mo>=</mo><mfrac><mi>ω</mi><mi>k</mi></mfrac><mo>,</mo><mspace width="1em"/><msub><mi>c</mi><mi>g</mi></msub><mo>=</mo><mfrac><mrow><mi>d</mi><mi>ω</mi></mrow><mrow><mi>d</mi><mi>k</mi></mrow></mfrac><mo>=</mo><mfrac><mi>c</mi><mn>2</mn></mfrac><mrow><mo>(</mo><mn>1</mn><mo>+</mo><mfrac><mrow><mn>2</mn><mi>k</mi><mi>h</mi></mrow><mrow><mi>sinh</mi><mn>2</mn><mi>k</mi><mi>h</mi></mrow></mfrac><mo>)</mo></mrow>')
+      + m('<mi>r</mi><mo>=</mo><msub><mi>c</mi><mi>g</mi></msub><mi>t</mi><mo>=</mo><mfrac><mn>1</mn><mn>2</mn></mfrac><msqrt><mfrac><mi>g</mi><mi>k</mi></mfrac></msqrt><mspace width="0.1em"/><mi>t</mi><mspace width="1em"/><mo>⇔</mo><mspace width="1em"/><mi>k</mi><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><msup><mi>r</mi><mn>2</mn></msup></mrow></mfrac>'),
+    question: {
+      ask: {
+        en: 'Slow time to 0.25 and follow one crest of the rings: will it keep its place in the train of waves, move out through it, or fall back?',
+        es: 'Pon el tiempo a 0,25 y sigue una cresta de los anillos: ¿se quedará en su sitio dentro del tren de olas, lo atravesará hacia fuera o se quedará atrás?',
+      },
+      answer: {
+        en: 'It moves out through the train and fades at its front while new crests appear at its back: a crest runs at c, the waves of its length as a group at c_g = c/2. The guide’s rings, r = g t²/(8πn), mark where the crests stand now. Set the time scale to 0.25.',
+        es: 'Lo atraviesa hacia fuera y se apaga en su frente mientras nacen crestas nuevas en su cola: una cresta corre a c, y las olas de su longitud, como grupo, a c_g = c/2. Los anillos de la guía, r = g t²/(8πn), marcan dónde están ahora las crestas. Pon la escala de tiempo en 0,25.',
+      },
+    },
+    references: ['lamb1932', 'kelvin1887', 'lighthill1978', 'deanDalrymple1991'],
+  },
+  'spectra-compared': {
+    text: {
+      en: 'A wind spectrum S(ω) gives the variance of the sea’s height per unit of angular frequency ω; its area m₀ gives the significant height Hs = 4√m₀. All three share Phillips’ range α g² ω⁻⁵, α = 8.1·10⁻³, and differ in how they cut long waves: Tessendorf’s Phillips at exp(−(g/(U ω))⁴), U the wind; Pierson–Moskowitz, a fully developed sea, at exp(−β (ω₀/ω)⁴), β = 0.74, ω₀ = g/U19.5, the wind 19.5 m up; JONSWAP, a sea growing over its fetch, multiplies its peak by γ = 3.3. At 10 m/s: Phillips 1.8 m and a 72 m peak, Pierson–Moskowitz 2.2 m and 88 m, JONSWAP over 100 km 2.1 m and 61 m.',
+      es: 'Un espectro de viento S(ω) da la varianza de la altura por unidad de frecuencia angular ω; su área m₀ da la altura significativa Hs = 4√m₀. Los tres comparten el rango de Phillips α g² ω⁻⁵, α = 8,1·10⁻³, y difieren en cómo cortan las olas largas: el Phillips de Tessendorf con exp(−(g/(U ω))⁴), U el viento; Pierson–Moskowitz, mar plenamente desarrollado, con exp(−β (ω₀/ω)⁴), β = 0,74, ω₀ = g/U19.5, el viento a 19,5 m; JONSWAP, mar que crece sobre su fetch, multiplica su pico por γ = 3,3. A 10 m/s: Phillips 1,8 m y pico de 72 m, Pierson–Moskowitz 2,2 m y 88 m, JONSWAP con 100 km 2,1 m y 61 m.',
+    },
+    math: m('<msub><mi>S</mi><mi>P</mi></msub><mo>=</mo><mfrac><mrow><mi>α</mi><msup><mi>g</mi><mn>2</mn></msup></mrow><msup><mi>ω</mi><mn>5</mn></msup></mfrac><msup><mi>e</mi><mrow><mo>−</mo><msup><mrow><mo>(</mo><mi>g</mi><mo>/</mo><mi>U</mi><mi>ω</mi><mo>)</mo></mrow><mn>4</mn></msup></mrow></msup><mo>,</mo><mspace width="1em"/><msub><mi>S</mi><mi>PM</mi></msub><mo>=</mo><mfrac><mrow><mi>α</mi><msup><mi>g</mi><mn>2</mn></msup></mrow><msup><mi>ω</mi><mn>5</mn></msup></mfrac><msup><mi>e</mi><mrow><mo>−</mo><mi>β</mi><msup><mrow><mo>(</mo><msub><mi>ω</mi><mn>0</mn></msub><mo>/</mo><mi>ω</mi><mo>)</mo></mrow><mn>4</mn></msup></mrow></msup>')
+      + m('<msub><mi>H</mi><mi>s</mi></msub><mo>=</mo><mn>4</mn><msqrt><msub><mi>m</mi><mn>0</mn></msub></msqrt><mo>,</mo><mspace width="1em"/><msub><mi>m</mi><mn>0</mn></msub><mo>=</mo><msubsup><mo>∫</mo><mn>0</mn><mi>∞</mi></msubsup><mi>S</mi><mo>(</mo><mi>ω</mi><mo>)</mo><mspace width="0.1em"/><mi>d</mi><mi>ω</mi>'),
+    question: {
+      ask: {
+        en: 'Switch the spectrum from Phillips to Pierson–Moskowitz, wind still 10 m/s: will the waves grow higher and longer, or lower and shorter?',
+        es: 'Cambia el espectro de Phillips a Pierson–Moskowitz, con el viento aún a 10 m/s: ¿las olas serán más altas y largas, o más bajas y cortas?',
+      },
+      answer: {
+        en: 'Higher and longer: Hs from 1.8 m to 2.2 m, the peak wavelength from 72 m to 88 m. Pierson–Moskowitz’s cut, with β = 0.74 and the wind taken 19.5 m up (2.6 % faster), sits at a lower ω and lets more long waves in. Move the spectrum control.',
+        es: 'Más altas y más largas: Hs de 1,8 m a 2,2 m, la longitud de onda del pico de 72 m a 88 m. El corte de Pierson–Moskowitz, con β = 0,74 y el viento tomado a 19,5 m (un 2,6 % más rápido), cae en una ω menor y deja pasar más olas largas. Mueve el control de espectro.',
+      },
+    },
+    choice: {
+      en: 'Phillips’ cut is Tessendorf’s choice for graphics, not a measured sea; the code fixes its free amplitude with Phillips’ α, as in Pierson–Moskowitz.',
+      es: 'El corte de Phillips es una elección de Tessendorf para gráficos, no un mar medido; el código fija su amplitud libre con el α de Phillips, como en Pierson–Moskowitz.',
+    },
+    references: ['phillips1958', 'tessendorf2001', 'piersonMoskowitz1964', 'hasselmann1973'],
+  },
+  'fft-transform': {
+    text: {
+      en: 'The sea starts from random amplitudes: for each wavevector k of an N × N grid, h̃₀(k) = (ξr + i ξi) √(P(k)/2), ξr and ξi Gaussian numbers drawn from the seed, P(k) half the spectrum’s variance in that cell (the other half sits at −k). At time t (ω the angular frequency), h̃(k, t) = h̃₀(k) e^{iωt} + h̃₀*(−k) e^{−iωt}, so h̃(−k, t) = h̃*(k, t): the inverse transform is real. It runs log₂N stages of butterflies along x, then z: 7 for N = 128, in 4 GPU passes (radices 2, 4, 4, 4). The result repeats: a tile. Three tiles summed, sizes in ratios 4.73 and 4.46, hide the repeat.',
+      es: 'El mar parte de amplitudes aleatorias: para cada vector de onda k de una malla N × N, h̃₀(k) = (ξr + i ξi) √(P(k)/2), con ξr y ξi gaussianos de la semilla y P(k) la mitad de la varianza del espectro en esa celda (la otra está en −k). En el instante t (ω la frecuencia angular), h̃(k, t) = h̃₀(k) e^{iωt} + h̃₀*(−k) e^{−iωt}, y h̃(−k, t) = h̃*(k, t): la transformada inversa es real. Recorre log₂N etapas de mariposas en x y luego en z: 7 para N = 128, en 4 pasadas de GPU (radios 2, 4, 4, 4). El resultado se repite: una tesela. Tres teselas sumadas, en razón 4,73 y 4,46, ocultan la repetición.',
+    },
+    math: m('<msub><mover><mi>h</mi><mo>~</mo></mover><mn>0</mn></msub><mo>(</mo><mi mathvariant="bold">k</mi><mo>)</mo><mo>=</mo><mo>(</mo><msub><mi>ξ</mi><mi>r</mi></msub><mo>+</mo><mi>i</mi><msub><mi>ξ</mi><mi>i</mi></msub><mo>)</mo><msqrt><mfrac><mrow><mi>P</mi><mo>(</mo><mi mathvariant="bold">k</mi><mo>)</mo></mrow><mn>2</mn></mfrac></msqrt>')
+      + m('<mover><mi>h</mi><mo>~</mo></mover><mo>(</mo><mi mathvariant="bold">k</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><msub><mover><mi>h</mi><mo>~</mo></mover><mn>0</mn></msub><mo>(</mo><mi mathvariant="bold">k</mi><mo>)</mo><msup><mi>e</mi><mrow><mi>i</mi><mi>ω</mi><mi>t</mi></mrow></msup><mo>+</mo><msubsup><mover><mi>h</mi><mo>~</mo></mover><mn>0</mn><mo>*</mo></msubsup><mo>(</mo><mo>−</mo><mi mathvariant="bold">k</mi><mo>)</mo><msup><mi>e</mi><mrow><mo>−</mo><mi>i</mi><mi>ω</mi><mi>t</mi></mrow></msup>')
+      + m('<mover><mi>h</mi><mo>~</mo></mover><mo>(</mo><mo>−</mo><mi mathvariant="bold">k</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><msup><mover><mi>h</mi><mo>~</mo></mover><mo>*</mo></msup><mo>(</mo><mi mathvariant="bold">k</mi><mo>,</mo><mi>t</mi><mo>)</mo>'),
+    question: {
+      ask: {
+        en: 'Change the noise seed from 1 to 2: will the sea’s significant height Hs change much, or only where the crests stand?',
+        es: 'Cambia la semilla del ruido de 1 a 2: ¿cambiará mucho la altura significativa Hs del mar, o solo dónde están las crestas?',
+      },
+      answer: {
+        en: 'Mostly where the crests stand. The seed draws the ξ; P(k) fixes each mode’s expected variance, so the drawn sea’s Hs = 4√(Σ|h̃|²) moves only from 2.15 m to 2.25 m, both near the spectrum’s 2.2 m. Move the noise seed control and watch the physics panel.',
+        es: 'Sobre todo dónde están las crestas. La semilla sortea los ξ; P(k) fija la varianza esperada de cada modo, así que la Hs = 4√(Σ|h̃|²) del mar sorteado solo pasa de 2,15 m a 2,25 m, ambas cerca de los 2,2 m del espectro. Mueve el control de semilla del ruido y mira el panel de física.',
+      },
+    },
+    choice: {
+      en: 'The tiles’ sizes, their ratios 4.73 and 4.46 and the three cascades are our choices to hide the repeat, not physics.',
+      es: 'Los tamaños de las teselas, sus razones 4,73 y 4,46 y las tres cascadas son elecciones nuestras para ocultar la repetición, no física.',
+    },
+    references: ['tessendorf2001', 'cooleyTukey1965', 'govindaraju2008'],
+  },
 };
