@@ -12,6 +12,7 @@ import { LESSON_TEXTS } from './lessonTexts';
 import { LessonLegend } from './lessonLegend';
 import { FreeArea } from '../layout/freeArea';
 import { FigureCaptions } from './figureCaptions';
+import { lessonDiagram, type LessonDiagram } from './diagrams/lessonDiagram';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -61,6 +62,7 @@ export class LessonDrawer {
   private readonly captions: FigureCaptions;
   private current: OutlinedLesson | null = null;
   private params: OceanParams | null = null;
+  private diagram: LessonDiagram | null = null;
 
   constructor(
     private readonly container: HTMLElement,
@@ -233,7 +235,8 @@ export class LessonDrawer {
     controls.append(element('legend', '', teachingWord(this.tr, 'lessonControls')));
     this.controls.clear();
     for (const key of lesson.controls) controls.append(this.buildControl(key));
-    this.card.append(title, section, text, math, code, controls);
+    this.diagram = lessonDiagram(lesson.id, language);
+    this.card.append(title, section, text, math, ...(this.diagram ? [this.diagram.element] : []), code, controls);
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);
     if (this.params) this.sync(this.params);
@@ -299,11 +302,13 @@ export class LessonDrawer {
       note.textContent = reason ? teachingWord(this.tr, reason) : '';
     }
     this.legend.sync(params);
+    this.diagram?.update(params, this.hooks.scene().time);
   }
 
   /** After each frame: the labels on the sea, and the captions of a teaching view (view=noise-hash …). */
   placeLabels(): void {
     this.legend.place();
+    if (this.params) this.diagram?.update(this.params, this.hooks.scene().time);
     if (!this.params || this.params.view === 'ocean') return this.captions.clear();
     const { canvas, time } = this.hooks.scene();
     this.captions.place(this.params, FreeArea.of(this.container).rect ?? { x: 0, y: 0, width: canvas.clientWidth, height: canvas.clientHeight }, canvas, time);
