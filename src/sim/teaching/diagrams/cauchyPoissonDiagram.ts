@@ -1,18 +1,9 @@
-import { crestRadii } from '../../iwave/cauchyPoissonRings';
-import { IWAVE_GRID_SIZE, IWAVE_SPACING } from '../../iwave/fieldSize';
-import { IWAVE_SPONGE } from '../../iwave/iwaveGrid';
-import { IWAVE_KERNEL_BAND } from '../../iwave/verticalDerivativeKernel';
+import { crestRadii, stoneGuideReach } from '../../iwave/cauchyPoissonRings';
 import { GRAVITY } from '../../wake/kelvinWake';
 import { sampled, type Diagram, type DiagramMark } from './diagram';
 
 /** Crests labelled with their radius, outermost first: further in they crowd. */
 const LABELLED_CRESTS = 3;
-
-/** The band the field carries (rad/m) and the radius inside its sponge (m): what the rings on the sea use. */
-export function stoneGuideReach(): { kMin: number; kMax: number; maxRadius: number } {
-  const [kMin, kMax] = IWAVE_KERNEL_BAND.map((k) => k / IWAVE_SPACING);
-  return { kMin, kMax, maxRadius: (0.5 * IWAVE_GRID_SIZE - IWAVE_SPONGE.width) * IWAVE_SPACING };
-}
 
 /**
  * A stone's waves `age` seconds after it fell, along a radius: the stationary-phase profile's
@@ -26,7 +17,7 @@ export function cauchyPoissonDiagram(age: number): Diagram {
   const t2 = age * age;
   // The local wavenumber g t²/(4r²) reaches kMax at r = t √(g / (4 kMax)).
   const inner = age > 0 ? Math.min(reach.maxRadius, age * Math.sqrt(GRAVITY / (4 * reach.kMax))) : reach.maxRadius;
-  const profile = age > 0 ? sampled(inner, reach.maxRadius, 400, (r) => [r, Math.cos((GRAVITY * t2) / (4 * r))]) : [];
+  const profile = age > 0 ? sampled(inner, reach.maxRadius, 600, (r) => [r, Math.cos((GRAVITY * t2) / (4 * r))]) : [];
   const marks: DiagramMark[] = radii.map((r, index) => ({ id: 'crest', x: r, y: 1, value: r, unit: 'm', index, quiet: index >= LABELLED_CRESTS }));
   marks.push({ id: 'age', x: 0.02 * reach.maxRadius, y: -1.45, value: age, unit: 's', bare: true });
   return {
