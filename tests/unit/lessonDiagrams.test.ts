@@ -72,6 +72,9 @@ describe('every lesson diagram', () => {
     const snell = snellDiagram();
     expect(diagramName(snell, 'en')).toContain('critical angle 48.6°');
     expect(diagramName(snell, 'es')).toContain('ángulo crítico 48,6°');
+    const lod = lodDiagram({ lodDistance: 40, lodBands: 6 });
+    expect(diagramName(lod, 'en')).toBe('The distance bands: first ring at 40 m');
+    expect(diagramName(lodDiagram({ lodDistance: 40, lodBands: 1 }), 'es')).toBe('Las bandas de distancia: una banda, vértices cada 2 m');
     // A planted wrong index of refraction names another angle.
     expect(diagramName(snellDiagram(1.5), 'en')).not.toContain('48.6°');
   });
@@ -317,6 +320,10 @@ describe('a stone’s crests', () => {
     }
     expect(later).not.toEqual(early);
     expect(marks(cauchyPoissonDiagram(0), 'crest')).toEqual([]);
+    // A second after the fall stationary phase holds nowhere in the field yet: no profile, no crest.
+    const early1 = cauchyPoissonDiagram(1);
+    expect(early1.lines.filter((l) => l.role === 'main')).toHaveLength(0);
+    expect(marks(early1, 'crest')).toEqual([]);
   });
 });
 

@@ -3,6 +3,9 @@ import { IWAVE_GRID_SIZE, IWAVE_SPACING } from './fieldSize';
 import { IWAVE_SPONGE } from './iwaveGrid';
 import { IWAVE_KERNEL_BAND } from './verticalDerivativeKernel';
 
+/** The least phase g t²/(4r), rad, where stationary phase describes a stone's waves: 12 leaves out the first crest. */
+export const STATIONARY_PHASE_FROM = 12;
+
 /**
  * Where a dropped stone's crests must stand `age` seconds after it fell, on deep water: the
  * teaching guide of the `stone` preset. For an initial bump of volume Q at rest, stationary
@@ -17,7 +20,7 @@ import { IWAVE_KERNEL_BAND } from './verticalDerivativeKernel';
  */
 export function crestRadii(age: number, options: { kMin: number; kMax: number; maxRadius: number; minPhase?: number; gravity?: number }): number[] {
   const g = options.gravity ?? GRAVITY;
-  const minPhase = options.minPhase ?? 12;
+  const minPhase = options.minPhase ?? STATIONARY_PHASE_FROM;
   if (!(age > 0)) return [];
   const radii: number[] = [];
   for (let n = 1; ; n++) {

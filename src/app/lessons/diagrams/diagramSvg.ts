@@ -4,12 +4,15 @@ import { diagramDescription, diagramName, markLabel } from './diagramLabels';
 import { DIAGRAM_WORDS } from './diagramWords';
 
 const SVG = 'http://www.w3.org/2000/svg';
-/** The drawing's width in its own units; it scales to the card, so a phone's 390 px shows it near 1:1. */
-const WIDTH = 360;
-const GRAPH_HEIGHT = 200;
-const GRAPH_PAD = { left: 30, right: 10, top: 12, bottom: 24 };
-const PICTURE_PAD = 10;
-const PICTURE_HEIGHT: readonly [number, number] = [120, 260];
+/**
+ * The drawing's width in its own units. It scales to the card: about 1:1 in a laptop's
+ * 250 px card, larger on a phone, where the card is the screen's width.
+ */
+const WIDTH = 250;
+const GRAPH_HEIGHT = 160;
+const GRAPH_PAD = { left: 24, right: 6, top: 10, bottom: 20 };
+const PICTURE_PAD = 8;
+const PICTURE_HEIGHT: readonly [number, number] = [90, 190];
 
 const STROKES: Readonly<Record<LineRole, { color: string; width: number; dash?: string }>> = {
   main: { color: '#7fd4ff', width: 2 },
@@ -64,7 +67,7 @@ export class DiagramSvg {
     this.element.style.margin = '0 0 8px';
     this.svg = svg('svg', { role: 'img', width: '100%' });
     this.svg.style.display = 'block';
-    this.svg.style.maxWidth = '480px';
+    this.svg.style.maxWidth = '420px';
     this.caption = document.createElement('figcaption');
     this.caption.style.fontSize = '11px';
     this.caption.style.opacity = '0.85';
@@ -96,11 +99,12 @@ export class DiagramSvg {
       const [x, y] = map([mark.x, mark.y]);
       if (!mark.bare) parts.push(svg('circle', { cx: x.toFixed(1), cy: y.toFixed(1), r: 3, fill: '#ffffff', stroke: '#082d3f', 'stroke-width': 1 }));
       if (mark.quiet) continue;
-      const right = x > WIDTH * 0.62;
+      // A note reads from where it stands unless that is near the right edge; a dot's label leans away from the edge.
+      const right = x > WIDTH * (mark.bare ? 0.8 : 0.62);
       const text = svg('text', {
-        x: (x + (mark.bare ? 0 : right ? -5 : 5)).toFixed(1),
-        y: Math.min(height - 4, Math.max(11, y + (mark.below ? 14 : -5))).toFixed(1),
-        'text-anchor': mark.bare ? (right ? 'end' : 'start') : right ? 'end' : 'start',
+        x: (x + (mark.bare || mark.centred ? 0 : right ? -5 : 5)).toFixed(1),
+        y: Math.min(height - 3, Math.max(10, y + (mark.below ? 13 : -5))).toFixed(1),
+        'text-anchor': mark.centred ? 'middle' : right ? 'end' : 'start',
         ...TEXT,
       });
       text.textContent = markLabel(diagram, mark, language);
@@ -123,14 +127,18 @@ export class DiagramSvg {
 
   private axes(plot: { x: number; y: number; width: number; height: number }, xTitle?: string, yTitle?: string): SVGElement[] {
     const bottom = plot.y + plot.height;
-    const parts: SVGElement[] = [svg('polyline', { points: `${plot.x},${plot.y} ${plot.x},${bottom} ${plot.x + plot.width},${bottom}`, fill: 'none', stroke: 'rgba(232, 242, 247, 0.6)', 'stroke-width': 1 })];
+    const axis = { fill: 'none', stroke: 'rgba(232, 242, 247, 0.6)', 'stroke-width': 1 };
+    // Only a quantity has an axis: the butterflies' rows are no scale.
+    const parts: SVGElement[] = [];
+    if (xTitle) parts.push(svg('polyline', { points: `${plot.x},${bottom} ${plot.x + plot.width},${bottom}`, ...axis }));
+    if (yTitle) parts.push(svg('polyline', { points: `${plot.x},${plot.y} ${plot.x},${bottom}`, ...axis }));
     if (xTitle) {
-      const t = svg('text', { x: plot.x + plot.width, y: bottom + 16, 'text-anchor': 'end', ...TEXT });
+      const t = svg('text', { x: plot.x + plot.width, y: bottom + 15, 'text-anchor': 'end', ...TEXT });
       t.textContent = xTitle;
       parts.push(t);
     }
     if (yTitle) {
-      const t = svg('text', { x: 12, y: plot.y + plot.height / 2, 'text-anchor': 'middle', transform: `rotate(-90 12 ${plot.y + plot.height / 2})`, ...TEXT });
+      const t = svg('text', { x: 10, y: plot.y + plot.height / 2, 'text-anchor': 'middle', transform: `rotate(-90 10 ${plot.y + plot.height / 2})`, ...TEXT });
       t.textContent = yTitle;
       parts.push(t);
     }
@@ -139,4 +147,4 @@ export class DiagramSvg {
 }
 
 /** Text light on the card, ringed in its dark blue so it reads over a line. */
-const TEXT = { 'font-size': 11, fill: '#e8f2f7', stroke: 'rgba(8, 30, 45, 0.9)', 'stroke-width': 3, 'paint-order': 'stroke', 'font-family': 'system-ui, sans-serif' } as const;
+const TEXT = { 'font-size': 10, fill: '#e8f2f7', stroke: 'rgba(8, 30, 45, 0.9)', 'stroke-width': 2.5, 'paint-order': 'stroke', 'font-family': 'system-ui, sans-serif' } as const;

@@ -15,6 +15,8 @@ export interface MarkWords extends Words {
 export interface DiagramWords {
   /** What the picture is, before its key value, for its accessible name. */
   name: Words;
+  /** The key value in the name, by mark, where that mark's own label is too short to stand alone. */
+  headline?: Readonly<Record<string, MarkWords>>;
   /** Axis titles, for a graph; a picture of space has none. */
   xAxis?: Words;
   yAxis?: Words;
@@ -99,20 +101,24 @@ export const DIAGRAM_WORDS: Readonly<Record<DiagramKind, DiagramWords>> = {
     },
     marks: {
       stage: { en: 'Ns={v}', es: 'Ns={v}', digits: 0 },
-      size: { en: 'sea: {v}² per tile', es: 'mar: {v}² por tesela', digits: 0 },
-      passes: { en: '{v} passes per axis', es: '{v} pasadas por eje', digits: 0 },
+      size: { en: 'sea: {v}×{v}', es: 'mar: {v}×{v}', digits: 0 },
+      passes: { en: '{v} passes/axis', es: '{v} pasadas/eje', digits: 0 },
       tile: { en: 'tile {i}: {v} m', es: 'tesela {i}: {v} m', digits: 0, first: 1 },
     },
   },
   lodBands: {
     name: { en: 'The distance bands', es: 'Las bandas de distancia' },
-    xAxis: { en: 'distance from the camera (log scale)', es: 'distancia a la cámara (escala log)' },
+    headline: {
+      ring: { en: 'first ring at {v} m', es: 'primer anillo a {v} m', digits: 0 },
+      spacing: { en: 'one band, vertices {v} m apart', es: 'una banda, vértices cada {v} m', digits: 0 },
+    },
+    xAxis: { en: 'distance from the camera, m (log scale)', es: 'distancia a la cámara, m (escala log)' },
     key: {
-      en: 'Each band starts twice as far as the last (L, 2L, 4L…) and spaces its vertices further apart; the last reaches the horizon. Colours as the LOD view.',
-      es: 'Cada banda empieza al doble de distancia que la anterior (L, 2L, 4L…) y separa más sus vértices; la última llega al horizonte. Colores como la vista LOD.',
+      en: 'Each band starts twice as far as the last (L, 2L, 4L…) and spaces its vertices further apart (above each band, its spacing); the last reaches the horizon. Colours as the LOD view.',
+      es: 'Cada banda empieza al doble de distancia que la anterior (L, 2L, 4L…) y separa más sus vértices (sobre cada banda, su separación); la última llega al horizonte. Colores como la vista LOD.',
     },
     marks: {
-      ring: { en: '{v} m', es: '{v} m', digits: 0 },
+      ring: { en: '{v}', es: '{v}', digits: 0 },
       spacing: { en: '{v} m', es: '{v} m', digits: 0 },
       camera: { en: 'camera', es: 'cámara', digits: 0 },
     },
@@ -130,7 +136,7 @@ export const DIAGRAM_WORDS: Readonly<Record<DiagramKind, DiagramWords>> = {
     },
   },
   cauchyPoisson: {
-    name: { en: 'A stone’s crests', es: 'Las crestas de la piedra' },
+    name: { en: 'A stone’s crests, r = g t²/(8πn)', es: 'Las crestas de la piedra, r = g t²/(8πn)' },
     xAxis: { en: 'r (m)', es: 'r (m)' },
     key: {
       en: 'The profile cos(g t²/4r) along a radius, and its crests r = g t²/(8πn), where the rings on the sea stand: the long waves lead.',

@@ -1,4 +1,4 @@
-import { crestRadii, stoneGuideReach } from '../../iwave/cauchyPoissonRings';
+import { crestRadii, STATIONARY_PHASE_FROM, stoneGuideReach } from '../../iwave/cauchyPoissonRings';
 import { GRAVITY } from '../../wake/kelvinWake';
 import { sampled, type Diagram, type DiagramMark } from './diagram';
 
@@ -17,7 +17,9 @@ export function cauchyPoissonDiagram(age: number): Diagram {
   const t2 = age * age;
   // The local wavenumber g t²/(4r²) reaches kMax at r = t √(g / (4 kMax)).
   const inner = age > 0 ? Math.min(reach.maxRadius, age * Math.sqrt(GRAVITY / (4 * reach.kMax))) : reach.maxRadius;
-  const profile = age > 0 ? sampled(inner, reach.maxRadius, 600, (r) => [r, Math.cos((GRAVITY * t2) / (4 * r))]) : [];
+  // Outward of where the phase g t²/(4r) falls below crestRadii's stationary-phase limit the formula does not hold: not drawn.
+  const outer = Math.min(reach.maxRadius, (GRAVITY * t2) / (4 * STATIONARY_PHASE_FROM));
+  const profile = outer > inner ? sampled(inner, outer, 600, (r) => [r, Math.cos((GRAVITY * t2) / (4 * r))]) : [];
   const marks: DiagramMark[] = radii.map((r, index) => ({ id: 'crest', x: r, y: 1, value: r, unit: 'm', index, quiet: index >= LABELLED_CRESTS }));
   marks.push({ id: 'age', x: 0.02 * reach.maxRadius, y: -1.45, value: age, unit: 's', bare: true });
   return {
@@ -27,6 +29,6 @@ export function cauchyPoissonDiagram(age: number): Diagram {
     equalScale: false,
     lines: [{ role: 'faint', points: [[0, 0], [reach.maxRadius, 0]] }, ...(profile.length ? [{ role: 'main' as const, points: profile }] : [])],
     marks,
-    headline: radii.length > 0 ? 'crest' : 'age',
+    headline: 'age',
   };
 }

@@ -31,6 +31,8 @@ export interface DiagramMark {
   quiet?: boolean;
   /** Its label below the point rather than above. */
   below?: boolean;
+  /** Its label centred on the point (marks in a row whose labels would otherwise run into each other). */
+  centred?: boolean;
 }
 
 export interface Diagram {

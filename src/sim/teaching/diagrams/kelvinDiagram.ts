@@ -33,6 +33,6 @@ export function kelvinDiagram(params: Pick<OceanParams, 'boatSpeed'>): Diagram {
     { id: 'angle', x: -0.55 * reach, y: 0.55 * reach * Math.tan(KELVIN_HALF_ANGLE) * 0.5, value: KELVIN_HALF_ANGLE / DEGREE, unit: '°', bare: true },
     { id: 'boat', x: 0, y: 0, value: params.boatSpeed, unit: 'm/s' },
   ];
-  if (moving) marks.push({ id: 'transverse', x: -wavelength, y: 0, value: wavelength, unit: 'm' });
+  if (moving) marks.push({ id: 'transverse', x: -wavelength, y: 0, value: wavelength, unit: 'm', below: true, centred: true });
   return { kind: 'kelvin', x: [-reach * 1.02, reach * 0.12], y: [-half, half], equalScale: true, lines, marks, headline: 'angle' };
 }

@@ -56,10 +56,10 @@ export function orbitDiagram(params: GerstnerSeaParams): Diagram {
     ],
     marks: [
       { id: 'steepness', x: centre + exaggeration * wave.horizontal, y: 0, value: wave.horizontal / wave.amplitude, unit: '' },
-      { id: 'wavelength', x: 0.02 * wavelength, y: top * 0.85, value: wavelength, unit: 'm' },
+      { id: 'wavelength', x: 0.02 * wavelength, y: top * 0.55, value: wavelength, unit: 'm', bare: true },
       { id: 'amplitude', x: centre, y: exaggeration * wave.amplitude, value: wave.amplitude, unit: 'm' },
       ...ORBIT_DEPTHS.map((d, index) => ({ id: 'decay', x: centre, y: -d * wavelength, value: 100 * airyRadius(d * wavelength) / wave.amplitude, unit: '%', index })),
-      { id: 'exaggeration', x: 0.02 * wavelength, y: -deepest - exaggeration * wave.amplitude * 0.9, value: exaggeration, unit: '×' },
+      { id: 'exaggeration', x: 0.02 * wavelength, y: -deepest - exaggeration * wave.amplitude * 0.9, value: exaggeration, unit: '×', bare: true },
     ],
     headline: 'steepness',
   };

@@ -24,7 +24,7 @@ export function spectrumDiagram(params: SeaParams): Diagram {
     y: [0, top],
     equalScale: false,
     lines: [
-      ...SPECTRA.filter((name) => name !== sea.spectrum).map((name) => ({ role: 'faint' as const, points: curve(name).map(([w, s]) => [w, Math.min(s, top)] as const) })),
+      ...SPECTRA.filter((name) => name !== sea.spectrum).map((name) => ({ role: 'faint' as const, points: curve(name) })),
       { role: 'main', points: main },
       { role: 'guide', points: [[spectrum.peak, 0], [spectrum.peak, spectrum.density(spectrum.peak)]] },
     ],
