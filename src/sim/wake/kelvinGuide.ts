@@ -1,5 +1,4 @@
 import { forwardOf } from '../boat/boatPose';
-import { GRAVITY } from './kelvinWake';
 
 /** Kelvin's half-angle, arcsin(1/3) ≈ 19.47° (Kelvin 1887; Lighthill, Waves in Fluids, §3.10). */
 export const KELVIN_HALF_ANGLE = Math.asin(1 / 3);
@@ -16,12 +15,4 @@ export function kelvinGuideLines(x: number, z: number, heading: number, length: 
   const s = Math.sin(KELVIN_HALF_ANGLE) * length;
   // Backwards is −forward; the perpendicular (−fz, fx) points to port for the y-up frame of boatPose.ts.
   return [x, z, x - fx * c - fz * s, z - fz * c + fx * s, x - fx * c + fz * s, z - fz * c - fx * s];
-}
-
-/**
- * Wavelength of the wake's transverse waves behind a hull at `speed` m/s: the waves that keep
- * pace with it have phase speed U, and deep water's ω² = g k gives k = g/U², λ = 2πU²/g.
- */
-export function transverseWavelength(speed: number, gravity = GRAVITY): number {
-  return (2 * Math.PI * speed * speed) / gravity;
 }

@@ -1,5 +1,6 @@
 import type { OceanParams } from '../../params/params';
-import { KELVIN_HALF_ANGLE, transverseWavelength } from '../../wake/kelvinGuide';
+import { KELVIN_HALF_ANGLE } from '../../wake/kelvinGuide';
+import { transverseWavelength } from '../../wake/transverseWavelength';
 import { DEGREE, sampled, type Diagram, type DiagramLine, type DiagramMark } from './diagram';
 
 /** Crests drawn behind the boat. */
@@ -31,7 +32,9 @@ export function kelvinDiagram(params: Pick<OceanParams, 'boatSpeed'>): Diagram {
   const half = reach * Math.sin(KELVIN_HALF_ANGLE) * 1.25;
   const marks: DiagramMark[] = [
     { id: 'angle', x: -0.55 * reach, y: 0.55 * reach * Math.tan(KELVIN_HALF_ANGLE) * 0.5, value: KELVIN_HALF_ANGLE / DEGREE, unit: '°', bare: true },
-    { id: 'boat', x: 0, y: 0, value: params.boatSpeed, unit: 'm/s' },
+    // The boat is a dot at the apex; its speed is written in the corner below it, clear of the crests.
+    { id: 'boat', x: 0, y: 0, value: params.boatSpeed, unit: 'm/s', quiet: true },
+    { id: 'boat', x: 0.1 * reach, y: -0.85 * half, value: params.boatSpeed, unit: 'm/s', bare: true },
   ];
   if (moving) marks.push({ id: 'transverse', x: -wavelength, y: 0, value: wavelength, unit: 'm', below: true, centred: true });
   return { kind: 'kelvin', x: [-reach * 1.02, reach * 0.12], y: [-half, half], equalScale: true, lines, marks, headline: 'angle' };
