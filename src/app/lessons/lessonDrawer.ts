@@ -15,6 +15,7 @@ import { FigureCaptions } from './figureCaptions';
 import { GlossaryNote } from './glossaryNote';
 import { bibliographyList, glossaryList, referencesFold } from './referenceLists';
 import { CONCEPT_STAGES, LESSON_ORDERS, ORDER_NAMES, type LessonOrder } from './conceptPath';
+import { lessonDiagram, type LessonDiagram } from './diagrams/lessonDiagram';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -71,6 +72,7 @@ export class LessonDrawer {
   /** Which order the list shows and ‹ › walk: the seed report's, or the ideas' (conceptPath.ts). */
   private order: LessonOrder = 'report';
   private params: OceanParams | null = null;
+  private diagram: LessonDiagram | null = null;
 
   constructor(
     private readonly container: HTMLElement,
@@ -319,6 +321,7 @@ export class LessonDrawer {
     controls.append(element('legend', '', teachingWord(this.tr, 'lessonControls')));
     this.controls.clear();
     for (const key of lesson.controls) controls.append(this.buildControl(key));
+    this.diagram = lessonDiagram(lesson.id, language);
     this.card.append(title, section);
     if (words.question) this.card.append(this.questionBlock(words.question.ask[language], words.question.answer[language]));
     this.card.append(text, this.glossaryNote.element);
@@ -327,7 +330,7 @@ export class LessonDrawer {
       choice.append(element('strong', 'oceano-lesson-choice-label', teachingWord(this.tr, 'lessonChoice')), ' ', words.choice[language]);
       this.card.append(choice);
     }
-    this.card.append(math, code, controls);
+    this.card.append(math, ...(this.diagram ? [this.diagram.element] : []), code, controls);
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);
     if (words.references && words.references.length > 0) this.card.append(referencesFold(this.tr, words.references));
@@ -416,11 +419,13 @@ export class LessonDrawer {
       note.textContent = reason ? teachingWord(this.tr, reason) : '';
     }
     this.legend.sync(params);
+    this.diagram?.update(params, this.hooks.scene().time);
   }
 
   /** After each frame: the labels on the sea, and the captions of a teaching view (view=noise-hash …). */
   placeLabels(): void {
     this.legend.place();
+    if (this.params) this.diagram?.update(this.params, this.hooks.scene().time);
     if (!this.params || this.params.view === 'ocean') return this.captions.clear();
     const { canvas, time } = this.hooks.scene();
     this.captions.place(this.params, FreeArea.of(this.container).rect ?? { x: 0, y: 0, width: canvas.clientWidth, height: canvas.clientHeight }, canvas, time);

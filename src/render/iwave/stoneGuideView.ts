@@ -1,8 +1,6 @@
 import { BufferAttribute, BufferGeometry, LineBasicMaterial, LineSegments } from 'three';
-import { crestRadii, waveFrontRadius } from '../../sim/iwave/cauchyPoissonRings';
-import { IWAVE_GRID_SIZE, IWAVE_SPACING, WAVE_EQUATION_SPEED, type IWaveEquation } from '../../sim/iwave/interactiveField';
-import { IWAVE_KERNEL_BAND } from '../../sim/iwave/verticalDerivativeKernel';
-import { IWAVE_SPONGE } from '../../sim/iwave/iwaveGrid';
+import { crestRadii, stoneGuideReach, waveFrontRadius } from '../../sim/iwave/cauchyPoissonRings';
+import { WAVE_EQUATION_SPEED, type IWaveEquation } from '../../sim/iwave/interactiveField';
 import type { Stone } from '../../sim/iwave/iwaveGrid';
 
 /** Segments per ring, stones and rings per stone drawn at most. */
@@ -43,14 +41,14 @@ export class StoneGuideView {
   update(visible: boolean, stones: readonly Stone[], time: number, equation: IWaveEquation, centreX: number): void {
     this.lines.visible = visible;
     if (!visible) return;
-    const [kMin, kMax] = IWAVE_KERNEL_BAND.map((k) => k / IWAVE_SPACING);
-    // Rings stop where the sponge starts: past it the field is being absorbed.
-    const open = (0.5 * IWAVE_GRID_SIZE - IWAVE_SPONGE.width) * IWAVE_SPACING;
+    // Rings stop where the sponge starts, and show only the waves the field carries.
+    const reach = stoneGuideReach();
+    const open = reach.maxRadius;
     let count = 0;
     for (const [dropped, x, z] of stones.slice(-MAX_STONES)) {
       const age = time - dropped;
       const wave = equation === 'non-dispersive' || (equation === 'side-by-side' && x >= centreX);
-      const radii = wave ? [waveFrontRadius(age, WAVE_EQUATION_SPEED)].filter((r) => r > 0 && r <= open) : crestRadii(age, { kMin, kMax, maxRadius: open });
+      const radii = wave ? [waveFrontRadius(age, WAVE_EQUATION_SPEED)].filter((r) => r > 0 && r <= open) : crestRadii(age, reach);
       for (const r of radii.slice(0, MAX_RINGS)) {
         for (let s = 0; s < SEGMENTS; s++) {
           const a = (2 * Math.PI * s) / SEGMENTS;

@@ -1,4 +1,10 @@
 import { GRAVITY } from '../wake/kelvinWake';
+import { IWAVE_GRID_SIZE, IWAVE_SPACING } from './fieldSize';
+import { IWAVE_SPONGE } from './iwaveGrid';
+import { IWAVE_KERNEL_BAND } from './verticalDerivativeKernel';
+
+/** The least phase g t²/(4r), rad, where stationary phase describes a stone's waves: 12 leaves out the first crest. */
+export const STATIONARY_PHASE_FROM = 12;
 
 /**
  * Where a dropped stone's crests must stand `age` seconds after it fell, on deep water: the
@@ -14,7 +20,7 @@ import { GRAVITY } from '../wake/kelvinWake';
  */
 export function crestRadii(age: number, options: { kMin: number; kMax: number; maxRadius: number; minPhase?: number; gravity?: number }): number[] {
   const g = options.gravity ?? GRAVITY;
-  const minPhase = options.minPhase ?? 12;
+  const minPhase = options.minPhase ?? STATIONARY_PHASE_FROM;
   if (!(age > 0)) return [];
   const radii: number[] = [];
   for (let n = 1; ; n++) {
@@ -29,4 +35,13 @@ export function crestRadii(age: number, options: { kMin: number; kMax: number; m
 /** The one ring of the plain wave equation ∂²h/∂t² = c²∇²h: its front has run c·t. */
 export function waveFrontRadius(age: number, speed: number): number {
   return age > 0 ? speed * age : 0;
+}
+
+/**
+ * What the guide rings are limited to: the band of wavenumbers the field carries (rad/m) and
+ * the radius inside its sponge (m), past which the field is being absorbed.
+ */
+export function stoneGuideReach(): { kMin: number; kMax: number; maxRadius: number } {
+  const [kMin, kMax] = IWAVE_KERNEL_BAND.map((k) => k / IWAVE_SPACING);
+  return { kMin, kMax, maxRadius: (0.5 * IWAVE_GRID_SIZE - IWAVE_SPONGE.width) * IWAVE_SPACING };
 }
