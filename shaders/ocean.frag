@@ -4,7 +4,8 @@
 //
 // Each optional feature is one #define, set by OceanMaterial (or by the wave model's chunk,
 // WAVE_…), so that a program holds only what its view draws. perf: a define rather than a
-// uniform branch, because a software rasterizer runs both sides of a branch
+// uniform branch keeps each program small to compile and light on registers on a GPU; on a
+// software rasterizer only, which runs both sides of a branch, it also saves the untaken side
 // (docs/shader-notes.md).
 
 // Tells a wave-model chunk it is compiled for the ocean's pixels (normals and foam only), where
@@ -142,7 +143,8 @@ vec3 sunGlint(vec3 n, vec3 v, float variance, float fresnel) {
 #include <oceano_fresnel_lookup>
 
 // The water's own colour from its optics (shaders/waterBody.glsl): the same at every point, so
-// worked out once a vertex, not once a pixel (perf: docs/light.md §6).
+// worked out once a vertex, not once a pixel (perf: vertices are far fewer than pixels on any
+// machine; docs/light-cost.md).
 #ifdef OCEAN_WATER_OPTICS
 flat varying vec3 vWaterBody;
 #endif

@@ -142,8 +142,8 @@ void main() {
 #endif
   // A model with WAVE_PIXEL_NORMALS has its normal evaluated per pixel by ocean.frag, which
   // then reads this one only on the comparison view's right half (OCEAN_NORMALS_COMPARE) or
-  // flat: it is left out of the program otherwise (perf: a define, not a uniform branch,
-  // docs/shader-notes.md).
+  // flat: it is left out of the program otherwise (perf: a define, not a uniform branch, so the
+  // program holds no unused code or registers; docs/shader-notes.md).
 #if defined(WAVE_PIXEL_NORMALS) && !defined(OCEAN_NORMALS_COMPARE)
   vNormal = vec3(0.0, 1.0, 0.0);
 #else

@@ -41,7 +41,8 @@ void main() {
   vec3 direction = normalize(nearWorld - uEye);
 
   // perf: PER_PIXEL_WATERLINE and GOD_RAYS are defines, not uniforms, so what a frame does
-  // not need is compiled out (docs/shader-notes.md).
+  // not need is compiled out: a smaller program on a GPU, and on a software rasterizer, which
+  // runs both sides of a branch, no untaken side (docs/shader-notes.md).
 #ifdef PER_PIXEL_WATERLINE
   if (startsInAir(scene.a, depthSample, nearWorld)) {
     gl_FragColor = uWriteMask ? vec4(0.0) : vec4(sceneColor(scene), 1.0);

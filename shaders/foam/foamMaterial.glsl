@@ -1,4 +1,4 @@
-// Foam that looks like foam (OCEAN_FOAM_TEXTURE; docs/light.md §5), for the whitecaps and the
+// Foam that looks like foam (OCEAN_FOAM_TEXTURE; docs/light-foam.md), for the whitecaps and the
 // boat's wake alike. `amount` in [0, 1] says how thick the foam is: thick foam is solid, thin
 // foam only the densest lace of the detail texture (shaders/foam/foamDetail.frag), so its
 // edges feather into bubbles as it thins. The texture is laid along the wind and stretched

@@ -111,8 +111,9 @@ vec4 fftCascadeSum(sampler2D cascade0, sampler2D cascade1, sampler2D cascade2, v
 #ifdef WAVE_FRAGMENT_STAGE
 // The ocean's pixels: every field a pixel needs is read once, at the top of ocean.frag's main
 // (wavePixelFields), outside any branch, and the normal and foam below only combine them.
-// perf: a "read only if not cached" branch would read the textures again on a software
-// rasterizer, which runs both sides of a branch (docs/shader-notes.md).
+// perf: one read of each field, with no branch around it, on any GPU; a "read only if not
+// cached" branch would read the textures again on a software rasterizer, which runs both
+// sides of a branch (docs/shader-notes.md).
 // Per cascade: the derivatives texture (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z) and the packed texture
 // (remembered foam, 0, ∂Dx/∂x) (shaders/fftFoam.frag): 6 reads per pixel.
 //

@@ -17,7 +17,8 @@ export interface ChunkGridData {
 /**
  * Chunks of at most this many vertices are drawn expanded (the grid repeated in one plain
  * draw) rather than instanced: a chunk this small costs little to write per vertex.
- * perf: a software rasterizer pays for each instance as for a draw of its own (docs/performance.md, "Software rasterizer").
+ * perf: on a GPU either way is cheap; a software rasterizer pays for each instance as for a draw
+ * of its own, so this is for it (docs/performance.md, "Software rasterizer").
  */
 export const EXPANDED_UP_TO_VERTICES = 100;
 

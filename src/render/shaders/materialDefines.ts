@@ -2,7 +2,9 @@ import type { Material } from 'three';
 
 /**
  * Compiles a #define in or out of a material: a case is compiled in rather than branched on
- * (perf: a software rasterizer runs both sides of a branch; docs/performance.md). Only a change marks the material for
+ * (perf: on a GPU the program is smaller to compile and holds no registers for the case left
+ * out; a software rasterizer, which runs both sides of a branch, also saves the untaken side:
+ * docs/performance.md). Only a change marks the material for
  * recompiling, and three.js keeps each compiled variant, so switching back and forth compiles
  * each once.
  */

@@ -18,7 +18,7 @@ import { setMaterialDefine } from '../shaders/materialDefines';
 import { prefilteredFaceSize, skyBlurLevel, slopeVarianceAtLevel } from '../../sim/optics/skyBlurLevel';
 import { createSkyCubeUniforms, setSkyCube, SQUARE_ROOT_SKY, type SkyCubeUniforms } from './skyCubeUniforms';
 
-/** The blur's mip level is rounded to a 64th of a level: finer than any picture shows (docs/light.md §6). */
+/** The blur's mip level is rounded to a 64th of a level: finer than any picture shows (docs/light-cost.md). */
 const LEVEL_STEPS = 64;
 
 const MIPMAP_FILTERS: readonly number[] = [NearestMipmapNearestFilter, NearestMipmapLinearFilter, LinearMipmapNearestFilter, LinearMipmapLinearFilter];
@@ -43,7 +43,7 @@ function skyHasMipmaps(sky: CubeTexture): boolean {
  * a mip level, the sky has changed, or the sun has moved (which repaints the sky); a sea whose
  * roughness varies from pixel to pixel blends two of the sky's levels itself (skyCubeColorRough).
  * perf: one cube read a pixel instead of two, about a tenth of the default view on a software
- * rasterizer (docs/light.md §6). Its code is fetched after the first frame (OceanMaterial), which
+ * rasterizer (docs/light-cost.md). Its code is fetched after the first frame (OceanMaterial), which
  * blends the two levels until it arrives: the same picture.
  */
 export class PrefilteredSky {

@@ -46,7 +46,7 @@ export function paintedSkyCube(sun: [number, number, number], size = 32): CubeTe
  * Mip levels for a sky made of images, as the painted sky has (sunSky.ts): a rough sea reads
  * the sky blurred from them (shaders/skyCube.glsl skyCubeColorRough), and without them it
  * would mirror every image sharply whatever the wind. Read one level at a time, as the painted
- * sky's (perf: SwiftShader's trilinear cube filter, docs/light.md).
+ * sky's (perf: for SwiftShader only, whose trilinear cube filter is slow; docs/light-sun-and-sky.md).
  */
 function withBlurLevels(cube: CubeTexture): void {
   cube.generateMipmaps = true;

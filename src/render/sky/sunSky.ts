@@ -43,7 +43,7 @@ export class SunSky {
   constructor(size = 512) {
     // 8 bits a channel holding the colour's square root (shaders/skyCube.glsl says why), with
     // mipmaps: a rough sea reflects the sky blurred (skyCubeColorRough, which blends two levels
-    // itself: perf, SwiftShader's trilinear cube filter cost the default view 15 %, docs/light.md).
+    // itself: perf, for SwiftShader only: its trilinear cube filter cost the default view 15 %, docs/light-sun-and-sky.md).
     this.target = new WebGLCubeRenderTarget(size, { type: UnsignedByteType, generateMipmaps: true, minFilter: LinearMipmapNearestFilter, magFilter: LinearFilter });
     this.target.texture.colorSpace = LinearSRGBColorSpace;
     this.target.texture.userData[SQUARE_ROOT_SKY] = true;

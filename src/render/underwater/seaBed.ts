@@ -63,7 +63,8 @@ export class SeaBed {
    * bound): a bed deeper than every trough is always under the water, so caustics.glsl's
    * test of whether a point is above the surface (one full evaluation of the displacement per
    * pixel) is compiled out (CAUSTICS_BELOW_WAVES).
-   * perf: a software rasterizer runs both sides of a branch (docs/performance.md, "Software rasterizer").
+   * perf: on a GPU the test would be a branch most pixels skip; the define matters for a software
+   * rasterizer, which runs both sides of a branch (docs/performance.md, "Software rasterizer").
    */
   setDepth(depth: number, waveReach: number): void {
     this.mesh.position.y = -depth;

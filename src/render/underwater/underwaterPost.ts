@@ -48,7 +48,9 @@ export type { PassTiming };
 /**
  * The shaft-light texture: repeating for one period of the lens, clamped for a window. One
  * 8-bit channel: the light is in [0, 1], and 8 bits hold it to within a level of the picture.
- * perf: the god rays read it many times a pixel, and R8 filters far faster than RGBA16F on a software rasterizer (docs/performance.md, "Software rasterizer").
+ * perf: the god rays read it many times a pixel; one 8-bit channel is a quarter of the memory
+ * traffic of RGBA16F on any GPU, and filters far faster on a software rasterizer
+ * (docs/performance.md, "Software rasterizer").
  */
 function shaftLightTarget(tile: ShaftLightTile): WebGLRenderTarget {
   const wrap = tile.kind === 'tile' ? RepeatWrapping : ClampToEdgeWrapping;

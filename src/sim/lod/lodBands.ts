@@ -70,7 +70,7 @@ export function bandTriangles(band: number): number {
  * whose short waves are steep enough to show the trochoid's cusp asks for it
  * (WaveModelView.finestVertexStep): with 2 m between vertices a 4 m crest is drawn from two
  * vertices, and the per-pixel normal's back slopes show on the coarse triangles as pale
- * shelves (docs/light.md, "Gerstner's terraces").
+ * shelves (docs/light-tiling-and-crests.md, "Gerstner's terraces").
  */
 export const MAX_REFINEMENT = 4;
 

@@ -7,7 +7,7 @@ import { windVector, type SeaState } from '../spectra/seaState';
 /**
  * What breaks the foam's repeat. Every FFT cascade repeats with its tile, and a cascade that
  * holds a third of the Jacobian's variance prints its period into the whitecaps: seen from
- * 400 m above, their pattern correlates with itself 0.12 one tile away (docs/light.md §7).
+ * 400 m above, their pattern correlates with itself 0.12 one tile away (docs/light-tiling-and-crests.md).
  * Whitecaps do not fall on a lattice: waves break in groups (Donelan, Longuet-Higgins &
  * Turner 1972, "Periodicity in whitecaps", Nature 239), which travel at the group velocity of
  * the dominant waves. So the breaking measure is shifted by a smooth random field that does not
