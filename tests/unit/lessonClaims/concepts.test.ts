@@ -5,14 +5,14 @@ import { paramDefs, type OceanParams } from '../../../src/sim/params/params';
 import { orbitSemiAxes, waveEnergy, SEA_WATER_DENSITY } from '../../../src/sim/waves/airyWave';
 import { GRAVITY, angularFrequency, groupVelocity } from '../../../src/sim/waves/dispersion';
 import { gerstnerWavesFor } from '../../../src/sim/waves/gerstner/gerstnerLiveModel';
-import { limitSteepness } from '../../../src/sim/waves/gerstner/gerstnerSpectrum';
+import { drawGerstnerWaves, limitSteepness } from '../../../src/sim/waves/gerstner/gerstnerSpectrum';
 import { crestRadii } from '../../../src/sim/iwave/cauchyPoissonRings';
 import { KELVIN_HALF_ANGLE } from '../../../src/sim/wake/kelvinGuide';
 import { seaStateFromParams } from '../../../src/sim/waves/spectra/seaState';
 import { frequencySpectrum, peakWavelength } from '../../../src/sim/waves/spectra/waveSpectrum';
 import { PHILLIPS_ALPHA, phillips, phillipsPeak } from '../../../src/sim/waves/spectra/phillips';
 import { PM_ALPHA, PM_BETA, windAt19_5 } from '../../../src/sim/waves/spectra/piersonMoskowitz';
-import { JONSWAP_GAMMA } from '../../../src/sim/waves/spectra/jonswap';
+import { JONSWAP_GAMMA, jonswapShape } from '../../../src/sim/waves/spectra/jonswap';
 import { fftOceanSetup } from '../../../src/sim/waves/fft/fftOcean';
 import { evolveSpectra } from '../../../src/sim/waves/fft/spectralFields';
 import { stockhamInverse, stockhamRadices, stockhamStage } from '../../../src/sim/waves/fft/stockhamFft';
@@ -95,10 +95,35 @@ describe('airy-waves: orbits shrink as e^{kz}, E = ½ ρ g a², and the view’s
     // Control: without the ½, E = ρ g a² would give about 800 J/m², not the card's 400.
     expect(agrees(400, SEA_WATER_DENSITY * GRAVITY * four[0].amplitude ** 2, 0.05)).toBe(false);
   });
+
+  it('the band the waves sample holds 98.9 % of the spectrum’s m₀ (control: a planted 99 % is not it)', () => {
+    const p = viewParams('airy-waves');
+    const sea = seaStateFromParams({ ...p, choppiness: 1, fftSize: '128' });
+    const draw = (energyBand?: [number, number]) =>
+      drawGerstnerWaves({ count: p.gerstnerCount, seed: p.seed, spectrum: frequencySpectrum(sea).density, spreading: () => 1, windDirection: 0, steepness: p.gerstnerSteepness, energyBand });
+    const share = 100 * (draw()[0].amplitude / draw([0, 1])[0].amplitude) ** 2;
+    // The band's amplitude is the live model's: these are the view's waves.
+    expect(draw()[0].amplitude).toBeCloseTo(gerstnerWavesFor(p)[0].amplitude, 12);
+    for (const lang of LANGS) {
+      expect(agrees(numberAfter(LESSON_TEXTS['airy-waves'].text[lang], '(?:of the band they sample,|de su banda \\()'), share, 5e-4), lang).toBe(true);
+    }
+    expect(agrees(99, share, 5e-4)).toBe(false);
+  });
 });
 
 describe('group-velocity: c_g = dω/dk is c/2 in deep water, and the rings and the wedge rest on it', () => {
   const phaseSpeed = (k: number, depth?: number) => angularFrequency(k, depth) / k;
+
+  it('the question’s Speed 0.25 is one of the time scale’s options (control: 0.3 is not)', () => {
+    const options = (paramDefs.timeScale as { options: readonly string[] }).options;
+    for (const lang of LANGS) {
+      const q = LESSON_TEXTS['group-velocity'].question!;
+      const speed = numberAfter(q.ask[lang], '\\) (?:to|en)');
+      expect(options).toContain(String(speed));
+      expect(numberAfter(q.answer[lang], '(?:Speed to|velocidad en)')).toBe(speed);
+    }
+    expect(options).not.toContain('0.3');
+  });
 
   it('the code’s group velocity is half the phase speed in deep water, and ½ c (1 + 2kh / sinh 2kh) at depth h', () => {
     for (const k of [0.01, 0.1, 1, 10]) expect(groupVelocity(k) / phaseSpeed(k)).toBeCloseTo(0.5, 12);
@@ -202,6 +227,13 @@ describe('spectra-compared: the three spectra’s Hs and peak wavelengths at the
     // Control: a planted β = 1 is not the code's.
     expect(1).not.toBe(PM_BETA);
   });
+
+  it('JONSWAP’s α is not Phillips’ 8.1·10⁻³: it comes from the fetch, ≈ 0.010 at 10 m/s over 100 km (control: Phillips’ α does not fit)', () => {
+    const p = viewParams('spectra-compared');
+    const { alpha } = jonswapShape(p.windSpeed, p.fetch * 1000);
+    for (const lang of LANGS) expect(agrees(numberAfter(text(lang), 'α ≈'), alpha, 0.05), lang).toBe(true);
+    expect(agrees(PHILLIPS_ALPHA, alpha, 0.05)).toBe(false);
+  });
 });
 
 describe('fft-transform: Hermitian amplitudes, log₂N butterfly stages, tiles', () => {
@@ -296,7 +328,7 @@ describe('fft-transform: Hermitian amplitudes, log₂N butterfly stages, tiles',
     expect(TILE_RATIOS).not.toContain(4.5);
   });
 
-  it('the seed moves the crests, not the height: Hs = 4√(Σ|h̃|²) from 2.15 m at seed 1 to 2.25 m at seed 2, near the spectrum’s 2.2 m', () => {
+  it('the seed moves the crests, not the height: Hs = 4√(Σ|h̃|²) from 2.15 m at seed 1 to 2.25 m at seed 2; the panel’s 4√m₀ prints 2.25 m whatever the seed', () => {
     const drawnHs = (seed: number) => {
       let variance = 0;
       for (const tile of fftOceanSetup({ ...sea, seed }).tiles) {
@@ -311,8 +343,11 @@ describe('fft-transform: Hermitian amplitudes, log₂N butterfly stages, tiles',
       const [one, two, spectrumHs] = [...answer.matchAll(/([0-9]+[.,][0-9]+) m\b/g)].map((m) => Number(m[1].replace(',', '.')));
       expect(agrees(one, drawnHs(1), 0.005)).toBe(true);
       expect(agrees(two, drawnHs(2), 0.005)).toBe(true);
-      expect(agrees(spectrumHs, 4 * Math.sqrt(frequencySpectrum(sea).m0), 0.03)).toBe(true);
+      // The physics panel prints 4√m₀ with two decimals.
+      expect(spectrumHs.toFixed(2)).toBe((4 * Math.sqrt(frequencySpectrum(sea).m0)).toFixed(2));
     }
+    // Control: 2.24, 4√m₀ cut rather than rounded, is not what the panel prints.
+    expect((2.24).toFixed(2)).not.toBe((4 * Math.sqrt(frequencySpectrum(sea).m0)).toFixed(2));
     // Control: the two seeds' seas do differ, crest by crest.
     const [a, b] = [fftOceanSetup({ ...sea, seed: 1 }).tiles[0].h0, fftOceanSetup({ ...sea, seed: 2 }).tiles[0].h0];
     expect(a.some((v, i) => Math.abs(v - b[i]) > 1e-6)).toBe(true);
