@@ -88,7 +88,7 @@ describe('sampleSurfaces: many points, each what sampleSurface answers', () => {
 
   it('seed and Gerstner seas, which have no batch of their own: one sample per point, equal (seed 43)', () => {
     const points = randomPoints(43, 100);
-    const models: LiveWaveModel[] = [new SeedWaveModel(defaultParams()) as unknown as LiveWaveModel, new GerstnerLiveModel({ ...defaultParams(), waves: 'gerstner' })];
+    const models: LiveWaveModel[] = [new SeedWaveModel(defaultParams()) as unknown as LiveWaveModel, new GerstnerLiveModel(defaultParams())];
     for (const model of models) {
       expect(model.sampleMany).toBeUndefined();
       const batch = sampleSurfaces(model, points, 4, new Float64Array(400));

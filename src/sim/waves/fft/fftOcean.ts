@@ -58,6 +58,7 @@ export class FftOcean implements WaveModel {
   /** Texels per metre of each cascade. */
   private readonly scale: number[];
   private readonly acc = new Float64Array(4);
+  private readonly acc6 = new Float64Array(6);
   private sumX = 0;
   private sumZ = 0;
 
@@ -177,12 +178,10 @@ export class FftOcean implements WaveModel {
     this.invertInPlace(x, z, steps, tolerance);
     const px = this.sumX;
     const pz = this.sumZ;
-    const d = this.accumulate(px, pz, 'displacement', 1, 2);
-    const height = d[1];
-    const jxx = d[3];
-    const r = this.accumulate(px, pz, 'derivatives');
+    const r = this.surfaceSums(px, pz);
+    const height = r[4];
     // normalAt's arithmetic, term for term.
-    const tx0 = 1 + jxx;
+    const tx0 = 1 + r[5];
     const tx1 = r[0];
     const tx2 = r[3];
     const tz0 = r[3];
@@ -191,11 +190,43 @@ export class FftOcean implements WaveModel {
     const nx = tz1 * tx2 - tz2 * tx1;
     const ny = tz2 * tx0 - tz0 * tx2;
     const nz = tz0 * tx1 - tz1 * tx0;
-    const len = Math.hypot(nx, ny, nz);
+    const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
     out[at] = height;
     out[at + 1] = nx / len;
     out[at + 2] = ny / len;
     out[at + 3] = nz / len;
+  }
+
+  /**
+   * At the grid point (x, z), summed over the cascades in accumulate's arithmetic and order: the
+   * four derivative channels, then the height and ∂Dx/∂x, into acc6[0..5]. Both fields are read
+   * with one set of texel indices and weights.
+   */
+  private surfaceSums(x: number, z: number): Float64Array {
+    const r = this.acc6;
+    r.fill(0);
+    const n = this.setup.sea.fftSize;
+    for (let c = 0; c < this.fields.length; c++) {
+      const { displacement, derivatives } = this.fields[c];
+      const u = x * this.scale[c];
+      const v = z * this.scale[c];
+      const fu = Math.floor(u);
+      const fv = Math.floor(v);
+      const wx = u - fu;
+      const wz = v - fv;
+      const p0 = wrapTexel(fu, n);
+      const q0 = wrapTexel(fv, n);
+      const p1 = p0 + 1 === n ? 0 : p0 + 1;
+      const q1 = q0 + 1 === n ? 0 : q0 + 1;
+      const i00 = 4 * (q0 * n + p0);
+      const i10 = 4 * (q0 * n + p1);
+      const i01 = 4 * (q1 * n + p0);
+      const i11 = 4 * (q1 * n + p1);
+      for (let ch = 0; ch < 4; ch++) r[ch] += bilinear(derivatives, i00 + ch, i10 + ch, i01 + ch, i11 + ch, wx, wz);
+      r[4] += bilinear(displacement, i00 + 1, i10 + 1, i01 + 1, i11 + 1, wx, wz);
+      r[5] += bilinear(displacement, i00 + 3, i10 + 3, i01 + 3, i11 + 3, wx, wz);
+    }
+    return r;
   }
 
   /** The displacement's x and z summed over the cascades into sumX and sumZ: accumulate's arithmetic in the same order, in locals. */
@@ -274,7 +305,8 @@ export class FftOcean implements WaveModel {
     const nx = tz[1] * tx[2] - tz[2] * tx[1];
     const ny = tz[2] * tx[0] - tz[0] * tx[2];
     const nz = tz[0] * tx[1] - tz[1] * tx[0];
-    const len = Math.hypot(nx, ny, nz);
+    // Not Math.hypot: its overflow guard costs more than the rest of the normal, and no sum of three squares of these tangents' terms comes near it.
+    const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
     return [nx / len, ny / len, nz / len];
   }
 
@@ -293,6 +325,13 @@ export class FftOcean implements WaveModel {
   bounds(): DisplacementBounds {
     return this.bound;
   }
+}
+
+/** A bilinear read of one channel at its four texels' indices: accumulate's arithmetic. */
+function bilinear(f: Float64Array, i00: number, i10: number, i01: number, i11: number, wx: number, wz: number): number {
+  const top = f[i00] + (f[i10] - f[i00]) * wx;
+  const bottom = f[i01] + (f[i11] - f[i01]) * wx;
+  return top + (bottom - top) * wz;
 }
 
 /**
