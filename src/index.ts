@@ -7,4 +7,5 @@ export { OceanUnderwater, type OceanUnderwaterOptions } from './render/underwate
 export type { EncodedScene } from './render/underwater/underwaterPost';
 export { defaultParams, paramDefs, validateParams, type OceanParams, type ParamKey } from './sim/params/params';
 export type { SurfaceSample, LiveWaveModel, WavesChoice } from './sim/waves/waveModel';
+export type { SurfacePoints, SurfaceSamples } from './sim/waves/surfaceBatch';
 export type { Submersion } from './sim/underwater/snellWindow';

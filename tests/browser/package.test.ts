@@ -18,6 +18,8 @@ import { serveFolder } from './staticServer';
 
 const ROOT = join(import.meta.dirname, '..', '..');
 const EXAMPLE = join(ROOT, 'examples', 'threejs-scene.html');
+const BUOYS = join(ROOT, 'examples', 'buoys.html');
+const SHOTS = process.env.BUOYS_SHOT ?? '';
 const CONSUMER = join(ROOT, 'tests', 'browser', 'fixtures', 'package-consumer');
 const TSC = join(ROOT, 'node_modules', 'typescript', 'bin', 'tsc');
 const NPM = process.platform === 'win32' ? 'npm.cmd' : 'npm';
@@ -246,6 +248,57 @@ describe('the npm package', () => {
     it('control: the sky alone, its sea-coloured lower half without waves, is not taken for sea and sky', async () => {
       const seen = await look(without('scene.add(ocean);'));
       expect(seen.faults).toEqual([expect.stringMatching(/^no waves/)]);
+    });
+  });
+
+  describe('examples/buoys.html, served as files', () => {
+    const page = readFileSync(BUOYS, 'utf8');
+    const FOLLOW = 'buoy.position.y = samples[4 * i];';
+
+    /** The page's buoys after 12 frames: how many float off their own sample of the sea, how many sit low, and the picture's faults. */
+    async function float(html: string): Promise<{ errors: string[]; faults: string[]; count: number; offSample: number; spread: number }> {
+      writeFileSync(join(site, 'buoys.html'), html);
+      const { server, url } = await serveFolder(site, '/courses/graphics/week-3/');
+      const tab = await browser.newPage();
+      try {
+        tab.setDefaultTimeout(120_000);
+        const errors: string[] = [];
+        tab.on('pageerror', (error) => errors.push(String(error)));
+        await tab.setViewport({ width: 480, height: 270, deviceScaleFactor: 1 });
+        await tab.goto(`${url}buoys.html`, { waitUntil: 'load' });
+        await tab.waitForFunction(() => (window as unknown as { buoys?: unknown }).buoys);
+        await tab.waitForFunction(() => (window as unknown as { buoys: { ocean: { time: number } } }).buoys.ocean.time > 0.5);
+        const png = PNG.sync.read(Buffer.from(await tab.screenshot({ type: 'png' })));
+        if (SHOTS && html === page) writeFileSync(SHOTS, PNG.sync.write(png));
+        // Between two frames: each buoy's y against sampleSurface under it at the frame's time, as the Float32Array stores it.
+        const seen = await tab.evaluate(() => {
+          type Sample = { height: number };
+          const { ocean, buoys } = (window as unknown as { buoys: { ocean: { sampleSurface(x: number, z: number): Sample }; buoys: { position: { x: number; y: number; z: number } }[] } }).buoys;
+          const heights = buoys.map((b) => Math.fround(ocean.sampleSurface(Math.fround(b.position.x), Math.fround(b.position.z)).height));
+          const ys = buoys.map((b) => b.position.y);
+          return { count: buoys.length, offSample: ys.filter((y, i) => y !== heights[i]).length, spread: Math.max(...ys) - Math.min(...ys) };
+        });
+        return { errors, faults: seaAndSkyFaults(png), ...seen };
+      } finally {
+        await tab.close();
+        server.close();
+      }
+    }
+
+    it('floats 200 buoys, each at the height of its own sample of the FFT sea, under the sky', async () => {
+      expect(page.split('\n').length).toBeLessThanOrEqual(80);
+      const seen = await float(page);
+      expect(seen.errors).toEqual([]);
+      expect(seen.faults).toEqual([]);
+      expect(seen).toMatchObject({ count: 200, offSample: 0 });
+      // They ride the waves: not one plane of buoys.
+      expect(seen.spread).toBeGreaterThan(0.2);
+    });
+
+    it('control: buoys that do not follow their samples are seen off the sea', async () => {
+      expect(page).toContain(FOLLOW);
+      const seen = await float(page.replace(FOLLOW, ''));
+      expect(seen.offSample).toBeGreaterThan(150);
     });
   });
 

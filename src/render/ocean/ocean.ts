@@ -33,6 +33,7 @@ import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 import { createFoamUniforms, setFoamWind } from '../foam/foamUniforms';
 import type { FoamDetail } from '../foam/foamDetail';
+import { checkSurfaceBatch, sampleSurfaces, type SurfacePoints, type SurfaceSamples } from '../../sim/waves/surfaceBatch';
 
 export interface OceanOptions {
   /** A cube map of your own for the sea to reflect; by default the sky is painted from the sun parameters. */
@@ -418,6 +419,16 @@ export class Ocean extends Object3D {
    */
   sampleSurface(x: number, z: number, time = this.frameTime): SurfaceSample {
     return this.withInteractiveWaves(this.waveView.model.sample(x, z, time), x, z);
+  }
+
+  /**
+   * sampleSurface for many points: `points` holds world x, z pairs (metres), `out` receives per
+   * point [height (metres), nx, ny, nz], each equal to sampleSurface's (as float32 in a
+   * Float32Array). A new Float32Array unless you pass one to reuse; bad input throws a TypeError.
+   */
+  sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
+    const into = checkSurfaceBatch(points, out);
+    return sampleSurfaces(this.waveView.model, points, time, into, this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null);
   }
 
   /** The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */

@@ -43,21 +43,28 @@ export const INVERSION_STEPS = 4;
 /**
  * The grid point whose displaced position lands above the world point (x, z): solve
  * p + D(p) = q for p by the fixed-point iteration p ← q − D(p), which converges while the
- * horizontal displacement's Jacobian has norm below 1 (crests that do not loop). Returns the
- * grid point [px, pz] and the residual distance |p + D(p) − q| in metres.
+ * horizontal displacement's Jacobian has norm below 1 (crests that do not loop). At most
+ * `steps` steps; it stops sooner once a step moves p by `tolerance` metres or less in x and
+ * in z (0: only when p stops moving, which changes nothing). Returns the grid point [px, pz]
+ * and the residual distance |p + D(p) − q| in metres.
  */
 export function undoHorizontalDisplacement(
   displacement: (x: number, z: number) => [number, number, number],
   x: number,
   z: number,
   steps = INVERSION_STEPS,
+  tolerance = 0,
 ): { x: number; z: number; residual: number } {
   let px = x;
   let pz = z;
   for (let i = 0; i < steps; i++) {
     const d = displacement(px, pz);
-    px = x - d[0];
-    pz = z - d[2];
+    const nx = x - d[0];
+    const nz = z - d[2];
+    const settled = Math.abs(nx - px) <= tolerance && Math.abs(nz - pz) <= tolerance;
+    px = nx;
+    pz = nz;
+    if (settled) break;
   }
   const d = displacement(px, pz);
   return { x: px, z: pz, residual: Math.hypot(px + d[0] - x, pz + d[2] - z) };
@@ -96,6 +103,12 @@ export interface LiveWaveModel extends WaveModel {
    * beyond it is the glint's roughness (src/sim/optics/resolvedSlopes.ts).
    */
   slopeVariance(time: number): number;
+  /**
+   * sample() for many points at one time, where the model has a faster way than one call per
+   * point: points[2i], points[2i + 1] are world x, z (m); out[4i..4i+3] gets [height, nx, ny, nz],
+   * each exactly what sample() answers (src/sim/waves/surfaceBatch.ts).
+   */
+  sampleMany?(points: ArrayLike<number>, time: number, out: { [i: number]: number }): void;
   /** Heightmaps the "heightmap" teaching view shows and the API returns, where the model has any. */
   readonly heightmaps?: readonly Heightmap[];
 }

@@ -58,6 +58,9 @@ export class FftOcean implements WaveModel {
   /** Texels per metre of each cascade. */
   private readonly scale: number[];
   private readonly acc = new Float64Array(4);
+  private readonly acc6 = new Float64Array(6);
+  private sumX = 0;
+  private sumZ = 0;
 
   constructor(sea: SeaState) {
     this.setup = fftOceanSetup(sea);
@@ -131,23 +134,131 @@ export class FftOcean implements WaveModel {
 
   /**
    * The height of the surface above the world point (x, z) at `time`: the same fixed-point
-   * inversion as undoHorizontalDisplacement over displacement() with `steps` steps, then the
-   * height there, bit for bit (each channel's sum is the same arithmetic in the same order).
+   * inversion as undoHorizontalDisplacement over displacement() with `steps` steps at most
+   * (fewer once a step moves p by `tolerance` metres or less), then the height there, bit for bit (each channel's sum is the same arithmetic in the same order).
    * But it reads only the channels each step uses (x and z while inverting, the height at the
    * end), allocates nothing, and skips the residual: the frame loop asks this about ten
    * times a frame (the boat, the underwater switch), and the full reads were half its cost.
    */
-  heightAt(x: number, z: number, time: number, steps: number): number {
+  heightAt(x: number, z: number, time: number, steps: number, tolerance = 0): number {
     this.setTime(time);
-    const acc = this.acc;
+    this.invertInPlace(x, z, steps, tolerance);
+    return this.accumulate(this.sumX, this.sumZ, 'displacement', 1, 4)[1];
+  }
+
+  /**
+   * undoHorizontalDisplacement's fixed point p ← q − D(p) for q = (x, z), step for step and
+   * stopping by the same rule, leaving p in sumX, sumZ (the fields of the current time).
+   */
+  private invertInPlace(x: number, z: number, steps: number, tolerance: number): void {
     let px = x;
     let pz = z;
     for (let i = 0; i < steps; i++) {
-      this.accumulate(px, pz, 'displacement', 0, 2);
-      px = x - acc[0];
-      pz = z - acc[2];
+      this.horizontalSums(px, pz);
+      const nx = x - this.sumX;
+      const nz = z - this.sumZ;
+      const settled = Math.abs(nx - px) <= tolerance && Math.abs(nz - pz) <= tolerance;
+      px = nx;
+      pz = nz;
+      if (settled) break;
     }
-    return this.accumulate(px, pz, 'displacement', 1, 4)[1];
+    this.sumX = px;
+    this.sumZ = pz;
+  }
+
+  /**
+   * Height and normal above the world point (x, z) at `time`, written to out[at..at+3] as
+   * [height, nx, ny, nz]: what undoHorizontalDisplacement with `steps` and `tolerance`,
+   * displacement() and normalAt() give, bit for bit, but with nothing allocated and only the channels each
+   * read uses (the fixed-point steps read x and z alone, summed in locals). Many floating
+   * bodies ask this every frame: sampleSurfaces answers a thousand points with it.
+   */
+  sampleInto(x: number, z: number, time: number, steps: number, tolerance: number, out: { [i: number]: number }, at: number): void {
+    this.setTime(time);
+    this.invertInPlace(x, z, steps, tolerance);
+    const px = this.sumX;
+    const pz = this.sumZ;
+    const r = this.surfaceSums(px, pz);
+    const height = r[4];
+    // normalAt's arithmetic, term for term.
+    const tx0 = 1 + r[5];
+    const tx1 = r[0];
+    const tx2 = r[3];
+    const tz0 = r[3];
+    const tz1 = r[1];
+    const tz2 = 1 + r[2];
+    const nx = tz1 * tx2 - tz2 * tx1;
+    const ny = tz2 * tx0 - tz0 * tx2;
+    const nz = tz0 * tx1 - tz1 * tx0;
+    const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+    out[at] = height;
+    out[at + 1] = nx / len;
+    out[at + 2] = ny / len;
+    out[at + 3] = nz / len;
+  }
+
+  /**
+   * At the grid point (x, z), summed over the cascades in accumulate's arithmetic and order: the
+   * four derivative channels, then the height and ∂Dx/∂x, into acc6[0..5]. Both fields are read
+   * with one set of texel indices and weights.
+   */
+  private surfaceSums(x: number, z: number): Float64Array {
+    const r = this.acc6;
+    r.fill(0);
+    const n = this.setup.sea.fftSize;
+    for (let c = 0; c < this.fields.length; c++) {
+      const { displacement, derivatives } = this.fields[c];
+      const u = x * this.scale[c];
+      const v = z * this.scale[c];
+      const fu = Math.floor(u);
+      const fv = Math.floor(v);
+      const wx = u - fu;
+      const wz = v - fv;
+      const p0 = wrapTexel(fu, n);
+      const q0 = wrapTexel(fv, n);
+      const p1 = p0 + 1 === n ? 0 : p0 + 1;
+      const q1 = q0 + 1 === n ? 0 : q0 + 1;
+      const i00 = 4 * (q0 * n + p0);
+      const i10 = 4 * (q0 * n + p1);
+      const i01 = 4 * (q1 * n + p0);
+      const i11 = 4 * (q1 * n + p1);
+      for (let ch = 0; ch < 4; ch++) r[ch] += bilinear(derivatives, i00 + ch, i10 + ch, i01 + ch, i11 + ch, wx, wz);
+      r[4] += bilinear(displacement, i00 + 1, i10 + 1, i01 + 1, i11 + 1, wx, wz);
+      r[5] += bilinear(displacement, i00 + 3, i10 + 3, i01 + 3, i11 + 3, wx, wz);
+    }
+    return r;
+  }
+
+  /** The displacement's x and z summed over the cascades into sumX and sumZ: accumulate's arithmetic in the same order, in locals. */
+  private horizontalSums(x: number, z: number): void {
+    const n = this.setup.sea.fftSize;
+    let sx = 0;
+    let sz = 0;
+    for (let c = 0; c < this.fields.length; c++) {
+      const f = this.fields[c].displacement;
+      const u = x * this.scale[c];
+      const v = z * this.scale[c];
+      const fu = Math.floor(u);
+      const fv = Math.floor(v);
+      const wx = u - fu;
+      const wz = v - fv;
+      const p0 = wrapTexel(fu, n);
+      const q0 = wrapTexel(fv, n);
+      const p1 = p0 + 1 === n ? 0 : p0 + 1;
+      const q1 = q0 + 1 === n ? 0 : q0 + 1;
+      const i00 = 4 * (q0 * n + p0);
+      const i10 = 4 * (q0 * n + p1);
+      const i01 = 4 * (q1 * n + p0);
+      const i11 = 4 * (q1 * n + p1);
+      const topX = f[i00] + (f[i10] - f[i00]) * wx;
+      const bottomX = f[i01] + (f[i11] - f[i01]) * wx;
+      sx += topX + (bottomX - topX) * wz;
+      const topZ = f[i00 + 2] + (f[i10 + 2] - f[i00 + 2]) * wx;
+      const bottomZ = f[i01 + 2] + (f[i11 + 2] - f[i01 + 2]) * wx;
+      sz += topZ + (bottomZ - topZ) * wz;
+    }
+    this.sumX = sx;
+    this.sumZ = sz;
   }
 
   /**
@@ -194,7 +305,8 @@ export class FftOcean implements WaveModel {
     const nx = tz[1] * tx[2] - tz[2] * tx[1];
     const ny = tz[2] * tx[0] - tz[0] * tx[2];
     const nz = tz[0] * tx[1] - tz[1] * tx[0];
-    const len = Math.hypot(nx, ny, nz);
+    // Not Math.hypot: its overflow guard costs more than the rest of the normal, and no sum of three squares of these tangents' terms comes near it.
+    const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
     return [nx / len, ny / len, nz / len];
   }
 
@@ -213,6 +325,13 @@ export class FftOcean implements WaveModel {
   bounds(): DisplacementBounds {
     return this.bound;
   }
+}
+
+/** A bilinear read of one channel at its four texels' indices: accumulate's arithmetic. */
+function bilinear(f: Float64Array, i00: number, i10: number, i01: number, i11: number, wx: number, wz: number): number {
+  const top = f[i00] + (f[i10] - f[i00]) * wx;
+  const bottom = f[i01] + (f[i11] - f[i01]) * wx;
+  return top + (bottom - top) * wz;
 }
 
 /**

@@ -8,6 +8,14 @@ import { cascadeSpread } from '../spectra/spectralBounds';
 
 /** Fixed-point steps of the inversion (FftWaveModel.invert); see there for the measured errors. */
 export const INVERSION_STEPS = 12;
+/**
+ * The inversion stops before INVERSION_STEPS once a step moves the grid point by this much or
+ * less (metres): most points of a calm sea settle in 5 to 7 steps. The worst height error over
+ * 3000 random points (seed 7, against 30 steps) is the same as with 12 steps every time:
+ * 3.3e-7 m at U = 10, 2.0e-5 m at U = 20, λ = 1.2; the mean step count falls from 12 to 6.8
+ * and 8.1 (fftSize 128).
+ */
+export const INVERSION_TOLERANCE = 1e-6;
 
 /** The parameters the spectral sea reads; everything else leaves it unchanged. */
 export type FftWaveParams = Pick<
@@ -186,10 +194,10 @@ export class FftWaveModel implements LiveWaveModel {
    * scripts of this commit): U = 10, λ = 1: 4 steps 1.7 mm, 8 steps 2e-5 m, 12 steps 4e-7 m;
    * U = 20, λ = 1.2: 4 steps 2.1 cm, 8 steps 0.6 mm, 12 steps 1.8e-5 m. (Newton's method with
    * the spectral Jacobian did worse, 1.4 cm in 3 steps: the bilinear fields' slopes are not
-   * the spectral ones.)
+   * the spectral ones.) A point that settles sooner stops there (INVERSION_TOLERANCE).
    */
   invert(x: number, z: number, at: number): { x: number; z: number; height: number; residual: number } {
-    const p = undoHorizontalDisplacement((px, pz) => this.ocean.displacement(px, pz, at), x, z, INVERSION_STEPS);
+    const p = undoHorizontalDisplacement((px, pz) => this.ocean.displacement(px, pz, at), x, z, INVERSION_STEPS, INVERSION_TOLERANCE);
     return { x: p.x, z: p.z, height: this.ocean.displacement(p.x, p.z, at)[1], residual: p.residual };
   }
 
@@ -197,19 +205,33 @@ export class FftWaveModel implements LiveWaveModel {
   height(x: number, z: number, time: number): number {
     const start = this.now();
     // invert(…).height, bit for bit, reading only the channels it uses (FftOcean.heightAt).
-    const h = this.ocean.heightAt(x, z, this.fieldsFor(time, false), INVERSION_STEPS);
+    const h = this.ocean.heightAt(x, z, this.fieldsFor(time, false), INVERSION_STEPS, INVERSION_TOLERANCE);
     this.busyMs += this.now() - start;
     return h;
   }
 
   sample(x: number, z: number, time: number): SurfaceSample {
     const start = this.now();
-    const at = this.fieldsFor(time, true);
-    const p = this.invert(x, z, at);
-    const s = { height: p.height, normal: this.ocean.normalAt(p.x, p.z, at) };
+    const s = this.sampleScratch;
+    this.ocean.sampleInto(x, z, this.fieldsFor(time, true), INVERSION_STEPS, INVERSION_TOLERANCE, s, 0);
     this.busyMs += this.now() - start;
-    return s;
+    return { height: s[0], normal: [s[1], s[2], s[3]] };
   }
+
+  /**
+   * sample() for many points at once (sampleSurfaces): points[2i], points[2i + 1] are world
+   * x, z (metres); out[4i..4i+3] receives the height (metres) and the unit normal, each equal
+   * to sample()'s. One time for all, so the fields are looked up once.
+   */
+  sampleMany(points: ArrayLike<number>, time: number, out: { [i: number]: number }): void {
+    const start = this.now();
+    const at = this.fieldsFor(time, true);
+    const count = points.length >> 1;
+    for (let i = 0; i < count; i++) this.ocean.sampleInto(points[2 * i], points[2 * i + 1], at, INVERSION_STEPS, INVERSION_TOLERANCE, out, 4 * i);
+    this.busyMs += this.now() - start;
+  }
+
+  private readonly sampleScratch = new Float64Array(4);
 
   /** The sea the slope variance was summed for, and the sum. */
   private slopes: { ocean: FftOcean; variance: number } | null = null;
