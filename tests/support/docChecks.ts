@@ -87,3 +87,20 @@ export function statedCounts(text: string, noun: string): number[] {
 export function readRepoFile(path: string, root = REPO_ROOT): string {
   return readFileSync(join(root, path), 'utf8');
 }
+
+// A commit hash as git abbreviates it: 7 to 40 hex digits, with at least one digit and one
+// letter, so that plain numbers ("2147483647") and hex-letter words ("decade") are not taken.
+const COMMIT_HASH = /\b(?=[0-9a-f]*[0-9])(?=[0-9a-f]*[a-f])[0-9a-f]{7,40}\b/g;
+// A calendar date, as 2026-11-27 or as 27 Nov 2026.
+const DATE = /\b\d{4}-\d{2}-\d{2}\b|\b\d{1,2} (?:Jan|Feb|Mar|Apr|May|Jun|Jul|Aug|Sep|Oct|Nov|Dec)[a-z]* \d{4}\b/g;
+
+/**
+ * The history a doc carries in its prose, as "doc: mark": commit hashes other than the
+ * `allowedHashes` (a baseline a budget is defined against) and calendar dates. Git keeps the
+ * history; a doc says what the code does now.
+ */
+export function historyMarks(text: string, docPath: string, allowedHashes: readonly string[]): string[] {
+  const hashes = [...text.matchAll(COMMIT_HASH)].map((match) => match[0]).filter((hash) => !allowedHashes.includes(hash));
+  const dates = [...text.matchAll(DATE)].map((match) => match[0]);
+  return [...hashes, ...dates].map((mark) => `${docPath}: ${mark}`);
+}
