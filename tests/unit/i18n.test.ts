@@ -1,7 +1,9 @@
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { paramKeys } from '../../src/sim/params/params';
 import { message, MESSAGE_IDS, type MessageId } from '../../src/sim/params/message';
 import { preferredLanguage, Translator } from '../../src/app/language/i18n';
+// The boat's loader brings the texts of the notices only it raises.
+import '../../src/app/boot/boatLoad';
 import { paramLabel, SPANISH_PARAM_LABELS } from '../../src/app/language/paramLabels';
 import { parseUrlState } from '../../src/app/url/urlState';
 
@@ -53,5 +55,16 @@ describe('language', () => {
       if (english) expect(en, id).toContain(english);
     }
     expect(MESSAGE_IDS.length).toBe(38);
+  });
+
+  it('leaves the boat loader\'s notices to its own chunk: without it their text is missing and says so', async () => {
+    vi.resetModules();
+    const fresh = await import('../../src/app/language/i18n');
+    const notFound = message('boatNotFound', { url: 'm/b.glb', status: 404 });
+    expect(() => new fresh.Translator('en').message(notFound)).toThrow(/boatNotFound.*has not loaded/);
+    // The notice the page gives when that chunk itself cannot be fetched is in the first script.
+    expect(new fresh.Translator('es').message(message('boatLoadFailed', { reason: 'R' }))).toMatch(/No se pudo cargar el barco/);
+    await import('../../src/app/boot/boatLoad');
+    expect(new fresh.Translator('en').message(notFound)).toBe('The boat model "m/b.glb" was not found (HTTP 404). The ocean runs without the boat.');
   });
 });

@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { message, MESSAGE_IDS, MessageError, messageOf } from '../../src/sim/params/message';
 import { Translator } from '../../src/app/language/i18n';
+// The boat's loader brings the texts of the notices only it raises.
+import '../../src/app/boot/boatLoad';
 
 /** Values as the app passes them: paths, numbers and an English inner error, which Spanish must not repeat. */
 const VALUES = {

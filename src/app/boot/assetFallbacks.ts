@@ -1,6 +1,6 @@
 import type { CubeTexture } from 'three';
 import { message, messageOf, type Message } from '../../sim/params/message';
-import { loadBoatModel, type BoatModel } from '../../render/boat/boatModel';
+import type { BoatModel } from '../../render/boat/boatModel';
 import { loadSkyCube } from '../../render/sky/skyCube';
 import type { LoadingProgress } from './loadingProgress';
 
@@ -25,6 +25,12 @@ export async function loadCustomSky(base: string, custom: string | null, notify:
 export async function loadBoatOrNotify(url: string, notify: (m: Message) => void, loading: LoadingProgress): Promise<BoatModel | null> {
   loading.begin('boat');
   try {
+    // The loader's code, with the texts of its own notices, is fetched only now (boatLoad.ts).
+    const { loadBoatModel } = await import('./boatLoad').catch((error: unknown) => {
+      // The notice (boatLoadFailed) leaves the technical detail to the console, as loadBoatModel does.
+      console.warn('Oceano: the boat loader could not be downloaded:', error);
+      throw error;
+    });
     return await loadBoatModel(url);
   } catch (error) {
     notify(messageOf(error, 'boatLoadFailed'));

@@ -23,12 +23,18 @@ export function preferredLanguage(browserLanguages: readonly string[]): Language
   return 'en';
 }
 
-type Render = (v: MessageValues) => string;
+export type Render = (v: MessageValues) => string;
 /** Inner text ended with exactly one full stop, so "…404)." never becomes "…404).)" or "..". */
 const sentence = (text: string | number | boolean | undefined) => `${String(text ?? '').trim().replace(/[.\s]+$/, '')}.`;
 const unit = (v: MessageValues) => (v.unit ? ` ${v.unit}` : '');
 
-const MESSAGES: Record<Language, Record<MessageId, Render>> = {
+/**
+ * Notices that only a part fetched on use can raise: their texts travel in that part and are
+ * added here when it loads (registerNoticeTexts), so the page's first script does not carry them.
+ */
+export type LateNoticeId = 'boatUnreachable' | 'boatNotFound' | 'boatWebPage' | 'boatNotGltf' | 'boatNoGeometry';
+
+const MESSAGES: Record<Language, Record<Exclude<MessageId, LateNoticeId>, Render> & Partial<Record<LateNoticeId, Render>>> = {
   en: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" is not true/false; using ${v.fallback}.`,
     paramNotColour: (v) => `"${v.key}=${v.text}" is not a colour like 0a2e45; using ${v.fallback}.`,
@@ -53,11 +59,6 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     startFailed: (v) => `Oceano could not start: ${sentence(v.error)}`,
     boatPathInvalid: (v) => `"boat=${v.text}" is not a path on this site; using the built-in boat.`,
     boatLoadFailed: (v) => `The boat could not be loaded: ${sentence(v.reason)} The ocean runs without the boat.`,
-    boatUnreachable: (v) => `The boat model "${v.url}" could not be fetched. The ocean runs without the boat.`,
-    boatNotFound: (v) => `The boat model "${v.url}" was not found (HTTP ${v.status}). The ocean runs without the boat.`,
-    boatWebPage: (v) => `The boat model "${v.url}" is missing: the server sent a web page in its place. The ocean runs without the boat.`,
-    boatNotGltf: (v) => `The boat model "${v.url}" is not a valid glTF model: neither a binary .glb nor a JSON .gltf file that three.js can read. The ocean runs without the boat.`,
-    boatNoGeometry: (v) => `The boat model "${v.url}" has no geometry to float. The ocean runs without the boat.`,
     boatStateInvalid: (v) => `"boatState=${v.text}" is not ten finite numbers within the boat's area; the boat starts afresh.`,
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" is not a recorded track; the wake is replayed from the boat's present course.`,
     modelLoadFailed: (v) => `The code of the "${v.name}" waves could not be downloaded; still showing "${v.fallback}". Choose it again later, or reload the page.`,
@@ -94,11 +95,6 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
     startFailed: () => 'Oceano no pudo arrancar; el detalle técnico está en la consola del navegador.',
     boatPathInvalid: (v) => `"boat=${v.text}" no es una ruta de este sitio; se usa el barco incluido.`,
     boatLoadFailed: () => 'No se pudo cargar el barco; el detalle técnico está en la consola del navegador. El océano sigue sin él.',
-    boatUnreachable: (v) => `No se pudo descargar el modelo del barco "${v.url}". El océano sigue sin él.`,
-    boatNotFound: (v) => `No se encontró el modelo del barco "${v.url}" (HTTP ${v.status}). El océano sigue sin él.`,
-    boatWebPage: (v) => `Falta el modelo del barco "${v.url}": el servidor envió una página web en su lugar. El océano sigue sin él.`,
-    boatNotGltf: (v) => `El modelo del barco "${v.url}" no es un glTF válido: ni un .glb binario ni un .gltf JSON que three.js pueda leer. El océano sigue sin él.`,
-    boatNoGeometry: (v) => `El modelo del barco "${v.url}" no tiene geometría que pueda flotar. El océano sigue sin él.`,
     boatStateInvalid: (v) => `"boatState=${v.text}" no son diez números finitos dentro de la zona del barco; el barco empieza de nuevo.`,
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" no es una derrota grabada; la estela se reconstruye con el rumbo actual del barco.`,
     modelLoadFailed: (v) => `No se pudo descargar el código de las olas "${v.name}"; se sigue mostrando "${v.fallback}". Vuelve a elegirlas más tarde o recarga la página.`,
@@ -112,6 +108,11 @@ const MESSAGES: Record<Language, Record<MessageId, Render>> = {
   },
 };
 
+/** Adds the texts of a part's own notices, in both languages; called by that part as it loads. */
+export function registerNoticeTexts<Id extends LateNoticeId>(texts: Record<Language, Record<Id, Render>>): void {
+  for (const language of LANGUAGES) Object.assign(MESSAGES[language], texts[language]);
+}
+
 /** Words of the interface that are not parameters or notices. */
 export type UiTextId =
   | 'canvasLabel'
@@ -124,12 +125,7 @@ export type UiTextId =
   | 'loading_boat'
   | 'play'
   | 'pause'
-  | 'dismiss'
-  | 'fresnelPlotLabel'
-  | 'fresnelTitle'
-  | 'fresnelAxis'
-  | 'fresnelExact'
-  | 'fresnelSchlick';
+  | 'dismiss';
 
 const UI: Record<Language, Record<UiTextId, string>> = {
   en: {
@@ -144,11 +140,6 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     play: 'Play',
     pause: 'Pause',
     dismiss: 'Dismiss',
-    fresnelPlotLabel: 'Plot of the Fresnel reflectance of water against the angle of incidence, exact and Schlick',
-    fresnelTitle: 'Fresnel reflectance, air → water',
-    fresnelAxis: 'angle of incidence',
-    fresnelExact: 'exact (table uploaded to the GPU)',
-    fresnelSchlick: 'Schlick’s approximation',
   },
   es: {
     canvasLabel: 'Océano 3D animado bajo un cielo',
@@ -162,11 +153,6 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     play: 'Reproducir',
     pause: 'Pausar',
     dismiss: 'Cerrar',
-    fresnelPlotLabel: 'Gráfico de la reflectancia de Fresnel del agua según el ángulo de incidencia, exacta y de Schlick',
-    fresnelTitle: 'Reflectancia de Fresnel, aire → agua',
-    fresnelAxis: 'ángulo de incidencia',
-    fresnelExact: 'exacta (tabla subida a la GPU)',
-    fresnelSchlick: 'aproximación de Schlick',
   },
 };
 
@@ -182,7 +168,9 @@ export class Translator {
   constructor(readonly language: Language) {}
 
   message(m: Message): string {
-    return MESSAGES[this.language][m.id](m.values);
+    const render: Render | undefined = MESSAGES[this.language][m.id];
+    if (!render) throw new Error(`The text of the notice "${m.id}" comes with the part that raises it, which has not loaded.`);
+    return render(m.values);
   }
 
   ui(id: UiTextId): string {

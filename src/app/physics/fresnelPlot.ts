@@ -1,5 +1,6 @@
 import { schlickReflectance, WATER_IOR, AIR_IOR } from '../../sim/optics/fresnel';
 import type { Translator } from '../language/i18n';
+import { FRESNEL_PLOT_WORDS } from '../language/fresnelPlotWords';
 
 const WIDTH = 380;
 const HEIGHT = 240;
@@ -22,7 +23,7 @@ export class FresnelPlot {
     this.canvas.width = WIDTH;
     this.canvas.height = HEIGHT;
     this.canvas.setAttribute('role', 'img');
-    this.canvas.setAttribute('aria-label', tr.ui('fresnelPlotLabel'));
+    this.canvas.setAttribute('aria-label', FRESNEL_PLOT_WORDS[tr.language].label);
     this.canvas.hidden = true;
     container.appendChild(this.canvas);
     this.draw(table);
@@ -44,7 +45,7 @@ export class FresnelPlot {
     ctx.fillRect(0, 0, WIDTH, HEIGHT);
     ctx.font = '12px system-ui, sans-serif';
     ctx.fillStyle = '#1b2a33';
-    ctx.fillText(`${this.tr.ui('fresnelTitle')} (n = ${WATER_IOR})`, MARGIN.left, 18);
+    ctx.fillText(`${FRESNEL_PLOT_WORDS[this.tr.language].title} (n = ${WATER_IOR})`, MARGIN.left, 18);
 
     ctx.strokeStyle = '#c9d3d9';
     ctx.lineWidth = 1;
@@ -62,7 +63,7 @@ export class FresnelPlot {
       ctx.stroke();
       ctx.fillText(r.toFixed(2), 6, y(r) + 4);
     }
-    ctx.fillText(this.tr.ui('fresnelAxis'), MARGIN.left + plotW / 2 - 50, HEIGHT - 6);
+    ctx.fillText(FRESNEL_PLOT_WORDS[this.tr.language].axis, MARGIN.left + plotW / 2 - 50, HEIGHT - 6);
 
     const curve = (color: string, dash: number[], reflectance: (degrees: number) => number) => {
       ctx.strokeStyle = color;
@@ -89,11 +90,11 @@ export class FresnelPlot {
     ctx.fillStyle = '#0a6fa8';
     ctx.fillRect(MARGIN.left + 8, MARGIN.top + 8, 16, 3);
     ctx.fillStyle = '#1b2a33';
-    ctx.fillText(this.tr.ui('fresnelExact'), MARGIN.left + 30, MARGIN.top + 13);
+    ctx.fillText(FRESNEL_PLOT_WORDS[this.tr.language].exact, MARGIN.left + 30, MARGIN.top + 13);
     ctx.fillStyle = '#d2691e';
     ctx.fillRect(MARGIN.left + 8, MARGIN.top + 26, 16, 3);
     ctx.fillStyle = '#1b2a33';
-    ctx.fillText(this.tr.ui('fresnelSchlick'), MARGIN.left + 30, MARGIN.top + 31);
+    ctx.fillText(FRESNEL_PLOT_WORDS[this.tr.language].schlick, MARGIN.left + 30, MARGIN.top + 31);
   }
 
   dispose(): void {
