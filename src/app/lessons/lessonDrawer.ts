@@ -12,6 +12,7 @@ import { LESSON_TEXTS } from './lessonTexts';
 import { LessonLegend } from './lessonLegend';
 import { FreeArea } from '../layout/freeArea';
 import { FigureCaptions } from './figureCaptions';
+import { lessonExercise } from './lessonExercise';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -234,6 +235,8 @@ export class LessonDrawer {
     this.controls.clear();
     for (const key of lesson.controls) controls.append(this.buildControl(key));
     this.card.append(title, section, text, math, code, controls);
+    const exercise = lessonExercise(lesson.id, language, () => this.params);
+    if (exercise) this.card.append(exercise);
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);
     if (this.params) this.sync(this.params);
