@@ -28,8 +28,10 @@ async function openLesson(page: Page, id: string): Promise<void> {
 /** Ticks the control panel's "Physics panel" box and reads the row `row` of its "measured" column. */
 async function physicsReading(page: Page, row: RegExp): Promise<string> {
   await page.evaluate(() => {
-    const controller = Array.from(document.querySelectorAll('.lil-gui .controller')).find((c) => c.querySelector('.name')?.textContent === 'Physics panel')!;
-    const box = controller.querySelector<HTMLInputElement>('input[type="checkbox"]')!;
+    const names = Array.from(document.querySelectorAll('.lil-gui .lil-name, .lil-gui .name'));
+    const name = names.find((n) => /^Physics panel/.test(n.textContent ?? ''));
+    if (!name) throw new Error(`no Physics panel box among: ${names.map((n) => n.textContent).join(' | ')}`);
+    const box = name.parentElement!.querySelector<HTMLInputElement>('input[type="checkbox"]')!;
     if (!box.checked) box.click();
   });
   await page.waitForSelector('.oceano-physics table');
@@ -95,23 +97,24 @@ describe('measurement exercises, done with the tools', () => {
     const { page, consoleErrors } = await openOcean(harness, 't=0&lesson=kelvin-wake', 1366, 768);
     await page.waitForSelector('.oceano-lesson-exercise');
     await page.evaluate(() => window.oceano.pause());
-    // 30 s of the boat's run, drawn frame by frame: the wake builds behind it.
+    // 20 s of the boat's run, drawn frame by frame: the wake builds behind it.
     await page.evaluate(() => {
-      for (let i = 1; i <= 150; i++) {
-        window.oceano.setTime(i * 0.2);
+      for (let i = 1; i <= 40; i++) {
+        window.oceano.setTime(i * 0.5);
         window.oceano.renderFrame();
       }
     });
     const boat = await page.evaluate(() => window.oceano.boat());
     const [fx, fz] = forwardOf(boat.heading);
+    const [bx, , bz] = boat.position;
     // The student's eye on the wake: heights along the track behind the boat, and the crests among them.
     const profile = await page.evaluate(
       (bx, bz, dx, dz) => Array.from({ length: 601 }, (_, i) => {
         const s = 8 + i * 0.1;
         return window.oceano.sampleSurface(bx - dx * s, bz - dz * s).height;
       }),
-      boat.x,
-      boat.z,
+      bx,
+      bz,
       fx,
       fz,
     );
@@ -120,8 +123,8 @@ describe('measurement exercises, done with the tools', () => {
     console.log(`kelvin-wake: crests behind the boat at ${crests.map((s) => s.toFixed(1)).join(', ')} m`);
     expect(crests.length).toBeGreaterThanOrEqual(4);
     const [s0, s3] = [crests[0], crests[3]];
-    const a = await pixelOf(page, boat.x - fx * s0, 0, boat.z - fz * s0);
-    const b = await pixelOf(page, boat.x - fx * s3, 0, boat.z - fz * s3);
+    const a = await pixelOf(page, bx - fx * s0, 0, bz - fz * s0);
+    const b = await pixelOf(page, bx - fx * s3, 0, bz - fz * s3);
 
     await page.evaluate(() => Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((el) => /Sea tools/.test(el.textContent ?? ''))!.click());
     await page.waitForSelector('.oceano-sea-tools:not([hidden])');
@@ -140,7 +143,7 @@ describe('measurement exercises, done with the tools', () => {
     expect(wrong.verdict).toBe('not-yet');
     expect(consoleErrors).toEqual([]);
     await page.close();
-  });
+  }, 300_000);
 
   it('oceano.lessons() says which lessons have an exercise; a card without one shows none', async () => {
     const { page } = await openOcean(harness, 'lesson=fresnel', 640, 360);
@@ -150,5 +153,24 @@ describe('measurement exercises, done with the tools', () => {
     await page.waitForSelector('.oceano-lesson-card[data-lesson="fresnel"]');
     expect(await page.$('.oceano-lesson-exercise')).toBeNull();
     await page.close();
+  });
+});
+
+describe.runIf(process.env.OCEANO_SHOTS)('screenshots of an exercise card (OCEANO_SHOTS=folder)', () => {
+  it('fft-fresh-breeze, answered from the physics panel: laptop in English, phone in Spanish', async () => {
+    for (const [width, height, lang] of [[1366, 768, 'en'], [390, 844, 'es']] as const) {
+      const { page } = await openOcean(harness, `t=100&lesson=fft-fresh-breeze&lang=${lang}`, width, height);
+      await page.waitForSelector('.oceano-lesson-exercise');
+      await page.evaluate(() => window.oceano.pause());
+      await page.evaluate(() => window.oceano.setParams({ physics: true }));
+      await page.waitForSelector('.oceano-physics table');
+      const read = await page.$$eval('.oceano-physics table tr', (rows) => rows.find((tr) => /^Peak period Tp/.test(tr.cells[0]?.textContent ?? ''))!.cells[1].textContent ?? '');
+      await page.evaluate(() => window.oceano.setParams({ physics: false }));
+      await answer(page, lang === 'es' ? read.replace('.', ',') : read);
+      await page.$eval('.oceano-lesson-exercise', (el) => el.scrollIntoView({ block: 'end' }));
+      await page.evaluate(() => window.oceano.renderFrame());
+      await page.screenshot({ path: `${process.env.OCEANO_SHOTS}/exercise-${width}x${height}-${lang}.png` });
+      await page.close();
+    }
   });
 });
