@@ -91,7 +91,8 @@ describe('measurement exercises, done with the tools', () => {
     }
     expect(consoleErrors).toEqual([]);
     await page.close();
-  });
+    // Each measurement runs the estimators on the CPU twin: seconds alone, minutes on a shared 2-core machine.
+  }, 900_000);
 
   it('kelvin-wake: the ruler laid over three transverse crests behind the boat gives 2πU²/g within 10 %; half of it is "Not yet"', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=0&lesson=kelvin-wake', 1366, 768);
@@ -172,5 +173,5 @@ describe.runIf(process.env.OCEANO_SHOTS)('screenshots of an exercise card (OCEAN
       await page.screenshot({ path: `${process.env.OCEANO_SHOTS}/exercise-${width}x${height}-${lang}.png` });
       await page.close();
     }
-  });
+  }, 600_000);
 });
