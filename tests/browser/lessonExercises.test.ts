@@ -34,7 +34,8 @@ async function physicsReading(page: Page, row: RegExp): Promise<string> {
     const box = name.parentElement!.querySelector<HTMLInputElement>('input[type="checkbox"]')!;
     if (!box.checked) box.click();
   });
-  await page.waitForSelector('.oceano-physics table');
+  // The estimators run on the CPU twin: seconds alone, minutes on a loaded 2-core machine.
+  await page.waitForSelector('.oceano-physics table', { timeout: 600_000 });
   return page.$$eval(
     '.oceano-physics table tr',
     (rows, source) => {
@@ -92,7 +93,7 @@ describe('measurement exercises, done with the tools', () => {
     expect(consoleErrors).toEqual([]);
     await page.close();
     // Each measurement runs the estimators on the CPU twin: seconds alone, minutes on a shared 2-core machine.
-  }, 900_000);
+  }, 1_500_000);
 
   it('kelvin-wake: the ruler laid over three transverse crests behind the boat gives 2πU²/g within 10 %; half of it is "Not yet"', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=0&lesson=kelvin-wake', 1366, 768);
@@ -158,16 +159,12 @@ describe('measurement exercises, done with the tools', () => {
 });
 
 describe.runIf(process.env.OCEANO_SHOTS)('screenshots of an exercise card (OCEANO_SHOTS=folder)', () => {
-  it('fft-fresh-breeze, answered from the physics panel: laptop in English, phone in Spanish', async () => {
+  it('kelvin-wake with a typed answer (the ruler’s 30.72 m over three waves, as the test above read it): laptop in English, phone in Spanish', async () => {
     for (const [width, height, lang] of [[1366, 768, 'en'], [390, 844, 'es']] as const) {
-      const { page } = await openOcean(harness, `t=100&lesson=fft-fresh-breeze&lang=${lang}`, width, height);
+      const { page } = await openOcean(harness, `t=20&lesson=kelvin-wake&lang=${lang}`, width, height);
       await page.waitForSelector('.oceano-lesson-exercise');
       await page.evaluate(() => window.oceano.pause());
-      await page.evaluate(() => window.oceano.setParams({ physics: true }));
-      await page.waitForSelector('.oceano-physics table');
-      const read = await page.$$eval('.oceano-physics table tr', (rows) => rows.find((tr) => /^Peak period Tp/.test(tr.cells[0]?.textContent ?? ''))!.cells[1].textContent ?? '');
-      await page.evaluate(() => window.oceano.setParams({ physics: false }));
-      await answer(page, lang === 'es' ? read.replace('.', ',') : read);
+      await answer(page, lang === 'es' ? '10,24' : '10.24');
       await page.$eval('.oceano-lesson-exercise', (el) => el.scrollIntoView({ block: 'end' }));
       await page.evaluate(() => window.oceano.renderFrame());
       await page.screenshot({ path: `${process.env.OCEANO_SHOTS}/exercise-${width}x${height}-${lang}.png` });

@@ -107,11 +107,13 @@ export function lessonExercise(lesson: string, language: Language, params: () =>
     const expected = exercise.expected(now);
     const ok = withinTolerance(typed, expected, exercise.tolerance);
     result.dataset.verdict = ok ? 'within' : 'not-yet';
-    const off = (100 * (typed / expected - 1)).toFixed(1);
+    // Spanish writes the decimal comma, as the rest of the page does (19,47°).
+    const number = (value: number, digits: number) => (language === 'es' ? value.toFixed(digits).replace('.', ',') : value.toFixed(digits));
+    const off = number(100 * (typed / expected - 1), 1);
     result.append(
       element('strong', 'oceano-lesson-exercise-verdict', ok ? WORDS.within[language] : WORDS.notYet[language]),
       ` (${off.startsWith('-') ? '' : '+'}${off} %). `,
-      `${WORDS.theory[language]}: ${exercise.symbol} = ${expected.toFixed(2)} ${exercise.unit}; ${theoryLine(exercise, now, language)}.`,
+      `${WORDS.theory[language]}: ${exercise.symbol} = ${number(expected, 2)} ${exercise.unit}; ${theoryLine(exercise, now, language)}.`,
     );
   });
   root.append(heading, task, tolerance, form, result);
