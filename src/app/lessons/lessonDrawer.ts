@@ -16,6 +16,7 @@ import { GlossaryNote } from './glossaryNote';
 import { bibliographyList, glossaryList, referencesFold } from './referenceLists';
 import { CONCEPT_STAGES, LESSON_ORDERS, ORDER_NAMES, type LessonOrder } from './conceptPath';
 import { lessonDiagram, type LessonDiagram } from './diagrams/lessonDiagram';
+import { lessonExercise } from './lessonExercise';
 
 
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
@@ -331,6 +332,8 @@ export class LessonDrawer {
       this.card.append(choice);
     }
     this.card.append(math, ...(this.diagram ? [this.diagram.element] : []), code, controls);
+    const exercise = lessonExercise(lesson.id, language, () => this.params);
+    if (exercise) this.card.append(exercise);
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);
     if (words.references && words.references.length > 0) this.card.append(referencesFold(this.tr, words.references));

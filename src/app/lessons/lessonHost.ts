@@ -59,7 +59,7 @@ export class LessonHost {
   }
 
   /** The lessons in order, titled in the page's language; their titles arrive with `ready`. */
-  titles(): { id: string; title: string; section: string }[] {
+  titles(): ReturnType<typeof lessonList> {
     if (!this.list) throw new Error('The lessons\' titles have not arrived yet: await oceano.ready first.');
     return this.list(this.tr.language);
   }

@@ -133,6 +133,14 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
 };
 
 /** `[{ id, title, section }]` in a language, in the course's order (oceano.lessons()). */
-export function lessonList(language: Language): { id: string; title: string; section: string }[] {
-  return LESSONS.map((lesson) => ({ id: lesson.id, title: LESSON_TITLES[lesson.id][language], section: SECTION_NAMES[LESSON_OUTLINE[lesson.id].section][language] }));
+/** The lessons whose card has a measurement exercise (src/sim/teaching/measurementExercises.ts; a unit test keeps the two alike). */
+export const EXERCISE_LESSONS: readonly string[] = ['fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake'];
+
+export function lessonList(language: Language): { id: string; title: string; section: string; exercise: boolean }[] {
+  return LESSONS.map((lesson) => ({
+    id: lesson.id,
+    title: LESSON_TITLES[lesson.id][language],
+    section: SECTION_NAMES[LESSON_OUTLINE[lesson.id].section][language],
+    exercise: EXERCISE_LESSONS.includes(lesson.id),
+  }));
 }

@@ -1,0 +1,104 @@
+import type { OceanParams } from '../params/params';
+import { GRAVITY } from '../waves/dispersion';
+import { frequencySpectrum } from '../waves/spectra/waveSpectrum';
+import { seaStateFromParams } from '../waves/spectra/seaState';
+
+/**
+ * The lessons' measurements: the student reads a quantity off the live sea with one of the
+ * sea tools and types it in; the card says whether it lies within tolerance of theory. The
+ * theory is computed here from the live parameters with the same functions the sea and the
+ * physics panel use, so changing the wind or the boat's speed changes what is expected.
+ */
+
+/** The tool the quantity is read with: the ruler (a drag on the sea) or the physics panel's "measured" column. */
+export type ExerciseTool = 'ruler' | 'physics';
+
+export type ExerciseQuantity = 'significantHeight' | 'peakPeriod' | 'transverseWavelength';
+
+export interface MeasurementExercise {
+  lesson: string;
+  quantity: ExerciseQuantity;
+  /** The symbol the card writes, e.g. Hs. */
+  symbol: string;
+  unit: 'm' | 's';
+  tool: ExerciseTool;
+  /**
+   * Largest relative difference |measured / expected − 1| that passes. Set from how far the
+   * tool's own reading scatters about theory (the physics panel's Hs within 3 %, its Tp within
+   * 10 %), and tight enough that the usual slips (crest to trough for Hs, Tz for Tp, half a
+   * wavelength) fail.
+   */
+  tolerance: number;
+  expected(params: OceanParams): number;
+}
+
+/** Hs = 4√m₀ of the wind spectrum the parameters choose (Holthuijsen 2007, §4.2). */
+export function spectralSignificantHeight(params: OceanParams): number {
+  return 4 * Math.sqrt(frequencySpectrum(seaStateFromParams(params)).m0);
+}
+
+/** Tp = 2π/ωp, the period of the wind spectrum's peak. */
+export function spectralPeakPeriod(params: OceanParams): number {
+  return (2 * Math.PI) / frequencySpectrum(seaStateFromParams(params)).peak;
+}
+
+/**
+ * The Kelvin wake's transverse wavelength: the transverse waves keep pace with the boat, so
+ * their phase speed √(g/k) equals its speed U, k = g/U², λ = 2πU²/g.
+ */
+export function transverseWakeWavelength(params: Pick<OceanParams, 'boatSpeed'>): number {
+  return (2 * Math.PI * params.boatSpeed ** 2) / GRAVITY;
+}
+
+const HS_TOLERANCE = 0.1;
+const TP_TOLERANCE = 0.15;
+const WAKE_TOLERANCE = 0.1;
+
+const hs = (lesson: string): MeasurementExercise => ({
+  lesson,
+  quantity: 'significantHeight',
+  symbol: 'Hs',
+  unit: 'm',
+  tool: 'physics',
+  tolerance: HS_TOLERANCE,
+  expected: spectralSignificantHeight,
+});
+
+const tp = (lesson: string): MeasurementExercise => ({
+  lesson,
+  quantity: 'peakPeriod',
+  symbol: 'Tp',
+  unit: 's',
+  tool: 'physics',
+  tolerance: TP_TOLERANCE,
+  expected: spectralPeakPeriod,
+});
+
+const wake = (lesson: string): MeasurementExercise => ({
+  lesson,
+  quantity: 'transverseWavelength',
+  symbol: 'λ',
+  unit: 'm',
+  tool: 'ruler',
+  tolerance: WAKE_TOLERANCE,
+  expected: transverseWakeWavelength,
+});
+
+export const MEASUREMENT_EXERCISES: readonly MeasurementExercise[] = [
+  hs('fft-calm'),
+  tp('fft-fresh-breeze'),
+  tp('fft-short-fetch'),
+  hs('fft-gale'),
+  hs('physics-panel'),
+  wake('kelvin-wake'),
+];
+
+export function exerciseFor(lesson: string): MeasurementExercise | null {
+  return MEASUREMENT_EXERCISES.find((exercise) => exercise.lesson === lesson) ?? null;
+}
+
+/** Whether a typed value lies within the exercise's tolerance of theory; a value that is not a finite number never does. */
+export function withinTolerance(measured: number, expected: number, tolerance: number): boolean {
+  if (!Number.isFinite(measured) || !Number.isFinite(expected) || expected === 0) return false;
+  return Math.abs(measured / expected - 1) <= tolerance;
+}
