@@ -11,7 +11,9 @@ import { seaStateFromParams } from '../../../src/sim/waves/spectra/seaState';
 import { fftOceanSetup } from '../../../src/sim/waves/fft/fftOcean';
 import { cascadeSpread } from '../../../src/sim/waves/spectra/spectralBounds';
 import { HIGHLIGHT_KNEE, rollOffHighlight } from '../../../src/sim/optics/highlightRollOff';
-import { SUN_IRRADIANCE } from '../../../src/sim/optics/sun';
+import { SUN_IRRADIANCE, SUN_LIGHT_COLOR } from '../../../src/sim/optics/sun';
+import { glintPerIrradiance } from '../../../src/sim/optics/beckmannGlint';
+import { AIR_IOR, WATER_IOR, fresnelReflectance } from '../../../src/sim/optics/fresnel';
 import { PURE_WATER_ABSORPTION, REFLECTANCE_FACTOR, bodyColor, deepWaterReflectance, molecularScattering, WAVELENGTHS } from '../../../src/sim/optics/waterColor';
 import { CHLOROPHYLL, CREST_PATH, PARTICLE_MEAN_COSINE, crestScattering, henyeyGreenstein } from '../../../src/sim/optics/subsurfaceGlow';
 import { glslVec3, shaderConstantsChunk } from '../../../src/render/shaders/shaderConstants';
@@ -164,7 +166,7 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
     expect(Math.round(255 * HIGHLIGHT_KNEE)).toBe(153);
   });
 
-  it('an 8-bit screen shows white from c ≈ 2.4, and at −2 EV from L ≈ 9.6 (control: 8 bits without sRGB would need 2.7)', () => {
+  it('an 8-bit screen shows white from c ≈ 2.4, and at −2 EV from L ≈ 9.6, far below the glint’s core (control: 8 bits without sRGB would need 2.7)', () => {
     // The least light, to 0.01, that the curve and the encoding bring to code 255.
     let white = HIGHLIGHT_KNEE;
     while (srgbCode(rollOffHighlight(white)) < 255) white += 0.01;
@@ -175,6 +177,16 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
       expect(roundsTo(quotedAfter(text, 'L ≥'), white / 2 ** -2), lang).toBe(true);
       expect(numberAfter(text, '(?:divided by|se divide entre)')).toBe(2 ** 2);
     }
+    // The glint's core in the view, at its mirror point: the sun at 10° reflected with the
+    // roughness of a near pixel (every cascade drawn) and of a far one (none), in its dimmest channel.
+    const p = viewParams('light-units');
+    const e = (p.sunElevation * Math.PI) / 180;
+    const sun: [number, number, number] = [0, Math.sin(e), -Math.cos(e)];
+    const eye: [number, number, number] = [0, Math.sin(e), Math.cos(e)];
+    const total = seaSlopeVariance(p.windSpeed);
+    const drawn = cascadeSlopeVariances(p).reduce((a, b) => a + b, 0);
+    const core = (variance: number) => Math.min(...SUN_LIGHT_COLOR) * SUN_IRRADIANCE * fresnelReflectance(Math.sin(e), AIR_IOR, WATER_IOR) * glintPerIrradiance(sun, eye, [0, 1, 0], variance);
+    for (const variance of [total - drawn, total]) expect(core(variance)).toBeGreaterThan(2 * white * 4);
     let linearWhite = HIGHLIGHT_KNEE;
     while (Math.round(255 * rollOffHighlight(linearWhite)) < 255) linearWhite += 0.01;
     expect(roundsTo('2.4', linearWhite)).toBe(false);
