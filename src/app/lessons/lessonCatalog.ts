@@ -100,7 +100,7 @@ export const LESSONS: readonly Lesson[] = [
   // A low sun: its glitter runs far out, where a pixel spans metres of sea.
   { id: 'slope-filtering', preset: 'fresh-breeze', params: { sunElevation: 5 } },
   { id: 'light-units', preset: 'calm', params: { sunElevation: 10 } },
-  { id: 'water-colour', preset: 'fresh-breeze', params: { sunElevation: 10 } },
+  { id: 'water-colour', preset: 'fresh-breeze' },
 ];
 
 export const lessonIds = LESSONS.map((lesson) => lesson.id);

@@ -127,12 +127,14 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness (Brun
 });
 
 describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB', () => {
-  it('the view is the calm FFT sea at exposure 0 with the sun at 10°, its glint in sight (control: the default sun is not that)', () => {
+  it('the view is the calm FFT sea at exposure 0, the question’s start, the sun at 10° (control: another exposure is not the view’s)', () => {
     const p = viewParams('light-units');
     expect(p.waves).toBe('fft');
     for (const lang of LANGS) expect(numberAfter(LESSON_TEXTS['light-units'].question!.ask[lang], '(?:from|de)')).toBe(p.exposure);
+    expect(p.exposure).toBe(defaultParams().exposure);
+    // A sun at 10°: its glint's core stays far above white even where no wave is drawn (below).
     expect(p.sunElevation).toBe(10);
-    expect(defaultParams().sunElevation).not.toBe(10);
+    expect(numberAfter(LESSON_TEXTS['light-units'].question!.ask.en, 'from') + 1).not.toBe(p.exposure);
   });
 
   it('the sun gives E = 4, the knee k = 0.6; 1 shows as 0.85 and 2 as 0.99 (control: a clipped curve shows 1 as 1)', () => {
@@ -177,7 +179,7 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
       expect(roundsTo(quotedAfter(text, 'L ≥'), white / 2 ** -2), lang).toBe(true);
       expect(numberAfter(text, '(?:divided by|se divide entre)')).toBe(2 ** 2);
     }
-    // The glint's core in the view, at its mirror point: the sun at 10° reflected with the
+    // The glint's core in the view, at its mirror point: the view's sun reflected with the
     // roughness of a near pixel (every cascade drawn) and of a far one (none), in its dimmest channel.
     const p = viewParams('light-units');
     const e = (p.sunElevation * Math.PI) / 180;
@@ -194,7 +196,7 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
 });
 
 describe('water-colour: the deep water’s reflectance and the crests’ forward-scattered glow', () => {
-  it('the view is the fresh breeze with the sun at 10°, azimuth 20° as the question starts, glow on, colour from optics', () => {
+  it('the view is the fresh breeze with the sun ahead at azimuth 20°, as the question starts, glow on, colour from optics', () => {
     const p = viewParams('water-colour');
     expect(p.waves).toBe('fft');
     expect(p.subsurface).toBe(true);
