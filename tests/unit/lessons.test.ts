@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { LESSONS, lessonIds, lessonView, findLesson } from '../../src/app/lessons/lessonCatalog';
-import { LESSON_OUTLINE, LESSON_SECTIONS, LESSON_TITLES, SECTION_NAMES, lessonList } from '../../src/app/lessons/lessonOutline';
+import { LESSON_OUTLINE, LESSON_SECTIONS, LESSON_TITLES, SECTION_NAMES, lessonList, type LessonSection } from '../../src/app/lessons/lessonOutline';
 import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
 import { LESSON_QUOTE_SOURCES } from '../../src/app/lessons/lessonQuoteSources';
 import { PRESETS, presetNames } from '../../src/app/url/presets';
@@ -9,6 +9,8 @@ import { unreadParams } from '../../src/app/panel/unreadParams';
 import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
 import { CONCEPT_PATH, CONCEPT_STAGES } from '../../src/app/lessons/conceptPath';
 
+/** The concept lessons' sections, after the models' (lessonOutline.ts). */
+const CONCEPT_SECTIONS: LessonSection[] = ['linearWaves', 'spectra', 'filtering', 'light'];
 const words = (text: string) => text.trim().split(/\s+/).length;
 /** The presets no lesson opens. */
 const presetsWithoutLesson = (lessons: readonly { preset?: string }[]) => presetNames.filter((name) => !lessons.some((lesson) => lesson.preset === name));
@@ -32,8 +34,8 @@ describe('the lessons', () => {
     const beyond = LESSON_SECTIONS.map((section) => SECTION_NAMES[section].beyondSeed);
     expect(beyond.indexOf(true)).toBe(10);
     expect(beyond.slice(10).every(Boolean)).toBe(true);
-    // The ideas under every model (concept lessons) come after the models themselves.
-    expect(LESSON_SECTIONS.slice(LESSON_SECTIONS.indexOf('horizon') + 1)).toEqual(['linearWaves', 'spectra']);
+    // The ideas under every model (concept lessons) come after the models themselves, in the ideas' order.
+    expect(LESSON_SECTIONS.slice(LESSON_SECTIONS.indexOf('horizon') + 1)).toEqual(CONCEPT_SECTIONS);
   });
 
   it.each(lessonIds)('%s: 40–120 words in each language, MathML, 1–5 real controls', (id) => {
@@ -88,7 +90,7 @@ describe('the lessons', () => {
 describe('the ideas’ order (conceptPath.ts)', () => {
   /** What is wrong with an order: unknown ids, repeats, and concept lessons it leaves out. */
   const faults = (path: readonly string[]) => {
-    const concept = LESSONS.filter((lesson) => ['linearWaves', 'spectra'].includes(LESSON_OUTLINE[lesson.id].section)).map((lesson) => lesson.id);
+    const concept = LESSONS.filter((lesson) => (CONCEPT_SECTIONS as string[]).includes(LESSON_OUTLINE[lesson.id].section)).map((lesson) => lesson.id);
     return {
       unknown: path.filter((id) => !lessonIds.includes(id)),
       repeated: path.filter((id, i) => path.indexOf(id) !== i),
@@ -108,12 +110,17 @@ describe('the ideas’ order (conceptPath.ts)', () => {
     expect(at('airy-waves')).toBe(0);
     expect(at('group-velocity')).toBeLessThan(at('gerstner-gentle'));
     expect(at('spectra-compared')).toBeLessThan(at('fft-transform'));
+    // The FFT before filtering with distance, filtering before light; light's units open light's stage.
+    expect(at('fft-transform')).toBeLessThan(at('slope-filtering'));
+    expect(at('slope-filtering')).toBeLessThan(at('light-units'));
+    expect(CONCEPT_STAGES.find((stage) => stage.lessons.includes('water-colour'))!.lessons[0]).toBe('light-units');
   });
 
   it('controls: an unknown id, a repeat and a dropped concept lesson are each reported', () => {
     expect(faults([...CONCEPT_PATH, 'no-such-lesson']).unknown).toEqual(['no-such-lesson']);
     expect(faults([...CONCEPT_PATH, 'fresnel']).repeated).toEqual(['fresnel']);
     expect(faults(CONCEPT_PATH.filter((id) => id !== 'fft-transform')).missing).toEqual(['fft-transform']);
+    expect(faults(CONCEPT_PATH.filter((id) => id !== 'water-colour')).missing).toEqual(['water-colour']);
   });
 });
 

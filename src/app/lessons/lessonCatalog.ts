@@ -97,6 +97,10 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'group-velocity', preset: 'stone', params: { iwaveGuide: true } },
   { id: 'spectra-compared', preset: 'fresh-breeze', params: { spectrum: 'phillips' } },
   { id: 'fft-transform', preset: 'fresh-breeze', params: { physics: true } },
+  // A low sun: its glitter runs far out, where a pixel spans metres of sea.
+  { id: 'slope-filtering', preset: 'fresh-breeze', params: { sunElevation: 5 } },
+  { id: 'light-units', preset: 'calm', params: { sunElevation: 10 } },
+  { id: 'water-colour', preset: 'fresh-breeze' },
 ];
 
 export const lessonIds = LESSONS.map((lesson) => lesson.id);

@@ -3,7 +3,7 @@ import type { ParamKey } from '../../sim/params/params';
 import { LESSONS, type Lesson } from './lessonCatalog';
 
 /** The course's chapters: the seed report's sections in its order, then what lies beyond it (names below). */
-export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'interactive', 'horizon', 'linearWaves', 'spectra'] as const;
+export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'interactive', 'horizon', 'linearWaves', 'spectra', 'filtering', 'light'] as const;
 export type LessonSection = (typeof LESSON_SECTIONS)[number];
 
 /** What a lesson draws over the picture besides its card (lessonLegend.ts). */
@@ -30,6 +30,8 @@ export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { b
   horizon: { en: 'The sea to the horizon', es: 'El mar hasta el horizonte', beyondSeed: true },
   linearWaves: { en: 'Ideas: linear waves and their groups', es: 'Ideas: olas lineales y sus grupos', beyondSeed: true },
   spectra: { en: 'Ideas: spectra and the FFT', es: 'Ideas: espectros y la FFT', beyondSeed: true },
+  filtering: { en: 'Ideas: filtering with distance', es: 'Ideas: el filtrado con la distancia', beyondSeed: true },
+  light: { en: 'Ideas: light’s units and the water’s colour', es: 'Ideas: las unidades de la luz y el color del agua', beyondSeed: true },
 };
 
 /** Where each lesson sits in the course, the one to five parameters its card offers, and its legend. */
@@ -78,6 +80,9 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'group-velocity': { section: 'linearWaves', controls: ['iwaveGuide', 'timeScale'] },
   'spectra-compared': { section: 'spectra', controls: ['spectrum', 'windSpeed', 'fetch'] },
   'fft-transform': { section: 'spectra', controls: ['seed', 'physics', 'windSpeed'] },
+  'slope-filtering': { section: 'filtering', controls: ['seaRoughness', 'skyBlur', 'sunElevation', 'windSpeed'] },
+  'light-units': { section: 'light', controls: ['exposure', 'sunElevation'] },
+  'water-colour': { section: 'light', controls: ['subsurface', 'sunAzimuth', 'waterColorPicked'] },
 };
 
 /** A lesson with where it sits in the course, its controls and its legend. */
@@ -130,6 +135,9 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'group-velocity': { en: 'Phase speed and group velocity', es: 'Velocidad de fase y velocidad de grupo' },
   'spectra-compared': { en: 'Phillips beside Pierson–Moskowitz and JONSWAP', es: 'Phillips junto a Pierson–Moskowitz y JONSWAP' },
   'fft-transform': { en: 'The FFT itself: random amplitudes, butterflies, tiles', es: 'La FFT en sí: amplitudes aleatorias, mariposas, teselas' },
+  'slope-filtering': { en: 'Filtering: slopes too fine to draw become roughness', es: 'Filtrado: las pendientes demasiado finas se vuelven rugosidad' },
+  'light-units': { en: 'Light’s units: HDR radiance, the tone curve, sRGB', es: 'Las unidades de la luz: radiancia HDR, curva de tono, sRGB' },
+  'water-colour': { en: 'The water’s colour and the crests’ glow', es: 'El color del agua y el brillo de las crestas' },
 };
 
 /** `[{ id, title, section }]` in a language, in the course's order (oceano.lessons()). */

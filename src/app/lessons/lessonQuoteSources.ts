@@ -49,5 +49,8 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'airy-waves': { file: 'src/sim/waves/gerstner/gerstnerSpectrum.ts', from: 'let m0 = 0;', to: 'const amplitude = Math.sqrt(' },
   'group-velocity': { file: 'src/sim/waves/dispersion.ts', from: 'export function groupVelocity(', to: 'return (GRAVITY * (t + kh * sech2)) / (2 * omega);' },
   'spectra-compared': { file: 'src/sim/waves/spectra/phillips.ts', from: 'export function phillips(', to: 'return ((PHILLIPS_ALPHA' },
+  'slope-filtering': { file: 'src/sim/optics/resolvedSlopes.ts', from: 'export function resolvedShare(', to: 'return Math.max(SUN_DISC_SLOPE_VARIANCE, total - resolved);' },
+  'light-units': { file: 'src/render/tone/wholeFrameToneCurve.ts', from: "const PLACEHOLDER = 'vec3 CustomToneMapping", to: 'return chunk.replace(PLACEHOLDER' },
+  'water-colour': { file: 'shaders/subsurface.glsl', from: 'vec3 subsurfaceGlow(vec3 n, vec3 v) {', to: 'return uSunColor * SUN_IRRADIANCE * SUBSURFACE_SCATTER' },
   'fft-transform': { file: 'src/sim/waves/fft/spectralFields.ts', from: '// h₀(k) e^{iφ} + conj(h₀(−k)) e^{−iφ}; ω(−k) = ω(k).', to: 'const hi = ar * s' },
 };

@@ -998,4 +998,73 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
     },
     references: ['tessendorf2001', 'cooleyTukey1965', 'govindaraju2008'],
   },
+  'slope-filtering': {
+    text: {
+      en: 'A far pixel spans metres of sea. A wave shorter than two footprints w cannot be drawn by the normal: sampled once a pixel it aliases, and the far sea sparkles. So, after Bruneton, Neyret and Holzschuch (2010), each FFT cascade c keeps in the normal only the share s_c of its band, λ_min to λ_max in ln k, whose waves exceed 2w. The dropped slopes become facets inside the pixel, of mean-square slope σ²ᵤ, never below the sun’s disc σ²_⊙, which the glint and the sky’s blur integrate over. σ²_CM is Cox and Munk’s for the wind: 0.055 at 10 m/s; the cascades’ σ_c² hold 0.019.',
+      es: 'Un píxel lejano abarca metros de mar. Una ola más corta que dos huellas w no cabe en la normal: muestreada una vez por píxel produce aliasing, y el mar lejano chispea. Por eso, según Bruneton et al. (2010), cada cascada c de la FFT conserva en la normal solo la parte s_c de su banda, de λ_min a λ_max en ln k, cuyas olas superan 2w. Lo descartado son facetas dentro del píxel, de pendiente cuadrática media σ²ᵤ, nunca menor que la del disco solar σ²_⊙, que el destello y el desenfoque del cielo integran. σ²_CM es la de Cox y Munk para el viento: 0,055 a 10 m/s; las σ_c² de las cascadas tienen 0,019.',
+    },
+    math: m('<msub><mi>s</mi><mi>c</mi></msub><mo>=</mo><mi>clamp</mi><mrow><mo>(</mo><mfrac><mrow><mi>ln</mi><mo>(</mo><msub><mi>λ</mi><mi>max</mi></msub><mo>/</mo><mn>2</mn><mi>w</mi><mo>)</mo></mrow><mrow><mi>ln</mi><mo>(</mo><msub><mi>λ</mi><mi>max</mi></msub><mo>/</mo><msub><mi>λ</mi><mi>min</mi></msub><mo>)</mo></mrow></mfrac><mo>,</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>)</mo></mrow>')
+      + m('<msubsup><mi>σ</mi><mi>u</mi><mn>2</mn></msubsup><mo>=</mo><mi>max</mi><mrow><mo>(</mo><msubsup><mi>σ</mi><mo>⊙</mo><mn>2</mn></msubsup><mo>,</mo><mspace width="0.3em"/><msubsup><mi>σ</mi><mi>CM</mi><mn>2</mn></msubsup><mo>−</mo><munder><mo>∑</mo><mi>c</mi></munder><msubsup><mi>s</mi><mi>c</mi><mn>2</mn></msubsup><msubsup><mi>σ</mi><mi>c</mi><mn>2</mn></msubsup><mo>)</mo></mrow>'),
+    question: {
+      ask: {
+        en: 'The low sun’s glitter runs far out towards the horizon. If you turn Roughness (Cox & Munk) off, will the far part of the path stay as wide?',
+        es: 'El destello del sol bajo llega lejos, hacia el horizonte. Si apagas la rugosidad (Cox y Munk), ¿seguirá igual de ancha la parte lejana del camino?',
+      },
+      answer: {
+        en: 'No: far away it narrows to a thin line. There a pixel spans more than half the short waves’ length, so s_c falls towards 0 and the normal is nearly flat; without the roughness that stood for those slopes only the sun’s disc is left, a mirror. Near you the drawn waves still glitter. Move the Roughness control.',
+        es: 'No: a lo lejos se estrecha hasta una línea fina. Allí un píxel abarca más de media longitud de las olas cortas, s_c cae hacia 0 y la normal es casi plana; sin la rugosidad que las representaba solo queda el disco del sol, un espejo. Cerca, las olas dibujadas siguen destellando. Mueve el control de rugosidad.',
+      },
+    },
+    choice: {
+      en: 'Counting a wave drawn once it spans two footprints (Nyquist), and the share in ln k (a k⁻³ tail), are the code’s approximations; Cox and Munk’s σ² is measured.',
+      es: 'Dar una ola por dibujada desde dos huellas (Nyquist) y contar en ln k (cola k⁻³) son aproximaciones del código; la σ² de Cox y Munk es medida.',
+    },
+    references: ['bruneton2010', 'coxMunk1954'],
+  },
+  'light-units': {
+    text: {
+      en: 'The shaders compute light as linear radiance L with no ceiling (high dynamic range), in the sky’s units: the sky cube’s colours lie near 0.3–0.8, and the sun gives E = 4 on a surface facing it, so the glint’s core is many times white. A screen stops at 1. Each channel is multiplied by 2^EV, EV the exposure control in stops, then goes through the tone curve f: unchanged below the knee k = 0.6, rolling off above it, so that 1 shows as 0.85, 2 as 0.99, and from about 2.4 an 8-bit screen shows white. Last, three.js encodes f as sRGB, V = 1.055 f^{1/2.4} − 0.055: the knee is code 203 of 255.',
+      es: 'Los shaders calculan la luz como radiancia lineal L sin techo (alto rango dinámico), en unidades del cielo: sus colores rondan 0,3–0,8 y el sol da E = 4 sobre una superficie de frente, así que el núcleo del destello es muchas veces blanco. Una pantalla se detiene en 1. Cada canal se multiplica por 2^EV, EV la exposición en pasos, y pasa por la curva de tono f: igual bajo el codo k = 0,6, suavizada encima: 1 se ve como 0,85, 2 como 0,99, y desde unos 2,4 una pantalla de 8 bits da blanco. Al final three.js codifica f en sRGB, V = 1,055 f^{1/2,4} − 0,055: el codo es el código 203 de 255.',
+    },
+    math: m('<mi>c</mi><mo>=</mo><msup><mn>2</mn><mi>EV</mi></msup><mi>L</mi><mo>,</mo><mspace width="1em"/><mi>f</mi><mo>(</mo><mi>c</mi><mo>)</mo><mo>=</mo><mi>k</mi><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo><mo>(</mo><mn>1</mn><mo>−</mo><msup><mi>e</mi><mrow><mo>−</mo><mo>(</mo><mi>c</mi><mo>−</mo><mi>k</mi><mo>)</mo><mo>/</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo></mrow></msup><mo>)</mo><mspace width="0.3em"/><mtext>if</mtext><mspace width="0.3em"/><mi>c</mi><mo>&gt;</mo><mi>k</mi><mo>,</mo><mspace width="0.3em"/><mtext>else</mtext><mspace width="0.3em"/><mi>c</mi>')
+      + m('<mi>V</mi><mo>=</mo><mn>1.055</mn><mspace width="0.1em"/><msup><mi>f</mi><mrow><mn>1</mn><mo>/</mo><mn>2.4</mn></mrow></msup><mo>−</mo><mn>0.055</mn><mspace width="0.3em"/><mtext>if</mtext><mspace width="0.3em"/><mi>f</mi><mo>&gt;</mo><mn>0.0031308</mn><mo>,</mo><mspace width="0.3em"/><mtext>else</mtext><mspace width="0.3em"/><mn>12.92</mn><mi>f</mi>'),
+    question: {
+      ask: {
+        en: 'Lower the exposure from 0 to −2 EV: will the glint’s white core shrink as much as the sea around it darkens?',
+        es: 'Baja la exposición de 0 a −2 EV: ¿el núcleo blanco del destello se encogerá tanto como se oscurece el mar a su alrededor?',
+      },
+      answer: {
+        en: 'No. All light is divided by 4: the water, below the knee, shows a quarter of its linear light. But white needed only c ≥ 2.4, so after the division it still shows wherever L ≥ 9.6, and the sun’s core lies far above that; only the glint’s rim fades. Move the exposure control.',
+        es: 'No. Toda la luz se divide entre 4: el agua, bajo el codo, muestra un cuarto de su luz lineal. Pero el blanco solo pedía c ≥ 2,4, así que tras la división sigue donde L ≥ 9,6, y el núcleo del sol queda muy por encima; solo se apaga el borde del destello. Mueve el control de exposición.',
+      },
+    },
+    choice: {
+      en: 'The knee k = 0.6, its exponential shoulder and the sun’s E = 4 (the low end of a clear sky’s 4–9) are display choices; sRGB is the screens’ standard.',
+      es: 'El codo k = 0,6, su hombro exponencial y la E = 4 del sol (mínimo de un cielo claro, 4–9) son elecciones; sRGB es el estándar de las pantallas.',
+    },
+    references: ['reinhard2002', 'iec1999'],
+  },
+  'water-colour': {
+    text: {
+      en: 'Deep clear water’s colour is light scattered back up before it is absorbed: just below the surface a share R = f b_b/(a + b_b) returns, f = 0.33, a pure water’s absorption (Pope and Fry), b_b = b/2 its molecules’ backscattering, b ∝ λ^−4.3 (Morel) at wavelength λ. Red is absorbed within metres (a = 0.34 m⁻¹), blue scattered: R = 0.0005, 0.013, 0.045 in red, green, blue: dark blue. A thin crest backlit by the sun glows: light crossing d = 1 m of it is scattered forward by plankton (b_p, chlorophyll 1 mg/m³) with Henyey and Greenstein’s phase function p(θ), g = 0.924, θ the angle from the sun’s ray: greener than the deep blue.',
+      es: 'El color del agua profunda es luz devuelta antes de absorberse: bajo la superficie vuelve R = f b_b/(a + b_b), f = 0,33, a la absorción del agua pura (Pope y Fry), b_b = b/2 la retrodispersión molecular, b ∝ λ^−4,3 (Morel), λ la longitud de onda. El rojo se absorbe en metros (a = 0,34 m⁻¹), el azul se dispersa: R = 0,0005, 0,013, 0,045 en rojo, verde, azul: azul oscuro. Una cresta fina a contraluz brilla: la luz que cruza d = 1 m se dispersa hacia delante en el plancton (b_p, clorofila 1 mg/m³) con la fase p(θ) de Henyey y Greenstein, g = 0,924, θ el ángulo con el rayo del sol: más verde.',
+    },
+    math: m('<mi>R</mi><mo>=</mo><mfrac><mrow><mi>f</mi><msub><mi>b</mi><mi>b</mi></msub></mrow><mrow><mi>a</mi><mo>+</mo><msub><mi>b</mi><mi>b</mi></msub></mrow></mfrac><mo>,</mo><mspace width="1em"/><msub><mi>L</mi><mtext>glow</mtext></msub><mo>∝</mo><msub><mi>b</mi><mi>p</mi></msub><mi>d</mi><mspace width="0.1em"/><msup><mi>e</mi><mrow><mo>−</mo><mo>(</mo><mi>a</mi><mo>+</mo><msub><mi>b</mi><mi>p</mi></msub><mo>)</mo><mi>d</mi></mrow></msup><mi>p</mi><mo>(</mo><mi>θ</mi><mo>)</mo>')
+      + m('<mi>p</mi><mo>(</mo><mi>θ</mi><mo>)</mo><mo>=</mo><mfrac><mrow><mn>1</mn><mo>−</mo><msup><mi>g</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><mi>π</mi><msup><mrow><mo>(</mo><mn>1</mn><mo>+</mo><msup><mi>g</mi><mn>2</mn></msup><mo>−</mo><mn>2</mn><mi>g</mi><mi>cos</mi><mi>θ</mi><mo>)</mo></mrow><mrow><mn>3</mn><mo>/</mo><mn>2</mn></mrow></msup></mrow></mfrac>'),
+    question: {
+      ask: {
+        en: 'Turn the sun round behind you, sun azimuth from 20° to 200°: will the crests still glow green?',
+        es: 'Gira el sol hasta tu espalda, azimut del sol de 20° a 200°: ¿seguirán brillando en verde las crestas?',
+      },
+      answer: {
+        en: 'No. The glow is light scattered forward: p(θ) is 26.5 sr⁻¹ along the sun’s ray and under 0.005 sr⁻¹ at 90°, and the crests’ faces towards you are now sunlit, not backlit. The water’s own dark blue and the sky’s reflection remain. Move the sun azimuth control.',
+        es: 'No. El brillo es luz dispersada hacia delante: p(θ) vale 26,5 sr⁻¹ en la dirección del rayo del sol y menos de 0,005 sr⁻¹ a 90°, y las caras de las crestas hacia ti quedan iluminadas de frente, no a contraluz. Quedan el azul oscuro del agua y el reflejo del cielo. Mueve el control de azimut del sol.',
+      },
+    },
+    choice: {
+      en: 'Chlorophyll 1 mg/m³, the 1 m crest path and how much of a pixel is crest (Atlas’s and Crest’s forms) are choices; the picked water colour is an artistic override.',
+      es: 'La clorofila de 1 mg/m³, el camino de 1 m y cuánto del píxel es cresta (Atlas, Crest) son elecciones; el color del agua elegido a mano es artístico.',
+    },
+    references: ['popeFry1997', 'morel1974', 'morelPrieur1977', 'morel1988', 'henyeyGreenstein1941'],
+  },
 };

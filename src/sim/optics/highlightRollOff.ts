@@ -9,7 +9,8 @@
  * - above it the excess rolls off exponentially towards white: f(x) = k + (1 − k)(1 − e^−(x−k)/(1−k)).
  *   The curve and its slope are continuous at the knee (slope 1 on both sides), and it rises
  *   all the way: radiance 1 (the sky cube's white) shows as 0.85, 1.5 as 0.96, 2 as 0.99, and
- *   an 8-bit screen shows white from about 2.8 on (the sun's disc, most of the glint's core).
+ *   an 8-bit screen, after the sRGB encoding, shows white from about 2.4 on (the sun's disc,
+ *   most of the glint's core).
  *
  * It is the "shoulder" of film and of the filmic curves (Reinhard et al. 2002; Hable 2010),
  * without their toe: the darks stay linear, so the water's colour from optics shows as computed.
