@@ -5,7 +5,7 @@ import type { LiveWaveModel } from '../../sim/waves/waveModel';
 import type { BoatView } from '../../render/boat/boatView';
 import type { BoatModel } from '../../render/boat/boatModel';
 import type { OceanView } from '../../render/ocean/oceanView';
-import type { Ocean } from '../../render/ocean/ocean';
+import type { BoatInField, InteractiveWaves } from '../../render/iwave/interactiveWaves';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import { addWake, BoatWake, WAKE_HULL, wakeHeightBound } from '../../sim/wake/boatWake';
 import type { WakeTrack } from '../../sim/wake/wakeTrack';
@@ -66,7 +66,7 @@ export class BoatController {
    * following, carries the camera along. Then records the boat into its wake and hands the
    * wake and the hull for this frame to `view`.
    */
-  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>, ocean?: Pick<Ocean, 'setBoat' | 'interactiveWaves'>): void {
+  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>, ocean?: { setBoat(boat: BoatInField | null): void; readonly interactiveWaves: InteractiveWaves | null }): void {
     const previous = this.state?.pose;
     const model = (x: number, z: number) => waves.height(x, z, time);
     const field = ocean?.interactiveWaves;

@@ -164,7 +164,7 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   toggle(UNMARKED_SEA_BED, fixes.seaBedMark);
   toggle(FIXED_GLINT, fixes.slopeRoughness);
   toggle(WINDLESS_ROUGHNESS, fixes.windRoughness);
-  const waves = view.ocean.getParams().waves;
+  const waves = view.ocean.getAllParams().waves;
   toggle(EVERY_CASCADE_SLOPE, waves === 'fft' ? fixes.slopeRoughness : true);
   toggle(EVERY_TROCHOID_SLOPE, waves === 'gerstner' ? fixes.slopeRoughness : true);
   toggle(SOLID_KEPT_FOAM, fixes.foamCoverage);
@@ -195,6 +195,6 @@ export function setShadingFixes(view: OceanView, fixes: Partial<ShadingFixes>): 
   if (fixes.underwaterShortcuts !== undefined) {
     ocean.underwaterShortcuts = fixes.underwaterShortcuts;
     view.clearance.farFitted = fixes.underwaterShortcuts;
-    ocean.apply(ocean.getParams());
+    ocean.apply(ocean.getAllParams());
   }
 }

@@ -3,7 +3,7 @@ import type { OceanParams } from '../../sim/params/params';
 import type { WavesChoice } from '../../sim/waves/waveModel';
 import { compareModelNames, compareStrips, type Strip } from '../../sim/compare/compareLayout';
 import type { PassTiming } from '../diagnostics/passTiming';
-import { applyLook, type Ocean } from '../ocean/ocean';
+import { applyLook, type OceanEngine } from '../ocean/oceanEngine';
 import { CompareSide } from './compareSide';
 import { BASE_STEP, nearBandRefinement } from '../../sim/lod/lodBands';
 
@@ -27,7 +27,7 @@ export class CompareRenderer {
   constructor(
     private readonly renderer: WebGLRenderer,
     private readonly scene: Scene,
-    private readonly ocean: Ocean,
+    private readonly ocean: OceanEngine,
   ) {}
 
   /** Keeps one side per model after the first, in order, reusing those already made. */

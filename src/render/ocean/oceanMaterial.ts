@@ -115,6 +115,8 @@ export class OceanMaterial extends ShaderMaterial {
    * (renderOrigin.ts), so that float32 keeps centimetres 10⁶ m out.
    */
   originFor: (x: number, z: number) => readonly [number, number] = renderOrigin;
+  /** The height of the sea at rest (Ocean.update sets it from the ocean's position.y); the shaders work with the surface at y = 0. */
+  seaLevel = 0;
   private readonly originShift = new Matrix4();
   private readonly eye = new Vector3();
 
@@ -140,9 +142,10 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uRenderOrigin.value as Vector2).set(x, z);
     this.waves.model.setRenderOrigin?.(x, z);
     this.waves.model.setCamera?.(camera, renderer as WebGLRenderer);
-    this.originShift.makeTranslation(x, 0, z);
+    const seaLevel = (this.main ?? this).seaLevel;
+    this.originShift.makeTranslation(x, seaLevel, z);
     (this.uniforms.uViewRelative.value as Matrix4).multiplyMatrices(camera.matrixWorldInverse, this.originShift);
-    (this.uniforms.uEyeRelative.value as Vector3).set(eye.x - x, eye.y, eye.z - z);
+    (this.uniforms.uEyeRelative.value as Vector3).set(eye.x - x, eye.y - seaLevel, eye.z - z);
   }
 
   /** Without its code the sea blends two of the sky's levels per pixel, as every other sea does. */

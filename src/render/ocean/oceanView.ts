@@ -20,7 +20,7 @@ import { UnderwaterStage } from '../underwater/underwaterStage';
 import type { ChunkStats } from '../lod/oceanChunks';
 import { DEFAULT_NEAR } from './nearPlane';
 import { CAMERA_FAR, EyeClearance } from './eyeClearance';
-import { LOOK_KEYS, Ocean } from './ocean';
+import { LOOK_KEYS, OceanEngine } from './oceanEngine';
 
 
 export interface RenderStats extends ChunkStats {
@@ -43,7 +43,7 @@ export class OceanView {
   readonly renderer: WebGLRenderer;
   readonly scene = new Scene();
   readonly camera: PerspectiveCamera;
-  readonly ocean: Ocean;
+  readonly ocean: OceanEngine;
   /** compare=: the models side by side; its code is fetched the first time a comparison is asked for. */
   compare: CompareRenderer | null = null;
   /** Whether compare strips draw only the tiles that reach them (a diagnostic switches it off). */
@@ -87,7 +87,7 @@ export class OceanView {
     this.camera.lookAt(...DEFAULT_CAMERA.target);
     this.customSky = customSky;
     this.params = params;
-    this.ocean = new Ocean(this.renderer, params, customSky ? { sky: customSky } : {});
+    this.ocean = new OceanEngine(this.renderer, params, customSky);
     this.scene.add(this.ocean.sky, this.ocean);
     this.lights = new SceneLights(this.scene);
     this.underwater = new UnderwaterStage(this.renderer, this.scene, this.camera, this.ocean, redraw, partFailed);
@@ -208,7 +208,7 @@ export class OceanView {
 
   /** Settles once every part asked for so far (the underwater passes, the compare code, the Kelvin guide, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return Promise.all([this.underwater.whenLoaded(), this.ocean.ready, this.compareLoad, this.figureLoad, this.kelvinGuideLoad]).then(() => undefined);
+    return Promise.all([this.underwater.whenLoaded(), this.ocean.whenReady(), this.compareLoad, this.figureLoad, this.kelvinGuideLoad]).then(() => undefined);
   }
 
   /**

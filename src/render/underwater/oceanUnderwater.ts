@@ -1,5 +1,5 @@
 import { Vector2, type PerspectiveCamera, type Scene, type WebGLRenderer } from 'three';
-import type { Ocean } from '../ocean/ocean';
+import type { OceanEngine } from '../ocean/oceanEngine';
 import type { PassTiming } from '../diagnostics/passTiming';
 import { encodeSceneForPost } from './sceneEncoding';
 import { UnderwaterPost, type EncodedScene } from './underwaterPost';
@@ -30,7 +30,7 @@ export class OceanUnderwater {
     private readonly renderer: WebGLRenderer,
     private readonly scene: Scene,
     private readonly camera: PerspectiveCamera,
-    private readonly ocean: Ocean,
+    private readonly ocean: OceanEngine,
     options: OceanUnderwaterOptions = {},
   ) {
     this.encodedScene = options.encodedScene ?? 'linear';
@@ -66,19 +66,20 @@ export class OceanUnderwater {
     if (this.encodedScene !== 'linear') encodeSceneForPost(this.scene, false, this.encodedScene === 'every-material');
   }
 
-  /** Each pass's cost in one frame below the surface, the GPU waited for after each. */
+  /** @internal Each pass's cost in one frame below the surface, the GPU waited for after each. */
   profile(sync: () => void): PassTiming[] {
     this.followParams();
     return this.post.profile(this.ocean.submersion === 'straddling', sync);
   }
 
-  /** Bakes the shaft light as the window generic wave models get, even where the lens repeats (a diagnostic). */
+  /** @internal Bakes the shaft light as the window generic wave models get, even where the lens repeats (a diagnostic). */
   set forceShaftLightWindow(on: boolean) {
     this.post.forceShaftLightWindow = on;
   }
 
   private followParams(): void {
-    const params = this.ocean.getParams();
+    this.post.seaLevel = this.ocean.seaLevel;
+    const params = this.ocean.getAllParams();
     const godRays = params.godRays ? params.godRaysIntensity : 0;
     if (params.blurStrength !== this.blur) this.post.setBlur((this.blur = params.blurStrength));
     if (godRays !== this.godRays) this.post.setGodRays((this.godRays = godRays));

@@ -181,6 +181,8 @@ export class UnderwaterPost {
   private shaftTile: ShaftLightTile = { kind: 'tile', origin: [0, 0], extent: 1, size: 1 };
   /** Debug: bake a window even for a model whose lens repeats (tests compare the two). */
   forceShaftLightWindow = false;
+  /** The height of the sea at rest (the Ocean's position.y): the passes work with the surface at y = 0. */
+  seaLevel = 0;
   /** Half-resolution premultiplied water: water → A, blurH → B, blurV → blurred (one pass: A → blurred). */
   private readonly halfA: WebGLRenderTarget;
   private readonly halfB: WebGLRenderTarget;
@@ -355,8 +357,9 @@ export class UnderwaterPost {
     const u = this.volumePass.uniforms; // the view uniforms are shared with the god rays and the composite
     this.camera.updateMatrixWorld();
     (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);
-    (u.uCameraWorld.value as Matrix4).copy(this.camera.matrixWorld);
-    (u.uEye.value as Vector3).copy(this.camera.position);
+    // In the sea's own frame, where the surface at rest is y = 0 (Ocean.seaLevel).
+    (u.uCameraWorld.value as Matrix4).makeTranslation(0, -this.seaLevel, 0).multiply(this.camera.matrixWorld);
+    (u.uEye.value as Vector3).setFromMatrixPosition(u.uCameraWorld.value as Matrix4);
     u.uNear.value = this.camera.near;
     u.uFar.value = this.camera.far;
     if (this.shaftPass.enabled) this.placeShaftLight();
@@ -383,7 +386,7 @@ export class UnderwaterPost {
   /** Plans this frame's bake of the shaft light (src/render/underwater/shaftLightTile.ts) and points the passes at it. */
   private placeShaftLight(): void {
     const model = this.waves.model;
-    const eye = this.camera.position;
+    const eye = (this.volumePass.uniforms.uEye.value as Vector3);
     const sun = this.raysPass.uniforms.uRefractedSun.value as Vector3;
     const period = this.forceShaftLightWindow ? null : model.lensPeriod;
     const tile = planShaftLightTile(period, [eye.x, eye.y, eye.z], [sun.x, sun.y, sun.z]);

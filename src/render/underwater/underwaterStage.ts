@@ -1,5 +1,5 @@
 import type { PerspectiveCamera, Scene, WebGLRenderer } from 'three';
-import type { Ocean } from '../ocean/ocean';
+import type { OceanEngine } from '../ocean/oceanEngine';
 import type { OceanUnderwater } from './oceanUnderwater';
 import type { EncodedScene } from './underwaterPost';
 
@@ -23,7 +23,7 @@ export class UnderwaterStage {
     private readonly renderer: WebGLRenderer,
     private readonly scene: Scene,
     private readonly camera: PerspectiveCamera,
-    private readonly ocean: Ocean,
+    private readonly ocean: OceanEngine,
     private readonly redraw: () => void,
     private readonly partFailed: () => void,
   ) {}
