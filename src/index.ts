@@ -4,6 +4,7 @@
  */
 export { Ocean, type OceanOptions } from './render/ocean/ocean';
 export { OceanUnderwater, type OceanUnderwaterOptions } from './render/underwater/oceanUnderwater';
+export { OceanUnderwaterPass, type OceanUnderwaterPassOptions } from './render/underwater/oceanUnderwaterPass';
 export type { EncodedScene } from './render/underwater/underwaterPost';
 export { defaultParams, paramDefs, validateParams, type OceanParams, type ParamKey } from './sim/params/params';
 export type { SurfaceSample, LiveWaveModel, WavesChoice } from './sim/waves/waveModel';

@@ -19,6 +19,8 @@ import { serveFolder } from './staticServer';
 const ROOT = join(import.meta.dirname, '..', '..');
 const EXAMPLE = join(ROOT, 'examples', 'threejs-scene.html');
 const BUOYS = join(ROOT, 'examples', 'buoys.html');
+const COMPOSER = join(ROOT, 'examples', 'composer.html');
+const COMPOSER_SHOT = process.env.COMPOSER_SHOT ?? '';
 const SHOTS = process.env.BUOYS_SHOT ?? '';
 const CONSUMER = join(ROOT, 'tests', 'browser', 'fixtures', 'package-consumer');
 const TSC = join(ROOT, 'node_modules', 'typescript', 'bin', 'tsc');
@@ -340,6 +342,54 @@ describe('the npm package', () => {
       expect(page).toContain(FOLLOW);
       const seen = await float(page.replace(FOLLOW, ''));
       expect(seen.offSample).toBeGreaterThan(150);
+    });
+  });
+
+  describe('examples/composer.html, served as files', () => {
+    const page = readFileSync(COMPOSER, 'utf8');
+    const PASS = 'composer.addPass(new OceanUnderwaterPass(ocean, camera));';
+
+    /** The page after 12 frames: its errors and the mean colour and detail of its bottom rows, under the water. */
+    async function compose(html: string): Promise<{ errors: string[]; water: { colour: Colour; detail: number }; png: PNG }> {
+      writeFileSync(join(site, 'composer.html'), html);
+      const { server, url } = await serveFolder(site, '/courses/graphics/week-3/');
+      const tab = await browser.newPage();
+      try {
+        tab.setDefaultTimeout(120_000);
+        const errors: string[] = [];
+        tab.on('pageerror', (error) => errors.push(String(error)));
+        tab.on('console', (message) => {
+          if (message.type() === 'error' && !message.location().url?.endsWith('/favicon.ico')) errors.push(message.text());
+        });
+        await tab.evaluateOnNewDocument(() => {
+          const request = window.requestAnimationFrame.bind(window);
+          const counted = window as unknown as { framesStarted: number };
+          counted.framesStarted = 0;
+          window.requestAnimationFrame = (callback) => request((time) => (counted.framesStarted++, callback(time)));
+        });
+        await tab.setViewport({ width: 480, height: 270, deviceScaleFactor: 1 });
+        await tab.goto(`${url}composer.html`, { waitUntil: 'load' });
+        await tab.waitForFunction(() => (window as unknown as { framesStarted: number }).framesStarted >= 12);
+        const png = PNG.sync.read(Buffer.from(await tab.screenshot({ type: 'png' })));
+        return { errors, water: rowsSeen(png, Math.round(png.height * 0.7), png.height), png };
+      } finally {
+        await tab.close();
+        server.close();
+      }
+    }
+
+    it('draws the waterline frame through the user\'s composer: bloom and the underwater pass, no error', async () => {
+      expect(page.split('\n').length).toBeLessThanOrEqual(80);
+      const seen = await compose(page);
+      if (COMPOSER_SHOT) writeFileSync(COMPOSER_SHOT, PNG.sync.write(seen.png));
+      expect(seen.errors).toEqual([]);
+      // Under the water, fog: blue-green, and blurred smooth.
+      expect(seen.water.colour.b).toBeGreaterThan(seen.water.colour.r);
+      const without = await compose(page.replace(PASS, ''));
+      expect(without.errors).toEqual([]);
+      console.log(`[oceano] composer.html water rows: ${JSON.stringify(seen.water)}; without the pass: ${JSON.stringify(without.water)}`);
+      // Control: without the pass the water rows are another picture.
+      expect(distance(seen.water.colour, without.water.colour)).toBeGreaterThan(15);
     });
   });
 

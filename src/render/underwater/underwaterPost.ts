@@ -7,7 +7,6 @@ import {
   LinearToneMapping,
   NeutralToneMapping,
   ReinhardToneMapping,
-  DepthTexture,
   HalfFloatType,
   LinearFilter,
   Matrix4,
@@ -20,12 +19,9 @@ import {
   WebGLRenderTarget,
   type IUniform,
   type PerspectiveCamera,
-  type Scene,
   type ToneMapping,
   type WebGLRenderer,
 } from 'three';
-import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
-import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { FullScreenQuad, Pass } from 'three/addons/postprocessing/Pass.js';
 import fullscreenVertex from '../../../shaders/fullscreen.vert?raw';
 import underwaterFragment from '../../../shaders/underwater.frag?raw';
@@ -37,13 +33,10 @@ import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKerne
 import { planShaftLightTile, type ShaftLightTile } from './shaftLightTile';
 import { resolveChunks } from '../shaders/shaderChunks';
 import { withPassChunks } from './passChunks';
-import { encodeSceneForPost, SCENE_ENCODE_DEFINE, SCENE_LINEAR_DEFINE } from './sceneEncoding';
+import { SCENE_ENCODE_DEFINE, SCENE_LINEAR_DEFINE } from './sceneEncoding';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import type { WaveBinding } from '../waves/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
-
-import type { PassTiming } from '../diagnostics/passTiming';
-export type { PassTiming };
 
 /**
  * The shaft-light texture: repeating for one period of the lens, clamped for a window. One
@@ -77,16 +70,15 @@ function godRaysTarget(encoded: boolean): WebGLRenderTarget {
 }
 
 /**
- * A full-screen draw of one material into a target chosen when the frame runs: its own
- * (then it leaves the composer's buffers alone, needsSwap false) or the composer's
- * write buffer, or the canvas when it is the last pass.
+ * A full-screen draw of one material into a target chosen when the frame runs: its own, or
+ * the chain's output (the composer's write buffer, or the canvas: null).
  */
 class QuadPass extends Pass {
   private readonly quad: FullScreenQuad;
 
   constructor(
     readonly material: ShaderMaterial,
-    private readonly prepare: (readBuffer: WebGLRenderTarget) => WebGLRenderTarget | 'composer',
+    private readonly prepare: (readBuffer: WebGLRenderTarget) => WebGLRenderTarget | 'output',
   ) {
     super();
     this.quad = new FullScreenQuad(material);
@@ -96,13 +88,16 @@ class QuadPass extends Pass {
     return this.material.uniforms;
   }
 
-  render(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget): void {
+  draw(renderer: WebGLRenderer, readBuffer: WebGLRenderTarget, output: WebGLRenderTarget | null): void {
     // A pass that writes what the canvas will show (ENCODE_OUTPUT) runs the renderer's tone curve itself.
     if ('ENCODE_OUTPUT' in this.material.defines) setToneMappingDefine(this.material, renderer.toneMapping);
     const target = this.prepare(readBuffer);
-    this.needsSwap = target === 'composer';
-    renderer.setRenderTarget(target !== 'composer' ? target : this.renderToScreen ? null : writeBuffer);
+    renderer.setRenderTarget(target === 'output' ? output : target);
     this.quad.render(renderer);
+  }
+
+  render(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget): void {
+    this.draw(renderer, readBuffer, this.renderToScreen ? null : writeBuffer);
   }
 
   dispose(): void {
@@ -131,10 +126,9 @@ function setToneMappingDefine(material: ShaderMaterial, toneMapping: ToneMapping
   material.needsUpdate = true;
 }
 
-function blurMaterial(name: string, step: Vector2, encodeOutput = false): ShaderMaterial {
+function blurMaterial(name: string, step: Vector2): ShaderMaterial {
   return new ShaderMaterial({
     name,
-    defines: encodeOutput ? { ENCODE_OUTPUT: '' } : {},
     vertexShader: fullscreenVertex,
     fragmentShader: resolveChunks(blurFragment),
     uniforms: {
@@ -148,16 +142,6 @@ function blurMaterial(name: string, step: Vector2, encodeOutput = false): Shader
 }
 
 /**
- * What the camera sees from under the water, as EffectComposer passes: the scene; the
- * shaft-light tile the god rays read; the water volume (fog, absorption, god rays, and
- * the per-pixel waterline mask); and with the blur on, a separable Gaussian blur
- * (horizontal, then vertical) and a composite that puts the sharp air side back and
- * tone-maps. The water pass and the blur run at half resolution when the blur is on: the
- * blur softens that detail anyway. With the blur off, the water pass runs at full resolution
- * and tone-maps onto the canvas itself. Only used while some of the view is under the water; above
- * it, the view renders directly.
- */
-/**
  * How the scene reaches the underwater passes. 'linear': a half-float target, every
  * material as it is. 'oceano-materials': an RGBA8 target holding an encoding that Oceano's
  * own materials write, for scenes with nothing else in them. 'every-material': the same, and
@@ -166,16 +150,36 @@ function blurMaterial(name: string, step: Vector2, encodeOutput = false): Shader
  */
 export type EncodedScene = 'linear' | 'oceano-materials' | 'every-material';
 
+/**
+ * The blur's result, which the composite upsamples. Onto the canvas: RGBA8 holding the water
+ * colour as the canvas will (sRGB), premultiplied (shaders/gaussianBlur.frag, ENCODE_OUTPUT);
+ * the two passes before it keep half floats: three roundings to 8 bits grained the smooth
+ * water (neighbouring pixels one level apart in 45 % of the deep view instead of 25 %); one,
+ * as here, does not. Into a composer's buffer: linear colour in half floats, as the passes
+ * after it (bloom, OutputPass) expect.
+ */
+function blurredTarget(toCanvas: boolean): WebGLRenderTarget {
+  return new WebGLRenderTarget(1, 1, { type: toCanvas ? UnsignedByteType : HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+}
+
+/**
+ * What the camera sees from under the water, drawn from a scene already rendered (colour and
+ * depth): the shaft-light tile the god rays read; the water volume (fog, absorption, god
+ * rays, and the per-pixel waterline mask); and with the blur on, a separable Gaussian blur
+ * (horizontal, then vertical) and a composite that puts the sharp air side back. The water
+ * pass and the blur run at half resolution when the blur is on: the blur softens that detail
+ * anyway. With the blur off, the water pass runs at full resolution and writes the output
+ * itself. Onto the canvas the last pass tone-maps and encodes as the renderer would; into a
+ * render target it writes linear colour. OceanUnderwaterPass runs it as one composer pass.
+ */
 export class UnderwaterPost {
-  private readonly composer: EffectComposer;
-  private readonly scenePass: RenderPass;
   private readonly shaftPass: QuadPass;
   private readonly raysPass: QuadPass;
   private readonly volumePass: QuadPass;
   private readonly blurH: QuadPass;
   private readonly blurV: QuadPass;
   private readonly compositePass: QuadPass;
-  private readonly named: [string, Pass][];
+  private readonly named: [string, QuadPass][];
   /** The baked shaft light; remade when the tile's kind or size changes (a switch of wave model). */
   private shaftTarget: WebGLRenderTarget;
   private shaftTile: ShaftLightTile = { kind: 'tile', origin: [0, 0], extent: 1, size: 1 };
@@ -186,40 +190,31 @@ export class UnderwaterPost {
   /** Half-resolution premultiplied water: water → A, blurH → B, blurV → blurred (one pass: A → blurred). */
   private readonly halfA: WebGLRenderTarget;
   private readonly halfB: WebGLRenderTarget;
-  /**
-   * The blur's result, which the composite upsamples: RGBA8 holding the water colour as the
-   * canvas will (sRGB), premultiplied (shaders/gaussianBlur.frag, ENCODE_OUTPUT). The two passes before
-   * it keep half floats: three roundings to 8 bits grained the smooth water (neighbouring pixels
-   * one level apart in 45 % of the deep view instead of 25 %); one, as here, does not.
-   */
-  private readonly blurred: WebGLRenderTarget;
+  /** The blur's result (blurredTarget), remade when the output moves between the canvas and a render target. */
+  private blurred: WebGLRenderTarget;
+  private blurredToCanvas = true;
   /** The god rays, at half the water pass's resolution (a quarter of the canvas's with the blur on). */
   private readonly rays: WebGLRenderTarget;
   private blurOn = false;
   /** The one-pass blur's tap offset in texels (src/render/underwater/gaussianKernel.ts), or null: two passes. */
   private onePassOffset: number | null = null;
+  /** The output's size in pixels (the scene target's). */
+  private readonly size = new Vector2(1, 1);
 
+  /** sceneEncoded: the scene target holds the encoding of sceneEncoding.ts (RGBA8) rather than linear half floats. */
   constructor(
-    private readonly renderer: WebGLRenderer,
-    private readonly scene: Scene,
     private readonly camera: PerspectiveCamera,
     private readonly waves: WaveBinding,
     shared: WaterVolumeUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
-    private readonly encodedScene: EncodedScene = 'linear',
+    sceneEncoded = false,
   ) {
-    const size = renderer.getDrawingBufferSize(new Vector2());
-    const encoded = encodedScene !== 'linear';
-    // perf: encoded, the scene goes to RGBA8 (sceneEncoding.ts), which the software rasterizer writes far faster than half floats (docs/performance.md).
-    const target = new WebGLRenderTarget(size.x, size.y, { type: encoded ? UnsignedByteType : HalfFloatType, depthTexture: new DepthTexture(size.x, size.y) });
-    this.rays = godRaysTarget(encoded);
-    const decode = encoded ? {} : { [SCENE_LINEAR_DEFINE]: '' };
+    this.rays = godRaysTarget(sceneEncoded);
+    const decode = sceneEncoded ? {} : { [SCENE_LINEAR_DEFINE]: '' };
     const halfOptions = { type: HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false };
-    this.halfA = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
-    this.halfB = new WebGLRenderTarget(half(size.x), half(size.y), halfOptions);
-    this.blurred = new WebGLRenderTarget(half(size.x), half(size.y), { ...halfOptions, type: UnsignedByteType });
+    this.halfA = new WebGLRenderTarget(1, 1, halfOptions);
+    this.halfB = new WebGLRenderTarget(1, 1, halfOptions);
+    this.blurred = blurredTarget(this.blurredToCanvas);
     this.shaftTarget = shaftLightTarget(this.shaftTile);
-    this.composer = new EffectComposer(renderer, target);
-    this.scenePass = new RenderPass(scene, camera);
 
     // Where the bake lies, the same objects in the bake and the water pass.
     const tile: Record<string, IUniform> = { uShaftOrigin: { value: new Vector2() }, uShaftExtent: { value: 1 } };
@@ -241,7 +236,7 @@ export class UnderwaterPost {
     this.raysPass = new QuadPass(
       new ShaderMaterial({
         name: 'UnderwaterGodRays',
-        defines: encoded ? { [SCENE_ENCODE_DEFINE]: '' } : {},
+        defines: sceneEncoded ? { [SCENE_ENCODE_DEFINE]: '' } : {},
         vertexShader: fullscreenVertex,
         fragmentShader: resolveChunks(withPassChunks(godRaysFragment)),
         uniforms: { ...shared, ...view, ...tile, tShaftLight: { value: this.shaftTarget.texture }, uGodRays: { value: 0 } },
@@ -262,7 +257,7 @@ export class UnderwaterPost {
       (readBuffer) => {
         this.volumePass.uniforms.tDiffuse.value = readBuffer.texture;
         view.tDepth.value = readBuffer.depthTexture;
-        return this.blurOn ? this.halfA : 'composer';
+        return this.blurOn ? this.halfA : 'output';
       },
     );
     const stepH = new Vector2();
@@ -271,7 +266,7 @@ export class UnderwaterPost {
       this.blurH.uniforms.tDiffuse.value = this.halfA.texture;
       return this.halfB;
     });
-    this.blurV = new QuadPass(blurMaterial('BlurVertical', stepV, true), () => {
+    this.blurV = new QuadPass(blurMaterial('BlurVertical', stepV), () => {
       this.blurV.uniforms.tDiffuse.value = (this.blurH.enabled ? this.halfB : this.halfA).texture;
       return this.blurred;
     });
@@ -286,11 +281,10 @@ export class UnderwaterPost {
       (readBuffer) => {
         this.compositePass.uniforms.tDiffuse.value = readBuffer.texture;
         view.tDepth.value = readBuffer.depthTexture;
-        return 'composer';
+        return 'output';
       },
     );
     this.named = [
-      ['scene', this.scenePass],
       ['shafts', this.shaftPass],
       ['rays', this.raysPass],
       ['water', this.volumePass],
@@ -298,23 +292,22 @@ export class UnderwaterPost {
       ['blurV', this.blurV],
       ['composite', this.compositePass],
     ];
-    for (const [, pass] of this.named) this.composer.addPass(pass);
     this.setBlur(0);
   }
 
-  setSize(width: number, height: number, pixelRatio: number): void {
-    this.composer.setPixelRatio(pixelRatio);
-    this.composer.setSize(width, height);
+  /** The scene target's size in pixels (the drawing buffer's, for a composer sized to the canvas). */
+  setSize(width: number, height: number): void {
+    this.size.set(Math.max(1, width), Math.max(1, height));
     this.fitTargets();
   }
 
   /**
-   * What follows the drawing buffer's size and the blur: the half-resolution targets, the blur
+   * What follows the output's size and the blur: the half-resolution targets, the blur
    * passes' texel steps (one texel across, then down; or the one-pass blur's diagonal tap), and
    * the god rays' target at half the water pass's size (half the canvas's with the blur on).
    */
   private fitTargets(): void {
-    const size = this.renderer.getDrawingBufferSize(new Vector2());
+    const size = this.size;
     const width = half(size.x);
     const height = half(size.y);
     for (const target of [this.halfA, this.halfB, this.blurred]) target.setSize(width, height);
@@ -351,9 +344,17 @@ export class UnderwaterPost {
     this.raysPass.enabled = intensity > 0;
   }
 
-/** Draws the frame; perPixelWaterline when the near plane may cross the surface. Returns the passes run. */
-  render(perPixelWaterline: boolean, afterEachPass?: (name: string) => void): number {
-    if (this.encodedScene !== 'linear') encodeSceneForPost(this.scene, true, this.encodedScene === 'every-material');
+  /**
+   * Draws the water over `scene` (its colour and depth texture) into `output` (null: the
+   * canvas); perPixelWaterline when the near plane may cross the surface. Returns the passes run.
+   */
+  render(
+    renderer: WebGLRenderer,
+    scene: WebGLRenderTarget,
+    output: WebGLRenderTarget | null,
+    perPixelWaterline: boolean,
+    afterEachPass?: (name: string) => void,
+  ): number {
     const u = this.volumePass.uniforms; // the view uniforms are shared with the god rays and the composite
     this.camera.updateMatrixWorld();
     (u.uProjectionInverse.value as Matrix4).copy(this.camera.projectionMatrixInverse);
@@ -364,23 +365,26 @@ export class UnderwaterPost {
     u.uFar.value = this.camera.far;
     if (this.shaftPass.enabled) this.placeShaftLight();
     for (const pass of [this.volumePass, this.compositePass]) setMaterialDefine(pass.material, 'PER_PIXEL_WATERLINE', perPixelWaterline);
-    const restore: [Pass, Pass['render']][] = [];
-    if (afterEachPass) {
-      for (const [name, pass] of this.named) {
-        const original = pass.render;
-        restore.push([pass, original]);
-        pass.render = (...args: Parameters<Pass['render']>) => {
-          original.apply(pass, args);
-          afterEachPass(pass === this.blurV && this.onePassOffset !== null ? 'blur' : name);
-        };
-      }
+    if (this.blurOn) this.blurInto(output === null);
+    let run = 0;
+    for (const [name, pass] of this.named) {
+      if (!pass.enabled) continue;
+      pass.draw(renderer, scene, output);
+      run++;
+      afterEachPass?.(pass === this.blurV && this.onePassOffset !== null ? 'blur' : name);
     }
-    try {
-      this.composer.render(0);
-    } finally {
-      for (const [pass, original] of restore) pass.render = original;
-    }
-    return this.named.filter(([, pass]) => pass.enabled).length;
+    return run;
+  }
+
+  /** The blur's last pass writes as the canvas holds colour, or linear for a render target (blurredTarget). */
+  private blurInto(toCanvas: boolean): void {
+    setMaterialDefine(this.blurV.material, 'ENCODE_OUTPUT', toCanvas);
+    if (toCanvas === this.blurredToCanvas) return;
+    this.blurredToCanvas = toCanvas;
+    this.blurred.dispose();
+    this.blurred = blurredTarget(toCanvas);
+    this.compositePass.uniforms.tBlurred.value = this.blurred.texture;
+    this.fitTargets();
   }
 
   /** Plans this frame's bake of the shaft light (src/render/underwater/shaftLightTile.ts) and points the passes at it. */
@@ -402,24 +406,9 @@ export class UnderwaterPost {
     setMaterialDefine(this.raysPass.material, 'SHAFT_LIGHT_WINDOW', tile.kind === 'window');
   }
 
-  /** Each enabled pass's cost in one frame, with the GPU waited for after each. */
-  profile(perPixelWaterline: boolean, sync: () => void): PassTiming[] {
-    const timings: PassTiming[] = [];
-    sync();
-    let start = performance.now();
-    this.render(perPixelWaterline, (name) => {
-      sync();
-      const now = performance.now();
-      timings.push({ name, ms: now - start });
-      start = now;
-    });
-    return timings;
-  }
-
   dispose(): void {
     for (const pass of [this.shaftPass, this.volumePass, this.compositePass]) this.waves.detach(pass.material);
     for (const [, pass] of this.named) pass.dispose();
     for (const target of [this.shaftTarget, this.halfA, this.halfB, this.blurred, this.rays]) target.dispose();
-    this.composer.dispose();
   }
 }
