@@ -2,6 +2,7 @@ import { LESSON_QUOTES } from 'virtual:oceano-lesson-quotes';
 import { LESSON_TEXTS } from '../app/lessons/lessonTexts';
 import { LESSON_TITLES } from '../app/lessons/lessonOutline';
 import { lessonPoster } from './lessonFigure';
+import { linkedText, referencesFold, writeBibliography, writeGlossary } from './backMatterElements';
 
 type Language = 'es' | 'en';
 
@@ -19,10 +20,13 @@ function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: strin
   return e;
 }
 
-/** The lesson card's parts, in the page's language: text, the stand-in-or-choice line, equations, question, code. */
+/**
+ * The lesson card's parts, in the page's language: text (its glossary terms linked), the
+ * stand-in-or-choice line, equations, question, code, references.
+ */
 function cardBody(id: string, language: Language): HTMLElement[] {
   const card = LESSON_TEXTS[id];
-  const parts: HTMLElement[] = [element('p', 'lesson-text', card.text[language])];
+  const parts: HTMLElement[] = [linkedText('lesson-text', card.text[language], language)];
   if (card.choice) parts.push(element('p', 'lesson-choice', card.choice[language]));
   const math = element('div', 'equation');
   // MathML from the cards' own source (lessonTexts.ts), never from the page's input.
@@ -41,6 +45,7 @@ function cardBody(id: string, language: Language): HTMLElement[] {
     details.append(element('summary', '', `${WORDS.code[language]}: ${quote.file}, ${quote.firstLine}–${quote.lastLine}`), pre);
     parts.push(details);
   }
+  if (card.references?.length) parts.push(referencesFold(card.references, language));
   return parts;
 }
 
@@ -56,7 +61,8 @@ function appLink(id: string, language: Language): HTMLAnchorElement {
 /**
  * Writes every figure's caption and every linked card from its lesson's card (data-lesson):
  * a figure gets "Figure N." and the title, a card its title as a heading and the lesson's
- * poster; both the card's words, equations and code, and a link that opens the lesson.
+ * poster; both the card's words, equations, code and references, and a link that opens the
+ * lesson. Then the bibliography and glossary chapters the captions link to.
  */
 export function writeCaptions(language: Language): void {
   let figures = 0;
@@ -84,5 +90,9 @@ export function writeCaptions(language: Language): void {
       holder.replaceChildren(element('h3', 'lesson-title', title), picture, ...cardBody(id, language), appLink(id, language));
     }
   }
+  const bibliography = document.querySelector<HTMLElement>('[data-back-matter="bibliography"]');
+  const glossary = document.querySelector<HTMLElement>('[data-back-matter="glossary"]');
+  if (bibliography) writeBibliography(bibliography);
+  if (glossary) writeGlossary(glossary, language);
   document.documentElement.dataset.captions = 'written';
 }

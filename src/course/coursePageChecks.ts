@@ -1,6 +1,11 @@
 import { findLesson, lessonView } from '../app/lessons/lessonCatalog';
 import { parseSettings } from '../app/url/urlState';
 import { paramKeys } from '../sim/params/params';
+import type { Language } from '../app/language/i18n';
+import { BIBLIOGRAPHY, type ReferenceKey } from '../app/lessons/bibliography';
+import { GLOSSARY, type GlossaryKey } from '../app/lessons/glossary';
+import { citation } from '../app/lessons/referenceLists';
+import { workAnchor } from './backMatter';
 
 /** HTML lowercases attribute names: the parameter each lowercase name stands for, as <oceano-view> reads it. */
 const PARAM_BY_LOWERCASE = new Map(paramKeys.map((key) => [key.toLowerCase(), key]));
@@ -35,6 +40,8 @@ export interface ShownLesson {
   text: string;
   /** The quoted code, null when none is shown. */
   code: string | null;
+  /** The citations in the caption's References fold, in order; empty when it has none. */
+  references: string[];
   /** A live figure's <oceano-view> attributes; null for a card. */
   attributes: [string, string][] | null;
 }
@@ -43,6 +50,8 @@ export interface ShownLesson {
 export interface CardSource {
   text: (id: string) => string;
   code: (id: string) => string | null;
+  /** The card's references, each in full (citation form). */
+  references: (id: string) => string[];
 }
 
 /** Each way a shown lesson differs from its own card and view, in words; empty when it is its own. */
@@ -52,12 +61,57 @@ export function shownLessonFaults(shown: ShownLesson, card: CardSource): string[
   if (!lesson) return [`${shown.lesson}: no such lesson`];
   if (shown.text !== card.text(lesson.id)) faults.push(`${lesson.id}: the caption's text is not the card's`);
   if (shown.code !== card.code(lesson.id)) faults.push(`${lesson.id}: the quoted code is not the lesson's`);
+  if (JSON.stringify(shown.references) !== JSON.stringify(card.references(lesson.id))) faults.push(`${lesson.id}: the caption's references are not the card's`);
   if (shown.attributes) {
     const state = parseSettings(shown.attributes.map(([name, value]): [string, string] => [PARAM_BY_LOWERCASE.get(name.toLowerCase()) ?? name, value]));
     const view = lessonView(lesson);
     if (JSON.stringify(state.params) !== JSON.stringify(view.params)) faults.push(`${lesson.id}: the figure's parameters are not the lesson's`);
     if (JSON.stringify(state.camera) !== JSON.stringify(view.camera)) faults.push(`${lesson.id}: the figure's camera is not the lesson's`);
     if (state.notices.length) faults.push(`${lesson.id}: the figure's attributes raise notices`);
+  }
+  return faults;
+}
+
+/** An entry of the page's bibliography or glossary: its id and its words. */
+export interface ListedEntry {
+  id: string;
+  text: string;
+}
+
+/**
+ * How the page's bibliography differs from the works the cards cite: a cited work missing
+ * or not in full under its id, an entry no card cites, an id listed twice.
+ */
+export function bibliographyFaults(entries: ListedEntry[], cited: readonly ReferenceKey[]): string[] {
+  const faults: string[] = [];
+  const byId = new Map(entries.map((entry) => [entry.id, entry.text]));
+  if (byId.size !== entries.length) faults.push('an id is listed twice');
+  for (const key of cited) {
+    const text = byId.get(workAnchor(key));
+    if (text === undefined) faults.push(`${key}: cited but not in the bibliography`);
+    else if (text !== citation(BIBLIOGRAPHY[key])) faults.push(`${key}: its entry is not its citation`);
+  }
+  const citedIds = new Set(cited.map(workAnchor));
+  for (const entry of entries) if (!citedIds.has(entry.id)) faults.push(`${entry.id}: listed but cited by no card`);
+  return faults;
+}
+
+/** The links (href "#id") whose target is none of `ids`. */
+export function unresolvedLinks(hrefs: readonly string[], ids: readonly string[]): string[] {
+  const present = new Set(ids);
+  return hrefs.filter((href) => !href.startsWith('#') || !present.has(href.slice(1)));
+}
+
+/**
+ * How a caption's term links go wrong: a link to no glossary entry of the page, or whose
+ * words are none of that term's forms in the page's language.
+ */
+export function termLinkFaults(links: readonly { href: string; text: string }[], entryIds: readonly string[], language: Language): string[] {
+  const faults = unresolvedLinks(links.map((link) => link.href), entryIds).map((href) => `${href}: no glossary entry`);
+  for (const { href, text } of links) {
+    const key = href.replace(/^#term-/, '') as GlossaryKey;
+    const forms = GLOSSARY[key]?.words[language].map((form) => form.toLocaleLowerCase(language)) ?? [];
+    if (!forms.includes(text.toLocaleLowerCase(language))) faults.push(`${href}: "${text}" is not that term`);
   }
   return faults;
 }

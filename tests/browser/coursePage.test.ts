@@ -7,11 +7,15 @@ import { ensurePosters } from './distPosters';
 import { lessonIds } from '../../src/app/lessons/lessonCatalog';
 import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
 import { readLessonQuotes } from '../../scripts/build/lessonQuotes';
-import { bannedSpanishWords, shownLessonFaults, type CardSource, type ShownLesson } from '../../src/course/coursePageChecks';
+import { BIBLIOGRAPHY } from '../../src/app/lessons/bibliography';
+import { citation } from '../../src/app/lessons/referenceLists';
+import { citedWorks, glossaryEntries } from '../../src/course/backMatter';
+import { bannedSpanishWords, bibliographyFaults, shownLessonFaults, termLinkFaults, unresolvedLinks, type CardSource, type ListedEntry, type ShownLesson } from '../../src/course/coursePageChecks';
 
 const harness = useHarness();
 const quotes = readLessonQuotes(join(import.meta.dirname, '..', '..'));
-const cards = (language: 'es' | 'en'): CardSource => ({ text: (id) => LESSON_TEXTS[id].text[language], code: (id) => quotes[id]?.text ?? null });
+const citations = (id: string) => (LESSON_TEXTS[id].references ?? []).map((key) => citation(BIBLIOGRAPHY[key]));
+const cards = (language: 'es' | 'en'): CardSource => ({ text: (id) => LESSON_TEXTS[id].text[language], code: (id) => quotes[id]?.text ?? null, references: citations });
 
 /** Every figure and card as the page shows it, once its captions are written. */
 async function shownLessons(page: Page): Promise<ShownLesson[]> {
@@ -23,10 +27,37 @@ async function shownLessons(page: Page): Promise<ShownLesson[]> {
         lesson: holder.dataset.lesson!,
         text: holder.querySelector('.lesson-text')?.textContent ?? '',
         code: holder.querySelector('.code-quote code')?.textContent ?? null,
+        references: Array.from(holder.querySelectorAll('.lesson-references li'), (li) => li.textContent ?? ''),
         attributes: view ? view.getAttributeNames().filter((n) => !['lang', 'poster', 'alt', 'class', 'style'].includes(n)).map((n): [string, string] => [n, view.getAttribute(n)!]) : null,
       };
     }),
   );
+}
+
+/** The page's bibliography and glossary, and the captions' links into them. */
+async function backMatter(page: Page) {
+  return page.evaluate(() => {
+    const entries = (selector: string) => Array.from(document.querySelectorAll(selector), (e) => ({ id: e.id, text: e.textContent ?? '' }));
+    return {
+      bibliography: entries('.bibliography li') as ListedEntry[],
+      glossary: entries('.glossary dt') as ListedEntry[],
+      definitions: Array.from(document.querySelectorAll('.glossary dd'), (dd) => dd.textContent),
+      referenceLinks: Array.from(document.querySelectorAll('.lesson-references a'), (a) => a.getAttribute('href') ?? ''),
+      termLinks: Array.from(document.querySelectorAll('.lesson-text a.glossary-term'), (a) => ({ href: a.getAttribute('href') ?? '', text: a.textContent ?? '' })),
+    };
+  });
+}
+
+/** Every way the page's back matter and its links fail, in `language`. */
+function backMatterFaults(matter: Awaited<ReturnType<typeof backMatter>>, language: 'es' | 'en'): string[] {
+  const glossary = glossaryEntries(language);
+  return [
+    ...bibliographyFaults(matter.bibliography, citedWorks(LESSON_TEXTS)),
+    ...unresolvedLinks(matter.referenceLinks, matter.bibliography.map((entry) => entry.id)).map((href) => `${href}: no bibliography entry`),
+    ...termLinkFaults(matter.termLinks, matter.glossary.map((entry) => entry.id), language),
+    ...(JSON.stringify(matter.glossary.map((entry) => entry.text)) === JSON.stringify(glossary.map((entry) => entry.headword)) ? [] : ['the glossary\'s headwords are not the terms in the page\'s language']),
+    ...(JSON.stringify(matter.definitions) === JSON.stringify(glossary.map((entry) => entry.term.definition[language])) ? [] : ['the glossary\'s definitions are not the terms\' in the page\'s language']),
+  ];
 }
 
 type ViewElement = HTMLElement & { oceano: (typeof window)['oceano'] | null };
@@ -82,6 +113,11 @@ describe('the course page (dist/course/)', () => {
     expect(shown.flatMap((s) => shownLessonFaults(s, cards('es')))).toEqual([]);
     // Control: each one read as if it named the next lesson is caught.
     for (let i = 0; i < shown.length; i++) expect(shownLessonFaults({ ...shown[i], lesson: shown[(i + 1) % shown.length].lesson }, cards('es'))).not.toEqual([]);
+    // Every card's references in its caption (shownLessonFaults), every cited work in the bibliography, every link landing on an entry.
+    const matter = await backMatter(page);
+    expect(matter.referenceLinks.length).toBe(Object.values(LESSON_TEXTS).reduce((n, card) => n + (card.references?.length ?? 0), 0));
+    expect(matter.termLinks.length).toBeGreaterThan(lessonIds.length);
+    expect(backMatterFaults(matter, 'es')).toEqual([]);
     // One Spanish register, cards included.
     expect(bannedSpanishWords(await page.evaluate(() => document.body.innerText))).toEqual([]);
     const links = await page.evaluate(() => Array.from(document.querySelectorAll<HTMLAnchorElement>('a.open-in-app'), (a) => a.search));
@@ -122,8 +158,13 @@ describe('the course page (dist/course/)', () => {
     const { page, consoleErrors } = await recordedPage(harness, 1366, 768);
     await page.goto(`${harness.baseUrl}index.html?lang=es`, { waitUntil: 'load' });
     const link = await page.waitForSelector('a.oceano-lessons-course');
-    const { href, text, last } = await link!.evaluate((a) => ({ href: (a as HTMLAnchorElement).href, text: a.textContent, last: a.closest('li') === a.closest('ol')!.lastElementChild }));
-    expect(last).toBe(true);
+    // After every lesson of the list (the bibliography and glossary buttons may follow it).
+    const { href, text, afterLessons } = await link!.evaluate((a) => ({
+      href: (a as HTMLAnchorElement).href,
+      text: a.textContent,
+      afterLessons: Array.from(a.closest('ol')!.querySelectorAll('[data-lesson]')).every((lesson) => lesson.compareDocumentPosition(a) & Node.DOCUMENT_POSITION_FOLLOWING),
+    }));
+    expect(afterLessons).toBe(true);
     expect(text).toMatch(/^La página del curso/);
     expect(href).toBe(`${harness.baseUrl}course/index.html?lang=es`);
     await Promise.all([page.waitForNavigation(), link!.click()]);
@@ -150,6 +191,17 @@ describe('the course page (dist/course/)', () => {
     expect(shown.flatMap((s) => shownLessonFaults(s, cards('en')))).toEqual([]);
     // Control: held to the Spanish cards, every one fails.
     expect(shown.every((s) => shownLessonFaults(s, cards('es')).length > 0)).toBe(true);
+    // The bibliography, the English glossary, and the captions' links into them.
+    const matter = await backMatter(page);
+    expect(matter.termLinks.length).toBeGreaterThan(lessonIds.length);
+    expect(backMatterFaults(matter, 'en')).toEqual([]);
+    // Controls: held to Spanish the glossary fails; an entry that loses its id strands the links to it.
+    expect(backMatterFaults(matter, 'es')).not.toEqual([]);
+    const [reference, term] = [matter.referenceLinks[0], matter.termLinks[0].href];
+    await page.evaluate((ids) => ids.forEach((id) => document.getElementById(id)!.removeAttribute('id')), [reference.slice(1), term.slice(1)]);
+    const broken = backMatterFaults(await backMatter(page), 'en');
+    expect(broken).toContain(`${reference}: no bibliography entry`);
+    expect(broken).toContain(`${term}: no glossary entry`);
     expect(consoleErrors).toEqual([]);
     await page.close();
   });
