@@ -245,7 +245,7 @@ describe('heightSeriesAt: many points, one pass over time', () => {
     order.forEach((t, i) => (changes += i === 0 || t !== order[i - 1] ? 1 : 0));
     expect(changes).toBe(64);
     // Negative control: point by point, the same samples change time 3 × 64 times.
-    const byPoint = points.flatMap(([x, z]) => Array.from({ length: 64 }, (_, i) => 5 + i * 0.25));
+    const byPoint = points.flatMap(() => Array.from({ length: 64 }, (_, i) => 5 + i * 0.25));
     expect(byPoint.filter((t, i) => i === 0 || t !== byPoint[i - 1]).length).toBe(192);
   });
 });
