@@ -7,6 +7,7 @@ import {
   fitDispersion,
   frequencySpectrum,
   heightSeries,
+  heightSeriesAt,
   peakPeriod,
   significantWaveHeight,
   spectralMoment0,
@@ -230,4 +231,21 @@ describe('Estimator input checks', () => {
     expect(() => frequencySpectrum(new Float64Array(100), 1, 128)).toThrow(/shorter/);
     expect(() => estimateDispersion(() => 0, { size: 10, resolution: 48, startTime: 0, timeStep: 1, snapshots: 4 })).toThrow(/power of two/);
   }, SLOW);
+});
+
+describe('heightSeriesAt: many points, one pass over time', () => {
+  it('gives each point its own series, identical to heightSeries there, with time the outer loop', () => {
+    const sampler = (x: number, z: number, t: number) => Math.sin(0.3 * x + 0.7 * t) * Math.cos(0.2 * z);
+    const points: [number, number][] = [[1, 2], [40, -7], [-13, 5]];
+    const order: number[] = [];
+    const many = heightSeriesAt((x, z, t) => (order.push(t), sampler(x, z, t)), points, 5, 0.25, 64);
+    points.forEach(([x, z], p) => expect(Array.from(many[p])).toEqual(Array.from(heightSeries(sampler, x, z, 5, 0.25, 64))));
+    // A twin that computes a field per new time: 64 changes of time, not 3 × 64.
+    let changes = 0;
+    order.forEach((t, i) => (changes += i === 0 || t !== order[i - 1] ? 1 : 0));
+    expect(changes).toBe(64);
+    // Negative control: point by point, the same samples change time 3 × 64 times.
+    const byPoint = points.flatMap(() => Array.from({ length: 64 }, (_, i) => 5 + i * 0.25));
+    expect(byPoint.filter((t, i) => i === 0 || t !== byPoint[i - 1]).length).toBe(192);
+  });
 });

@@ -29,8 +29,10 @@ describe('the physics panel\'s report on the Gerstner sea (PM, seed 1, 32 waves,
     expect(Math.abs(r.dispersion.fitRatio - 1)).toBeLessThan(0.08);
     expect(Math.abs(r.peak.measured / r.peak.theory! - 1)).toBeLessThan(0.12);
     expect(Math.abs(r.peakPeriod.measured / r.peakPeriod.theory! - 1)).toBeLessThan(0.12);
-    expect(Math.abs(r.hs.measured / r.hs.spectral! - 1)).toBeLessThan(0.02);
-    expect(Math.abs(r.hs.measured / r.hs.empirical! - 1)).toBeLessThan(0.02);
+    // 16 points × 512 samples (64 Tp each, not one point's 1024 Tp): the beats of 32 waves leave
+    // 2.3–2.5 % in 4σ(η) at U = 5, 10, 15.
+    expect(Math.abs(r.hs.measured / r.hs.spectral! - 1)).toBeLessThan(0.03);
+    expect(Math.abs(r.hs.measured / r.hs.empirical! - 1)).toBeLessThan(0.03);
     expect(r.spectrum.theory).not.toBeNull();
     expect(r.citations.map((c) => c.source).join(' ')).toMatch(/Pierson & Moskowitz 1964/);
   }, SLOW);

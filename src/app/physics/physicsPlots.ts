@@ -142,7 +142,7 @@ export class PhysicsView {
       series.push({ label: 'model spectrum', stroke: '#1c7ed6' });
       (data as number[][]).push(r.spectrum.theory.map((s) => Math.max(s, floor)));
     }
-    const { figure, target } = this.figure('S(ω) of one point’s heights (Welch) against the model’s spectrum [2, 4]');
+    const { figure, target } = this.figure('S(ω) of 16 points’ heights (Welch) against the model’s spectrum [2, 4]');
     this.plots.push(
       new uPlot(
         {

@@ -282,6 +282,30 @@ export function peakPeriod(peakOmega: number): number {
   return TWO_PI / peakOmega;
 }
 
+/**
+ * Several points' heights η(xₚ, zₚ, t₀ + i dt), i < count, one series per point. Time is the
+ * outer loop: a sampler that computes a whole field per time (the FFT twin: all its inverse
+ * FFTs for each new t) computes it once for all the points, so P points cost about what one
+ * does.
+ */
+export function heightSeriesAt(sampler: HeightSampler, points: readonly (readonly [number, number])[], startTime: number, timeStep: number, count: number): Float64Array[] {
+  const series = points.map(() => new Float64Array(count));
+  for (let i = 0; i < count; i++) {
+    const t = startTime + i * timeStep;
+    for (let p = 0; p < points.length; p++) series[p][i] = sampler(points[p][0], points[p][1], t);
+  }
+  return series;
+}
+
+/** Welch's estimate of each series (frequencySpectrum), averaged bin by bin: one sea's spectrum seen at several points. */
+export function meanFrequencySpectrum(series: readonly ArrayLike<number>[], timeStep: number, segment: number): FrequencySpectrumEstimate {
+  if (series.length === 0) throw new Error('No series to average.');
+  const estimates = series.map((s) => frequencySpectrum(s, timeStep, segment));
+  const density = new Float64Array(estimates[0].density.length);
+  for (const e of estimates) for (let m = 0; m < density.length; m++) density[m] += e.density[m] / estimates.length;
+  return { omega: estimates[0].omega, density, resolution: estimates[0].resolution };
+}
+
 /** One point's heights η(x, z, t₀ + i dt), i < count: the series the spectrum and Hs read. */
 export function heightSeries(sampler: HeightSampler, x: number, z: number, startTime: number, timeStep: number, count: number): Float64Array {
   const series = new Float64Array(count);

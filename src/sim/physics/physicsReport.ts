@@ -2,8 +2,8 @@ import { angularFrequency, GRAVITY } from '../waves/dispersion';
 import {
   estimateDispersion,
   fitDispersion,
-  frequencySpectrum as welchSpectrum,
-  heightSeries,
+  heightSeriesAt,
+  meanFrequencySpectrum,
   peakPeriod,
   significantWaveHeight,
   spectralPeak,
@@ -54,7 +54,7 @@ export interface PhysicsReport {
   peakPeriod: { measured: number; theory: number | null };
   /** Significant wave height, m. */
   hs: {
-    /** 4 σ(η) of one point's height series. */
+    /** 4 σ(η) of the height series (all the points' samples together). */
     measured: number;
     /** 4 √m₀ of the model's spectrum. */
     spectral: number | null;
@@ -103,10 +103,28 @@ export function measuredSea(model: LiveWaveModel, params: OceanParams): Measured
   return { name: model.name, height, sea: seaStateFromParams(params), ...slopes };
 }
 
-/** Points where the series is taken: off the origin so no wave's phase is special there. */
+/** Where the height series start: off the origin so no wave's phase is special there. */
 const PROBE_POINT: [number, number] = [13.7, -4.2];
-const SERIES_LENGTH = 8192;
+/**
+ * The heights are read at PROBE_GRID² points, SERIES_LENGTH samples each (8192 in all), not
+ * 8192 samples at one point: the FFT twin computes all its cascades' inverse FFTs for every new
+ * time (28 ms each on a loaded 2-core machine, measured), so one point's 8192 times held the
+ * page for 333 s there (fft-short-fetch); 16 points share each time's fields and take 16 times less. Each
+ * point's series is one Welch segment, and the 16 periodograms are averaged, as the 31
+ * overlapping segments of the single long series were. The points stand 1.37 and 1.61 peak
+ * wavelengths apart, so they see the waves at unrelated phases.
+ */
+const PROBE_GRID = 4;
+const SERIES_LENGTH = 512;
 const WELCH_SEGMENT = 512;
+
+function probePoints(wavelength: number): [number, number][] {
+  const points: [number, number][] = [];
+  for (let i = 0; i < PROBE_GRID * PROBE_GRID; i++) {
+    points.push([PROBE_POINT[0] + (i % PROBE_GRID) * 1.37 * wavelength, PROBE_POINT[1] + Math.floor(i / PROBE_GRID) * 1.61 * wavelength]);
+  }
+  return points;
+}
 
 /**
  * Hs of a fully developed sea after Pierson & Moskowitz (1964): Hs ≈ 0.21 U₁₉.₅² / g
@@ -135,7 +153,7 @@ const DISPERSION_CITATION: Citation = {
 };
 const WELCH_CITATION: Citation = {
   what: 'Measured S(ω)',
-  formula: 'Welch periodogram, Hann window, 512-sample segments overlapping by half',
+  formula: 'Welch periodogram, Hann window: 512 samples at each of 16 points, their periodograms averaged',
   source: 'Welch 1967, IEEE Trans. Audio Electroacoust. 15(2)',
 };
 const SLOPE_CITATION: Citation = {
@@ -191,8 +209,10 @@ export function measurePhysics(measured: MeasuredSea, time: number): PhysicsRepo
   const fit = fitDispersion(points, theory);
 
   const dt = tp / 8;
-  const series = heightSeries(measured.height, PROBE_POINT[0], PROBE_POINT[1], time, dt, SERIES_LENGTH);
-  const welch = welchSpectrum(series, dt, WELCH_SEGMENT);
+  const perPoint = heightSeriesAt(measured.height, probePoints(lambda), time, dt, SERIES_LENGTH);
+  const series = new Float64Array(perPoint.length * SERIES_LENGTH);
+  perPoint.forEach((s, p) => series.set(s, p * SERIES_LENGTH));
+  const welch = meanFrequencySpectrum(perPoint, dt, WELCH_SEGMENT);
   const measuredPeak = spectralPeak(welch);
   // Plotted up to 5 ωp: beyond it the spectra are four decades down.
   const omega: number[] = [];

@@ -24,8 +24,7 @@ export interface MeasurementExercise {
   tool: ExerciseTool;
   /**
    * Largest relative difference |measured / expected − 1| that passes. Set from how far the
-   * tool's own reading scatters about theory (the physics panel's Hs within 3 %, its Tp within
-   * 10 %), and tight enough that the usual slips (crest to trough for Hs, Tz for Tp, half a
+   * tool's own reading scatters about theory (HS_TOLERANCE, TP_TOLERANCE below), and tight enough that the usual slips (crest to trough for Hs, Tz for Tp, half a
    * wavelength) fail.
    */
   tolerance: number;
@@ -50,7 +49,22 @@ export function transverseWakeWavelength(params: Pick<OceanParams, 'boatSpeed'>)
   return (2 * Math.PI * params.boatSpeed ** 2) / GRAVITY;
 }
 
-const HS_TOLERANCE = 0.1;
+/**
+ * The panel's Hs on the FFT sea (16 points × 512 samples) lies 0 to 10 % below 4√m₀: seeds 1–5
+ * of fresh-breeze −9.1, −4.0, −4.3, −6.6, +0.2 %; short-fetch −10.3, −7.2, 0.0, −3.6 %; seed 1
+ * calm −8.1 %, gale −7.3 %; the panel shows two decimals, and physics-panel's 2.02 m is −10.0 %.
+ * The realised FFT sea holds less variance than its spectrum, so ±15 %; twice Hs (crest to
+ * trough) is far outside.
+ */
+const HS_TOLERANCE = 0.15;
+/**
+ * The panel's Tp is the peak of one random realisation: PM's flat top holds a few grid modes,
+ * each with a random (Rayleigh) amplitude, and the strongest of them sets the peak. Fresh-breeze
+ * seeds 1–5: +9.1, −8.9, −0.4, −3.2, −13.1 %; short-fetch seeds 1–4: +3.1, −3.1, −0.5, −2.9 %.
+ * A longer record does not narrow it (seed 1 from t = 100 s and from 400 s: both 8.18 s; the
+ * 8192-sample single-point record gave 8.53 s), so ±15 % is the honest width; Tz (0.71–0.78 Tp)
+ * still fails.
+ */
 const TP_TOLERANCE = 0.15;
 const WAKE_TOLERANCE = 0.1;
 
