@@ -9,7 +9,7 @@ import { figurePictures } from '../../src/sim/teaching/teachingFigures';
 import { contains, overlaps, type Rect } from '../../src/sim/layout/rect';
 
 /**
- * Issue 30 §3: the compare strips, the teaching views and every overlay (Fresnel plot,
+ * Nothing the page draws is hidden under a panel: the compare strips, the teaching views and every overlay (Fresnel plot,
  * physics panel, compare labels, captions, the labels on the sea) lie in the part of the
  * canvas that the control panel and the lessons drawer leave free, on a laptop, a 1280-px
  * screen and a phone; inside an <oceano-view>, every overlay and the lesson card lie inside

@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { useHarness } from './useHarness';
 
 /**
- * Issue 14: the page's JavaScript before its first frame. The FFT and Gerstner models, the
+ * The page's JavaScript before its first frame stays small, so a first visit draws the sea soon. The FFT and Gerstner models, the
  * control panel (lil-gui), the physics estimators and the GPU probe are chunks fetched on
  * use. These tests load the page as a user does and check that each arrives when asked for,
  * and that a chunk the network refuses gives a notice and keeps the ocean running.
