@@ -4,6 +4,7 @@ import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 import { elementCanvasPng, recordedPage } from './pages';
 import { heapFigures, heapLessCode, type HeapFigures } from './heapFigures';
+import { visibleFiguresReady } from '../support/visibleFigures';
 
 const jsValues = (heap: HeapFigures) => heap.snapshot.values;
 
@@ -68,17 +69,6 @@ async function startedFiguresSettled(page: Page): Promise<void> {
       before = views.length;
     }
   });
-}
-
-/** Waits until every figure on screen has started again and drawn (its `ready`). */
-async function visibleFiguresReady(page: Page): Promise<void> {
-  const onScreen = () =>
-    (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).filter((view) => {
-      const box = view.getBoundingClientRect();
-      return box.bottom > 0 && box.top < innerHeight;
-    });
-  await page.waitForFunction(`(${onScreen.toString()})().every((view) => view.oceano !== null)`);
-  await page.evaluate(`Promise.all((${onScreen.toString()})().map((view) => view.oceano.ready))`);
 }
 
 /**

@@ -3,6 +3,7 @@ import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { pixelLuminance } from '../support/luminance';
 
 const harness = useHarness();
 
@@ -29,10 +30,7 @@ function lumaOf(png: Buffer): { width: number; luma: (x: number, y: number) => n
   const { width, data } = PNG.sync.read(png);
   return {
     width,
-    luma: (x, y) => {
-      const o = (y * width + x) * 4;
-      return 0.2126 * data[o] + 0.7152 * data[o + 1] + 0.0722 * data[o + 2];
-    },
+    luma: (x, y) => pixelLuminance(data, y * width + x),
   };
 }
 

@@ -5,6 +5,7 @@ import { applyWaterVolume, createWaterVolumeUniforms, setEyeDepth } from '../../
 import { SCENE_BRIGHTEST } from '../../src/render/underwater/sceneEncoding';
 import { paramDefs } from '../../src/sim/params/params';
 import { bodyColor } from '../../src/sim/optics/waterColor';
+import { rgbLuminance } from '../support/luminance';
 
 const transmittance = (fogDensity: number, distance: number) => WATER_EXTINCTION.map((e) => Math.exp(-fogDensity * e * distance));
 
@@ -93,7 +94,7 @@ describe("the daylight left at the eye's depth (the water's colour there, uWater
     const picked = createWaterVolumeUniforms();
     applyWaterVolume(picked, '#06283a', true, 1, 0.035);
     const p = picked.uWaterScatter.value as Color;
-    const luminance = (x: Color) => 0.2126 * x.r + 0.7152 * x.g + 0.0722 * x.b;
+    const luminance = (x: Color) => rgbLuminance(x.r, x.g, x.b);
     expect(luminance(c) / luminance(p)).toBeGreaterThan(0.98);
     expect(luminance(c) / luminance(p)).toBeLessThan(1.02);
     expect(p.g / p.b).toBeGreaterThan(1.5 * (c.g / c.b));

@@ -5,6 +5,7 @@ import { canvasPng, openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { pixelRay, type Vec3 } from '../viewRays';
 import { GLOW_VIEW, glowQuery } from './lightViews';
+import { rgbLuminance } from '../../support/luminance';
 
 /**
  * Thin crests seen against a low sun glow green (shaders/subsurface.glsl): with the term on,
@@ -24,7 +25,7 @@ interface Colours {
   trough: number[];
 }
 
-const luminance = (c: number[]) => 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+const luminance = (c: number[]) => rgbLuminance(c[0], c[1], c[2]);
 const greenShare = (c: number[]) => c[1] / (c[0] + c[1] + c[2]);
 
 /** The sampled pixels and the height of the surface each one sees. Text, not a function: the runner's transform would give it helpers the page lacks. */
