@@ -67,7 +67,8 @@ function alike(a: ReturnType<typeof seaStatistics>, b: ReturnType<typeof seaStat
 }
 
 describe('waves=fft picture', () => {
-  it('t = 10⁶ s looks as good as t = 10 s (same luminance statistics and fine detail); a calm sea does not pass as the same', async () => {
+  // The same luminance statistics and fine detail.
+  it('t = 10⁶ s looks as good as t = 10 s; a calm sea does not pass as the same', async () => {
     const { page } = await openOcean(harness, 'waves=fft&seed=2&t=10', WIDTH, HEIGHT);
     const early = seaStatistics(await frameAt(page, 10), SEA_FROM_ROW);
     const late = seaStatistics(await frameAt(page, 1_000_000), SEA_FROM_ROW);

@@ -101,7 +101,8 @@ async function scrollThrough(page: Page, positions: number[]): Promise<void> {
 }
 
 describe('<oceano-view> on a page of thirty figures', () => {
-  it('holds only the figures near the screen live, gives no context to the browser to take, and brings each back as it was', async () => {
+  // It gives the browser no context to take.
+  it('holds only the figures near the screen live and brings each back as it was', async () => {
     const { page, consoleErrors } = await recordedPage(harness, 800, 600);
     const warnings: string[] = [];
     page.on('console', (m) => warnings.push(m.text()));
@@ -160,7 +161,8 @@ describe('<oceano-view> on a page of thirty figures', () => {
     await page.close();
   }, 500_000);
 
-  it('control: with releasing off, the browser takes contexts away from the figures, and the heap back at the top grows past the bound', async () => {
+  // Contexts are taken from the figures; the heap is measured back at the top.
+  it('control: with releasing off, the browser takes contexts away and the heap grows past the bound', async () => {
     const { page } = await recordedPage(harness, 800, 600);
     const warnings: string[] = [];
     page.on('console', (m) => warnings.push(m.text()));

@@ -160,7 +160,8 @@ describe('keyboard and accessibility', () => {
     });
   });
 
-  it('shows a focus ring on lil-gui controls without hover, labels ▶ by its action only, names the canvas by its view', async () => {
+  // ▶ is labelled by its action only; the canvas is named by its view.
+  it('shows a focus ring on lil-gui controls without hover, and names ▶ and the canvas by what they do', async () => {
     await desk.restoring(async (page) => {
       const session = await page.createCDPSession();
       await session.send('Emulation.setEmulatedMedia', { features: [{ name: 'hover', value: 'none' }, { name: 'pointer', value: 'coarse' }] });
@@ -298,7 +299,8 @@ describe('packaging', () => {
 });
 
 describe('live LOD counts', () => {
-  it('the panel agrees with stats() after every change of a paused view, Dive included; wireframe counts its triangles', async () => {
+  // Wireframe counts its triangles.
+  it('the panel agrees with stats() after every change of a paused view, Dive included', async () => {
     const { page } = await openOcean(harness, 't=1', 800, 600);
     const agree = async () => {
       await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
@@ -390,7 +392,8 @@ describe('loading', () => {
     requestAnimationFrame(look);
   }
 
-  it('shows progress from the first paint: before the script, while the first frame is drawn, and while the boat loads', async () => {
+  // From the first paint: before the script runs.
+  it('shows progress from the first paint, while the first frame is drawn, and while the boat loads', async () => {
     const page = await harness.browser.newPage();
     await page.setViewport({ width: 640, height: 360, deviceScaleFactor: 1 });
     page.setDefaultTimeout(120_000);

@@ -138,7 +138,8 @@ describe('WebGL context loss', () => {
 });
 
 describe('resizing', () => {
-  it('under the water, a resized view draws what a view opened at that size draws (the half- and quarter-resolution targets follow)', async () => {
+  // The half- and quarter-resolution targets follow the size.
+  it('under the water, a resized view draws what a view opened at that size draws', async () => {
     const { page: resized, consoleErrors } = await openOcean(harness, DIVE_QUERY, 320, 180);
     await resized.setViewport({ width: 400, height: 224, deviceScaleFactor: 1 });
     await resized.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));

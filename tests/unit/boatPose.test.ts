@@ -14,7 +14,8 @@ const HULL: HullSize = { length: 8, beam: 2.6 };
 const dot = (a: number[], b: number[]) => a.reduce((s, v, i) => s + v * b[i], 0);
 
 describe('targetPose', () => {
-  it('samples the surface at exactly the five hull points the lessons draw, half a length and half a beam from the centre', () => {
+  // Half a length and half a beam from the centre.
+  it('samples the surface at exactly the five hull points the lessons draw', () => {
     const heading = 0.7;
     const asked: [number, number][] = [];
     targetPose((x, z) => (asked.push([x, z]), 0), 12, -40, heading, HULL);

@@ -31,7 +31,8 @@ async function seaBelowSky(extra: string): Promise<number> {
 }
 
 describe('the haze', () => {
-  it('leaves the sea seen from 500 m darker than the horizon’s sky on every wave model (control: the old 3.26 km haze)', async () => {
+  // Control: a 3.26 km visibility's haze.
+  it('leaves the sea seen from 500 m darker than the horizon’s sky on every wave model', async () => {
     const measured: Record<string, number> = {};
     for (const waves of ['seed', 'fft', 'gerstner']) measured[waves] = await seaBelowSky(`waves=${waves}`);
     const control = await seaBelowSky('waves=seed&visibility=3.26');
@@ -89,7 +90,8 @@ async function hazeRatios(cpuWeight: (beta: number, distance: number) => number)
 }
 
 describe('the haze on the GPU', () => {
-  it('weighs each pixel as the CPU does, from 300 m up at three visibilities (control: the CPU without the thinning with height)', async () => {
+  // Control: the CPU without the thinning with height.
+  it('weighs each pixel as the CPU does, from 300 m up at three visibilities', async () => {
     const exact = await hazeRatios((beta, distance) => hazeWeight(beta, PARITY_EYE[1], 0, distance));
     const flat = await hazeRatios((beta, distance) => hazeWeight(beta, 0, 0, distance));
     console.log(`[oceano] haze parity over ${exact.pixels} pixels: ratio error median ${exact.median.toFixed(4)}, 95th percentile ${exact.worst.toFixed(4)}; control ${flat.median.toFixed(4)}, ${flat.worst.toFixed(4)}`);

@@ -36,7 +36,8 @@ async function shot(query: string): Promise<Buffer> {
 }
 
 describe('the sky blurred by the roughness', () => {
-  it('the switch reaches the far sea, and the blurred sky there has less detail than the sharp one, on the seed and FFT seas, and under a sky of images', async () => {
+  // On the seed and FFT seas, and under a sky of images.
+  it('the switch reaches the far sea, where the blurred sky has less detail than the sharp one', async () => {
     for (const view of ['waves=seed', 'waves=fft', 'waves=seed&sky=sky']) {
       const blurred = await shot(`t=10&${view}`);
       const sharp = await shot(`t=10&${view}&skyBlur=0`);

@@ -85,7 +85,8 @@ function describeColours(on: Colours, off: Colours): string {
 }
 
 describe('the subsurface glow', () => {
-  it('makes crests seen against a low sun brighter and greener than the troughs beside them; controls: the term off fails, glowing on every wave alike fails', { timeout: 240_000 }, async () => {
+  // Controls: the term off fails, glowing on every wave alike fails.
+  it('makes crests seen against a low sun brighter and greener than the troughs beside them', { timeout: 240_000 }, async () => {
     const { on, off } = await crestAndTrough(null);
     const checks = glowChecks(on, off);
     console.log(`[oceano] ${describeColours(on, off)}`);
