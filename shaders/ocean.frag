@@ -110,7 +110,7 @@ float smithLambda(float cosTheta, float variance) {
 // The exact Fresnel reflectance from air into water in closed form (Cook & Torrance 1982;
 // the twin is src/sim/optics/fresnel.ts fresnelClosedForm): each facet's reflectance of the
 // sun, at the angle between the eye and the half vector. perf: cheaper than two table reads
-// on a software rasterizer (docs/light.md §6).
+// on a software rasterizer (docs/light-cost.md, "What the default view's pixels pay for").
 float facetFresnel(float cosIncidence) {
   float c = clamp(cosIncidence, 0.0, 1.0);
   float g = sqrt(WATER_IOR * WATER_IOR - 1.0 + c * c);

@@ -319,7 +319,7 @@ vec3 waveFabricatedNormal(vec2 gridXZ) {
   return normalize(cross(pz - p0, px - p0));
 }
 
-// Foam in two layers (docs/light.md §5). Breaking now: where the whole sea's breaking measure,
+// Foam in two layers (docs/light-foam.md, "What the code does, and where"). Breaking now: where the whole sea's breaking measure,
 // min(det J, λ_min J) (shaders/waves/fftBreaking.glsl), shifted by the breakup field that keeps
 // the whitecaps off the tiles' lattice (shaders/foam/foamBreakup.glsl), is below the threshold
 // that marks Monahan's share of the sea for this wind: white (0.6 thick) at the threshold, solid

@@ -164,7 +164,8 @@ describe('bad boat models', () => {
     const state = await page.evaluate(() => ({ notices: window.oceano.notices(), model: window.oceano.boat().model, triangles: window.oceano.stats().triangles }));
     expect(state.model).toBe('failed');
     expect(state.triangles).toBeGreaterThan(10_000);
-    // The notice names the file in the page's words; the loader's English reason goes to the console (issue 11.7).
+    // The notice names the file in the page's words; the loader's English reason goes to the console,
+    // so a Spanish page never shows an English sentence.
     expect(state.notices.join('\n')).toMatch(/boat model "models\/boat\.glb" is not a valid glTF model: .+\. The ocean runs without the boat\.$/);
     expect(warnings.join('\n')).toMatch(/boat model "models\/boat\.glb" could not be parsed: .+/);
     await page.close();

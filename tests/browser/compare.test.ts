@@ -4,6 +4,7 @@ import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { compareStrips } from '../../src/sim/compare/compareLayout';
+import { differingPixels } from '../support/pictureStatistics';
 
 /**
  * compare=seed,gerstner,fft: every strip of the split view holds exactly the pixels of its
@@ -21,18 +22,6 @@ const SHARED = 't=10&seed=1&windSpeed=10&cam=-300,9,40,-300,0,-60';
 const MODELS = ['seed', 'gerstner', 'fft'] as const;
 const SPLIT = 0.3;
 const SPLIT2 = 0.65;
-
-/** Pixels in columns [x0, x1) whose colour differs in any channel. */
-function differingPixels(a: PNG, b: PNG, x0: number, x1: number): number {
-  let count = 0;
-  for (let y = 0; y < a.height; y++) {
-    for (let x = x0; x < x1; x++) {
-      const i = (y * a.width + x) * 4;
-      if (a.data[i] !== b.data[i] || a.data[i + 1] !== b.data[i + 1] || a.data[i + 2] !== b.data[i + 2]) count++;
-    }
-  }
-  return count;
-}
 
 async function picture(page: Page): Promise<PNG> {
   return PNG.sync.read(await canvasPng(page));

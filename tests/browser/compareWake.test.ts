@@ -4,6 +4,7 @@ import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { compareStrips } from '../../src/sim/compare/compareLayout';
+import { differingPixels } from '../support/pictureStatistics';
 
 /**
  * The boat's wake in the side-by-side view: compare=seed,gerstner,fft with the wake on. The
@@ -36,18 +37,6 @@ const COMPARED = ['gerstner', 'fft'] as const;
  */
 const STRIP_TOLERANCE = 0;
 const CONTROL_FLOOR = 1000;
-
-/** Pixels in columns [x0, x1) whose colour differs by more than `levels` in any channel. */
-function differingPixels(a: PNG, b: PNG, x0: number, x1: number, levels = 0): number {
-  let count = 0;
-  for (let y = 0; y < a.height; y++) {
-    for (let x = x0; x < x1; x++) {
-      const i = (y * a.width + x) * 4;
-      if (Math.max(Math.abs(a.data[i] - b.data[i]), Math.abs(a.data[i + 1] - b.data[i + 1]), Math.abs(a.data[i + 2] - b.data[i + 2])) > levels) count++;
-    }
-  }
-  return count;
-}
 
 async function picture(page: Page): Promise<PNG> {
   return PNG.sync.read(await canvasPng(page));

@@ -72,7 +72,8 @@ describe('<oceano-view> start-up attributes and events', () => {
     expect(await heard(page, 'eagerBelow', 'load')).toHaveLength(1);
   });
 
-  it('fires progress up to 1, then load and ready once each; names the figure by its alt; lets a vertical swipe scroll the page', async () => {
+  // It also names the figure by its alt.
+  it('fires progress up to 1, then load and ready once each, and lets a vertical swipe scroll the page', async () => {
     const { page } = await openStartup();
     await readyOf(page, 'plain');
     const events = await heard(page, 'plain');
@@ -126,7 +127,8 @@ describe('<oceano-view> start-up attributes and events', () => {
     expect(await heard(page, 'eagerBelow', 'error')).toEqual([]);
   });
 
-  it('reveal="interaction" stays a poster with a play button and no WebGL context until activated from the keyboard, then draws', async () => {
+  // A poster with a play button; once activated it draws.
+  it('reveal="interaction" stays a poster with no WebGL context until activated from the keyboard', async () => {
     const { page } = await openStartup();
     await readyOf(page, 'plain');
     const waiting = await figureState(page, 'revealed');

@@ -9,7 +9,7 @@ import { figurePictures } from '../../src/sim/teaching/teachingFigures';
 import { contains, overlaps, type Rect } from '../../src/sim/layout/rect';
 
 /**
- * Issue 30 §3: the compare strips, the teaching views and every overlay (Fresnel plot,
+ * Nothing the page draws is hidden under a panel: the compare strips, the teaching views and every overlay (Fresnel plot,
  * physics panel, compare labels, captions, the labels on the sea) lie in the part of the
  * canvas that the control panel and the lessons drawer leave free, on a laptop, a 1280-px
  * screen and a phone; inside an <oceano-view>, every overlay and the lesson card lie inside
@@ -57,7 +57,9 @@ describe('the free part of the canvas', () => {
     [1280, 720],
     [390, 844],
   ]) {
-    it(`${width} × ${height}: compare strips, teaching views, plots, captions and labels lie where the panel and the drawer leave room (control: the old layout)`, async () => {
+    // Compare strips, teaching views, plots, captions and labels, where the panel and the drawer leave room
+    // (control: the old layout).
+    it(`${width} × ${height}: every strip, view, plot, caption and label lies in the room the panels leave`, async () => {
       const { page, consoleErrors } = await openOcean(harness, 't=5&lang=es', width, height);
       const problems: string[] = [];
       const check = (what: string, boxes: ViewBoxes) => {
@@ -140,7 +142,8 @@ describe('the free part of the canvas', () => {
 });
 
 describe('inside an <oceano-view>', () => {
-  it('every overlay and the lesson card lie inside the figure, from 640 × 360 down to 320 × 180 (control: the old layout)', async () => {
+  // Control: the old layout.
+  it('every overlay and the lesson card lie inside the figure, from 640 × 360 down to 320 × 180', async () => {
     const { page, consoleErrors, violations } = await recordedPage(harness, 1000, 900);
     await page.goto(`${harness.baseUrl}fixtures/no-views.html`, { waitUntil: 'load' });
     await page.evaluate(() => {

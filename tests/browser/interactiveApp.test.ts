@@ -41,7 +41,8 @@ async function openVirtual(query: string): Promise<Page> {
 }
 
 describe('the interactive waves in the app', () => {
-  it('hold the same field whether the clock plays, the Step button steps or setTime jumps (control: the stone a step later differs)', async () => {
+  // Control: the stone a step later differs.
+  it('hold the same field whether the clock plays, the Step button steps or setTime jumps', async () => {
     const N = 24;
     const stone = '1,3,-2,1,0.4';
     const query = (s: string) => `${FLAT}&t=1&timeScale=0.5&stones=${s}`;
@@ -90,7 +91,9 @@ describe('the interactive waves in the app', () => {
     await later.close();
   }, 900_000);
 
-  it('carries its stones in a share link that reproduces the field; the boat rides it, read beside its hull; bad stones are a notice (controls: the link without its stones; the field under the hull)', async () => {
+  // The boat is read beside its hull; bad stones are a notice (controls: the link without its stones; the
+  // field under the hull).
+  it('carries its stones in a share link that reproduces the field, and the boat rides it', async () => {
     const { page } = await openOcean(harness, `${FLAT}&t=2`, 320, 180);
     await page.evaluate(() => window.oceano.loaded());
     const before = await fieldAt(page);
@@ -153,7 +156,8 @@ describe('the interactive waves in the app', () => {
     await bad.page.close();
   }, 900_000);
 
-  it('blends the boat\'s waves from the field to the analytic wake with the same weights on the GPU as on the CPU, within 3e-5 m (planted fault: the GPU\'s hand-over 4 m farther out)', async () => {
+  // Within 3e-5 m (planted fault: the GPU's hand-over 4 m farther out).
+  it("blends the boat's waves from the field to the analytic wake with the same weights on GPU and CPU", async () => {
     // The boat at 6 m/s heading east (D = 2π·36/g = 23.1 m), its wake and its own near-field waves.
     const { page, consoleErrors } = await openOcean(harness, `${FLAT}&wake=1&boatSpeed=6&boatHeading=90&t=2&cam=7,30,20,-8,0,-5`, 320, 180);
     await page.evaluate(() => window.oceano.loaded());

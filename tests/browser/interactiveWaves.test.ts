@@ -44,7 +44,8 @@ function differing(a: number[], b: number[], threshold: number): number {
 }
 
 describe('interactive waves in the Ocean', () => {
-  it('draws a dropped stone\'s rings, and a calm field draws as no field (planted fault: the stone left out changes nothing)', async () => {
+  // Planted fault: the stone left out changes nothing.
+  it("draws a dropped stone's rings, and a calm field draws as no field", async () => {
     const off = await draw(false, false, 0.25);
     const calm = await draw(true, false, 0.25);
     const stone = await draw(true, true, 0.25);
@@ -60,7 +61,9 @@ describe('interactive waves in the Ocean', () => {
     expect(stoneChanged).toBeGreaterThan(0.01 * pixels);
   }, 600_000);
 
-  it('tints steep water paler and greener, and foams it past 60 % of Stokes\'s limit: the picture differs from the same field with the tint and foam cut out of ocean.frag (planted fault: cut from both, nothing differs)', async () => {
+  // The picture differs from the same field with the tint and foam cut out of ocean.frag (planted fault: cut
+  // from both, nothing differs).
+  it("tints steep water paler and greener, and foams it past 60 % of Stokes's limit", async () => {
     const steep = (fault: boolean) => page.evaluate((f) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.steep(f), fault);
     /** Pixels that differ, and how much greener they came out on average (levels of green). */
     const tinted = (a: number[], b: number[]) => {
@@ -86,7 +89,8 @@ describe('interactive waves in the Ocean', () => {
     expect(control.count).toBe(0);
   }, 600_000);
 
-  it('gives the same field whether the clock plays, steps or jumps forward, and replays the stones after a jump back (planted fault: a stone a step later differs)', async () => {
+  // Planted fault: a stone a step later differs.
+  it('gives the same field whether the clock plays, steps or jumps, and replays the stones after a jump back', async () => {
     const played = (times: number[], stones: { time: number; x: number; z: number }[]) =>
       page.evaluate((t, s) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.played(t, s), times, stones);
     const stones = [{ time: 0.1, x: 1, z: -2 }];
@@ -103,7 +107,8 @@ describe('interactive waves in the Ocean', () => {
     expect(later).not.toEqual(reference);
   }, 600_000);
 
-  it('lets sampleSurface see the field through its read-back: at texel centres it gives the texel (planted fault: a texel off does not)', async () => {
+  // Planted fault: a texel off does not.
+  it('lets sampleSurface see the field through its read-back: at texel centres it gives the texel', async () => {
     // Texel centres of the grid centred on the origin lie at odd multiples of 0.25 m.
     const points: [number, number][] = [[0.25, 0.25], [2.75, -1.25], [-4.25, 3.75]];
     const { sampled, texels } = await page.evaluate((p) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.sampled(p), points);

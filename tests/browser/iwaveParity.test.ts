@@ -70,7 +70,8 @@ const script: IWaveScript = {
 };
 
 describe('GPU iWave against the CPU reference', () => {
-  it('matches after 120 steps with two stones, a scroll and an obstacle, within 3e-4 of the largest height (planted fault: the scroll the other way fails)', async () => {
+  // Within 3e-4 of the largest height (planted fault: the scroll the other way fails).
+  it('matches after 120 steps with two stones, a scroll and an obstacle', async () => {
     const { heights, centre } = await gpu('run', script);
     const cpu = playOnCpu(script);
     expect(centre).toEqual([cpu.centerX, cpu.centerZ]);
@@ -87,7 +88,8 @@ describe('GPU iWave against the CPU reference', () => {
     console.log(`iWave step, 256², this renderer: ${(await gpu('cost', 256, 20)).toFixed(1)} ms`);
   }, 300_000);
 
-  it('matches with a moving hull (its footprint solid, its bow and stern sources) and the wave equation beside iWave, within 3e-4 (planted fault: the hull a texel off fails)', async () => {
+  // The hull: its footprint solid, its bow and stern sources (planted fault: the hull a texel off fails).
+  it('matches with a moving hull and the wave equation beside iWave, within 3e-4', async () => {
     // A boat at 4 m/s heading 70°, moved every other step, with a stone meeting it; the right
     // half of the grid runs the wave equation.
     const hullAt = (step: number, offset = 0): MovingHull => ({ x: -12 + offset + 4 * Math.sin(1.22) * step / 60, z: 3 - 4 * Math.cos(1.22) * step / 60, heading: 1.22, speed: 4, length: 8, beam: 2.6, strength: 1 });

@@ -2,7 +2,7 @@ import type { Page } from 'puppeteer';
 import { largestFreeRectangle } from '../../src/sim/layout/freeRectangle';
 import type { Rect } from '../../src/sim/layout/rect';
 
-/** The overlays laid out in the free part of a view (issue 30 §3), by the class each carries. */
+/** The overlays laid out in the free part of a view (the part no panel covers), by the class each carries. */
 export const OVERLAYS = {
   fresnelPlot: '.oceano-fresnel-plot',
   physicsPanel: '.oceano-physics',

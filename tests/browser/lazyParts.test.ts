@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { useHarness } from './useHarness';
 
 /**
- * Issue 14: the page's JavaScript before its first frame. The FFT and Gerstner models, the
+ * The page's JavaScript before its first frame stays small, so a first visit draws the sea soon. The FFT and Gerstner models, the
  * control panel (lil-gui), the physics estimators and the GPU probe are chunks fetched on
  * use. These tests load the page as a user does and check that each arrives when asked for,
  * and that a chunk the network refuses gives a notice and keeps the ocean running.
@@ -56,7 +56,8 @@ const surfaceAt = (page: Page) =>
   });
 
 describe('parts fetched on use', () => {
-  it('the default view fetches no wave model but the seed\'s; gerstner arrives on setParams, CPU twin and shader together', async () => {
+  // Gerstner's CPU twin and shader arrive together.
+  it("the default view fetches only the seed's wave model; gerstner arrives on setParams", async () => {
     const { page, scripts, errors } = await open('t=10');
     expect(fetched(scripts, 'gerstnerModelCode')).toBe(false);
     expect(fetched(scripts, 'fftModelCode')).toBe(false);
@@ -107,7 +108,8 @@ describe('parts fetched on use', () => {
     await page.close();
   });
 
-  it('at start: waves=fft whose code is refused draws the seed\'s sea with a notice; a refused panel leaves the sea running', async () => {
+  // waves=fft whose code the network refuses.
+  it("at start: refused FFT code draws the seed's sea with a notice; a refused panel leaves the sea running", async () => {
     const { page, errors } = await open('t=10&waves=fft&lang=es', ['fftModelCode', 'controlPanel']);
     const state = await page.evaluate(() => ({ waves: window.oceano.getParams().waves, notices: window.oceano.notices(), frames: window.oceano.activity().framesDrawn }));
     expect(state.waves).toBe('seed');
@@ -123,7 +125,8 @@ describe('parts fetched on use', () => {
     await page.close();
   });
 
-  it('a dive whose underwater passes are refused: a notice, and the sea drawn from below without them, not the last frame above', async () => {
+  // Not the last frame above.
+  it('a dive whose underwater passes are refused: a notice, and the sea drawn from below without them', async () => {
     const { page, errors } = await open('t=10', ['oceanUnderwater']);
     const above = await page.evaluate(() => window.oceano.stats().underwater);
     await page.evaluate(() => window.oceano.setCamera({ position: [0, -8, 20], target: [0, 5, -20] }));

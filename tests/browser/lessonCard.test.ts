@@ -34,7 +34,8 @@ function seen(page: Page) {
 }
 
 describe('the lesson card: question, choice, references, glossary', () => {
-  it('hides the answer until its button is pressed, and again when another lesson opens (control: the answer is not on the page before)', async () => {
+  // Control: the answer is not on the page before.
+  it('hides the answer until its button is pressed, and again when another lesson opens', async () => {
     expect(asking).toBeDefined();
     const words = LESSON_TEXTS[asking];
     const { page, consoleErrors } = await openOcean(harness, `lesson=${asking}&t=2`, 1366, 768);
@@ -65,7 +66,8 @@ describe('the lesson card: question, choice, references, glossary', () => {
     await page.close();
   });
 
-  it('folds the card’s references, each in full from the bibliography, and marks a choice line where the card has one (control: a card without one shows none)', async () => {
+  // Each reference in full from the bibliography (control: a card without a choice shows none).
+  it('folds the card’s references, each in full, and marks a choice line where the card has one', async () => {
     const keys = LESSON_TEXTS[asking].references as ReferenceKey[];
     const { page } = await openOcean(harness, `lesson=${asking}&t=2`, 1366, 768);
     await page.waitForSelector('.oceano-lesson-card:not([hidden]) .oceano-lesson-references');
@@ -83,7 +85,8 @@ describe('the lesson card: question, choice, references, glossary', () => {
     await page.close();
   });
 
-  it('a glossary term in the text shows its definition in the card; a second press or Escape closes it (control: closed before the press)', async () => {
+  // The definition shows in the card (control: closed before the press).
+  it('a glossary term in the text shows its definition; a second press or Escape closes it', async () => {
     const { page, consoleErrors } = await openOcean(harness, `lesson=${asking}&lang=es&t=2`, 1366, 768);
     await page.waitForSelector('.oceano-lesson-card:not([hidden]) .oceano-lesson-term');
     let facts = await seen(page);

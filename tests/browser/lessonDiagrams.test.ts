@@ -26,7 +26,8 @@ function diagramFacts(page: Page) {
 }
 
 describe('lesson diagrams in the card', () => {
-  it('the LOD bands’ diagram appears after the equations and follows the L slider (control: a lesson without one has none)', async () => {
+  // Control: a lesson without one has none.
+  it('the LOD bands’ diagram appears after the equations and follows the L slider', async () => {
     const { page, consoleErrors } = await openOcean(harness, 'lesson=lod-bands', 1366, 768);
     await page.waitForSelector('.oceano-lesson-diagram svg[aria-label]');
     const before = await diagramFacts(page);

@@ -7,7 +7,8 @@ import { CONCEPT_PATH, ORDER_NAMES } from '../../src/app/lessons/conceptPath';
 const harness = useHarness();
 
 describe('the lessons drawer’s two orders', () => {
-  it('the switch lists the ideas’ order, › and ‹ walk it, and the report’s order comes back (control: the report’s order walks the catalogue)', async () => {
+  // Control: the report’s order walks the catalogue.
+  it('the switch lists the ideas’ order, › and ‹ walk it, and the report’s order comes back', async () => {
     const { page, consoleErrors } = await openOcean(harness, 'lang=es&t=2', 1366, 768);
     await page.waitForSelector('.oceano-lessons-order-option[data-order="ideas"]');
     const listed = () => page.evaluate(() => Array.from(document.querySelectorAll<HTMLElement>('.oceano-lessons-open'), (b) => b.dataset.lesson));

@@ -65,7 +65,8 @@ function freeShare(page: Page) {
 const OLD_PANEL = `#oceano-page > .lil-gui.lil-root { top: 0 !important; bottom: auto !important; left: auto !important; right: 12px !important; width: 245px !important; max-height: 100% !important; }`;
 
 describe('lessons', () => {
-  it('a keyboard walk opens every lesson in order: its view, its card with MathML and the quote equal to its file, no notice, focus visible', async () => {
+  // Each card with MathML and the quote equal to its file, no notice, focus visible.
+  it('a keyboard walk opens every lesson in order, each with its view and its card', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=2', 1366, 768);
     await page.waitForSelector('.oceano-lessons-open');
     // Tab reaches the list; Enter opens the first lesson, then → walks on.
@@ -101,7 +102,8 @@ describe('lessons', () => {
     await page.close();
   });
 
-  it('API and URL: lessons() in the page’s language, ?lesson= and share links, an unknown id a notice that changes nothing', async () => {
+  // An unknown id gives a notice that changes nothing.
+  it('API and URL: lessons() in the page’s language, ?lesson= and share links, an unknown id', async () => {
     const { page } = await openOcean(harness, 'lesson=fresnel&lang=es', 800, 600);
     await page.waitForSelector('.oceano-lesson-card:not([hidden])');
     const list = await page.evaluate(() => window.oceano.lessons());
@@ -123,7 +125,8 @@ describe('lessons', () => {
     await page.close();
   });
 
-  it('laptop 1366×768: the panel and the card leave at least 60 % of the canvas free across (control: a wide card fails)', async () => {
+  // Control: a wide card fails.
+  it('laptop 1366×768: the panel and the card leave at least 60 % of the canvas free across', async () => {
     const { page } = await openOcean(harness, 'lesson=lod-bands', 1366, 768);
     await page.waitForSelector('.oceano-lesson-card:not([hidden])');
     await page.waitForSelector('.lil-gui.lil-root');
@@ -137,7 +140,8 @@ describe('lessons', () => {
     await page.close();
   });
 
-  it('phone 390×844: the card and the open panel are bottom sheets, the sea visible above (control: the old panel fails)', async () => {
+  // Control: the old panel fails.
+  it('phone 390×844: the card and the open panel are bottom sheets, the sea visible above', async () => {
     const { page } = await openOcean(harness, 'lesson=normals-right&lang=es', 390, 844);
     await page.waitForSelector('.oceano-lesson-card:not([hidden])');
     await page.waitForSelector('.lil-gui.lil-root');
@@ -157,7 +161,8 @@ describe('lessons', () => {
     await page.close();
   });
 
-  it('the boat lessons mark the five points the CPU twin samples, on the hull and following it (control: the hull turned round)', async () => {
+  // Control: the hull turned round.
+  it('the boat lessons mark the five points the CPU twin samples, on the hull and following it', async () => {
     const width = 1366;
     const height = 768;
     const { page, consoleErrors } = await openOcean(harness, 'lesson=boat-twin&t=5', width, height);
@@ -214,7 +219,8 @@ describe('lessons', () => {
     await page.close();
   });
 
-  it('<oceano-view lesson="fresnel">: the card and the Fresnel plot inside the figure’s box; the attribute changes the lesson', async () => {
+  // The card and the Fresnel plot lie inside the figure’s box.
+  it('<oceano-view lesson="fresnel">: the card and the plot inside the figure; the attribute changes the lesson', async () => {
     const { page, violations } = await recordedPage(harness, 900, 700);
     await page.goto(`${harness.baseUrl}fixtures/two-views.html`, { waitUntil: 'load' });
     await viewsReady(page);

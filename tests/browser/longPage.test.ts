@@ -4,6 +4,7 @@ import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 import { elementCanvasPng, recordedPage } from './pages';
 import { heapFigures, heapLessCode, type HeapFigures } from './heapFigures';
+import { visibleFiguresReady } from '../support/visibleFigures';
 
 const jsValues = (heap: HeapFigures) => heap.snapshot.values;
 
@@ -70,17 +71,6 @@ async function startedFiguresSettled(page: Page): Promise<void> {
   });
 }
 
-/** Waits until every figure on screen has started again and drawn (its `ready`). */
-async function visibleFiguresReady(page: Page): Promise<void> {
-  const onScreen = () =>
-    (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).filter((view) => {
-      const box = view.getBoundingClientRect();
-      return box.bottom > 0 && box.top < innerHeight;
-    });
-  await page.waitForFunction(`(${onScreen.toString()})().every((view) => view.oceano !== null)`);
-  await page.evaluate(`Promise.all((${onScreen.toString()})().map((view) => view.oceano.ready))`);
-}
-
 /**
  * How far the page's JavaScript values (a heap snapshot's objects, arrays, strings, closures,
  * numbers) may be above the first visit once back at the top. The engine's own structures are
@@ -111,7 +101,8 @@ async function scrollThrough(page: Page, positions: number[]): Promise<void> {
 }
 
 describe('<oceano-view> on a page of thirty figures', () => {
-  it('holds only the figures near the screen live, gives no context to the browser to take, and brings each back as it was', async () => {
+  // It gives the browser no context to take.
+  it('holds only the figures near the screen live and brings each back as it was', async () => {
     const { page, consoleErrors } = await recordedPage(harness, 800, 600);
     const warnings: string[] = [];
     page.on('console', (m) => warnings.push(m.text()));
@@ -170,7 +161,8 @@ describe('<oceano-view> on a page of thirty figures', () => {
     await page.close();
   }, 500_000);
 
-  it('control: with releasing off, the browser takes contexts away from the figures, and the heap back at the top grows past the bound', async () => {
+  // Contexts are taken from the figures; the heap is measured back at the top.
+  it('control: with releasing off, the browser takes contexts away and the heap grows past the bound', async () => {
     const { page } = await recordedPage(harness, 800, 600);
     const warnings: string[] = [];
     page.on('console', (m) => warnings.push(m.text()));

@@ -418,7 +418,8 @@ describe('the npm package', () => {
     }
   });
 
-  it('registers <oceano-view> from a CDN that mirrors npm packages, with no configuration: a wave figure and an FFT one, whose Worker comes from the CDN too', async () => {
+  // The FFT figure's Worker comes from the CDN too.
+  it('registers <oceano-view> from a CDN that mirrors npm, with no configuration: a wave and an FFT figure', async () => {
     // The CDN: the installed package under /npm/oceano@VERSION/, on another origin (port), with the CORS header such CDNs send.
     const version = (JSON.parse(readFileSync(join(site, 'node_modules', 'oceano', 'package.json'), 'utf8')) as { version: string }).version;
     const fromCdn: string[] = [];

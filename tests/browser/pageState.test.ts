@@ -170,7 +170,8 @@ describe('embedding and accessibility', () => {
 describe('presets', () => {
   const presetViews = presetNames.map(presetView);
   for (const view of presetViews) {
-    it(`preset=${view.query.split('&')[0].slice('preset='.length)} matches its reference (${view.name}.png) and no other preset's`, async () => {
+    // The preset named in view.query, against references/{view.name}.png.
+    it(`${view.name}: matches its reference and no other preset's`, async () => {
       const { page } = await openOcean(harness, view.query, view.width, view.height);
       expect(await page.evaluate(() => window.oceano.notices())).toEqual([]);
       if (view.wholePage) {

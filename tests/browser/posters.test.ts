@@ -97,7 +97,8 @@ describe('posters (npm run build: dist/posters/)', () => {
     await page.close();
   }, 600_000);
 
-  it('shows what a fresh figure with its attribute draws once complete, within the tolerance; the same figure a moment later does not match (control)', async () => {
+  // Control: the same figure a moment later does not match.
+  it('shows what a fresh figure with its attribute draws once complete, within the tolerance', async () => {
     await ensurePosters(harness);
     const { page, consoleErrors } = await recordedPage(harness, 400, 300);
     await page.goto(`${harness.baseUrl}fixtures/one-figure.html`, { waitUntil: 'load' });

@@ -1,40 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
 import { diffPngs } from './imageCompare';
 import { recordedPage } from './pages';
 import { DIVE_QUERY } from './referenceViews';
+import { seaStatistics } from '../support/pictureStatistics';
 
 const harness = useHarness();
-
-/** Luminance statistics of the rows from `fromRow` (a share of the height) down: the sea. */
-function seaStatistics(png: Buffer, fromRow: number): { mean: number; std: number; detail: number } {
-  const image = PNG.sync.read(png);
-  const { width, height, data } = image;
-  const lum = (x: number, y: number) => {
-    const i = (y * width + x) * 4;
-    return 0.2126 * data[i] + 0.7152 * data[i + 1] + 0.0722 * data[i + 2];
-  };
-  let sum = 0;
-  let sumSq = 0;
-  let detail = 0;
-  let n = 0;
-  for (let y = Math.ceil(height * fromRow); y < height - 1; y++) {
-    for (let x = 1; x < width - 1; x++) {
-      const l = lum(x, y);
-      sum += l;
-      sumSq += l * l;
-      // High-frequency energy: how far a pixel stands from the mean of its four neighbours.
-      detail += Math.abs(l - (lum(x - 1, y) + lum(x + 1, y) + lum(x, y - 1) + lum(x, y + 1)) / 4);
-      n++;
-    }
-  }
-  const mean = sum / n;
-  return { mean, std: Math.sqrt(sumSq / n - mean * mean), detail: detail / n };
-}
 
 const relative = (a: number, b: number) => Math.abs(a - b) / Math.max(Math.abs(a), Math.abs(b));
 
@@ -164,7 +138,8 @@ describe('WebGL context loss', () => {
 });
 
 describe('resizing', () => {
-  it('under the water, a resized view draws what a view opened at that size draws (the half- and quarter-resolution targets follow)', async () => {
+  // The half- and quarter-resolution targets follow the size.
+  it('under the water, a resized view draws what a view opened at that size draws', async () => {
     const { page: resized, consoleErrors } = await openOcean(harness, DIVE_QUERY, 320, 180);
     await resized.setViewport({ width: 400, height: 224, deviceScaleFactor: 1 });
     await resized.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));

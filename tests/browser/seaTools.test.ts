@@ -63,7 +63,8 @@ async function runFrames(page: Page, n: number, dt: number): Promise<void> {
 }
 
 describe('the probe', () => {
-  it('measures the seed swell’s period as its formula (ω = √(g k)) gives it, within 2 % (controls: times 5 % off, ω 5 % off)', async () => {
+  // Controls: times 5 % off, ω 5 % off.
+  it('measures the seed swell’s period as its formula (ω = √(g k)) gives it, within 2 %', async () => {
     const k = 0.2;
     const [x, z] = [13.7, -4.2];
     const { page, consoleErrors } = await openOcean(harness, `t=20&rippleStrength=0&swellFrequency=${k}&probe=${x},${z}`, 480, 270);
@@ -152,7 +153,8 @@ type Box = { left: number; right: number; top: number; bottom: number };
 const overlaps = (a: Box, b: Box) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
 
 describe('the tools card', () => {
-  it('lies where the drawer, the panel and the play button leave the view free: laptop beside them, phone above the sea (control: moved left, it covers the drawer)', async () => {
+  // Laptop: beside them; phone: above the sea (control: moved left, it covers the drawer).
+  it('lies where the drawer, the panel and the play button leave the view free, on laptop and phone', async () => {
     const laptop = await openOcean(harness, 't=5&probe=0,-20', 1366, 768);
     await laptop.page.waitForSelector('.lil-gui.lil-root');
     await laptop.page.waitForSelector('.oceano-lessons');
@@ -198,7 +200,8 @@ describe('the ruler and the stones', () => {
     return page;
   }
 
-  it('a drag measures the horizontal distance between where it began and ended (control: with no tool, a drag turns the camera)', async () => {
+  // Control: with no tool, a drag turns the camera.
+  it('a drag measures the horizontal distance between where it began and ended', async () => {
     const page = await openFlat();
     await chooseTool(page, 'none');
     await page.mouse.move(...A);
@@ -239,7 +242,8 @@ describe('the ruler and the stones', () => {
     await page.close();
   });
 
-  it('a click drops a stone into the interactive waves where it lands (control: a click with no tool leaves the water still)', async () => {
+  // Control: a click with no tool leaves the water still.
+  it('a click drops a stone into the interactive waves where it lands', async () => {
     // From t = 0: a field switched on later first runs every step since 0 (calm ones too), minutes on SwiftShader.
     const page = await openFlat('swellAmplitude=0&rippleStrength=0&t=0&interactiveWaves=1');
     await page.evaluate(() => window.oceano.loaded());

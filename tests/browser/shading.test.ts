@@ -3,12 +3,14 @@ import { PNG } from 'pngjs';
 import type { Page } from 'puppeteer';
 import { canvasPng, openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { pixelLuminance } from '../support/luminance';
 
 const harness = useHarness();
 
 // Measured at 640 × 360 under a 20 km visibility's haze: 4.29 with detail normals, 3.08 with
 // vertex normals only; the bound lies between them, near their geometric mean. (Under the old
-// 3.26 km haze, which dimmed this band's contrast: 2.22 and 1.54, bound 1.85; docs/light.md §3.)
+// 3.26 km haze, which dimmed this band's contrast: 2.22 and 1.54, bound 1.85; docs/light-sun-and-sky.md,
+// "Measured: the 500 m view, and the haze".)
 const MIN_FAR_ENERGY = 3.6;
 // Measured: 3.05 / 3.07 = 0.99 with camera-relative positions, 5.79 / 3.07 = 1.89 with world
 // coordinates (main). The two spots have different waves, so not 1 exactly.
@@ -28,10 +30,7 @@ function lumaOf(png: Buffer): { width: number; luma: (x: number, y: number) => n
   const { width, data } = PNG.sync.read(png);
   return {
     width,
-    luma: (x, y) => {
-      const o = (y * width + x) * 4;
-      return 0.2126 * data[o] + 0.7152 * data[o + 1] + 0.0722 * data[o + 2];
-    },
+    luma: (x, y) => pixelLuminance(data, y * width + x),
   };
 }
 

@@ -153,7 +153,7 @@ describe('the sky painted from the sun', () => {
   });
 
   /**
-   * Issue 13 §4: looking level along a 45° diagonal put corners of three.js's background box
+   * A user looking level along a 45° diagonal put corners of three.js's background box
    * in the camera's plane, and one sky colour smeared over whole triangles (a flat sky with a
    * dark or pale triangle). The same sky seen 0.5° to the side must look the same: compared
    * over the rows above the horizon, away from the sun.

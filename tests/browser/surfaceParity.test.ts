@@ -58,7 +58,9 @@ function worstDisagreement(page: Page, cases: Case[]) {
 }
 
 describe('CPU twin vs GPU shader', () => {
-  it.each(CASES)(`agrees within $limits.height m, $limits.normal in the normal, on ${TIMES.length * POINTS_PER_TIME} random points (seed ${PARITY_SEED}), |x|, |z| up to ${EXTENT} m, t up to 1e6 s: $query`, async ({ query, limits }) => {
+  // TIMES.length × POINTS_PER_TIME random points (seed PARITY_SEED), |x| and |z| up to EXTENT m,
+  // t up to 1e6 s.
+  it.each(CASES)('agrees within $limits.height m and $limits.normal in the normal on seeded points: $query', async ({ query, limits }) => {
     const cases = parityCases();
     const farPoints = cases.flatMap((c) => c.points).filter(([x, z]) => Math.abs(x) >= 2000 && Math.abs(z) >= 2000).length;
     expect(farPoints).toBeGreaterThan(50);

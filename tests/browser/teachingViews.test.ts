@@ -91,7 +91,8 @@ describe('teaching views of the seed figures', () => {
     }
   });
 
-  it('shows the Perlin noise step by step: each stage’s picture is the CPU stage’s array and differs from the next (controls: a stage against the next one’s array; a picture against itself)', async () => {
+  // And differs from the next (controls: a stage against the next one’s array; a picture against itself).
+  it('shows the Perlin noise step by step: each stage’s picture is the CPU stage’s array', async () => {
     const seed = 4;
     const time = 10;
     const { page } = await openOcean(harness, `seed=${seed}&t=${time}&view=noise-hash`, 1366, 768);
@@ -129,7 +130,8 @@ describe('teaching views of the seed figures', () => {
     expect(greyDifference(same.image, same.rect, same.image, same.rect)).toBe(0);
   });
 
-  it('unfolds the sky’s cube map into a cross whose texels are the sky drawn behind the sea in their directions (control: the cross read mirrored)', async () => {
+  // Each texel in its direction (control: the cross read mirrored).
+  it('unfolds the sky’s cube map into a cross whose texels are the sky drawn behind the sea', async () => {
     const pose = { position: [0, 3, 40] as [number, number, number], target: [0, 40, -40] as [number, number, number] };
     const width = 800;
     const height = 450;
@@ -171,7 +173,8 @@ describe('teaching views of the seed figures', () => {
     expect(mirrored).toBeGreaterThan(5);
   });
 
-  it('under waves=fft shows the largest and smallest cascade\'s height fields: not blank, not the seed\'s maps, moving with time', async () => {
+  // Not blank, and not the seed's maps.
+  it("under waves=fft shows the largest and smallest cascade's height fields, moving with time", async () => {
     // Grey spread (8-bit levels) inside the left picture: a blank view (what waves=fft drew
     // before, the negative control) has 0.
     let left: Rect = { x: 0, y: 0, width: 0, height: 0 };

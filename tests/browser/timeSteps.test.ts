@@ -9,7 +9,8 @@ const harness = useHarness();
 
 
 describe('slow motion and Step', () => {
-  it('stepping N frames at timeScale 0.5 draws exactly the picture playing N frames draws (control: one step more differs)', async () => {
+  // Control: one step more differs.
+  it('stepping N frames at timeScale 0.5 draws exactly the picture playing N frames draws', async () => {
     const N = 12;
     const open = async () => {
       const page = await harness.browser.newPage();

@@ -81,7 +81,9 @@ describe('under the water', () => {
     expect(consoleErrors).toEqual([]);
   });
 
-  it('draws the same pictures with the underwater shortcuts (back faces only, no above-the-surface caustics test, nothing drawn past where the fog hides it) as without', async () => {
+  // The shortcuts: back faces only, no above-the-surface caustics test, nothing drawn past where the fog
+  // hides it.
+  it('draws the same pictures with the underwater shortcuts as without', async () => {
     // The dive view (the underside over the upper half, outside Snell's window; the sea bed and
     // its caustics below), then looking up into Snell's window (the bench's underwater camera).
     const { consoleErrors } = await dive.opened();

@@ -54,7 +54,8 @@ function othersPatched(): Promise<boolean> {
 }
 
 describe("the underwater passes' scene target", () => {
-  it("draws the same picture through a half-float target as through the encoded one, without touching other materials", async () => {
+  // Without touching other materials.
+  it('draws the same picture through a half-float target as through the encoded one', async () => {
     const linear = await drawWith('linear');
     expect(await othersPatched()).toBe(false);
     const encoded = await drawWith('every-material');

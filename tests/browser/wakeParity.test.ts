@@ -80,10 +80,11 @@ function worst(page: Page, cases: Cases, fault: Fault) {
 }
 
 describe('the Kelvin wake: CPU twin vs the drawn mesh', () => {
+  // TIMES.length × (NEAR_POINTS + FAR_POINTS) points.
   it.each([
     { query: `seed=3&t=0&${BOAT}`, height: PARITY_LIMITS.defaults.height, normal: PARITY_LIMITS.defaults.normal, late: true },
     { query: `waves=gerstner&seed=3&t=0&${BOAT}`, height: 1e-4, normal: 1e-3, late: false },
-  ])(`agrees on ${TIMES.length * (NEAR_POINTS + FAR_POINTS)} points with the wake on, within the model's own limits; the controls do not: $query`, async ({ query, height, normal, late }) => {
+  ])("agrees on every point with the wake on, within the model's own limits; the controls do not: $query", async ({ query, height, normal, late }) => {
     const { page, consoleErrors } = await openOcean(harness, query, 320, 180);
     const ok = await worst(page, cases(), 'none');
     const control = await worst(page, cases(), 'noWakeOnCpu');
@@ -126,7 +127,8 @@ describe('the Kelvin wake: CPU twin vs the drawn mesh', () => {
     await page.close();
   });
 
-  it('a share link made while sailing and steering reopens on the same wake, pixel for pixel; without its track it shows the replay instead (control)', async () => {
+  // Control: without its track it shows the replay instead.
+  it('a share link made while sailing and steering reopens on the same wake, pixel for pixel', async () => {
     const { page } = await openOcean(harness, 'preset=wake-turn', 320, 180);
     const url = await page.evaluate(async () => {
       const o = window.oceano;

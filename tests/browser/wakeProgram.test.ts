@@ -21,7 +21,8 @@ const QUERY = 'wake=0&wakeGuide=0&boatSpeed=4&boatHeading=270&boatTurnRate=3&t=1
 const WAKE_SHARE = 0.01;
 
 describe('the wake compiled into the ocean only while it is on', () => {
-  it('shows the wake on the drawn sea once turned on, the same picture each time; the control (never compiled in) does not', async () => {
+  // The control (never compiled in) does not.
+  it('shows the wake on the drawn sea once turned on, the same picture each time', async () => {
     const { page, consoleErrors } = await openOcean(harness, QUERY, 320, 180);
     try {
       const result = await page.evaluate(async () => {

@@ -1,3 +1,5 @@
+import { pixelLuminance } from './luminance';
+
 /**
  * High-frequency energy of an RGBA image: the mean squared discrete Laplacian of its
  * luminance over the interior pixels. A blur removes fine detail, so it lowers this
@@ -9,7 +11,7 @@ export function highFrequencyEnergy(rgba: Uint8Array | Uint8ClampedArray | Buffe
   if (width < 3 || height < 3) return 0;
   const luma = new Float64Array(width * height);
   for (let i = 0; i < width * height; i++) {
-    luma[i] = 0.2126 * rgba[i * 4] + 0.7152 * rgba[i * 4 + 1] + 0.0722 * rgba[i * 4 + 2];
+    luma[i] = pixelLuminance(rgba, i);
   }
   let sum = 0;
   for (let y = 1; y < height - 1; y++) {

@@ -89,7 +89,7 @@ describe('FrameLoop', () => {
 });
 
 describe('shareUrl', () => {
-  it("carries the view, the boat's motion at its time and the page's choices, and reads back as they were (issue 11.1)", () => {
+  it("carries the view, the boat's motion at its time and the page's choices, and reads back as they were", () => {
     const params = { ...defaultParams(), boatSpeed: 2.4, boatHeading: 30 };
     // Values with full double precision, so a link that rounds any of them shows.
     const boatState: BoatSnapshot = { x: 6.361234567891, z: -5.33, heading: { value: 0.1 / 3, velocity: -0.2 }, heave: { value: 1 / 7, velocity: 0.01 }, pitch: { value: -0.02, velocity: 1e-5 }, roll: { value: 0.03, velocity: -2e-4 } };

@@ -6,7 +6,9 @@ describe('the image autocorrelation the no-tiling test reads (tests/support/auto
   const width = 120;
   const height = 80;
 
-  it('finds a pattern that repeats every 30 pixels, ρ ≈ 1 at (30, 0), matching a brute-force sum (seed 3); independent noise has no peak past 10 px above 0.05 once averaged over 3 × 3 lags (seed 4)', () => {
+  // ρ ≈ 1 at (30, 0), matching a brute-force sum (seed 3); independent noise has no peak past 10 px above
+  // 0.05 once averaged over 3 × 3 lags (seed 4).
+  it('finds a pattern that repeats every 30 pixels, and no peak in independent noise', () => {
     const random = seededRandom(3);
     const tile = Array.from({ length: 30 * height }, () => (random() < 0.1 ? 1 : 0));
     const tiled = Float64Array.from({ length: width * height }, (_, i) => tile[(i % width) % 30 + 30 * Math.floor(i / width)]);

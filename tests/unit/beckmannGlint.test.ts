@@ -50,7 +50,8 @@ describe('Smith shadowing of a Beckmann surface', () => {
     expect(complementaryErrorFunction(2)).toBeCloseTo(0.004677735, 6);
   });
 
-  it('Λ(ν = 1) = (e⁻¹/√π − erfc 1)/2 = 0.02513, vanishes seen from above, grows at grazing; control: ν without the √2 fails', () => {
+  // Control: ν without the √2 fails.
+  it('Λ(ν = 1) = (e⁻¹/√π − erfc 1)/2 = 0.02513, vanishes seen from above, grows at grazing', () => {
     // ν = cot θ / √(2 σ²_dir) = 1 with σ²_dir = 0.02 and cot θ = 0.2.
     const cos = 0.2 / Math.sqrt(1 + 0.04);
     expect(smithLambda(cos, 0.02)).toBeCloseTo(0.02513, 4);

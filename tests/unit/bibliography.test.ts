@@ -23,7 +23,8 @@ describe('the bibliography', () => {
     expect(unknownReferences(planted, BIBLIOGRAPHY)).toEqual(['planted: nobody1999']);
   });
 
-  it('gives every entry its authors, year, title and where it appeared (control: an entry without a title, one with no year)', () => {
+  // Control: an entry without a title, one with no year.
+  it('gives every entry its authors, year, title and where it appeared', () => {
     expect(incompleteEntries(BIBLIOGRAPHY)).toEqual([]);
     const planted: Record<string, Reference> = {
       ...BIBLIOGRAPHY,

@@ -14,7 +14,8 @@ const HULL: HullSize = { length: 8, beam: 2.6 };
 const dot = (a: number[], b: number[]) => a.reduce((s, v, i) => s + v * b[i], 0);
 
 describe('targetPose', () => {
-  it('samples the surface at exactly the five hull points the lessons draw, half a length and half a beam from the centre', () => {
+  // Half a length and half a beam from the centre.
+  it('samples the surface at exactly the five hull points the lessons draw', () => {
     const heading = 0.7;
     const asked: [number, number][] = [];
     targetPose((x, z) => (asked.push([x, z]), 0), 12, -40, heading, HULL);
@@ -113,8 +114,8 @@ describe('BoatMotion', () => {
     expect(first.pose).toEqual(first.target);
     let moving = first;
     for (let t = 10.016; t < 10.5; t += 0.016) moving = motion.update(t, still, HULL, wave(t));
-    // Issue 11.1: pausing froze the picture with the damped pose, and drawing it again
-    // (an orbit, a share link) jumped the boat to its target; now it stays.
+    // A paused picture must not change when drawn again (an orbit, a share link): the boat
+    // keeps its damped pose rather than jumping to its target.
     expect(moving.pose).not.toEqual(moving.target);
     const time = 11;
     const held = motion.update(time, still, HULL, wave(time));
@@ -128,7 +129,7 @@ describe('BoatMotion', () => {
     let state = motion.update(t, still, HULL, wave(t));
     for (let i = 0; i < 30; i++) state = motion.update((t += 0.016), still, HULL, wave(t));
     expect(state.pose).not.toEqual(state.target);
-    // Drawn again unchanged, it holds its damped pose (issue 11.1).
+    // Drawn again unchanged, it holds its damped pose, so a paused picture does not jump.
     expect(motion.update(t, still, HULL, wave(t)).pose).toEqual(state.pose);
     // The GUI or setParams turned a paused boat: the picture shows it on its new heading, as a first frame would.
     const turned = motion.update(t, { ...still, heading: 1.5 }, HULL, wave(t));

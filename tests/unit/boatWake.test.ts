@@ -7,7 +7,8 @@ const ON = { enabled: true, strength: 1 };
 const DEG = Math.PI / 180;
 
 describe('the boat wake as the app keeps it', () => {
-  it('replays a fresh track from the time, pose and controls alone: two views of one frozen instant get the same uniforms', () => {
+  // Two views of one frozen instant get the same uniforms.
+  it('replays a fresh track from the time, pose and controls alone', () => {
     const c: WakeControls = { x: 1200.5, z: -800.25, heading: 270 * DEG, speed: 4, turnRate: 3 * DEG };
     const a = new BoatWake();
     const b = new BoatWake();
@@ -66,7 +67,8 @@ describe('the boat wake as the app keeps it', () => {
     expect(w.at(0, 20, 10, ON)[0]).not.toBe(0);
   });
 
-  it('bounds |η| everywhere it was sampled, at 2, 4, 8 and 12 m/s and on a turn; the head segment alone does not (negative control)', () => {
+  // Negative control: the head segment alone does not.
+  it('bounds |η| everywhere it was sampled, at 2, 4, 8 and 12 m/s and on a turn', () => {
     for (const [speed, turn] of [[2, 0], [4, 0], [8, 0], [12, 0], [4, 3]]) {
       const w = new BoatWake();
       w.record(100, { x: 0, z: 0, heading: 90 * DEG, speed, turnRate: turn * DEG });
@@ -81,7 +83,8 @@ describe('the boat wake as the app keeps it', () => {
     }
   }, 30_000);
 
-  it('adds the wake to a model sample: heights add, the normal is that of the summed slopes (negative control: slopes added to n unscaled)', () => {
+  // Negative control: slopes added to n unscaled.
+  it('adds the wake to a model sample: heights add, the normal is that of the summed slopes', () => {
     // A plane of slopes (0.6, −0.3) under a wake of slope (0.2, 0.5).
     const n = [-0.6, 1, 0.3];
     const len = Math.hypot(...n);

@@ -6,7 +6,8 @@ import { DEFAULT_SEA_STATE } from '../../src/sim/waves/spectra/seaState';
 import { seededRandom } from '../../src/sim/noise/integerHash';
 
 describe('the breaking measure: min(det J, λ_min J) of the choppy map (Dupuy & Bruneton 2012)', () => {
-  it('λ_min is the smaller root of the characteristic polynomial, the determinant their product (seed 11, 200 random matrices)', () => {
+  // Seed 11, 200 random matrices.
+  it('λ_min is the smaller root of the characteristic polynomial, the determinant their product', () => {
     const random = seededRandom(11);
     for (let i = 0; i < 200; i++) {
       const [jxx, jzz, jxz] = [random() - 0.5, random() - 0.5, random() - 0.5].map((v) => 1.6 * v);
@@ -36,7 +37,9 @@ describe('the breaking threshold from the sea\'s Jacobian statistics', { timeout
   ocean.setTime(10);
   const { tiles } = ocean.setup;
 
-  it('each cascade\'s (Jxx, Jzz, Jxz) covariance from its h₀ is the variance its fields have, read bilinearly at 40 000 seeded points, within 3 % (control: the same fields at their texels, undamped, are more than 5 % above it in the smallest tile, which reaches the grid\'s Nyquist)', () => {
+  // Read bilinearly at 40 000 seeded points, within 3 % (control: the same fields at their texels, undamped,
+  // are more than 5 % above it in the smallest tile, which reaches the grid's Nyquist).
+  it("each cascade's (Jxx, Jzz, Jxz) covariance from its h₀ is the variance its fields have", () => {
     tiles.forEach((tile, c) => {
       const cov = jacobianCovariance([tile], sea.choppiness);
       const single = new FftOcean(sea);
@@ -71,7 +74,8 @@ describe('the breaking threshold from the sea\'s Jacobian statistics', { timeout
     });
   });
 
-  it('marks Monahan\'s share of the displaced sea, within ±15 % at 10, 15 and 20 m/s (128², t = 10 s and 200 s; control: the Gaussian threshold on det J alone misses it)', () => {
+  // 128², t = 10 s and 200 s (control: the Gaussian threshold on det J alone misses it).
+  it("marks Monahan's share of the displaced sea, within ±15 % at 10, 15 and 20 m/s", () => {
     for (const windSpeed of [10, 15, 20]) {
       const windy = new FftOcean({ ...sea, windSpeed, fftSize: 128 });
       const cov = jacobianCovariance(windy.setup.tiles, sea.choppiness);

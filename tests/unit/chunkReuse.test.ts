@@ -101,7 +101,8 @@ describe('a still camera reuses the last selection', () => {
 });
 
 describe('a camera moved in place is captured again', () => {
-  it('one camera object moved as OrbitCamera moves it (no updateMatrixWorld by the caller) uploads what a fresh selection would (seed 12)', () => {
+  // No updateMatrixWorld by the caller (seed 12).
+  it('one camera moved as OrbitCamera moves it uploads what a fresh selection would', () => {
     // The capture skips the camera's matrix update while its position, rotation, scale and
     // projection are those of the last capture. Negative control: a pose check that ignores
     // the rotation, or the position, uploads a stale selection here.
@@ -127,7 +128,8 @@ describe('a camera moved in place is captured again', () => {
 });
 
 describe('a compare strip draws the nearest band split as the model alone does', () => {
-  it('uploads the same split chunks as tiles or whole; the strip\'s tiles are only for unsplit bands (control: no split in strips draws the 2 m grid)', () => {
+  // Control: no split in strips draws the 2 m grid.
+  it("uploads the same split chunks as tiles or whole; the strip's tiles are only for unsplit bands", () => {
     const step: Step = {
       position: [0, 1.2, 10],
       target: [30, 0, -60],

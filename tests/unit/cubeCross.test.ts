@@ -37,7 +37,8 @@ describe('the cube map unfolded into a cross', () => {
     return worst;
   }
 
-  it('shows the same direction on both sides of every seam, including the one that wraps round the horizon (control: the sky face upside down)', () => {
+  // Control: the sky face upside down.
+  it('shows the same direction on both sides of every seam, including the one round the horizon', () => {
     expect(worstSeam(CROSS_CELLS)).toBeLessThan(1e-6);
     const flipped = CROSS_CELLS.map((c) => (c.face === 'py' ? { ...c, up: [0, 0, -1] as [number, number, number] } : c));
     expect(worstSeam(flipped)).toBeGreaterThan(0.5);

@@ -33,7 +33,9 @@ describe('cascades', () => {
     expect(cascadeLayout(peakWavelength(gale), 128)[0].size).toBeGreaterThan(2700);
   });
 
-  it('have sizes in ratios far from simple fractions: q tiles of one never come within 0.05 of a whole number of another for q ≤ 8, so no two tiles repeat together within 8 of the larger (control: 4.5 = 9/2 does; 4.37, the ratio before, came within 0.01 with the first)', () => {
+  // q tiles of one never come within 0.05 of a whole number of another for q ≤ 8, so no two tiles repeat
+  // together within 8 of the larger (control: 4.5 = 9/2 does; 4.37 came within 0.01 with the first).
+  it('have sizes in ratios far from simple fractions, so no two tiles repeat together', () => {
     /** How far q·r comes from a whole number at best, for q = 1 … 8: the misalignment, in tiles of the smaller, of the nearest joint repeat. */
     const nearestRepeat = (r: number) => Math.min(...[1, 2, 3, 4, 5, 6, 7, 8].map((q) => Math.abs(q * r - Math.round(q * r))));
     const [r1, r2] = TILE_RATIOS;
@@ -82,7 +84,8 @@ describe('cascades', () => {
     return sum;
   }
 
-  it('count every wave once: the drawn modes carry m₀ (within 3 %); planted fault: tiles without the upper cut carry > 10 % too much', () => {
+  // Planted fault: tiles without the upper cut carry > 10 % too much.
+  it('count every wave once: the drawn modes carry m₀ (within 3 %)', () => {
     for (const windSpeed of [3, 10, 25]) {
       for (const spectrum of spectra) {
         const sea: SeaState = { ...DEFAULT_SEA_STATE, windSpeed, spectrum, fftSize: 64, fetch: 20_000 };

@@ -28,7 +28,8 @@ describe('fftFieldsWorker: when and what it answers', () => {
     vi.unstubAllGlobals();
   });
 
-  it('answers 2 ms after a request, not at once; a newer request before then replaces it and keeps the arrays the older one brought', async () => {
+  // The newer request keeps the arrays the older one brought.
+  it('answers 2 ms after a request; a newer request before then replaces it', async () => {
     vi.useFakeTimers();
     const { replies, send } = await startWorker();
     const reference = new FftOcean(sea);
@@ -82,7 +83,8 @@ class FakeWorker {
 describe('WorkerFieldSource: one request in flight, the newest waiting, the arrays handed back', () => {
   afterEach(() => vi.unstubAllGlobals());
 
-  it('asks once per time, keeps only the newest request while one is in flight, and sends the recycled arrays with the next', () => {
+  // The recycled arrays go with the next request.
+  it('asks once per time, keeps only the newest request in flight, and sends the recycled arrays', () => {
     vi.stubGlobal('Worker', FakeWorker);
     // A page that serves the Worker's script itself, as the app's does: its origin is the script's.
     vi.stubGlobal('location', { origin: new URL(import.meta.url).origin });

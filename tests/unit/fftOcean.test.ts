@@ -25,7 +25,8 @@ function synthesisedVariance(ocean: FftOcean, time: number): number {
 }
 
 describe('the synthesised spectral sea', { timeout: 600_000 }, () => {
-  it('is real: Hermitian symmetry leaves an imaginary part below 1e-6 of the real (planted fault: without the conj(h₀(−k)) term it is not)', () => {
+  // Planted fault: without the conj(h₀(−k)) term it is not.
+  it('is real: Hermitian symmetry leaves an imaginary part below 1e-6 of the real', () => {
     const setup = fftOceanSetup(sea({ windSpeed: 12, choppiness: 0 }));
     const fft = new InverseFft2d(64);
     for (const tile of setup.tiles) {
@@ -59,7 +60,8 @@ describe('the synthesised spectral sea', { timeout: 600_000 }, () => {
     }
   });
 
-  it('has the variance of its spectrum: Hs = 4σ within 10 % of 4√m₀ for winds 3–25 m/s (planted fault: amplitudes without the ½ fail)', () => {
+  // Planted fault: amplitudes without the ½ fail.
+  it('has the variance of its spectrum: Hs = 4σ within 10 % of 4√m₀ for winds 3–25 m/s', () => {
     const ratios: number[] = [];
     for (let u = 3; u <= 25; u += 2) {
       const s = sea({ windSpeed: u, seed: u });
@@ -125,7 +127,8 @@ describe('the synthesised spectral sea', { timeout: 600_000 }, () => {
     return (2 * Math.PI * best) / (steps * dt);
   }
 
-  it('oscillates at the spectral peak: a point’s height series peaks within 10 % of ωp (planted fault: ω² = g k (1 + k²) does not)', () => {
+  // Planted fault: ω² = g k (1 + k²) does not.
+  it('oscillates at the spectral peak: a point’s height series peaks within 10 % of ωp', () => {
     for (const u of [3, 10]) {
       const s = sea({ windSpeed: u, choppiness: 0 });
       const peak = frequencySpectrum(s).peak;
@@ -180,7 +183,8 @@ describe('the synthesised spectral sea', { timeout: 600_000 }, () => {
 describe('the CPU twin', { timeout: 120_000 }, () => {
   const ocean = new FftOcean(sea({ windSpeed: 12, seed: 3 }));
 
-  it('undoes the horizontal displacement: the surface above the displaced point is that point’s height (planted fault: no inversion)', () => {
+  // Planted fault: no inversion.
+  it('undoes the horizontal displacement: the surface above the displaced point is its height', () => {
     let worst = 0;
     let withoutUndo = 0;
     for (let i = 0; i < 40; i++) {

@@ -111,7 +111,8 @@ describe('JONSWAP (Hasselmann et al. 1973)', { timeout: 60_000 }, () => {
     expect(developed.alpha).toBeLessThan(0.011);
   });
   for (const [u, fetch] of [[10, 20_000], [20, 20_000], [15, 100_000]]) {
-    it(`peaks at ωp, and m₀ matches closed form (γ = 1) and the DNV approximation (γ = 3.3), U = ${u}, F = ${fetch / 1000} km`, () => {
+    // The closed form for γ = 1, the DNV approximation for γ = 3.3.
+    it(`peaks at ωp and m₀ matches its closed form and DNV's, U = ${u}, F = ${fetch / 1000} km`, () => {
       const { alpha, peak } = jonswapShape(u, fetch);
       expect(argmax((w) => jonswap(w, u, fetch), 0.3 * peak, 4 * peak) / peak).toBeCloseTo(1, 3);
       const m1 = simpson((w) => jonswapWithShape(w, alpha, peak, 1), 0.05 * peak, 60 * peak, 40000);
@@ -180,7 +181,8 @@ describe('Hasselmann et al. (1980) directional spreading', () => {
     // The two branches nearly meet at 1.05 ωp (measured: 8.50 from the lower, 8.92 from the upper, this sea).
     expect(Math.abs(6.97 * 1.05 ** 4.06 - s(1.05))).toBeLessThan(1);
   });
-  it('negative control: one exponent for all frequencies (the peak\'s) keeps short waves near the wind; Hasselmann\'s spreads them (measured 24× more at 90° for 3 ωp)', () => {
+  // The peak's exponent; Hasselmann's spreads them (measured 24× more at 90° for 3 ωp).
+  it('negative control: one exponent for all frequencies keeps short waves near the wind', () => {
     const blind = (t: number) => cos2sSpreading(t, hasselmannSpreadingExponent(wp, wp, U));
     const short = (t: number) => hasselmannSpreading(t, 3 * wp, wp, U);
     expect(short(Math.PI / 2)).toBeGreaterThan(10 * blind(Math.PI / 2));
@@ -201,7 +203,8 @@ describe('the spectral sea with Hasselmann spreading', () => {
     const crossWind = simpson((k) => 2 * simpson((t) => ring(k, t), Math.PI / 3, Math.PI, 80), 3 * kp, 6 * kp, 100);
     return { total, crossWind };
   }
-  it('keeps m₀ (the spreading only moves energy between directions) and sends more short-wave energy across the wind than cos-2s (planted fault: cos-2s s = 8 is the other sea)', () => {
+  // The spreading only moves energy between directions (planted fault: cos-2s s = 8 is the other sea).
+  it('keeps m₀ and sends more short-wave energy across the wind than cos-2s', () => {
     const base: SeaState = { ...DEFAULT_SEA_STATE, windSpeed: 15 };
     const cos2s = polarVariance(base);
     const hasselmann = polarVariance({ ...base, spreadingModel: 'hasselmann' });

@@ -10,7 +10,8 @@ describe('foam decay (Callaghan et al. 2012: e-folding τ of 0.5–8 s)', () => 
     expect(halfLife(2.5, 2.5)).not.toBeCloseTo(Math.exp(-1), 2);
   });
 
-  it('depends on time only: 60 steps of 1/60 s leave what one step of 1 s leaves; control: a fixed fade per frame does not', () => {
+  // Control: a fixed fade per frame does not.
+  it('depends on time only: 60 steps of 1/60 s leave what one step of 1 s leaves', () => {
     let stepped = 1;
     for (let i = 0; i < 60; i++) stepped *= foamRemaining(1 / 60);
     expect(stepped).toBeCloseTo(foamRemaining(1), 12);

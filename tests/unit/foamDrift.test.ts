@@ -78,7 +78,8 @@ describe('the foam left behind drifts with the surface (src/sim/waves/fft/foamDr
     expect(memory[at]).toBeCloseTo(FOAM_POTENTIAL_MAX * Math.exp(-1 / 2.5), 5);
   });
 
-  it('leaves the same memory, to the bit, played at 60 or 23 fps or jumped to; control: a drift by each frame’s own time step differs', () => {
+  // Control: a drift by each frame’s own time step differs.
+  it('leaves the same memory, to the bit, played at 60 or 23 fps or jumped to', () => {
     const velocity = foamDriftVelocity({ windSpeed: 20, windDirection: 57 });
     const end = 13.37;
     const played = (fps: number) => Array.from({ length: Math.floor((end - 6) * fps) }, (_, i) => 6 + i / fps).concat([end]);

@@ -54,7 +54,8 @@ describe('OceanMaterial.setSeenFromBelow: the same answer again changes nothing'
   });
 });
 
-describe('OceanMaterial: the wake compiled in only while its shared uniforms hold a track, and a repeat recompiles nothing', () => {
+// The wake's shared uniforms.
+describe('OceanMaterial: the wake compiled in only while its uniforms hold a track; a repeat recompiles nothing', () => {
   it('follows every change of uWakeCount at the next draw of each program, and leaves the versions alone on a repeat', () => {
     const m = material();
     const camera = new PerspectiveCamera();
@@ -90,7 +91,8 @@ describe('OceanMaterial: the wake compiled in only while its shared uniforms hol
 });
 
 describe('OceanMaterial: the sea rolls its own highlights off only under a renderer with no tone curve', () => {
-  it('compiles the roll-off in for NoToneMapping and out for the app\'s curve or a scene\'s own (ACES), and a repeat recompiles nothing', () => {
+  // Out for the app's curve or a scene's own (ACES).
+  it('compiles the roll-off in for NoToneMapping and out for any curve; a repeat recompiles nothing', () => {
     const m = material();
     const camera = new PerspectiveCamera();
     for (const [toneMapping, own] of [
@@ -112,7 +114,8 @@ describe('OceanMaterial: the sea rolls its own highlights off only under a rende
   });
 });
 
-describe('OceanMaterial teaching and debug views: the LOD tint, the normal as colour and the normals comparison compiled in only while shown', () => {
+// The LOD tint, the normal as colour and the normals comparison.
+describe('OceanMaterial teaching and debug views are compiled in only while shown', () => {
   it('puts each define in both programs and takes it out again; a repeat recompiles nothing', () => {
     const m = material();
     // Each view's define, in the material and in its near-band twin.

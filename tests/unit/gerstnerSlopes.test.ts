@@ -58,7 +58,8 @@ describe('Gerstner’s resolved slopes', () => {
     return sum / area;
   }
 
-  it('a PM sea of 32 trochoids (Q = 1) has the sum of theirs, measured on its surface, within 3 %; control: each wave’s peak slope squared, (Ak)², fails', () => {
+  // Control: each wave’s peak slope squared, (Ak)², fails.
+  it('a PM sea of 32 trochoids (Q = 1) has the sum of theirs, measured on its surface, within 3 %', () => {
     const waves = gerstnerSea({ count: 32, seed: 7, spectrum: piersonMoskowitz(10).spectrum, spreading: cosineSquared, windDirection: 0.3, steepness: 1 });
     const surface = measuredOnSurface(waves, 600);
     expect(Math.abs(gerstnerSlopeVariance(waves) / surface - 1)).toBeLessThan(0.03);
@@ -66,7 +67,8 @@ describe('Gerstner’s resolved slopes', () => {
     expect(Math.abs(peak / surface - 1)).toBeGreaterThan(0.5);
   });
 
-  it('4 steep trochoids (Σ QkA = 1, as gerstner-steepness) too, within 1 %; control: the sine waves’ (Ak)²/2, 2 % off, fails', () => {
+  // Control: the sine waves’ (Ak)²/2, 2 % off, fails.
+  it('4 steep trochoids (Σ QkA = 1, as gerstner-steepness) too, within 1 %', () => {
     const waves = gerstnerSea({ count: 4, seed: 1, spectrum: piersonMoskowitz(20).spectrum, spreading: cosineSquared, windDirection: 0.3, steepness: 1 });
     const surface = measuredOnSurface(waves, 300);
     const error = Math.abs(gerstnerSlopeVariance(waves) / surface - 1);

@@ -68,7 +68,8 @@ describe('the gerstner-steepness preset sharpens crests as Q goes from 0.2 to 1'
     expect(ratios[2]).toBeGreaterThan(5);
   });
 
-  it('negative control: the same sea with its horizontal motion reversed rounds its crests and sharpens its troughs instead', { timeout: SLOW }, () => {
+  // The same sea otherwise.
+  it('negative control: the horizontal motion reversed rounds the crests and sharpens the troughs', { timeout: SLOW }, () => {
     // The planted fault: +Q A k̂ sin θ instead of −Q A k̂ sin θ (a sign slip in the twin or shader).
     const reversed = presetSea('gerstner-steepness').map((w) => ({ ...w, horizontal: -w.horizontal }));
     // Measured: 0.16 (the troughs now carry the cusps).

@@ -14,7 +14,8 @@ function wave(wavelength: number, slope: number, horizontalSlope = 0): GerstnerW
 }
 
 describe('the mesh a Gerstner sea asks for near the eye', () => {
-  it('8 vertices on the shortest wave whose slope reaches 0.15; a sine wave just below it asks for nothing, its trochoid (q = 0.6) does', () => {
+  // A sine wave just below it asks for nothing, its trochoid (q = 0.6) does.
+  it('8 vertices on the shortest wave whose slope reaches 0.15, for a trochoid but not a sine', () => {
     expect(gerstnerFinestVertexStep([wave(40, 0.3), wave(4, 0.2)])).toBeCloseTo(0.5, 12);
     expect(gerstnerFinestVertexStep([wave(40, 0.3), wave(4, 0.1)])).toBeCloseTo(5, 12);
     expect(gerstnerFinestVertexStep([wave(4, 0.9 * STEEP_SLOPE)])).toBe(Infinity);
@@ -44,7 +45,8 @@ describe('the nearest band split for finer vertices', () => {
     expect(nearBandRefinement(0.01)).toBe(MAX_REFINEMENT);
   });
 
-  it('a split chunk’s side meets a coarser neighbour’s vertices exactly and a split neighbour’s all; control: the shared step left unscaled puts vertices between the coarse ones (cracks)', () => {
+  // Control: the shared step left unscaled puts vertices between the coarse ones (cracks).
+  it('a split chunk’s side meets a coarser neighbour’s vertices exactly and a split neighbour’s all', () => {
     for (const refine of [2, 4]) {
       const unit = BASE_STEP / refine;
       const metres = (units: number[], step: number) => units.map((u) => u * step);

@@ -24,7 +24,8 @@ describe('the glossary', () => {
     }
   });
 
-  it('every term occurs in at least one card’s text in each language (control: a planted term that occurs nowhere is reported)', () => {
+  // Control: a planted term that occurs nowhere is reported.
+  it('every term occurs in at least one card’s text in each language', () => {
     for (const language of LANGUAGES) expect(termsMissingFrom(cardTexts(language), language, GLOSSARY), language).toEqual([]);
     const planted = { ...GLOSSARY, plantedTerm: term(['bathysphere'], ['batisfera']) };
     for (const language of LANGUAGES) expect(termsMissingFrom(cardTexts(language), language, planted), language).toEqual(['plantedTerm']);

@@ -25,7 +25,8 @@ describe('haze (Koschmieder, aerosols thinning with height)', () => {
     expect(Math.abs(Math.exp(-3.0) - 0.02)).toBeGreaterThan(0.02);
   });
 
-  it('matches the path integrated by brute force on 200 seeded paths, within 1e-6 relative; control: the height change taken with its sign flipped fails', () => {
+  // Control: the height change taken with its sign flipped fails.
+  it('matches the path integrated by brute force on 200 seeded paths, within 1e-6 relative', () => {
     const random = seededRandom(17);
     let worst = 0;
     let worstFlipped = 0;

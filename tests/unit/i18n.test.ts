@@ -48,7 +48,8 @@ describe('language', () => {
       const en = new Translator('en').message(m);
       expect(es, id).not.toBe(en);
       expect(es.length, id).toBeGreaterThan(10);
-      // An inner error is English text (a browser's or library's): Spanish leaves it to the console (issue 11.7).
+      // An inner error is English text (a browser's or library's): Spanish leaves it to the console,
+      // so a Spanish page never shows an English sentence.
       const english = ENGLISH_ONLY[id];
       const expected = tokens.filter((t) => en.includes(t) && t !== english);
       expect(tokens.filter((t) => es.includes(t)), id).toEqual(expected);

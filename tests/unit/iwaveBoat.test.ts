@@ -13,7 +13,8 @@ const kernel = fittedVerticalDerivativeKernel();
 const boat = (x: number, z: number, heading: number, speed = 0): MovingHull => ({ x, z, heading, speed, length: 8, beam: 2.6, strength: 1 });
 
 describe('the hull in the field', () => {
-  it('reflects a wave that meets it: on the stone\'s side, what differs from open water came off the hull (planted fault: the hull out of reach sends nothing)', () => {
+  // Planted fault: the hull out of reach sends nothing.
+  it("reflects a wave that meets it: on the stone's side, what differs from open water came off the hull", () => {
     // A stone 6 m west of a boat lying broadside to it (heading 0: its length along z), 10 s on.
     const run = (hull: MovingHull | null) => {
       const grid = new IWaveGrid({ n: 128, spacing, kernel, sponge: IWAVE_SPONGE });
@@ -74,7 +75,8 @@ describe('the hull in the field', () => {
     expect(ahead / (flux / 60)).toBeLessThan(1.01);
   });
 
-  it('puts the hull where it was a moment ago on its present course: straight, and on a steady turn as the wake\'s replay integrates it', () => {
+  // On a turn, as the wake's replay integrates it.
+  it('puts the hull where it was a moment ago on its present course, straight and on a steady turn', () => {
     const now = boat(10, -4, 1.1, 5);
     const straight = hullEarlier(now, 0, 2);
     expect(straight.x).toBeCloseTo(10 - 5 * 2 * Math.sin(1.1), 10);
@@ -87,7 +89,8 @@ describe('the hull in the field', () => {
     expect(turning.heading).toBeCloseTo(1.1 - 0.3, 12);
   });
 
-  it('lets the boat feel the water beside it: a stone\'s waves lift its target pose, which the field under the hull (held at 0) cannot (planted fault)', () => {
+  // The field under the hull (held at 0) cannot (planted fault).
+  it("lets the boat feel the water beside it: a stone's waves lift its target pose", () => {
     const grid = new IWaveGrid({ n: 96, spacing, kernel, sponge: IWAVE_SPONGE });
     const hull = boat(0, 0, 0.3);
     grid.hull = hull;
@@ -107,7 +110,8 @@ describe('the hull in the field', () => {
 });
 
 describe('the hand-over to the analytic Kelvin wake', () => {
-  it('starts at D = max(2 L, 2πU²/g) (the transverse wavelength, Kelvin 1887) and blends over 8 m, the two weights summing to 1', () => {
+  // 2πU²/g is the transverse wavelength (Kelvin 1887).
+  it('starts at D = max(2 L, 2πU²/g) and blends over 8 m, the two weights summing to 1', () => {
     expect(handOverDistance(4, 8)).toBe(16);
     expect(handOverDistance(6, 8)).toBeCloseTo((2 * Math.PI * 36) / 9.81, 12);
     expect((2 * Math.PI * 36) / 9.81).toBeCloseTo(23.06, 2);

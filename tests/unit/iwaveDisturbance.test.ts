@@ -43,7 +43,8 @@ describe('sampling a read-back of the field (the CPU twin of shaders/iwave.glsl)
   for (let s = 0; s < 30; s++) grid.step(1 / 60);
   const snapshot: FieldSnapshot = { heights: Float32Array.from(grid.height), stride: 1, n, spacing: IWAVE_SPACING, centerX: grid.centerX, centerZ: grid.centerZ };
 
-  it('gives the solver\'s bilinear height inside the square and its slope by central differences (planted fault: a half-texel shift misses)', () => {
+  // Planted fault: a half-texel shift misses.
+  it("gives the solver's bilinear height inside the square and its slope by central differences", () => {
     let worst = 0;
     let worstShifted = 0;
     for (const [x, z] of [[4.1, -7.7], [5.3, -9.2], [2.05, -6.4], [4, -8]]) {

@@ -44,7 +44,8 @@ describe('the dispersion of the vertical-derivative kernel', () => {
   // Modes of the 64² box (0.5 m texels) inside the band, along an axis and the diagonal.
   const modes: [number, boolean][] = [[3, false], [2, true], [4, false], [3, true], [6, false], [6, true], [8, false], [10, false], [10, true], [12, false], [15, false], [15, true]];
 
-  it('evolves single Fourier modes with ω² = g k within 5 % from k = 0.55 to 4.2 rad/m (planted fault: the wave equation fails)', () => {
+  // Planted fault: the wave equation fails.
+  it('evolves single Fourier modes with ω² = g k within 5 % from k = 0.55 to 4.2 rad/m', () => {
     const measured = modes.map(([m, d]) => measuredDispersionError(fitted, m, d));
     console.log(`iWave dispersion, ω²/(gk) − 1: ${measured.map((r) => `k ${r.k.toFixed(2)}: ${(100 * r.error).toFixed(2)} %`).join(', ')}`);
     expect(Math.min(...measured.map((r) => r.k))).toBeLessThan(0.6);
@@ -56,7 +57,8 @@ describe('the dispersion of the vertical-derivative kernel', () => {
     expect(control.filter((r) => Math.abs(r.error) > 0.05).length).toBeGreaterThan(modes.length / 2);
   }, 120_000);
 
-  it('packs into 28 orbit weights, one per mirror-image set, that give the kernel back; a smaller kernel sits inside with zeros; a lopsided one throws', () => {
+  // A smaller kernel sits inside with zeros; a lopsided one throws.
+  it('packs into 28 orbit weights, one per mirror-image set, that give the kernel back', () => {
     const weights = kernelOrbitWeights(fitted);
     expect(weights.length).toBe(IWAVE_KERNEL_ORBITS);
     expect(IWAVE_KERNEL_ORBITS).toBe(28);
@@ -72,7 +74,8 @@ describe('the dispersion of the vertical-derivative kernel', () => {
     expect(() => kernelOrbitWeights(lopsided)).toThrow(/not symmetric/);
   });
 
-  it('keeps the response positive over the whole Brillouin zone (every mode stable) and within 5 % of |k| across the band; Tessendorf\'s truncated Bessel kernel does not', () => {
+  // The response stays positive over the whole Brillouin zone; Tessendorf's truncated Bessel kernel does not.
+  it('keeps every mode stable and within 5 % of |k| across the band', () => {
     const worstInBand = (kernel: ConvolutionKernel) => {
       let worst = 0;
       for (let s = 0; s <= 40; s++) {
@@ -153,7 +156,8 @@ function ringChecks(kernel: ConvolutionKernel): RingCheck[] {
 }
 
 describe('a dropped stone (Cauchy–Poisson)', () => {
-  it('spaces its crests as k = g t²/(4 r²) within 15 %, at several radii and three times; long waves lead (planted fault: the wave equation fails)', () => {
+  // Long waves lead (planted fault: the wave equation fails).
+  it('spaces its crests as k = g t²/(4 r²) within 15 %, at several radii and three times', () => {
     const checks = ringChecks(fitted);
     console.log(`Cauchy–Poisson: ${checks.map((c) => `t ${c.t} s, r ${c.radius.toFixed(1)} m: k ${c.measured.toFixed(2)} vs ${c.theory.toFixed(2)} (${(100 * (c.measured / c.theory - 1)).toFixed(1)} %)`).join('; ')}`);
     for (const t of [8, 10, 12]) expect(checks.filter((c) => c.t === t).length).toBeGreaterThanOrEqual(2);
@@ -182,7 +186,8 @@ function crestsOnAxis(grid: IWaveGrid, rMin: number, rMax: number): number[] {
 }
 
 describe('the guide rings of the stone preset', () => {
-  it('stand where the solver\'s crests are, r = g t²/(8πn) from the phase g t²/(4r) (Lamb §255), within one texel at t = 8 and 10 s (planted fault: half a turn off, the troughs, miss)', () => {
+  // From the phase g t²/(4r) (Lamb §255) (planted fault: half a turn off, the troughs, miss).
+  it("stand where the solver's crests are, r = g t²/(8πn), within one texel at t = 8 and 10 s", () => {
     const grid = new IWaveGrid({ n: 160, spacing, kernel: fitted, sponge: { width: 20, strength: 4 } });
     grid.disturb({ x: 0, z: 0, radius: 1, height: 0.4 });
     const dt = 1 / 30;
@@ -329,7 +334,8 @@ function borderReflection(k0: number, sponge: SpongeLayer | undefined): number {
 }
 
 describe('the absorbing border', () => {
-  it('reflects at most 5 % of a wave packet\'s amplitude from 0.6 to 4 rad/m (planted fault: no sponge, the edge reflects)', () => {
+  // Planted fault: no sponge, the edge reflects.
+  it("reflects at most 5 % of a wave packet's amplitude from 0.6 to 4 rad/m", () => {
     const reflections = [0.6, 1, 2, 4].map((k) => borderReflection(k, IWAVE_SPONGE));
     console.log(`Sponge (${IWAVE_SPONGE.width} texels, ${IWAVE_SPONGE.strength}/s): reflection ${reflections.map((r) => `${(100 * r).toFixed(2)} %`).join(', ')} at k = 0.6, 1, 2, 4 rad/m`);
     for (const r of reflections) expect(r).toBeLessThan(0.05);

@@ -218,7 +218,8 @@ describe('the wind spectrum', () => {
 });
 
 describe('the FFT’s butterflies', () => {
-  it('wires each output to in[j] and in[j + n/2] as the Stockham stage reads them, and states the sea’s own size and cascades', () => {
+  // And states the sea’s own size and cascades.
+  it('wires each output to in[j] and in[j + n/2] as the Stockham stage reads them', () => {
     const params = lessonParams('fft-normals');
     const d = butterflyDiagram(params);
     const n = BUTTERFLY_POINTS;

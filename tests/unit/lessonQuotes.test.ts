@@ -35,7 +35,8 @@ describe('lesson code quotes', () => {
     expect(new Set(watched)).toEqual(new Set(Object.values(LESSON_QUOTE_SOURCES).map((s) => resolve(root, s.file))));
   });
 
-  it('negative controls: a changed character, a shifted range, an ambiguous or missing marker, an overlong quote all fail', () => {
+  // A bad marker: ambiguous or missing.
+  it('negative controls: a changed character, a shifted range, a bad marker, an overlong quote all fail', () => {
     const quote = quotes.swell;
     const text = fileText(quote.file);
     expect(quoteMatchesFile({ ...quote, text: quote.text.replace('uSwellAmplitude', 'uSwellAmplitudes') }, text)).toBe(false);

@@ -53,7 +53,8 @@ describe('the lessons', () => {
     for (const key of controls) expect(isParamKey(key), key).toBe(true);
   });
 
-  it('every lesson’s view lies within its parameters’ ranges (control: Q = 0, below Gerstner steepness’s least, is refused)', () => {
+  // Control: Q = 0, below Gerstner steepness’s least, is refused.
+  it('every lesson’s view lies within its parameters’ ranges', () => {
     for (const lesson of LESSONS) expect(() => validateParams(lessonView(lesson).params), lesson.id).not.toThrow();
     expect(() => validateParams({ ...lessonView(findLesson('airy-waves')!).params, gerstnerSteepness: 0 })).toThrow(/gerstnerSteepness/);
   });
@@ -125,7 +126,8 @@ describe('the ideas’ order (conceptPath.ts)', () => {
 });
 
 describe('parameters a wave model does not read', () => {
-  it('the swell under fft and gerstner, wind under seed, Gerstner’s under the others; a comparison reads what each of its models reads', () => {
+  // A comparison reads what each of its models reads.
+  it("each model's controls: the swell under fft and gerstner, wind under seed, Gerstner’s under the others", () => {
     const of = (waves: 'seed' | 'fft' | 'gerstner', compare = 'off') => unreadParams({ waves, compare } as never);
     expect(of('fft').get('swellAmplitude')).toBe('unusedBySpectral');
     expect(of('gerstner').has('rippleStrength')).toBe(true);
@@ -140,7 +142,8 @@ describe('parameters a wave model does not read', () => {
     expect(of('seed', 'seed,fft').has('windSpeed')).toBe(false);
   });
 
-  it('what a switch turns off: the foam’s bias with foam off, the sky’s blur on a mirror, the picked colour under optics; the model’s reason first', () => {
+  // The foam’s bias with foam off; the model’s reason first.
+  it('what a switch turns off: foam’s bias, the sky’s blur on a mirror, the picked colour under optics', () => {
     const all = defaultParams();
     const bySwitch = (params: typeof all) => [...unreadParams(params).entries()].filter(([, reason]) => reason.startsWith('unusedWithout'));
     // By default the water's colour comes from optics, so only the picked colour is left unread.

@@ -155,7 +155,8 @@ describe('LOD bands', () => {
   });
 
   for (const seed of [21, 22, 23]) {
-    it(`give each chunk the band of its nearest point and neighbours at most one band apart when L ≥ a chunk (seed ${seed})`, () => {
+    // When L ≥ a chunk.
+    it(`give each chunk its nearest point's band, neighbours at most one band apart (seed ${seed})`, () => {
       const random = seededRandom(seed);
       const selector = new ChunkSelector();
       for (let n = 0; n < 20; n++) {

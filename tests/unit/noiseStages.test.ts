@@ -26,7 +26,8 @@ describe('the Perlin noise, step by step', () => {
     for (let y = 0; y < cells; y++) for (let x = 0; x < cells; x++) expect(stages.hash.data[y * cells + x]).toBe(Math.fround(integerNoise(x, y, latticeSeed)));
   });
 
-  it('step 2 is the seed report’s 3 × 3 smoothing of step 1, wrapping at the lattice’s edge (control: another octave’s lattice)', () => {
+  // Control: another octave’s lattice.
+  it('step 2 is the seed report’s 3 × 3 smoothing of step 1, wrapping at the lattice’s edge', () => {
     const raw = (x: number, y: number) => stages.hash.data[((y + cells) % cells) * cells + ((x + cells) % cells)];
     let worst = 0;
     for (let y = 0; y < cells; y++) {

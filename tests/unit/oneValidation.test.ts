@@ -3,7 +3,10 @@ import { defaultParams, paramDefs, paramKeys, parseParamText, validateParam } fr
 import { isValidTime } from '../../src/sim/params/simulationTime';
 import { formatUrlState, parseUrlState } from '../../src/app/url/urlState';
 
-/** Issue 11.6: the URL, the element's attributes and the API validate with one rule each. */
+/**
+ * The URL, the element's attributes and the API validate with one rule each, so a value
+ * accepted in one place is not refused in another.
+ */
 describe('one validation for every entry point', () => {
   it('accepts a time in the API exactly when the URL accepts it', () => {
     for (const t of [-5, -0.001, 0, 12.5, 1e9, 1e9 + 1, 1e300, Infinity, NaN]) {
@@ -42,7 +45,7 @@ describe('one validation for every entry point', () => {
   });
 });
 
-describe('boat state in a link (issue 11.1)', () => {
+describe('boat state in a link', () => {
   it('writes the boat state so that it reads back bit for bit, and refuses a bad one with a notice', async () => {
     const { formatBoatState, parseBoatState } = await import('../../src/app/url/urlState');
     const b = { x: 6.36123456789, z: -5.3312345, heading: { value: 5.1, velocity: -0.01 }, heave: { value: 1.0001, velocity: 0.3 }, pitch: { value: 0.01, velocity: 1e-17 }, roll: { value: -0.02, velocity: 0 } };

@@ -97,7 +97,8 @@ describe('the slopes row: resolved + roughness against Cox & Munk', () => {
     return measurePhysics({ name: 'gerstner', height: (x, z, t) => model.height(x, z, t), sea: seaStateFromParams(params), slopeVariance: () => slopeVariance, windSpeed, seaRoughness: true }, 100);
   };
 
-  it('the roughness makes up Cox & Munk’s σ² at 5 and 15 m/s (0.02911, 0.08134); control: slopes steeper than Cox & Munk’s are shown above it, with a note', () => {
+  // Control: slopes steeper than Cox & Munk’s are shown above it, with a note.
+  it('the roughness makes up Cox & Munk’s σ² at 5 and 15 m/s (0.02911, 0.08134)', () => {
     for (const [u, sigma2] of [[5, 0.02911], [15, 0.08134]]) {
       const r = flat(0.01, u);
       expect(r.slopes.coxMunk).toBeCloseTo(sigma2, 4);

@@ -45,7 +45,8 @@ describe("the underwater passes' scene encoding (src/render/underwater/sceneEnco
     for (const m of others) expect(m.defines && DEFINE in m.defines).toBe(false);
   });
 
-  it("chains a material's own onBeforeCompile and program key, and appends the encoding after three's colour-space chunk", () => {
+  // The encoding goes after three's colour-space chunk.
+  it("chains a material's own onBeforeCompile and program key, and appends the encoding", () => {
     const standard = new MeshStandardMaterial();
     standard.onBeforeCompile = (shader) => void (shader.fragmentShader = `// hull caustics\n${shader.fragmentShader}`);
     standard.customProgramCacheKey = () => 'hull';

@@ -83,7 +83,8 @@ describe('slope variance a spectrum resolves', () => {
     expect(share(15)).toBeLessThan(share(10));
   });
 
-  it('a band is resolved while its shortest wave spans two footprints and gone once its longest does; control: Nyquist forgotten', () => {
+  // Control: Nyquist forgotten.
+  it('a band is resolved while its shortest wave spans two footprints and gone once its longest does', () => {
     expect(resolvedShare(0.1, 1, 4)).toBe(1);
     expect(resolvedShare(0.5, 1, 4)).toBe(1);
     expect(resolvedShare(1, 1, 4)).toBeCloseTo(0.5, 12);
@@ -100,7 +101,8 @@ describe('slope variance a spectrum resolves', () => {
 });
 
 describe('cascade wavelengths for the glint', () => {
-  it('the bands touch: each tile’s longest wave is the next larger tile’s shortest, 4 texels of it; the smallest runs to 2 texels', async () => {
+  // 4 texels of it; the smallest runs to 2 texels.
+  it('the bands touch: each tile’s longest wave is the next larger tile’s shortest', async () => {
     const { cascadeLayout } = await import('../../src/sim/waves/fft/cascades');
     const { cascadeWavelengths } = await import('../../src/sim/optics/resolvedSlopes');
     const n = 128;

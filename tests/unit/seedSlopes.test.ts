@@ -35,7 +35,9 @@ describe('the seed sea’s resolved slopes', () => {
     expect(Math.abs(((state.swellAmplitude * state.swellFrequency) ** 2 / 4) * 1.6061 / brute - 1)).toBeGreaterThan(0.3);
   });
 
-  it('the ripples’ follows each map’s variance and the blend’s squared weights, within 10 % at blends 0–1 (the two maps’ slopes correlate a little at some offsets: up to 9 % at t = 20 s); control: linear weights fail at mid-blend', () => {
+  // At blends 0–1; the two maps’ slopes correlate a little at some offsets (up to 9 % at t = 20 s). Control:
+  // linear weights fail at mid-blend.
+  it('the ripples’ follows each map’s variance and the blend’s squared weights, within 10 %', () => {
     const variances: [number, number] = [heightmapSlopeVariance(maps[0], RIPPLE_TILE_SIZE, NORMAL_DELTA), heightmapSlopeVariance(maps[1], RIPPLE_TILE_SIZE, NORMAL_DELTA)];
     const ripplesOnly = { ...params, swellAmplitude: 0 };
     let controlWorst = 0;
@@ -51,7 +53,8 @@ describe('the seed sea’s resolved slopes', () => {
     expect(controlWorst).toBeGreaterThan(0.3);
   });
 
-  it('the model reports the whole sea’s (swell and ripples) at its default parameters: 0.006, far below Cox & Munk’s 0.055 at 10 m/s', () => {
+  // Swell and ripples: 0.006, against Cox & Munk’s 0.055 at 10 m/s.
+  it('the model reports the whole sea’s at its default parameters, far below Cox & Munk’s', () => {
     const model = new SeedWaveModel(params);
     const state = surfaceStateAt(params, 10);
     const brute = measured(state, maps, 2 * RIPPLE_TILE_SIZE * 4, 600);

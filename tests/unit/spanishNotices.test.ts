@@ -27,7 +27,7 @@ const ENGLISH = /\b(the|was|not|found|could|is|with|runs|without|using|boat)\b/i
 /** Doubled punctuation: "..", ".)", ".;" (an inner sentence's stop followed by the outer one). */
 const DOUBLED = /[.;:]\s*[.;:)]/;
 
-describe('notices in the page language (issue 11.7)', () => {
+describe('notices in the page language', () => {
   it('renders every notice in Spanish with no English words and no doubled punctuation', () => {
     const es = new Translator('es');
     for (const id of MESSAGE_IDS) {
@@ -51,7 +51,8 @@ describe('notices in the page language (issue 11.7)', () => {
     expect(messageOf(new Error('boom'), 'boatLoadFailed')).toEqual(message('boatLoadFailed', { reason: 'boom' }));
   });
 
-  it('promises nothing about a lost context that the browser may not keep: it names the view limit and the way out (issue 11.8)', () => {
+  // It names the view limit and the way out.
+  it('promises nothing about a lost context that the browser may not keep', () => {
     for (const language of ['en', 'es'] as const) {
       const text = new Translator(language).message(message('contextLost'));
       expect(text, language).not.toMatch(/by itself|volverá solo/);

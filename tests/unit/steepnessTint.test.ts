@@ -8,7 +8,8 @@ describe('the steep water of the interactive waves', () => {
     expect(TINT_FROM_SLOPE).toBeLessThan(FOAM_FROM_SLOPE);
   });
 
-  it('leaves gentle water alone, tints steeper water, foams as a wave nears the limit, whatever the slope’s direction', () => {
+  // Foams as a wave nears the limit.
+  it('leaves gentle water alone, tints steeper water, foams near the limit, whatever the slope’s direction', () => {
     expect(fieldTint(0.02, 0)).toBe(0);
     expect(fieldFoam(0.3, 0)).toBe(0);
     expect(fieldTint(0.2, 0.1)).toBeGreaterThan(0);

@@ -60,7 +60,8 @@ describe('mixed radix-4/radix-2 Stockham inverse FFT (the GPU passes since radix
     const reordered = stockhamMixedInverse(input, n, [4, 4, 4, 2]);
     for (let i = 0; i < 2 * n; i++) expect(reordered[i]).toBeCloseTo(good[i], 9);
   });
-  it('negative control: radix-4 stages with Ns doubled after each (as the radix-2 passes step it) do not give the inverse', () => {
+  // Ns doubled as the radix-2 passes step it.
+  it('negative control: radix-4 stages with Ns doubled after each do not give the inverse', () => {
     const n = 64;
     const random = seededRandom(6);
     const input = Float64Array.from({ length: 2 * n }, () => random() - 0.5);

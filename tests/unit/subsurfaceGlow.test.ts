@@ -3,14 +3,16 @@ import { crestScattering, henyeyGreenstein, particleScattering, PARTICLE_MEAN_CO
 import { bodyColor } from '../../src/sim/optics/waterColor';
 
 describe('the glow of a sunlit crest, in single scattering (Morel 1988, Mobley 1994, Pope & Fry 1997)', () => {
-  it('particles scatter b_p(550) = 0.30 C^0.62: 0.1952 m⁻¹ at 0.5 mg m⁻³, 0.30 at 1, varying as 550/λ (control: the exponent 0.62 read as 0.26 gives 0.25 at 0.5)', () => {
+  // 0.1952 m⁻¹ at 0.5 mg m⁻³, 0.30 at 1 (control: the exponent 0.62 read as 0.26 gives 0.25 at 0.5).
+  it('particles scatter b_p(550) = 0.30 C^0.62, varying as 550/λ', () => {
     expect(particleScattering(550, 0.5)).toBeCloseTo(0.1952, 4);
     expect(particleScattering(550, 1)).toBeCloseTo(0.3, 12);
     expect(particleScattering(475, 1) / particleScattering(650, 1)).toBeCloseTo(650 / 475, 12);
     expect(Math.abs(0.3 * Math.pow(0.5, 0.26) - 0.1953)).toBeGreaterThan(0.04);
   });
 
-  it('the Henyey–Greenstein phase function integrates to 1 over the sphere and has mean cosine g = 0.924 (control: without its 4π it integrates to 4π)', () => {
+  // Over the sphere (control: without its 4π it integrates to 4π).
+  it('the Henyey–Greenstein phase function integrates to 1 and has mean cosine g = 0.924', () => {
     let total = 0;
     let meanCosine = 0;
     const steps = 200_000;
@@ -27,7 +29,8 @@ describe('the glow of a sunlit crest, in single scattering (Morel 1988, Mobley 1
     expect(henyeyGreenstein(Math.cos((10 * Math.PI) / 180)) / henyeyGreenstein(Math.cos((60 * Math.PI) / 180))).toBeGreaterThan(30);
   });
 
-  it('through 1 m of crest the light is green-blue, greener than the deep water\'s own colour: green over blue 0.93 against 0.29 (control: unabsorbed, red would be 0.78 of green, a paler cyan)', () => {
+  // Green over blue 0.93 against 0.29 (control: unabsorbed, red would be 0.78 of green, a paler cyan).
+  it("through 1 m of crest the light is green-blue, greener than the deep water's own colour", () => {
     const [r, g, b] = crestScattering();
     const [wr, wg, wb] = bodyColor();
     expect(g / b).toBeGreaterThan(0.85);

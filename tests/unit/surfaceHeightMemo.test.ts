@@ -14,7 +14,8 @@ function counted(model: LiveWaveModel): { model: LiveWaveModel; calls: () => num
 }
 
 describe('SurfaceHeightMemo: the height under the eye, kept while nothing it depends on changed', () => {
-  it('answers a repeat without asking, and asks again, with the model\'s own answer, when the point, time, revision or model changes', () => {
+  // Also when the revision changes; it gives the model's own answer.
+  it('answers a repeat without asking, and asks the model again when the point, time or model changes', () => {
     const seed = new SeedWaveModel(defaultParams());
     const { model, calls } = counted(seed);
     const memo = new SurfaceHeightMemo();

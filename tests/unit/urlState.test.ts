@@ -140,7 +140,8 @@ describe('stones for the interactive waves (stones=)', () => {
     expect(parseUrlState('?lesson=iwave-stone').stones).toEqual(PRESETS.stone.stones);
   });
 
-  it('a bad list is a notice and no stones: wrong count, a time out of range, a radius or height past the limits (control: a good one passes)', () => {
+  // Control: a good one passes.
+  it('a bad list is a notice and no stones: wrong count, time out of range, radius or height too large', () => {
     for (const text of ['1,2,3,1', '1,2,3,1,0.4,9', '-1,0,0,1,0.3', '1,0,0,11,0.3', '1,0,0,1,2.5', '1,NaN,0,1,0.3', '1,,0,1,0.3', '1,2e6,0,1,0.3', '1,0,0,0,0.3']) {
       const state = parseUrlState(`?stones=${encodeURIComponent(text)}`);
       expect(state.stones, text).toEqual([]);

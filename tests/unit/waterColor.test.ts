@@ -7,7 +7,8 @@ describe('water colour from optics', () => {
     expect(PURE_WATER_ABSORPTION).toEqual([0.34, 0.0325, 0.0114]);
   });
 
-  it('has Morel’s molecular scattering, 0.00288 m⁻¹ at 500 nm, 0.000932 at 650 and 0.00359 at 475; control: λ⁻⁴ instead of λ⁻⁴·³ fails', () => {
+  // Control: λ⁻⁴ instead of λ⁻⁴·³ fails.
+  it('has Morel’s molecular scattering: 0.00288 m⁻¹ at 500 nm, 0.000932 at 650 and 0.00359 at 475', () => {
     expect(molecularScattering(500)).toBeCloseTo(0.00288, 8);
     // Written out by hand: 0.00288 × 1.3^−4.3 and × 0.95^−4.3.
     expect(molecularScattering(650)).toBeCloseTo(0.000932, 6);
@@ -16,7 +17,8 @@ describe('water colour from optics', () => {
     expect(Math.abs(rayleigh(650) - 0.000932)).toBeGreaterThan(5e-5);
   });
 
-  it('is blue: R = 0.33 b_b/(a + b_b) is ≈ 0.0005 red, 0.013 green, 0.045 blue; control: absorption and scattering swapped is not', () => {
+  // Control: absorption and scattering swapped is not.
+  it('is blue: R = 0.33 b_b/(a + b_b) is ≈ 0.0005 red, 0.013 green, 0.045 blue', () => {
     const [r, g, b] = bodyColor();
     expect(r).toBeCloseTo(0.000452, 5);
     expect(g).toBeCloseTo(0.0129, 4);

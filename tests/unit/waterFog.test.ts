@@ -5,11 +5,13 @@ import { applyWaterVolume, createWaterVolumeUniforms, setEyeDepth } from '../../
 import { SCENE_BRIGHTEST } from '../../src/render/underwater/sceneEncoding';
 import { paramDefs } from '../../src/sim/params/params';
 import { bodyColor } from '../../src/sim/optics/waterColor';
+import { rgbLuminance } from '../support/luminance';
 
 const transmittance = (fogDensity: number, distance: number) => WATER_EXTINCTION.map((e) => Math.exp(-fogDensity * e * distance));
 
 describe('how far the water fog lets anything be seen (src/sim/underwater/waterFog.ts)', () => {
-  it('at the hiding distance every channel lets through at most FOG_HIDES_BELOW, and just short of it the weakest-absorbed more', () => {
+  // Just short of it the weakest-absorbed lets through more.
+  it('at the hiding distance every channel lets through at most FOG_HIDES_BELOW', () => {
     for (const fog of [0.001, 0.035, 0.1, 0.3]) {
       const d = fogHidingDistance(fog);
       for (const t of transmittance(fog, d)) expect(t).toBeLessThanOrEqual(FOG_HIDES_BELOW * (1 + 1e-12));
@@ -25,7 +27,8 @@ describe('how far the water fog lets anything be seen (src/sim/underwater/waterF
     expect(fogHidingDistance(0)).toBe(Number.POSITIVE_INFINITY);
   });
 
-  it('the brightest colour the underwater scene keeps, seen from there, moves the output by under half a level over a water colour of 0.3 % of white', () => {
+  // Seen from there, over a water colour of 0.3 % of white.
+  it('the brightest colour the underwater scene keeps moves the output by under half a level', () => {
     // sRGB's steepest slope above 0.003 linear: its power segment at 0.003 (1.055/2.4 · x^(1/2.4 − 1)).
     const slope = (1.055 / 2.4) * Math.pow(0.003, 1 / 2.4 - 1);
     expect(SCENE_BRIGHTEST * FOG_HIDES_BELOW * slope * 255).toBeLessThan(0.5);
@@ -37,7 +40,8 @@ describe("the water's extinction and the daylight's fading, from pure water's op
   const a = [0.34, 0.0325, 0.0114];
   const b = [650, 510, 475].map((l) => 0.00288 * Math.pow(l / 500, -4.3));
 
-  it('extinction is c = a + b relative to green: 9.70 : 1 : 0.427, and the default density is pure water\'s c at 510 nm; control: absorption alone gives blue 0.351', () => {
+  // The default density is pure water's c at 510 nm (control: absorption alone gives blue 0.351).
+  it("extinction is c = a + b relative to green: 9.70 : 1 : 0.427, pure water's c at 510 nm", () => {
     const c = a.map((x, i) => x + b[i]);
     WATER_EXTINCTION.forEach((e, i) => expect(e).toBeCloseTo(c[i] / c[1], 9));
     expect(WATER_EXTINCTION[0]).toBeCloseTo(9.7, 2);
@@ -46,7 +50,8 @@ describe("the water's extinction and the daylight's fading, from pure water's op
     expect(a[2] / a[1]).not.toBeCloseTo(WATER_EXTINCTION[2], 2);
   });
 
-  it('the daylight fades by Gordon\'s K_d = 1.0395 (a + b/2): 0.354, 0.0352, 0.0137 per metre; control: a alone for blue is 17 % low', () => {
+  // Control: a alone for blue is 17 % low.
+  it("the daylight fades by Gordon's K_d = 1.0395 (a + b/2): 0.354, 0.0352, 0.0137 per metre", () => {
     DEPTH_DARKENING.forEach((k, i) => expect(k).toBeCloseTo(1.0395 * (a[i] + b[i] / 2), 12));
     expect(DEPTH_DARKENING[0]).toBeCloseTo(0.354, 3);
     expect(DEPTH_DARKENING[1]).toBeCloseTo(0.0352, 4);
@@ -83,7 +88,8 @@ describe("the daylight left at the eye's depth (the water's colour there, uWater
     expect(atEye.b).toBeCloseTo(scatter.b * b, 12);
   });
 
-  it('is the body colour from optics unless the colour is picked: the same ratios as bodyColor, and the picked default as bright; control: the picked colour is greener', () => {
+  // The same ratios as bodyColor, and the picked default as bright (control: the picked colour is greener).
+  it('is the body colour from optics unless the colour is picked', () => {
     const body = bodyColor();
     const optics = createWaterVolumeUniforms();
     applyWaterVolume(optics, '#06283a', false, 1, 0.035);
@@ -93,7 +99,7 @@ describe("the daylight left at the eye's depth (the water's colour there, uWater
     const picked = createWaterVolumeUniforms();
     applyWaterVolume(picked, '#06283a', true, 1, 0.035);
     const p = picked.uWaterScatter.value as Color;
-    const luminance = (x: Color) => 0.2126 * x.r + 0.7152 * x.g + 0.0722 * x.b;
+    const luminance = (x: Color) => rgbLuminance(x.r, x.g, x.b);
     expect(luminance(c) / luminance(p)).toBeGreaterThan(0.98);
     expect(luminance(c) / luminance(p)).toBeLessThan(1.02);
     expect(p.g / p.b).toBeGreaterThan(1.5 * (c.g / c.b));

@@ -75,7 +75,8 @@ describe('windrows (src/sim/waves/fft/windrows.ts)', () => {
     expect(Math.abs(BEAUFORT_9_FROM - beaufortSpeed(8.5))).toBeLessThan(0.1);
   });
 
-  it('move the foam, not make it: the gathering’s and the groups’ means are what the constants say, so the windrows’ share has the groups’ mean', () => {
+  // So the windrows’ share has the groups’ mean.
+  it('move the foam, not make it: the gathering’s and the groups’ means are what the constants say', () => {
     expect(meanOver((u, v, seed) => windrowGathering(valueNoise(u, v, seed)))).toBeCloseTo(WINDROW_GATHER_MEAN, 2);
     expect(meanOver((u, v, seed) => foamGroupShare(breakupNoise(u, v, seed)))).toBeCloseTo(FOAM_GROUP_SHARE_MEAN, 2);
     const swept = meanOver((u, v, seed) => windrowShare(u, v, seed, 1, 0));
@@ -84,7 +85,8 @@ describe('windrows (src/sim/waves/fft/windrows.ts)', () => {
     expect(windrowShare(3.3, 1.7, 5, 0, 0.42)).toBe(0.42);
   });
 
-  it('lie along the wind: 12 m downwind the streaks are still there, 12 m across they are not; control: the lattice laid across the wind', () => {
+  // Control: the lattice laid across the wind.
+  it('lie along the wind: 12 m downwind the streaks are still there, 12 m across they are not', () => {
     const lattice = windrowLattice(SEA, 0, 0, 0);
     const [wx, wz] = [lattice.axes[0], lattice.axes[1]].map((a) => a / Math.hypot(lattice.axes[0], lattice.axes[1]));
     const along = correlationAt(lattice, wx, wz, 12);

@@ -50,7 +50,8 @@ async function coverageRatios(fixed: boolean, extraQuery = ''): Promise<number[]
 }
 
 describe('foam from above', () => {
-  it('near-white share within ±30 % of W at 10, 15 and 20 m/s, with wave groups and without; control: the foam left behind drawn solid white is 1.5–2.3 W', { timeout: 240_000 }, async () => {
+  // Control: the foam left behind drawn solid white is 1.5–2.3 W.
+  it('near-white share within ±30 % of W at 10, 15 and 20 m/s, with wave groups and without', { timeout: 240_000 }, async () => {
     const ratios = await coverageRatios(true);
     console.log(`[oceano] foam coverage / Monahan's W at 10, 15, 20 m/s: ${ratios.map((r) => r.toFixed(2)).join(', ')}`);
     for (const ratio of ratios) expect(Math.abs(ratio - 1), ratios.map((r) => r.toFixed(2)).join(', ')).toBeLessThan(TOLERANCE);
@@ -62,7 +63,8 @@ describe('foam from above', () => {
     expect(Math.min(...control), control.map((r) => r.toFixed(2)).join(', ')).toBeGreaterThan(1 + TOLERANCE);
   });
 
-  it("is as bright and as blue as its measured reflectance under this sun and sky makes solid foam, at 20 m/s; controls: the brighter albedo drawn before, a grey sky's light", { timeout: 120_000 }, async () => {
+  // Under this sun and sky. Controls: the brighter albedo drawn before, a grey sky's light.
+  it('is as bright and as blue as its measured reflectance makes solid foam, at 20 m/s', { timeout: 120_000 }, async () => {
     const { page } = await openOcean(harness, foamQuery(20), FOAM_VIEW.width, FOAM_VIEW.height);
     const measure = async () => {
       const pictures = await foamAt(page);

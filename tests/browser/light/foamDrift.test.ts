@@ -62,7 +62,8 @@ async function measuredShift(drifts: boolean): Promise<{ shift: [number, number]
 }
 
 describe('the foam left behind drifts with the surface', () => {
-  it('the GPU memory 4 s later matches best shifted by the drift’s whole texels downwind; control: without the drift, where it lay', { timeout: 120_000 }, async () => {
+  // Control: without the drift, where it lay.
+  it('the GPU memory 4 s later matches best shifted by the drift’s whole texels downwind', { timeout: 120_000 }, async () => {
     const { shift, texel } = await measuredShift(true);
     const velocity = foamDriftVelocity(WIND);
     const [x1, z1] = foamDriftTexels(velocity, texel, foamLatticeIndex(TO));

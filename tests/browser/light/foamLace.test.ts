@@ -57,7 +57,8 @@ async function laceContrast(roundShare: boolean): Promise<{ contrast: number; pi
 const LIMIT = 0.33;
 
 describe('far foam keeps its lace', () => {
-  it('from 30 m straight down the foam’s fine light inside its thin patches is over 0.33 of their brightness; control: the share shaded by thickness alone is under it', { timeout: 180_000 }, async () => {
+  // Straight down. Control: the share shaded by thickness alone is under it.
+  it('from 30 m the fine light inside thin foam patches is over 0.33 of their brightness', { timeout: 180_000 }, async () => {
     const lace = await laceContrast(false);
     const round = await laceContrast(true);
     const say = `lace contrast ${lace.contrast.toFixed(3)} (${lace.pixels} px), control ${round.contrast.toFixed(3)} (${round.pixels} px)`;

@@ -49,7 +49,8 @@ async function relief(foamTexture: boolean): Promise<{ contrast: number; pixels:
 const LIMIT = 0.02;
 
 describe('foam lit on its own relief', () => {
-  it('from 10 m straight down at 15 m/s solid foam’s light varies finer than 7 cm by over 2 % of its mean; control: foam as paint is flat', { timeout: 240_000 }, async () => {
+  // Straight down. Control: foam as paint is flat.
+  it('from 10 m at 15 m/s solid foam’s light varies finer than 7 cm by over 2 % of its mean', { timeout: 240_000 }, async () => {
     const lit = await relief(true);
     const paint = await relief(false);
     const say = `solid foam's fine light ${lit.contrast.toFixed(4)} of its mean (${lit.pixels} px), as paint ${paint.contrast.toFixed(4)} (${paint.pixels} px)`;

@@ -102,7 +102,8 @@ function sheenRatios(withSheen: PNG, without: PNG): number[] {
 }
 
 describe("foam's wet sheen", () => {
-  it('is the rough Beckmann lobe the material states, in size and in its fall across the view (control: a smoother sheen)', async () => {
+  // Control: a smoother sheen.
+  it('is the rough Beckmann lobe the material states, in size and in its fall across the view', async () => {
     const without = await solidFoam(false);
     const ratios = sheenRatios(await solidFoam(true), without);
     const smoother = sheenRatios(await solidFoam(true, [['const float FOAM_SHEEN_VARIANCE = 0.3;', 'const float FOAM_SHEEN_VARIANCE = 0.15;']]), without);

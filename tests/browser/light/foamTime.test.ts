@@ -20,7 +20,8 @@ function differing(a: Buffer, b: Buffer): number {
 }
 
 describe('foam in simulation time', () => {
-  it(`${STEPS} steps of 1/60 s from t = 20 s draw what a jump to the same t draws, pixel for pixel; control: one step later differs`, { timeout: 240_000 }, async () => {
+  // Control: one step later differs.
+  it(`${STEPS} steps of 1/60 s from t = 20 s draw what a jump to the same t draws, pixel for pixel`, { timeout: 240_000 }, async () => {
     const stepped = await openOcean(harness, QUERY, SIZE.width, SIZE.height);
     const time = await stepped.page.evaluate((steps) => {
       window.oceano.pause();

@@ -51,7 +51,8 @@ function meanDifference(a: Buffer, b: Buffer): number {
 }
 
 describe('Gerstner\'s normal: long waves per vertex, short ones per pixel', () => {
-  it('draws the closed-form normal within 0.1 level of every wave per pixel; control: every wave per vertex differs by over 0.5', { timeout: 120_000 }, async () => {
+  // Control: every wave per vertex differs by over 0.5.
+  it('draws the closed-form normal within 0.1 level of every wave per pixel', { timeout: 120_000 }, async () => {
     const { page } = await openOcean(harness, VIEW.query, VIEW.width, VIEW.height);
     const shipped = await withSplit(page, '0.02');
     const perPixel = await withSplit(page, '0.0');

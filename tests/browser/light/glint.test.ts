@@ -11,7 +11,8 @@ import { GLINT_VIEW, HORIZON_VIEW, glintQuery, horizonQuery } from './lightViews
  * is √(σ²(15)/σ²(5)) = √(0.0798/0.0286) = 1.67. Tolerance: the range Cox & Munk's own
  * scatter of ±0.004 on σ² allows, √(0.0758/0.0326) = 1.52 to √(0.0838/0.0246) = 1.85, its
  * lower end taken down to 1.50 because the picture's core clips at the display's white: the
- * narrower, brighter 5 m/s glint is measured wider than it is (docs/light.md, §3).
+ * narrower, brighter 5 m/s glint is measured wider than it is (docs/light-sun-and-sky.md,
+ * "Measured: the glint's width, 5 against 15 m/s").
  * And the far sea does not sparkle: between two frames 1/60 s apart, the band just below
  * the horizon changes by less than FLICKER_BOUND on every model, and on the FFT sea, whose
  * near sea moves fastest, by less than the sea near the eye.
@@ -82,7 +83,8 @@ describe('the glint follows Cox & Munk', () => {
     });
   }
 
-  it(`the far sea changes by at most ${FLICKER_BOUND} levels between frames 1/60 s apart, on every wave model, and less than the near sea on the FFT sea; control: the fixed highlight flickers more`, { timeout: 300_000 }, async () => {
+  // And by less than the near sea on the FFT sea. Control: the fixed highlight flickers more.
+  it(`the far sea changes by at most ${FLICKER_BOUND} levels between frames 1/60 s apart, on every model`, { timeout: 300_000 }, async () => {
     for (const waves of ['fft', 'seed', 'gerstner'] as const) {
       const fixed = await flicker(true, waves);
       console.log(`[oceano] ${waves} flicker, mean Δ levels over 1/60 s: far ${fixed.far.toFixed(2)}, near ${fixed.near.toFixed(2)}`);

@@ -1,9 +1,5 @@
 import { PNG } from 'pngjs';
-
-/** Rec. 709 luminance of pixel i of an RGBA image, 0–255. */
-function luminance(data: Uint8Array, i: number): number {
-  return 0.2126 * data[4 * i] + 0.7152 * data[4 * i + 1] + 0.0722 * data[4 * i + 2];
-}
+import { pixelLuminance } from '../../support/luminance';
 
 /**
  * The glint's horizontal width, px: in each row of [top, bottom) the pixels brighter than
@@ -18,7 +14,7 @@ export function glintWidth(png: Buffer, top: number, bottom: number): number {
   let pixels = 0;
   let rows = 0;
   for (let y = Math.max(0, top); y < Math.min(bottom, image.height); y++) {
-    for (let x = 0; x < width; x++) row[x] = luminance(image.data, y * width + x);
+    for (let x = 0; x < width; x++) row[x] = pixelLuminance(image.data, y * width + x);
     const sorted = Float64Array.from(row).sort();
     const half = (sorted[Math.floor(0.1 * width)] + sorted[width - 1]) / 2;
     for (let x = 0; x < width; x++) if (row[x] > half) pixels++;
@@ -37,7 +33,7 @@ export function meanChange(a: Buffer, b: Buffer, top: number, bottom: number): n
   for (let y = Math.max(0, top); y < Math.min(bottom, imageA.height); y++) {
     for (let x = 0; x < width; x++) {
       const i = y * width + x;
-      sum += Math.abs(luminance(imageA.data, i) - luminance(imageB.data, i));
+      sum += Math.abs(pixelLuminance(imageA.data, i) - pixelLuminance(imageB.data, i));
       count++;
     }
   }

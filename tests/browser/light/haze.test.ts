@@ -1,10 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
-import { Color, SRGBColorSpace } from 'three';
 import { canvasPng, openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { pixelRay, type Vec3 } from '../viewRays';
 import { hazeExtinction, hazeWeight } from '../../../src/sim/optics/haze';
+import { pixelLuminance } from '../../support/luminance';
+import { srgbToLinear } from '../../support/srgb';
 
 /**
  * The sea seen from 500 m up is the sea, not a pale haze (src/sim/optics/haze.ts): away from
@@ -23,17 +24,15 @@ async function seaBelowSky(extra: string): Promise<number> {
   await page.close();
   const meanLuma = (y0: number, y1: number) => {
     let sum = 0;
-    for (let y = y0; y < y1; y++) for (let x = 0; x < 213; x++) {
-      const i = (y * 640 + x) * 4;
-      sum += 0.2126 * png.data[i] + 0.7152 * png.data[i + 1] + 0.0722 * png.data[i + 2];
-    }
+    for (let y = y0; y < y1; y++) for (let x = 0; x < 213; x++) sum += pixelLuminance(png.data, y * 640 + x);
     return sum / ((y1 - y0) * 213);
   };
   return meanLuma(100, 130) - meanLuma(200, 360);
 }
 
 describe('the haze', () => {
-  it('leaves the sea seen from 500 m darker than the horizon’s sky on every wave model (control: the old 3.26 km haze)', async () => {
+  // Control: a 3.26 km visibility's haze.
+  it('leaves the sea seen from 500 m darker than the horizon’s sky on every wave model', async () => {
     const measured: Record<string, number> = {};
     for (const waves of ['seed', 'fft', 'gerstner']) measured[waves] = await seaBelowSky(`waves=${waves}`);
     const control = await seaBelowSky('waves=seed&visibility=3.26');
@@ -61,9 +60,6 @@ const PARITY_SIZE = { width: 320, height: 180 };
 // Measured: median 0.0082 (95th percentile 0.0218) over 3966 pixels; the control 0.065 (0.108).
 const PARITY_MEDIAN_LIMIT = 0.02;
 
-/** An 8-bit sRGB level as linear light, by three.js's own colour management. */
-const srgbToLinear = (level: number) => new Color().setRGB(level / 255, 0, 0, SRGBColorSpace).r;
-
 async function hazeRatios(cpuWeight: (beta: number, distance: number) => number): Promise<{ median: number; worst: number; pixels: number }> {
   const { width, height } = PARITY_SIZE;
   const cam = [...PARITY_EYE, ...PARITY_TARGET].join(',');
@@ -83,7 +79,7 @@ async function hazeRatios(cpuWeight: (beta: number, distance: number) => number)
       const i = (y * width + x) * 4 + 1;
       const levels = pictures.map((p) => p.data[i]);
       if (Math.abs(levels[1] - levels[0]) < 10 || Math.abs(levels[2] - levels[0]) < 10) continue;
-      const c = levels.map(srgbToLinear);
+      const c = levels.map((level) => srgbToLinear(level / 255));
       if (c.some((v) => v > 0.55)) continue;
       const w = PARITY_VISIBILITIES.map((v) => cpuWeight(hazeExtinction(v * 1000), distance));
       errors.push((c[2] - c[0]) / (c[1] - c[0]) - (w[2] - w[0]) / (w[1] - w[0]));
@@ -94,7 +90,8 @@ async function hazeRatios(cpuWeight: (beta: number, distance: number) => number)
 }
 
 describe('the haze on the GPU', () => {
-  it('weighs each pixel as the CPU does, from 300 m up at three visibilities (control: the CPU without the thinning with height)', async () => {
+  // Control: the CPU without the thinning with height.
+  it('weighs each pixel as the CPU does, from 300 m up at three visibilities', async () => {
     const exact = await hazeRatios((beta, distance) => hazeWeight(beta, PARITY_EYE[1], 0, distance));
     const flat = await hazeRatios((beta, distance) => hazeWeight(beta, 0, 0, distance));
     console.log(`[oceano] haze parity over ${exact.pixels} pixels: ratio error median ${exact.median.toFixed(4)}, 95th percentile ${exact.worst.toFixed(4)}; control ${flat.median.toFixed(4)}, ${flat.worst.toFixed(4)}`);

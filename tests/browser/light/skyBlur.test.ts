@@ -3,6 +3,7 @@ import { PNG } from 'pngjs';
 import { canvasPng, openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { meanChange } from './glintMeasure';
+import { pixelLuminance } from '../../support/luminance';
 
 /**
  * The lesson's switch for the sky's blur (skyBlur, shaders/skyCube.glsl skyCubeColorRough):
@@ -20,10 +21,7 @@ const LEFT_OF_GLINT = 300;
 
 function farDetail(png: Buffer): number {
   const image = PNG.sync.read(png);
-  const luma = (x: number, y: number) => {
-    const i = (y * image.width + x) * 4;
-    return 0.2126 * image.data[i] + 0.7152 * image.data[i + 1] + 0.0722 * image.data[i + 2];
-  };
+  const luma = (x: number, y: number) => pixelLuminance(image.data, y * image.width + x);
   let sum = 0;
   let count = 0;
   for (let y = FAR_ROWS[0]; y < FAR_ROWS[1]; y++) for (let x = 0; x + 1 < LEFT_OF_GLINT; x++, count++) sum += Math.abs(luma(x + 1, y) - luma(x, y));
@@ -38,7 +36,8 @@ async function shot(query: string): Promise<Buffer> {
 }
 
 describe('the sky blurred by the roughness', () => {
-  it('the switch reaches the far sea, and the blurred sky there has less detail than the sharp one, on the seed and FFT seas, and under a sky of images', async () => {
+  // On the seed and FFT seas, and under a sky of images.
+  it('the switch reaches the far sea, where the blurred sky has less detail than the sharp one', async () => {
     for (const view of ['waves=seed', 'waves=fft', 'waves=seed&sky=sky']) {
       const blurred = await shot(`t=10&${view}`);
       const sharp = await shot(`t=10&${view}&skyBlur=0`);

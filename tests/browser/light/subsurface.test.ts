@@ -5,6 +5,7 @@ import { canvasPng, openOcean } from '../harness';
 import { useHarness } from '../useHarness';
 import { pixelRay, type Vec3 } from '../viewRays';
 import { GLOW_VIEW, glowQuery } from './lightViews';
+import { rgbLuminance } from '../../support/luminance';
 
 /**
  * Thin crests seen against a low sun glow green (shaders/subsurface.glsl): with the term on,
@@ -24,7 +25,7 @@ interface Colours {
   trough: number[];
 }
 
-const luminance = (c: number[]) => 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+const luminance = (c: number[]) => rgbLuminance(c[0], c[1], c[2]);
 const greenShare = (c: number[]) => c[1] / (c[0] + c[1] + c[2]);
 
 /** The sampled pixels and the height of the surface each one sees. Text, not a function: the runner's transform would give it helpers the page lacks. */
@@ -84,7 +85,8 @@ function describeColours(on: Colours, off: Colours): string {
 }
 
 describe('the subsurface glow', () => {
-  it('makes crests seen against a low sun brighter and greener than the troughs beside them; controls: the term off fails, glowing on every wave alike fails', { timeout: 240_000 }, async () => {
+  // Controls: the term off fails, glowing on every wave alike fails.
+  it('makes crests seen against a low sun brighter and greener than the troughs beside them', { timeout: 240_000 }, async () => {
     const { on, off } = await crestAndTrough(null);
     const checks = glowChecks(on, off);
     console.log(`[oceano] ${describeColours(on, off)}`);

@@ -76,7 +76,8 @@ async function measuredPeak(windSpeed: number, { fixes, extraQuery = '', measure
 }
 
 describe('no tile period in the foam or the picture', () => {
-  it('from 400 m above, no autocorrelation peak above 0.05 past 50 m at 10 and 15 m/s; control: the breakup field repeating with the smallest tile peaks above it at its lattice', { timeout: 600_000 }, async () => {
+  // Control: the breakup field repeating with the smallest tile peaks above it at its lattice.
+  it('from 400 m above, no autocorrelation peak above 0.05 past 50 m at 10 and 15 m/s', { timeout: 600_000 }, async () => {
     for (const windSpeed of [10, 15]) {
       const peak = await repeatPeak(windSpeed, true);
       const control = await repeatPeak(windSpeed, false);
@@ -99,7 +100,8 @@ describe('no tile period in the foam or the picture', () => {
   // The picture, not only the foam: far away the two shorter tiles are read twice and blended by
   // a rotation that turns with a field that never repeats (shaders/waves/fft.glsl fftBlendCopies).
   // At 15 m/s from 400 m the tiles' repeat measured 0.055 without the copies.
-  it('from 400 m above at 15 m/s, the picture’s detail has no autocorrelation peak above 0.05 past 100 m; control: every tile read once peaks above it', { timeout: 300_000 }, async () => {
+  // The picture's detail. Control: every tile read once peaks above it.
+  it('from 400 m above at 15 m/s, the detail has no autocorrelation peak above 0.05 past 100 m', { timeout: 300_000 }, async () => {
     const picture = { measure: pictureDetail, minLagMetres: PICTURE_MIN_LAG_METRES };
     const peak = await measuredPeak(15, picture);
     const control = await measuredPeak(15, { ...picture, fixes: { tileCopies: false } });

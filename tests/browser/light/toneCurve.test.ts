@@ -109,7 +109,8 @@ const DISC_PIXELS = SUN_DISC_SOLID_ANGLE / ((2 * Math.tan((FOV / 2) * (Math.PI /
 const RIM_PIXELS = 2 * Math.sqrt(Math.PI * DISC_PIXELS);
 
 describe('the whole frame through one tone curve', () => {
-  it('draws the bright sky as the sky painter\'s colour through the curve, and the sun\'s disc white; controls: no curve, a disc no brighter than the cube', { timeout: 180_000 }, async () => {
+  // Controls: no curve, a disc no brighter than the cube.
+  it("draws the bright sky as the sky painter's colour through the curve, and the sun's disc white", { timeout: 180_000 }, async () => {
     const { page, consoleErrors } = await openOcean(harness, QUERY, W, H);
     await page.evaluate(() => window.oceano.pause());
     const shot = async () => fitSky(PNG.sync.read(await canvasPng(page)));
@@ -129,7 +130,8 @@ describe('the whole frame through one tone curve', () => {
     await page.close();
   });
 
-  it('multiplies the light by 2^exposure before the curve, at −1 and +1 stop; control: the picture at 0 stops is off half the light', { timeout: 180_000 }, async () => {
+  // Control: the picture at 0 stops is off half the light.
+  it('multiplies the light by 2^exposure before the curve, at −1 and +1 stop', { timeout: 180_000 }, async () => {
     const { page, consoleErrors } = await openOcean(harness, QUERY, W, H);
     await page.evaluate(() => window.oceano.pause());
     const shotAt = async (exposure: number) => {
@@ -149,7 +151,8 @@ describe('the whole frame through one tone curve', () => {
     await page.close();
   });
 
-  it("draws the disc's edge antialiased after the curve: its rim pixels between the sky and white; control: the edge stepping by whole pixels", { timeout: 120_000 }, async () => {
+  // Control: the edge stepping by whole pixels.
+  it("draws the disc's edge antialiased after the curve: its rim pixels between the sky and white", { timeout: 120_000 }, async () => {
     const { page, consoleErrors } = await openOcean(harness, QUERY, W, H);
     await page.evaluate(() => window.oceano.pause());
     const smooth = discRim(PNG.sync.read(await canvasPng(page)));

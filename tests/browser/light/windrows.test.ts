@@ -35,7 +35,8 @@ async function anisotropy(windrows: boolean): Promise<number> {
 }
 
 describe('windrows: a gale’s foam in streaks along the wind', () => {
-  it('from 150 m down at 20 m/s the foam left behind is drawn out along the wind (anisotropy over 0.16); control: the windrows off leave round patches', { timeout: 240_000 }, async () => {
+  // Looking down; anisotropy over 0.16. Control: the windrows off leave round patches.
+  it('from 150 m at 20 m/s the foam left behind is drawn out along the wind', { timeout: 240_000 }, async () => {
     const streaks = await anisotropy(true);
     const patches = await anisotropy(false);
     const say = `anisotropy ${streaks.toFixed(3)} with windrows, ${patches.toFixed(3)} without`;
@@ -59,7 +60,8 @@ function twinShare(x: number, z: number, t: number, drifting: boolean): number {
 }
 
 describe('windrows: the GPU against the CPU twin', () => {
-  it('agree within 1e-3 at seeded random grid points up to 3 km out and t up to 4,321 s; control: the twin without the drift is caught', { timeout: 120_000 }, async () => {
+  // Control: the twin without the drift is caught.
+  it('agree within 1e-3 at seeded random grid points up to 3 km out and t up to 4,321 s', { timeout: 120_000 }, async () => {
     const random = seededRandom(20261127);
     const cases = PARITY.times.map((t) => ({
       t,
