@@ -59,6 +59,14 @@ describe('the lessons', () => {
     expect(() => validateParams({ ...lessonView(findLesson('airy-waves')!).params, gerstnerSteepness: 0 })).toThrow(/gerstnerSteepness/);
   });
 
+  it('oceano.lessons() says a lesson has a question exactly when its card asks one', () => {
+    const listed = lessonList('en');
+    expect(listed.map((l) => l.question)).toEqual(listed.map((l) => Boolean(LESSON_TEXTS[l.id].question?.ask.en)));
+    // Control: a card without its question would be reported by the same comparison.
+    const without = { ...LESSON_TEXTS, swell: { ...LESSON_TEXTS.swell, question: undefined } } as unknown as typeof LESSON_TEXTS;
+    expect(listed.map((l) => l.question)).not.toEqual(listed.map((l) => Boolean(without[l.id].question?.ask.en)));
+  });
+
   it('the word count check fails a 30-word text (control)', () => {
     expect(words('word '.repeat(30))).toBeLessThan(40);
   });
@@ -70,7 +78,7 @@ describe('the lessons', () => {
     const wake = lessonView(findLesson('kelvin-wake')!);
     expect(wake.params.wakeGuide).toBe(true);
     expect(lessonView(findLesson('frustum-culling')!).cullingCamera).toEqual(PRESETS['frustum-culling'].cullingCamera);
-    expect(lessonList('es')[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua' });
+    expect(lessonList('es')[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua', question: true, exercise: false });
   });
 
   it('?lesson= opens a lesson, explicit values override it, a share link carries it, and an unknown one is a notice', () => {

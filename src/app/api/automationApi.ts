@@ -59,7 +59,7 @@ export interface OceanoApi {
   physics(): Promise<PhysicsReport>;
   notices(): string[];
   /** The lessons in the course's order, in the page's language (src/app/lessons/lessonCatalog.ts); `exercise`: the card has a measurement to make. */
-  lessons(): { id: string; title: string; section: string; exercise: boolean }[];
+  lessons(): { id: string; title: string; section: string; question: boolean; exercise: boolean }[];
   /** The open lesson's id, or null. */
   lesson(): string | null;
   /** Opens a lesson: its view and its card. An unknown id shows a notice, changes nothing and answers false. */

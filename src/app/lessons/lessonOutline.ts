@@ -140,15 +140,17 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'water-colour': { en: 'The water’s colour and the crests’ glow', es: 'El color del agua y el brillo de las crestas' },
 };
 
-/** `[{ id, title, section }]` in a language, in the course's order (oceano.lessons()). */
 /** The lessons whose card has a measurement exercise (src/sim/teaching/measurementExercises.ts; a unit test keeps the two alike). */
 export const EXERCISE_LESSONS: readonly string[] = ['fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake'];
 
-export function lessonList(language: Language): { id: string; title: string; section: string; exercise: boolean }[] {
+/** `[{ id, title, section, question, exercise }]` in a language, in the course's order (oceano.lessons()). */
+export function lessonList(language: Language): { id: string; title: string; section: string; question: boolean; exercise: boolean }[] {
   return LESSONS.map((lesson) => ({
     id: lesson.id,
     title: LESSON_TITLES[lesson.id][language],
     section: SECTION_NAMES[LESSON_OUTLINE[lesson.id].section][language],
+    // Every card asks its question before anything else: LessonText requires one (lessonTexts.ts).
+    question: true,
     exercise: EXERCISE_LESSONS.includes(lesson.id),
   }));
 }
