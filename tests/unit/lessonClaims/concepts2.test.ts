@@ -6,6 +6,7 @@ import { LESSON_TEXTS } from '../../../src/app/lessons/lessonTexts';
 import { findLesson, lessonView } from '../../../src/app/lessons/lessonCatalog';
 import { defaultParams, type OceanParams } from '../../../src/sim/params/params';
 import { seaSlopeVariance } from '../../../src/sim/optics/coxMunk';
+import { HORIZON, ZENITH } from '../../../src/sim/optics/skyPainter';
 import { cascadeWavelengths, resolvedShare, unresolvedSlopeVariance, SUN_DISC_SLOPE_VARIANCE } from '../../../src/sim/optics/resolvedSlopes';
 import { seaStateFromParams } from '../../../src/sim/waves/spectra/seaState';
 import { fftOceanSetup } from '../../../src/sim/waves/fft/fftOcean';
@@ -65,7 +66,8 @@ function srgbCode(linear: number): number {
   return Math.round(255 * encoded.r);
 }
 
-describe('slope-filtering: the slopes a pixel cannot draw become roughness (Bruneton et al. 2010)', () => {
+// Bruneton, Neyret & Holzschuch 2010.
+describe('slope-filtering: the slopes a pixel cannot draw become roughness', () => {
   it('the view is the fresh breeze, 10 m/s on the FFT sea, under a low sun, with roughness on', () => {
     const p = viewParams('slope-filtering');
     expect(p.waves).toBe('fft');
@@ -74,7 +76,8 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness (Brun
     for (const lang of LANGS) expect(numberAfter(cardText('slope-filtering', lang), '(?:at|a)')).toBe(p.windSpeed);
   });
 
-  it('Cox and Munk’s σ² is 0.055 at 10 m/s and the three cascades’ σ_c² hold 0.019 of it (control: 0.19, and Cox and Munk’s σ² at U₁₀ unconverted)', () => {
+  // Controls: 0.19, and Cox and Munk’s σ² at U₁₀ unconverted to their 12.5 m height.
+  it('Cox and Munk’s σ² is 0.055 at 10 m/s and the three cascades’ σ_c² hold 0.019 of it', () => {
     const p = viewParams('slope-filtering');
     const total = seaSlopeVariance(p.windSpeed);
     const cascades = cascadeSlopeVariances(p);
@@ -83,7 +86,7 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness (Brun
     for (const lang of LANGS) {
       const text = LESSON_TEXTS['slope-filtering'].text[lang];
       const quotedTotal = /([0-9]+[.,][0-9]+) a(?:t)? 10 m\/s/.exec(text)![1].replace(',', '.');
-      const quotedHeld = quotedAfter(text, '(?:hold|tienen)');
+      const quotedHeld = quotedAfter(text, '(?:hold|suman)');
       expect(roundsTo(quotedTotal, total), lang).toBe(true);
       expect(roundsTo(quotedHeld, held), lang).toBe(true);
     }
@@ -91,7 +94,8 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness (Brun
     expect(roundsTo('0.055', 0.003 + 5.12e-3 * 10.6)).toBe(false);
   });
 
-  it('a cascade keeps all its slopes while its shortest waves span two footprints and none once its longest span fewer (control: one footprint instead of two)', () => {
+  // Control: a rule counting a wave drawn from one footprint instead of two.
+  it('a cascade keeps all its slopes while its shortest waves span two footprints, none once its longest do not', () => {
     const p = viewParams('slope-filtering');
     const sea = seaStateFromParams(p);
     const { cascades } = fftOceanSetup(sea);
@@ -107,7 +111,8 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness (Brun
     }
   });
 
-  it('σ²ᵤ = max(σ²_⊙, σ²_CM − Σ s_c² σ_c²): the shader computes the card’s equation, near it is 0.036, far all 0.055, and with roughness off only the sun’s disc (control: a shader weighting by s_c, not s_c²)', () => {
+  // Near σ²ᵤ is 0.036, far all 0.055, with roughness off only the sun’s disc. Control: a shader weighting by s_c, not s_c².
+  it('σ²ᵤ = max(σ²_⊙, σ²_CM − Σ s_c² σ_c²) is what the shader computes, and the card’s equation', () => {
     const shader = source('shaders/waves/fft.glsl');
     const equation = /max\(SUN_DISC_SLOPE_VARIANCE, uSeaSlopeVariance - dot\(share \* share, uFftSlopeVariance\)\)/;
     expect(shader).toMatch(equation);
@@ -124,10 +129,28 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness (Brun
     // The roughness-off path compiles the floor in: only the sun's disc is left.
     expect(source('shaders/ocean.frag')).toMatch(/#ifdef OCEAN_SMOOTH_SEA\s+float roughness = SUN_DISC_SLOPE_VARIANCE;/);
   });
+
+  // Far out (a pixel past half the middle cascade's longest wave, 11 m at 10 m/s) only the
+  // longest cascade is drawn. Control: the middle cascade's σ_c² is not the answer's.
+  it('far out the normal keeps only the longest cascade, σ_c² = 0.004 of Cox and Munk’s 0.055', () => {
+    const p = viewParams('slope-filtering');
+    const sea = seaStateFromParams(p);
+    const bands = fftOceanSetup(sea).cascades.map((cascade) => cascadeWavelengths(cascade, sea.fftSize));
+    const variances = cascadeSlopeVariances(p);
+    const footprint = bands[1].longest / 2;
+    expect(bands.map(({ shortest, longest }) => resolvedShare(footprint, shortest, longest))).toEqual([1, 0, 0]);
+    for (const lang of LANGS) {
+      const answer = LESSON_TEXTS['slope-filtering'].question!.answer[lang];
+      expect(roundsTo(quotedAfter(answer, 'σ_c² ='), variances[0]), lang).toBe(true);
+      expect(roundsTo(quotedAfter(answer, '(?:Munk’s|los)'), seaSlopeVariance(p.windSpeed)), lang).toBe(true);
+    }
+    expect(roundsTo('0.004', variances[1])).toBe(false);
+  });
 });
 
 describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB', () => {
-  it('the view is the calm FFT sea at exposure 0, the question’s start, the sun at 10° (control: another exposure is not the view’s)', () => {
+  // Control: another exposure is not the view’s.
+  it('the view is the calm FFT sea at exposure 0, the question’s start, the sun at 10°', () => {
     const p = viewParams('light-units');
     expect(p.waves).toBe('fft');
     for (const lang of LANGS) expect(numberAfter(LESSON_TEXTS['light-units'].question!.ask[lang], '(?:from|de)')).toBe(p.exposure);
@@ -137,7 +160,20 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
     expect(numberAfter(LESSON_TEXTS['light-units'].question!.ask.en, 'from') + 1).not.toBe(p.exposure);
   });
 
-  it('the sun gives E = 4, the knee k = 0.6; 1 shows as 0.85 and 2 as 0.99 (control: a clipped curve shows 1 as 1)', () => {
+  // Rec. 709 luminance of the painted sky's zenith and horizon: 0.34 and 0.82. Control: the
+  // horizon's is not 0.3.
+  it('the sky cube’s colours lie near 0.3–0.8, from zenith to horizon', () => {
+    const luminance = (c: readonly number[]) => 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    for (const lang of LANGS) {
+      const range = /([0-9]+[.,][0-9]+)–([0-9]+[.,][0-9]+)/.exec(LESSON_TEXTS['light-units'].text[lang])!;
+      expect(roundsTo(range[1].replace(',', '.'), luminance(ZENITH)), lang).toBe(true);
+      expect(roundsTo(range[2].replace(',', '.'), luminance(HORIZON)), lang).toBe(true);
+    }
+    expect(roundsTo('0.3', luminance(HORIZON))).toBe(false);
+  });
+
+  // Control: a clipped curve shows 1 as 1.
+  it('the sun gives E = 4, the knee k = 0.6; 1 shows as 0.85 and 2 as 0.99', () => {
     for (const lang of LANGS) {
       const text = cardText('light-units', lang);
       expect(numberAfter(text, 'E =')).toBe(SUN_IRRADIANCE);
@@ -148,7 +184,8 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
     expect(roundsTo('0.85', Math.min(1, 1))).toBe(false);
   });
 
-  it('exposure multiplies every pixel by 2^EV before the curve, in three.js’s tone-mapping slot (control: a curve fed the light without it)', () => {
+  // Control: a curve fed the light without the exposure.
+  it('exposure multiplies every pixel by 2^EV before the curve, in three.js’s tone-mapping slot', () => {
     const tone = source('src/render/tone/wholeFrameToneCurve.ts');
     const exposed = /rollOffHighlights\( toneMappingExposure \* color \)/;
     expect(tone).toMatch(exposed);
@@ -156,7 +193,8 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
     expect(tone.replace('toneMappingExposure * color', 'color')).not.toMatch(exposed);
   });
 
-  it('three.js encodes f as sRGB, V = 1.055 f^{1/2.4} − 0.055 (12.92 f below 0.0031308): the knee is code 203 (control: no encoding gives 153)', () => {
+  // V = 1.055 f^{1/2.4} − 0.055, 12.92 f below 0.0031308. Control: no encoding would give the knee 153.
+  it('three.js encodes f as sRGB, the card’s V, and the knee is code 203', () => {
     const oetf = ShaderChunk.colorspace_pars_fragment;
     expect(oetf).toContain('pow( value.rgb, vec3( 0.41666 ) ) * 1.055 - vec3( 0.055 )');
     expect(oetf).toContain('value.rgb * 12.92');
@@ -168,7 +206,8 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
     expect(Math.round(255 * HIGHLIGHT_KNEE)).toBe(153);
   });
 
-  it('an 8-bit screen shows white from c ≈ 2.4, and at −2 EV from L ≈ 9.6, far below the glint’s core (control: 8 bits without sRGB would need 2.7)', () => {
+  // Control: 8 bits without the sRGB encoding would need c ≈ 2.7.
+  it('an 8-bit screen shows white from c ≈ 2.4, and at −2 EV from L ≈ 9.6, far below the glint’s core', () => {
     // The least light, to 0.01, that the curve and the encoding bring to code 255.
     let white = HIGHLIGHT_KNEE;
     while (srgbCode(rollOffHighlight(white)) < 255) white += 0.01;
@@ -196,7 +235,7 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
 });
 
 describe('water-colour: the deep water’s reflectance and the crests’ forward-scattered glow', () => {
-  it('the view is the fresh breeze with the sun ahead at azimuth 20°, as the question starts, glow on, colour from optics', () => {
+  it('the view is the fresh breeze, sun ahead at azimuth 20° as the question starts, glow on, colour from optics', () => {
     const p = viewParams('water-colour');
     expect(p.waves).toBe('fft');
     expect(p.subsurface).toBe(true);
@@ -204,7 +243,8 @@ describe('water-colour: the deep water’s reflectance and the crests’ forward
     for (const lang of LANGS) expect(numberAfter(LESSON_TEXTS['water-colour'].question!.ask[lang], '(?:from|de)')).toBe(p.sunAzimuth);
   });
 
-  it('R = f b_b/(a + b_b) with f = 0.33, a = 0.34 m⁻¹ in red, b ∝ λ^−4.3 gives 0.0005, 0.013, 0.045 (control: b_b = b instead of b/2)', () => {
+  // f = 0.33, a = 0.34 m⁻¹ in red, b ∝ λ^−4.3 give 0.0005, 0.013, 0.045. Control: b_b = b instead of b/2.
+  it('R = f b_b/(a + b_b) gives the card’s reflectances in red, green and blue', () => {
     const body = bodyColor();
     for (const lang of LANGS) {
       const text = LESSON_TEXTS['water-colour'].text[lang];
@@ -219,7 +259,8 @@ describe('water-colour: the deep water’s reflectance and the crests’ forward
     expect(roundsTo('0.0005', withoutHalf[0])).toBe(false);
   });
 
-  it('the glow: d = 1 m, 1 mg/m³, g = 0.924; p(θ) is 26.5 sr⁻¹ along the sun’s ray, under 0.005 at 90°, and integrates to 1 (control: an isotropic phase)', () => {
+  // d = 1 m, 1 mg/m³, g = 0.924; p(θ) is 26.5 sr⁻¹ along the sun’s ray, under 0.005 at 90°. Control: an isotropic phase.
+  it('the glow’s path, chlorophyll and g are the code’s; p(θ) has the card’s values and integrates to 1', () => {
     for (const lang of LANGS) {
       const text = cardText('water-colour', lang);
       expect(numberAfter(text, 'd =')).toBe(CREST_PATH);
@@ -242,7 +283,8 @@ describe('water-colour: the deep water’s reflectance and the crests’ forward
     expect(roundsTo('26.5', 1 / (4 * Math.PI))).toBe(false);
   });
 
-  it('the glow is greener than the deep blue, and the shaders draw exactly these colours (control: a reflectance without the ½ is not the shader’s)', () => {
+  // Control: a reflectance without the ½ is not the shader’s.
+  it('the glow is greener than the deep blue, and the shaders draw exactly these colours', () => {
     const glow = crestScattering();
     const body = bodyColor();
     expect(glow[1] / glow[2]).toBeGreaterThan(3 * (body[1] / body[2]));
