@@ -99,7 +99,8 @@ describe('measurement exercises, done with the tools', () => {
     // Five measurements on the CPU twin: 86 s in all on a loaded 2-core machine.
   }, 600_000);
 
-  it('kelvin-wake: the ruler laid over three transverse crests behind the boat gives 2πU²/g within 10 %; half of it is "Not yet"', async () => {
+  // The ruler over three transverse crests behind the boat gives 2πU²/g within 10 %; half of it is "Not yet".
+  it('kelvin-wake: the ruler over the transverse crests gives 2πU²/g; half of it is "Not yet"', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=0&lesson=kelvin-wake', 1366, 768);
     await page.waitForSelector('.oceano-lesson-exercise');
     await page.evaluate(() => window.oceano.pause());
@@ -163,7 +164,8 @@ describe('measurement exercises, done with the tools', () => {
 });
 
 describe.runIf(process.env.OCEANO_SHOTS)('screenshots of an exercise card (OCEANO_SHOTS=folder)', () => {
-  it('kelvin-wake with a typed answer (the ruler’s 30.72 m over three waves, as the test above read it): laptop in English, phone in Spanish', async () => {
+  // The answer typed is the ruler's 30.72 m over three waves, as the test above read it.
+  it('kelvin-wake with a typed answer: laptop in English, phone in Spanish', async () => {
     for (const [width, height, lang] of [[1366, 768, 'en'], [390, 844, 'es']] as const) {
       const { page } = await openOcean(harness, `t=20&lesson=kelvin-wake&lang=${lang}`, width, height);
       await page.waitForSelector('.oceano-lesson-exercise');
