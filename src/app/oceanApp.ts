@@ -122,7 +122,14 @@ export class OceanApp {
       setLost: (lost) => this.loop.setStopped('contextLost', lost),
       redraw: () => (this.view.contextRestored(), this.resize(), this.renderFrame()),
     });
-    const physics = { model: () => this.view.waves, params: () => this.params, time: () => this.clock.time };
+    const physics = {
+      model: () => this.view.waves,
+      params: () => this.params,
+      time: () => this.clock.time,
+      modelsLoaded: async () => {
+        while (this.modelLoad) await this.modelLoad;
+      },
+    };
     this.controls = new AppControls(this.container, this.view.ocean.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics, panelFailed: () => this.notify(message('panelLoadFailed')) }, this, {
       onParam: (key, value) => this.setParams({ [key]: value }),
       onPlayingChange: (playing) => this.setPlaying(playing),

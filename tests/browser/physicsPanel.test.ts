@@ -48,6 +48,35 @@ describe('physics panel', () => {
     await page.close();
   });
 
+  it('open, it measures again when the sea changes (the model, then the wind), saying so meanwhile; the sun changes nothing (the control)', async () => {
+    const { page, consoleErrors } = await openOcean(harness, 't=10&physics=1', 480, 270);
+    const heading = () => page.$eval('.oceano-physics h2', (el) => el.textContent ?? '');
+    const hsTheory = () => page.$$eval('.oceano-physics table tr', (rows) => rows.find((tr) => /^Hs = 4σ/.test(tr.cells[0]?.textContent ?? ''))!.cells[2].textContent ?? '');
+    expect(await page.evaluate(() => window.oceano.debug.physicsRuns())).toBe(1);
+    expect(await heading()).toMatch(/seed sea/);
+    // The Gerstner model's code is fetched on this change: the panel waits for it, not measuring the seed's sea again.
+    const measuring = await page.evaluate(() => {
+      window.oceano.setParams({ waves: 'gerstner', windSpeed: 10, spectrum: 'pierson-moskowitz' });
+      return document.querySelector('.oceano-physics')!.textContent;
+    });
+    expect(measuring).toMatch(/^Measuring/);
+    expect(await page.evaluate(() => window.oceano.debug.physicsRuns())).toBe(2);
+    expect(await heading()).toMatch(/gerstner sea/);
+    const at10 = await hsTheory();
+    await page.evaluate(() => window.oceano.setParams({ windSpeed: 15 }));
+    expect(await page.evaluate(() => window.oceano.debug.physicsRuns())).toBe(3);
+    const at15 = await hsTheory();
+    // 4√m₀ of Pierson–Moskowitz grows as U²: 2.25 m at 10 m/s, 2.25·1.5² = 5.05 m at 15 m/s.
+    expect(Number(at10)).toBeCloseTo(2.25, 1);
+    // (The cells show two decimals: 5.05 / 2.25 = 2.244.)
+    expect(Number(at15) / Number(at10)).toBeCloseTo(2.25, 1);
+    await page.evaluate(() => window.oceano.setParams({ sunElevation: 40, exposure: 1 }));
+    expect(await page.evaluate(() => window.oceano.debug.physicsRuns())).toBe(3);
+    expect(await hsTheory()).toBe(at15);
+    expect(consoleErrors).toEqual([]);
+    await page.close();
+  }, 120_000);
+
   it('the seed model: the panel says its ripples follow no dispersion law and gives no spectrum theory', async () => {
     const { page } = await openOcean(harness, 't=10', 320, 180);
     const r = await page.evaluate(async () => {

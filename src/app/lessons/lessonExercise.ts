@@ -26,8 +26,8 @@ function theoryLine(exercise: MeasurementExercise, params: OceanParams, language
   switch (exercise.quantity) {
     case 'significantHeight':
       return es
-        ? `Hs = 4√m₀, con m₀ = ∫S(ω)dω del espectro ${params.spectrum} a U₁₀ = ${params.windSpeed} m/s`
-        : `Hs = 4√m₀, m₀ = ∫S(ω)dω of the ${params.spectrum} spectrum at U₁₀ = ${params.windSpeed} m/s`;
+        ? `Hs = 4√m₀, con m₀ = ∫S(ω)dω del espectro ${params.spectrum} a U₁₀ = ${params.windSpeed} m/s${params.spectrum === 'jonswap' ? ` y ${params.fetch} km de fetch` : ''}`
+        : `Hs = 4√m₀, m₀ = ∫S(ω)dω of the ${params.spectrum} spectrum at U₁₀ = ${params.windSpeed} m/s${params.spectrum === 'jonswap' ? ` over a ${params.fetch} km fetch` : ''}`;
     case 'peakPeriod':
       return es
         ? `Tp = 2π/ωp, ωp el pico del espectro ${params.spectrum} a U₁₀ = ${params.windSpeed} m/s${params.spectrum === 'jonswap' ? ` y ${params.fetch} km de fetch` : ''}`

@@ -134,7 +134,7 @@ export class AppControls {
     this.shown = { params, playing };
     if (params.fresnelPlot) void this.loadFresnelPlot();
     this.fresnelPlot?.setVisible(params.fresnelPlot);
-    this.physics.setOpen(params.physics);
+    this.physics.sync(params);
     if (params.compare !== COMPARE_OFF) void this.loadDividers();
     this.dividers?.sync(params);
     this.panel?.sync(params, playing);

@@ -1,4 +1,5 @@
 import type { OceanParams } from '../../sim/params/params';
+import { physicsInputs } from '../../sim/physics/physicsInputs';
 import type { PhysicsReport } from '../../sim/physics/physicsReport';
 import type { LiveWaveModel } from '../../sim/waves/waveModel';
 
@@ -7,6 +8,8 @@ export interface PhysicsSource {
   model(): LiveWaveModel;
   params(): OceanParams;
   time(): number;
+  /** Settles once the wave model the parameters ask for is the one model() answers (its code may still be on its way). */
+  modelsLoaded(): Promise<void>;
 }
 
 /** What the lazily loaded plots module exports (src/app/physics/physicsPlots.ts). */
@@ -26,8 +29,9 @@ export class PhysicsPanel {
   private open = false;
   private view?: PhysicsView;
   private loading?: Promise<void>;
-  private report?: ReportModule;
   private reportLoad?: Promise<ReportModule>;
+  /** physicsInputs of the parameters last synced: the sea the figures on show belong to. */
+  private inputs?: string;
 
   constructor(
     private readonly container: HTMLElement,
@@ -44,13 +48,26 @@ export class PhysicsPanel {
   }
 
   private loadReport(): Promise<ReportModule> {
-    this.reportLoad ??= import('../../sim/physics/physicsReport').then((code) => (this.report = code));
+    this.reportLoad ??= import('../../sim/physics/physicsReport');
     return this.reportLoad;
   }
 
   private measureNow(code: ReportModule, time = this.source.time()): PhysicsReport {
     this.runs++;
     return code.measurePhysics(code.measuredSea(this.source.model(), this.source.params()), time);
+  }
+
+  /**
+   * Follows the parameters: opens or closes the panel, and while it is open measures again
+   * whenever a parameter the figures depend on changes (a lesson, the wind, the model), saying
+   * "measuring" meanwhile; a change of the sun or the camera measures nothing.
+   */
+  sync(params: OceanParams): void {
+    const inputs = physicsInputs(params);
+    const changed = this.inputs !== undefined && inputs !== this.inputs;
+    this.inputs = inputs;
+    if (params.physics !== this.open) this.setOpen(params.physics);
+    else if (changed && this.open && this.view) this.view.refresh(this.source.modelsLoaded());
   }
 
   setOpen(open: boolean): void {
@@ -60,12 +77,12 @@ export class PhysicsPanel {
       this.view?.setVisible(false);
       return;
     }
-    if (this.view && this.report) {
+    if (this.view) {
       this.view.setVisible(true);
-      this.view.show(this.measureNow(this.report));
+      this.view.refresh(this.source.modelsLoaded());
       return;
     }
-    this.loading ??= Promise.all([import('./physicsPlots'), this.loadReport()]).then(([plots, code]) => {
+    this.loading ??= Promise.all([import('./physicsPlots'), this.loadReport(), this.source.modelsLoaded()]).then(([plots, code]) => {
       this.view = new plots.PhysicsView(this.container, () => this.measureNow(code));
       this.view.setVisible(this.open);
       if (this.open) this.view.refresh();

@@ -19,6 +19,8 @@ export class PhysicsView {
   private plots: uPlot[] = [];
   /** Settles when the latest measurement is on screen. */
   drawn: Promise<void> = Promise.resolve();
+  /** Refreshes asked for so far: a measurement runs only for the latest. */
+  private requests = 0;
 
   constructor(
     container: HTMLElement,
@@ -34,15 +36,26 @@ export class PhysicsView {
     this.root.hidden = !visible;
   }
 
-  /** Measures on the next task, so the "measuring…" line is painted first. */
-  refresh(): void {
+  /**
+   * Says "measuring" now and measures once `ready` has settled (the model asked for is in
+   * place), on a later task so the line is painted first. A newer refresh supersedes one still
+   * waiting: only the latest parameters' sea is measured.
+   */
+  refresh(ready: Promise<unknown> = Promise.resolve()): void {
+    for (const plot of this.plots) plot.destroy();
+    this.plots = [];
     this.root.textContent = 'Measuring the sea through its CPU twin…';
-    this.drawn = new Promise((resolve) =>
-      setTimeout(() => {
-        this.show(this.measure());
-        resolve();
-      }, 0),
+    const request = ++this.requests;
+    const measured = ready.then(
+      () =>
+        new Promise<void>((resolve) =>
+          setTimeout(() => {
+            if (request === this.requests) this.show(this.measure());
+            resolve();
+          }, 0),
+        ),
     );
+    this.drawn = measured;
   }
 
   show(report: PhysicsReport): void {
