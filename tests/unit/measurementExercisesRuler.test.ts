@@ -12,7 +12,7 @@ const at = (stoneAge: number | null): ExerciseMoment => ({ stoneAge });
 const expected = (lesson: string, moment: ExerciseMoment = at(null), change: Partial<OceanParams> = {}) => exerciseFor(lesson)!.expected(paramsOf(lesson, change), moment);
 
 const g = 9.81;
-const RULER_LESSONS = ['wake-turn', 'iwave-compare', 'iwave-stone'];
+const RULER_LESSONS = ['wake-turn', 'iwave-compare', 'iwave-stone', 'group-velocity'];
 
 describe('ruler exercises: theory from the live parameters and the live clock', () => {
   it('wake-turn: R = U/ω, by hand 4 / (3π/180) = 76.39 m; 6 m/s at 2°/s gives 171.89 m', () => {
@@ -31,7 +31,7 @@ describe('ruler exercises: theory from the live parameters and the live clock', 
   });
 
   it('iwave-stone: at 12 s the outermost marked crests are n = 3 and 4 (n = 2 is longer than the grid carries), Δr = g t²/(8π)(1/3 − 1/4) = 4.68 m; at 10 s n = 2 and 3, 6.51 m', () => {
-    // Hand computation: g t²/(8π) = 56.21 m at 12 s; k₂ = 16π²·4/(g t²) = 0.447 rad/m, below the band's 2π/10 = 0.63; k₃ = 1.005 inside it.
+    // Hand computation: g t²/(8π) = 56.21 m at 12 s; k₂ = 16π²·4/(g t²) = 0.447 rad/m, below the band's 2π/10 = 0.63; k₃ = 1.006 inside it.
     const scale = (t: number) => (g * t * t) / (8 * Math.PI);
     expect(scale(12)).toBeCloseTo(56.21, 2);
     expect(expected('iwave-stone', at(12))).toBeCloseTo(scale(12) * (1 / 3 - 1 / 4), 2);
@@ -70,11 +70,34 @@ describe('ruler exercises: the tolerance check', () => {
     expect(withinTolerance((g * 144) / (8 * Math.PI * 3), spacing, stone.tolerance)).toBe(false);
   });
 
-  it('the three are listed as lessons with exercises, each with the ruler', () => {
+  it('the four are listed as lessons with exercises, each with the ruler', () => {
     for (const lesson of RULER_LESSONS) {
       expect(EXERCISE_LESSONS).toContain(lesson);
       expect(exerciseFor(lesson)!.tool).toBe('ruler');
     }
-    expect(exerciseFor('group-velocity')).toBeNull();
+    expect(exerciseFor('horizon')).toBeNull();
+  });
+});
+
+describe('group-velocity: the outermost marked crest has run c_g t', () => {
+  const group = (t: number | null) => exerciseFor('group-velocity')!.expected(paramsOf('group-velocity'), at(t));
+  it('equals ½√(g/k)·t by hand, and Cauchy–Poisson’s r_n (the two theories agree): 18.74 m at 12 s (n = 3), 19.52 m at 10 s (n = 2)', () => {
+    const k3 = (16 * Math.PI ** 2 * 9) / (g * 144);
+    expect(k3).toBeCloseTo(1.006, 3);
+    expect(group(12)).toBeCloseTo(0.5 * Math.sqrt(g / k3) * 12, 6);
+    expect(group(12)).toBeCloseTo((g * 144) / (8 * Math.PI * 3), 6);
+    expect(group(12)).toBeCloseTo(18.74, 2);
+    const k2 = (16 * Math.PI ** 2 * 4) / (g * 100);
+    expect(group(10)).toBeCloseTo(0.5 * Math.sqrt(g / k2) * 10, 6);
+    expect(group(10)).toBeCloseTo(19.52, 2);
+    expect(group(null)).toBeNaN();
+  });
+
+  it('fails the slip of the phase speed (c t, twice as far) and passes/fails at the tolerance’s edge', () => {
+    const exercise = exerciseFor('group-velocity')!;
+    const r = group(12);
+    expect(withinTolerance(2 * r, r, exercise.tolerance)).toBe(false);
+    expect(withinTolerance(r * (1 + 0.99 * exercise.tolerance), r, exercise.tolerance)).toBe(true);
+    expect(withinTolerance(r * (1 - 1.01 * exercise.tolerance), r, exercise.tolerance)).toBe(false);
   });
 });

@@ -1,6 +1,7 @@
 import type { Language } from '../language/i18n';
 import type { OceanParams } from '../../sim/params/params';
 import { WAVE_EQUATION_SPEED } from '../../sim/iwave/interactiveField';
+import { GRAVITY } from '../../sim/waves/dispersion';
 import { exerciseFor, withinTolerance, type ExerciseMoment, type ExerciseQuantity, type MeasurementExercise } from '../../sim/teaching/measurementExercises';
 
 type Words = Record<Language, string>;
@@ -20,12 +21,16 @@ const TASKS: Record<ExerciseQuantity, Words> = {
     es: 'Pausa, abre las herramientas del mar (Sea tools en el panel), elige la regla y tiéndela sobre la estela detrás del barco, de una cresta transversal a otra unas olas más allá. Divide por el número de olas y escribe la longitud de onda λ.',
   },
   turningRadius: {
-    en: 'Note where the boat is now, let it run until it heads the opposite way (half a turn, a minute at 3°/s) and pause. Open the sea tools (Sea tools in the panel), choose the ruler and lay it from the spot where it started to the boat: that is the circle’s diameter. Type the radius R.',
-    es: 'Fíjate dónde está el barco ahora, déjalo avanzar hasta que navegue en sentido contrario (media vuelta, un minuto a 3°/s) y pausa. Abre las herramientas del mar (Sea tools en el panel), elige la regla y tiéndela desde el punto donde empezó hasta el barco: es el diámetro del círculo. Escribe el radio R.',
+    en: 'Note where the boat is now, let it run until it heads the opposite way (half a turn: a minute at 3°/s, 9 s at 20°/s) and pause. Open the sea tools (Sea tools in the panel), choose the ruler and lay it from the spot where it started to the boat: that is the circle’s diameter. Type the radius R.',
+    es: 'Fíjate dónde está el barco ahora, déjalo avanzar hasta que navegue en sentido contrario (media vuelta: un minuto a 3°/s, 9 s a 20°/s) y pausa. Abre las herramientas del mar (Sea tools en el panel), elige la regla y tiéndela desde el punto donde empezó hasta el barco: es el diámetro del círculo. Escribe el radio R.',
   },
   ringRadius: {
     en: 'Pause while the ring of the plain wave equation (the right-hand stone) is clear of its stone. Turn off the yellow rings, open the sea tools (Sea tools in the panel), choose the ruler and lay it from where that stone fell to its ring’s crest. Type the radius r.',
     es: 'Pausa mientras el anillo de la ecuación de onda simple (la piedra de la derecha) está lejos de su piedra. Apaga los anillos amarillos, abre las herramientas del mar (Sea tools en el panel), elige la regla y tiéndela desde donde cayó esa piedra hasta la cresta de su anillo. Escribe el radio r.',
+  },
+  groupDistance: {
+    en: 'Pause 10 to 15 s after the stone. The outermost yellow ring marks the longest waves the grid carries; with the sea tools’ ruler (Sea tools in the panel) measure from where the stone fell to the real crest beside that ring: how far that group has run. Type r.',
+    es: 'Pausa entre 10 y 15 s después de la piedra. El anillo amarillo más exterior marca las olas más largas que lleva la malla; con la regla de las herramientas del mar (Sea tools en el panel) mide desde donde cayó la piedra hasta la cresta real junto a ese anillo: lo que ha recorrido ese grupo. Escribe r.',
   },
   crestSpacing: {
     en: 'About 12 s after the stone falls, pause. The yellow rings mark where theory puts the crests; turn them off and, with the sea tools’ ruler (Sea tools in the panel), lay it from the outermost crest they marked to the next crest inward. Type that spacing Δr.',
@@ -59,6 +64,16 @@ function theoryLine(exercise: MeasurementExercise, params: OceanParams, moment: 
       return es
         ? `la ecuación de onda lleva todas las longitudes de onda a la misma velocidad c = ${c.replace('.', ',')} m/s: el anillo está en r = c t, t = ${t.replace('.', ',')} s desde la piedra`
         : `the wave equation carries every wavelength at one speed c = ${c} m/s: the ring stands at r = c t, t = ${t} s since the stone`;
+    }
+    case 'groupDistance': {
+      const t = moment.stoneAge ?? 0;
+      // The crest at r is the n-th of Cauchy–Poisson's r_n = g t²/(8πn).
+      const n = Math.round((GRAVITY * t * t) / (8 * Math.PI * exercise.expected(params, moment)));
+      const k = (16 * Math.PI * Math.PI * n * n) / (GRAVITY * t * t);
+      const text = es
+        ? `la energía de las olas de número de onda k viaja a c_g = ½√(g/k); la cresta exterior es la n = ${n}, k = 16π²n²/(g t²) = ${k.toFixed(3)} rad/m, así que r = c_g t con t = ${t.toFixed(2)} s`
+        : `the energy of waves of wavenumber k travels at c_g = ½√(g/k); the outer crest is n = ${n}, k = 16π²n²/(g t²) = ${k.toFixed(3)} rad/m, so r = c_g t with t = ${t.toFixed(2)} s`;
+      return es ? text.replace(/(\d)\.(\d)/g, '$1,$2') : text;
     }
     case 'crestSpacing': {
       const t = (moment.stoneAge ?? 0).toFixed(2);

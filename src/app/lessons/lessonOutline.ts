@@ -142,7 +142,7 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
 
 /** `[{ id, title, section }]` in a language, in the course's order (oceano.lessons()). */
 /** The lessons whose card has a measurement exercise (src/sim/teaching/measurementExercises.ts; a unit test keeps the two alike). */
-export const EXERCISE_LESSONS: readonly string[] = ['fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake', 'wake-turn', 'iwave-compare', 'iwave-stone'];
+export const EXERCISE_LESSONS: readonly string[] = ['fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake', 'wake-turn', 'iwave-compare', 'iwave-stone', 'group-velocity'];
 
 export function lessonList(language: Language): { id: string; title: string; section: string; exercise: boolean }[] {
   return LESSONS.map((lesson) => ({

@@ -1,5 +1,5 @@
 import type { OceanParams } from '../params/params';
-import { GRAVITY } from '../waves/dispersion';
+import { GRAVITY, groupVelocity } from '../waves/dispersion';
 import { frequencySpectrum } from '../waves/spectra/waveSpectrum';
 import { seaStateFromParams } from '../waves/spectra/seaState';
 import { crestRadii, stoneGuideReach, waveFrontRadius } from '../iwave/cauchyPoissonRings';
@@ -15,7 +15,7 @@ import { WAVE_EQUATION_SPEED } from '../iwave/interactiveField';
 /** The tool the quantity is read with: the ruler (a drag on the sea) or the physics panel's "measured" column. */
 export type ExerciseTool = 'ruler' | 'physics';
 
-export type ExerciseQuantity = 'significantHeight' | 'peakPeriod' | 'transverseWavelength' | 'turningRadius' | 'ringRadius' | 'crestSpacing';
+export type ExerciseQuantity = 'significantHeight' | 'peakPeriod' | 'transverseWavelength' | 'turningRadius' | 'ringRadius' | 'crestSpacing' | 'groupDistance';
 
 /**
  * What the sea is doing at the moment of the check besides its parameters: how long ago the
@@ -80,6 +80,21 @@ export function outerCrestSpacing(moment?: ExerciseMoment): number {
   if (moment === undefined || moment.stoneAge === null) return Number.NaN;
   const radii = crestRadii(moment.stoneAge, stoneGuideReach());
   return radii.length >= 2 ? radii[0] - radii[1] : Number.NaN;
+}
+
+/**
+ * How far the group of the stone's outermost marked crest has run: that crest is the n-th, its
+ * waves have k = 16π²n²/(g t²) (cauchyPoissonRings.ts), and their energy travels at the group
+ * velocity, so they stand c_g(k)·t from the stone.
+ */
+export function outerGroupDistance(moment?: ExerciseMoment): number {
+  if (moment === undefined || moment.stoneAge === null) return Number.NaN;
+  const t = moment.stoneAge;
+  const outer = crestRadii(t, stoneGuideReach())[0];
+  if (outer === undefined) return Number.NaN;
+  const n = Math.round((GRAVITY * t * t) / (8 * Math.PI * outer));
+  const k = (16 * Math.PI * Math.PI * n * n) / (GRAVITY * t * t);
+  return groupVelocity(k) * t;
 }
 
 const HS_TOLERANCE = 0.1;
@@ -150,6 +165,16 @@ const crests: MeasurementExercise = {
   expected: (_params, moment) => outerCrestSpacing(moment),
 };
 
+const group: MeasurementExercise = {
+  lesson: 'group-velocity',
+  quantity: 'groupDistance',
+  symbol: 'r',
+  unit: 'm',
+  tool: 'ruler',
+  tolerance: RULER_TOLERANCE,
+  expected: (_params, moment) => outerGroupDistance(moment),
+};
+
 export const MEASUREMENT_EXERCISES: readonly MeasurementExercise[] = [
   hs('fft-calm'),
   tp('fft-fresh-breeze'),
@@ -160,6 +185,7 @@ export const MEASUREMENT_EXERCISES: readonly MeasurementExercise[] = [
   turn,
   ring,
   crests,
+  group,
 ];
 
 export function exerciseFor(lesson: string): MeasurementExercise | null {
