@@ -180,5 +180,5 @@ describe('ruler exercises, done with the ruler', () => {
 
     expect(consoleErrors).toEqual([]);
     await page.close();
-  }, 600_000);
+  }, 1_200_000);
 });
