@@ -143,7 +143,7 @@ export class OceanApp {
       openLesson: (id) => this.openLesson(id),
       onParam: (key, value) => this.setParams({ [key]: value }),
       openFolders: (keys) => this.controls?.openFoldersOf(keys),
-      scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, time: this.clock.time, boat: this.boatMotion.info(), height: (x, z) => this.view.waves.height(x, z, this.clock.time) }),
+      scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, time: this.clock.time, boat: this.boatMotion.info(), height: (x, z) => this.view.waves.height(x, z, this.clock.time), stoneDropped: this.view.ocean.interactiveWaves?.stones(this.clock.time, Number.POSITIVE_INFINITY).at(-1)?.[0] ?? null }),
     });
     if (state.lesson) this.lessons.current = state.lesson;
     startupTimeline?.mark('oceano:controls');

@@ -332,7 +332,10 @@ export class LessonDrawer {
       this.card.append(choice);
     }
     this.card.append(math, ...(this.diagram ? [this.diagram.element] : []), code, controls);
-    const exercise = lessonExercise(lesson.id, language, () => this.params);
+    const exercise = lessonExercise(lesson.id, language, () => this.params, () => {
+      const { time, stoneDropped } = this.hooks.scene();
+      return { stoneAge: stoneDropped === null ? null : time - stoneDropped };
+    });
     if (exercise) this.card.append(exercise);
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);

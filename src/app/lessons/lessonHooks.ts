@@ -12,7 +12,8 @@ export interface LessonHooks {
   /**
    * What the labels on the sea are placed from: the camera (three's, and its pose), the
    * canvas, the clock's time, the boat's pose and hull, and the height of the waves the
-   * boat floats on at a point now.
+   * boat floats on at a point now; `stoneDropped`, when the last stone in the interactive
+   * waves fell (null: none).
    */
-  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; time: number; boat: BoatInfo; height(x: number, z: number): number };
+  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; time: number; boat: BoatInfo; height(x: number, z: number): number; stoneDropped: number | null };
 }

@@ -1,7 +1,9 @@
 import type { OceanParams } from '../params/params';
-import { GRAVITY } from '../waves/dispersion';
+import { GRAVITY, groupVelocity } from '../waves/dispersion';
 import { frequencySpectrum } from '../waves/spectra/waveSpectrum';
 import { seaStateFromParams } from '../waves/spectra/seaState';
+import { crestRadii, stoneGuideReach, waveFrontRadius } from '../iwave/cauchyPoissonRings';
+import { WAVE_EQUATION_SPEED } from '../iwave/interactiveField';
 
 /**
  * The lessons' measurements: the student reads a quantity off the live sea with one of the
@@ -13,7 +15,15 @@ import { seaStateFromParams } from '../waves/spectra/seaState';
 /** The tool the quantity is read with: the ruler (a drag on the sea) or the physics panel's "measured" column. */
 export type ExerciseTool = 'ruler' | 'physics';
 
-export type ExerciseQuantity = 'significantHeight' | 'peakPeriod' | 'transverseWavelength';
+export type ExerciseQuantity = 'significantHeight' | 'peakPeriod' | 'transverseWavelength' | 'turningRadius' | 'ringRadius' | 'crestSpacing' | 'groupDistance';
+
+/**
+ * What the sea is doing at the moment of the check besides its parameters: how long ago the
+ * last stone fell (null when none has), for the quantities that grow with time.
+ */
+export interface ExerciseMoment {
+  stoneAge: number | null;
+}
 
 export interface MeasurementExercise {
   lesson: string;
@@ -28,7 +38,8 @@ export interface MeasurementExercise {
    * wavelength) fail.
    */
   tolerance: number;
-  expected(params: OceanParams): number;
+  /** `moment` left out: no stone has fallen. */
+  expected(params: OceanParams, moment?: ExerciseMoment): number;
 }
 
 /** Hs = 4√m₀ of the wind spectrum the parameters choose (Holthuijsen 2007, §4.2). */
@@ -47,6 +58,42 @@ export function spectralPeakPeriod(params: OceanParams): number {
  */
 export function transverseWakeWavelength(params: Pick<OceanParams, 'boatSpeed'>): number {
   return (2 * Math.PI * params.boatSpeed ** 2) / GRAVITY;
+}
+
+/** The radius of the circle a boat holding a turn runs on: its speed over its rate of turn, R = U/ω (ω in rad/s). */
+export function turningRadius(params: Pick<OceanParams, 'boatSpeed' | 'boatTurnRate'>): number {
+  return Math.abs(params.boatSpeed / ((params.boatTurnRate * Math.PI) / 180));
+}
+
+/** The plain wave equation's one ring `stoneAge` seconds after the stone: r = c t, c the field's wave speed. */
+export function waveEquationRingRadius(moment?: ExerciseMoment): number {
+  return moment === undefined || moment.stoneAge === null ? Number.NaN : waveFrontRadius(moment.stoneAge, WAVE_EQUATION_SPEED);
+}
+
+/**
+ * The spacing of the stone's two outermost crests that the guide rings mark (those where
+ * stationary phase holds and the field carries the waves), r_n − r_(n+1) with
+ * r_n = g t²/(8πn) (Cauchy–Poisson; cauchyPoissonRings.ts).
+ */
+export function outerCrestSpacing(moment?: ExerciseMoment): number {
+  if (moment === undefined || moment.stoneAge === null) return Number.NaN;
+  const radii = crestRadii(moment.stoneAge, stoneGuideReach());
+  return radii.length >= 2 ? radii[0] - radii[1] : Number.NaN;
+}
+
+/**
+ * How far the group of the stone's outermost marked crest has run: that crest is the n-th, its
+ * waves have k = 16π²n²/(g t²) (cauchyPoissonRings.ts), and their energy travels at the group
+ * velocity, so they stand c_g(k)·t from the stone.
+ */
+export function outerGroupDistance(moment?: ExerciseMoment): number {
+  if (moment === undefined || moment.stoneAge === null) return Number.NaN;
+  const t = moment.stoneAge;
+  const outer = crestRadii(t, stoneGuideReach())[0];
+  if (outer === undefined) return Number.NaN;
+  const n = Math.round((GRAVITY * t * t) / (8 * Math.PI * outer));
+  const k = (16 * Math.PI * Math.PI * n * n) / (GRAVITY * t * t);
+  return groupVelocity(k) * t;
 }
 
 /**
@@ -106,6 +153,50 @@ const wake = (lesson: string): MeasurementExercise => ({
   expected: transverseWakeWavelength,
 });
 
+/** The ruler reads to a few decimetres on a crest or a ring a few metres wide: 10 % of a radius or a spacing of metres. */
+const RULER_TOLERANCE = 0.1;
+
+const turn: MeasurementExercise = {
+  lesson: 'wake-turn',
+  quantity: 'turningRadius',
+  symbol: 'R',
+  unit: 'm',
+  tool: 'ruler',
+  tolerance: RULER_TOLERANCE,
+  expected: turningRadius,
+};
+
+const ring: MeasurementExercise = {
+  lesson: 'iwave-compare',
+  quantity: 'ringRadius',
+  symbol: 'r',
+  unit: 'm',
+  tool: 'ruler',
+  tolerance: RULER_TOLERANCE,
+  expected: (_params, moment) => waveEquationRingRadius(moment),
+};
+
+/** A crest found by eye on a train of crests 2–5 m apart: 15 %, still far from r_n itself or from twice the spacing. */
+const crests: MeasurementExercise = {
+  lesson: 'iwave-stone',
+  quantity: 'crestSpacing',
+  symbol: 'Δr',
+  unit: 'm',
+  tool: 'ruler',
+  tolerance: 0.15,
+  expected: (_params, moment) => outerCrestSpacing(moment),
+};
+
+const group: MeasurementExercise = {
+  lesson: 'group-velocity',
+  quantity: 'groupDistance',
+  symbol: 'r',
+  unit: 'm',
+  tool: 'ruler',
+  tolerance: RULER_TOLERANCE,
+  expected: (_params, moment) => outerGroupDistance(moment),
+};
+
 export const MEASUREMENT_EXERCISES: readonly MeasurementExercise[] = [
   hs('fft-calm'),
   tp('fft-fresh-breeze'),
@@ -122,6 +213,10 @@ export const MEASUREMENT_EXERCISES: readonly MeasurementExercise[] = [
   hs('sun-glint'),
   // The fresh-breeze FFT sea whose seed the card turns: seeds 1–5 −9.1, −4.0, −4.3, −6.6, +0.2 % (HS_TOLERANCE).
   hs('fft-transform'),
+  turn,
+  ring,
+  crests,
+  group,
 ];
 
 export function exerciseFor(lesson: string): MeasurementExercise | null {
