@@ -126,7 +126,7 @@ function seaAndSkyFaults(png: PNG): string[] {
 }
 
 /** What a user of `Ocean` may call, beside what three.js's Object3D gives it. */
-const OCEAN_PUBLIC_MEMBERS = ['constructor', 'dispose', 'disturb', 'getParams', 'sampleSurface', 'sampleSurfaces', 'setParams', 'setSky', 'sky', 'submersion', 'time', 'update', 'whenReady'].sort();
+const OCEAN_PUBLIC_MEMBERS = ['autoUpdate', 'constructor', 'dispose', 'disturb', 'getParams', 'sampleSurface', 'sampleSurfaces', 'setParams', 'setSky', 'sky', 'submersion', 'time', 'update', 'whenReady'].sort();
 
 /**
  * The public members a user of `className` (exported from the package's index.d.ts under
