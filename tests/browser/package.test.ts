@@ -20,6 +20,8 @@ const ROOT = join(import.meta.dirname, '..', '..');
 const EXAMPLE = join(ROOT, 'examples', 'threejs-scene.html');
 const BUOYS = join(ROOT, 'examples', 'buoys.html');
 const COMPOSER = join(ROOT, 'examples', 'composer.html');
+const SPLIT = join(ROOT, 'examples', 'split-screen.html');
+const SPLIT_SHOT = process.env.SPLIT_SHOT ?? '';
 const COMPOSER_SHOT = process.env.COMPOSER_SHOT ?? '';
 const SHOTS = process.env.BUOYS_SHOT ?? '';
 const CONSUMER = join(ROOT, 'tests', 'browser', 'fixtures', 'package-consumer');
@@ -126,7 +128,7 @@ function seaAndSkyFaults(png: PNG): string[] {
 }
 
 /** What a user of `Ocean` may call, beside what three.js's Object3D gives it. */
-const OCEAN_PUBLIC_MEMBERS = ['constructor', 'dispose', 'disturb', 'getParams', 'sampleSurface', 'sampleSurfaces', 'setParams', 'setSky', 'sky', 'submersion', 'time', 'update', 'whenReady'].sort();
+const OCEAN_PUBLIC_MEMBERS = ['autoUpdate', 'constructor', 'dispose', 'disturb', 'getParams', 'sampleSurface', 'sampleSurfaces', 'setParams', 'setSky', 'sky', 'submersion', 'time', 'update', 'whenReady'].sort();
 
 /**
  * The public members a user of `className` (exported from the package's index.d.ts under
@@ -390,6 +392,68 @@ describe('the npm package', () => {
       console.log(`[oceano] composer.html water rows: ${JSON.stringify(seen.water)}; without the pass: ${JSON.stringify(without.water)}`);
       // Control: without the pass the water rows are another picture.
       expect(distance(seen.water.colour, without.water.colour)).toBeGreaterThan(15);
+    });
+  });
+
+  describe('examples/split-screen.html, served as files', () => {
+    const page = readFileSync(SPLIT, 'utf8');
+    const AUTO = "{ waves: 'fft', windSpeed: 12, autoUpdate: true }";
+    const LOOP = 'renderer.setAnimationLoop(() => {';
+    /** The page by hand: autoUpdate off, one update a frame, for the left player's camera only. */
+    const handDriven = page.replace(AUTO, "{ waves: 'fft', windSpeed: 12 }").replace(LOOP, 'renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000, players[0]);');
+
+    /** The page after 12 frames: its errors and each half's faults as a picture of sea and sky. */
+    async function halves(html: string): Promise<{ errors: string[]; left: string[]; right: string[]; png: PNG }> {
+      writeFileSync(join(site, 'split-screen.html'), html);
+      const { server, url } = await serveFolder(site, '/courses/graphics/week-3/');
+      const tab = await browser.newPage();
+      try {
+        tab.setDefaultTimeout(120_000);
+        const errors: string[] = [];
+        tab.on('pageerror', (error) => errors.push(String(error)));
+        tab.on('console', (message) => {
+          if (message.type() === 'error' && !message.location().url?.endsWith('/favicon.ico')) errors.push(message.text());
+        });
+        await tab.evaluateOnNewDocument(() => {
+          const request = window.requestAnimationFrame.bind(window);
+          const counted = window as unknown as { framesStarted: number };
+          counted.framesStarted = 0;
+          window.requestAnimationFrame = (callback) => request((time) => (counted.framesStarted++, callback(time)));
+        });
+        await tab.setViewport({ width: 640, height: 270, deviceScaleFactor: 1 });
+        await tab.goto(`${url}split-screen.html`, { waitUntil: 'load' });
+        await tab.waitForFunction(() => (window as unknown as { framesStarted: number }).framesStarted >= 12);
+        const png = PNG.sync.read(Buffer.from(await tab.screenshot({ type: 'png' })));
+        const half = (x: number): PNG => {
+          const part = new PNG({ width: png.width / 2, height: png.height });
+          PNG.bitblt(png, part, x, 0, png.width / 2, png.height, 0, 0);
+          return part;
+        };
+        return { errors, left: seaAndSkyFaults(half(0)), right: seaAndSkyFaults(half(png.width / 2)), png };
+      } finally {
+        await tab.close();
+        server.close();
+      }
+    }
+
+    it('shows sea below sky in both halves, one camera each, with autoUpdate and no update call', async () => {
+      expect(page.split('\n').length).toBeLessThanOrEqual(80);
+      expect(page).not.toContain('ocean.update(');
+      const seen = await halves(page);
+      if (SPLIT_SHOT) writeFileSync(SPLIT_SHOT, PNG.sync.write(seen.png));
+      expect(seen.errors).toEqual([]);
+      expect(seen.left).toEqual([]);
+      expect(seen.right).toEqual([]);
+    });
+
+    it('control: updated by hand for the left camera only, the right half misses its sea', async () => {
+      expect(page).toContain(AUTO);
+      expect(page).toContain(LOOP);
+      const seen = await halves(handDriven);
+      console.log(`[oceano] split-screen.html by hand for the left camera: right half ${JSON.stringify(seen.right)}`);
+      expect(seen.errors).toEqual([]);
+      expect(seen.left).toEqual([]);
+      expect(seen.right).not.toEqual([]);
     });
   });
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { APP_ONLY_PARAMS, checkOceanKeys, oceanParamKeys, oceanParametersOf, type OceanParameters } from '../../src/sim/params/oceanOptionKeys';
+import { APP_ONLY_PARAMS, checkOceanKeys, OCEAN_EXTRA_OPTIONS, oceanParamKeys, oceanParametersOf, type OceanParameters } from '../../src/sim/params/oceanOptionKeys';
 import { defaultParams, paramKeys } from '../../src/sim/params/params';
 
 /** Compiled by `tsc --noEmit`: each marked line must be a type error, or the compile fails. */
@@ -22,6 +22,7 @@ describe('the keys an Ocean reads', () => {
 
   it('lets the keys it reads and the named extras through', () => {
     expect(() => checkOceanKeys({ waves: 'fft', windSpeed: 12, sky: null }, ['sky'], 'new Ocean')).not.toThrow();
+    expect(() => checkOceanKeys({ sky: null, autoUpdate: true }, OCEAN_EXTRA_OPTIONS, 'new Ocean')).not.toThrow();
   });
 
   it('throws naming an app-only key, an unknown key, or an extra where none is allowed', () => {

@@ -12,6 +12,9 @@ export type AppOnlyParamKey = (typeof APP_ONLY_PARAMS)[number];
 export type OceanParamKey = Exclude<ParamKey, AppOnlyParamKey>;
 export type OceanParameters = Pick<OceanParams, OceanParamKey>;
 
+/** The options of an Ocean that are not parameters: the sky it reflects, and whether it updates itself for each camera. */
+export const OCEAN_EXTRA_OPTIONS = ['sky', 'autoUpdate'] as const;
+
 const isAppOnly = (key: string): boolean => (APP_ONLY_PARAMS as readonly string[]).includes(key);
 
 export const oceanParamKeys: readonly OceanParamKey[] = paramKeys.filter((key): key is OceanParamKey => !isAppOnly(key));
