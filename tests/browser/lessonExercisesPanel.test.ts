@@ -43,7 +43,8 @@ async function panelHs(page: Page): Promise<{ measured: string; theory: string; 
 }
 
 describe('physics-panel exercises on more cards, done with the panel', () => {
-  it('airy-waves (Gerstner), spectra-compared (Phillips), sun-glint (5 m/s), fft-transform (its own physics=1, the panel left open): Hs within tolerance, twice or half it "Not yet"', async () => {
+  // airy-waves (Gerstner), spectra-compared (Phillips), sun-glint (5 m/s), fft-transform (its own physics=1, the panel left open).
+  it('four seas: the panel\'s Hs is within tolerance, twice or half it "Not yet"', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=100&lesson=airy-waves', 1366, 768);
     await page.waitForSelector('.lil-gui.lil-root');
     const cases: [string, RegExp][] = [

@@ -100,7 +100,8 @@ async function rule(page: Page, a: [number, number, number], b: [number, number,
 }
 
 describe('ruler exercises, done with the ruler', () => {
-  it('iwave-stone, iwave-compare, group-velocity, wake-turn: the ruler’s readings are within tolerance; the slips are "Not yet"', async () => {
+  // iwave-stone, iwave-compare, group-velocity, wake-turn.
+  it('four cards: the ruler’s readings are within tolerance; the slips are "Not yet"', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=0&lesson=iwave-stone', 1366, 768);
     await page.waitForSelector('.lil-gui.lil-root');
     toolsOpen = false;

@@ -48,7 +48,8 @@ describe('physics panel', () => {
     await page.close();
   });
 
-  it('open, it measures again when the sea changes (the model, then the wind), saying so meanwhile; the sun changes nothing (the control)', async () => {
+  // The model changes, then the wind; the sun changes nothing (the control).
+  it('open, it measures again when the sea changes, saying so meanwhile', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=10&physics=1', 480, 270);
     const heading = () => page.$eval('.oceano-physics h2', (el) => el.textContent ?? '');
     const hsTheory = () => page.$$eval('.oceano-physics table tr', (rows) => rows.find((tr) => /^Hs = 4σ/.test(tr.cells[0]?.textContent ?? ''))!.cells[2].textContent ?? '');

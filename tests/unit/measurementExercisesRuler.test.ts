@@ -22,7 +22,8 @@ describe('ruler exercises: theory from the live parameters and the live clock', 
     expect(expected('wake-turn', at(null), { boatTurnRate: -3 })).toBeCloseTo(76.39, 2);
   });
 
-  it('iwave-compare: r = c t with c = √(g/1.5) = 2.557 m/s, by hand 25.57 m at 10 s, 15.34 m at 6 s; no stone, no theory', () => {
+  // c = √(g/1.5) = 2.557 m/s: by hand 25.57 m at 10 s, 15.34 m at 6 s; no stone, no theory.
+  it('iwave-compare: the ring’s radius is r = c t', () => {
     const c = Math.sqrt(g / 1.5);
     expect(c).toBeCloseTo(2.557, 3);
     expect(expected('iwave-compare', at(10))).toBeCloseTo(25.57, 2);
@@ -30,7 +31,9 @@ describe('ruler exercises: theory from the live parameters and the live clock', 
     expect(expected('iwave-compare', at(null))).toBeNaN();
   });
 
-  it('iwave-stone: at 12 s the outermost marked crests are n = 3 and 4 (n = 2 is longer than the grid carries), Δr = g t²/(8π)(1/3 − 1/4) = 4.68 m; at 10 s n = 2 and 3, 6.51 m', () => {
+  // At 12 s the outermost marked crests are n = 3 and 4 (n = 2 is longer than the grid carries):
+  // Δr = g t²/(8π)(1/3 − 1/4) = 4.68 m; at 10 s n = 2 and 3, 6.51 m.
+  it('iwave-stone: the outer crests’ spacing is Cauchy–Poisson’s', () => {
     // Hand computation: g t²/(8π) = 56.21 m at 12 s; k₂ = 16π²·4/(g t²) = 0.447 rad/m, below the band's 2π/10 = 0.63; k₃ = 1.006 inside it.
     const scale = (t: number) => (g * t * t) / (8 * Math.PI);
     expect(scale(12)).toBeCloseTo(56.21, 2);
@@ -56,7 +59,8 @@ describe('ruler exercises: the tolerance check', () => {
     }
   });
 
-  it('fails the usual slips: the diameter for the radius, ω left in degrees, the ring read at the wrong moment, a crest’s radius or two spacings', () => {
+  // The diameter for the radius, ω left in degrees, the ring read at the wrong moment, a crest’s radius or two spacings.
+  it('fails the usual slips', () => {
     const turn = exerciseFor('wake-turn')!;
     const r = turn.expected(paramsOf('wake-turn'));
     expect(withinTolerance(2 * r, r, turn.tolerance)).toBe(false);
@@ -81,7 +85,8 @@ describe('ruler exercises: the tolerance check', () => {
 
 describe('group-velocity: the outermost marked crest has run c_g t', () => {
   const group = (t: number | null) => exerciseFor('group-velocity')!.expected(paramsOf('group-velocity'), at(t));
-  it('equals ½√(g/k)·t by hand, and Cauchy–Poisson’s r_n (the two theories agree): 18.74 m at 12 s (n = 3), 19.52 m at 10 s (n = 2)', () => {
+  // 18.74 m at 12 s (n = 3), 19.52 m at 10 s (n = 2): the two theories agree.
+  it('equals ½√(g/k)·t by hand, and Cauchy–Poisson’s r_n', () => {
     const k3 = (16 * Math.PI ** 2 * 9) / (g * 144);
     expect(k3).toBeCloseTo(1.006, 3);
     expect(group(12)).toBeCloseTo(0.5 * Math.sqrt(g / k3) * 12, 6);
