@@ -153,7 +153,7 @@ describe('measurement exercises, done with the tools', () => {
     const { page } = await openOcean(harness, 'lesson=fresnel', 640, 360);
     await page.evaluate(() => window.oceano.ready);
     const lessons = await page.evaluate(() => window.oceano.lessons());
-    expect(lessons.filter((l) => l.exercise).map((l) => l.id)).toEqual(['sun-glint', 'fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake', 'wake-turn', 'iwave-stone', 'iwave-compare', 'airy-waves', 'group-velocity', 'spectra-compared', 'fft-transform']);
+    expect(lessons.filter((l) => l.exercise).map((l) => l.id)).toEqual(['sun-glint', 'fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'gerstner-gentle', 'physics-panel', 'kelvin-wake', 'wake-turn', 'iwave-stone', 'iwave-compare', 'airy-waves', 'group-velocity', 'spectra-compared', 'fft-transform']);
     await page.waitForSelector('.oceano-lesson-card[data-lesson="fresnel"]');
     expect(await page.$('.oceano-lesson-exercise')).toBeNull();
     await page.close();

@@ -88,3 +88,33 @@ describe('their tolerances', () => {
     }
   });
 });
+
+describe('gerstner-gentle: the drawn waves’ own Hs', () => {
+  // The time series at a point is Σ Aᵢ cos(ωᵢ t + φᵢ); its variance, sampled over 20 000 s, is Σ Aᵢ²/2.
+  it('equals 4σ of the four waves’ height sampled over a long time at one point', async () => {
+    const { gerstnerWavesFor } = await import('../../src/sim/waves/gerstner/gerstnerLiveModel');
+    for (const count of [4, 32]) {
+      const params = paramsOf('gerstner-gentle', { gerstnerCount: count });
+      const waves = gerstnerWavesFor(params);
+      let sum = 0;
+      let sumSq = 0;
+      const n = 200_000;
+      for (let i = 0; i < n; i++) {
+        const t = i * 0.1;
+        let eta = 0;
+        for (const w of waves) eta += w.amplitude * Math.cos(w.omega * t + w.phase);
+        sum += eta;
+        sumSq += eta * eta;
+      }
+      const sampled = 4 * Math.sqrt(sumSq / n - (sum / n) ** 2);
+      expect(exerciseFor('gerstner-gentle')!.expected(params) / sampled, `${count} waves`).toBeCloseTo(1, 2);
+    }
+  });
+
+  // The card's answer is not the spectrum's 4√m₀ by accident: the waves sample 98.9 % of m₀, so Hs is √0.989 of it.
+  it('is √(share of m₀ sampled) of airy-waves’ spectral Hs; forgetting the ½ of Σ Aᵢ²/2 fails', () => {
+    const waves = expected('gerstner-gentle');
+    expect(waves / expected('airy-waves')).toBeCloseTo(Math.sqrt(0.989), 2);
+    expect(withinTolerance(waves * Math.SQRT2, waves, exerciseFor('gerstner-gentle')!.tolerance)).toBe(false);
+  });
+});

@@ -12,6 +12,10 @@ const TASKS: Record<ExerciseQuantity, Words> = {
     en: 'Open the physics panel (Physics panel in the controls) and read the significant wave height Hs = 4σ(η) it measured on this sea, in the “measured” column. Type it here.',
     es: 'Abre el panel de física (Physics panel en los controles) y lee la altura significativa Hs = 4σ(η) que midió en este mar, en la columna “measured”. Escríbela aquí.',
   },
+  wavesSignificantHeight: {
+    en: 'Open the physics panel (Physics panel in the controls) and read the significant wave height Hs = 4σ(η) it measured on these Gerstner waves, in the “measured” column. Type it here.',
+    es: 'Abre el panel de física (Physics panel en los controles) y lee la altura significativa Hs = 4σ(η) que midió sobre estas olas de Gerstner, en la columna “measured”. Escríbela aquí.',
+  },
   peakPeriod: {
     en: 'Open the physics panel (Physics panel in the controls) and read the peak period Tp it measured on this sea, in the “measured” column. Type it here.',
     es: 'Abre el panel de física (Physics panel en los controles) y lee el período de pico Tp que midió en este mar, en la columna “measured”. Escríbelo aquí.',
@@ -46,6 +50,10 @@ function theoryLine(exercise: MeasurementExercise, params: OceanParams, moment: 
       return es
         ? `Hs = 4√m₀, con m₀ = ∫S(ω)dω del espectro ${params.spectrum} a U₁₀ = ${params.windSpeed} m/s${params.spectrum === 'jonswap' ? ` y ${params.fetch} km de fetch` : ''}`
         : `Hs = 4√m₀, m₀ = ∫S(ω)dω of the ${params.spectrum} spectrum at U₁₀ = ${params.windSpeed} m/s${params.spectrum === 'jonswap' ? ` over a ${params.fetch} km fetch` : ''}`;
+    case 'wavesSignificantHeight':
+      return es
+        ? `una suma de senos de amplitudes Aᵢ tiene varianza Σ Aᵢ²/2, así que Hs = 4√(Σ Aᵢ²/2) sobre las ${params.gerstnerCount} olas dibujadas`
+        : `a sum of sines of amplitudes Aᵢ has the variance Σ Aᵢ²/2, so Hs = 4√(Σ Aᵢ²/2) over the ${params.gerstnerCount} waves drawn`;
     case 'peakPeriod':
       return es
         ? `Tp = 2π/ωp, ωp el pico del espectro ${params.spectrum} a U₁₀ = ${params.windSpeed} m/s${params.spectrum === 'jonswap' ? ` y ${params.fetch} km de fetch` : ''}`

@@ -141,7 +141,7 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
 };
 
 /** The lessons whose card has a measurement exercise (src/sim/teaching/measurementExercises.ts; a unit test keeps the two alike). */
-export const EXERCISE_LESSONS: readonly string[] = ['fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake', 'airy-waves', 'spectra-compared', 'sun-glint', 'fft-transform', 'wake-turn', 'iwave-compare', 'iwave-stone', 'group-velocity'];
+export const EXERCISE_LESSONS: readonly string[] = ['fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake', 'airy-waves', 'gerstner-gentle', 'spectra-compared', 'sun-glint', 'fft-transform', 'wake-turn', 'iwave-compare', 'iwave-stone', 'group-velocity'];
 
 /** `[{ id, title, section, question, exercise }]` in a language, in the course's order (oceano.lessons()). */
 export function lessonList(language: Language): { id: string; title: string; section: string; question: boolean; exercise: boolean }[] {
