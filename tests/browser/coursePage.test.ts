@@ -87,7 +87,8 @@ describe('the course page (dist/course/)', () => {
   // Its figures point at the build's posters.
   beforeAll(() => ensurePosters(harness), 600_000);
 
-  it('is the seed report made live: every figure starts as it is scrolled to, with no lost context, notice or page error', async () => {
+  // The seed report made live: every figure starts as it is scrolled to.
+  it('starts every figure as it is scrolled to, with no lost context, notice or page error', async () => {
     const { page, consoleErrors, violations } = await recordedPage(harness, 800, 700);
     // Figures open paused under reduced motion: the page is scrolled, not watched.
     await page.emulateMediaFeatures([{ name: 'prefers-reduced-motion', value: 'reduce' }]);
