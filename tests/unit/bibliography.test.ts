@@ -61,7 +61,7 @@ describe('the bibliography', () => {
     const byLastWord = [...all].sort((a, b) => lastWord(BIBLIOGRAPHY[a])!.localeCompare(lastWord(BIBLIOGRAPHY[b])!, 'en') || BIBLIOGRAPHY[a].year - BIBLIOGRAPHY[b].year);
     expect(byLastWord.indexOf('hasselmann1973')).toBeLessThan(ordered.indexOf('hasselmann1973') - 5);
     // Control: a list with that work moved to its "al." place is not in surname order.
-    const misfiled = ordered.filter((key) => key !== 'hasselmann1973');
+    const misfiled: ReferenceKey[] = ordered.filter((key) => key !== 'hasselmann1973');
     misfiled.splice(byLastWord.indexOf('hasselmann1973'), 0, 'hasselmann1973');
     const misfiledSurnames = misfiled.map((key) => firstSurname(BIBLIOGRAPHY[key]));
     expect(misfiledSurnames).not.toEqual([...misfiledSurnames].sort((a, b) => a.localeCompare(b, 'en')));

@@ -2,6 +2,7 @@ import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import './physicsPanel.css';
 import type { PhysicsReport } from '../../sim/physics/physicsReport';
+import { onScreen } from './onScreen';
 
 const PLOT_WIDTH = 340;
 const PLOT_HEIGHT = 170;
@@ -19,10 +20,13 @@ export class PhysicsView {
   private plots: uPlot[] = [];
   /** Settles when the latest measurement is on screen. */
   drawn: Promise<void> = Promise.resolve();
+  /** The measurement waiting for the panel to be seen; dropped when disposed. */
+  private waiting: ReturnType<typeof onScreen> | null = null;
 
   constructor(
-    container: HTMLElement,
-    private readonly measure: () => PhysicsReport,
+    private readonly container: HTMLElement,
+    /** Resolves to null when the measurement was given up (its figure disposed). */
+    private readonly measure: () => Promise<PhysicsReport | null>,
   ) {
     this.root = document.createElement('section');
     this.root.className = 'oceano-physics';
@@ -34,15 +38,20 @@ export class PhysicsView {
     this.root.hidden = !visible;
   }
 
-  /** Measures on the next task, so the "measuring…" line is painted first. */
+  /**
+   * Measures once its figure is on screen (one started near the screen, or given back, does not),
+   * on the next task, so the "measuring…" line is painted first.
+   */
   refresh(): void {
     this.root.textContent = 'Measuring the sea through its CPU twin…';
-    this.drawn = new Promise((resolve) =>
-      setTimeout(() => {
-        this.show(this.measure());
-        resolve();
-      }, 0),
-    );
+    this.waiting?.cancel();
+    const waiting = (this.waiting = onScreen(this.container));
+    this.drawn = waiting.shown
+      .then(() => new Promise((resolve) => setTimeout(resolve, 0)))
+      .then(() => (this.waiting === waiting ? this.measure() : null))
+      .then((report) => {
+        if (report && this.waiting === waiting) this.show(report);
+      });
   }
 
   show(report: PhysicsReport): void {
@@ -161,6 +170,8 @@ export class PhysicsView {
   }
 
   dispose(): void {
+    this.waiting?.cancel();
+    this.waiting = null;
     for (const plot of this.plots) plot.destroy();
     this.root.remove();
   }
