@@ -59,13 +59,14 @@ export class PhysicsPanel {
 
   /**
    * The same measurement spread over tasks of about SLICE_MS, so the page's other figures keep
-   * drawing while it runs (at once it holds the one thread for seconds); null once disposed.
+   * drawing while it runs (at once it holds the one thread for seconds); null once disposed or
+   * no longer `wanted`.
    */
-  private async measureSliced(code: ReportModule): Promise<PhysicsReport | null> {
+  private async measureSliced(code: ReportModule, wanted: () => boolean): Promise<PhysicsReport | null> {
     this.runs++;
     const steps = code.physicsSteps(code.measuredSea(this.source.model(), this.source.params()), this.source.time());
     for (;;) {
-      if (this.disposed) return null;
+      if (this.disposed || !wanted()) return null;
       const until = performance.now() + SLICE_MS;
       let step = steps.next();
       while (!step.done && performance.now() < until) step = steps.next();
@@ -87,7 +88,7 @@ export class PhysicsPanel {
       return;
     }
     this.loading ??= Promise.all([import('./physicsPlots'), this.loadReport()]).then(([plots, code]) => {
-      this.view = new plots.PhysicsView(this.container, () => this.measureSliced(code));
+      this.view = new plots.PhysicsView(this.container, (wanted) => this.measureSliced(code, wanted));
       this.view.setVisible(this.open);
       if (this.open) this.view.refresh();
     });

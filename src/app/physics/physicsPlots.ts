@@ -25,8 +25,8 @@ export class PhysicsView {
 
   constructor(
     private readonly container: HTMLElement,
-    /** Resolves to null when the measurement was given up (its figure disposed). */
-    private readonly measure: () => Promise<PhysicsReport | null>,
+    /** Resolves to null when the measurement was given up (`wanted` turned false, or its figure disposed). */
+    private readonly measure: (wanted: () => boolean) => Promise<PhysicsReport | null>,
   ) {
     this.root = document.createElement('section');
     this.root.className = 'oceano-physics';
@@ -36,6 +36,13 @@ export class PhysicsView {
 
   setVisible(visible: boolean): void {
     this.root.hidden = !visible;
+    // Closed before its measurement was drawn: reopening measures afresh (PhysicsPanel.setOpen).
+    if (!visible) this.dropWaiting();
+  }
+
+  private dropWaiting(): void {
+    this.waiting?.cancel();
+    this.waiting = null;
   }
 
   /**
@@ -44,17 +51,18 @@ export class PhysicsView {
    */
   refresh(): void {
     this.root.textContent = 'Measuring the sea through its CPU twin…';
-    this.waiting?.cancel();
+    this.dropWaiting();
     const waiting = (this.waiting = onScreen(this.container));
-    this.drawn = waiting.shown
+    this.drawn = waiting.settled
       .then(() => new Promise((resolve) => setTimeout(resolve, 0)))
-      .then(() => (this.waiting === waiting ? this.measure() : null))
+      .then(() => (this.waiting === waiting ? this.measure(() => this.waiting === waiting) : null))
       .then((report) => {
         if (report && this.waiting === waiting) this.show(report);
       });
   }
 
   show(report: PhysicsReport): void {
+    this.dropWaiting();
     for (const plot of this.plots) plot.destroy();
     this.plots = [];
     this.root.replaceChildren();
@@ -170,8 +178,7 @@ export class PhysicsView {
   }
 
   dispose(): void {
-    this.waiting?.cancel();
-    this.waiting = null;
+    this.dropWaiting();
     for (const plot of this.plots) plot.destroy();
     this.root.remove();
   }
