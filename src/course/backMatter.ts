@@ -1,5 +1,5 @@
 import type { Language } from '../app/language/i18n';
-import { BIBLIOGRAPHY, type Reference, type ReferenceKey } from '../app/lessons/bibliography';
+import { bySurnameAndYear, type ReferenceKey } from '../app/lessons/bibliography';
 import { GLOSSARY, type GlossaryKey, type GlossaryTerm } from '../app/lessons/glossary';
 import type { LessonText } from '../app/lessons/lessonTexts';
 
@@ -14,16 +14,9 @@ export const workAnchor = (key: string): string => `work-${key}`;
 /** The glossary entry's id: a term in a caption's text links to it. */
 export const termAnchor = (key: string): string => `term-${key}`;
 
-/** The first author's surname: the last word of the first name, "et al." aside (Hasselmann, not "al."). */
-export const firstSurname = (reference: Reference): string => reference.authors.split(',')[0].replace(/\s+et al\.$/, '').split(' ').at(-1) ?? '';
-
 /** Every work some card cites, once each, by first author's surname and year (as the app's bibliography). */
 export function citedWorks(cards: Record<string, LessonText>): ReferenceKey[] {
-  const keys = [...new Set(Object.values(cards).flatMap((card) => card.references ?? []))];
-  return keys.sort((a, b) => {
-    const [p, q] = [BIBLIOGRAPHY[a], BIBLIOGRAPHY[b]];
-    return firstSurname(p).localeCompare(firstSurname(q), 'en') || p.year - q.year;
-  });
+  return bySurnameAndYear([...new Set(Object.values(cards).flatMap((card) => card.references ?? []))]);
 }
 
 /** Every glossary term with its headword in `language`, in that language's alphabetical order. */

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { BIBLIOGRAPHY, type Reference } from '../../src/app/lessons/bibliography';
+import { BIBLIOGRAPHY, bySurnameAndYear, firstSurname, type Reference, type ReferenceKey } from '../../src/app/lessons/bibliography';
 import { LESSON_TEXTS, type LessonText } from '../../src/app/lessons/lessonTexts';
 import { citation } from '../../src/app/lessons/referenceLists';
 
@@ -42,5 +42,28 @@ describe('the bibliography', () => {
       const text = citation(reference);
       for (const part of [reference.authors, String(reference.year), reference.title, reference.where]) expect(text).toContain(part);
     }
+  });
+
+  // The drawer's bibliography and the course page's both list in this order.
+  it('lists works by first author\'s surname, "et al." aside, then by year', () => {
+    const all = Object.keys(BIBLIOGRAPHY) as ReferenceKey[];
+    const ordered = bySurnameAndYear(all);
+    expect([...ordered].sort()).toEqual([...all].sort());
+    const surnames = ordered.map((key) => firstSurname(BIBLIOGRAPHY[key]));
+    expect(surnames).toEqual([...surnames].sort((a, b) => a.localeCompare(b, 'en')));
+    // "K. Hasselmann et al." (1973) files under H, just before D. E. Hasselmann (1980), not under "al.".
+    expect(firstSurname(BIBLIOGRAPHY.hasselmann1973)).toBe('Hasselmann');
+    expect(ordered.indexOf('hasselmann1980') - ordered.indexOf('hasselmann1973')).toBe(1);
+    expect(firstSurname({ ...BIBLIOGRAPHY.hasselmann1973, authors: 'K. Hasselmann' })).toBe('Hasselmann');
+    // Control: the last word of the first name, as the drawer once read it, gives "al." and files the work near the top.
+    const lastWord = (reference: Reference) => reference.authors.split(',')[0].split(' ').at(-1);
+    expect(lastWord(BIBLIOGRAPHY.hasselmann1973)).toBe('al.');
+    const byLastWord = [...all].sort((a, b) => lastWord(BIBLIOGRAPHY[a])!.localeCompare(lastWord(BIBLIOGRAPHY[b])!, 'en') || BIBLIOGRAPHY[a].year - BIBLIOGRAPHY[b].year);
+    expect(byLastWord.indexOf('hasselmann1973')).toBeLessThan(ordered.indexOf('hasselmann1973') - 5);
+    // Control: a list with that work moved to its "al." place is not in surname order.
+    const misfiled: ReferenceKey[] = ordered.filter((key) => key !== 'hasselmann1973');
+    misfiled.splice(byLastWord.indexOf('hasselmann1973'), 0, 'hasselmann1973');
+    const misfiledSurnames = misfiled.map((key) => firstSurname(BIBLIOGRAPHY[key]));
+    expect(misfiledSurnames).not.toEqual([...misfiledSurnames].sort((a, b) => a.localeCompare(b, 'en')));
   });
 });

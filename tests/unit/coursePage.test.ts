@@ -5,11 +5,11 @@ import { LESSONS, lessonIds } from '../../src/app/lessons/lessonCatalog';
 import { LESSON_TEXTS } from '../../src/app/lessons/lessonTexts';
 import { readLessonQuotes } from '../../scripts/build/lessonQuotes';
 import { lessonViewAttributes } from '../../src/course/lessonFigure';
-import { BIBLIOGRAPHY, type ReferenceKey } from '../../src/app/lessons/bibliography';
+import { BIBLIOGRAPHY, firstSurname, type ReferenceKey } from '../../src/app/lessons/bibliography';
 import { GLOSSARY } from '../../src/app/lessons/glossary';
 import { firstTermOccurrences } from '../../src/app/lessons/glossaryLinks';
 import { citation } from '../../src/app/lessons/referenceLists';
-import { citedWorks, firstSurname, glossaryEntries, termAnchor, workAnchor } from '../../src/course/backMatter';
+import { citedWorks, glossaryEntries, termAnchor, workAnchor } from '../../src/course/backMatter';
 import { bannedSpanishWords, bibliographyFaults, pageLessonIds, shownLessonFaults, termLinkFaults, type CardSource } from '../../src/course/coursePageChecks';
 
 const root = resolve(import.meta.dirname, '..', '..');

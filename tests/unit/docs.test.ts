@@ -10,11 +10,8 @@ const README = DOCS['README.md'];
 /** Docs allowed past MAX_DOC_LINES, each with the reason: none; a doc that grows past it is split by concept. */
 const KNOWN_OVERLONG_DOCS: readonly string[] = [];
 
-/**
- * Paths cited by docs that other work is rewriting now: docs/course-pages.md names a
- * prototype's folder that was deleted. To be left empty once that doc is rewritten.
- */
-const KNOWN_MISSING_PATHS: readonly string[] = ['docs/course-pages.md: scripts/bench/sharedRenderer/'];
+/** Paths cited by docs that other work is rewriting now; this list is to be left empty. */
+const KNOWN_MISSING_PATHS: readonly string[] = [];
 
 describe('docs cite files that exist', () => {
   it('every path cited in README.md and docs/ is in the tree', () => {
@@ -51,12 +48,8 @@ describe('docs stay short enough to read', () => {
 /** The one commit a doc may name: the baseline the FFT view's cost budget is defined against. */
 const BASELINE_COMMIT = '65d506c';
 
-/**
- * Docs that still carry history, each to be cleaned by the work that owns it; this list is to
- * be left empty. docs/course-pages.md names its prototypes' commits and its runs' dates, and is
- * being rewritten by the course pages' work now.
- */
-const KNOWN_DOCS_WITH_HISTORY: readonly string[] = ['docs/course-pages.md'];
+/** Docs that still carry history, each to be cleaned by the work that owns it; this list is to be left empty. */
+const KNOWN_DOCS_WITH_HISTORY: readonly string[] = [];
 
 describe('docs carry no history', () => {
   it(`no doc names a commit other than the baseline ${BASELINE_COMMIT}, or a date`, () => {

@@ -4,7 +4,7 @@ import { GerstnerLiveModel } from '../../src/sim/waves/gerstner/gerstnerLiveMode
 import { gerstnerSea } from '../../src/sim/waves/gerstner/gerstnerSpectrum';
 import { GerstnerWaveModel } from '../../src/sim/waves/gerstner/gerstnerWaves';
 import { defaultParams } from '../../src/sim/params/params';
-import { jonswapHs, measurePhysics, piersonMoskowitzHs } from '../../src/sim/physics/physicsReport';
+import { jonswapHs, measurePhysics, physicsSteps, piersonMoskowitzHs, type MeasuredSea } from '../../src/sim/physics/physicsReport';
 import { piersonMoskowitz } from '../../src/sim/waves/spectra/piersonMoskowitz';
 import { seaStateFromParams } from '../../src/sim/waves/spectra/seaState';
 import { SeedWaveModel } from '../../src/sim/waves/seed/seedWaveModel';
@@ -108,5 +108,36 @@ describe('the slopes row: resolved + roughness against Cox & Munk', () => {
     const steep = flat(0.13, 20);
     expect(steep.slopes.total).toBeGreaterThan(steep.slopes.coxMunk + 0.004);
     expect(steep.notes.join(' ')).toMatch(/exceed Cox & Munk/);
+  }, SLOW);
+});
+
+// The panel spreads a measurement over tasks so the page's other figures keep drawing.
+describe('the measurement as steps', () => {
+  const params = { ...defaultParams(), waves: 'gerstner' as const, windSpeed: 10, spectrum: 'pierson-moskowitz' as const };
+  const model = new GerstnerLiveModel(params);
+  const times: number[] = [];
+  const sea = (record: boolean): MeasuredSea => ({
+    name: 'gerstner',
+    height: (x, z, t) => (record && times.push(t), model.height(x, z, t)),
+    sea: seaStateFromParams(params),
+    slopeVariance: () => model.slopeVariance(),
+    windSpeed: 10,
+    seaRoughness: true,
+  });
+
+  it('gives measurePhysics\'s report, one simulated time a step', () => {
+    const steps = physicsSteps(sea(true), 100);
+    const timesPerStep: number[] = [];
+    let step = steps.next();
+    while (!step.done) {
+      timesPerStep.push(new Set(times.splice(0)).size);
+      step = steps.next();
+    }
+    // 16 snapshots for the dispersion, then 512 times of the 16 probe points.
+    expect(timesPerStep.length).toBe(16 + 512);
+    expect(timesPerStep.every((n) => n === 1)).toBe(true);
+    expect(step.value).toEqual(measurePhysics(sea(false), 100));
+    // Control: the report from another start time differs, so the equality above is not vacuous.
+    expect(measurePhysics(sea(false), 130).hs.measured).not.toBe(step.value.hs.measured);
   }, SLOW);
 });

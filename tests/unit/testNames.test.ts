@@ -9,7 +9,6 @@ const SOURCES = Object.fromEntries(testSourceFiles().map((path) => [path, readRe
  * page); this list is to be left empty.
  */
 const KNOWN_FILES_WITH_LONG_NAMES: readonly string[] = [
-  'tests/browser/coursePage.test.ts',
   'tests/unit/lessonClaims/concepts.test.ts',
   'tests/unit/lessonClaims/fft.test.ts',
   'tests/unit/lessonClaims/light.test.ts',

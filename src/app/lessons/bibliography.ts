@@ -11,6 +11,9 @@ export interface Reference {
   where: string;
 }
 
+/** The first author's surname: the last word of the first name, "et al." aside (Hasselmann, not "al."). */
+export const firstSurname = (reference: Reference): string => reference.authors.split(',')[0].replace(/\s+et al\.$/, '').split(' ').at(-1) ?? '';
+
 export const BIBLIOGRAPHY = {
   airy1845: { authors: 'G. B. Airy', year: 1845, title: 'Tides and waves', where: 'Encyclopaedia Metropolitana, vol. 5, 241–396' },
   assarssonMoller2000: { authors: 'U. Assarsson, T. Möller', year: 2000, title: 'Optimized view frustum culling algorithms for bounding boxes', where: 'Journal of Graphics Tools 5(1), 9–22' },
@@ -62,3 +65,11 @@ export const BIBLIOGRAPHY = {
 } satisfies Record<string, Reference>;
 
 export type ReferenceKey = keyof typeof BIBLIOGRAPHY;
+
+/** `keys` in a reference list's order: by first author's surname, then year (the app's drawer and the course page). */
+export function bySurnameAndYear(keys: readonly ReferenceKey[]): ReferenceKey[] {
+  return [...keys].sort((a, b) => {
+    const [p, q] = [BIBLIOGRAPHY[a], BIBLIOGRAPHY[b]];
+    return firstSurname(p).localeCompare(firstSurname(q), 'en') || p.year - q.year;
+  });
+}

@@ -1,6 +1,6 @@
 import type { Translator } from '../language/i18n';
 import { teachingWord } from '../language/teachingWords';
-import { BIBLIOGRAPHY, type Reference, type ReferenceKey } from './bibliography';
+import { BIBLIOGRAPHY, bySurnameAndYear, type Reference, type ReferenceKey } from './bibliography';
 import { GLOSSARY, type GlossaryTerm } from './glossary';
 
 /** A work in full, as a reference list writes it: authors (year). Title. Where. */
@@ -32,12 +32,7 @@ export function referencesFold(tr: Translator, keys: readonly ReferenceKey[]): H
 
 /** Every work the lessons cite, by first author's surname and year. */
 export function bibliographyList(): HTMLOListElement {
-  const surname = (reference: Reference) => reference.authors.split(',')[0].split(' ').at(-1) ?? '';
-  const keys = (Object.keys(BIBLIOGRAPHY) as ReferenceKey[]).sort((a, b) => {
-    const [p, q] = [BIBLIOGRAPHY[a], BIBLIOGRAPHY[b]];
-    return surname(p).localeCompare(surname(q), 'en') || p.year - q.year;
-  });
-  return list('oceano-bibliography-list', keys);
+  return list('oceano-bibliography-list', bySurnameAndYear(Object.keys(BIBLIOGRAPHY) as ReferenceKey[]));
 }
 
 /** Every glossary term with its definition, in the page's language and its alphabetical order. */

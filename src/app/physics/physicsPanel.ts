@@ -18,6 +18,9 @@ type PlotsModule = typeof import('./physicsPlots');
 type ReportModule = typeof import('../../sim/physics/physicsReport');
 type PhysicsView = InstanceType<PlotsModule['PhysicsView']>;
 
+/** The longest task a sliced measurement takes, ms: about two simulated times of the FFT twin. */
+const SLICE_MS = 40;
+
 /**
  * physics=1: measures the running sea and plots it against theory. Closed, it costs nothing:
  * no estimator runs and the plotting code (physicsPlots.ts with uPlot and its CSS) is not
@@ -27,6 +30,7 @@ export class PhysicsPanel {
   /** Estimator runs so far (the panel's and oceano.physics()'s): the test of "costs nothing when closed". */
   runs = 0;
   private open = false;
+  private disposed = false;
   private view?: PhysicsView;
   private loading?: Promise<void>;
   private reportLoad?: Promise<ReportModule>;
@@ -70,6 +74,24 @@ export class PhysicsPanel {
     else if (changed && this.open && this.view) this.view.refresh(this.source.modelsLoaded());
   }
 
+  /**
+   * The same measurement spread over tasks of about SLICE_MS, so the page's other figures keep
+   * drawing while it runs (at once it holds the one thread for seconds); null once disposed or
+   * no longer `wanted`.
+   */
+  private async measureSliced(code: ReportModule, wanted: () => boolean): Promise<PhysicsReport | null> {
+    this.runs++;
+    const steps = code.physicsSteps(code.measuredSea(this.source.model(), this.source.params()), this.source.time());
+    for (;;) {
+      if (this.disposed || !wanted()) return null;
+      const until = performance.now() + SLICE_MS;
+      let step = steps.next();
+      while (!step.done && performance.now() < until) step = steps.next();
+      if (step.done) return step.value;
+      await new Promise((resolve) => setTimeout(resolve, 0));
+    }
+  }
+
   setOpen(open: boolean): void {
     if (open === this.open) return;
     this.open = open;
@@ -83,7 +105,7 @@ export class PhysicsPanel {
       return;
     }
     this.loading ??= Promise.all([import('./physicsPlots'), this.loadReport(), this.source.modelsLoaded()]).then(([plots, code]) => {
-      this.view = new plots.PhysicsView(this.container, () => this.measureNow(code));
+      this.view = new plots.PhysicsView(this.container, (wanted) => this.measureSliced(code, wanted));
       this.view.setVisible(this.open);
       if (this.open) this.view.refresh();
     });
@@ -96,6 +118,7 @@ export class PhysicsPanel {
   }
 
   dispose(): void {
+    this.disposed = true;
     this.view?.dispose();
   }
 }

@@ -2,6 +2,7 @@ import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import './physicsPanel.css';
 import type { PhysicsReport } from '../../sim/physics/physicsReport';
+import { onScreen } from './onScreen';
 
 const PLOT_WIDTH = 340;
 const PLOT_HEIGHT = 170;
@@ -19,12 +20,13 @@ export class PhysicsView {
   private plots: uPlot[] = [];
   /** Settles when the latest measurement is on screen. */
   drawn: Promise<void> = Promise.resolve();
-  /** Refreshes asked for so far: a measurement runs only for the latest. */
-  private requests = 0;
+  /** The measurement waiting for the panel to be seen; dropped when disposed. */
+  private waiting: ReturnType<typeof onScreen> | null = null;
 
   constructor(
-    container: HTMLElement,
-    private readonly measure: () => PhysicsReport,
+    private readonly container: HTMLElement,
+    /** Resolves to null when the measurement was given up (`wanted` turned false, or its figure disposed). */
+    private readonly measure: (wanted: () => boolean) => Promise<PhysicsReport | null>,
   ) {
     this.root = document.createElement('section');
     this.root.className = 'oceano-physics';
@@ -34,31 +36,37 @@ export class PhysicsView {
 
   setVisible(visible: boolean): void {
     this.root.hidden = !visible;
+    // Closed before its measurement was drawn: reopening measures afresh (PhysicsPanel.setOpen).
+    if (!visible) this.dropWaiting();
+  }
+
+  private dropWaiting(): void {
+    this.waiting?.cancel();
+    this.waiting = null;
   }
 
   /**
-   * Says "measuring" now and measures once `ready` has settled (the model asked for is in
-   * place), on a later task so the line is painted first. A newer refresh supersedes one still
-   * waiting: only the latest parameters' sea is measured.
+   * Says "measuring" now and measures once its figure is on screen (one started near the screen,
+   * or given back, does not) and `ready` has settled (the model asked for is in place), on a
+   * later task so the line is painted first. A newer refresh supersedes one still waiting: only
+   * the latest parameters' sea is measured.
    */
   refresh(ready: Promise<unknown> = Promise.resolve()): void {
     for (const plot of this.plots) plot.destroy();
     this.plots = [];
     this.root.textContent = 'Measuring the sea through its CPU twin…';
-    const request = ++this.requests;
-    const measured = ready.then(
-      () =>
-        new Promise<void>((resolve) =>
-          setTimeout(() => {
-            if (request === this.requests) this.show(this.measure());
-            resolve();
-          }, 0),
-        ),
-    );
-    this.drawn = measured;
+    this.dropWaiting();
+    const waiting = (this.waiting = onScreen(this.container));
+    this.drawn = Promise.all([waiting.settled, ready])
+      .then(() => new Promise((resolve) => setTimeout(resolve, 0)))
+      .then(() => (this.waiting === waiting ? this.measure(() => this.waiting === waiting) : null))
+      .then((report) => {
+        if (report && this.waiting === waiting) this.show(report);
+      });
   }
 
   show(report: PhysicsReport): void {
+    this.dropWaiting();
     for (const plot of this.plots) plot.destroy();
     this.plots = [];
     this.root.replaceChildren();
@@ -174,6 +182,7 @@ export class PhysicsView {
   }
 
   dispose(): void {
+    this.dropWaiting();
     for (const plot of this.plots) plot.destroy();
     this.root.remove();
   }

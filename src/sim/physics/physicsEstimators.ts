@@ -84,6 +84,24 @@ function fft2(fft: FFT, data: Float64Array, n: number): Float64Array {
  * in the bin at +k with a rising phase; |rate| is its ω either way.
  */
 export function estimateDispersion(sampler: HeightSampler, options: DispersionOptions): DispersionPoint[] {
+  return finish(dispersionSteps(sampler, options));
+}
+
+/**
+ * A measurement as steps: each `next()` does one time's work (a snapshot, a row of samples)
+ * and the last returns the result, so a page can spread it over several tasks.
+ */
+export type Steps<T> = Generator<void, T, void>;
+
+/** Runs `steps` to the end at once. */
+export function finish<T>(steps: Steps<T>): T {
+  let step = steps.next();
+  while (!step.done) step = steps.next();
+  return step.value;
+}
+
+/** estimateDispersion, one snapshot per step. */
+export function* dispersionSteps(sampler: HeightSampler, options: DispersionOptions): Steps<DispersionPoint[]> {
   const { size, resolution: n, startTime, timeStep, snapshots } = options;
   if (!isPowerOfTwo(n)) throw new Error(`Patch resolution must be a power of two, got ${n}.`);
   if (snapshots < 2) throw new Error('Dispersion needs at least two snapshots.');
@@ -123,6 +141,7 @@ export function estimateDispersion(sampler: HeightSampler, options: DispersionOp
       }
     }
     previous = data;
+    yield;
   }
 
   // Bin (r, c) is the wavevector (kc, kr) with indices above n/2 standing for negative ones.
@@ -289,10 +308,16 @@ export function peakPeriod(peakOmega: number): number {
  * does.
  */
 export function heightSeriesAt(sampler: HeightSampler, points: readonly (readonly [number, number])[], startTime: number, timeStep: number, count: number): Float64Array[] {
+  return finish(heightSeriesSteps(sampler, points, startTime, timeStep, count));
+}
+
+/** heightSeriesAt, one time per step. */
+export function* heightSeriesSteps(sampler: HeightSampler, points: readonly (readonly [number, number])[], startTime: number, timeStep: number, count: number): Steps<Float64Array[]> {
   const series = points.map(() => new Float64Array(count));
   for (let i = 0; i < count; i++) {
     const t = startTime + i * timeStep;
     for (let p = 0; p < points.length; p++) series[p][i] = sampler(points[p][0], points[p][1], t);
+    yield;
   }
   return series;
 }

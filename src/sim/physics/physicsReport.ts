@@ -1,14 +1,16 @@
 import { angularFrequency, GRAVITY } from '../waves/dispersion';
 import {
-  estimateDispersion,
+  dispersionSteps,
+  finish,
   fitDispersion,
-  heightSeriesAt,
+  heightSeriesSteps,
   meanFrequencySpectrum,
   peakPeriod,
   significantWaveHeight,
   spectralPeak,
   type DispersionPoint,
   type HeightSampler,
+  type Steps,
 } from './physicsEstimators';
 import { windAt19_5 } from '../waves/spectra/piersonMoskowitz';
 import { seaStateFromParams, type SeaState } from '../waves/spectra/seaState';
@@ -195,6 +197,11 @@ function spectrumCitation(sea: SeaState): Citation[] {
 
 /** Measures the sea from `time` on (a few simulated minutes; the clock is not touched). */
 export function measurePhysics(measured: MeasuredSea, time: number): PhysicsReport {
+  return finish(physicsSteps(measured, time));
+}
+
+/** measurePhysics as steps, one simulated time each (the panel spreads them over tasks). */
+export function* physicsSteps(measured: MeasuredSea, time: number): Steps<PhysicsReport> {
   const sea = 'swellWavenumber' in measured.sea ? null : measured.sea;
   const depth = sea?.depth ?? Number.POSITIVE_INFINITY;
   const theorySpectrum = sea ? frequencySpectrum(sea) : null;
@@ -205,11 +212,11 @@ export function measurePhysics(measured: MeasuredSea, time: number): PhysicsRepo
   const lambda = (2 * Math.PI) / peakK;
 
   const theory = (k: number) => angularFrequency(k, depth);
-  const points = estimateDispersion(measured.height, { size: 4 * lambda, resolution: 32, startTime: time, timeStep: tp / 16, snapshots: 16, modes: 24 });
+  const points = yield* dispersionSteps(measured.height, { size: 4 * lambda, resolution: 32, startTime: time, timeStep: tp / 16, snapshots: 16, modes: 24 });
   const fit = fitDispersion(points, theory);
 
   const dt = tp / 8;
-  const perPoint = heightSeriesAt(measured.height, probePoints(lambda), time, dt, SERIES_LENGTH);
+  const perPoint = yield* heightSeriesSteps(measured.height, probePoints(lambda), time, dt, SERIES_LENGTH);
   const series = new Float64Array(perPoint.length * SERIES_LENGTH);
   perPoint.forEach((s, p) => series.set(s, p * SERIES_LENGTH));
   const welch = meanFrequencySpectrum(perPoint, dt, WELCH_SEGMENT);
