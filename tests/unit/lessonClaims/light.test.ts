@@ -177,7 +177,7 @@ describe('fresnel', () => {
   });
 
   it('the table has 256 entries, uploaded as a 256 × 1 float texture read with texelFetch and a hand-written lerp', () => {
-    expect(claim(c.text.en, /tabulates F once, (\d+) entries/, Number(source('src/render/ocean/ocean.ts').match(/fresnelData = fresnelTable\((\d+)\)/)![1]))).toBe(true);
+    expect(claim(c.text.en, /tabulates F once, (\d+) entries/, Number(source('src/render/ocean/oceanEngine.ts').match(/fresnelData = fresnelTable\((\d+)\)/)![1]))).toBe(true);
     expect(source('src/render/optics/dataTextures.ts')).toMatch(/floatTexture\(table, table.length, 1, RedFormat/);
     expect(source('src/render/optics/dataTextures.ts')).toMatch(/new DataTexture\(data, width, height, format, FloatType\)/);
     const lookup = source('shaders/fresnelLookup.glsl');
