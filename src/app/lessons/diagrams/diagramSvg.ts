@@ -40,8 +40,9 @@ function frame(diagram: Diagram): { height: number; map: (p: Point) => [number, 
   const [x0, x1] = diagram.x;
   const [y0, y1] = diagram.y;
   if (!diagram.equalScale) {
-    const plot = { x: GRAPH_PAD.left, y: GRAPH_PAD.top, width: WIDTH - GRAPH_PAD.left - GRAPH_PAD.right, height: GRAPH_HEIGHT - GRAPH_PAD.top - GRAPH_PAD.bottom };
-    return { height: GRAPH_HEIGHT, plot, map: ([x, y]) => [plot.x + ((x - x0) / (x1 - x0)) * plot.width, plot.y + (1 - (y - y0) / (y1 - y0)) * plot.height] };
+    const graphHeight = diagram.graphHeight ?? GRAPH_HEIGHT;
+    const plot = { x: GRAPH_PAD.left, y: GRAPH_PAD.top, width: WIDTH - GRAPH_PAD.left - GRAPH_PAD.right, height: graphHeight - GRAPH_PAD.top - GRAPH_PAD.bottom };
+    return { height: graphHeight, plot, map: ([x, y]) => [plot.x + ((x - x0) / (x1 - x0)) * plot.width, plot.y + (1 - (y - y0) / (y1 - y0)) * plot.height] };
   }
   const inner = WIDTH - 2 * PICTURE_PAD;
   const scale = Math.min(inner / (x1 - x0), PICTURE_HEIGHT[1] / (y1 - y0));

@@ -96,14 +96,17 @@ export const DIAGRAM_WORDS: Readonly<Record<DiagramKind, DiagramWords>> = {
   butterflies: {
     name: { en: 'The FFT’s butterflies', es: 'Las mariposas de la FFT' },
     key: {
-      en: 'An 8-point Stockham inverse FFT, as each fragment reads it: output o takes in[j] (grey) plus (blue) or minus (yellow) a twiddle times in[j+n/2]. No bit reversal.',
-      es: 'Una FFT inversa de Stockham de 8 puntos, como la lee cada fragmento: la salida o toma in[j] (gris) más (azul) o menos (amarillo) un factor de giro por in[j+n/2]. Sin inversión de bits.',
+      en: 'An 8-point Stockham inverse FFT, as each fragment reads it: output o takes in[j] (grey) plus (blue) or minus (yellow) a twiddle times in[j+n/2]. No bit reversal. Below, the live sea: the row z = 0 of tile 1, its spectrum and |value| after each stage the sea runs (yellow), ending in the heights it draws (blue).',
+      es: 'Una FFT inversa de Stockham de 8 puntos, como la lee cada fragmento: la salida o toma in[j] (gris) más (azul) o menos (amarillo) un factor de giro por in[j+n/2]. Sin inversión de bits. Debajo, el mar en vivo: la fila z = 0 de la tesela 1, su espectro y |valor| tras cada etapa que corre el mar (amarillo), hasta las alturas que dibuja (azul).',
     },
     marks: {
       stage: { en: 'Ns={v}', es: 'Ns={v}', digits: 0 },
       size: { en: 'sea: {v}×{v}', es: 'mar: {v}×{v}', digits: 0 },
       passes: { en: '{v} passes/axis', es: '{v} pasadas/eje', digits: 0 },
       tile: { en: 'tile {i}: {v} m', es: 'tesela {i}: {v} m', digits: 0, first: 1 },
+      rowSpectrum: { en: 'live row z = 0: Σ over kz of h̃, {v} points', es: 'fila en vivo z = 0: Σ sobre kz de h̃, {v} puntos', digits: 0 },
+      liveStage: { en: 'after stage {i} (radix {v})', es: 'tras la etapa {i} (radix {v})', digits: 0, first: 1 },
+      heights: { en: 'heights, up to {v} m', es: 'alturas, hasta {v} m', digits: 2 },
     },
   },
   lodBands: {

@@ -28,7 +28,7 @@ export function lessonDiagram(lessonId: string, language: Language = 'en'): Less
       if (params === drawnParams && (!moving || Math.abs(time - drawnTime) < REDRAW_EVERY)) return;
       drawnParams = params;
       drawnTime = time;
-      view.render(draw(params, time - opened));
+      view.render(draw(params, time - opened, time));
     },
   };
 }

@@ -44,6 +44,8 @@ export interface Diagram {
   equalScale: boolean;
   lines: DiagramLine[];
   marks: DiagramMark[];
+  /** A graph's height in the drawing's units where the default would crowd it (the app's own default otherwise). */
+  graphHeight?: number;
   /** The mark whose value the diagram's accessible name states. */
   headline: string;
 }

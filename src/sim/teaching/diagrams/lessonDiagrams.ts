@@ -10,8 +10,8 @@ import { orbitDiagram } from './orbitDiagram';
 import { snellDiagram } from './snellDiagram';
 import { spectrumDiagram } from './spectrumDiagram';
 
-/** A lesson's diagram from the parameters on screen and the seconds since the lesson opened. */
-export type DiagramOf = (params: OceanParams, age: number) => Diagram;
+/** A lesson's diagram from the parameters on screen, the seconds since the lesson opened and the sea's clock (s). */
+export type DiagramOf = (params: OceanParams, age: number, clock: number) => Diagram;
 
 /** The lessons whose card shows a flat diagram beside the sea, and which. */
 export const LESSON_DIAGRAMS: Readonly<Record<string, DiagramOf>> = {
@@ -22,7 +22,7 @@ export const LESSON_DIAGRAMS: Readonly<Record<string, DiagramOf>> = {
   'snell-window': () => snellDiagram(),
   'fft-calm': (p) => spectrumDiagram(p),
   'fft-short-fetch': (p) => spectrumDiagram(p),
-  'fft-normals': (p) => butterflyDiagram(p),
+  'fft-normals': (p, _, clock) => butterflyDiagram(p, clock),
   'lod-bands': (p) => lodDiagram(p),
   'lod-morph': (p) => lodDiagram(p),
   'kelvin-wake': (p) => kelvinDiagram(p),
@@ -32,4 +32,4 @@ export const LESSON_DIAGRAMS: Readonly<Record<string, DiagramOf>> = {
 };
 
 /** The diagrams that change with time as well as with the parameters: redrawn as the clock runs. */
-export const MOVING_DIAGRAMS: ReadonlySet<string> = new Set(['iwave-stone']);
+export const MOVING_DIAGRAMS: ReadonlySet<string> = new Set(['iwave-stone', 'fft-normals']);
