@@ -11,7 +11,7 @@ import { snellDiagram } from './snellDiagram';
 import { spectrumDiagram } from './spectrumDiagram';
 
 /** A lesson's diagram from the parameters on screen, the seconds since the lesson opened and the sea's clock (s). */
-export type DiagramOf = (params: OceanParams, age: number, clock: number) => Diagram;
+export type DiagramOf = (params: OceanParams, age: number, clock?: number) => Diagram;
 
 /** The lessons whose card shows a flat diagram beside the sea, and which. */
 export const LESSON_DIAGRAMS: Readonly<Record<string, DiagramOf>> = {
