@@ -61,7 +61,7 @@ export function readingPathMarkdown(): string {
     "[README's](../README.md#where-each-concept-lives).",
     '',
     'This file is written by `npx tsx scripts/build/readingPath.ts` from the quote sources;',
-    '`tests/unit/docs.test.ts` fails when it is out of date.',
+    '`tests/unit/repo/docs.test.ts` fails when it is out of date.',
   ];
   let step = 0;
   for (const [index, part] of PARTS.entries()) {

@@ -1,5 +1,5 @@
 // How far the foam left behind is drawn out along the wind, seen from above (windDirection=90,
-// so the wind runs along the picture's x): the streak anisotropy of tests/browser/light/windrows.test.ts
+// so the wind runs along the picture's x): the streak anisotropy of tests/browser/light/windrowsPicture.test.ts
 // at each instant and their mean. Prints figures, asserts nothing.
 // Usage: npx vite build && npx tsx scripts/probes/foamStreaks.ts [altitude] [wind] ["&more=query"]
 import { openOcean, startHarness } from '../../tests/browser/harness';

@@ -7,7 +7,7 @@ import { findBrowser } from './harness';
 import { gerstnerSea } from '../../src/sim/waves/gerstner/gerstnerSpectrum';
 import { GerstnerWaveModel, gerstnerTimePhases } from '../../src/sim/waves/gerstner/gerstnerWaves';
 import { seededRandom } from '../../src/sim/noise/integerHash';
-import { cosineSquared, piersonMoskowitz } from '../unit/testSeas';
+import { cosineSquared, piersonMoskowitz } from '../support/testSeas';
 
 /**
  * shaders/waves/gerstner.glsl against its CPU twin, on SwiftShader's WebGL2, before the chunk is

@@ -127,7 +127,7 @@ export const PRESETS = {
    * enough for the trochoid's shape to show; with 64, each wave's kA is a few hundredths and
    * Q changes little the eye can see. The camera stands 1.2 m above the water, away from the
    * boat, looking across those short crests. Compare gerstner-gentle, the same sea and camera
-   * at Q = 0.2 (tests/unit/gerstnerSteepnessPreset.test.ts measures the crests' curvature
+   * at Q = 0.2 (tests/unit/sim/waves/gerstner/gerstnerSteepnessPreset.test.ts measures the crests' curvature
    * against the troughs': 1.5 times at Q = 0.2, 6.4 at Q = 1).
    */
   'gerstner-steepness': {

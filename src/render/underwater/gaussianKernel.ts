@@ -77,7 +77,7 @@ export function linearSampledKernel(sigma: number, maxRadius: number, maxTaps: n
  * The largest share of a kernel's mass on one side past 1 texel that the one-pass blur below
  * may leave out. Left out, the ring past 1 texel (about four such shares) goes back to the
  * 3×3 centre, so a pixel moves by at most 4/512 of the contrast around it: 2 levels next to a
- * black-to-white edge, nothing in the water's smooth gradients (tests/unit/onePassBlur.test.ts).
+ * black-to-white edge, nothing in the water's smooth gradients (tests/unit/render/underwater/onePassBlur.test.ts).
  */
 export const ONE_PASS_TAIL = 1 / 512;
 

@@ -39,7 +39,7 @@ export function smithLambda(cosTheta: number, directionalVariance: number): numb
  * Walter, Marschner, Li & Torrance 2007 ("Microfacet Models for Refraction through Rough
  * Surfaces", eq. 27): Smith's Beckmann shadowing as a rational function of the same ν,
  * Λ ≈ (1 − 1.259 ν + 0.396 ν²) / (3.535 ν + 2.181 ν²) below ν = 1.6 and 0 above: the shadowing
- * factor 1 / (1 + Λ) is within 0.004 of smithLambda's (tests/unit/beckmannGlint.test.ts). The
+ * factor 1 / (1 + Λ) is within 0.004 of smithLambda's (tests/unit/sim/optics/beckmannGlint.test.ts). The
  * glint uses it: no exponential and no erfc per pixel.
  */
 export function smithLambdaRational(cosTheta: number, directionalVariance: number): number {

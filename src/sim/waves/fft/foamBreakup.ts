@@ -91,5 +91,5 @@ export function foamGroupShare(breakup: number): number {
   return smoothstep(0.2, -0.6, breakup);
 }
 
-/** foamGroupShare's mean over the field (tests/unit/windrows.test.ts measures it): the share everywhere without groups. */
+/** foamGroupShare's mean over the field (tests/unit/sim/waves/fft/windrows.test.ts measures it): the share everywhere without groups. */
 export const FOAM_GROUP_SHARE_MEAN = 0.31;

@@ -33,7 +33,7 @@ export const BEAUFORT_9_FROM = 20.8;
 /** Where the noise gathers the foam: none at or below FROM, all of it from TO. */
 export const WINDROW_GATHER_FROM = 0.15;
 export const WINDROW_GATHER_TO = 0.5;
-/** The gathering's mean over the noise (tests/unit/windrows.test.ts measures it), so the windrows' share has the groups' mean. */
+/** The gathering's mean over the noise (tests/unit/sim/waves/fft/windrows.test.ts measures it), so the windrows' share has the groups' mean. */
 export const WINDROW_GATHER_MEAN = 0.269;
 
 /** How much of the gathering the wind makes: 0 up to Beaufort 7, 1 from Beaufort 9. */

@@ -156,7 +156,7 @@ export function gerstnerNormalAt(
 }
 
 /**
- * Evaluations invertGerstner uses by default. Measured (tests/unit/gerstnerWaves.test.ts):
+ * Evaluations invertGerstner uses by default. Measured (tests/unit/sim/waves/gerstner/gerstnerWaves.test.ts):
  * 3 leave under 1e-5 m on every PM sea with Q = 1, 4 leave under 2e-5 m at the hard limit
  * Σ QkA = 1 with 8 or more waves, and 4 waves at that limit need 5 (1e-4 m worst).
  */
@@ -169,7 +169,7 @@ export const GERSTNER_INVERSION_STEPS = 5;
  *
  * Why not plain fixed-point (undoHorizontalDisplacement): its error shrinks each step by
  * the local |∂Dₕ/∂p|, up to Σ Qᵢ kᵢ Aᵢ, which the steepness limit lets reach 1. Measured
- * on PM seas with Q = 1 (tests/unit/gerstnerWaves.test.ts), four fixed-point steps leave
+ * on PM seas with Q = 1 (tests/unit/sim/waves/gerstner/gerstnerWaves.test.ts), four fixed-point steps leave
  * residuals of centimetres on 2-m waves; Newton converges quadratically and leaves
  * micrometres in the same four evaluations. Where J is nearly singular (an exact cusp,
  * det J → 0) a Newton step is unreliable, so that step falls back to a fixed-point step.

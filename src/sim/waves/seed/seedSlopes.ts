@@ -39,7 +39,7 @@ export function heightmapSlopeVariance(map: Heightmap, tileSize = RIPPLE_TILE_SI
 /**
  * The whole sea's at a state: the swell's, plus the ripples', strength² ((1 − w)² V₀ + w² V₁)
  * for the blend w of two maps whose slopes are uncorrelated (independent noise, drifting
- * apart; the cross term is left out, within 10 % of the ripples' share, tests/unit/seedSlopes.test.ts).
+ * apart; the cross term is left out, within 10 % of the ripples' share, tests/unit/sim/waves/seed/seedSlopes.test.ts).
  */
 export function seedSlopeVariance(state: SurfaceState, heightmapVariances: readonly [number, number]): number {
   const w = state.rippleBlend;

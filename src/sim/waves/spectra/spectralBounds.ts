@@ -22,7 +22,7 @@ import type { DisplacementBounds } from '../waveModel';
  *
  * In a gale (U = 20 m/s, 128², seed 1; σ = 2.15 m) this gives 6.6–7σ per cascade, a vertical
  * bound of 18.5 m against the strict 96.4 m; over 24 seeded instants the sea reaches 65 % of it
- * (tests/unit/spectralBounds.test.ts measures both).
+ * (tests/unit/sim/waves/spectra/spectralBounds.test.ts measures both).
  */
 export const BOUND_FAILURE_PROBABILITY = 1e-3;
 /** Time samples per Nyquist interval π/ω_max, so that the maximum between samples is covered. */
