@@ -108,7 +108,7 @@ describe('lessons', () => {
     await page.waitForSelector('.oceano-lesson-card:not([hidden])');
     const list = await page.evaluate(() => window.oceano.lessons());
     expect(list.length).toBe(LESSONS.length);
-    expect(list[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua' });
+    expect(list[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua', question: true, exercise: false });
     expect(await page.evaluate(() => window.oceano.lesson())).toBe('fresnel');
     expect(await page.evaluate(() => new URL(window.oceano.shareUrl()).searchParams.get('lesson'))).toBe('fresnel');
     const before = await page.evaluate(() => ({ params: window.oceano.getParams(), camera: window.oceano.getCamera() }));
