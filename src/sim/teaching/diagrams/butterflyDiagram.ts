@@ -47,7 +47,8 @@ export function butterflyDiagram(params: SeaParams, time = 0): Diagram {
     const largest = Math.max(1e-30, ...Array.from({ length: live.n }, (_, p) => Math.abs(value(p))));
     // Magnitudes stand on the strip's floor; the signed heights about its middle.
     const base = heights ? top - STRIP / 2 : top - STRIP + 0.15;
-    const reach = heights ? 0.4 * STRIP : 0.75 * STRIP;
+    // Below the strip's label, which stands at its top.
+    const reach = heights ? 0.3 * STRIP : 0.55 * STRIP;
     lines.push({ role: heights ? 'main' : 'second', points: Array.from({ length: live.n }, (_, p) => [(right * p) / (live.n - 1), base + (reach * value(p)) / largest] as const) });
     if (s === 0) stripMarks.push({ id: 'rowSpectrum', x: 0, y: top, value: live.n, unit: '', bare: true });
     else if (heights) stripMarks.push({ id: 'heights', x: 0, y: top, value: largest, unit: 'm', bare: true });
