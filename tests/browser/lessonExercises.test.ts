@@ -2,6 +2,7 @@ import type { Page } from 'puppeteer';
 import { describe, expect, it } from 'vitest';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { answer, openLesson } from './lessonExerciseStudent';
 import { forwardOf } from '../../src/sim/boat/boatPose';
 
 /**
@@ -11,19 +12,6 @@ import { forwardOf } from '../../src/sim/boat/boatPose';
  * "Within tolerance". A wrong value (the usual slip for each) is told "Not yet".
  */
 const harness = useHarness();
-
-/** Types `value` into the open card's exercise, presses Check and answers the verdict line. */
-async function answer(page: Page, value: string): Promise<{ verdict: string; text: string }> {
-  await page.$eval('.oceano-lesson-exercise-value', (el) => ((el as HTMLInputElement).value = ''));
-  await page.type('.oceano-lesson-exercise-value', value);
-  await page.click('.oceano-lesson-exercise-check');
-  return page.$eval('.oceano-lesson-exercise-result', (el) => ({ verdict: (el as HTMLElement).dataset.verdict ?? '', text: el.textContent ?? '' }));
-}
-
-async function openLesson(page: Page, id: string): Promise<void> {
-  expect(await page.evaluate((lesson) => window.oceano.setLesson(lesson), id)).toBe(true);
-  await page.waitForFunction((lesson) => document.querySelector<HTMLElement>('.oceano-lesson-card')?.dataset.lesson === lesson && document.querySelector('.oceano-lesson-exercise') !== null, {}, id);
-}
 
 /** Ticks the control panel's "Physics panel" box (unless ticked) and reads the row `row` of its "measured" column. */
 async function physicsReading(page: Page, row: RegExp): Promise<string> {

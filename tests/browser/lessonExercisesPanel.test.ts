@@ -2,6 +2,7 @@ import type { Page } from 'puppeteer';
 import { describe, expect, it } from 'vitest';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { answer, openLesson } from './lessonExerciseStudent';
 
 /**
  * The physics-panel exercises on cards that had none: a scripted student opens each lesson,
@@ -10,18 +11,6 @@ import { useHarness } from './useHarness';
  * tolerance"; twice it (crest to trough) and half it (the amplitude) are "Not yet".
  */
 const harness = useHarness();
-
-async function answer(page: Page, value: string): Promise<{ verdict: string; text: string }> {
-  await page.$eval('.oceano-lesson-exercise-value', (el) => ((el as HTMLInputElement).value = ''));
-  await page.type('.oceano-lesson-exercise-value', value);
-  await page.click('.oceano-lesson-exercise-check');
-  return page.$eval('.oceano-lesson-exercise-result', (el) => ({ verdict: (el as HTMLElement).dataset.verdict ?? '', text: el.textContent ?? '' }));
-}
-
-async function openLesson(page: Page, id: string): Promise<void> {
-  expect(await page.evaluate((lesson) => window.oceano.setLesson(lesson), id)).toBe(true);
-  await page.waitForFunction((lesson) => document.querySelector<HTMLElement>('.oceano-lesson-card')?.dataset.lesson === lesson && document.querySelector('.oceano-lesson-exercise') !== null, {}, id);
-}
 
 /** Ticks the "Physics panel" box if it is not ticked, waits for the table and reads Hs's measured and theory cells, and the heading. */
 async function panelHs(page: Page): Promise<{ measured: string; theory: string; heading: string; wasOpen: boolean }> {

@@ -2,6 +2,7 @@ import type { Page } from 'puppeteer';
 import { describe, expect, it } from 'vitest';
 import { openOcean } from './harness';
 import { useHarness } from './useHarness';
+import { answer, openLesson } from './lessonExerciseStudent';
 import { crestRadii, stoneGuideReach } from '../../src/sim/iwave/cauchyPoissonRings';
 
 /**
@@ -11,18 +12,6 @@ import { crestRadii, stoneGuideReach } from '../../src/sim/iwave/cauchyPoissonRi
  * tolerance"; the usual slip is told "Not yet".
  */
 const harness = useHarness();
-
-async function answer(page: Page, value: string): Promise<{ verdict: string; text: string }> {
-  await page.$eval('.oceano-lesson-exercise-value', (el) => ((el as HTMLInputElement).value = ''));
-  await page.type('.oceano-lesson-exercise-value', value);
-  await page.click('.oceano-lesson-exercise-check');
-  return page.$eval('.oceano-lesson-exercise-result', (el) => ({ verdict: (el as HTMLElement).dataset.verdict ?? '', text: el.textContent ?? '' }));
-}
-
-async function openLesson(page: Page, id: string): Promise<void> {
-  expect(await page.evaluate((lesson) => window.oceano.setLesson(lesson), id)).toBe(true);
-  await page.waitForFunction((lesson) => document.querySelector<HTMLElement>('.oceano-lesson-card')?.dataset.lesson === lesson && document.querySelector('.oceano-lesson-exercise') !== null, {}, id);
-}
 
 /** Runs the paused clock from `start` to `to` in steps of `step` s, a frame drawn at each (the field and the boat advance frame by frame). */
 async function runTo(page: Page, start: number, to: number, step: number): Promise<void> {
