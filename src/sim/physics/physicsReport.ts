@@ -110,8 +110,8 @@ const PROBE_POINT: [number, number] = [13.7, -4.2];
 /**
  * The heights are read at PROBE_GRID² points, SERIES_LENGTH samples each (8192 in all), not
  * 8192 samples at one point: the FFT twin computes all its cascades' inverse FFTs for every new
- * time (28 ms each on a loaded 2-core machine, measured), so one point's 8192 times held the
- * page for 333 s there (fft-short-fetch); 16 points share each time's fields and take 16 times less. Each
+ * time, so one point's 8192 times cost 8192 sets of FFTs; 16 points share each time's fields
+ * and cost 16 times less (the timings are in docs/lessons.md). Each
  * point's series is one Welch segment, and the 16 periodograms are averaged, as the 31
  * overlapping segments of the single long series were. The points stand 1.37 and 1.61 peak
  * wavelengths apart, so they see the waves at unrelated phases.
