@@ -42,5 +42,8 @@ export function batchSampleCosts(): BatchSampleCost[] {
 }
 
 if (import.meta.url === `file://${process.argv[1]}`) {
-  for (const c of batchSampleCosts()) console.log(`sampleSurfaces, ${BATCH_POINTS} points, ${c.sea}: median ${c.medianMs.toFixed(3)} ms, fastest ${c.fastestMs.toFixed(3)} ms (budget 0.5 ms)`);
+  for (const c of batchSampleCosts())
+    console.log(
+      `sampleSurfaces, ${BATCH_POINTS} points, ${c.sea}: median ${c.medianMs.toFixed(3)} ms, fastest ${c.fastestMs.toFixed(3)} ms (budget 0.5 ms)`,
+    );
 }

@@ -37,7 +37,10 @@ const PASS_FRAMES = 5;
 // BENCH_ONLY=name,name runs only the scenarios whose names contain one of those words (e.g.
 // BENCH_ONLY="default view,FFT view" for the FFT ratio) and writes scripts/bench/results-subset.md, so
 // the full run's scripts/bench/results.md is not replaced by a partial one.
-const ONLY = (process.env.BENCH_ONLY ?? '').split(',').map((word) => word.trim()).filter(Boolean);
+const ONLY = (process.env.BENCH_ONLY ?? '')
+  .split(',')
+  .map((word) => word.trim())
+  .filter(Boolean);
 const RESULTS_FILE = ONLY.length ? 'scripts/bench/results-subset.md' : 'scripts/bench/results.md';
 // The targets of issue 14, for the 2-core SwiftShader machine.
 const TARGETS = { batchMs: 0.5, ratio: 20, cpuMs: 0.1, twinMs: 0.1, ttffMs: 800, pageKB: 200, componentExtraKB: 20 };
@@ -126,14 +129,17 @@ async function launchBrowser(): Promise<{ browser: Browser; backend: Backend; gp
   const executablePath = await locateBrowser();
   if (!executablePath) throw new Error(NO_BROWSER_MESSAGE);
   // One page.evaluate times all of a row's frames: on a busy machine that outlasts puppeteer's 180 s protocol timeout.
-  const launch = (backend: Backend) => puppeteer.launch({ executablePath, args: backendArgs(backend), headless: true, protocolTimeout: 3_600_000 });
+  const launch = (backend: Backend) =>
+    puppeteer.launch({ executablePath, args: backendArgs(backend), headless: true, protocolTimeout: 3_600_000 });
   if (requested !== 'swiftshader') {
     const browser = await launch('gpu');
     const { renderer, ms } = await startGpuProcess(browser);
     if (renderer !== null && !isSoftwareRenderer(renderer)) return { browser, backend: 'gpu', gpuStartupMs: ms };
     await browser.close();
     if (requested === 'gpu') {
-      throw new Error(`BENCH_GPU=1 but Chromium's GPU path gave ${renderer === null ? 'no WebGL2' : `the software renderer "${renderer}"`}.`);
+      throw new Error(
+        `BENCH_GPU=1 but Chromium's GPU path gave ${renderer === null ? 'no WebGL2' : `the software renderer "${renderer}"`}.`,
+      );
     }
   }
   const browser = await launch('swiftshader');
@@ -163,7 +169,8 @@ async function main(): Promise<void> {
     let crossOriginIsolated = false;
     let floorTimes: number[] = [];
     const scenarios = ONLY.length ? SCENARIOS.filter((s) => ONLY.some((word) => s.name.includes(word))) : SCENARIOS;
-    if (scenarios.length === 0) throw new Error(`BENCH_ONLY="${process.env.BENCH_ONLY}" matches no scenario in scripts/bench/scenarios.ts.`);
+    if (scenarios.length === 0)
+      throw new Error(`BENCH_ONLY="${process.env.BENCH_ONLY}" matches no scenario in scripts/bench/scenarios.ts.`);
     for (const scenario of scenarios) {
       if (scenario.page === 'threejs-ocean') {
         results.push(await timeThreejsExample(browser, exampleBaseUrl, scenario));
@@ -172,7 +179,13 @@ async function main(): Promise<void> {
       const { page, consoleErrors } = await openOcean(harness, scenario.query, WIDTH, HEIGHT, '', PAGE_TIMEOUT_MS);
       await scenario.setup?.(page);
       const environment = await page.evaluate(pageEnvironment);
-      const frames = await page.evaluate(timeOceanFrames, scenario.frames ?? FRAMES, scenario.frames ? 1 : WARMUP, scenario.stepSeconds ?? 0, Number(new URLSearchParams(scenario.query).get('t') ?? 0));
+      const frames = await page.evaluate(
+        timeOceanFrames,
+        scenario.frames ?? FRAMES,
+        scenario.frames ? 1 : WARMUP,
+        scenario.stepSeconds ?? 0,
+        Number(new URLSearchParams(scenario.query).get('t') ?? 0),
+      );
       const passesMs = scenario.passes ? medianOfEach(await page.evaluate(passTimeSamples, PASS_FRAMES)) : undefined;
       const twinWindows: (number | null)[] = [];
       for (let w = 0; scenario.twin && w < TWIN_WINDOWS; w++) twinWindows.push(await page.evaluate(loopTwinMs, TWIN_FRAMES));
@@ -200,18 +213,29 @@ async function main(): Promise<void> {
         cpuMs: round(frames.cpuMs, 4),
         ttffMs: frames.ttffMs === null ? null : round(frames.ttffMs, 1),
         ...(passesMs ? { passesMs } : {}),
-        ...(twinMs !== undefined ? { twinMs: twinMs === null ? null : round(twinMs, 4), twinMsWindows: twinWindows.map((ms) => (ms === null ? null : round(ms, 4))) } : {}),
+        ...(twinMs !== undefined
+          ? {
+              twinMs: twinMs === null ? null : round(twinMs, 4),
+              twinMsWindows: twinWindows.map((ms) => (ms === null ? null : round(ms, 4))),
+            }
+          : {}),
       });
     }
     const floorMs = timing(floorTimes);
     for (const result of results) result.ratio = round(result.frameMs.median / floorMs.median, 2);
     const comparisons = COMPARISONS.map(([label, numerator, denominator, target]) => {
-      const median = (name: string) => (name === 'floor' ? floorMs.median : results.find((r) => r.name === name)?.frameMs.median ?? Number.NaN);
+      const median = (name: string) =>
+        name === 'floor' ? floorMs.median : (results.find((r) => r.name === name)?.frameMs.median ?? Number.NaN);
       return { label, ratio: round(median(numerator) / median(denominator), 2), target };
     });
     // A subset run (BENCH_ONLY) prints only the ratios whose two rows it ran.
     const comparisonsRun = comparisons.filter((c) => ONLY.length === 0 || Number.isFinite(c.ratio));
-    const sideBySide = await sideBySideRatios(browser, harness, exampleBaseUrl, scenarios, { width: WIDTH, height: HEIGHT, ...SIDE_BY_SIDE, pageTimeoutMs: PAGE_TIMEOUT_MS });
+    const sideBySide = await sideBySideRatios(browser, harness, exampleBaseUrl, scenarios, {
+      width: WIDTH,
+      height: HEIGHT,
+      ...SIDE_BY_SIDE,
+      pageTimeoutMs: PAGE_TIMEOUT_MS,
+    });
     const [headline] = results;
     const report = {
       renderer,
@@ -307,11 +331,21 @@ function resultsMarkdown(report: Report, when: Date): string {
   const targets = [
     ...report.comparisons.map((c) => [c.label, formatFigure(c.ratio, 2), c.target === null ? '—' : `≤ ${c.target}`]),
     ['cpuMs', formatFigure(report.cpuMs, 3), `≤ ${TARGETS.cpuMs}`],
-    ...report.scenarios.filter((s) => s.twinMs !== undefined).map((s) => [`twinMs: the wave twin's main thread per frame (${s.name}; mean of ${TWIN_WINDOWS}×${TWIN_FRAMES} looped frames, windows ${(s.twinMsWindows ?? []).map((ms) => formatFigure(ms ?? Number.NaN, 3)).join(', ')})`, formatFigure(s.twinMs ?? Number.NaN, 3), `≤ ${TARGETS.twinMs}`]),
-    ...report.batchSamples.map((b) => [`Ocean.sampleSurfaces, ${BATCH_POINTS} points (${b.sea}; median of node's runs, fastest ${formatFigure(b.fastestMs, 3)} ms)`, formatFigure(b.medianMs, 3), `≤ ${TARGETS.batchMs}`]),
+    ...report.scenarios
+      .filter((s) => s.twinMs !== undefined)
+      .map((s) => [
+        `twinMs: the wave twin's main thread per frame (${s.name}; mean of ${TWIN_WINDOWS}×${TWIN_FRAMES} looped frames, windows ${(s.twinMsWindows ?? []).map((ms) => formatFigure(ms ?? Number.NaN, 3)).join(', ')})`,
+        formatFigure(s.twinMs ?? Number.NaN, 3),
+        `≤ ${TARGETS.twinMs}`,
+      ]),
+    ...report.batchSamples.map((b) => [
+      `Ocean.sampleSurfaces, ${BATCH_POINTS} points (${b.sea}; median of node's runs, fastest ${formatFigure(b.fastestMs, 3)} ms)`,
+      formatFigure(b.medianMs, 3),
+      `≤ ${TARGETS.batchMs}`,
+    ]),
     ['ttffMs', formatFigure(report.ttffMs, 0), `≤ ${TARGETS.ttffMs}`],
     ['page JavaScript before the first frame (KB gzipped)', formatFigure(report.jsKB.pageKB, 1), `≤ ${TARGETS.pageKB}`],
-    ['oceano.js beyond the page\'s code (KB gzipped)', formatFigure(report.jsKB.componentExtraKB, 1), `≤ ${TARGETS.componentExtraKB}`],
+    ["oceano.js beyond the page's code (KB gzipped)", formatFigure(report.jsKB.componentExtraKB, 1), `≤ ${TARGETS.componentExtraKB}`],
   ];
   return [
     '# Oceano benchmark results',
@@ -327,10 +361,21 @@ function resultsMarkdown(report: Report, when: Date): string {
     `- JavaScript, gzipped: the page loads ${formatFigure(report.jsKB.pageKB, 1)} KB before its first frame; oceano.js adds ${formatFigure(report.jsKB.componentExtraKB, 1)} KB to the code it shares with the page; all of dist/ (lazy chunks included) is ${formatFigure(report.jsKB.allKB, 1)} KB`,
     `- ttffMs is the app's first load in a browser whose GPU process already runs; starting that process (the fresh headless browser's first WebGL context, timed in a blank page) took ${formatFigure(report.gpuStartupMs, 0)} ms and is not in it`,
     '',
-    markdownTable(['scenario', 'query', 'frame median (ms)', 'frame p95 (ms)', 'ratio to floor', 'triangles', 'draw calls', 'cpuMs', 'ttffMs'], rows),
+    markdownTable(
+      ['scenario', 'query', 'frame median (ms)', 'frame p95 (ms)', 'ratio to floor', 'triangles', 'draw calls', 'cpuMs', 'ttffMs'],
+      rows,
+    ),
     ...report.scenarios
       .filter((s) => s.passesMs)
-      .flatMap((s) => ['', `Per-pass time, ${s.name} (median of ${PASS_FRAMES} frames, GPU waited for after each pass):`, '', markdownTable(['pass', 'ms'], Object.entries(s.passesMs ?? {}).map(([name, ms]) => [name, formatFigure(ms, 1)]))]),
+      .flatMap((s) => [
+        '',
+        `Per-pass time, ${s.name} (median of ${PASS_FRAMES} frames, GPU waited for after each pass):`,
+        '',
+        markdownTable(
+          ['pass', 'ms'],
+          Object.entries(s.passesMs ?? {}).map(([name, ms]) => [name, formatFigure(ms, 1)]),
+        ),
+      ]),
     '',
     `Headline (${report.scenarios[0].name}) and the ratios between rows against the targets of issues 14 and 12 (FFT view / default ≤ 1.3), set for the 2-core SwiftShader machine:`,
     '',
@@ -340,7 +385,13 @@ function resultsMarkdown(report: Report, when: Date): string {
     '',
     markdownTable(
       ['figure', 'median of the rounds', 'lowest round', 'highest round', 'target'],
-      report.sideBySide.map((c) => [c.label, formatFigure(c.ratio, 2), formatFigure(c.min, 2), formatFigure(c.max, 2), c.target === null ? '—' : `≤ ${c.target}`]),
+      report.sideBySide.map((c) => [
+        c.label,
+        formatFigure(c.ratio, 2),
+        formatFigure(c.min, 2),
+        formatFigure(c.max, 2),
+        c.target === null ? '—' : `≤ ${c.target}`,
+      ]),
     ),
     '',
   ].join('\n');

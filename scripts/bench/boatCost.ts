@@ -20,4 +20,6 @@ for (let run = 0; run < RUNS; run++) {
   }
   perRun.push(((performance.now() - start) / FRAMES) * 1000);
 }
-console.log(`boat update: median ${median(perRun).toFixed(2)} µs per frame over ${RUNS} runs of ${FRAMES} frames (min ${Math.min(...perRun).toFixed(2)}, max ${Math.max(...perRun).toFixed(2)})`);
+console.log(
+  `boat update: median ${median(perRun).toFixed(2)} µs per frame over ${RUNS} runs of ${FRAMES} frames (min ${Math.min(...perRun).toFixed(2)}, max ${Math.max(...perRun).toFixed(2)})`,
+);

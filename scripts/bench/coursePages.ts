@@ -19,13 +19,20 @@ import { serveFolder } from '../../tests/browser/staticServer';
 import { presetNames } from '../../src/app/url/presets';
 import { heapFigures, heapLessCode } from '../../tests/browser/heapFigures';
 
-const COUNTS = (process.argv.find((a) => a.startsWith('--counts='))?.slice('--counts='.length) ?? '6,20,30').split(',').filter(Boolean).map(Number);
+const COUNTS = (process.argv.find((a) => a.startsWith('--counts='))?.slice('--counts='.length) ?? '6,20,30')
+  .split(',')
+  .filter(Boolean)
+  .map(Number);
 const FRAMES = 9;
 const VIEWPORT = { width: 1280, height: 720 };
 
 /** A chapter: one figure per preset (cycled), 320×180, frozen in time, each in a section of text height. */
 function chapter(count: number): string {
-  const figures = Array.from({ length: count }, (_, i) => `<section><p>Figure ${i + 1}</p><oceano-view preset="${presetNames[i % presetNames.length]}" t="${5 + i}" seed="${1 + i}"></oceano-view></section>`);
+  const figures = Array.from(
+    { length: count },
+    (_, i) =>
+      `<section><p>Figure ${i + 1}</p><oceano-view preset="${presetNames[i % presetNames.length]}" t="${5 + i}" seed="${1 + i}"></oceano-view></section>`,
+  );
   return `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="stylesheet" href="chapter.css"><script type="module" src="oceano.js"></script></head><body>${figures.join('\n')}</body></html>`;
 }
 const CHAPTER_CSS = 'body { margin: 0; font: 16px sans-serif; } section { height: 420px; } oceano-view { width: 320px; }';
@@ -63,7 +70,10 @@ async function snapshot(page: Page, tooMany: number): Promise<Snapshot> {
   const session = await page.createCDPSession();
   const heap = await heapFigures(session);
   await session.detach();
-  const counts = (await page.evaluate('({ liveContexts: window.__contexts.live(), maxLiveContexts: window.__contexts.maxLive })')) as { liveContexts: number; maxLiveContexts: number };
+  const counts = (await page.evaluate('({ liveContexts: window.__contexts.live(), maxLiveContexts: window.__contexts.maxLive })')) as {
+    liveContexts: number;
+    maxLiveContexts: number;
+  };
   const mb = (bytes: number) => Math.round(bytes / 1e4) / 100;
   return { ...counts, lostByBrowser: tooMany, heapMB: mb(heap.used), heapLessCodeMB: mb(heapLessCode(heap)) };
 }
@@ -106,7 +116,9 @@ async function openPage(browser: Browser): Promise<{ page: Page; tooMany: () => 
 async function measure(browser: Browser, url: string, count: number) {
   const { page, tooMany } = await openPage(browser);
   const start = performance.now();
-  await page.evaluateOnNewDocument(`for (const type of ['load', 'ready']) document.addEventListener(type, (e) => { if (e.target.localName === 'oceano-view') window['__first_' + type] ??= performance.now(); }, true);`);
+  await page.evaluateOnNewDocument(
+    `for (const type of ['load', 'ready']) document.addEventListener(type, (e) => { if (e.target.localName === 'oceano-view') window['__first_' + type] ??= performance.now(); }, true);`,
+  );
   await page.goto(url, { waitUntil: 'load' });
   const firstScreenS = await secondsUntilReady(page, start, ON_SCREEN);
   const allStartedS = await secondsUntilReady(page, start, STARTED);
@@ -132,7 +144,12 @@ async function measure(browser: Browser, url: string, count: number) {
 async function main(): Promise<void> {
   const builds = process.argv.slice(2).filter((a) => !a.startsWith('--'));
   if (builds.length === 0) builds.push('dist');
-  const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: BROWSER_ARGS, headless: true, protocolTimeout: 1_200_000 });
+  const browser = await puppeteer.launch({
+    executablePath: await findBrowser(),
+    args: BROWSER_ARGS,
+    headless: true,
+    protocolTimeout: 1_200_000,
+  });
   try {
     for (const dist of builds) {
       const folder = mkdtempSync(join(tmpdir(), 'oceano-chapter-'));
@@ -141,11 +158,18 @@ async function main(): Promise<void> {
       for (const count of COUNTS) writeFileSync(join(folder, `chapter-${count}.html`), chapter(count));
       const { server, url } = await serveFolder(folder, '/course/');
       try {
-        for (const count of COUNTS) console.log(JSON.stringify({ build: dist, ...(await measure(browser, `${url}chapter-${count}.html`, count)) }));
+        for (const count of COUNTS)
+          console.log(JSON.stringify({ build: dist, ...(await measure(browser, `${url}chapter-${count}.html`, count)) }));
         // The course page itself (dist/course/, its figures about 640×360), where the build has one.
         if (existsSync(join(folder, 'course', 'index.html'))) {
           const figures = (readFileSync(join(folder, 'course', 'index.html'), 'utf8').match(/<oceano-view /g) ?? []).length;
-          console.log(JSON.stringify({ build: dist, page: 'course/index.html', ...(await measure(browser, `${url}course/index.html?lang=en`, figures)) }));
+          console.log(
+            JSON.stringify({
+              build: dist,
+              page: 'course/index.html',
+              ...(await measure(browser, `${url}course/index.html?lang=en`, figures)),
+            }),
+          );
         }
       } finally {
         server.close();

@@ -28,7 +28,10 @@ for (const windSpeed of [10, 20]) {
     const t = 10 + f / 60;
     const start = performance.now();
     const fields = replies[f - 1];
-    const message = structuredClone({ time: t - 1 / 60, fields }, { transfer: fields.flatMap((c) => [c.displacement.buffer, c.derivatives.buffer]) });
+    const message = structuredClone(
+      { time: t - 1 / 60, fields },
+      { transfer: fields.flatMap((c) => [c.displacement.buffer, c.derivatives.buffer]) },
+    );
     model.receive(model.sea, message.time, message.fields);
     receipts.push(performance.now() - start);
     model.prefetch(t);
@@ -39,8 +42,12 @@ for (const windSpeed of [10, 20]) {
   }
   costs.sort((a, b) => a - b);
   receipts.sort((a, b) => a - b);
-  console.log(`FFT twin, U=${windSpeed} m/s: main thread per frame median ${costs[costs.length >> 1].toFixed(4)} ms, 90th percentile ${costs[Math.floor(costs.length * 0.9)].toFixed(4)} ms (10 heights, 12 fixed-point steps each; of which receiving the fields: median ${receipts[receipts.length >> 1].toFixed(4)} ms)`);
+  console.log(
+    `FFT twin, U=${windSpeed} m/s: main thread per frame median ${costs[costs.length >> 1].toFixed(4)} ms, 90th percentile ${costs[Math.floor(costs.length * 0.9)].toFixed(4)} ms (10 heights, 12 fixed-point steps each; of which receiving the fields: median ${receipts[receipts.length >> 1].toFixed(4)} ms)`,
+  );
   const t0 = performance.now();
   worker.setTime(123.4);
-  console.log(`  Worker's FFTs for one time (3 cascades × 4 inverse FFTs, ${model.sea.fftSize}², float64): ${(performance.now() - t0).toFixed(1)} ms`);
+  console.log(
+    `  Worker's FFTs for one time (3 cascades × 4 inverse FFTs, ${model.sea.fftSize}², float64): ${(performance.now() - t0).toFixed(1)} ms`,
+  );
 }

@@ -64,7 +64,9 @@ const ms = medianMs(defaultView);
 const cpu = cpuMs(defaultView);
 let triangles = 0;
 for (let n = 0; n < selector.count; n++) triangles += bandTriangles(selector.bands[n]);
-console.log(`default view: ${selector.count}/${selector.total} chunks, per band ${selector.lodCounts.join(' ')}, ${triangles} triangles (brute force ${selector.total * 2 * CHUNK_QUADS ** 2}), selection median ${ms.toFixed(4)} ms wall, ${cpu.toFixed(4)} ms CPU`);
+console.log(
+  `default view: ${selector.count}/${selector.total} chunks, per band ${selector.lodCounts.join(' ')}, ${triangles} triangles (brute force ${selector.total * 2 * CHUNK_QUADS ** 2}), selection median ${ms.toFixed(4)} ms wall, ${cpu.toFixed(4)} ms CPU`,
+);
 
 const random = seededRandom(7);
 const medians: number[] = [];

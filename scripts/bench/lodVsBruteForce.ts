@@ -32,12 +32,17 @@ const harness = await startHarness();
 try {
   const lod = await measure(harness, query, frames);
   const brute = await measure(harness, `${query}&lodBruteForce=1`, bruteFrames);
-  for (const [name, r] of [['LOD', lod], ['brute force', brute]] as const) {
+  for (const [name, r] of [
+    ['LOD', lod],
+    ['brute force', brute],
+  ] as const) {
     console.log(
       `${name.padEnd(12)} triangles ${String(r.stats.triangles).padStart(9)}  draw calls ${r.stats.drawCalls}  chunks ${r.stats.chunksVisible}/${r.stats.chunksTotal} [${r.stats.lodCounts.join(' ')}]  frame ${r.frameMs.toFixed(1)} ms  LOD update ${r.lodUpdateMs.toFixed(3)} ms`,
     );
   }
-  console.log(`LOD submits ${((100 * lod.stats.triangles) / brute.stats.triangles).toFixed(2)}% of the brute-force triangles; frame time ratio ${(lod.frameMs / brute.frameMs).toFixed(3)}`);
+  console.log(
+    `LOD submits ${((100 * lod.stats.triangles) / brute.stats.triangles).toFixed(2)}% of the brute-force triangles; frame time ratio ${(lod.frameMs / brute.frameMs).toFixed(3)}`,
+  );
 } finally {
   await harness.close();
 }

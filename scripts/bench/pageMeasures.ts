@@ -37,7 +37,14 @@ export function timeOceanFrames(frames: number, warmup: number, stepSeconds = 0,
   }
   const stats = oceano.stats();
   const canvas = oceano.three.renderer.domElement;
-  return { frameTimes, cpuMs: stats.cpuMs, drawCalls: stats.drawCalls, triangles: stats.triangles, ttffMs: stats.ttffMs, canvas: [canvas.width, canvas.height] };
+  return {
+    frameTimes,
+    cpuMs: stats.cpuMs,
+    drawCalls: stats.drawCalls,
+    triangles: stats.triangles,
+    ttffMs: stats.ttffMs,
+    canvas: [canvas.width, canvas.height],
+  };
 }
 
 /**
@@ -80,7 +87,10 @@ export function timeFloorFrames(width: number, height: number, frames: number, w
   const program = gl.createProgram() as WebGLProgram;
   // Four corners from gl_VertexID, drawn as a strip: no buffers, nothing but the quad.
   const sources: [number, string][] = [
-    [gl.VERTEX_SHADER, '#version 300 es\nvoid main() { vec2 p = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0; gl_Position = vec4(p, 0.0, 1.0); }'],
+    [
+      gl.VERTEX_SHADER,
+      '#version 300 es\nvoid main() { vec2 p = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0; gl_Position = vec4(p, 0.0, 1.0); }',
+    ],
     [gl.FRAGMENT_SHADER, '#version 300 es\nprecision mediump float; out vec4 color; void main() { color = vec4(0.04, 0.18, 0.27, 1.0); }'],
   ];
   for (const [type, source] of sources) {
@@ -113,7 +123,10 @@ export function timeFloorFrames(width: number, height: number, frames: number, w
 export function pageEnvironment(): { renderer: string; crossOriginIsolated: boolean } {
   const gl = window.oceano.three.renderer.getContext();
   const debugInfo = gl.getExtension('WEBGL_debug_renderer_info');
-  return { renderer: String(gl.getParameter(debugInfo ? debugInfo.UNMASKED_RENDERER_WEBGL : gl.RENDERER)), crossOriginIsolated: window.crossOriginIsolated };
+  return {
+    renderer: String(gl.getParameter(debugInfo ? debugInfo.UNMASKED_RENDERER_WEBGL : gl.RENDERER)),
+    crossOriginIsolated: window.crossOriginIsolated,
+  };
 }
 
 /**

@@ -70,9 +70,19 @@ export const SCENARIOS: readonly BenchScenario[] = [
   // and wind, both with the clock running (the FFT passes run in both).
   // Each strip's render is timed apart ('scene <model> strip'), to see where a split frame's time goes.
   { name: 'compare-models (seed | gerstner | fft)', query: 't=10&preset=compare-models', passes: true, stepSeconds: 1 / 60 },
-  { name: 'compare-models camera, fft alone', query: 't=10&preset=compare-models&compare=off&waves=fft', passes: true, stepSeconds: 1 / 60 },
+  {
+    name: 'compare-models camera, fft alone',
+    query: 't=10&preset=compare-models&compare=off&waves=fft',
+    passes: true,
+    stepSeconds: 1 / 60,
+  },
   // The other candidate for the dearest model: 32 trochoids, the long ones summed per vertex, the short ones per pixel.
-  { name: 'compare-models camera, gerstner alone', query: 't=10&preset=compare-models&compare=off&waves=gerstner', passes: true, stepSeconds: 1 / 60 },
+  {
+    name: 'compare-models camera, gerstner alone',
+    query: 't=10&preset=compare-models&compare=off&waves=gerstner',
+    passes: true,
+    stepSeconds: 1 / 60,
+  },
   // The default view with the interactive waves on, the clock at 60 Hz so each frame
   // steps the field once (its step pass, the read-back for sampleSurface, the field in the
   // ocean's shaders); a stone in it, so the picture has waves to draw.
@@ -93,7 +103,12 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   ['default / three.js example (Water + Sky + bloom)', 'default view', 'three.js ocean example (Water + Sky + bloom)', 0.6],
   ['default / floor', 'default view', 'floor', 20],
   ['underwater / default', 'underwater (Snell window, god rays, blur)', 'default view', 2],
-  ['underwater half-float / encoded', 'underwater, half-float scene target (library default)', 'underwater (Snell window, god rays, blur)', null],
+  [
+    'underwater half-float / encoded',
+    'underwater, half-float scene target (library default)',
+    'underwater (Snell window, god rays, blur)',
+    null,
+  ],
   // The spectral sea at most 1.3× the seed's frame, same camera, same run.
   ['FFT view / default', 'FFT view (waves=fft, clock running)', 'default view', 1.3],
   ['FFT view / foam as paint', 'FFT view (waves=fft, clock running)', 'FFT view, foam as paint (foamTexture=0)', null],

@@ -52,7 +52,10 @@ export async function sideBySideRatios(
         const { page } = await openOcean(harness, scenario.query, width, height, '', options.pageTimeoutMs);
         await scenario.setup?.(page);
         const startTime = Number(new URLSearchParams(scenario.query).get('t') ?? 0);
-        pages.set(name, { page, time: async () => (await page.evaluate(timeOceanFrames, framesPerBlock, 1, scenario.stepSeconds ?? 0, startTime)).frameTimes });
+        pages.set(name, {
+          page,
+          time: async () => (await page.evaluate(timeOceanFrames, framesPerBlock, 1, scenario.stepSeconds ?? 0, startTime)).frameTimes,
+        });
       }
     }
     // The floor draws in a context of its own, made in the first page and lost after each block;
@@ -62,7 +65,11 @@ export async function sideBySideRatios(
     const perRound: Record<string, number[]> = Object.fromEntries(comparisons.map(([label]) => [label, []]));
     for (let round = 0; round < options.rounds; round++) {
       const blockMedian = new Map<string, number>();
-      for (const name of names) blockMedian.set(name, median(name === 'floor' ? await timeFloor() : await (pages.get(name) as { time: () => Promise<number[]> }).time()));
+      for (const name of names)
+        blockMedian.set(
+          name,
+          median(name === 'floor' ? await timeFloor() : await (pages.get(name) as { time: () => Promise<number[]> }).time()),
+        );
       for (const [label, a, b] of comparisons) perRound[label].push((blockMedian.get(a) as number) / (blockMedian.get(b) as number));
     }
     return comparisons.map(([label, , , target]) => {

@@ -37,7 +37,14 @@ export async function serveThreejsOceanExample(headers: Record<string, string>):
  * Opens the example page (`query`: '' or e.g. 'bloom=0') at `width`×`height` and waits for its
  * `window.threejsOcean`; `errors` collects what the page logs as an error from then on.
  */
-export async function openThreejsOceanExample(browser: Browser, baseUrl: string, query: string, width: number, height: number, timeoutMs: number): Promise<{ page: Page; errors: string[] }> {
+export async function openThreejsOceanExample(
+  browser: Browser,
+  baseUrl: string,
+  query: string,
+  width: number,
+  height: number,
+  timeoutMs: number,
+): Promise<{ page: Page; errors: string[] }> {
   const page = await browser.newPage();
   page.setDefaultTimeout(timeoutMs);
   const errors: string[] = [];

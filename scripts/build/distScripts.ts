@@ -43,7 +43,8 @@ export function pageEntry(dist: string): string {
   return entry[1];
 }
 
-const gzipKB = (dist: string, files: Iterable<string>) => [...files].reduce((sum, file) => sum + gzipSync(readFileSync(join(dist, file))).length, 0) / 1024;
+const gzipKB = (dist: string, files: Iterable<string>) =>
+  [...files].reduce((sum, file) => sum + gzipSync(readFileSync(join(dist, file))).length, 0) / 1024;
 
 export function scriptSizes(dist: string): ScriptSizes {
   const all = distScripts(dist);

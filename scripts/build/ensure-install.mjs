@@ -8,12 +8,13 @@ import { execSync } from 'node:child_process';
 
 const marker = 'node_modules/.package-lock.json';
 const manifests = ['package.json', 'package-lock.json'].filter((f) => existsSync(f));
-const stale =
-  !existsSync(marker) || manifests.some((f) => statSync(f).mtimeMs > statSync(marker).mtimeMs);
+const stale = !existsSync(marker) || manifests.some((f) => statSync(f).mtimeMs > statSync(marker).mtimeMs);
 const shared = lstatSync('node_modules', { throwIfNoEntry: false })?.isSymbolicLink() === true;
 
 if (stale && shared) {
-  console.log('[oceano] node_modules is a link to a shared install: not reinstalling it here (run `npm ci` where it points if it is out of date)');
+  console.log(
+    '[oceano] node_modules is a link to a shared install: not reinstalling it here (run `npm ci` where it points if it is out of date)',
+  );
 } else if (stale) {
   const command = existsSync('package-lock.json') ? 'npm ci --no-audit --no-fund' : 'npm install --no-audit --no-fund';
   console.log(`[oceano] dependencies missing or out of date: running ${command}`);

@@ -143,6 +143,8 @@ export class FlatMeshBuilder {
       h.writeUInt32LE(type, 4);
       return h;
     };
-    return new Uint8Array(Buffer.concat([header, chunkHeader(jsonBytes.length, 0x4e4f534a), jsonBytes, chunkHeader(bin.length, 0x004e4942), bin]));
+    return new Uint8Array(
+      Buffer.concat([header, chunkHeader(jsonBytes.length, 0x4e4f534a), jsonBytes, chunkHeader(bin.length, 0x004e4942), bin]),
+    );
   }
 }

@@ -11,7 +11,8 @@ const RESOLVED = `\0${LESSON_QUOTES_MODULE}`;
 /** Every lesson's quote, read now from the files under `root`; throws on a marker that no longer fits its file. */
 export function readLessonQuotes(root: string): Record<string, Quote> {
   const quotes: Record<string, Quote> = {};
-  for (const [id, source] of Object.entries(LESSON_QUOTE_SOURCES)) quotes[id] = extractQuote(readFileSync(resolve(root, source.file), 'utf8'), source);
+  for (const [id, source] of Object.entries(LESSON_QUOTE_SOURCES))
+    quotes[id] = extractQuote(readFileSync(resolve(root, source.file), 'utf8'), source);
   return quotes;
 }
 

@@ -95,7 +95,14 @@ for (const sign of [-1, 1]) {
   ]) {
     const y0 = 1.02;
     const y1 = 1.3;
-    boat.quad(glass, [sign * sideX(y0), y0, z0], [sign * sideX(y0), y0, z1], [sign * sideX(y1), y1, z1], [sign * sideX(y1), y1, z0], cabinInside);
+    boat.quad(
+      glass,
+      [sign * sideX(y0), y0, z0],
+      [sign * sideX(y0), y0, z1],
+      [sign * sideX(y1), y1, z1],
+      [sign * sideX(y1), y1, z0],
+      cabinInside,
+    );
   }
 }
 for (const [x0, x1] of [

@@ -91,7 +91,11 @@ const SHOW_VIEW = `async ([view, quality]) => {
 }`;
 
 /** Renders the posters with `browser` from the dist/ served at `distUrl`; returns the WebP bytes by file, and the jobs that failed. */
-export async function renderPosters(browser: Browser, distUrl: string, jobs: PosterJob[]): Promise<{ posters: Map<string, Buffer>; failed: string[] }> {
+export async function renderPosters(
+  browser: Browser,
+  distUrl: string,
+  jobs: PosterJob[],
+): Promise<{ posters: Map<string, Buffer>; failed: string[] }> {
   const page = await browser.newPage();
   const posters = new Map<string, Buffer>();
   const failed: string[] = [];
@@ -144,7 +148,9 @@ async function main(): Promise<void> {
   const dist = resolve(process.argv[2] ?? 'dist');
   const executablePath = await locateBrowser();
   if (!executablePath) {
-    console.warn('posters: no Chrome or Chromium found (install chromium, or set CHROME_PATH): the build goes on without posters in dist/posters/.');
+    console.warn(
+      'posters: no Chrome or Chromium found (install chromium, or set CHROME_PATH): the build goes on without posters in dist/posters/.',
+    );
     return;
   }
   const { server, url } = await serveFolder(dist, '/');
@@ -159,5 +165,7 @@ async function main(): Promise<void> {
 
 if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
   // A browser that will not start is no reason to fail the build either: it says why and goes on.
-  main().catch((error: unknown) => console.warn(`posters: not made (${error instanceof Error ? error.message : String(error)}): the build goes on without them.`));
+  main().catch((error: unknown) =>
+    console.warn(`posters: not made (${error instanceof Error ? error.message : String(error)}): the build goes on without them.`),
+  );
 }

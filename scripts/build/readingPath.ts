@@ -50,11 +50,13 @@ export function readingPathMarkdown(): string {
   const placed = new Set(PARTS.flatMap((part) => part.sections));
   const lastPart = PARTS[PARTS.length - 1];
   const sectionsOf = (part: (typeof PARTS)[number]) =>
-    part === lastPart ? [...part.sections, ...(Object.keys(SECTION_NAMES) as LessonSection[]).filter((s) => !placed.has(s))] : part.sections;
+    part === lastPart
+      ? [...part.sections, ...(Object.keys(SECTION_NAMES) as LessonSection[]).filter((s) => !placed.has(s))]
+      : part.sections;
   const lines = [
     '# Reading the code',
     '',
-    'A path through the code in the order to read it: the seed\'s sea from the shader to its CPU twin,',
+    "A path through the code in the order to read it: the seed's sea from the shader to its CPU twin,",
     'then the spectral sea, then the light. Each step is the code a lesson card quotes',
     '(`src/app/lessons/lessonQuoteSources.ts`): open the lesson (`?lesson=ID`) beside the file, and',
     'read from the line that starts the quote. The concept → file map is the',
@@ -73,7 +75,9 @@ export function readingPathMarkdown(): string {
       for (const lesson of lessons) {
         const source = LESSON_QUOTE_SOURCES[lesson.id];
         step++;
-        lines.push(`${step}. [\`${source.file}\`](../${source.file}), from \`${source.from.replace(/`/g, "'")}\` (lesson \`${lesson.id}\`)`);
+        lines.push(
+          `${step}. [\`${source.file}\`](../${source.file}), from \`${source.from.replace(/`/g, "'")}\` (lesson \`${lesson.id}\`)`,
+        );
       }
       lines.push('');
     }

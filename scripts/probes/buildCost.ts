@@ -29,7 +29,9 @@ try {
     }
     ratios.push(times[0][round] / times[1][round]);
   }
-  console.log(`${query} at ${size}: this build ${median(times[0]).toFixed(1)} ms, ${variant} ${median(times[1]).toFixed(1)} ms; ratio ${median(ratios).toFixed(2)} (rounds ${Math.min(...ratios).toFixed(2)}–${Math.max(...ratios).toFixed(2)})`);
+  console.log(
+    `${query} at ${size}: this build ${median(times[0]).toFixed(1)} ms, ${variant} ${median(times[1]).toFixed(1)} ms; ratio ${median(ratios).toFixed(2)} (rounds ${Math.min(...ratios).toFixed(2)}–${Math.max(...ratios).toFixed(2)})`,
+  );
 } finally {
   await harness.close();
 }

@@ -24,7 +24,9 @@ try {
       white.push(measureFoam(png, solidFoamLevels(FOAM_VIEW.sunElevation)).white);
     }
     const mean = white.reduce((a, b) => a + b, 0) / white.length;
-    console.log(JSON.stringify({ wind, white: mean, instants: white, monahan: whitecapCoverage(wind), ratio: mean / whitecapCoverage(wind) }));
+    console.log(
+      JSON.stringify({ wind, white: mean, instants: white, monahan: whitecapCoverage(wind), ratio: mean / whitecapCoverage(wind) }),
+    );
     await page.close();
   }
 } finally {

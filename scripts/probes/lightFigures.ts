@@ -34,7 +34,9 @@ try {
   const [a, b] = frames;
   const far = meanChange(a, b, HORIZON_VIEW.farBand[0], HORIZON_VIEW.farBand[1]);
   const near = meanChange(a, b, HORIZON_VIEW.nearBand[0], HORIZON_VIEW.nearBand[1]);
-  console.log(JSON.stringify({ width5: spreads[5], width15: spreads[15], ratio: spreads[15] / spreads[5], far, near, farOverNear: far / near }));
+  console.log(
+    JSON.stringify({ width5: spreads[5], width15: spreads[15], ratio: spreads[15] / spreads[5], far, near, farOverNear: far / near }),
+  );
 } finally {
   await harness.close();
 }

@@ -5,7 +5,7 @@ import { openOcean, startHarness } from '../../tests/browser/harness';
 
 const query = process.argv[2] ?? 't=10';
 const rounds = Number(process.argv[3] ?? 4);
-const [width, height] = (process.argv[4] ?? "1280x720").split("x").map(Number);
+const [width, height] = (process.argv[4] ?? '1280x720').split('x').map(Number);
 
 // Runs in the page. Kept as a string: tsx would wrap named arrows in a helper the page lacks.
 const inPage = `(() => {

@@ -18,7 +18,12 @@ const height = 360;
 const metresPerPixel = (2 * Number(altitude) * Math.tan((27.5 * Math.PI) / 180)) / height;
 const harness = await startHarness();
 try {
-  const { page } = await openOcean(harness, `waves=${process.env.WAVES ?? 'fft'}&windSpeed=${wind}&sunElevation=30&t=10&cam=0,${altitude},0,0,0,-0.01${fault === 'groupsOff' ? '&waveGroups=0' : ''}${process.env.EXTRA_QUERY ?? ''}`, width, height);
+  const { page } = await openOcean(
+    harness,
+    `waves=${process.env.WAVES ?? 'fft'}&windSpeed=${wind}&sunElevation=30&t=10&cam=0,${altitude},0,0,0,-0.01${fault === 'groupsOff' ? '&waveGroups=0' : ''}${process.env.EXTRA_QUERY ?? ''}`,
+    width,
+    height,
+  );
   if (fault === 'breakupOff') await page.evaluate(() => window.oceano.debug.setShadingFixes({ foamBreakup: false }));
   const correlations: Autocorrelation[] = [];
   for (const t of [10, 40, 70, 100]) {
@@ -32,9 +37,15 @@ try {
     correlations.push(autocorrelation(values, width, height));
   }
   const [first] = correlations;
-  const mean: Autocorrelation = { maxX: first.maxX, maxY: first.maxY, at: (dx, dy) => correlations.reduce((sum, c) => sum + c.at(dx, dy), 0) / correlations.length };
+  const mean: Autocorrelation = {
+    maxX: first.maxX,
+    maxY: first.maxY,
+    at: (dx, dy) => correlations.reduce((sum, c) => sum + c.at(dx, dy), 0) / correlations.length,
+  };
   const peak = peakBeyond(mean, Number(minLag) / metresPerPixel, 1);
-  console.log(`${altitude} m, ${wind} m/s, ${measure}${fault && fault !== '-' ? ` (${fault})` : ''}, past ${minLag} m: peak ${peak.rho.toFixed(3)} at (${(peak.dx * metresPerPixel).toFixed(0)}, ${(peak.dy * metresPerPixel).toFixed(0)}) m; ${metresPerPixel.toFixed(2)} m a pixel`);
+  console.log(
+    `${altitude} m, ${wind} m/s, ${measure}${fault && fault !== '-' ? ` (${fault})` : ''}, past ${minLag} m: peak ${peak.rho.toFixed(3)} at (${(peak.dx * metresPerPixel).toFixed(0)}, ${(peak.dy * metresPerPixel).toFixed(0)}) m; ${metresPerPixel.toFixed(2)} m a pixel`,
+  );
 } finally {
   await harness.close();
 }

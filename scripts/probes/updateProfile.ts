@@ -39,7 +39,8 @@ try {
   const byId = new Map(profile.nodes.map((n) => [n.id, n]));
   const parent = new Map<number, number>();
   for (const n of profile.nodes) for (const c of n.children ?? []) parent.set(c, n.id);
-  const name = (n: ProfileNode) => `${n.callFrame.functionName || '(anon)'} ${n.callFrame.url.split('/').pop()}:${n.callFrame.lineNumber + 1}`;
+  const name = (n: ProfileNode) =>
+    `${n.callFrame.functionName || '(anon)'} ${n.callFrame.url.split('/').pop()}:${n.callFrame.lineNumber + 1}`;
   // Each sample's time (the delta to the next sample is the time it stands for).
   const self = new Map<string, number>();
   const total = new Map<string, number>();
@@ -61,7 +62,8 @@ try {
   const perFrame = (ms: number) => ((ms / frames) * 1000).toFixed(1).padStart(7);
   console.log(`${query}, ${frames} paused frames: inside [${entries.join(', ')}] ${perFrame(inEntry)} µs per frame (sampled)`);
   console.log('total µs/frame, self µs/frame, function');
-  for (const [key, ms] of [...total].sort((a, b) => b[1] - a[1]).slice(0, 45)) console.log(`${perFrame(ms)} ${perFrame(self.get(key) ?? 0)}  ${key}`);
+  for (const [key, ms] of [...total].sort((a, b) => b[1] - a[1]).slice(0, 45))
+    console.log(`${perFrame(ms)} ${perFrame(self.get(key) ?? 0)}  ${key}`);
 } finally {
   await harness.close();
 }

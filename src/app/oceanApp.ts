@@ -27,7 +27,6 @@ import { FREE_AREA_EVENT } from './layout/freeAreaEvent';
 import type { Rect } from '../sim/layout/rect';
 import type { SeaTools } from './tools/seaTools';
 
-
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
 
@@ -78,7 +77,14 @@ export class OceanApp {
   ) {
     this.tr = new Translator(options.language);
     this.params = { ...options.state.params };
-    this.scaffold = buildScaffold(container, this.tr, this.params, () => this.setPlaying(!this.clock.playing), options.alt, options.onProgress);
+    this.scaffold = buildScaffold(
+      container,
+      this.tr,
+      this.params,
+      () => this.setPlaying(!this.clock.playing),
+      options.alt,
+      options.onProgress,
+    );
     ({ canvas: this.canvas, notices: this.notices } = this.scaffold);
     for (const notice of options.state.notices) this.notify(notice);
     this.clock = new SimulationClock(options.state.time ?? 0, options.state.time === null && !options.reducedMotion);
@@ -99,7 +105,8 @@ export class OceanApp {
    * once a frame with the boat (or a notice saying why it is missing) is on screen, so `oceano.ready` means finished.
    */
   async start(): Promise<void> {
-    const { state, showPanel, skyBase } = this.options, { loading } = this.scaffold;
+    const { state, showPanel, skyBase } = this.options,
+      { loading } = this.scaffold;
     const [sky] = await Promise.all([loadCustomSky(skyBase, state.sky, this.notify), this.loadStartModels()]);
     loading.begin('firstFrame');
     await loading.painted();
@@ -111,7 +118,8 @@ export class OceanApp {
     this.container.addEventListener(FREE_AREA_EVENT, this.onFreeArea);
     this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
     this.view.ocean.recordStones(state.stones);
-    if (state.cullingCamera && this.params.freezeCulling) { // freeze the selection from the culling camera, then look at it from the preset's
+    if (state.cullingCamera && this.params.freezeCulling) {
+      // freeze the selection from the culling camera, then look at it from the preset's
       this.orbit.setPose(state.cullingCamera);
       this.view.update(this.clock.time);
     }
@@ -130,20 +138,41 @@ export class OceanApp {
         while (this.modelLoad) await this.modelLoad;
       },
     };
-    this.controls = new AppControls(this.container, this.view.ocean.fresnelData, { showPanel, params: this.params, playing: this.clock.playing, tr: this.tr, physics, panelFailed: () => this.notify(message('panelLoadFailed')) }, this, {
-      onParam: (key, value) => this.setParams({ [key]: value }),
-      onPlayingChange: (playing) => this.setPlaying(playing),
-      onShare: () => void this.share(),
-      onDive: () => this.orbit.dive(),
-      onStep: () => this.step(),
-      onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
-      onSeaTools: this.loadSeaTools,
-    });
+    this.controls = new AppControls(
+      this.container,
+      this.view.ocean.fresnelData,
+      {
+        showPanel,
+        params: this.params,
+        playing: this.clock.playing,
+        tr: this.tr,
+        physics,
+        panelFailed: () => this.notify(message('panelLoadFailed')),
+      },
+      this,
+      {
+        onParam: (key, value) => this.setParams({ [key]: value }),
+        onPlayingChange: (playing) => this.setPlaying(playing),
+        onShare: () => void this.share(),
+        onDive: () => this.orbit.dive(),
+        onStep: () => this.step(),
+        onSurface: () => this.orbit.setPose(DEFAULT_CAMERA),
+        onSeaTools: this.loadSeaTools,
+      },
+    );
     this.lessons = new LessonHost(this.container, this.tr, showPanel, this.params, {
       openLesson: (id) => this.openLesson(id),
       onParam: (key, value) => this.setParams({ [key]: value }),
       openFolders: (keys) => this.controls?.openFoldersOf(keys),
-      scene: () => ({ camera: this.view.camera, pose: this.orbit.pose(), canvas: this.canvas, time: this.clock.time, boat: this.boatMotion.info(), height: (x, z) => this.view.waves.height(x, z, this.clock.time), stoneDropped: this.view.ocean.interactiveWaves?.stones(this.clock.time, Number.POSITIVE_INFINITY).at(-1)?.[0] ?? null }),
+      scene: () => ({
+        camera: this.view.camera,
+        pose: this.orbit.pose(),
+        canvas: this.canvas,
+        time: this.clock.time,
+        boat: this.boatMotion.info(),
+        height: (x, z) => this.view.waves.height(x, z, this.clock.time),
+        stoneDropped: this.view.ocean.interactiveWaves?.stones(this.clock.time, Number.POSITIVE_INFINITY).at(-1)?.[0] ?? null,
+      }),
     });
     if (state.lesson) this.lessons.current = state.lesson;
     startupTimeline?.mark('oceano:controls');
@@ -157,7 +186,15 @@ export class OceanApp {
     this.options.onFirstFrame?.();
     this.loop.start();
     // The panel's code (lil-gui) comes after the first frame, beside the boat: `ready` still means the page is complete.
-    const [model] = await Promise.all([loadBoatOrNotify(this.options.boatUrl, this.notify, loading), this.view.whenPartsLoaded(), this.controls.loadPanel(), this.controls.whenPartsLoaded(), this.lessons.load(), this.orbit.loaded, state.probe !== null && this.loadSeaTools()]);
+    const [model] = await Promise.all([
+      loadBoatOrNotify(this.options.boatUrl, this.notify, loading),
+      this.view.whenPartsLoaded(),
+      this.controls.loadPanel(),
+      this.controls.whenPartsLoaded(),
+      this.lessons.load(),
+      this.orbit.loaded,
+      state.probe !== null && this.loadSeaTools(),
+    ]);
     if (model) this.view.lightWithCaustics(model.object);
     this.boatMotion.setModel(model);
     this.renderFrame(true);
@@ -173,7 +210,7 @@ export class OceanApp {
     try {
       await loadWaveModels(wanted);
     } catch (error) {
-      console.warn('Oceano: a wave model\'s code could not be loaded.', error);
+      console.warn("Oceano: a wave model's code could not be loaded.", error);
       this.notify(message('modelLoadFailed', { name: modelsMissing(wanted).join(', '), fallback: 'seed' }));
       this.params = { ...this.params, waves: 'seed', compare: COMPARE_OFF };
     }
@@ -203,7 +240,7 @@ export class OceanApp {
       (error: unknown) => {
         if (this.modelLoad !== load || this.disposed) return;
         this.modelLoad = undefined;
-        console.warn('Oceano: a wave model\'s code could not be loaded.', error);
+        console.warn("Oceano: a wave model's code could not be loaded.", error);
         this.notify(message('modelLoadFailed', { name: missing.join(', '), fallback: modelsDrawn(shown).join(', ') }));
         this.params = { ...this.params, ...shown };
         labelCanvas(this.canvas, this.tr, this.params, this.options.alt);
@@ -344,11 +381,18 @@ export class OceanApp {
     });
   share = (): Promise<string> => shareLink(this.shareUrl(), this.notify);
   sampleSurface = (x: number, z: number, t = this.clock.time): SurfaceSample => (
-    checkSurfacePoint(x, z), this.view.ocean.withInteractiveWaves(this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params, this.view.ocean.wakeWeight(x, z)), x, z)
+    checkSurfacePoint(x, z),
+    this.view.ocean.withInteractiveWaves(
+      this.boatMotion.withWake(this.view.waves.sample(x, z, t), x, z, t, this.params, this.view.ocean.wakeWeight(x, z)),
+      x,
+      z,
+    )
   );
-  probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> => this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
+  probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> =>
+    this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   /** The sea tools' code, fetched the first time they are opened, a ?probe= link is followed or oceano.probe() is called. */
-  loadSeaTools = (): Promise<SeaTools> => (this.seaToolsLoad ??= import('./tools/seaTools').then((code) => (this.seaTools = new code.SeaTools(this))));
+  loadSeaTools = (): Promise<SeaTools> =>
+    (this.seaToolsLoad ??= import('./tools/seaTools').then((code) => (this.seaTools = new code.SeaTools(this))));
 
   /** A stone into the interactive waves; what is wrong with it, or raised, is said in a notice too (and bad arguments still throw). */
   disturb = (x: number, z: number, options: { radius?: number; height?: number } = {}): string[] => {

@@ -26,7 +26,13 @@ describe('the boat', () => {
       const [x, , z] = boat.position;
       const cpu = window.oceano.sampleSurface(x, z).height;
       const [gpu] = await window.oceano.probeGpu([[x, z]]);
-      return { boat, cpu, gpu: gpu.height, notices: window.oceano.notices(), indicator: document.querySelector('.oceano-loading') !== null };
+      return {
+        boat,
+        cpu,
+        gpu: gpu.height,
+        notices: window.oceano.notices(),
+        indicator: document.querySelector('.oceano-loading') !== null,
+      };
     });
     const boatMs = await page.evaluate(() => {
       for (let i = 0; i < 12; i++) window.oceano.renderFrame();
@@ -62,7 +68,8 @@ describe('the boat', () => {
         moved = Math.max(moved, Math.abs(boat.position[1] - first));
         // The target is the CPU surface at the boat's centre, at the time of the frame drawn.
         const surface = o.sampleSurface(boat.position[0], boat.position[2]).height;
-        if (Math.abs(surface - boat.target.position[1]) > 1e-12) throw new Error(`target ${boat.target.position[1]} is not the surface ${surface}`);
+        if (Math.abs(surface - boat.target.position[1]) > 1e-12)
+          throw new Error(`target ${boat.target.position[1]} is not the surface ${surface}`);
       }
       return { heave, angle, moved };
     });
@@ -126,7 +133,11 @@ describe('the boat', () => {
 describe('bad boat models', () => {
   it('a missing model leaves the ocean running with a notice', async () => {
     const page = await withoutBoat.page();
-    const state = await page.evaluate(() => ({ notices: window.oceano.notices(), boat: window.oceano.boat(), stats: window.oceano.stats() }));
+    const state = await page.evaluate(() => ({
+      notices: window.oceano.notices(),
+      boat: window.oceano.boat(),
+      stats: window.oceano.stats(),
+    }));
     expect(state.notices.join('\n')).toMatch(/boat model "models\/missing\.glb" (is missing|was not found).*runs without the boat/);
     expect(state.boat.model).toBe('failed');
     expect(state.stats.triangles).toBeGreaterThan(10_000);
@@ -161,12 +172,18 @@ describe('bad boat models', () => {
     await page.goto(`${harness.baseUrl}?seed=1&t=10`, { waitUntil: 'load' });
     await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
     await page.evaluate(() => window.oceano.ready);
-    const state = await page.evaluate(() => ({ notices: window.oceano.notices(), model: window.oceano.boat().model, triangles: window.oceano.stats().triangles }));
+    const state = await page.evaluate(() => ({
+      notices: window.oceano.notices(),
+      model: window.oceano.boat().model,
+      triangles: window.oceano.stats().triangles,
+    }));
     expect(state.model).toBe('failed');
     expect(state.triangles).toBeGreaterThan(10_000);
     // The notice names the file in the page's words; the loader's English reason goes to the console,
     // so a Spanish page never shows an English sentence.
-    expect(state.notices.join('\n')).toMatch(/boat model "models\/boat\.glb" is not a valid glTF model: .+\. The ocean runs without the boat\.$/);
+    expect(state.notices.join('\n')).toMatch(
+      /boat model "models\/boat\.glb" is not a valid glTF model: .+\. The ocean runs without the boat\.$/,
+    );
     expect(warnings.join('\n')).toMatch(/boat model "models\/boat\.glb" could not be parsed: .+/);
     await page.close();
   });
@@ -186,7 +203,11 @@ describe('bad boat models', () => {
     expect(held).toHaveLength(1);
     await held[0].abort('failed');
     await page.evaluate(() => window.oceano.ready);
-    const state = await page.evaluate(() => ({ notices: window.oceano.notices(), model: window.oceano.boat().model, indicator: document.querySelector('.oceano-loading') !== null }));
+    const state = await page.evaluate(() => ({
+      notices: window.oceano.notices(),
+      model: window.oceano.boat().model,
+      indicator: document.querySelector('.oceano-loading') !== null,
+    }));
     expect(state.model).toBe('failed');
     expect(state.indicator).toBe(false);
     expect(state.notices.join('\n')).toMatch(/boat model "models\/boat\.glb" could not be fetched.*runs without the boat/);

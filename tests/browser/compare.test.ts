@@ -29,7 +29,12 @@ async function picture(page: Page): Promise<PNG> {
 
 describe('compare=seed,gerstner,fft: the split view', () => {
   it('holds each model alone, pixel for pixel, on its own strip; wrong models or a split 3 px off fail', async () => {
-    const split = await openOcean(harness, `${SHARED}&compare=seed,gerstner,fft&compareSplit=${SPLIT}&compareSplit2=${SPLIT2}`, WIDTH, HEIGHT);
+    const split = await openOcean(
+      harness,
+      `${SHARED}&compare=seed,gerstner,fft&compareSplit=${SPLIT}&compareSplit2=${SPLIT2}`,
+      WIDTH,
+      HEIGHT,
+    );
     const both = await picture(split.page);
     const splitTriangles = await split.page.evaluate(() => window.oceano.stats().triangles);
     expect(split.consoleErrors).toEqual([]);
@@ -44,7 +49,11 @@ describe('compare=seed,gerstner,fft: the split view', () => {
       await page.close();
     }
     const strips = compareStrips(3, SPLIT, SPLIT2, WIDTH);
-    expect(strips).toEqual([{ x0: 0, x1: 96 }, { x0: 96, x1: 208 }, { x0: 208, x1: 320 }]);
+    expect(strips).toEqual([
+      { x0: 0, x1: 96 },
+      { x0: 96, x1: 208 },
+      { x0: 208, x1: 320 },
+    ]);
     const report: string[] = [];
     strips.forEach((strip, i) => {
       const own = differingPixels(both, alone[i], strip.x0, strip.x1);

@@ -44,7 +44,12 @@ async function picture(page: Page): Promise<PNG> {
 
 describe('compare=seed,gerstner,fft with the boat wake on', () => {
   it('holds each compared model with its wake, pixel for pixel, on its own strip; the pixels without the wake fail', async () => {
-    const split = await openOcean(harness, `${SHARED}&compare=seed,gerstner,fft&compareSplit=${SPLIT}&compareSplit2=${SPLIT2}`, WIDTH, HEIGHT);
+    const split = await openOcean(
+      harness,
+      `${SHARED}&compare=seed,gerstner,fft&compareSplit=${SPLIT}&compareSplit2=${SPLIT2}`,
+      WIDTH,
+      HEIGHT,
+    );
     const both = await picture(split.page);
     // The control: every ocean material's fragment shader without its wake block.
     const patched = await split.page.evaluate(() => {
@@ -81,7 +86,9 @@ describe('compare=seed,gerstner,fft with the boat wake on', () => {
       const { x0, x1 } = strips[k + 1];
       const own = differingPixels(both, alone, x0, x1);
       const control = differingPixels(faulty, alone, x0, x1, 2);
-      report.push(`${model} [${x0}, ${x1}): ${own} px differ from ${model} alone with the wake; control (no wake in the pixels) ${control} px by more than 2 levels`);
+      report.push(
+        `${model} [${x0}, ${x1}): ${own} px differ from ${model} alone with the wake; control (no wake in the pixels) ${control} px by more than 2 levels`,
+      );
       expect(own, report.at(-1)).toBeLessThanOrEqual(STRIP_TOLERANCE);
       expect(control, report.at(-1)).toBeGreaterThan(CONTROL_FLOOR);
     }

@@ -11,7 +11,10 @@ describe('content security policy', () => {
 
   it(`runs clean under "${STRICT}", the panel's icon font included`, async () => {
     const html = readFileSync(join(import.meta.dirname, '..', '..', 'dist', 'index.html'), 'utf8');
-    const strict = html.replace(/<meta http-equiv="Content-Security-Policy" content="[^"]*"/, `<meta http-equiv="Content-Security-Policy" content="${STRICT}"`);
+    const strict = html.replace(
+      /<meta http-equiv="Content-Security-Policy" content="[^"]*"/,
+      `<meta http-equiv="Content-Security-Policy" content="${STRICT}"`,
+    );
     expect(strict).toContain(STRICT);
     const page = await harness.browser.newPage();
     const violations: string[] = [];
@@ -21,7 +24,9 @@ describe('content security policy', () => {
     page.on('pageerror', (e) => errors.push(String(e)));
     await page.exposeFunction('__violation', (text: string) => violations.push(text));
     await page.evaluateOnNewDocument(() => {
-      document.addEventListener('securitypolicyviolation', (e) => (window as unknown as { __violation(t: string): void }).__violation(`${e.effectiveDirective} ${e.blockedURI}`));
+      document.addEventListener('securitypolicyviolation', (e) =>
+        (window as unknown as { __violation(t: string): void }).__violation(`${e.effectiveDirective} ${e.blockedURI}`),
+      );
     });
     await page.setRequestInterception(true);
     page.on('request', (request) => {
@@ -34,10 +39,17 @@ describe('content security policy', () => {
     await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
     await page.evaluate(() => window.oceano.ready);
     // A checked box draws its ✓ in lil-gui's icon font: make sure the font is wanted and loaded.
-    await page.evaluate(() => document.querySelectorAll<HTMLElement>('.lil-gui .lil-title').forEach((t) => t.parentElement!.classList.contains('lil-closed') && t.click()));
+    await page.evaluate(() =>
+      document
+        .querySelectorAll<HTMLElement>('.lil-gui .lil-title')
+        .forEach((t) => t.parentElement!.classList.contains('lil-closed') && t.click()),
+    );
     const fontLoaded = await page.evaluate(async () => {
       await document.fonts.ready;
-      return document.fonts.check('12px "lil-gui"', '✓') && Array.from(document.fonts).some((f) => f.family.replaceAll('"', '') === 'lil-gui' && f.status === 'loaded');
+      return (
+        document.fonts.check('12px "lil-gui"', '✓') &&
+        Array.from(document.fonts).some((f) => f.family.replaceAll('"', '') === 'lil-gui' && f.status === 'loaded')
+      );
     });
     expect(violations).toEqual([]);
     expect(errors).toEqual([]);

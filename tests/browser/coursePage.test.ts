@@ -10,12 +10,25 @@ import { readLessonQuotes } from '../../scripts/build/lessonQuotes';
 import { BIBLIOGRAPHY } from '../../src/app/lessons/bibliography';
 import { citation } from '../../src/app/lessons/referenceLists';
 import { citedWorks, glossaryEntries } from '../../src/course/backMatter';
-import { bannedSpanishWords, bibliographyFaults, shownLessonFaults, termLinkFaults, unresolvedLinks, type CardSource, type ListedEntry, type ShownLesson } from '../../src/course/coursePageChecks';
+import {
+  bannedSpanishWords,
+  bibliographyFaults,
+  shownLessonFaults,
+  termLinkFaults,
+  unresolvedLinks,
+  type CardSource,
+  type ListedEntry,
+  type ShownLesson,
+} from '../../src/course/coursePageChecks';
 
 const harness = useHarness();
 const quotes = readLessonQuotes(join(import.meta.dirname, '..', '..'));
 const citations = (id: string) => (LESSON_TEXTS[id].references ?? []).map((key) => citation(BIBLIOGRAPHY[key]));
-const cards = (language: 'es' | 'en'): CardSource => ({ text: (id) => LESSON_TEXTS[id].text[language], code: (id) => quotes[id]?.text ?? null, references: citations });
+const cards = (language: 'es' | 'en'): CardSource => ({
+  text: (id) => LESSON_TEXTS[id].text[language],
+  code: (id) => quotes[id]?.text ?? null,
+  references: citations,
+});
 
 /** Every figure and card as the page shows it, once its captions are written. */
 async function shownLessons(page: Page): Promise<ShownLesson[]> {
@@ -28,7 +41,12 @@ async function shownLessons(page: Page): Promise<ShownLesson[]> {
         text: holder.querySelector('.lesson-text')?.textContent ?? '',
         code: holder.querySelector('.code-quote code')?.textContent ?? null,
         references: Array.from(holder.querySelectorAll('.lesson-references li'), (li) => li.textContent ?? ''),
-        attributes: view ? view.getAttributeNames().filter((n) => !['lang', 'poster', 'alt', 'class', 'style'].includes(n)).map((n): [string, string] => [n, view.getAttribute(n)!]) : null,
+        attributes: view
+          ? view
+              .getAttributeNames()
+              .filter((n) => !['lang', 'poster', 'alt', 'class', 'style'].includes(n))
+              .map((n): [string, string] => [n, view.getAttribute(n)!])
+          : null,
       };
     }),
   );
@@ -43,7 +61,10 @@ async function backMatter(page: Page) {
       glossary: entries('.glossary dt') as ListedEntry[],
       definitions: Array.from(document.querySelectorAll('.glossary dd'), (dd) => dd.textContent),
       referenceLinks: Array.from(document.querySelectorAll('.lesson-references a'), (a) => a.getAttribute('href') ?? ''),
-      termLinks: Array.from(document.querySelectorAll('.lesson-text a.glossary-term'), (a) => ({ href: a.getAttribute('href') ?? '', text: a.textContent ?? '' })),
+      termLinks: Array.from(document.querySelectorAll('.lesson-text a.glossary-term'), (a) => ({
+        href: a.getAttribute('href') ?? '',
+        text: a.textContent ?? '',
+      })),
     };
   });
 }
@@ -53,10 +74,21 @@ function backMatterFaults(matter: Awaited<ReturnType<typeof backMatter>>, langua
   const glossary = glossaryEntries(language);
   return [
     ...bibliographyFaults(matter.bibliography, citedWorks(LESSON_TEXTS)),
-    ...unresolvedLinks(matter.referenceLinks, matter.bibliography.map((entry) => entry.id)).map((href) => `${href}: no bibliography entry`),
-    ...termLinkFaults(matter.termLinks, matter.glossary.map((entry) => entry.id), language),
-    ...(JSON.stringify(matter.glossary.map((entry) => entry.text)) === JSON.stringify(glossary.map((entry) => entry.headword)) ? [] : ['the glossary\'s headwords are not the terms in the page\'s language']),
-    ...(JSON.stringify(matter.definitions) === JSON.stringify(glossary.map((entry) => entry.term.definition[language])) ? [] : ['the glossary\'s definitions are not the terms\' in the page\'s language']),
+    ...unresolvedLinks(
+      matter.referenceLinks,
+      matter.bibliography.map((entry) => entry.id),
+    ).map((href) => `${href}: no bibliography entry`),
+    ...termLinkFaults(
+      matter.termLinks,
+      matter.glossary.map((entry) => entry.id),
+      language,
+    ),
+    ...(JSON.stringify(matter.glossary.map((entry) => entry.text)) === JSON.stringify(glossary.map((entry) => entry.headword))
+      ? []
+      : ["the glossary's headwords are not the terms in the page's language"]),
+    ...(JSON.stringify(matter.definitions) === JSON.stringify(glossary.map((entry) => entry.term.definition[language]))
+      ? []
+      : ["the glossary's definitions are not the terms' in the page's language"]),
   ];
 }
 
@@ -67,9 +99,13 @@ async function recordFigureErrors(page: Page): Promise<void> {
   await page.evaluateOnNewDocument(() => {
     const errors: unknown[] = [];
     (window as unknown as { __figureErrors: unknown[] }).__figureErrors = errors;
-    document.addEventListener('error', (event) => {
-      if ((event.target as Element).localName === 'oceano-view') errors.push((event as unknown as CustomEvent).detail);
-    }, true);
+    document.addEventListener(
+      'error',
+      (event) => {
+        if ((event.target as Element).localName === 'oceano-view') errors.push((event as unknown as CustomEvent).detail);
+      },
+      true,
+    );
   });
 }
 
@@ -102,7 +138,18 @@ describe('the course page (dist/course/)', () => {
       englishShown: Array.from(document.querySelectorAll('.en')).some((e) => (e as HTMLElement).offsetParent !== null),
     }));
     expect(outline.figures).toBe(21);
-    expect(outline.sections.slice(0, 10)).toEqual(['Superficie del agua', 'Movimiento', 'Ruido de valor (el «Perlin» del informe)', 'Normales', 'Environment map', 'Óptica: Snell y Fresnel', 'CPU shader: mover el barco', 'Bajo el agua', 'Optimización: niveles de detalle', 'Frustum culling']);
+    expect(outline.sections.slice(0, 10)).toEqual([
+      'Superficie del agua',
+      'Movimiento',
+      'Ruido de valor (el «Perlin» del informe)',
+      'Normales',
+      'Environment map',
+      'Óptica: Snell y Fresnel',
+      'CPU shader: mover el barco',
+      'Bajo el agua',
+      'Optimización: niveles de detalle',
+      'Frustum culling',
+    ]);
     expect(outline.lang).toBe('es');
     expect(outline.figureLanguages).toBe(1);
     expect(outline.englishShown).toBe(false);
@@ -113,7 +160,8 @@ describe('the course page (dist/course/)', () => {
     expect(shown.filter((s) => s.attributes).length).toBe(outline.figures);
     expect(shown.flatMap((s) => shownLessonFaults(s, cards('es')))).toEqual([]);
     // Control: each one read as if it named the next lesson is caught.
-    for (let i = 0; i < shown.length; i++) expect(shownLessonFaults({ ...shown[i], lesson: shown[(i + 1) % shown.length].lesson }, cards('es'))).not.toEqual([]);
+    for (let i = 0; i < shown.length; i++)
+      expect(shownLessonFaults({ ...shown[i], lesson: shown[(i + 1) % shown.length].lesson }, cards('es'))).not.toEqual([]);
     // Every card's references in its caption (shownLessonFaults), every cited work in the bibliography, every link landing on an entry.
     const matter = await backMatter(page);
     expect(matter.referenceLinks.length).toBe(Object.values(LESSON_TEXTS).reduce((n, card) => n + (card.references?.length ?? 0), 0));
@@ -126,11 +174,14 @@ describe('the course page (dist/course/)', () => {
     expect(links.every((link) => /^\?lesson=[a-z-]+&lang=es$/.test(link))).toBe(true);
 
     // The figures far below, not started, show their posters: the build's picture of their preset.
-    await page.waitForFunction(() => Array.from(document.querySelectorAll<HTMLImageElement>('img.oceano-poster')).every((img) => img.complete));
+    await page.waitForFunction(() =>
+      Array.from(document.querySelectorAll<HTMLImageElement>('img.oceano-poster')).every((img) => img.complete),
+    );
     const posters = await page.evaluate(() => ({
       withPoster: document.querySelectorAll('oceano-view[poster]').length,
       shown: Array.from(document.querySelectorAll<HTMLImageElement>('img.oceano-poster')).filter((img) => img.naturalWidth === 320).length,
-      waiting: (Array.from(document.querySelectorAll('oceano-view[poster]')) as ViewElement[]).filter((view) => view.oceano === null).length,
+      waiting: (Array.from(document.querySelectorAll('oceano-view[poster]')) as ViewElement[]).filter((view) => view.oceano === null)
+        .length,
     }));
     expect(posters.withPoster).toBe(outline.figures);
     expect(posters.waiting).toBeGreaterThan(10);
@@ -142,7 +193,9 @@ describe('the course page (dist/course/)', () => {
       const box = document.querySelector('[data-lesson="physics-panel"] oceano-view')!.getBoundingClientRect();
       window.scrollTo(0, scrollY + box.top - innerHeight - 60);
     });
-    await page.waitForFunction(() => (document.querySelector('[data-lesson="physics-panel"] oceano-view') as ViewElement).oceano !== null, { timeout: 120_000 });
+    await page.waitForFunction(() => (document.querySelector('[data-lesson="physics-panel"] oceano-view') as ViewElement).oceano !== null, {
+      timeout: 120_000,
+    });
     await new Promise((resolve) => setTimeout(resolve, 1500));
     expect(await page.evaluate(() => document.querySelectorAll('[data-lesson="physics-panel"] .oceano-physics .uplot').length)).toBe(0);
     await page.evaluate(() => window.scrollTo(0, 0));
@@ -156,11 +209,17 @@ describe('the course page (dist/course/)', () => {
       const panel = await page.evaluate(() => {
         const view = document.querySelector('[data-lesson="physics-panel"] oceano-view') as ViewElement;
         const box = view.getBoundingClientRect();
-        return { live: view.oceano !== null, onScreen: box.bottom > 0 && box.top < innerHeight, measured: view.querySelectorAll('.oceano-physics .uplot').length };
+        return {
+          live: view.oceano !== null,
+          onScreen: box.bottom > 0 && box.top < innerHeight,
+          measured: view.querySelectorAll('.oceano-physics .uplot').length,
+        };
       });
       if (panel.onScreen) {
         // Control: the same count sees the measurement once the figure is on screen.
-        await page.waitForFunction(() => document.querySelectorAll('[data-lesson="physics-panel"] .oceano-physics .uplot').length === 2, { timeout: 120_000 });
+        await page.waitForFunction(() => document.querySelectorAll('[data-lesson="physics-panel"] .oceano-physics .uplot').length === 2, {
+          timeout: 120_000,
+        });
       }
       panelStates.push(panel);
       const live = await page.evaluate(() =>
@@ -172,7 +231,10 @@ describe('the course page (dist/course/)', () => {
     }
     expect(started.size).toBe(outline.figures);
     // However far ahead it started, it had measured nothing before it was seen.
-    const beforeSeen = panelStates.slice(0, panelStates.findIndex((state) => state.onScreen));
+    const beforeSeen = panelStates.slice(
+      0,
+      panelStates.findIndex((state) => state.onScreen),
+    );
     expect(beforeSeen.map((state) => state.measured)).toEqual(beforeSeen.map(() => 0));
     expect(await page.evaluate(() => (window as unknown as { __figureErrors: unknown[] }).__figureErrors)).toEqual([]);
     expect(consoleErrors).toEqual([]);
@@ -180,7 +242,7 @@ describe('the course page (dist/course/)', () => {
     await page.close();
   }, 400_000);
 
-  it('is linked from the app, after its lessons, in the reader\'s language', async () => {
+  it("is linked from the app, after its lessons, in the reader's language", async () => {
     const { page, consoleErrors } = await recordedPage(harness, 1366, 768);
     await page.goto(`${harness.baseUrl}index.html?lang=es`, { waitUntil: 'load' });
     const link = await page.waitForSelector('a.oceano-lessons-course');
@@ -188,7 +250,9 @@ describe('the course page (dist/course/)', () => {
     const { href, text, afterLessons } = await link!.evaluate((a) => ({
       href: (a as HTMLAnchorElement).href,
       text: a.textContent,
-      afterLessons: Array.from(a.closest('ol')!.querySelectorAll('[data-lesson]')).every((lesson) => lesson.compareDocumentPosition(a) & Node.DOCUMENT_POSITION_FOLLOWING),
+      afterLessons: Array.from(a.closest('ol')!.querySelectorAll('[data-lesson]')).every(
+        (lesson) => lesson.compareDocumentPosition(a) & Node.DOCUMENT_POSITION_FOLLOWING,
+      ),
     }));
     expect(afterLessons).toBe(true);
     expect(text).toMatch(/^La página del curso/);
@@ -207,7 +271,9 @@ describe('the course page (dist/course/)', () => {
     await page.waitForFunction(() => (document.querySelector('oceano-view') as ViewElement).oceano !== null);
     await page.evaluate(() => (document.querySelector('oceano-view') as ViewElement).oceano!.ready);
     const facts = await page.evaluate(() => ({
-      title: (document.querySelector('h1 .en') as HTMLElement).offsetParent !== null && (document.querySelector('h1 .es') as HTMLElement).offsetParent === null,
+      title:
+        (document.querySelector('h1 .en') as HTMLElement).offsetParent !== null &&
+        (document.querySelector('h1 .es') as HTMLElement).offsetParent === null,
       label: document.querySelector('oceano-view canvas.oceano-canvas')!.getAttribute('aria-label'),
       link: (document.querySelector('a.open-in-app') as HTMLAnchorElement).search,
     }));
@@ -224,7 +290,10 @@ describe('the course page (dist/course/)', () => {
     // Controls: held to Spanish the glossary fails; an entry that loses its id strands the links to it.
     expect(backMatterFaults(matter, 'es')).not.toEqual([]);
     const [reference, term] = [matter.referenceLinks[0], matter.termLinks[0].href];
-    await page.evaluate((ids) => ids.forEach((id) => document.getElementById(id)!.removeAttribute('id')), [reference.slice(1), term.slice(1)]);
+    await page.evaluate(
+      (ids) => ids.forEach((id) => document.getElementById(id)!.removeAttribute('id')),
+      [reference.slice(1), term.slice(1)],
+    );
     const broken = backMatterFaults(await backMatter(page), 'en');
     expect(broken).toContain(`${reference}: no bibliography entry`);
     expect(broken).toContain(`${term}: no glossary entry`);

@@ -28,7 +28,10 @@ describe('deployment', () => {
   });
 
   it('tells a browser without WebGL2 so, in words, instead of a blank page', async () => {
-    const browser = await puppeteer.launch({ executablePath: await findBrowser(), args: [...BROWSER_ARGS, '--disable-webgl', '--disable-webgl2'] });
+    const browser = await puppeteer.launch({
+      executablePath: await findBrowser(),
+      args: [...BROWSER_ARGS, '--disable-webgl', '--disable-webgl2'],
+    });
     try {
       const page = await browser.newPage();
       const errors: string[] = [];

@@ -23,10 +23,14 @@ const openStartup = async (): Promise<RecordedPage> => {
       const heard: HeardEvent[] = [];
       (window as unknown as { __heard: HeardEvent[] }).__heard = heard;
       for (const type of ['progress', 'load', 'ready', 'error']) {
-        document.addEventListener(type, (event) => {
-          const target = event.target as Element;
-          if (target.localName === 'oceano-view') heard.push({ id: target.id, type, detail: (event as CustomEvent).detail ?? null });
-        }, true);
+        document.addEventListener(
+          type,
+          (event) => {
+            const target = event.target as Element;
+            if (target.localName === 'oceano-view') heard.push({ id: target.id, type, detail: (event as CustomEvent).detail ?? null });
+          },
+          true,
+        );
       }
     });
     await r.page.goto(`${harness.baseUrl}fixtures/startup.html`, { waitUntil: 'load' });
@@ -40,7 +44,11 @@ afterAll(async () => {
 });
 
 const heard = (page: Page, id: string, type?: string): Promise<HeardEvent[]> =>
-  page.evaluate((i, t) => (window as unknown as { __heard: HeardEvent[] }).__heard.filter((e) => e.id === i && (t === undefined || e.type === t)), id, type);
+  page.evaluate(
+    (i, t) => (window as unknown as { __heard: HeardEvent[] }).__heard.filter((e) => e.id === i && (t === undefined || e.type === t)),
+    id,
+    type,
+  );
 
 const figureState = (page: Page, id: string) =>
   page.evaluate((i) => {
@@ -58,13 +66,17 @@ const figureState = (page: Page, id: string) =>
   }, id);
 
 const readyOf = (page: Page, id: string) =>
-  page.waitForFunction((i) => (document.getElementById(i) as ViewElement).oceano !== null, {}, id).then(() => page.evaluate((i) => (document.getElementById(i) as ViewElement).oceano!.ready, id));
+  page
+    .waitForFunction((i) => (document.getElementById(i) as ViewElement).oceano !== null, {}, id)
+    .then(() => page.evaluate((i) => (document.getElementById(i) as ViewElement).oceano!.ready, id));
 
 describe('<oceano-view> start-up attributes and events', () => {
   it('starts lazily near the screen, or at once with loading="eager"', async () => {
     const { page } = await openStartup();
     await readyOf(page, 'plain');
-    await page.waitForFunction(() => (window as unknown as { __heard: HeardEvent[] }).__heard.some((e) => e.id === 'eagerBelow' && e.type === 'load'));
+    await page.waitForFunction(() =>
+      (window as unknown as { __heard: HeardEvent[] }).__heard.some((e) => e.id === 'eagerBelow' && e.type === 'load'),
+    );
     // The lazy figure far below has made nothing: no canvas, no context, no events.
     expect(await figureState(page, 'below')).toMatchObject({ api: false, canvas: false });
     expect(await heard(page, 'below')).toEqual([]);
@@ -104,12 +116,16 @@ describe('<oceano-view> start-up attributes and events', () => {
     expect(after.position).not.toEqual(before.position);
   });
 
-  it('fires error once for a bad attribute, with the notice\'s words, and still starts', async () => {
+  it("fires error once for a bad attribute, with the notice's words, and still starts", async () => {
     const { page } = await openStartup();
     await readyOf(page, 'bad');
     const errors = await heard(page, 'bad', 'error');
-    expect(errors).toEqual([{ id: 'bad', type: 'error', detail: { type: 'attribute', message: '"loading=soon" is not one of lazy, eager, auto; using "lazy".' } }]);
-    expect(await page.evaluate(() => (document.getElementById('bad') as ViewElement).oceano!.notices())).toEqual([errors[0].detail!.message]);
+    expect(errors).toEqual([
+      { id: 'bad', type: 'error', detail: { type: 'attribute', message: '"loading=soon" is not one of lazy, eager, auto; using "lazy".' } },
+    ]);
+    expect(await page.evaluate(() => (document.getElementById('bad') as ViewElement).oceano!.notices())).toEqual([
+      errors[0].detail!.message,
+    ]);
     // Control: the good figures fired none.
     expect(await heard(page, 'plain', 'error')).toEqual([]);
   });
@@ -118,8 +134,15 @@ describe('<oceano-view> start-up attributes and events', () => {
     const { page } = await openStartup();
     await readyOf(page, 'unnamed');
     expect(await heard(page, 'unnamed', 'error')).toEqual([]);
-    await page.evaluate(() => (document.querySelector('#unnamed canvas') as HTMLCanvasElement).getContext('webgl2')!.getExtension('WEBGL_lose_context')!.loseContext());
-    await page.waitForFunction(() => (window as unknown as { __heard: HeardEvent[] }).__heard.some((e) => e.id === 'unnamed' && e.type === 'error'));
+    await page.evaluate(() =>
+      (document.querySelector('#unnamed canvas') as HTMLCanvasElement)
+        .getContext('webgl2')!
+        .getExtension('WEBGL_lose_context')!
+        .loseContext(),
+    );
+    await page.waitForFunction(() =>
+      (window as unknown as { __heard: HeardEvent[] }).__heard.some((e) => e.id === 'unnamed' && e.type === 'error'),
+    );
     const [lost] = await heard(page, 'unnamed', 'error');
     expect(lost.detail!.type).toBe('contextlost');
     expect(lost.detail!.message).toContain('graphics context was lost');
@@ -132,12 +155,23 @@ describe('<oceano-view> start-up attributes and events', () => {
     const { page } = await openStartup();
     await readyOf(page, 'plain');
     const waiting = await figureState(page, 'revealed');
-    expect(waiting).toMatchObject({ api: false, canvas: false, reveal: true, poster: { alt: 'The sea, started on request', src: 'favicon.svg' } });
+    expect(waiting).toMatchObject({
+      api: false,
+      canvas: false,
+      reveal: true,
+      poster: { alt: 'The sea, started on request', src: 'favicon.svg' },
+    });
     expect(await heard(page, 'revealed')).toEqual([]);
     await page.focus('#revealed .oceano-reveal');
     await page.keyboard.press('Enter');
     await readyOf(page, 'revealed');
-    expect(await figureState(page, 'revealed')).toMatchObject({ api: true, canvas: true, reveal: false, poster: null, label: 'The sea, started on request' });
+    expect(await figureState(page, 'revealed')).toMatchObject({
+      api: true,
+      canvas: true,
+      reveal: false,
+      poster: null,
+      label: 'The sea, started on request',
+    });
     expect((await heard(page, 'revealed', 'load')).length).toBe(1);
   });
 
@@ -153,8 +187,12 @@ describe('<oceano-view> start-up attributes and events', () => {
     });
     expect(whileStarting).toBe('starting');
     await readyOf(page, 'below');
-    await page.waitForFunction(() => (document.getElementById('below') as ViewElement).oceano?.getParams().swellAmplitude === 3.25, { timeout: 20_000 });
+    await page.waitForFunction(() => (document.getElementById('below') as ViewElement).oceano?.getParams().swellAmplitude === 3.25, {
+      timeout: 20_000,
+    });
     // Control: the figure beside it, never told, keeps the default.
-    expect(await page.evaluate(() => (document.getElementById('eagerBelow') as ViewElement).oceano?.getParams().swellAmplitude ?? null)).not.toBe(3.25);
+    expect(
+      await page.evaluate(() => (document.getElementById('eagerBelow') as ViewElement).oceano?.getParams().swellAmplitude ?? null),
+    ).not.toBe(3.25);
   });
 });

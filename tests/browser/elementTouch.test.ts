@@ -14,7 +14,13 @@ const blur = (page: Page) => page.evaluate(() => (document.activeElement as HTML
 async function drag(page: Page, dx: number, dy: number, fingers: 1 | 2): Promise<void> {
   const box = (await (await page.$('#touched'))!.boundingBox())!;
   const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
-  const starts = fingers === 1 ? [[x, y]] : [[x - 30, y], [x + 30, y]];
+  const starts =
+    fingers === 1
+      ? [[x, y]]
+      : [
+          [x - 30, y],
+          [x + 30, y],
+        ];
   const touches = [];
   for (const [sx, sy] of starts) touches.push(await page.touchscreen.touchStart(sx, sy));
   for (let step = 1; step <= 8; step++) {

@@ -13,7 +13,10 @@ function attempt(label, command) {
     execSync(command, { stdio: ['ignore', 'inherit', 'pipe'], timeout: 10 * 60 * 1000 });
     return true;
   } catch (error) {
-    const reason = String(error.stderr ?? error.message).split('\n').find((line) => /error/i.test(line)) ?? 'failed';
+    const reason =
+      String(error.stderr ?? error.message)
+        .split('\n')
+        .find((line) => /error/i.test(line)) ?? 'failed';
     console.log(`[oceano] that did not work: ${reason.trim()}`);
     return false;
   }
@@ -28,9 +31,13 @@ try {
 }
 if (!browser) {
   const root = typeof process.getuid === 'function' && process.getuid() === 0;
-  attempt('trying puppeteer\'s Chrome download', 'npx --no-install puppeteer browsers install chrome') ||
-    (root && existsSync('/usr/bin/apt-get') &&
-      attempt('installing Debian\'s chromium with apt-get', 'apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium fonts-dejavu-core'));
+  attempt("trying puppeteer's Chrome download", 'npx --no-install puppeteer browsers install chrome') ||
+    (root &&
+      existsSync('/usr/bin/apt-get') &&
+      attempt(
+        "installing Debian's chromium with apt-get",
+        'apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium fonts-dejavu-core',
+      ));
   browser = await locateBrowser();
 }
 if (!browser) {

@@ -34,7 +34,11 @@ afterAll(async () => {
 });
 
 const gpu = <K extends keyof FftParityApi>(name: K, ...args: Parameters<FftParityApi[K]>): Promise<ReturnType<FftParityApi[K]>> =>
-  page.evaluate((n, a) => (window as unknown as { fftParity: Record<string, (...x: unknown[]) => unknown> }).fftParity[n](...a), name, args as unknown[]) as Promise<ReturnType<FftParityApi[K]>>;
+  page.evaluate(
+    (n, a) => (window as unknown as { fftParity: Record<string, (...x: unknown[]) => unknown> }).fftParity[n](...a),
+    name,
+    args as unknown[],
+  ) as Promise<ReturnType<FftParityApi[K]>>;
 
 /** fft.js reference for the packed layout: RGBA texel = two complex numbers; inverse, unnormalised. */
 function cpuInverse(n: number, input: number[]): number[] {
@@ -133,7 +137,10 @@ describe('GPU FFT against fft.js', () => {
 describe('GPU FFT stages: radix 4 and radix 2', () => {
   // The passes run radix 4 wherever it fits (stockhamRadices); the radix-2 stage runs alone for
   // odd log₂n (128 = 2·4³), so here the radix-2 pass is also checked on its own, every stage.
-  for (const radices of [[2, 2, 2, 2, 2, 2, 2], [4, 4, 4, 2]]) {
+  for (const radices of [
+    [2, 2, 2, 2, 2, 2, 2],
+    [4, 4, 4, 2],
+  ]) {
     it(`seeded random spectra, n = 128, stages ${radices.join(', ')}: within 1e-4 relative`, async () => {
       const n = 128;
       const [a, b] = cases[cases.length - 1].input(n);
@@ -163,7 +170,9 @@ describe('GPU spectral ocean against its CPU twin', () => {
           let mm = 0;
           for (let i = 0; i < displacement.length; i++) mm = Math.max(mm, Math.abs(displacement[i] - f.displacement[i]));
           const rel = [relativeError(displacement, f.displacement), relativeError(derivatives, f.derivatives)];
-          console.log(`${name} t=${t} cascade ${c}: max |Δ| ${(mm * 1000).toFixed(4)} mm, relative ${rel.map((e) => e.toExponential(2)).join(', ')}`);
+          console.log(
+            `${name} t=${t} cascade ${c}: max |Δ| ${(mm * 1000).toFixed(4)} mm, relative ${rel.map((e) => e.toExponential(2)).join(', ')}`,
+          );
           expect(mm).toBeLessThan(1e-3);
           for (const e of rel) expect(e).toBeLessThan(1e-4);
         });

@@ -115,7 +115,9 @@ describe('waves=fft picture', () => {
     // Negative control for the lower bound: thresholds biased 0.1 lower in J foam far less.
     await page.evaluate(() => window.oceano.setParams({ foam: true, foamThreshold: -0.1 }));
     const biased = await meanWhite();
-    console.log(`[oceano] white share of the sea at 15 m/s: foam ${(withFoam * 100).toFixed(2)} %, foam=false ${(without * 100).toFixed(2)} %, threshold −0.1 ${(biased * 100).toFixed(2)} %`);
+    console.log(
+      `[oceano] white share of the sea at 15 m/s: foam ${(withFoam * 100).toFixed(2)} %, foam=false ${(without * 100).toFixed(2)} %, threshold −0.1 ${(biased * 100).toFixed(2)} %`,
+    );
     // Measured: 4.06 % of the left half's sea pixels white with foam (a group passes close at
     // t = 70 s), 0.09 % without (the glitter of a steep face reaching the left half at one
     // instant). This low camera sees the foam foreshortened, and far off as thin lace; seen from

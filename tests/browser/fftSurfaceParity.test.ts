@@ -64,7 +64,10 @@ function randomCases(): Cases {
   // Grid points as float32, as every ocean vertex's are, so both sides evaluate the same (x, z).
   return TIMES.map((t) => ({
     t,
-    points: Array.from({ length: POINTS_PER_TIME }, () => [Math.fround((random() * 2 - 1) * EXTENT), Math.fround((random() * 2 - 1) * EXTENT)] as [number, number]),
+    points: Array.from(
+      { length: POINTS_PER_TIME },
+      () => [Math.fround((random() * 2 - 1) * EXTENT), Math.fround((random() * 2 - 1) * EXTENT)] as [number, number],
+    ),
   }));
 }
 
@@ -72,7 +75,9 @@ describe('waves=fft: CPU twin vs drawn mesh', () => {
   // TIMES.length × POINTS_PER_TIME points, |x| and |z| up to EXTENT.
   it.each(QUERIES)(`agrees within 1 mm on seeded random points out to ${EXTENT} m and up to t = 1e6 s: %s`, async (query) => {
     const worst = await compare(query, randomCases(), 0);
-    console.log(`[oceano] FFT CPU–GPU parity (${query}): max |Δheight| = ${worst.height.toExponential(2)} m at (${worst.at.x}, ${worst.at.z}, t=${worst.at.t}), max |Δnormal| = ${worst.normal.toExponential(2)}`);
+    console.log(
+      `[oceano] FFT CPU–GPU parity (${query}): max |Δheight| = ${worst.height.toExponential(2)} m at (${worst.at.x}, ${worst.at.z}, t=${worst.at.t}), max |Δnormal| = ${worst.normal.toExponential(2)}`,
+    );
     expect(worst.height).toBeLessThan(HEIGHT_TOLERANCE);
     expect(worst.normal).toBeLessThan(1e-3);
   });

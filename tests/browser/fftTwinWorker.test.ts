@@ -44,7 +44,8 @@ async function playAndSample(page: Page, points: [number, number][]): Promise<Pl
     o.setTime(twin.fieldsTime);
     const heights = points.map(([x, z]) => o.sampleSurface(x, z).height);
     const after = o.stats().twin!;
-    if (after.fieldsTime !== twin.fieldsTime) throw new Error(`The fields moved on while sampling: ${twin.fieldsTime} -> ${after.fieldsTime}`);
+    if (after.fieldsTime !== twin.fieldsTime)
+      throw new Error(`The fields moved on while sampling: ${twin.fieldsTime} -> ${after.fieldsTime}`);
     return { isolated: window.crossOriginIsolated, twin, params: o.getParams(), heights };
   }, points);
 }
@@ -59,7 +60,7 @@ describe('the FFT twin fed by its Worker while the clock plays', () => {
   const random = seededRandom(20261122);
   const points: [number, number][] = Array.from({ length: 12 }, () => [(random() - 0.5) * 400, (random() - 0.5) * 400]);
 
-  it('on the app\'s own server: fields from the Worker, of the time they claim', async () => {
+  it("on the app's own server: fields from the Worker, of the time they claim", async () => {
     const { page, consoleErrors } = await openOcean(harness, QUERY, 320, 180);
     try {
       const played = await playAndSample(page, points);

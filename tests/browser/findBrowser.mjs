@@ -3,7 +3,12 @@
 // tests/browser/ensure-browser.mjs (which installs one when none is found) and the browser tests.
 import { existsSync } from 'node:fs';
 
-export const SYSTEM_BROWSERS = ['/usr/bin/chromium', '/usr/bin/chromium-browser', '/usr/bin/google-chrome', '/usr/bin/google-chrome-stable'];
+export const SYSTEM_BROWSERS = [
+  '/usr/bin/chromium',
+  '/usr/bin/chromium-browser',
+  '/usr/bin/google-chrome',
+  '/usr/bin/google-chrome-stable',
+];
 
 /** The path of a usable browser, or undefined. Throws only when CHROME_PATH names nothing. */
 export async function locateBrowser() {

@@ -20,7 +20,12 @@ describe('booting', () => {
         rejection = (error as Error).message;
       }
       const fatal = document.querySelector('.oceano-fatal') as HTMLElement | null;
-      return { isElement: api instanceof Element, rejection, text: fatal?.innerText ?? '', visible: fatal !== null && fatal.getBoundingClientRect().height > 0 };
+      return {
+        isElement: api instanceof Element,
+        rejection,
+        text: fatal?.innerText ?? '',
+        visible: fatal !== null && fatal.getBoundingClientRect().height > 0,
+      };
     });
     expect(facts.isElement).toBe(false);
     expect(facts.text).toMatch(/served over http\(s\)/);
@@ -40,7 +45,12 @@ describe('booting', () => {
     });
     await page.goto(harness.baseUrl, { waitUntil: 'load' });
     await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined, { timeout: 10_000 });
-    const rejection = await page.evaluate(() => window.oceano.ready.then(() => 'resolved', (error: Error) => error.message));
+    const rejection = await page.evaluate(() =>
+      window.oceano.ready.then(
+        () => 'resolved',
+        (error: Error) => error.message,
+      ),
+    );
     expect(rejection).toMatch(/WebGL2/);
     expect(await page.$eval('.oceano-fatal', (el) => (el as HTMLElement).innerText)).toBe(rejection);
     await page.close();
@@ -57,7 +67,11 @@ describe('loading', () => {
     (window as unknown as { __loadingSeen: string[] }).__loadingSeen = seen;
     const look = () => {
       const box = document.querySelector('.oceano-loading');
-      const state = box ? Array.from(box.querySelectorAll('li')).map((li) => `${li.dataset.step}:${li.dataset.state}`).join(' ') || 'static' : 'none';
+      const state = box
+        ? Array.from(box.querySelectorAll('li'))
+            .map((li) => `${li.dataset.step}:${li.dataset.state}`)
+            .join(' ') || 'static'
+        : 'none';
       if (seen[seen.length - 1] !== state) seen.push(state);
       requestAnimationFrame(look);
     };
@@ -84,14 +98,20 @@ describe('loading', () => {
     const beforeScript = await page.evaluate(() => {
       const box = document.querySelector('.oceano-loading') as HTMLElement;
       const r = box.getBoundingClientRect();
-      return { api: typeof (window as { oceano?: unknown }).oceano, text: box.textContent, visible: r.width > 50 && r.height > 10 && getComputedStyle(box).visibility === 'visible' };
+      return {
+        api: typeof (window as { oceano?: unknown }).oceano,
+        text: box.textContent,
+        visible: r.width > 50 && r.height > 10 && getComputedStyle(box).visibility === 'visible',
+      };
     });
     expect(held.has('script')).toBe(true);
     expect(beforeScript).toEqual({ api: 'undefined', text: 'Loading Oceano…', visible: true });
     held.get('script')!();
     await page.waitForFunction(() => document.querySelector('.oceano-loading li[data-step="boat"][data-state="active"]') !== null);
     const whileBoat = await page.evaluate(() => ({
-      steps: Array.from(document.querySelectorAll('.oceano-loading li')).map((li) => `${(li as HTMLElement).dataset.step}:${(li as HTMLElement).dataset.state}`),
+      steps: Array.from(document.querySelectorAll('.oceano-loading li')).map(
+        (li) => `${(li as HTMLElement).dataset.step}:${(li as HTMLElement).dataset.state}`,
+      ),
       role: document.querySelector('.oceano-loading')!.getAttribute('role'),
     }));
     expect(whileBoat).toEqual({ steps: ['sky:done', 'firstFrame:done', 'boat:active'], role: 'status' });

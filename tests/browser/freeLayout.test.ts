@@ -64,7 +64,8 @@ describe('the free part of the canvas', () => {
       const problems: string[] = [];
       const check = (what: string, boxes: ViewBoxes) => {
         const free = measuredFreeArea(boxes);
-        for (const [k, v] of Object.entries(free)) expect(Math.abs(boxes.published[k as keyof Rect] - v), `${what}: published free ${k}`).toBeLessThanOrEqual(1);
+        for (const [k, v] of Object.entries(free))
+          expect(Math.abs(boxes.published[k as keyof Rect] - v), `${what}: published free ${k}`).toBeLessThanOrEqual(1);
         problems.push(...outside(boxes, free).map((p) => `${what}: ${p}`));
         // The lesson card and the panel never cover each other.
         const [drawer, panel] = boxes.panels;
@@ -76,14 +77,17 @@ describe('the free part of the canvas', () => {
       let boxes = await showLesson(page, 'compare-models', { fresnelPlot: true, physics: true });
       let free = check('compare', boxes);
       const kinds = new Set(boxes.overlays.map((o) => o.kind));
-      for (const kind of ['compareLabel', 'compareDivider', 'fresnelPlot', 'physicsPanel']) expect(kinds.has(kind as never), kind).toBe(true);
+      for (const kind of ['compareLabel', 'compareDivider', 'fresnelPlot', 'physicsPanel'])
+        expect(kinds.has(kind as never), kind).toBe(true);
       const { drawn, laidOut } = dividerCheck(boxes, free);
       drawn.forEach((x, i) => expect(Math.abs(x - laidOut[i]), `divider ${i}`).toBeLessThanOrEqual(1));
       // Each model keeps at least a quarter of the free width in sight (the strips beyond reach under the panels).
       const edges = [free.x, ...laidOut, free.x + free.width];
       for (let i = 0; i + 1 < edges.length; i++) expect(edges[i + 1] - edges[i], `strip ${i}`).toBeGreaterThanOrEqual(free.width / 4);
       // Control: the strips laid over the whole canvas, as before, leave a model a sliver (or nothing) of the free part.
-      const old = compareStrips(3, 1 / 3, 2 / 3, boxes.canvas.width).map((s) => Math.max(0, Math.min(s.x1, free.x + free.width) - Math.max(s.x0, free.x)));
+      const old = compareStrips(3, 1 / 3, 2 / 3, boxes.canvas.width).map((s) =>
+        Math.max(0, Math.min(s.x1, free.x + free.width) - Math.max(s.x0, free.x)),
+      );
       if (width > 560) expect(Math.min(...old), 'old strips').toBeLessThan(free.width / 4);
 
       // The Perlin stages: the pictures the renderer draws and their captions.
@@ -102,13 +106,19 @@ describe('the free part of the canvas', () => {
         boxes = await showLesson(page, lesson);
         check(lesson, boxes);
         const labels = boxes.overlays.filter((o) => o.kind === 'lessonLabel');
-        console.log(`[oceano] ${width}×${height} ${lesson}: ${labels.length} labels in sight, ${labels.map((l) => `"${l.text}" ${Math.round(l.box.x)},${Math.round(l.box.y)}`).join('; ')}`);
+        console.log(
+          `[oceano] ${width}×${height} ${lesson}: ${labels.length} labels in sight, ${labels.map((l) => `"${l.text}" ${Math.round(l.box.x)},${Math.round(l.box.y)}`).join('; ')}`,
+        );
         if (lesson === 'snell-window') expect(labels.map((l) => l.text)).toEqual(['48,6°: borde de la ventana de Snell']);
         // Both guide lines named on every screen: on the phone the lines run past the edge and into the sheet at 45 m, where the label first stood (0 in sight then).
         if (lesson === 'kelvin-wake') expect(labels.map((l) => l.text)).toEqual(['19,47° (Kelvin)', '19,47° (Kelvin)']);
       }
       // The sea tools' card, opened from the panel's button as a user does.
-      await page.evaluate(() => Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((b) => /Sea tools|Herramientas/i.test(b.textContent ?? ''))!.click());
+      await page.evaluate(() =>
+        Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button'))
+          .find((b) => /Sea tools|Herramientas/i.test(b.textContent ?? ''))!
+          .click(),
+      );
       await page.waitForSelector('.oceano-sea-tools:not([hidden])');
       boxes = await viewBoxes(page);
       check('sea tools', boxes);
@@ -129,7 +139,10 @@ describe('the free part of the canvas', () => {
       // Control: with the old stylesheet rules the same views put overlays under the panels or past the canvas's edge.
       await addRules(page, OLD_LAYOUT);
       const failing: string[] = [];
-      for (const [lesson, extra] of [['compare-models', { fresnelPlot: true, physics: true }], ['snell-window', {}]] as const) {
+      for (const [lesson, extra] of [
+        ['compare-models', { fresnelPlot: true, physics: true }],
+        ['snell-window', {}],
+      ] as const) {
         boxes = await showLesson(page, lesson, extra);
         failing.push(...outside(boxes, measuredFreeArea(boxes)));
       }
@@ -170,9 +183,17 @@ describe('inside an <oceano-view>', () => {
         }, id);
         const boxes = await viewBoxes(page, `#${id}`);
         // The figure's own box is its canvas's: every overlay, the card included, must lie in it.
-        const all = { ...boxes, overlays: [...boxes.overlays, ...boxes.panels.map((box) => ({ kind: 'lessonLabel' as const, text: 'lesson card', box }))] };
+        const all = {
+          ...boxes,
+          overlays: [...boxes.overlays, ...boxes.panels.map((box) => ({ kind: 'lessonLabel' as const, text: 'lesson card', box }))],
+        };
         const stray = [...outside(all, boxes.canvas), ...outside(boxes, boxes.published).map((p) => `under the card: ${p}`)];
-        results[id] = { box: boxes.canvas, card: boxes.panels[0] ?? null, stray, kinds: [...new Set(boxes.overlays.map((o) => o.kind))].sort() };
+        results[id] = {
+          box: boxes.canvas,
+          card: boxes.panels[0] ?? null,
+          stray,
+          kinds: [...new Set(boxes.overlays.map((o) => o.kind))].sort(),
+        };
       }
       return results;
     };
@@ -194,7 +215,9 @@ describe('inside an <oceano-view>', () => {
     // Control: the old stylesheet rules put the physics panel (370 px wide) past a 320-px figure's edge.
     await addRules(page, OLD_LAYOUT);
     const old = await measure();
-    console.log(`[oceano] figures with the old layout: ${JSON.stringify(Object.fromEntries(Object.entries(old).map(([id, r]) => [id, r.stray])))}`);
+    console.log(
+      `[oceano] figures with the old layout: ${JSON.stringify(Object.fromEntries(Object.entries(old).map(([id, r]) => [id, r.stray])))}`,
+    );
     expect(old.small.stray.length).toBeGreaterThan(0);
     await page.close();
   }, 600_000);

@@ -36,7 +36,10 @@ describe('waves=gerstner: CPU twin vs the GPU chunk in the app', () => {
     const random = seededRandom(PARITY_SEED);
     const cases = TIMES.map((t) => ({
       t,
-      points: Array.from({ length: POINTS_PER_TIME }, () => [Math.fround((random() * 2 - 1) * EXTENT), Math.fround((random() * 2 - 1) * EXTENT)] as [number, number]),
+      points: Array.from(
+        { length: POINTS_PER_TIME },
+        () => [Math.fround((random() * 2 - 1) * EXTENT), Math.fround((random() * 2 - 1) * EXTENT)] as [number, number],
+      ),
     }));
     const { page, consoleErrors } = await openOcean(harness, query);
     const worst: Worst = await page.evaluate(async (cases) => {

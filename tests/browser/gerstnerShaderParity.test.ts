@@ -80,7 +80,14 @@ afterAll(async () => {
 
 /** Worst |Δ| of displacement and normal components over all times and points. */
 async function parity(chunk: string): Promise<{ displacement: number; normal: number }> {
-  const sea = gerstnerSea({ count: 64, seed: 7, spectrum: piersonMoskowitz(15).spectrum, spreading: cosineSquared, windDirection: 0.5, steepness: 1 });
+  const sea = gerstnerSea({
+    count: 64,
+    seed: 7,
+    spectrum: piersonMoskowitz(15).spectrum,
+    spreading: cosineSquared,
+    windDirection: 0.5,
+    steepness: 1,
+  });
   const model = new GerstnerWaveModel(sea);
   const random = seededRandom(PARITY_SEED);
   // float32 points, as every ocean vertex is, so both sides evaluate the same (x, z).
@@ -109,13 +116,15 @@ async function parity(chunk: string): Promise<{ displacement: number; normal: nu
 describe('Gerstner GLSL chunk vs CPU twin (SwiftShader, transform feedback)', () => {
   it(`agrees within 1e-4 m on 512 points (seed ${PARITY_SEED}) up to 3 km out, t up to 1e6 s, 64 waves at Q = 1`, async () => {
     const worst = await parity(CHUNK);
-    console.log(`[oceano] Gerstner GLSL parity: max |Δd| = ${worst.displacement.toExponential(2)} m, max |Δn| = ${worst.normal.toExponential(2)}`);
+    console.log(
+      `[oceano] Gerstner GLSL parity: max |Δd| = ${worst.displacement.toExponential(2)} m, max |Δn| = ${worst.normal.toExponential(2)}`,
+    );
     // Measured 2.4e-5 m and 2.6e-6 (sea of Hs ≈ 5 m).
     expect(worst.displacement).toBeLessThan(1e-4);
     expect(worst.normal).toBeLessThan(1e-4);
   }, 120_000);
 
-  it('negative control: GLSL\'s own sin (about 2^-11 accurate on SwiftShader) breaks the 1e-4 m budget', async () => {
+  it("negative control: GLSL's own sin (about 2^-11 accurate on SwiftShader) breaks the 1e-4 m budget", async () => {
     const native = withNativeSine(CHUNK);
     // Measured 5.8e-4 m.
     expect((await parity(native)).displacement).toBeGreaterThan(1e-4);

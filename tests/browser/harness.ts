@@ -50,7 +50,9 @@ export async function startHarness(args: string[] = BROWSER_ARGS, connectTo?: st
       if (connectTo) {
         // A page a test left open must not keep the next file's browser busy; one that does
         // not close within seconds (a hung renderer) is left to the browser's own exit.
-        const closing = (await browser.pages()).filter((page) => page.url() !== 'about:blank').map((page) => page.close().catch(() => undefined));
+        const closing = (await browser.pages())
+          .filter((page) => page.url() !== 'about:blank')
+          .map((page) => page.close().catch(() => undefined));
         await Promise.race([Promise.all(closing), new Promise((resolve) => setTimeout(resolve, 10_000))]);
         await browser.disconnect();
       } else {
@@ -72,7 +74,14 @@ export interface OpenedPage {
  * Opens the app with a query string at a size, waits for `oceano.ready`. timeoutMs bounds
  * each wait (puppeteer's default, 30 s, unless given: the benchmark on a busy machine needs more).
  */
-export async function openOcean(harness: Harness, query: string, width = 640, height = 360, path = '', timeoutMs?: number): Promise<OpenedPage> {
+export async function openOcean(
+  harness: Harness,
+  query: string,
+  width = 640,
+  height = 360,
+  path = '',
+  timeoutMs?: number,
+): Promise<OpenedPage> {
   const page = await harness.browser.newPage();
   if (timeoutMs !== undefined) page.setDefaultTimeout(timeoutMs);
   const consoleErrors: string[] = [];
@@ -90,7 +99,8 @@ export async function openOcean(harness: Harness, query: string, width = 640, he
 }
 
 /** What is drawn over a canvas (control panel, notices, play button): hidden while a canvas is screenshot. */
-const OVERLAYS = '.lil-gui, .oceano-notices, .oceano-play, .oceano-fresnel-plot, .oceano-compare, .oceano-lessons, .oceano-lesson-label, .oceano-figure-caption, .oceano-sea-tools, .oceano-ruler-label';
+const OVERLAYS =
+  '.lil-gui, .oceano-notices, .oceano-play, .oceano-fresnel-plot, .oceano-compare, .oceano-lessons, .oceano-lesson-label, .oceano-figure-caption, .oceano-sea-tools, .oceano-ruler-label';
 
 /** Screenshots a canvas element with the overlays above it hidden, so only the ocean is in the picture. */
 export async function screenshotCanvas(page: Page, selector = 'canvas'): Promise<Buffer> {

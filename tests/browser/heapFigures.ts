@@ -29,7 +29,18 @@ export async function heapFigures(session: CDPSession): Promise<HeapFigures> {
 export const heapLessCode = (heap: HeapFigures): number => heap.used - heap.snapshot.code;
 
 /** Snapshot node types that are the page's JavaScript values, not the engine's structures. */
-const VALUE_TYPES = new Set(['object', 'array', 'string', 'concatenated string', 'sliced string', 'closure', 'number', 'symbol', 'bigint', 'regexp']);
+const VALUE_TYPES = new Set([
+  'object',
+  'array',
+  'string',
+  'concatenated string',
+  'sliced string',
+  'closure',
+  'number',
+  'symbol',
+  'bigint',
+  'regexp',
+]);
 
 /**
  * The heap after GC from a heap snapshot: everything, and V8's compiled code among it
@@ -42,7 +53,10 @@ async function heapSnapshot(session: CDPSession): Promise<HeapFigures['snapshot'
   session.on('HeapProfiler.addHeapSnapshotChunk', collect);
   await session.send('HeapProfiler.takeHeapSnapshot', { reportProgress: false });
   session.off('HeapProfiler.addHeapSnapshotChunk', collect);
-  const snapshot = JSON.parse(chunks.join('')) as { snapshot: { meta: { node_fields: string[]; node_types: [string[]] } }; nodes: number[] };
+  const snapshot = JSON.parse(chunks.join('')) as {
+    snapshot: { meta: { node_fields: string[]; node_types: [string[]] } };
+    nodes: number[];
+  };
   const fields = snapshot.snapshot.meta.node_fields;
   const typeNames = snapshot.snapshot.meta.node_types[0];
   const [typeAt, sizeAt, stride] = [fields.indexOf('type'), fields.indexOf('self_size'), fields.length];

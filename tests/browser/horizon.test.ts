@@ -66,7 +66,11 @@ describe('the sea reaches the horizon', () => {
     const { page } = await openMagentaPage();
     await page.evaluate(() => {
       window.oceano.three.scene.traverse((o) => {
-        const mesh = o as unknown as { geometry?: { isInstancedBufferGeometry?: boolean; getAttribute?: (n: string) => { count: number } | undefined }; material?: { uniforms?: Record<string, unknown> }; visible: boolean };
+        const mesh = o as unknown as {
+          geometry?: { isInstancedBufferGeometry?: boolean; getAttribute?: (n: string) => { count: number } | undefined };
+          material?: { uniforms?: Record<string, unknown> };
+          visible: boolean;
+        };
         if (!mesh.geometry?.getAttribute || !mesh.material?.uniforms?.uFarFade) return;
         const vertices = mesh.geometry.getAttribute('position')?.count ?? 0;
         // The skirt (not instanced) and the ring cells' grid (7 × 7 vertices).

@@ -14,7 +14,13 @@ const harness = useHarness();
  */
 const FLAT = 'interactiveWaves=1&swellAmplitude=0&rippleStrength=0';
 /** Texel centres (odd multiples of 0.25 m with the field centred on a whole metre) around the stones. */
-const POINTS: [number, number][] = [[1.25, -2.25], [3.75, -0.25], [-0.75, -4.75], [5.25, -3.25], [2.25, 1.75]];
+const POINTS: [number, number][] = [
+  [1.25, -2.25],
+  [3.75, -0.25],
+  [-0.75, -4.75],
+  [5.25, -3.25],
+  [2.25, 1.75],
+];
 
 /** sampleSurface at `points` once the field's read-back has caught up with a paused view (frames drawn until it has). */
 async function fieldAt(page: Page, points: [number, number][] = POINTS): Promise<number[]> {
@@ -62,7 +68,9 @@ describe('the interactive waves in the app', () => {
 
     const stepped = await openVirtual(query(stone));
     await stepped.evaluate(async (n) => {
-      const step = Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((b) => b.textContent?.includes('Step one frame'));
+      const step = Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((b) =>
+        b.textContent?.includes('Step one frame'),
+      );
       if (!step) throw new Error('No Step button in the panel.');
       for (let i = 0; i < n; i++) {
         step.click();
@@ -109,7 +117,9 @@ describe('the interactive waves in the app', () => {
       }
     });
     expect(refused).toMatch(/x must be a finite number/);
-    expect(await page.evaluate(() => window.oceano.notices())).toEqual(['disturb: x = NaN is not in [-1000000, 1000000] m; no stone dropped.']);
+    expect(await page.evaluate(() => window.oceano.notices())).toEqual([
+      'disturb: x = NaN is not in [-1000000, 1000000] m; no stone dropped.',
+    ]);
     expect(await fieldAt(page)).toEqual(before);
 
     // Two stones, the second with a radius under one texel (raised, and said), near the boat at (7, −5).
@@ -130,9 +140,15 @@ describe('the interactive waves in the app', () => {
       const [x, , z] = position;
       const [fx, fz] = [Math.sin(heading), -Math.cos(heading)];
       const at = (u: number, v: number) => window.oceano.sampleSurface(x + u * fx - v * fz, z + u * fz + v * fx).height;
-      return { heave: target.position[1], beside: 0.25 * (at(5, 0) + at(-5, 0) + at(0, 2.3) + at(0, -2.3)), under: window.oceano.sampleSurface(x, z).height };
+      return {
+        heave: target.position[1],
+        beside: 0.25 * (at(5, 0) + at(-5, 0) + at(0, 2.3) + at(0, -2.3)),
+        under: window.oceano.sampleSurface(x, z).height,
+      };
     });
-    console.log(`Boat: target heave ${boat.heave.toFixed(5)} m, the water beside the hull ${boat.beside.toFixed(5)} m, under it ${boat.under} m`);
+    console.log(
+      `Boat: target heave ${boat.heave.toFixed(5)} m, the water beside the hull ${boat.beside.toFixed(5)} m, under it ${boat.under} m`,
+    );
     expect(Math.abs(boat.heave)).toBeGreaterThan(1e-4);
     expect(Math.abs(boat.heave - boat.beside)).toBeLessThan(1e-6);
     expect(boat.under).toBe(0);
@@ -152,7 +168,9 @@ describe('the interactive waves in the app', () => {
     await stripped.page.close();
 
     const bad = await openOcean(harness, `${FLAT}&t=2&stones=2,3,-2,1.2`, 320, 180);
-    expect(await bad.page.evaluate(() => window.oceano.notices())).toEqual(['"stones=2,3,-2,1.2" is not a list of t,x,z,radius,height in range; no stones.']);
+    expect(await bad.page.evaluate(() => window.oceano.notices())).toEqual([
+      '"stones=2,3,-2,1.2" is not a list of t,x,z,radius,height in range; no stones.',
+    ]);
     await bad.page.close();
   }, 900_000);
 
@@ -168,7 +186,9 @@ describe('the interactive waves in the app', () => {
     const worst = (fault: boolean) =>
       page.evaluate(
         async (p, planted) => {
-          const ocean = window.oceano.three.scene.getObjectByName('oceano-ocean') as unknown as { interactiveWaveUniforms: { uIWaveHandOver: { value: { z: number } } } };
+          const ocean = window.oceano.three.scene.getObjectByName('oceano-ocean') as unknown as {
+            interactiveWaveUniforms: { uIWaveHandOver: { value: { z: number } } };
+          };
           const handOver = ocean.interactiveWaveUniforms.uIWaveHandOver.value;
           if (planted) handOver.z += 4;
           const gpu = await window.oceano.probeGpu(p);
@@ -187,7 +207,9 @@ describe('the interactive waves in the app', () => {
       );
     const ok = await worst(false);
     const control = await worst(true);
-    console.log(`Hand-over at D = ${ok.distance.toFixed(2)} m: |GPU − CPU| ${ok.difference.toExponential(2)} m over ${points.length} points (largest height ${ok.largest.toFixed(3)} m); the GPU's hand-over 4 m out: ${control.difference.toExponential(2)} m`);
+    console.log(
+      `Hand-over at D = ${ok.distance.toFixed(2)} m: |GPU − CPU| ${ok.difference.toExponential(2)} m over ${points.length} points (largest height ${ok.largest.toFixed(3)} m); the GPU's hand-over 4 m out: ${control.difference.toExponential(2)} m`,
+    );
     expect(ok.distance).toBeCloseTo((2 * Math.PI * 36) / 9.81, 4);
     expect(ok.largest).toBeGreaterThan(0.01);
     expect(ok.difference).toBeLessThan(3e-5);

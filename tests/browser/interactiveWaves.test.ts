@@ -32,7 +32,12 @@ afterAll(async () => {
 });
 
 const draw = (on: boolean, stone: boolean, seconds: number): ReturnType<InteractiveWavesApi['draw']> =>
-  page.evaluate((a, b, c) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.draw(a, b, c), on, stone, seconds);
+  page.evaluate(
+    (a, b, c) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.draw(a, b, c),
+    on,
+    stone,
+    seconds,
+  );
 
 function differing(a: number[], b: number[], threshold: number): number {
   let count = 0;
@@ -55,8 +60,12 @@ describe('interactive waves in the Ocean', () => {
     const calmChanged = differing(calm.pixels, off.pixels, 1);
     const stoneChanged = differing(stone.pixels, off.pixels, 1);
     const mean = (p: number[]) => p.reduce((s, v) => s + v, 0) / p.length;
-    console.log(`Field's largest height with the stone: ${stone.largestHeight.toFixed(3)} m; mean pixel value ${mean(stone.pixels).toFixed(1)}`);
-    console.log(`Pixels off by more than 1 level from the view without the field: calm field ${calmChanged}, stone ${stoneChanged} of ${pixels}`);
+    console.log(
+      `Field's largest height with the stone: ${stone.largestHeight.toFixed(3)} m; mean pixel value ${mean(stone.pixels).toFixed(1)}`,
+    );
+    console.log(
+      `Pixels off by more than 1 level from the view without the field: calm field ${calmChanged}, stone ${stoneChanged} of ${pixels}`,
+    );
     expect(calmChanged).toBe(0);
     expect(stoneChanged).toBeGreaterThan(0.01 * pixels);
   }, 600_000);
@@ -64,7 +73,8 @@ describe('interactive waves in the Ocean', () => {
   // The picture differs from the same field with the tint and foam cut out of ocean.frag (planted fault: cut
   // from both, nothing differs).
   it("tints steep water paler and greener, and foams it past 60 % of Stokes's limit", async () => {
-    const steep = (fault: boolean) => page.evaluate((f) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.steep(f), fault);
+    const steep = (fault: boolean) =>
+      page.evaluate((f) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.steep(f), fault);
     /** Pixels that differ, and how much greener they came out on average (levels of green). */
     const tinted = (a: number[], b: number[]) => {
       let count = 0;
@@ -82,7 +92,9 @@ describe('interactive waves in the Ocean', () => {
     const pixels = shown.pixels.length / 4;
     const tint = tinted(shown.pixels, cut.pixels);
     const control = tinted(cutAgain.pixels, cut.pixels);
-    console.log(`Steepest slope of the field ${shown.steepest.toFixed(2)} (tint from 0.03, foam from 0.35, Stokes's limit 0.58); pixels changed by the tint and foam ${tint.count} of ${pixels}, ${tint.green.toFixed(1)} levels greener on average; with both cut: ${control.count}`);
+    console.log(
+      `Steepest slope of the field ${shown.steepest.toFixed(2)} (tint from 0.03, foam from 0.35, Stokes's limit 0.58); pixels changed by the tint and foam ${tint.count} of ${pixels}, ${tint.green.toFixed(1)} levels greener on average; with both cut: ${control.count}`,
+    );
     expect(shown.steepest).toBeGreaterThan(0.35);
     expect(tint.count).toBeGreaterThan(0.01 * pixels);
     expect(tint.green).toBeGreaterThan(5);
@@ -92,7 +104,11 @@ describe('interactive waves in the Ocean', () => {
   // Planted fault: a stone a step later differs.
   it('gives the same field whether the clock plays, steps or jumps, and replays the stones after a jump back', async () => {
     const played = (times: number[], stones: { time: number; x: number; z: number }[]) =>
-      page.evaluate((t, s) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.played(t, s), times, stones);
+      page.evaluate(
+        (t, s) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.played(t, s),
+        times,
+        stones,
+      );
     const stones = [{ time: 0.1, x: 1, z: -2 }];
     // Frames at 60 Hz to 0.5 s; frames of uneven length; a jump from the stone to 0.5 s; and a
     // run past 0.5 s then back to it (the field restarts calm and replays the stone).
@@ -110,9 +126,18 @@ describe('interactive waves in the Ocean', () => {
   // Planted fault: a texel off does not.
   it('lets sampleSurface see the field through its read-back: at texel centres it gives the texel', async () => {
     // Texel centres of the grid centred on the origin lie at odd multiples of 0.25 m.
-    const points: [number, number][] = [[0.25, 0.25], [2.75, -1.25], [-4.25, 3.75]];
-    const { sampled, texels } = await page.evaluate((p) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.sampled(p), points);
-    console.log(`sampleSurface ${sampled.map((h) => h.toFixed(5)).join(', ')} m; field texels ${texels.map((h) => h.toFixed(5)).join(', ')} m`);
+    const points: [number, number][] = [
+      [0.25, 0.25],
+      [2.75, -1.25],
+      [-4.25, 3.75],
+    ];
+    const { sampled, texels } = await page.evaluate(
+      (p) => (window as unknown as { interactiveWaves: InteractiveWavesApi }).interactiveWaves.sampled(p),
+      points,
+    );
+    console.log(
+      `sampleSurface ${sampled.map((h) => h.toFixed(5)).join(', ')} m; field texels ${texels.map((h) => h.toFixed(5)).join(', ')} m`,
+    );
     expect(Math.max(...texels.map(Math.abs))).toBeGreaterThan(0.01);
     for (let k = 0; k < points.length; k++) expect(Math.abs(sampled[k] - texels[k])).toBeLessThan(1e-6);
     expect(Math.abs(sampled[0] - texels[1])).toBeGreaterThan(1e-3);

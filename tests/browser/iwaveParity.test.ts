@@ -34,7 +34,11 @@ afterAll(async () => {
 });
 
 const gpu = <K extends keyof IWaveParityApi>(name: K, ...args: Parameters<IWaveParityApi[K]>): Promise<ReturnType<IWaveParityApi[K]>> =>
-  page.evaluate((n, a) => (window as unknown as { iwaveParity: Record<string, (...x: unknown[]) => unknown> }).iwaveParity[n](...a), name, args as unknown[]) as Promise<ReturnType<IWaveParityApi[K]>>;
+  page.evaluate(
+    (n, a) => (window as unknown as { iwaveParity: Record<string, (...x: unknown[]) => unknown> }).iwaveParity[n](...a),
+    name,
+    args as unknown[],
+  ) as Promise<ReturnType<IWaveParityApi[K]>>;
 
 function worstDifference(got: ArrayLike<number>, want: ArrayLike<number>): { absolute: number; relative: number } {
   let diff = 0;
@@ -77,7 +81,9 @@ describe('GPU iWave against the CPU reference', () => {
     expect(centre).toEqual([cpu.centerX, cpu.centerZ]);
     const error = worstDifference(heights, cpu.height);
     const largest = Math.max(...Array.from(cpu.height, Math.abs));
-    console.log(`iWave parity, 256², 120 steps: worst |GPU − CPU| ${error.absolute.toExponential(2)} m, ${error.relative.toExponential(2)} of the largest height ${largest.toFixed(4)} m`);
+    console.log(
+      `iWave parity, 256², 120 steps: worst |GPU − CPU| ${error.absolute.toExponential(2)} m, ${error.relative.toExponential(2)} of the largest height ${largest.toFixed(4)} m`,
+    );
     // float32 against float64: measured 1.0e-4 of the largest height after these 120 steps.
     expect(error.relative).toBeLessThan(3e-4);
     const wrongWay = playOnCpu({ ...script, actions: script.actions.map((a) => (a.kind === 'recentre' ? { ...a, x: -a.x, z: -a.z } : a)) });
@@ -92,22 +98,34 @@ describe('GPU iWave against the CPU reference', () => {
   it('matches with a moving hull and the wave equation beside iWave, within 3e-4', async () => {
     // A boat at 4 m/s heading 70°, moved every other step, with a stone meeting it; the right
     // half of the grid runs the wave equation.
-    const hullAt = (step: number, offset = 0): MovingHull => ({ x: -12 + offset + 4 * Math.sin(1.22) * step / 60, z: 3 - 4 * Math.cos(1.22) * step / 60, heading: 1.22, speed: 4, length: 8, beam: 2.6, strength: 1 });
+    const hullAt = (step: number, offset = 0): MovingHull => ({
+      x: -12 + offset + (4 * Math.sin(1.22) * step) / 60,
+      z: 3 - (4 * Math.cos(1.22) * step) / 60,
+      heading: 1.22,
+      speed: 4,
+      length: 8,
+      beam: 2.6,
+      strength: 1,
+    });
     const moving = (offset: number): IWaveScript['actions'] => [
       { kind: 'disturb', disturbance: { x: -4, z: 8, radius: 1.2, height: 0.3 } },
       { kind: 'disturb', disturbance: { x: 20, z: -6, radius: 1, height: 0.25 } },
-      ...Array.from({ length: 45 }, (_, k): IWaveScript['actions'] => [{ kind: 'hull', hull: hullAt(2 * k, offset) }, { kind: 'step', count: 2 }]).flat(),
+      ...Array.from({ length: 45 }, (_, k): IWaveScript['actions'] => [
+        { kind: 'hull', hull: hullAt(2 * k, offset) },
+        { kind: 'step', count: 2 },
+      ]).flat(),
     ];
     const sideBySide: IWaveScript = { n, spacing: 0.5, dt: 1 / 60, damping: 0.02, equation: 'side-by-side', actions: moving(0) };
     const { heights } = await gpu('run', sideBySide);
     const cpu = playOnCpu(sideBySide);
     const error = worstDifference(heights, cpu.height);
     const largest = Math.max(...Array.from(cpu.height, Math.abs));
-    console.log(`iWave parity with a moving hull, side by side, 90 steps: worst |GPU − CPU| ${error.absolute.toExponential(2)} m, ${error.relative.toExponential(2)} of the largest height ${largest.toFixed(4)} m`);
+    console.log(
+      `iWave parity with a moving hull, side by side, 90 steps: worst |GPU − CPU| ${error.absolute.toExponential(2)} m, ${error.relative.toExponential(2)} of the largest height ${largest.toFixed(4)} m`,
+    );
     expect(error.relative).toBeLessThan(3e-4);
     const control = worstDifference(heights, playOnCpu({ ...sideBySide, actions: moving(0.5) }).height).relative;
     console.log(`Control (the hull half a metre off on the CPU): ${control.toExponential(2)} of the largest height`);
     expect(control).toBeGreaterThan(1e-2);
   }, 300_000);
-
 });

@@ -12,12 +12,23 @@ export interface IWaveScript {
   obstacle?: number[];
   /** Which equation (equationKernels); dispersive by default. */
   equation?: IWaveEquation;
-  actions: ({ kind: 'disturb'; disturbance: Disturbance } | { kind: 'step'; count: number } | { kind: 'recentre'; x: number; z: number } | { kind: 'hull'; hull: MovingHull | null })[];
+  actions: (
+    | { kind: 'disturb'; disturbance: Disturbance }
+    | { kind: 'step'; count: number }
+    | { kind: 'recentre'; x: number; z: number }
+    | { kind: 'hull'; hull: MovingHull | null }
+  )[];
 }
 
 /** The script on the CPU reference solver: the same kernels, sponge (IWAVE_SPONGE), damping, mask and hull as GpuIWave's. */
 export function playOnCpu(script: IWaveScript): IWaveGrid {
-  const grid = new IWaveGrid({ n: script.n, spacing: script.spacing, ...equationKernels(script.equation ?? 'dispersive', script.spacing), damping: script.damping, sponge: IWAVE_SPONGE });
+  const grid = new IWaveGrid({
+    n: script.n,
+    spacing: script.spacing,
+    ...equationKernels(script.equation ?? 'dispersive', script.spacing),
+    damping: script.damping,
+    sponge: IWAVE_SPONGE,
+  });
   if (script.obstacle) grid.obstacle.set(script.obstacle);
   for (const action of script.actions) {
     if (action.kind === 'disturb') grid.disturb(action.disturbance);

@@ -38,7 +38,12 @@ describe('keyboard and accessibility', () => {
   it('shows a focus ring on lil-gui controls without hover, and names ▶ and the canvas by what they do', async () => {
     await desk.restoring(async (page) => {
       const session = await page.createCDPSession();
-      await session.send('Emulation.setEmulatedMedia', { features: [{ name: 'hover', value: 'none' }, { name: 'pointer', value: 'coarse' }] });
+      await session.send('Emulation.setEmulatedMedia', {
+        features: [
+          { name: 'hover', value: 'none' },
+          { name: 'pointer', value: 'coarse' },
+        ],
+      });
       expect(await page.evaluate(() => matchMedia('(hover: hover)').matches)).toBe(false);
       const rings: string[] = [];
       for (let i = 0; i < 12; i++) {
@@ -54,10 +59,16 @@ describe('keyboard and accessibility', () => {
       expect(rings.length).toBeGreaterThan(3);
       for (const ring of rings) expect(ring).toMatch(/:solid:2px$/);
 
-      const play = await page.$eval('.oceano-play', (b) => ({ pressed: b.getAttribute('aria-pressed'), label: b.getAttribute('aria-label') }));
+      const play = await page.$eval('.oceano-play', (b) => ({
+        pressed: b.getAttribute('aria-pressed'),
+        label: b.getAttribute('aria-label'),
+      }));
       expect(play).toEqual({ pressed: null, label: 'Play' });
       await page.click('.oceano-play');
-      expect(await page.$eval('.oceano-play', (b) => [b.getAttribute('aria-pressed'), b.getAttribute('aria-label')])).toEqual([null, 'Pause']);
+      expect(await page.$eval('.oceano-play', (b) => [b.getAttribute('aria-pressed'), b.getAttribute('aria-label')])).toEqual([
+        null,
+        'Pause',
+      ]);
 
       const label = () => page.$eval('.oceano-canvas', (c) => c.getAttribute('aria-label'));
       expect(await label()).toBe('Animated 3D ocean under a sky');

@@ -41,7 +41,12 @@ export async function viewBoxes(page: Page, container = '#oceano-page'): Promise
       const style = getComputedStyle(root);
       const variable = (name: string) => style.getPropertyValue(`--oceano-free-${name}`).trim();
       const published = variable('left')
-        ? { x: parseFloat(variable('left')), y: parseFloat(variable('top')), width: parseFloat(variable('width')), height: parseFloat(variable('height')) }
+        ? {
+            x: parseFloat(variable('left')),
+            y: parseFloat(variable('top')),
+            width: parseFloat(variable('width')),
+            height: parseFloat(variable('height')),
+          }
         : { x: 0, y: 0, width: canvasBox.width, height: canvasBox.height };
       const boxes: { kind: string; text: string; box: { x: number; y: number; width: number; height: number } }[] = [];
       for (const [kind, selector] of Object.entries(overlays)) {
@@ -54,7 +59,9 @@ export async function viewBoxes(page: Page, container = '#oceano-page'): Promise
       }
       return {
         canvas: { x: 0, y: 0, width: canvasBox.width, height: canvasBox.height },
-        panels: Array.from(root.querySelectorAll(panelSelector)).filter(shown).map((el) => relative(el.getBoundingClientRect())),
+        panels: Array.from(root.querySelectorAll(panelSelector))
+          .filter(shown)
+          .map((el) => relative(el.getBoundingClientRect())),
         published,
         overlays: boxes,
       };
@@ -72,8 +79,14 @@ export function measuredFreeArea(boxes: ViewBoxes): Rect {
 
 /** The overlays that stick out of `free` by more than half a pixel. */
 export function outside(boxes: ViewBoxes, free: Rect): string[] {
-  const inside = (b: Rect) => b.x >= free.x - 0.5 && b.y >= free.y - 0.5 && b.x + b.width <= free.x + free.width + 0.5 && b.y + b.height <= free.y + free.height + 0.5;
-  return boxes.overlays.filter((o) => !inside(o.box)).map((o) => `${o.kind} "${o.text.slice(0, 30)}" at ${[o.box.x, o.box.y, o.box.width, o.box.height].map(Math.round).join(',')}`);
+  const inside = (b: Rect) =>
+    b.x >= free.x - 0.5 &&
+    b.y >= free.y - 0.5 &&
+    b.x + b.width <= free.x + free.width + 0.5 &&
+    b.y + b.height <= free.y + free.height + 0.5;
+  return boxes.overlays
+    .filter((o) => !inside(o.box))
+    .map((o) => `${o.kind} "${o.text.slice(0, 30)}" at ${[o.box.x, o.box.y, o.box.width, o.box.height].map(Math.round).join(',')}`);
 }
 
 /** Adds CSS rules to a page, a strict Content-Security-Policy's included (a constructed sheet is no inline style). */

@@ -111,7 +111,11 @@ describe('parts fetched on use', () => {
   // waves=fft whose code the network refuses.
   it("at start: refused FFT code draws the seed's sea with a notice; a refused panel leaves the sea running", async () => {
     const { page, errors } = await open('t=10&waves=fft&lang=es', ['fftModelCode', 'controlPanel']);
-    const state = await page.evaluate(() => ({ waves: window.oceano.getParams().waves, notices: window.oceano.notices(), frames: window.oceano.activity().framesDrawn }));
+    const state = await page.evaluate(() => ({
+      waves: window.oceano.getParams().waves,
+      notices: window.oceano.notices(),
+      frames: window.oceano.activity().framesDrawn,
+    }));
     expect(state.waves).toBe('seed');
     expect(state.frames).toBeGreaterThan(0);
     expect(state.notices).toHaveLength(2);

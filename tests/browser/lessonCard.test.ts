@@ -71,7 +71,12 @@ describe('the lesson card: question, choice, references, glossary', () => {
     const keys = LESSON_TEXTS[asking].references as ReferenceKey[];
     const { page } = await openOcean(harness, `lesson=${asking}&t=2`, 1366, 768);
     await page.waitForSelector('.oceano-lesson-card:not([hidden]) .oceano-lesson-references');
-    const visibleItems = () => page.evaluate(() => Array.from(document.querySelectorAll<HTMLElement>('.oceano-lesson-reference-list li'), (li) => (li.checkVisibility() ? li.textContent : null)).filter((t) => t !== null));
+    const visibleItems = () =>
+      page.evaluate(() =>
+        Array.from(document.querySelectorAll<HTMLElement>('.oceano-lesson-reference-list li'), (li) =>
+          li.checkVisibility() ? li.textContent : null,
+        ).filter((t) => t !== null),
+      );
     expect(await visibleItems()).toEqual([]);
     await page.click('.oceano-lesson-references summary');
     expect(await visibleItems()).toEqual(keys.map((key) => citation(BIBLIOGRAPHY[key])));

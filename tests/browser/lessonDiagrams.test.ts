@@ -59,7 +59,11 @@ describe('lesson diagrams in the card', () => {
     expect(first.name).toMatch(/^Las crestas de la piedra.*t = \d+,\d s$/);
     expect(first.fits).toBe(true);
     // The clock runs: the name's age moves on, and so do the crests.
-    await page.waitForFunction((name) => document.querySelector('.oceano-lesson-diagram svg')?.getAttribute('aria-label') !== name, {}, first.name);
+    await page.waitForFunction(
+      (name) => document.querySelector('.oceano-lesson-diagram svg')?.getAttribute('aria-label') !== name,
+      {},
+      first.name,
+    );
     expect(consoleErrors).toEqual([]);
     await page.close();
   });

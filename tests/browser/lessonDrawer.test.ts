@@ -54,8 +54,18 @@ function freeShare(page: Page) {
       return Math.max(gap, end - at);
     };
     return {
-      across: widestGap(boxes.map((r) => [r.left, r.right]), canvas.left, canvas.right) / canvas.width,
-      down: widestGap(boxes.map((r) => [r.top, r.bottom]), canvas.top, canvas.bottom) / canvas.height,
+      across:
+        widestGap(
+          boxes.map((r) => [r.left, r.right]),
+          canvas.left,
+          canvas.right,
+        ) / canvas.width,
+      down:
+        widestGap(
+          boxes.map((r) => [r.top, r.bottom]),
+          canvas.top,
+          canvas.bottom,
+        ) / canvas.height,
       drawerAtBottom: Math.abs(document.querySelector('.oceano-lessons')!.getBoundingClientRect().bottom - canvas.bottom) < 1,
     };
   });
@@ -94,7 +104,12 @@ describe('lessons', () => {
     // Control: a quote one line off no longer equals its file.
     const facts = await cardFacts(page);
     const [, file, first, last] = /^(.+):(\d+)–(\d+)$/.exec(facts.file)!;
-    expect(quoteMatchesFile({ file, firstLine: Number(first) + 1, lastLine: Number(last) + 1, text: facts.code }, readFileSync(join(root, file), 'utf8'))).toBe(false);
+    expect(
+      quoteMatchesFile(
+        { file, firstLine: Number(first) + 1, lastLine: Number(last) + 1, text: facts.code },
+        readFileSync(join(root, file), 'utf8'),
+      ),
+    ).toBe(false);
     // ← walks back.
     await page.keyboard.press('ArrowLeft');
     expect(await page.evaluate(() => window.oceano.lesson())).toBe(LESSONS.at(-2)!.id);
@@ -108,12 +123,23 @@ describe('lessons', () => {
     await page.waitForSelector('.oceano-lesson-card:not([hidden])');
     const list = await page.evaluate(() => window.oceano.lessons());
     expect(list.length).toBe(LESSONS.length);
-    expect(list[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua', question: true, exercise: false });
+    expect(list[0]).toEqual({
+      id: 'flat-plane',
+      title: LESSON_TITLES['flat-plane'].es,
+      section: 'Superficie del agua',
+      question: true,
+      exercise: false,
+    });
     expect(await page.evaluate(() => window.oceano.lesson())).toBe('fresnel');
     expect(await page.evaluate(() => new URL(window.oceano.shareUrl()).searchParams.get('lesson'))).toBe('fresnel');
     const before = await page.evaluate(() => ({ params: window.oceano.getParams(), camera: window.oceano.getCamera() }));
     expect(await page.evaluate(() => window.oceano.setLesson('no-such-lesson'))).toBe(false);
-    const after = await page.evaluate(() => ({ params: window.oceano.getParams(), camera: window.oceano.getCamera(), lesson: window.oceano.lesson(), notices: window.oceano.notices() }));
+    const after = await page.evaluate(() => ({
+      params: window.oceano.getParams(),
+      camera: window.oceano.getCamera(),
+      lesson: window.oceano.lesson(),
+      notices: window.oceano.notices(),
+    }));
     expect(after.params).toEqual(before.params);
     expect(after.camera).toEqual(before.camera);
     expect(after.lesson).toBe('fresnel');
@@ -133,7 +159,9 @@ describe('lessons', () => {
     const free = await freeShare(page);
     expect(free.across).toBeGreaterThanOrEqual(0.6);
     // Folders start folded, except the lesson's (LOD & culling).
-    const open = await page.evaluate(() => Array.from(document.querySelectorAll('.lil-gui.lil-root .lil-gui:not(.lil-closed) > .lil-title'), (t) => t.textContent));
+    const open = await page.evaluate(() =>
+      Array.from(document.querySelectorAll('.lil-gui.lil-root .lil-gui:not(.lil-closed) > .lil-title'), (t) => t.textContent),
+    );
     expect(open).toEqual(['LOD & culling']);
     await page.addStyleTag({ content: '#oceano-page .oceano-lessons { width: 340px; }' });
     expect((await freeShare(page)).across).toBeLessThan(0.6);
@@ -152,7 +180,9 @@ describe('lessons', () => {
     free = await freeShare(page);
     expect(free.down).toBeGreaterThanOrEqual(0.5);
     await page.addStyleTag({ content: OLD_PANEL });
-    await page.evaluate(() => document.querySelectorAll<HTMLElement>('.lil-gui.lil-root .lil-gui.lil-closed > .lil-title').forEach((title) => title.click()));
+    await page.evaluate(() =>
+      document.querySelectorAll<HTMLElement>('.lil-gui.lil-root .lil-gui.lil-closed > .lil-title').forEach((title) => title.click()),
+    );
     // lil-gui unfolds a folder with a 300 ms transition of its height, begun on a later frame.
     await new Promise((resolve) => setTimeout(resolve, 1000));
     free = await freeShare(page);
@@ -212,7 +242,9 @@ describe('lessons', () => {
       window.oceano.setTime(6);
     });
     facts = await measure();
-    console.log(`[oceano] hull sample points: worst ${worst(facts, 'projected').toFixed(2)} px from their projections; with the hull turned round ${worst(facts, 'turned').toFixed(1)} px`);
+    console.log(
+      `[oceano] hull sample points: worst ${worst(facts, 'projected').toFixed(2)} px from their projections; with the hull turned round ${worst(facts, 'turned').toFixed(1)} px`,
+    );
     expect(worst(facts, 'projected')).toBeLessThan(0.75);
     expect(worst(facts, 'turned')).toBeGreaterThan(20);
     expect(consoleErrors).toEqual([]);
@@ -243,11 +275,17 @@ describe('lessons', () => {
           const r = document.querySelector(`#lesson ${selector}`)!.getBoundingClientRect();
           return r.width > 0 && r.left >= box.left && r.right <= box.right && r.top >= box.top && r.bottom <= box.bottom;
         };
-        return { card: within('.oceano-lessons'), plot: within('.oceano-fresnel-plot'), list: document.querySelectorAll('#lesson .oceano-lessons-open').length };
+        return {
+          card: within('.oceano-lessons'),
+          plot: within('.oceano-fresnel-plot'),
+          list: document.querySelectorAll('#lesson .oceano-lessons-open').length,
+        };
       });
     expect(await inside()).toEqual({ card: true, plot: true, list: 0 });
     await page.evaluate(() => document.getElementById('lesson')!.setAttribute('lesson', 'normals-right'));
-    expect(await page.evaluate(() => (document.getElementById('lesson') as HTMLElement & { oceano: { lesson(): string } }).oceano.lesson())).toBe('normals-right');
+    expect(
+      await page.evaluate(() => (document.getElementById('lesson') as HTMLElement & { oceano: { lesson(): string } }).oceano.lesson()),
+    ).toBe('normals-right');
     // The fixture's strict CSP (no inline styles): the card's styles and labels break none of it
     // (the fixture's own inline script is refused on purpose).
     expect(violations.filter((v) => v !== 'script-src-elem inline')).toEqual([]);

@@ -44,7 +44,8 @@ function pixelOf(page: Page, x: number, y: number, z: number): Promise<[number, 
       const v = [px, py, pz, 1];
       const view = camera.matrixWorldInverse.elements;
       const proj = camera.projectionMatrix.elements;
-      const mul = (m: ArrayLike<number>, a: number[]) => [0, 1, 2, 3].map((r) => m[r] * a[0] + m[4 + r] * a[1] + m[8 + r] * a[2] + m[12 + r] * a[3]);
+      const mul = (m: ArrayLike<number>, a: number[]) =>
+        [0, 1, 2, 3].map((r) => m[r] * a[0] + m[4 + r] * a[1] + m[8 + r] * a[2] + m[12 + r] * a[3]);
       const c = mul(proj, mul(view, v));
       const rect = window.oceano.three.renderer.domElement.getBoundingClientRect();
       return [rect.left + ((c[0] / c[3] + 1) / 2) * rect.width, rect.top + ((1 - c[1] / c[3]) / 2) * rect.height] as [number, number];
@@ -101,24 +102,30 @@ describe('measurement exercises, done with the tools', () => {
     const [bx, , bz] = boat.position;
     // The student's eye on the wake: heights along the track behind the boat, and the crests among them.
     const profile = await page.evaluate(
-      (bx, bz, dx, dz) => Array.from({ length: 601 }, (_, i) => {
-        const s = 8 + i * 0.1;
-        return window.oceano.sampleSurface(bx - dx * s, bz - dz * s).height;
-      }),
+      (bx, bz, dx, dz) =>
+        Array.from({ length: 601 }, (_, i) => {
+          const s = 8 + i * 0.1;
+          return window.oceano.sampleSurface(bx - dx * s, bz - dz * s).height;
+        }),
       bx,
       bz,
       fx,
       fz,
     );
     const crests: number[] = [];
-    for (let i = 1; i < profile.length - 1; i++) if (profile[i] > profile[i - 1] && profile[i] >= profile[i + 1] && profile[i] > 0) crests.push(8 + i * 0.1);
+    for (let i = 1; i < profile.length - 1; i++)
+      if (profile[i] > profile[i - 1] && profile[i] >= profile[i + 1] && profile[i] > 0) crests.push(8 + i * 0.1);
     console.log(`kelvin-wake: crests behind the boat at ${crests.map((s) => s.toFixed(1)).join(', ')} m`);
     expect(crests.length).toBeGreaterThanOrEqual(4);
     const [s0, s3] = [crests[0], crests[3]];
     const a = await pixelOf(page, bx - fx * s0, 0, bz - fz * s0);
     const b = await pixelOf(page, bx - fx * s3, 0, bz - fz * s3);
 
-    await page.evaluate(() => Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((el) => /Sea tools/.test(el.textContent ?? ''))!.click());
+    await page.evaluate(() =>
+      Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button'))
+        .find((el) => /Sea tools/.test(el.textContent ?? ''))!
+        .click(),
+    );
     await page.waitForSelector('.oceano-sea-tools:not([hidden])');
     await page.click('.oceano-sea-tools input[value="ruler"]');
     await page.mouse.move(...a);
@@ -141,7 +148,23 @@ describe('measurement exercises, done with the tools', () => {
     const { page } = await openOcean(harness, 'lesson=fresnel', 640, 360);
     await page.evaluate(() => window.oceano.ready);
     const lessons = await page.evaluate(() => window.oceano.lessons());
-    expect(lessons.filter((l) => l.exercise).map((l) => l.id)).toEqual(['sun-glint', 'fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'gerstner-gentle', 'physics-panel', 'kelvin-wake', 'wake-turn', 'iwave-stone', 'iwave-compare', 'airy-waves', 'group-velocity', 'spectra-compared', 'fft-transform']);
+    expect(lessons.filter((l) => l.exercise).map((l) => l.id)).toEqual([
+      'sun-glint',
+      'fft-calm',
+      'fft-fresh-breeze',
+      'fft-short-fetch',
+      'fft-gale',
+      'gerstner-gentle',
+      'physics-panel',
+      'kelvin-wake',
+      'wake-turn',
+      'iwave-stone',
+      'iwave-compare',
+      'airy-waves',
+      'group-velocity',
+      'spectra-compared',
+      'fft-transform',
+    ]);
     await page.waitForSelector('.oceano-lesson-card[data-lesson="fresnel"]');
     expect(await page.$('.oceano-lesson-exercise')).toBeNull();
     await page.close();
@@ -151,7 +174,10 @@ describe('measurement exercises, done with the tools', () => {
 describe.runIf(process.env.OCEANO_SHOTS)('screenshots of an exercise card (OCEANO_SHOTS=folder)', () => {
   // The answer typed is the ruler's 30.72 m over three waves, as the test above read it.
   it('kelvin-wake with a typed answer: laptop in English, phone in Spanish', async () => {
-    for (const [width, height, lang] of [[1366, 768, 'en'], [390, 844, 'es']] as const) {
+    for (const [width, height, lang] of [
+      [1366, 768, 'en'],
+      [390, 844, 'es'],
+    ] as const) {
       const { page } = await openOcean(harness, `t=20&lesson=kelvin-wake&lang=${lang}`, width, height);
       await page.waitForSelector('.oceano-lesson-exercise');
       await page.evaluate(() => window.oceano.pause());

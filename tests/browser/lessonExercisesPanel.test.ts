@@ -25,10 +25,21 @@ async function panelHs(page: Page): Promise<{ measured: string; theory: string; 
   });
   // The estimators run on the CPU twin: 16 points × 512 times, 10 to 40 s for an FFT sea on a loaded 2-core machine.
   await page.waitForSelector('.oceano-physics table', { timeout: 120_000 });
-  return page.$eval('.oceano-physics', (root, open) => {
-    const row = Array.from(root.querySelectorAll('table tr')).find((tr) => /^Hs = 4σ/.test((tr as HTMLTableRowElement).cells[0]?.textContent ?? '')) as HTMLTableRowElement;
-    return { measured: row.cells[1].textContent ?? '', theory: row.cells[2].textContent ?? '', heading: root.querySelector('h2')?.textContent ?? '', wasOpen: open };
-  }, wasOpen);
+  return page.$eval(
+    '.oceano-physics',
+    (root, open) => {
+      const row = Array.from(root.querySelectorAll('table tr')).find((tr) =>
+        /^Hs = 4σ/.test((tr as HTMLTableRowElement).cells[0]?.textContent ?? ''),
+      ) as HTMLTableRowElement;
+      return {
+        measured: row.cells[1].textContent ?? '',
+        theory: row.cells[2].textContent ?? '',
+        heading: root.querySelector('h2')?.textContent ?? '',
+        wasOpen: open,
+      };
+    },
+    wasOpen,
+  );
 }
 
 describe('physics-panel exercises on more cards, done with the panel', () => {
@@ -53,7 +64,9 @@ describe('physics-panel exercises on more cards, done with the panel', () => {
       expect(read.heading).toMatch(model);
       theories.push(read.theory);
       const right = await answer(page, read.measured);
-      console.log(`${lesson}: ${read.heading}; Hs ${read.measured} m (theory ${read.theory} m)${read.wasOpen ? ', panel already open' : ''}; ${right.text}`);
+      console.log(
+        `${lesson}: ${read.heading}; Hs ${read.measured} m (theory ${read.theory} m)${read.wasOpen ? ', panel already open' : ''}; ${right.text}`,
+      );
       expect(right.verdict, `${lesson}: ${right.text}`).toBe('within');
       expect(right.text).toMatch(/^Within tolerance/);
       for (const slip of [2, 0.5]) {

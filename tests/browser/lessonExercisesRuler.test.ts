@@ -43,7 +43,8 @@ function pixelOf(page: Page, x: number, y: number, z: number): Promise<[number, 
       const v = [px, py, pz, 1];
       const view = camera.matrixWorldInverse.elements;
       const proj = camera.projectionMatrix.elements;
-      const mul = (m: ArrayLike<number>, a: number[]) => [0, 1, 2, 3].map((r) => m[r] * a[0] + m[4 + r] * a[1] + m[8 + r] * a[2] + m[12 + r] * a[3]);
+      const mul = (m: ArrayLike<number>, a: number[]) =>
+        [0, 1, 2, 3].map((r) => m[r] * a[0] + m[4 + r] * a[1] + m[8 + r] * a[2] + m[12 + r] * a[3]);
       const c = mul(proj, mul(view, v));
       const rect = window.oceano.three.renderer.domElement.getBoundingClientRect();
       return [rect.left + ((c[0] / c[3] + 1) / 2) * rect.width, rect.top + ((1 - c[1] / c[3]) / 2) * rect.height] as [number, number];
@@ -57,15 +58,25 @@ function pixelOf(page: Page, x: number, y: number, z: number): Promise<[number, 
 /** Heights along the line from (x, z) in direction (dx, dz), every 0.1 m from `from` to `to` metres. */
 function profile(page: Page, x: number, z: number, dx: number, dz: number, from: number, to: number): Promise<number[]> {
   return page.evaluate(
-    (x, z, dx, dz, from, to) => Array.from({ length: Math.round((to - from) * 10) + 1 }, (_, i) => window.oceano.sampleSurface(x + dx * (from + i * 0.1), z + dz * (from + i * 0.1)).height),
-    x, z, dx, dz, from, to,
+    (x, z, dx, dz, from, to) =>
+      Array.from(
+        { length: Math.round((to - from) * 10) + 1 },
+        (_, i) => window.oceano.sampleSurface(x + dx * (from + i * 0.1), z + dz * (from + i * 0.1)).height,
+      ),
+    x,
+    z,
+    dx,
+    dz,
+    from,
+    to,
   );
 }
 
 /** Distances (m) of the crests, local maxima above the calm water, in a profile starting at `from`. */
 function crestsOf(heights: number[], from: number): number[] {
   const out: number[] = [];
-  for (let i = 1; i < heights.length - 1; i++) if (heights[i] > heights[i - 1] && heights[i] >= heights[i + 1] && heights[i] > 0) out.push(from + i * 0.1);
+  for (let i = 1; i < heights.length - 1; i++)
+    if (heights[i] > heights[i - 1] && heights[i] >= heights[i + 1] && heights[i] > 0) out.push(from + i * 0.1);
   return out;
 }
 
@@ -73,7 +84,11 @@ let toolsOpen = false;
 /** Opens the sea tools, picks the ruler and drags it from world a to world b on the sea; answers the ruler's label. */
 async function rule(page: Page, a: [number, number, number], b: [number, number, number]): Promise<string> {
   if (!toolsOpen) {
-    await page.evaluate(() => Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((el) => /Sea tools/.test(el.textContent ?? ''))!.click());
+    await page.evaluate(() =>
+      Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button'))
+        .find((el) => /Sea tools/.test(el.textContent ?? ''))!
+        .click(),
+    );
     await page.waitForSelector('.oceano-sea-tools:not([hidden])');
     await page.click('.oceano-sea-tools input[value="ruler"]');
     toolsOpen = true;
@@ -97,7 +112,11 @@ describe('ruler exercises, done with the ruler', () => {
 
     // iwave-stone: 12 s after the stone, from the outermost ring's crest to the next crest inward.
     await openLesson(page, 'iwave-stone');
-    await page.evaluate(() => { window.oceano.pause(); window.oceano.setTime(0); window.oceano.renderFrame(); });
+    await page.evaluate(() => {
+      window.oceano.pause();
+      window.oceano.setTime(0);
+      window.oceano.renderFrame();
+    });
     await openLesson(page, 'iwave-stone');
     await runTo(page, 0, 12, 2);
     const [sx, sz] = [-20, -20];
@@ -133,7 +152,10 @@ describe('ruler exercises, done with the ruler', () => {
     // group-velocity: the same stone's outermost marked crest, 12 s after it fell, is where its group has run.
     // A minute on, as a student reaching this card later: the jump past the field's 10 s catch-up restarts it calm, so
     // the first stone's waves, at the same spot, are gone.
-    await page.evaluate(() => { window.oceano.setTime(90); window.oceano.renderFrame(); });
+    await page.evaluate(() => {
+      window.oceano.setTime(90);
+      window.oceano.renderFrame();
+    });
     await openLesson(page, 'group-velocity');
     await runTo(page, 90, 102, 2);
     const groupCrests = crestsOf(await profile(page, sx, sz, 0, 1, 4, 40), 4);
@@ -153,13 +175,22 @@ describe('ruler exercises, done with the ruler', () => {
     await page.evaluate(() => window.oceano.setParams({ boatTurnRate: 20 }));
     const start = await page.evaluate(() => window.oceano.boat().position);
     await page.evaluate(() => window.oceano.play());
-    await page.waitForFunction(() => Math.abs(((window.oceano.boat().heading * 180) / Math.PI) - 90) < 3, { timeout: 240_000, polling: 20 });
+    await page.waitForFunction(() => Math.abs((window.oceano.boat().heading * 180) / Math.PI - 90) < 3, { timeout: 240_000, polling: 20 });
     await page.evaluate(() => window.oceano.pause());
     const end = await page.evaluate(() => window.oceano.boat());
-    console.log(`wake-turn: boat from (${start[0].toFixed(1)}, ${start[2].toFixed(1)}) to (${end.position[0].toFixed(1)}, ${end.position[2].toFixed(1)}), heading ${((end.heading * 180) / Math.PI).toFixed(1)}°`);
+    console.log(
+      `wake-turn: boat from (${start[0].toFixed(1)}, ${start[2].toFixed(1)}) to (${end.position[0].toFixed(1)}, ${end.position[2].toFixed(1)}), heading ${((end.heading * 180) / Math.PI).toFixed(1)}°`,
+    );
     // The student pulls the view back over the whole half circle.
     const [mx, mz] = [(start[0] + end.position[0]) / 2, (start[2] + end.position[2]) / 2];
-    await page.evaluate((x, z) => { window.oceano.setCamera({ position: [x, 220, z + 60], target: [x, 0, z] }); window.oceano.renderFrame(); }, mx, mz);
+    await page.evaluate(
+      (x, z) => {
+        window.oceano.setCamera({ position: [x, 220, z + 60], target: [x, 0, z] });
+        window.oceano.renderFrame();
+      },
+      mx,
+      mz,
+    );
     const diameterLabel = await rule(page, [start[0], 0, start[2]], [end.position[0], 0, end.position[2]]);
     const radius = (Number.parseFloat(diameterLabel) / 2).toFixed(1);
     const turnRight = await answer(page, radius);

@@ -11,18 +11,31 @@ describe('the lessons drawer’s two orders', () => {
   it('the switch lists the ideas’ order, › and ‹ walk it, and the report’s order comes back', async () => {
     const { page, consoleErrors } = await openOcean(harness, 'lang=es&t=2', 1366, 768);
     await page.waitForSelector('.oceano-lessons-order-option[data-order="ideas"]');
-    const listed = () => page.evaluate(() => Array.from(document.querySelectorAll<HTMLElement>('.oceano-lessons-open'), (b) => b.dataset.lesson));
+    const listed = () =>
+      page.evaluate(() => Array.from(document.querySelectorAll<HTMLElement>('.oceano-lessons-open'), (b) => b.dataset.lesson));
     const opened = async (id: string) => {
       await page.waitForFunction((want) => window.oceano.lesson() === want, { timeout: 10000 }, id).catch(() => undefined);
       return page.evaluate(() => window.oceano.lesson());
     };
-    const pressed = () => page.evaluate(() => Array.from(document.querySelectorAll<HTMLElement>('.oceano-lessons-order-option'), (b) => [b.textContent, b.getAttribute('aria-pressed')]));
+    const pressed = () =>
+      page.evaluate(() =>
+        Array.from(document.querySelectorAll<HTMLElement>('.oceano-lessons-order-option'), (b) => [
+          b.textContent,
+          b.getAttribute('aria-pressed'),
+        ]),
+      );
     expect(await listed()).toEqual(LESSONS.map((lesson) => lesson.id));
-    expect(await pressed()).toEqual([[ORDER_NAMES.report.es, 'true'], [ORDER_NAMES.ideas.es, 'false']]);
+    expect(await pressed()).toEqual([
+      [ORDER_NAMES.report.es, 'true'],
+      [ORDER_NAMES.ideas.es, 'false'],
+    ]);
 
     await page.click('.oceano-lessons-order-option[data-order="ideas"]');
     expect(await listed()).toEqual([...CONCEPT_PATH]);
-    expect(await pressed()).toEqual([[ORDER_NAMES.report.es, 'false'], [ORDER_NAMES.ideas.es, 'true']]);
+    expect(await pressed()).toEqual([
+      [ORDER_NAMES.report.es, 'false'],
+      [ORDER_NAMES.ideas.es, 'true'],
+    ]);
     await page.click('.oceano-lessons-next');
     expect(await opened(CONCEPT_PATH[0])).toBe(CONCEPT_PATH[0]);
     await page.click('.oceano-lessons-next');

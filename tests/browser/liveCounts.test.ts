@@ -13,7 +13,9 @@ describe('live LOD counts', () => {
       await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
       return page.evaluate(() => {
         const value = (name: string) => {
-          const row = Array.from(document.querySelectorAll('.lil-controller')).find((c) => c.querySelector('.lil-name')?.textContent === name);
+          const row = Array.from(document.querySelectorAll('.lil-controller')).find(
+            (c) => c.querySelector('.lil-name')?.textContent === name,
+          );
           return (row?.querySelector('input') as HTMLInputElement | null)?.value ?? '';
         };
         const s = window.oceano.stats();
@@ -27,7 +29,11 @@ describe('live LOD counts', () => {
     await page.evaluate(() => window.oceano.setCamera({ position: [30, 12, 60], target: [0, 0, -80] }));
     let now = await agree();
     expect(now.panel).toEqual(now.stats);
-    await page.evaluate(() => (Array.from(document.querySelectorAll<HTMLElement>('.lil-gui button')).find((b) => b.textContent?.includes('Dive')) as HTMLElement).click());
+    await page.evaluate(() =>
+      (
+        Array.from(document.querySelectorAll<HTMLElement>('.lil-gui button')).find((b) => b.textContent?.includes('Dive')) as HTMLElement
+      ).click(),
+    );
     await page.evaluate(() => window.oceano.loaded());
     now = await agree();
     expect(now.panel).toEqual(now.stats);

@@ -48,9 +48,18 @@ describe('LOD and culling in the browser', () => {
       let count = 0;
       const sea = window.oceano.three.scene.getObjectByName('oceano-ocean');
       sea?.traverseVisible((o) => {
-        const geometry = (o as { geometry?: { attributes: Record<string, unknown>; isInstancedBufferGeometry?: boolean; instanceCount?: number; drawRange: { count: number } } }).geometry;
+        const geometry = (
+          o as {
+            geometry?: {
+              attributes: Record<string, unknown>;
+              isInstancedBufferGeometry?: boolean;
+              instanceCount?: number;
+              drawRange: { count: number };
+            };
+          }
+        ).geometry;
         if (!geometry?.attributes.aChunk) return;
-        const drawn = geometry.isInstancedBufferGeometry ? geometry.instanceCount ?? 0 : geometry.drawRange.count;
+        const drawn = geometry.isInstancedBufferGeometry ? (geometry.instanceCount ?? 0) : geometry.drawRange.count;
         // The skirt (a plain mesh drawn whole, count Infinity) is not a chunk batch.
         if (drawn > 0 && Number.isFinite(drawn)) count++;
       });
@@ -74,8 +83,10 @@ describe('LOD and culling in the browser', () => {
     const boatTriangles = await page.evaluate(() => {
       let triangles = 0;
       window.oceano.three.scene.traverseVisible((o) => {
-        const geometry = (o as { isMesh?: boolean; geometry?: { isInstancedBufferGeometry?: boolean; index: { count: number } | null } }).geometry;
-        if ((o as { isMesh?: boolean }).isMesh && geometry && !geometry.isInstancedBufferGeometry && geometry.index) triangles += geometry.index.count / 3;
+        const geometry = (o as { isMesh?: boolean; geometry?: { isInstancedBufferGeometry?: boolean; index: { count: number } | null } })
+          .geometry;
+        if ((o as { isMesh?: boolean }).isMesh && geometry && !geometry.isInstancedBufferGeometry && geometry.index)
+          triangles += geometry.index.count / 3;
       });
       return triangles;
     });
@@ -105,10 +116,28 @@ describe('LOD and culling in the browser', () => {
 
   const crackViews: { name: string; query: string; position: Vec3; target: Vec3; size: [number, number] }[] = [
     { name: 'grazing, default bands', query: 'seed=1&t=10', position: [0, 1.5, 0], target: [70, 0.4, -100], size: [1280, 720] },
-    { name: 'grazing, L = 10 m (neighbours several bands apart)', query: 'seed=2&t=3&lodDistance=10', position: [5, 2, 11], target: [-90, 0.2, -120], size: [960, 540] },
-    { name: 'from 60 m, L = 30 m', query: 'seed=3&t=7&lodDistance=30&swellAmplitude=3', position: [13, 60, 7], target: [200, 0, -300], size: [960, 540] },
+    {
+      name: 'grazing, L = 10 m (neighbours several bands apart)',
+      query: 'seed=2&t=3&lodDistance=10',
+      position: [5, 2, 11],
+      target: [-90, 0.2, -120],
+      size: [960, 540],
+    },
+    {
+      name: 'from 60 m, L = 30 m',
+      query: 'seed=3&t=7&lodDistance=30&swellAmplitude=3',
+      position: [13, 60, 7],
+      target: [200, 0, -300],
+      size: [960, 540],
+    },
     // The nearest band's quads split to 0.5 m (steep Gerstner waves) beside the 4 m band past it.
-    { name: 'Gerstner, the nearest band split (gerstner-steepness)', query: 'preset=gerstner-steepness&t=10', position: [-30, 4, 4], target: [40, 0.3, -100], size: [960, 540] },
+    {
+      name: 'Gerstner, the nearest band split (gerstner-steepness)',
+      query: 'preset=gerstner-steepness&t=10',
+      position: [-30, 4, 4],
+      target: [40, 0.3, -100],
+      size: [960, 540],
+    },
   ];
   for (const view of crackViews) {
     it(`shows no background through the sea (crack test: ${view.name})`, async () => {
@@ -152,17 +181,19 @@ describe('LOD and culling in the browser', () => {
   it('keeps the frozen selection while the camera orbits away', async () => {
     // The selection frozen from the loaded camera (as freezeCulling=1 in the URL freezes it;
     // the frustum-culling preset's reference covers that path).
-    const result = await shared.restoring((page) => page.evaluate(() => {
-      window.oceano.setParams({ freezeCulling: true });
-      window.oceano.renderFrame();
-      const before = window.oceano.stats();
-      window.oceano.setCamera({ position: [-900, 1400, 1300], target: [0, 0, -500] });
-      window.oceano.renderFrame();
-      const frozen = window.oceano.stats();
-      window.oceano.setParams({ freezeCulling: false });
-      window.oceano.renderFrame();
-      return { before, frozen, live: window.oceano.stats() };
-    }));
+    const result = await shared.restoring((page) =>
+      page.evaluate(() => {
+        window.oceano.setParams({ freezeCulling: true });
+        window.oceano.renderFrame();
+        const before = window.oceano.stats();
+        window.oceano.setCamera({ position: [-900, 1400, 1300], target: [0, 0, -500] });
+        window.oceano.renderFrame();
+        const frozen = window.oceano.stats();
+        window.oceano.setParams({ freezeCulling: false });
+        window.oceano.renderFrame();
+        return { before, frozen, live: window.oceano.stats() };
+      }),
+    );
     expect(result.frozen.chunksVisible).toBe(result.before.chunksVisible);
     expect(result.frozen.lodCounts).toEqual(result.before.lodCounts);
     expect(result.live.lodCounts).not.toEqual(result.before.lodCounts);

@@ -36,7 +36,11 @@ async function stepChanges(page: Page, heights: number[], lodMorph: boolean): Pr
         if (previous) {
           let sum = 0;
           for (let k = 0; k < pixels.length; k += 4) {
-            sum += Math.max(Math.abs(pixels[k] - previous[k]), Math.abs(pixels[k + 1] - previous[k + 1]), Math.abs(pixels[k + 2] - previous[k + 2]));
+            sum += Math.max(
+              Math.abs(pixels[k] - previous[k]),
+              Math.abs(pixels[k + 1] - previous[k + 1]),
+              Math.abs(pixels[k + 2] - previous[k + 2]),
+            );
           }
           changes.push(sum / (w * h));
         }

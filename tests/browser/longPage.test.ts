@@ -27,7 +27,12 @@ async function countContexts(page: Page): Promise<void> {
   await page.evaluateOnNewDocument(() => {
     const refs: WeakRef<WebGLRenderingContext | WebGL2RenderingContext>[] = [];
     const seen = new WeakSet<object>();
-    const count = { created: 0, maxLive: 0, errors: [] as { type: string; message: string }[], live: () => refs.filter((r) => r.deref()?.isContextLost() === false).length };
+    const count = {
+      created: 0,
+      maxLive: 0,
+      errors: [] as { type: string; message: string }[],
+      live: () => refs.filter((r) => r.deref()?.isContextLost() === false).length,
+    };
     (window as unknown as { __contexts: typeof count }).__contexts = count;
     const getContext = HTMLCanvasElement.prototype.getContext;
     HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
@@ -40,16 +45,22 @@ async function countContexts(page: Page): Promise<void> {
       }
       return context;
     } as typeof getContext;
-    document.addEventListener('error', (event) => {
-      const detail = (event as unknown as CustomEvent<{ type: string; message: string }>).detail;
-      if (detail?.type) count.errors.push(detail);
-    }, true);
+    document.addEventListener(
+      'error',
+      (event) => {
+        const detail = (event as unknown as CustomEvent<{ type: string; message: string }>).detail;
+        if (detail?.type) count.errors.push(detail);
+      },
+      true,
+    );
   });
 }
 
 const contextCount = (page: Page): Promise<ContextCount> =>
   page.evaluate(() => {
-    const c = (window as unknown as { __contexts: { created: number; maxLive: number; errors: { type: string; message: string }[]; live(): number } }).__contexts;
+    const c = (
+      window as unknown as { __contexts: { created: number; maxLive: number; errors: { type: string; message: string }[]; live(): number } }
+    ).__contexts;
     return { created: c.created, live: c.live(), maxLive: c.maxLive, errors: c.errors };
   });
 
@@ -61,7 +72,7 @@ const contextCount = (page: Page): Promise<ContextCount> =>
 async function startedFiguresSettled(page: Page): Promise<void> {
   await page.evaluate(async () => {
     const started = () => (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).filter((view) => view.oceano !== null);
-    for (let before = -1; ; ) {
+    for (let before = -1; ;) {
       const views = started();
       await Promise.all(views.map((view) => view.oceano!.ready));
       await new Promise((resolve) => setTimeout(resolve, 1000));
@@ -113,11 +124,19 @@ describe('<oceano-view> on a page of thirty figures', () => {
 
     // The wake figure near the top, as first seen: its share link and its picture.
     const wakeFigure = '#f1';
-    const before = { link: await page.evaluate((s) => (document.querySelector(s) as ViewElement).oceano!.shareUrl(), wakeFigure), png: await elementCanvasPng(page, wakeFigure) };
+    const before = {
+      link: await page.evaluate((s) => (document.querySelector(s) as ViewElement).oceano!.shareUrl(), wakeFigure),
+      png: await elementCanvasPng(page, wakeFigure),
+    };
     await startedFiguresSettled(page);
     const heapFirst = await heap(page);
     const liveFirst = (await contextCount(page)).live;
-    const waiting = await page.evaluate(() => (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).filter((v) => v.oceano === null && !v.querySelector('canvas')).length);
+    const waiting = await page.evaluate(
+      () =>
+        (Array.from(document.querySelectorAll('oceano-view')) as ViewElement[]).filter(
+          (v) => v.oceano === null && !v.querySelector('canvas'),
+        ).length,
+    );
     // Lazy: the figures far below have no canvas at all yet.
     expect(waiting).toBeGreaterThan(20);
 
@@ -130,14 +149,27 @@ describe('<oceano-view> on a page of thirty figures', () => {
     // The wake figure is far away now: no context, its last frame kept as a still.
     const away = await page.evaluate((s) => {
       const view = document.querySelector(s) as ViewElement;
-      return { api: view.oceano, webgl: view.querySelector('canvas.oceano-canvas') !== null, still: view.querySelector('canvas.oceano-still') !== null };
+      return {
+        api: view.oceano,
+        webgl: view.querySelector('canvas.oceano-canvas') !== null,
+        still: view.querySelector('canvas.oceano-still') !== null,
+      };
     }, wakeFigure);
     expect(away).toEqual({ api: null, webgl: false, still: true });
 
     // Back up three screens at a time: the figures passed over come back too, more slowly.
-    await scrollThrough(page, [...down].reverse().filter((_, i) => i % 3 === 2).concat([0]));
+    await scrollThrough(
+      page,
+      [...down]
+        .reverse()
+        .filter((_, i) => i % 3 === 2)
+        .concat([0]),
+    );
     const after = await contextCount(page);
-    const back = { link: await page.evaluate((s) => (document.querySelector(s) as ViewElement).oceano!.shareUrl(), wakeFigure), png: await elementCanvasPng(page, wakeFigure) };
+    const back = {
+      link: await page.evaluate((s) => (document.querySelector(s) as ViewElement).oceano!.shareUrl(), wakeFigure),
+      png: await elementCanvasPng(page, wakeFigure),
+    };
     await startedFiguresSettled(page);
     const heapBack = await heap(page);
     console.log(
@@ -189,4 +221,3 @@ describe('<oceano-view> on a page of thirty figures', () => {
     await page.close();
   });
 });
-

@@ -33,7 +33,9 @@ try {
       }
     });
   }
-  console.log(`worst over all: mean|Δ| ${worstMae.toFixed(4)} levels, share > ${REFERENCE_TOLERANCE.levels} levels ${(worstShare * 100).toFixed(4)} %`);
+  console.log(
+    `worst over all: mean|Δ| ${worstMae.toFixed(4)} levels, share > ${REFERENCE_TOLERANCE.levels} levels ${(worstShare * 100).toFixed(4)} %`,
+  );
 } finally {
   await harness.close();
 }

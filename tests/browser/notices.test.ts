@@ -19,14 +19,24 @@ describe('notices', () => {
       const list = view.querySelector('.oceano-notices') as HTMLElement;
       const box = view.getBoundingClientRect();
       const items = Array.from(list.querySelectorAll<HTMLElement>('.oceano-notice'));
-      const overflowing = items.filter((item) => item.scrollWidth > item.clientWidth + 1 || item.getBoundingClientRect().right > box.right + 0.5);
+      const overflowing = items.filter(
+        (item) => item.scrollWidth > item.clientWidth + 1 || item.getBoundingClientRect().right > box.right + 0.5,
+      );
       // Scroll each notice into the list's view: it must then lie inside the figure.
       const reachable = items.filter((item) => {
         item.scrollIntoView({ block: 'nearest' });
         const r = item.getBoundingClientRect();
         return r.top >= box.top - 0.5 && r.bottom <= box.bottom + 0.5;
       });
-      return { count: view.oceano!.notices().length, items: items.length, overflowing: overflowing.length, reachable: reachable.length, listBottom: list.getBoundingClientRect().bottom, boxBottom: box.bottom, width: box.width };
+      return {
+        count: view.oceano!.notices().length,
+        items: items.length,
+        overflowing: overflowing.length,
+        reachable: reachable.length,
+        listBottom: list.getBoundingClientRect().bottom,
+        boxBottom: box.bottom,
+        width: box.width,
+      };
     });
     expect(facts.width).toBe(400);
     expect(facts.count).toBe(7);
@@ -40,10 +50,18 @@ describe('notices', () => {
   it('shows a refused share link wrapped beside the panel, selectable in one click', async () => {
     const { page } = await openOcean(harness, 't=4&seed=5', 800, 450);
     await page.evaluate(() => {
-      Object.defineProperty(navigator, 'clipboard', { value: { writeText: () => Promise.reject(new DOMException('refused', 'NotAllowedError')) } });
+      Object.defineProperty(navigator, 'clipboard', {
+        value: { writeText: () => Promise.reject(new DOMException('refused', 'NotAllowedError')) },
+      });
     });
     const url = await page.evaluate(() => window.oceano.shareUrl());
-    await page.evaluate(() => (Array.from(document.querySelectorAll<HTMLElement>('.lil-gui button')).find((b) => b.textContent?.includes('Share link')) as HTMLElement).click());
+    await page.evaluate(() =>
+      (
+        Array.from(document.querySelectorAll<HTMLElement>('.lil-gui button')).find((b) =>
+          b.textContent?.includes('Share link'),
+        ) as HTMLElement
+      ).click(),
+    );
     await page.waitForFunction(() => window.oceano.notices().length > 0);
     const facts = await page.evaluate(() => {
       const notice = document.querySelector('.oceano-notice') as HTMLElement;
@@ -70,10 +88,15 @@ describe('notices', () => {
 describe('Spanish page', () => {
   it('says a missing boat in Spanish only, and labels the Fresnel plot in Spanish', async () => {
     const { page } = await openOcean(harness, 'lang=es&t=2&fresnelPlot=1&boat=models/none.glb', 640, 360);
-    const facts = await page.evaluate(() => ({ notices: window.oceano.notices(), plot: document.querySelector('.oceano-fresnel-plot')!.getAttribute('aria-label') }));
+    const facts = await page.evaluate(() => ({
+      notices: window.oceano.notices(),
+      plot: document.querySelector('.oceano-fresnel-plot')!.getAttribute('aria-label'),
+    }));
     // The preview server answers a missing file with its index page (boatWebPage) or a 404 (boatNotFound): either, all in Spanish.
     expect(facts.notices).toHaveLength(1);
-    expect(facts.notices[0]).toMatch(/^(No se encontró el modelo del barco "models\/none\.glb" \(HTTP 404\)|Falta el modelo del barco "models\/none\.glb": el servidor envió una página web en su lugar)\. El océano sigue sin él\.$/);
+    expect(facts.notices[0]).toMatch(
+      /^(No se encontró el modelo del barco "models\/none\.glb" \(HTTP 404\)|Falta el modelo del barco "models\/none\.glb": el servidor envió una página web en su lugar)\. El océano sigue sin él\.$/,
+    );
     expect(facts.plot).toMatch(/^Gráfico de la reflectancia de Fresnel/);
     const plotPng = async () => Buffer.from(await (await page.$('.oceano-fresnel-plot'))!.screenshot({ type: 'png' }));
     const spanish = await plotPng();

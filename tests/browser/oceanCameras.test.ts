@@ -57,10 +57,11 @@ function differingInView(a: number[], b: number[], x0: number): number {
 /** Share of the view's pixels in the clear colour (magenta): where no sea was drawn. */
 function clearShare(pixels: number[], x0: number): number {
   let clear = 0;
-  for (let y = 0; y < VIEW; y++) for (let x = x0; x < x0 + VIEW; x++) {
-    const i = (y * 2 * VIEW + x) * 4;
-    if (pixels[i] > 200 && pixels[i + 1] < 60 && pixels[i + 2] > 200) clear++;
-  }
+  for (let y = 0; y < VIEW; y++)
+    for (let x = x0; x < x0 + VIEW; x++) {
+      const i = (y * 2 * VIEW + x) * 4;
+      if (pixels[i] > 200 && pixels[i + 1] < 60 && pixels[i + 2] > 200) clear++;
+    }
   return clear / (VIEW * VIEW);
 }
 
@@ -78,7 +79,7 @@ describe('two viewports, two cameras, one self-updating Ocean', () => {
     expect(clearShare(split, VIEW)).toBeLessThan(0.5);
   }, 120_000);
 
-  it('control: the west viewport drawn with the east camera\'s chunks differs from the west camera alone', async () => {
+  it("control: the west viewport drawn with the east camera's chunks differs from the west camera alone", async () => {
     const handDriven = await draw(['east', 'west'], 'east');
     const west = await draw(['west'], 'auto');
     const off = differingInView(handDriven, west, VIEW);
@@ -89,7 +90,7 @@ describe('two viewports, two cameras, one self-updating Ocean', () => {
   }, 120_000);
 });
 
-describe('a CubeCamera in the user\'s scene', () => {
+describe("a CubeCamera in the user's scene", () => {
   it('sees the sea below the horizon on every face, and the clear colour above it', async () => {
     const faces = await cube('auto');
     console.log(`[oceano] cube faces, clear-colour share below/above the horizon: ${JSON.stringify(faces)}`);

@@ -39,7 +39,8 @@ const draw = (seaLevel: number, eyeHeight: number, fault = false): ReturnType<Oc
 /** Pixels whose largest channel difference exceeds 2 levels. */
 function differing(a: number[], b: number[]): number {
   let count = 0;
-  for (let i = 0; i < a.length; i += 4) if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 2) count++;
+  for (let i = 0; i < a.length; i += 4)
+    if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 2) count++;
   return count;
 }
 
@@ -63,8 +64,10 @@ describe('the sea level: Ocean.position.y', () => {
 });
 
 describe('transforms and options the Ocean cannot honour', () => {
-  const updateAfter = (change: Parameters<OceanSurfaceApi['updateAfter']>[0]) => page.evaluate((c) => (window as unknown as Api).oceanSurface.updateAfter(c), change);
-  const refused = (options: Record<string, unknown>, via: 'constructor' | 'setParams') => page.evaluate((o, v) => (window as unknown as Api).oceanSurface.refused(o, v), options, via);
+  const updateAfter = (change: Parameters<OceanSurfaceApi['updateAfter']>[0]) =>
+    page.evaluate((c) => (window as unknown as Api).oceanSurface.updateAfter(c), change);
+  const refused = (options: Record<string, unknown>, via: 'constructor' | 'setParams') =>
+    page.evaluate((o, v) => (window as unknown as Api).oceanSurface.refused(o, v), options, via);
 
   it('throws at update on a rotation, a scale or a sideways move, naming it; a raised sea level is fine', async () => {
     expect(await updateAfter('rotation')).toMatch(/^Ocean: it \(or a parent\) is rotated/);
@@ -76,7 +79,9 @@ describe('transforms and options the Ocean cannot honour', () => {
   it('throws on an app-only or unknown option, naming the key, and takes the keys it reads', async () => {
     expect(await refused({ boatSpeed: 2 }, 'constructor')).toMatch(/^new Ocean: "boatSpeed" is not an Ocean option but the app's/);
     expect(await refused({ compare: 'seed-fft' }, 'constructor')).toMatch(/"compare" is not an Ocean option/);
-    expect(await refused({ windSpeeed: 12 }, 'constructor')).toMatch(/^new Ocean: "windSpeeed" is not an Ocean option\. Its options: waves, /);
+    expect(await refused({ windSpeeed: 12 }, 'constructor')).toMatch(
+      /^new Ocean: "windSpeeed" is not an Ocean option\. Its options: waves, /,
+    );
     expect(await refused({ exposure: 1 }, 'setParams')).toMatch(/^Ocean\.setParams: "exposure"/);
     expect(await refused({ sky: null }, 'setParams')).toMatch(/"sky" is not an Ocean option/);
     expect(await refused({ windSpeed: 12, waves: 'seed' }, 'constructor')).toBe('');

@@ -31,7 +31,18 @@ const exec = promisify(execFile);
 
 /** What `npm run build:package` writes, and what it is built from. */
 const PACKAGE_OUTPUTS = ['dist/lib/oceano.js', 'dist/lib/types/index.d.ts', 'dist/element/oceano-view.js'];
-const PACKAGE_INPUTS = ['src', 'shaders', 'public', 'scripts', 'package.json', 'package-lock.json', 'vite.config.ts', 'vite.lib.config.ts', 'tsconfig.json', 'tsconfig.lib.json'];
+const PACKAGE_INPUTS = [
+  'src',
+  'shaders',
+  'public',
+  'scripts',
+  'package.json',
+  'package-lock.json',
+  'vite.config.ts',
+  'vite.lib.config.ts',
+  'tsconfig.json',
+  'tsconfig.lib.json',
+];
 
 function newestChange(path: string): number {
   const stat = statSync(path);
@@ -116,12 +127,14 @@ function seaAndSkyFaults(png: PNG, seaBand = 0.15): string[] {
   const sea = rowsSeen(png, png.height - Math.round(png.height * seaBand), png.height);
   const whole = rowsSeen(png, 0, png.height).colour;
   let spread = 0;
-  for (let i = 0; i < png.data.length; i += 4) spread = Math.max(spread, distance({ r: png.data[i], g: png.data[i + 1], b: png.data[i + 2] }, whole));
+  for (let i = 0; i < png.data.length; i += 4)
+    spread = Math.max(spread, distance({ r: png.data[i], g: png.data[i + 1], b: png.data[i + 2] }, whole));
   const named = (c: Colour): string => `rgb(${c.r.toFixed(0)}, ${c.g.toFixed(0)}, ${c.b.toFixed(0)})`;
   const faults: string[] = [];
   if (spread < 20) faults.push(`blank: every pixel within ${spread.toFixed(1)} levels of ${named(whole)}`);
   if (!(sky.b > sky.r && brightness(sky) > 100)) faults.push(`the top rows are not sky: ${named(sky)}`);
-  if (!(sea.colour.b > sea.colour.r && brightness(sea.colour) < brightness(sky))) faults.push(`the bottom rows are not water below a brighter sky: ${named(sea.colour)}`);
+  if (!(sea.colour.b > sea.colour.r && brightness(sea.colour) < brightness(sky)))
+    faults.push(`the bottom rows are not water below a brighter sky: ${named(sea.colour)}`);
   if (distance(sky, sea.colour) < 40) faults.push(`sky ${named(sky)} and sea ${named(sea.colour)} are alike`);
   if (sea.detail < 0.75) faults.push(`no waves: the bottom rows' detail is ${sea.detail.toFixed(2)} levels`);
   return faults;
@@ -141,7 +154,22 @@ function horizonFaults(png: PNG, horizon: number): string[] {
 }
 
 /** What a user of `Ocean` may call, beside what three.js's Object3D gives it. */
-const OCEAN_PUBLIC_MEMBERS = ['autoUpdate', 'constructor', 'dispose', 'disturb', 'getParams', 'sampleSurface', 'sampleSurfaces', 'setParams', 'setSky', 'sky', 'submersion', 'time', 'update', 'whenReady'].sort();
+const OCEAN_PUBLIC_MEMBERS = [
+  'autoUpdate',
+  'constructor',
+  'dispose',
+  'disturb',
+  'getParams',
+  'sampleSurface',
+  'sampleSurfaces',
+  'setParams',
+  'setSky',
+  'sky',
+  'submersion',
+  'time',
+  'update',
+  'whenReady',
+].sort();
 
 /**
  * The public members a user of `className` (exported from the package's index.d.ts under
@@ -157,8 +185,13 @@ function publicMembers(types: string, className: string): string[] {
   const instance = checker.getDeclaredTypeOfSymbol(checker.getAliasedSymbol(symbol));
   const own = checker.getPropertiesOfType(instance).filter((property) => {
     const declaration = property.valueDeclaration ?? property.declarations?.[0];
-    const inPackage = declaration !== undefined && !declaration.getSourceFile().fileName.includes('/node_modules/three/') && !declaration.getSourceFile().fileName.includes('/@types/three/');
-    const hidden = declaration !== undefined && (ts.getCombinedModifierFlags(declaration) & (ts.ModifierFlags.Private | ts.ModifierFlags.Protected)) !== 0;
+    const inPackage =
+      declaration !== undefined &&
+      !declaration.getSourceFile().fileName.includes('/node_modules/three/') &&
+      !declaration.getSourceFile().fileName.includes('/@types/three/');
+    const hidden =
+      declaration !== undefined &&
+      (ts.getCombinedModifierFlags(declaration) & (ts.ModifierFlags.Private | ts.ModifierFlags.Protected)) !== 0;
     return inPackage && !hidden;
   });
   return ['constructor', ...own.map((property) => property.name)].sort();
@@ -180,7 +213,15 @@ describe('the npm package', () => {
     const [tarball] = readdirSync(tarballs).filter((file) => file.endsWith('.tgz'));
     writeFileSync(join(site, 'package.json'), JSON.stringify({ name: 'oceano-package-user', private: true, type: 'module' }));
     await npm(
-      ['install', '--prefer-offline', '--no-audit', '--no-fund', join(tarballs, tarball), `three@${installedVersion('three')}`, `@types/three@${installedVersion('@types/three')}`],
+      [
+        'install',
+        '--prefer-offline',
+        '--no-audit',
+        '--no-fund',
+        join(tarballs, tarball),
+        `three@${installedVersion('three')}`,
+        `@types/three@${installedVersion('@types/three')}`,
+      ],
       site,
     );
     browser = await puppeteer.connect({ browserWSEndpoint: inject('browserEndpoint') });
@@ -191,30 +232,44 @@ describe('the npm package', () => {
     if (work) rmSync(work, { recursive: true, force: true });
   });
 
-  it('holds the library, its types, the element and the element\'s boat, and nothing else', () => {
+  it("holds the library, its types, the element and the element's boat, and nothing else", () => {
     const installed = join(site, 'node_modules', 'oceano');
     expect(readdirSync(installed).sort()).toEqual(['LICENSE', 'README.md', 'dist', 'package.json']);
     const files = filesUnder(join(installed, 'dist'));
-    for (const file of ['lib/oceano.js', 'lib/types/index.d.ts', 'lib/types/element.d.ts', 'element/oceano-view.js', 'element/models/boat.glb']) expect(files).toContain(file);
+    for (const file of [
+      'lib/oceano.js',
+      'lib/types/index.d.ts',
+      'lib/types/element.d.ts',
+      'element/oceano-view.js',
+      'element/models/boat.glb',
+    ])
+      expect(files).toContain(file);
     // The FFT twin's Worker ships beside the library that starts it.
     expect(files.filter((file) => /^lib\/assets\/fftFieldsWorker-[\w-]+\.js$/.test(file))).toHaveLength(1);
   });
 
-  it('leaves three and its addons as the library\'s only bare imports; everything else is bundled', () => {
+  it("leaves three and its addons as the library's only bare imports; everything else is bundled", () => {
     const lib = join(site, 'node_modules', 'oceano', 'dist', 'lib');
     const scripts = filesUnder(lib).filter((file) => file.endsWith('.js'));
     const imports = new Set(scripts.flatMap((file) => bareImports(readFileSync(join(lib, file), 'utf8'))));
     expect(imports).toContain('three');
     expect([...imports].filter((name) => !isThreeImport(name))).toEqual([]);
     // Control: a dependency left unbundled, in each form an import can take, is seen.
-    const planted = 'import FFT from "fft.js";\nexport { GUI } from "lil-gui";\nconst plot = () => import("uplot");\nimport { Water } from "three/examples/jsm/objects/Water.js";';
-    expect(bareImports(planted).filter((name) => !isThreeImport(name))).toEqual(['fft.js', 'lil-gui', 'uplot', 'three/examples/jsm/objects/Water.js']);
+    const planted =
+      'import FFT from "fft.js";\nexport { GUI } from "lil-gui";\nconst plot = () => import("uplot");\nimport { Water } from "three/examples/jsm/objects/Water.js";';
+    expect(bareImports(planted).filter((name) => !isThreeImport(name))).toEqual([
+      'fft.js',
+      'lil-gui',
+      'uplot',
+      'three/examples/jsm/objects/Water.js',
+    ]);
   });
 
-  it('compiles a three.js user\'s TypeScript against the installed types', async () => {
+  it("compiles a three.js user's TypeScript against the installed types", async () => {
     const project = join(site, 'consumer');
     cpSync(CONSUMER, project, { recursive: true });
-    const compile = (...options: string[]) => exec(process.execPath, [TSC, '-p', join(project, 'tsconfig.json'), ...options], { cwd: project });
+    const compile = (...options: string[]) =>
+      exec(process.execPath, [TSC, '-p', join(project, 'tsconfig.json'), ...options], { cwd: project });
     // Our declaration files are checked too (no skipLibCheck): one that names a module the package lacks fails here.
     await expect(compile()).resolves.toBeDefined();
     // Control: without its @ts-expect-error each wrongly typed line fails the compile (a wrong
@@ -224,11 +279,19 @@ describe('the npm package', () => {
     const marks = source.match(/^\s*\/\/ @ts-expect-error.*\n/gm) ?? [];
     expect(marks).toHaveLength(4);
     writeFileSync(join(project, 'consumer.ts'), source.replace(/^\s*\/\/ @ts-expect-error.*\n/gm, ''));
-    const failed = await compile('--skipLibCheck').then(() => '', (error: { stdout: string }) => error.stdout);
-    expect(failed.match(/consumer\.ts\(\d+,\d+\): error TS\d+/g)?.map((line) => line.replace(/^.*error /, ''))).toEqual(['TS2322', 'TS2353', 'TS2353', 'TS2353']);
+    const failed = await compile('--skipLibCheck').then(
+      () => '',
+      (error: { stdout: string }) => error.stdout,
+    );
+    expect(failed.match(/consumer\.ts\(\d+,\d+\): error TS\d+/g)?.map((line) => line.replace(/^.*error /, ''))).toEqual([
+      'TS2322',
+      'TS2353',
+      'TS2353',
+      'TS2353',
+    ]);
   });
 
-  it('publishes exactly Ocean\'s intended members: the app\'s plumbing and the test hooks are not in its types', () => {
+  it("publishes exactly Ocean's intended members: the app's plumbing and the test hooks are not in its types", () => {
     const types = join(site, 'node_modules', 'oceano', 'dist', 'lib', 'types');
     expect(publicMembers(types, 'Ocean')).toEqual(OCEAN_PUBLIC_MEMBERS);
     expect(publicMembers(types, 'OceanUnderwater')).not.toContain('forceShaftLightWindow');
@@ -283,14 +346,19 @@ describe('the npm package', () => {
         await tab.goto(`${url}${name}`, { waitUntil: 'load' });
         await tab.waitForFunction(() => (window as unknown as { framesStarted: number }).framesStarted >= 12);
         const png = PNG.sync.read(Buffer.from(await tab.screenshot({ type: 'png' })));
-        return { faults: seaAndSkyFaults(png), errors, missing: missing.filter((path) => !path.endsWith('/favicon.ico')), workers: tab.workers().map((worker) => worker.url()) };
+        return {
+          faults: seaAndSkyFaults(png),
+          errors,
+          missing: missing.filter((path) => !path.endsWith('/favicon.ico')),
+          workers: tab.workers().map((worker) => worker.url()),
+        };
       } finally {
         await tab.close();
         server.close();
       }
     }
 
-    it('shows sea below sky, with no error and the FFT twin\'s Worker running from the installed package', async () => {
+    it("shows sea below sky, with no error and the FFT twin's Worker running from the installed package", async () => {
       const seen = await look(example);
       expect(seen.errors).toEqual([]);
       expect(seen.missing).toEqual([]);
@@ -331,10 +399,18 @@ describe('the npm package', () => {
         // Between two frames: each buoy's y against sampleSurface under it at the frame's time, as the Float32Array stores it.
         const seen = await tab.evaluate(() => {
           type Sample = { height: number };
-          const { ocean, buoys } = (window as unknown as { buoys: { ocean: { sampleSurface(x: number, z: number): Sample }; buoys: { position: { x: number; y: number; z: number } }[] } }).buoys;
+          const { ocean, buoys } = (
+            window as unknown as {
+              buoys: { ocean: { sampleSurface(x: number, z: number): Sample }; buoys: { position: { x: number; y: number; z: number } }[] };
+            }
+          ).buoys;
           const heights = buoys.map((b) => Math.fround(ocean.sampleSurface(Math.fround(b.position.x), Math.fround(b.position.z)).height));
           const ys = buoys.map((b) => b.position.y);
-          return { count: buoys.length, offSample: ys.filter((y, i) => y !== heights[i]).length, spread: Math.max(...ys) - Math.min(...ys) };
+          return {
+            count: buoys.length,
+            offSample: ys.filter((y, i) => y !== heights[i]).length,
+            spread: Math.max(...ys) - Math.min(...ys),
+          };
         });
         return { errors, faults: seaAndSkyFaults(png), ...seen };
       } finally {
@@ -393,7 +469,7 @@ describe('the npm package', () => {
       }
     }
 
-    it('draws the waterline frame through the user\'s composer: bloom and the underwater pass, no error', async () => {
+    it("draws the waterline frame through the user's composer: bloom and the underwater pass, no error", async () => {
       expect(page.split('\n').length).toBeLessThanOrEqual(80);
       const seen = await compose(page);
       if (COMPOSER_SHOT) writeFileSync(COMPOSER_SHOT, PNG.sync.write(seen.png));
@@ -413,7 +489,9 @@ describe('the npm package', () => {
     const AUTO = "{ waves: 'fft', windSpeed: 12, autoUpdate: true }";
     const LOOP = 'renderer.setAnimationLoop(() => {';
     /** The page by hand: autoUpdate off, one update a frame, for the left player's camera only. */
-    const handDriven = page.replace(AUTO, "{ waves: 'fft', windSpeed: 12 }").replace(LOOP, 'renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000, players[0]);');
+    const handDriven = page
+      .replace(AUTO, "{ waves: 'fft', windSpeed: 12 }")
+      .replace(LOOP, 'renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000, players[0]);');
 
     /** The page after 12 frames: its errors and each half's faults as a picture of sea and sky. */
     async function halves(html: string): Promise<{ errors: string[]; left: string[]; right: string[]; png: PNG }> {
@@ -480,7 +558,9 @@ describe('the npm package', () => {
     );
     const served: string[] = [];
     const missing: string[] = [];
-    const { server, url } = await serveFolder(site, '/courses/graphics/week-3/', (path, status) => (status === 200 ? served : missing).push(path));
+    const { server, url } = await serveFolder(site, '/courses/graphics/week-3/', (path, status) =>
+      (status === 200 ? served : missing).push(path),
+    );
     const tab = await browser.newPage();
     try {
       tab.setDefaultTimeout(120_000);
@@ -503,7 +583,12 @@ describe('the npm package', () => {
     // The CDN: the installed package under /npm/oceano@VERSION/, on another origin (port), with the CORS header such CDNs send.
     const version = (JSON.parse(readFileSync(join(site, 'node_modules', 'oceano', 'package.json'), 'utf8')) as { version: string }).version;
     const fromCdn: string[] = [];
-    const cdn = await serveFolder(join(site, 'node_modules', 'oceano'), `/npm/oceano@${version}/`, (path, status) => fromCdn.push(`${status} ${path}`), { 'access-control-allow-origin': '*' });
+    const cdn = await serveFolder(
+      join(site, 'node_modules', 'oceano'),
+      `/npm/oceano@${version}/`,
+      (path, status) => fromCdn.push(`${status} ${path}`),
+      { 'access-control-allow-origin': '*' },
+    );
     const script = `${cdn.url}dist/element/oceano-view.js`;
     const course = join(work, 'course');
     mkdirSync(course, { recursive: true });
@@ -528,14 +613,20 @@ describe('the npm package', () => {
       }
       const workers = tab.workers().map((worker) => worker.url());
       // Control: the page may not start the CDN's Worker script itself; the element's stand-in does.
-      const direct = await tab.evaluate((url) => {
-        try {
-          new Worker(url, { type: 'module' }).terminate();
-          return 'started';
-        } catch (error) {
-          return (error as Error).name;
-        }
-      }, `${cdn.url}${fromCdn.map((line) => line.split(' ')[1]).find((path) => /fftFieldsWorker-[\w-]+\.js$/.test(path))!.slice(`/npm/oceano@${version}/`.length)}`);
+      const direct = await tab.evaluate(
+        (url) => {
+          try {
+            new Worker(url, { type: 'module' }).terminate();
+            return 'started';
+          } catch (error) {
+            return (error as Error).name;
+          }
+        },
+        `${cdn.url}${fromCdn
+          .map((line) => line.split(' ')[1])
+          .find((path) => /fftFieldsWorker-[\w-]+\.js$/.test(path))!
+          .slice(`/npm/oceano@${version}/`.length)}`,
+      );
       expect(errors).toEqual([]);
       expect(fromCdn.filter((line) => !line.startsWith('200 '))).toEqual([]);
       expect(fromCdn).toContainEqual(expect.stringMatching(/^200 .*\/dist\/element\/models\/boat\.glb$/));

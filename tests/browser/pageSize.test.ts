@@ -7,7 +7,12 @@ import { describe, expect, it } from 'vitest';
 
 describe('packaging', () => {
   const dist = join(import.meta.dirname, '..', '..', 'dist');
-  const scripts = [...readdirSync(join(dist, 'assets')).filter((f) => f.endsWith('.js')).map((f) => `assets/${f}`), 'oceano.js'];
+  const scripts = [
+    ...readdirSync(join(dist, 'assets'))
+      .filter((f) => f.endsWith('.js'))
+      .map((f) => `assets/${f}`),
+    'oceano.js',
+  ];
   const text = (file: string) => readFileSync(join(dist, file), 'utf8');
 
   it('ships minified scripts, three.js once, imported by both the page and oceano.js', () => {
@@ -32,7 +37,16 @@ describe('packaging', () => {
     // Fetched on first use, never before the first frame: the glTF loader (with the boat), the
     // underwater passes, the FFT and Gerstner models, the control panel (lil-gui, after the
     // first frame), the physics estimators, the GPU probe and the sky prefiltered for the seed's sea.
-    for (const lazy of ['GLTFLoader', 'oceanUnderwater', 'fftModelCode', 'gerstnerModelCode', 'controlPanel', 'physicsReport', 'surfaceProbe', 'prefilteredSky']) {
+    for (const lazy of [
+      'GLTFLoader',
+      'oceanUnderwater',
+      'fftModelCode',
+      'gerstnerModelCode',
+      'controlPanel',
+      'physicsReport',
+      'surfaceProbe',
+      'prefilteredSky',
+    ]) {
       const chunk = scripts.find((file) => file.startsWith(`assets/${lazy}-`));
       expect(chunk, lazy).toBeDefined();
       expect(loaded.has(chunk!), lazy).toBe(false);

@@ -17,12 +17,25 @@ describe('shareable URL state', () => {
   it('reopens a shared link with the same parameters, camera and time, pixel for pixel', async () => {
     const { page } = await openOcean(harness, 't=3', 320, 180);
     await page.evaluate(() => {
-      window.oceano.setParams({ swellAmplitude: 2.37, swellFrequency: 0.0731, seed: 42, sunElevation: 33.3, sunAzimuth: 141, waterColor: '#113355', fresnel: false, rippleStrength: 0.91 });
+      window.oceano.setParams({
+        swellAmplitude: 2.37,
+        swellFrequency: 0.0731,
+        seed: 42,
+        sunElevation: 33.3,
+        sunAzimuth: 141,
+        waterColor: '#113355',
+        fresnel: false,
+        rippleStrength: 0.91,
+      });
       window.oceano.setCamera({ position: [12.5 + 1 / 3, 14.25, 31], target: [-5, 1, -70.1] });
       window.oceano.setTime(123.456789);
     });
     const original = await canvasPng(page);
-    const state = await page.evaluate(() => ({ url: window.oceano.shareUrl(), params: window.oceano.getParams(), camera: window.oceano.getCamera() }));
+    const state = await page.evaluate(() => ({
+      url: window.oceano.shareUrl(),
+      params: window.oceano.getParams(),
+      camera: window.oceano.getCamera(),
+    }));
     expect(state.url.startsWith(harness.baseUrl)).toBe(true);
     expect(state.url).toMatch(/[?&]cam=/);
     expect(state.url).toMatch(/[?&]t=123\.456789(&|$)/);
@@ -146,7 +159,10 @@ describe('embedding and accessibility', () => {
     expect(await surfaceHeight(page)).toBe(h0);
     expect(await page.evaluate(() => window.oceano.activity().looping)).toBe(false);
     await page.keyboard.press('Tab');
-    const focused = await page.evaluate(() => ({ className: document.activeElement?.className, label: document.activeElement?.getAttribute('aria-label') }));
+    const focused = await page.evaluate(() => ({
+      className: document.activeElement?.className,
+      label: document.activeElement?.getAttribute('aria-label'),
+    }));
     expect(focused).toEqual({ className: 'oceano-play', label: 'Play' });
     await page.keyboard.press('Enter');
     await page.waitForFunction((h) => window.oceano.sampleSurface(3, -7).height !== h, {}, h0);

@@ -62,9 +62,13 @@ export async function recordedPage(harness: Harness, width: number, height: numb
 /** Resolves once every <oceano-view> on the page has started (they start near the screen) and drawn its first frame. */
 export async function viewsReady(page: Page): Promise<void> {
   await page.waitForFunction(() => customElements.get('oceano-view') !== undefined);
-  await page.waitForFunction(() => Array.from(document.querySelectorAll('oceano-view')).every((view) => (view as HTMLElement & { oceano: unknown }).oceano));
+  await page.waitForFunction(() =>
+    Array.from(document.querySelectorAll('oceano-view')).every((view) => (view as HTMLElement & { oceano: unknown }).oceano),
+  );
   await page.evaluate(async () => {
-    const views = Array.from(document.querySelectorAll('oceano-view')) as (HTMLElement & { oceano: { ready: Promise<void>; loaded(): Promise<void> } })[];
+    const views = Array.from(document.querySelectorAll('oceano-view')) as (HTMLElement & {
+      oceano: { ready: Promise<void>; loaded(): Promise<void> };
+    })[];
     await Promise.all(views.map((view) => view.oceano.ready));
     // The parts fetched on first use (the foam's texture and GLSL) change the picture when they arrive.
     await Promise.all(views.map((view) => view.oceano.loaded()));
@@ -73,6 +77,9 @@ export async function viewsReady(page: Page): Promise<void> {
 
 /** One element's canvas as PNG, drawn now. */
 export async function elementCanvasPng(page: Page, selector: string): Promise<Buffer> {
-  await page.evaluate((s) => (document.querySelector(s) as HTMLElement & { oceano: { renderFrame(): void } }).oceano.renderFrame(), selector);
+  await page.evaluate(
+    (s) => (document.querySelector(s) as HTMLElement & { oceano: { renderFrame(): void } }).oceano.renderFrame(),
+    selector,
+  );
   return screenshotCanvas(page, `${selector} canvas`);
 }

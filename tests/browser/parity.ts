@@ -30,12 +30,16 @@ export const PARITY_NORMAL_LIMIT = PARITY_LIMITS.defaults.normal;
 export async function openWithNativeSin(harness: Harness, query: string): Promise<Page> {
   const page = await harness.browser.newPage();
   await page.setViewport({ width: 640, height: 360, deviceScaleFactor: 1 });
-  await page.evaluateOnNewDocument((header: string, native: string) => {
-    const original = WebGL2RenderingContext.prototype.shaderSource;
-    WebGL2RenderingContext.prototype.shaderSource = function (shader: WebGLShader, source: string) {
-      original.call(this, shader, source.replace(header, native));
-    };
-  }, SIN_TURNS_HEADER, NATIVE_SIN_TURNS);
+  await page.evaluateOnNewDocument(
+    (header: string, native: string) => {
+      const original = WebGL2RenderingContext.prototype.shaderSource;
+      WebGL2RenderingContext.prototype.shaderSource = function (shader: WebGLShader, source: string) {
+        original.call(this, shader, source.replace(header, native));
+      };
+    },
+    SIN_TURNS_HEADER,
+    NATIVE_SIN_TURNS,
+  );
   await page.goto(`${harness.baseUrl}?${query}`, { waitUntil: 'load' });
   await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
   await page.evaluate(() => window.oceano.ready);

@@ -23,7 +23,7 @@ describe('physics panel', () => {
     // The control: the same checks must see the panel once it opens.
     await page.evaluate(() => window.oceano.setParams({ physics: true }));
     expect(await page.evaluate(() => window.oceano.debug.physicsRuns())).toBe(1);
-    expect((await page.evaluate(PLOT_CHUNKS) as string[]).length).toBeGreaterThan(0);
+    expect(((await page.evaluate(PLOT_CHUNKS)) as string[]).length).toBeGreaterThan(0);
     expect(await page.$$eval('.oceano-physics .uplot', (els) => els.length)).toBe(2);
     expect(await page.$eval('.oceano-physics-sources', (el) => el.textContent)).toMatch(/Pierson & Moskowitz 1964/);
     expect(consoleErrors).toEqual([]);
@@ -52,7 +52,11 @@ describe('physics panel', () => {
   it('open, it measures again when the sea changes, saying so meanwhile', async () => {
     const { page, consoleErrors } = await openOcean(harness, 't=10&physics=1', 480, 270);
     const heading = () => page.$eval('.oceano-physics h2', (el) => el.textContent ?? '');
-    const hsTheory = () => page.$$eval('.oceano-physics table tr', (rows) => rows.find((tr) => /^Hs = 4σ/.test(tr.cells[0]?.textContent ?? ''))!.cells[2].textContent ?? '');
+    const hsTheory = () =>
+      page.$$eval(
+        '.oceano-physics table tr',
+        (rows) => rows.find((tr) => /^Hs = 4σ/.test(tr.cells[0]?.textContent ?? ''))!.cells[2].textContent ?? '',
+      );
     expect(await page.evaluate(() => window.oceano.debug.physicsRuns())).toBe(1);
     expect(await heading()).toMatch(/seed sea/);
     // The Gerstner model's code is fetched on this change: the panel waits for it, not measuring the seed's sea again.

@@ -39,10 +39,19 @@ function lumaDifference(a: Buffer, b: Buffer): LumaDifference {
 }
 
 const within = (d: LumaDifference) => d.mean <= POSTER_TOLERANCE.meanLevels && d.over32 <= POSTER_TOLERANCE.over32;
-const describeLuma = (d: LumaDifference) => `luma mean |Δ| ${d.mean.toFixed(2)} levels (limit ${POSTER_TOLERANCE.meanLevels}), ${(d.over32 * 100).toFixed(2)} % of pixels off by more than 32 (limit ${POSTER_TOLERANCE.over32 * 100} %)`;
+const describeLuma = (d: LumaDifference) =>
+  `luma mean |Δ| ${d.mean.toFixed(2)} levels (limit ${POSTER_TOLERANCE.meanLevels}), ${(d.over32 * 100).toFixed(2)} % of pixels off by more than 32 (limit ${POSTER_TOLERANCE.over32 * 100} %)`;
 
 /** Presets and a lesson whose picture needs more than a first frame: the boat, a culling camera, code fetched late, the wake, the comparison. */
-const SAMPLES = ['presets/boat-pitch', 'presets/frustum-culling', 'presets/perlin-heightmap', 'presets/underwater', 'presets/kelvin-wake', 'presets/compare-models', 'lessons/horizon'];
+const SAMPLES = [
+  'presets/boat-pitch',
+  'presets/frustum-culling',
+  'presets/perlin-heightmap',
+  'presets/underwater',
+  'presets/kelvin-wake',
+  'presets/compare-models',
+  'lessons/horizon',
+];
 
 /** A fresh figure of the poster's size with `attribute`, frozen at `time`: its picture once complete, as PNG. */
 async function livePicture(page: Page, attribute: string, value: string, time: number): Promise<Buffer> {
@@ -88,7 +97,15 @@ describe('posters (npm run build: dist/posters/)', () => {
     await page.goto(`${harness.baseUrl}fixtures/one-figure.html`, { waitUntil: 'load' });
     const files = posterJobs().flatMap((job) => job.files);
     const sizes = await page.evaluate(
-      (base, paths) => Promise.all(paths.map(async (path) => createImageBitmap(await (await fetch(base + path)).blob()).then((b) => `${b.width}×${b.height}`, () => 'unreadable'))),
+      (base, paths) =>
+        Promise.all(
+          paths.map(async (path) =>
+            createImageBitmap(await (await fetch(base + path)).blob()).then(
+              (b) => `${b.width}×${b.height}`,
+              () => 'unreadable',
+            ),
+          ),
+        ),
       harness.baseUrl,
       files,
     );
@@ -113,7 +130,10 @@ describe('posters (npm run build: dist/posters/)', () => {
       expect.soft(within(live), `${sample}: ${describeLuma(live)}`).toBe(true);
     }
     // Control: the boat pitching half a second later is another picture.
-    const later = lumaDifference(await posterPicture(page, 'posters/presets/boat-pitch.webp'), await livePicture(page, 'preset', 'boat-pitch', 0.5));
+    const later = lumaDifference(
+      await posterPicture(page, 'posters/presets/boat-pitch.webp'),
+      await livePicture(page, 'preset', 'boat-pitch', 0.5),
+    );
     rows.push(`control, boat-pitch at t = 0.5 s: ${describeLuma(later)}`);
     console.log(`posters against fresh figures:\n${rows.join('\n')}`);
     expect(within(later)).toBe(false);

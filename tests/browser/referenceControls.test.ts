@@ -49,7 +49,11 @@ describe('reference comparison: negative controls on the committed images', () =
   });
 
   it('fails every reference against every other of its size', () => {
-    const pictures = REFERENCE_VIEWS.map((view) => ({ name: view.name, png: PNG.sync.read(read(view.name)), size: `${view.width}×${view.height}` }));
+    const pictures = REFERENCE_VIEWS.map((view) => ({
+      name: view.name,
+      png: PNG.sync.read(read(view.name)),
+      size: `${view.width}×${view.height}`,
+    }));
     for (const a of pictures) {
       for (const b of pictures) {
         if (a.name >= b.name || a.size !== b.size) continue;

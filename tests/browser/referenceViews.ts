@@ -25,7 +25,13 @@ export const DIVE_QUERY = 'seed=1&t=10&cam=0,-6,40,0,-6,-20';
  */
 export const LOD_COLOUR_VIEWS: ReferenceView[] = [
   { name: 'lod-colors-default', query: 'seed=1&t=10&lodColors=1', width: 640, height: 360 },
-  { name: 'lod-colors-above', query: 'seed=1&t=10&lodColors=1&lodDistance=40', width: 640, height: 360, pose: { position: [0, 120, 150], target: [0, 0, -150] } },
+  {
+    name: 'lod-colors-above',
+    query: 'seed=1&t=10&lodColors=1&lodDistance=40',
+    width: 640,
+    height: 360,
+    pose: { position: [0, 120, 150], target: [0, 0, -150] },
+  },
 ];
 
 /**

@@ -64,14 +64,22 @@ describe('WebGL context loss', () => {
       { name: 'gerstner', params: { waves: 'gerstner' } },
       { name: 'compare seed,gerstner,fft', params: { waves: 'seed', compare: 'seed,gerstner,fft' } },
       { name: 'fft at 20 m/s', params: { compare: 'off', waves: 'fft', windSpeed: 20 } },
-      { name: 'the wake behind a boat turning at 6 m/s', params: { waves: 'seed', windSpeed: 10, wake: true, boatSpeed: 6, boatTurnRate: 12 }, moving: true },
+      {
+        name: 'the wake behind a boat turning at 6 m/s',
+        params: { waves: 'seed', windSpeed: 10, wake: true, boatSpeed: 6, boatTurnRate: 12 },
+        moving: true,
+      },
     ];
     // What the last frame drew, and what three.js holds on the GPU (it counts again from zero on a restored context).
     const drawn = () =>
       page.evaluate(() => {
         const { drawCalls, triangles } = window.oceano.stats();
         const info = window.oceano.three.renderer.info;
-        return { drawCalls, triangles, memory: { geometries: info.memory.geometries, textures: info.memory.textures, programs: info.programs?.length ?? 0 } };
+        return {
+          drawCalls,
+          triangles,
+          memory: { geometries: info.memory.geometries, textures: info.memory.textures, programs: info.programs?.length ?? 0 },
+        };
       });
     const report: string[] = [];
     for (const [index, mode] of modes.entries()) {
@@ -112,10 +120,14 @@ describe('WebGL context loss', () => {
       // material's programs for other wave models), which a restored context uploads and
       // compiles only when they are drawn again.
       if (index === 0) {
-        expect([drawnAfter.memory.geometries, drawnAfter.memory.textures], mode.name).toEqual([drawnBefore.memory.geometries, drawnBefore.memory.textures]);
+        expect([drawnAfter.memory.geometries, drawnAfter.memory.textures], mode.name).toEqual([
+          drawnBefore.memory.geometries,
+          drawnBefore.memory.textures,
+        ]);
         expect(drawnBefore.memory.programs - drawnAfter.memory.programs, mode.name).toBeLessThanOrEqual(2);
       }
-      for (const kind of ['geometries', 'textures', 'programs'] as const) expect(drawnAfter.memory[kind], `${mode.name}: ${kind}`).toBeLessThanOrEqual(drawnBefore.memory[kind]);
+      for (const kind of ['geometries', 'textures', 'programs'] as const)
+        expect(drawnAfter.memory[kind], `${mode.name}: ${kind}`).toBeLessThanOrEqual(drawnBefore.memory[kind]);
     }
     console.log(`[oceano] drawn and held around a restore:\n${report.join('\n')}`);
     expect(consoleErrors).toEqual([]);
@@ -144,7 +156,9 @@ describe('resizing', () => {
     await resized.setViewport({ width: 400, height: 224, deviceScaleFactor: 1 });
     await resized.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     await resized.evaluate(() => window.oceano.renderFrame());
-    expect(await resized.evaluate(() => [document.querySelector('canvas')!.width, document.querySelector('canvas')!.height])).toEqual([400, 224]);
+    expect(await resized.evaluate(() => [document.querySelector('canvas')!.width, document.querySelector('canvas')!.height])).toEqual([
+      400, 224,
+    ]);
     // Screenshot before the next page opens: a page behind another draws no screenshots.
     const after = await canvasPng(resized);
     expect(consoleErrors).toEqual([]);
@@ -167,11 +181,14 @@ describe('resizing', () => {
       await page.evaluate(() => window.oceano.renderFrame());
     }
     for (let i = 0; i < 4; i++) {
-      await page.evaluate((zero) => {
-        const container = document.getElementById('oceano-page')!;
-        container.style.width = zero ? '0px' : '';
-        container.style.height = zero ? '0px' : '';
-      }, i % 2 === 0);
+      await page.evaluate(
+        (zero) => {
+          const container = document.getElementById('oceano-page')!;
+          container.style.width = zero ? '0px' : '';
+          container.style.height = zero ? '0px' : '';
+        },
+        i % 2 === 0,
+      );
       await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
       await page.evaluate(() => window.oceano.renderFrame());
     }
@@ -215,7 +232,9 @@ describe('long runs', () => {
     const late = await averaged(1e6);
     await page.evaluate(() => window.oceano.setParams({ rippleStrength: 0 }));
     const smooth = await averaged(10, 2);
-    console.log(`[oceano] sea statistics t≈10: ${JSON.stringify(early)}, t≈1e6: ${JSON.stringify(late)}, no ripples: ${JSON.stringify(smooth)}`);
+    console.log(
+      `[oceano] sea statistics t≈10: ${JSON.stringify(early)}, t≈1e6: ${JSON.stringify(late)}, no ripples: ${JSON.stringify(smooth)}`,
+    );
     expect(relative(early.mean, late.mean)).toBeLessThan(0.03);
     expect(relative(early.std, late.std)).toBeLessThan(0.05);
     expect(relative(early.detail, late.detail)).toBeLessThan(0.05);
@@ -231,7 +250,9 @@ describe('missing assets', () => {
     await page.goto(`${harness.baseUrl}?t=10&sky=sky`, { waitUntil: 'load' });
     await page.waitForFunction(() => (window as { oceano?: unknown }).oceano !== undefined);
     await page.evaluate(() => window.oceano.ready);
-    expect(await page.evaluate(() => window.oceano.notices())).toEqual(['The sky images under "sky" could not be loaded. Showing the sky painted from the sun instead.']);
+    expect(await page.evaluate(() => window.oceano.notices())).toEqual([
+      'The sky images under "sky" could not be loaded. Showing the sky painted from the sun instead.',
+    ]);
     const png = await canvasPng(page);
     const sky = seaStatistics(png, 0);
     const sea = seaStatistics(png, 0.7);

@@ -27,7 +27,11 @@ function seaUnderPixel(px: number, py: number, width: number, height: number): {
   const r = [-forward[2], 0, forward[0]];
   const rl = Math.hypot(...r);
   const right = r.map((c) => c / rl);
-  const up = [right[1] * forward[2] - right[2] * forward[1], right[2] * forward[0] - right[0] * forward[2], right[0] * forward[1] - right[1] * forward[0]];
+  const up = [
+    right[1] * forward[2] - right[2] * forward[1],
+    right[2] * forward[0] - right[0] * forward[2],
+    right[0] * forward[1] - right[1] * forward[0],
+  ];
   const tan = Math.tan(((FOV / 2) * Math.PI) / 180);
   const nx = (px / width) * 2 - 1;
   const ny = 1 - (py / height) * 2;
@@ -40,11 +44,19 @@ function seaUnderPixel(px: number, py: number, width: number, height: number): {
 async function chooseTool(page: Page, tool: 'none' | 'probe' | 'ruler' | 'disturb'): Promise<void> {
   await page.waitForSelector('.lil-gui.lil-root');
   if (!(await page.$('.oceano-sea-tools:not([hidden])'))) {
-    await page.evaluate(() => Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button')).find((b) => /Sea tools/.test(b.textContent ?? ''))!.click());
+    await page.evaluate(() =>
+      Array.from(document.querySelectorAll<HTMLButtonElement>('.lil-gui button'))
+        .find((b) => /Sea tools/.test(b.textContent ?? ''))!
+        .click(),
+    );
     await page.waitForSelector('.oceano-sea-tools:not([hidden])');
   }
   await page.click(`.oceano-sea-tools input[value="${tool}"]`);
-  await page.waitForFunction((name) => document.querySelector<HTMLInputElement>(`.oceano-sea-tools input[value="${name}"]`)!.checked, {}, tool);
+  await page.waitForFunction(
+    (name) => document.querySelector<HTMLInputElement>(`.oceano-sea-tools input[value="${name}"]`)!.checked,
+    {},
+    tool,
+  );
 }
 
 /** Draws `n` frames `dt` seconds of simulation time apart, from the current time (the clock stays paused). */
@@ -123,7 +135,12 @@ describe('the probe', () => {
     expect(new URL(await page.evaluate(() => window.oceano.shareUrl())).searchParams.get('probe')).toBe('2.5,-7');
     expect(await page.evaluate(() => window.oceano.probe(null))).toBeNull();
     expect(new URL(await page.evaluate(() => window.oceano.shareUrl())).searchParams.get('probe')).toBeNull();
-    const error = await page.evaluate(() => window.oceano.probe(Number.NaN, 1).then(() => 'placed', (e: Error) => `${e.name}: ${e.message}`));
+    const error = await page.evaluate(() =>
+      window.oceano.probe(Number.NaN, 1).then(
+        () => 'placed',
+        (e: Error) => `${e.name}: ${e.message}`,
+      ),
+    );
     expect(error).toMatch(/^TypeError: probe needs \(x, z\)/);
     await page.close();
 
@@ -146,7 +163,11 @@ function layout(page: Page) {
       const r = el.getBoundingClientRect();
       return { left: r.left, right: r.right, top: r.top, bottom: r.bottom };
     };
-    return { card: box('.oceano-sea-tools')!, canvas: box('canvas')!, others: ['.oceano-lessons', '.lil-gui.lil-root', '.oceano-play'].map(box).filter((b) => b !== null) };
+    return {
+      card: box('.oceano-sea-tools')!,
+      canvas: box('canvas')!,
+      others: ['.oceano-lessons', '.lil-gui.lil-root', '.oceano-play'].map(box).filter((b) => b !== null),
+    };
   });
 }
 type Box = { left: number; right: number; top: number; bottom: number };
@@ -249,7 +270,8 @@ describe('the ruler and the stones', () => {
     await page.evaluate(() => window.oceano.loaded());
     const hit = seaUnderPixel(...A, W, H);
     const far = seaUnderPixel(...B, W, H);
-    const heights = () => page.evaluate((p, q) => [window.oceano.sampleSurface(p.x, p.z).height, window.oceano.sampleSurface(q.x, q.z).height], hit, far);
+    const heights = () =>
+      page.evaluate((p, q) => [window.oceano.sampleSurface(p.x, p.z).height, window.oceano.sampleSurface(q.x, q.z).height], hit, far);
     const settle = async () => {
       // The field steps with simulation time; sampleSurface sees it through a read-back a frame or two old.
       await runFrames(page, 6, 1 / 60);
@@ -266,7 +288,9 @@ describe('the ruler and the stones', () => {
     await page.waitForFunction(() => document.querySelector('.oceano-tool-disturb .oceano-tool-note')?.textContent === 'Stones dropped: 1');
     await settle();
     const [atStone, away] = await heights();
-    console.log(`stone at (${hit.x.toFixed(2)}, ${hit.z.toFixed(2)}): height there ${atStone.toFixed(4)} m, ${Math.hypot(far.x - hit.x, far.z - hit.z).toFixed(1)} m away ${away.toFixed(6)} m`);
+    console.log(
+      `stone at (${hit.x.toFixed(2)}, ${hit.z.toFixed(2)}): height there ${atStone.toFixed(4)} m, ${Math.hypot(far.x - hit.x, far.z - hit.z).toFixed(1)} m away ${away.toFixed(6)} m`,
+    );
     expect(atStone).toBeGreaterThan(0.05);
     expect(Math.abs(away)).toBeLessThan(0.01);
 

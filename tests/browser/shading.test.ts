@@ -96,7 +96,10 @@ describe('shading far away', () => {
   });
 
   /** From 2 m up, 10 m back from the point (x, 0, x) looked at: the sun's glint, at any distance from the origin. */
-  const glintView = (x: number) => ({ position: [x, 2, x + 10] as [number, number, number], target: [x, 0, x] as [number, number, number] });
+  const glintView = (x: number) => ({
+    position: [x, 2, x + 10] as [number, number, number],
+    target: [x, 0, x] as [number, number, number],
+  });
 
   it('draws the sun glint 10⁶ m out as smooth as near the origin', async () => {
     // From 2 m up, 10 m back from the point looked at: the glint fills rows 70–150 of rows 60–179 measured at
@@ -112,7 +115,9 @@ describe('shading far away', () => {
     // Negative control, and main's picture: world coordinates in float32 on the GPU.
     await page.evaluate(() => window.oceano.debug.setShadingFixes({ cameraRelative: false }));
     const absolute = await energyAt(999000);
-    console.log(`[oceano] glint energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, world coordinates ${absolute.toFixed(2)}`);
+    console.log(
+      `[oceano] glint energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, world coordinates ${absolute.toFixed(2)}`,
+    );
     expect(far).toBeLessThan(near * MAX_FAR_GLINT_RATIO);
     expect(absolute).toBeGreaterThan(near * MAX_FAR_GLINT_RATIO);
     expect(consoleErrors).toEqual([]);
@@ -140,7 +145,9 @@ describe('shading far away', () => {
       // Negative control, and main's picture: normals and foam at absolute grid points.
       await page.evaluate(() => window.oceano.debug.setShadingFixes({ relativePixelNormals: false }));
       const absolute = await energyAt(999000);
-      console.log(`[oceano] ${waves} glint block energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, absolute grid points ${absolute.toFixed(2)}`);
+      console.log(
+        `[oceano] ${waves} glint block energy: near the origin ${near.toFixed(2)}, 10⁶ m out ${far.toFixed(2)}, absolute grid points ${absolute.toFixed(2)}`,
+      );
       expect(far).toBeLessThan(near * MAX_PIXEL_NORMAL_RATIO[waves]);
       expect(absolute).toBeGreaterThan(near * MAX_PIXEL_NORMAL_RATIO[waves]);
     }
@@ -148,4 +155,3 @@ describe('shading far away', () => {
     await page.close();
   });
 });
-

@@ -123,28 +123,31 @@ describe('the sky painted from the sun', () => {
   });
 
   it('paints the cube only when the sun moves, never per frame, and the sky prefiltered for the sea with it', async () => {
-    const paints = await shared.restoring((page) => page.evaluate(async () => {
-      const { renderer, scene } = window.oceano.three;
-      const sky = (scene.getObjectByName('oceano-ocean') as unknown as { skyTexture: unknown }).skyTexture;
-      let skyFaces = 0;
-      const render = renderer.render;
-      renderer.render = (s, c) => {
-        if (s !== scene && renderer.getRenderTarget()?.texture === sky) skyFaces++;
-        render.call(renderer, s, c);
-      };
-      const frames = () => new Promise<void>((done) => requestAnimationFrame(() => requestAnimationFrame(() => requestAnimationFrame(() => done()))));
-      await frames();
-      const prefilteredAtStart = await window.oceano.debug.prefilteredSkyPaints();
-      window.oceano.setParams({ waterColor: '#103050' });
-      await frames();
-      const still = skyFaces;
-      const prefilteredStill = (await window.oceano.debug.prefilteredSkyPaints()) - prefilteredAtStart;
-      window.oceano.setParams({ sunAzimuth: 90 });
-      await frames();
-      renderer.render = render;
-      const prefilteredMoved = (await window.oceano.debug.prefilteredSkyPaints()) - prefilteredAtStart - prefilteredStill;
-      return { still, moved: skyFaces - still, prefilteredStill, prefilteredMoved };
-    }));
+    const paints = await shared.restoring((page) =>
+      page.evaluate(async () => {
+        const { renderer, scene } = window.oceano.three;
+        const sky = (scene.getObjectByName('oceano-ocean') as unknown as { skyTexture: unknown }).skyTexture;
+        let skyFaces = 0;
+        const render = renderer.render;
+        renderer.render = (s, c) => {
+          if (s !== scene && renderer.getRenderTarget()?.texture === sky) skyFaces++;
+          render.call(renderer, s, c);
+        };
+        const frames = () =>
+          new Promise<void>((done) => requestAnimationFrame(() => requestAnimationFrame(() => requestAnimationFrame(() => done()))));
+        await frames();
+        const prefilteredAtStart = await window.oceano.debug.prefilteredSkyPaints();
+        window.oceano.setParams({ waterColor: '#103050' });
+        await frames();
+        const still = skyFaces;
+        const prefilteredStill = (await window.oceano.debug.prefilteredSkyPaints()) - prefilteredAtStart;
+        window.oceano.setParams({ sunAzimuth: 90 });
+        await frames();
+        renderer.render = render;
+        const prefilteredMoved = (await window.oceano.debug.prefilteredSkyPaints()) - prefilteredAtStart - prefilteredStill;
+        return { still, moved: skyFaces - still, prefilteredStill, prefilteredMoved };
+      }),
+    );
     expect(paints.still).toBe(0);
     // One repaint: the cube camera's six faces.
     expect(paints.moved).toBe(6);
@@ -172,7 +175,11 @@ describe('the sky painted from the sun', () => {
       };
       const turn = (0.5 * Math.PI) / 180;
       const d = target.map((v, k) => v - position[k]) as Vec3;
-      const turned: Vec3 = [position[0] + d[0] * Math.cos(turn) - d[2] * Math.sin(turn), target[1], position[2] + d[0] * Math.sin(turn) + d[2] * Math.cos(turn)];
+      const turned: Vec3 = [
+        position[0] + d[0] * Math.cos(turn) - d[2] * Math.sin(turn),
+        target[1],
+        position[2] + d[0] * Math.sin(turn) + d[2] * Math.cos(turn),
+      ];
       const exact = await skyRows({ position, target });
       const aside = await skyRows({ position, target: turned });
       await page.close();
@@ -191,4 +198,3 @@ describe('the sky painted from the sun', () => {
     });
   }
 });
-

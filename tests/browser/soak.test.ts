@@ -229,7 +229,9 @@ describe('soak', () => {
       const first = await soak.heapAfterGc();
       for (let i = 1; i < SHORT_ROUNDS; i++) await soak.loseAndRestore();
       const grown = (await soak.heapAfterGc()) - first;
-      console.log(`[oceano] soak negative control (${name}): heap after GC grew ${mb(grown)} MB over ${SHORT_ROUNDS - 1} restores (bound ${mb(SHORT_HEAP_GROWTH)} MB)`);
+      console.log(
+        `[oceano] soak negative control (${name}): heap after GC grew ${mb(grown)} MB over ${SHORT_ROUNDS - 1} restores (bound ${mb(SHORT_HEAP_GROWTH)} MB)`,
+      );
       expect(grown).toBeGreaterThan(SHORT_HEAP_GROWTH);
       await soak.close();
     });

@@ -15,9 +15,8 @@ describe('oceano.stats() start-up and CPU figures', () => {
   it('records the time to first frame once: after the script arrived, before ready, unchanged by later frames', async () => {
     const { page, consoleErrors } = await shared.opened();
     const atReady = await page.evaluate(() => {
-      const script = performance
-        .getEntriesByType('resource')
-        .find((entry) => /\/assets\/[^/]+\.js$/.test(entry.name)) as PerformanceResourceTiming | undefined;
+      const script = performance.getEntriesByType('resource').find((entry) => /\/assets\/[^/]+\.js$/.test(entry.name)) as
+        PerformanceResourceTiming | undefined;
       return { ttffMs: window.oceano.stats().ttffMs, scriptArrived: script?.responseEnd ?? null, now: performance.now() };
     });
     expect(atReady.scriptArrived).not.toBeNull();
@@ -32,34 +31,38 @@ describe('oceano.stats() start-up and CPU figures', () => {
   });
 
   it('counts the update step in cpuMs: within frameMs, above boatMs, and 20 ms more when the update does 20 ms more', async () => {
-    const figures = await shared.restoring((page) => page.evaluate(() => {
-      const o = window.oceano;
-      // Enough frames to fill the 30-frame window the medians are taken over. The camera moves
-      // a millimetre before each, as a user's would: an unmoved camera's matrices are not
-      // remade (CullingView.sameCameraPose), which would skip the planted work below.
-      const frames = () => {
-        for (let i = 0; i < 32; i++) {
-          o.three.camera.position.x += 1e-3;
-          o.renderFrame();
-        }
-        const { cpuMs, frameMs, boatMs } = o.stats();
-        return { cpuMs, frameMs, boatMs };
-      };
-      const plain = frames();
-      // Planted work inside the update step: the view's update refreshes the camera's world
-      // matrix, which refreshes its children; this child busy-waits 20 ms each time.
-      const { camera } = o.three;
-      const slow = camera.clone();
-      slow.updateMatrixWorld = () => {
-        const until = performance.now() + 20;
-        while (performance.now() < until);
-      };
-      camera.add(slow);
-      const loaded = frames();
-      camera.remove(slow);
-      return { plain, loaded };
-    }));
-    console.log(`[oceano] stats: plain cpuMs ${figures.plain.cpuMs.toFixed(2)}, boatMs ${figures.plain.boatMs.toFixed(2)}, frameMs ${figures.plain.frameMs.toFixed(1)}; with 20 ms planted in the update: cpuMs ${figures.loaded.cpuMs.toFixed(2)}`);
+    const figures = await shared.restoring((page) =>
+      page.evaluate(() => {
+        const o = window.oceano;
+        // Enough frames to fill the 30-frame window the medians are taken over. The camera moves
+        // a millimetre before each, as a user's would: an unmoved camera's matrices are not
+        // remade (CullingView.sameCameraPose), which would skip the planted work below.
+        const frames = () => {
+          for (let i = 0; i < 32; i++) {
+            o.three.camera.position.x += 1e-3;
+            o.renderFrame();
+          }
+          const { cpuMs, frameMs, boatMs } = o.stats();
+          return { cpuMs, frameMs, boatMs };
+        };
+        const plain = frames();
+        // Planted work inside the update step: the view's update refreshes the camera's world
+        // matrix, which refreshes its children; this child busy-waits 20 ms each time.
+        const { camera } = o.three;
+        const slow = camera.clone();
+        slow.updateMatrixWorld = () => {
+          const until = performance.now() + 20;
+          while (performance.now() < until);
+        };
+        camera.add(slow);
+        const loaded = frames();
+        camera.remove(slow);
+        return { plain, loaded };
+      }),
+    );
+    console.log(
+      `[oceano] stats: plain cpuMs ${figures.plain.cpuMs.toFixed(2)}, boatMs ${figures.plain.boatMs.toFixed(2)}, frameMs ${figures.plain.frameMs.toFixed(1)}; with 20 ms planted in the update: cpuMs ${figures.loaded.cpuMs.toFixed(2)}`,
+    );
     for (const f of [figures.plain, figures.loaded]) {
       // Each frame's update is part of that frame and the boat part of the update, so their medians keep that order.
       expect(f.boatMs).toBeLessThanOrEqual(f.cpuMs);

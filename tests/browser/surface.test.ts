@@ -40,7 +40,7 @@ describe('the ocean page', () => {
     expect(reference.matches, reference.summary).toBe(true);
   });
 
-  it('fails the reference comparison when the water\'s colour is 3 % brighter (negative control)', async () => {
+  it("fails the reference comparison when the water's colour is 3 % brighter (negative control)", async () => {
     const brighter = await restoring(async (page) => {
       // The colour its optics give the water, × 1.03, planted in the shader.
       await page.evaluate(() => window.oceano.debug.setShadingFixes({ exactWaterColour: false }));
@@ -104,7 +104,8 @@ describe('bad input', () => {
     const png = PNG.sync.read(await canvasPng(page));
     const mean = (y0: number, y1: number) => {
       const sum = [0, 0, 0];
-      for (let y = y0; y < y1; y++) for (let x = 0; x < png.width; x++) for (let c = 0; c < 3; c++) sum[c] += png.data[(y * png.width + x) * 4 + c];
+      for (let y = y0; y < y1; y++)
+        for (let x = 0; x < png.width; x++) for (let c = 0; c < 3; c++) sum[c] += png.data[(y * png.width + x) * 4 + c];
       return sum.map((v) => v / ((y1 - y0) * png.width));
     };
     const sky = mean(0, 20);
@@ -159,21 +160,23 @@ describe('automation API', () => {
   });
 
   it('samples the CPU surface in agreement with the GPU shader (swell and ripples)', async () => {
-    const worst = await restoring((page) => page.evaluate(async () => {
-      window.oceano.setParams({ seed: 5 });
-      window.oceano.setTime(37);
-      const points: [number, number][] = [];
-      for (let i = 0; i < 64; i++) points.push([Math.sin(i * 12.9898) * 300, Math.cos(i * 78.233) * 300]);
-      const gpu = await window.oceano.probeGpu(points);
-      let height = 0;
-      let normal = 0;
-      points.forEach(([x, z], i) => {
-        const cpu = window.oceano.sampleSurface(x, z);
-        height = Math.max(height, Math.abs(cpu.height - gpu[i].height));
-        for (let c = 0; c < 3; c++) normal = Math.max(normal, Math.abs(cpu.normal[c] - gpu[i].normal[c]));
-      });
-      return { height, normal };
-    }));
+    const worst = await restoring((page) =>
+      page.evaluate(async () => {
+        window.oceano.setParams({ seed: 5 });
+        window.oceano.setTime(37);
+        const points: [number, number][] = [];
+        for (let i = 0; i < 64; i++) points.push([Math.sin(i * 12.9898) * 300, Math.cos(i * 78.233) * 300]);
+        const gpu = await window.oceano.probeGpu(points);
+        let height = 0;
+        let normal = 0;
+        points.forEach(([x, z], i) => {
+          const cpu = window.oceano.sampleSurface(x, z);
+          height = Math.max(height, Math.abs(cpu.height - gpu[i].height));
+          for (let c = 0; c < 3; c++) normal = Math.max(normal, Math.abs(cpu.normal[c] - gpu[i].normal[c]));
+        });
+        return { height, normal };
+      }),
+    );
     expect(worst.height).toBeLessThan(PARITY_HEIGHT_LIMIT);
     expect(worst.normal).toBeLessThan(PARITY_NORMAL_LIMIT);
   });

@@ -31,7 +31,10 @@ function parityCases(): Case[] {
   // on that lattice so both sides evaluate the very same (x, z).
   return TIMES.map((t) => ({
     t,
-    points: Array.from({ length: POINTS_PER_TIME }, () => [Math.fround((random() * 2 - 1) * EXTENT), Math.fround((random() * 2 - 1) * EXTENT)] as [number, number]),
+    points: Array.from(
+      { length: POINTS_PER_TIME },
+      () => [Math.fround((random() * 2 - 1) * EXTENT), Math.fround((random() * 2 - 1) * EXTENT)] as [number, number],
+    ),
   }));
 }
 
@@ -66,18 +69,22 @@ describe('CPU twin vs GPU shader', () => {
     expect(farPoints).toBeGreaterThan(50);
     const { page } = await openOcean(harness, query);
     const worst = await worstDisagreement(page, cases);
-    console.log(`[oceano] CPU–GPU parity (${query}): max |Δheight| = ${worst.height.toExponential(2)} m at (${worst.at.x}, ${worst.at.z}, t=${worst.at.t}), max |Δnormal| = ${worst.normal.toExponential(2)}`);
+    console.log(
+      `[oceano] CPU–GPU parity (${query}): max |Δheight| = ${worst.height.toExponential(2)} m at (${worst.at.x}, ${worst.at.z}, t=${worst.at.t}), max |Δnormal| = ${worst.normal.toExponential(2)}`,
+    );
     expect(worst.height).toBeLessThan(limits.height);
     expect(worst.normal).toBeLessThan(limits.normal);
     await page.close();
   });
 
-  it('rejects the driver\'s own sin in the swell (negative control: the Taylor series is what keeps parity)', async () => {
+  it("rejects the driver's own sin in the swell (negative control: the Taylor series is what keeps parity)", async () => {
     // The defaults: the milder of the two cases, so this fails on the swell's sine alone.
     const { query, limits } = CASES[0];
     const page = await openWithNativeSin(harness, query);
     const worst = await worstDisagreement(page, parityCases());
-    console.log(`[oceano] CPU–GPU parity with native sin (${query}): max |Δheight| = ${worst.height.toExponential(2)} m, max |Δnormal| = ${worst.normal.toExponential(2)}`);
+    console.log(
+      `[oceano] CPU–GPU parity with native sin (${query}): max |Δheight| = ${worst.height.toExponential(2)} m, max |Δnormal| = ${worst.normal.toExponential(2)}`,
+    );
     expect(worst.height).toBeGreaterThan(limits.height);
     expect(worst.normal).toBeGreaterThan(limits.normal);
     await page.close();

@@ -29,7 +29,12 @@ function pictureAgreement(image: PNG, rect: Rect, field: StageImage): { checked:
       const expected = field.data[Math.floor(fj) * field.size + Math.floor(fi)] * 0.5 + 0.5;
       const o = (py * image.width + px) * 4;
       checked++;
-      if (Math.abs(image.data[o] / 255 - expected) <= 1.01 / 255 && image.data[o + 1] === image.data[o] && image.data[o + 2] === image.data[o]) within++;
+      if (
+        Math.abs(image.data[o] / 255 - expected) <= 1.01 / 255 &&
+        image.data[o + 1] === image.data[o] &&
+        image.data[o + 2] === image.data[o]
+      )
+        within++;
     }
   }
   return { checked, within };
@@ -59,7 +64,7 @@ function greyDifference(a: PNG, ra: Rect, b: PNG, rb: Rect): number {
 }
 
 describe('teaching views of the seed figures', () => {
-  it('flat normals (the seed\'s wrong ones) lose the waves\' shading that fabricated normals give', async () => {
+  it("flat normals (the seed's wrong ones) lose the waves' shading that fabricated normals give", async () => {
     // One page, the normals switched through the API: a second boot cost seconds of SwiftShader work.
     const { page } = await openOcean(harness, 't=10&shading=normals');
     const right = PNG.sync.read(await canvasPng(page));
@@ -99,7 +104,11 @@ describe('teaching views of the seed figures', () => {
     const stages = noiseStages(seed, HEIGHTMAP_SIZE);
     const params = await page.evaluate(() => window.oceano.getParams());
     const weight = surfaceStateAt(params, time).rippleBlend;
-    const expected: Record<string, StageImage> = { ...stages, first: stages.octaves, blend: blendedStage(stages.octaves, stages.second, weight) };
+    const expected: Record<string, StageImage> = {
+      ...stages,
+      first: stages.octaves,
+      blend: blendedStage(stages.octaves, stages.second, weight),
+    };
     // Each stage cut from the first view that shows it, checked in every view that does.
     const shown = new Map<string, { image: PNG; rect: Rect }>();
     for (const view of ['noise-hash', 'noise-smoothing', 'noise-octaves', 'noise-blend'] as const) {
@@ -121,7 +130,9 @@ describe('teaching views of the seed figures', () => {
       const a = shown.get(order[i])!;
       const b = shown.get(order[i + 1])!;
       const changed = greyDifference(a.image, a.rect, b.image, b.rect);
-      console.log(`[oceano] Perlin stage ${order[i]} -> ${order[i + 1]}: ${(changed * 100).toFixed(1)} % of the picture's pixels differ by more than 8 levels`);
+      console.log(
+        `[oceano] Perlin stage ${order[i]} -> ${order[i + 1]}: ${(changed * 100).toFixed(1)} % of the picture's pixels differ by more than 8 levels`,
+      );
       expect(changed, `${order[i]} -> ${order[i + 1]}`).toBeGreaterThan(0.3);
       const wrong = pictureAgreement(a.image, a.rect, expected[order[i + 1]]);
       expect(wrong.within / wrong.checked, `${order[i]} checked as ${order[i + 1]}`).toBeLessThan(0.2);
@@ -166,7 +177,9 @@ describe('teaching views of the seed figures', () => {
     };
     const straight = meanDifference(false);
     const mirrored = meanDifference(true);
-    console.log(`[oceano] the cube's cross against the sky behind the sea: mean difference ${straight.toFixed(2)} levels; read mirrored ${mirrored.toFixed(2)}`);
+    console.log(
+      `[oceano] the cube's cross against the sky behind the sea: mean difference ${straight.toFixed(2)} levels; read mirrored ${mirrored.toFixed(2)}`,
+    );
     expect(cell).toBeGreaterThan(60);
     // Measured: 0.34 levels (the cross's texel centres are not the sea view's rays); mirrored, 12.9.
     expect(straight).toBeLessThan(1.5);
@@ -201,7 +214,9 @@ describe('teaching views of the seed figures', () => {
     await seed.page.close();
     const fromSeed = diffPngs(crop(at10, row), crop(seedMaps, row)).share;
     const fromLater = diffPngs(crop(at10, row), crop(at14, row)).share;
-    console.log(`[oceano] heightmap view grey spread: fft ${spread(at10).toFixed(1)}, seed ${spread(seedMaps).toFixed(1)} levels; pixels changed against the seed's ${(fromSeed * 100).toFixed(1)} %, against t = 14 s ${(fromLater * 100).toFixed(1)} %`);
+    console.log(
+      `[oceano] heightmap view grey spread: fft ${spread(at10).toFixed(1)}, seed ${spread(seedMaps).toFixed(1)} levels; pixels changed against the seed's ${(fromSeed * 100).toFixed(1)} %, against t = 14 s ${(fromLater * 100).toFixed(1)} %`,
+    );
     // Measured: the FFT's spread is 41 levels (each map's ±3σ spans black to white); within
     // the pictures' row 59 % of the pixels change against the seed's maps and 63 % four seconds
     // later (pixelmatch's 0.1 threshold ignores small grey steps).

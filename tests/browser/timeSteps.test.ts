@@ -7,7 +7,6 @@ import { VIRTUAL_FRAMES, type Pumped } from './virtualFrames';
 
 const harness = useHarness();
 
-
 describe('slow motion and Step', () => {
   // Control: one step more differs.
   it('stepping N frames at timeScale 0.5 draws exactly the picture playing N frames draws', async () => {

@@ -7,7 +7,6 @@ import { compareWithReference, describeDifference, diffPngs, measureDifference, 
 import { DIVE_QUERY } from './referenceViews';
 import { highFrequencyEnergy } from '../support/imageEnergy';
 
-
 const harness = useHarness();
 
 /**
@@ -57,7 +56,7 @@ describe('under the water', () => {
     expect(blurred).toBeLessThan(sharp * 0.5);
   });
 
-  it('draws the same shafts from the window generic wave models get as from the seed\'s repeating tile', async () => {
+  it("draws the same shafts from the window generic wave models get as from the seed's repeating tile", async () => {
     const { consoleErrors } = await dive.opened();
     await dive.restoring(async (page) => {
       const tile = await canvasPng(page);
@@ -130,17 +129,19 @@ describe('under the water', () => {
 
   it('flips underwater exactly at the CPU surface height under the camera', async () => {
     // The dive page's sea is seed=1&t=10's; the camera is placed here, then put back.
-    const result = await dive.restoring((page) => page.evaluate(() => {
-      const o = window.oceano;
-      const [x, z] = [12.5, -30.25];
-      const h = o.sampleSurface(x, z).height;
-      const at = (y: number) => {
-        o.setCamera({ position: [x, y, z], target: [x + 10, h, z - 40] });
-        o.renderFrame();
-        return { y: o.getCamera().position[1], ...o.stats() };
-      };
-      return { h, above: at(h + 1e-3), below: at(h - 1e-3) };
-    }));
+    const result = await dive.restoring((page) =>
+      page.evaluate(() => {
+        const o = window.oceano;
+        const [x, z] = [12.5, -30.25];
+        const h = o.sampleSurface(x, z).height;
+        const at = (y: number) => {
+          o.setCamera({ position: [x, y, z], target: [x + 10, h, z - 40] });
+          o.renderFrame();
+          return { y: o.getCamera().position[1], ...o.stats() };
+        };
+        return { h, above: at(h + 1e-3), below: at(h - 1e-3) };
+      }),
+    );
     expect(result.above.y).toBeCloseTo(result.h + 1e-3, 9);
     expect(result.below.y).toBeCloseTo(result.h - 1e-3, 9);
     expect(result.above.underwater).toBe(false);
@@ -159,7 +160,8 @@ describe('under the water', () => {
     expect(await page.evaluate(() => window.oceano.stats().submersion)).toBe('straddling');
     const mean = (y0: number, y1: number) => {
       const sum = [0, 0, 0];
-      for (let y = y0; y < y1; y++) for (let x = 0; x < png.width; x++) for (let c = 0; c < 3; c++) sum[c] += png.data[(y * png.width + x) * 4 + c];
+      for (let y = y0; y < y1; y++)
+        for (let x = 0; x < png.width; x++) for (let c = 0; c < 3; c++) sum[c] += png.data[(y * png.width + x) * 4 + c];
       return sum.map((s) => s / ((y1 - y0) * png.width));
     };
     const top = mean(0, 20);
@@ -195,7 +197,7 @@ describe('under the water', () => {
     await page.close();
   });
 
-  it('lights the wet side of the boat\'s hull with the same caustics, and nothing else in view', async () => {
+  it("lights the wet side of the boat's hull with the same caustics, and nothing else in view", async () => {
     // Beside the hull, looking up at it; the sea bed pushed out of sight, blur and god rays off,
     // so only the hull can change with the caustics' intensity.
     const view = 'seed=1&t=10&cam=12,-1.2,-14,7,-0.2,-5&seaBedDepth=200&blurStrength=0&godRays=0';

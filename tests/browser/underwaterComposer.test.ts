@@ -114,8 +114,10 @@ describe("OceanUnderwaterPass in the user's composer, beside UnrealBloomPass", (
     expect(measureDifference(on.png, off.png).maxLevels).toBe(0);
   });
 
-  it("says what the composer lacks when its target has no depth texture", async () => {
-    const message = await page.evaluate(() => (window as unknown as { underwaterComposer: UnderwaterComposerApi }).underwaterComposer.depthlessError());
+  it('says what the composer lacks when its target has no depth texture', async () => {
+    const message = await page.evaluate(() =>
+      (window as unknown as { underwaterComposer: UnderwaterComposerApi }).underwaterComposer.depthlessError(),
+    );
     expect(message).toMatch(/depth texture/);
   });
 });

@@ -46,7 +46,8 @@ function othersPatched(): Promise<boolean> {
       let patched = false;
       window.oceano.three.scene.traverse((object) => {
         const material = (object as { material?: { userData: Record<string, unknown>; customProgramCacheKey(): string } }).material;
-        if (material && !material.userData.oceanoMaterial && material.customProgramCacheKey().includes('oceano-scene-encode')) patched = true;
+        if (material && !material.userData.oceanoMaterial && material.customProgramCacheKey().includes('oceano-scene-encode'))
+          patched = true;
       });
       return patched;
     }),

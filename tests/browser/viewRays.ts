@@ -42,7 +42,12 @@ export async function showMagentaBehindTheSea(page: Page): Promise<void> {
  * Magenta pixels among those whose view ray dips below the horizontal by at least
  * `minSlope(height)` (tan of the dip), and how many such pixels there were.
  */
-export function magentaBelowSlope(png: Buffer, position: Vec3, target: Vec3, minSlope: (height: number) => number): { magenta: number; checked: number } {
+export function magentaBelowSlope(
+  png: Buffer,
+  position: Vec3,
+  target: Vec3,
+  minSlope: (height: number) => number,
+): { magenta: number; checked: number } {
   const { width, height, data } = PNG.sync.read(png);
   const slope = minSlope(height);
   let magenta = 0;

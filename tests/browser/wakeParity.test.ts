@@ -69,7 +69,10 @@ function worst(page: Page, cases: Cases, fault: Fault) {
           o.setParams({ wake: false });
           const bare = points.map(([x, z], i) => o.sampleSurface(x + gpu[i].displacement[0], z + gpu[i].displacement[2]).height);
           o.setParams({ wake: true });
-          points.forEach(([x, z], i) => (wake = Math.max(wake, Math.abs(o.sampleSurface(x + gpu[i].displacement[0], z + gpu[i].displacement[2]).height - bare[i]))));
+          points.forEach(
+            ([x, z], i) =>
+              (wake = Math.max(wake, Math.abs(o.sampleSurface(x + gpu[i].displacement[0], z + gpu[i].displacement[2]).height - bare[i]))),
+          );
         }
       }
       return { height, normal, wake };
@@ -84,48 +87,59 @@ describe('the Kelvin wake: CPU twin vs the drawn mesh', () => {
   it.each([
     { query: `seed=3&t=0&${BOAT}`, height: PARITY_LIMITS.defaults.height, normal: PARITY_LIMITS.defaults.normal, late: true },
     { query: `waves=gerstner&seed=3&t=0&${BOAT}`, height: 1e-4, normal: 1e-3, late: false },
-  ])("agrees on every point with the wake on, within the model's own limits; the controls do not: $query", async ({ query, height, normal, late }) => {
-    const { page, consoleErrors } = await openOcean(harness, query, 320, 180);
-    const ok = await worst(page, cases(), 'none');
-    const control = await worst(page, cases(), 'noWakeOnCpu');
-    console.log(
-      `[oceano] wake parity (${query}): |Δh| ${ok.height.toExponential(2)} m, |Δn| ${ok.normal.toExponential(2)} (largest wake ${ok.wake.toExponential(2)} m); ` +
-        `control, CPU without wake: |Δh| ${control.height.toExponential(2)} m, |Δn| ${control.normal.toExponential(2)}`,
-    );
-    expect(consoleErrors).toEqual([]);
-    expect(ok.wake).toBeGreaterThan(0.05);
-    expect(ok.height).toBeLessThan(height);
-    expect(ok.normal).toBeLessThan(normal);
-    expect(control.height).toBeGreaterThan(height);
-    expect(control.normal).toBeGreaterThan(normal);
-    if (late) {
-      // The boat floats on the waves without its own wake: its undamped pose is the same with
-      // the wake off, while the surface drawn under its centre is not (the control).
-      const boat = await page.evaluate(() => {
-        const o = window.oceano;
-        o.setTime(37.25);
-        o.renderFrame();
-        const on = o.boat().target;
-        const drawn = o.sampleSurface(on.position[0], on.position[2]).height;
-        o.setParams({ wake: false });
-        o.renderFrame();
-        const off = o.boat().target;
-        const bare = o.sampleSurface(on.position[0], on.position[2]).height;
-        o.setParams({ wake: true });
-        return { dy: Math.abs(on.position[1] - off.position[1]), dPitch: Math.abs(on.pitch - off.pitch), wakeUnderBoat: Math.abs(drawn - bare) };
-      });
-      console.log(`[oceano] the boat with and without its own wake: |Δy| ${boat.dy} m, |Δpitch| ${boat.dPitch}; the wake under it ${boat.wakeUnderBoat.toExponential(2)} m`);
-      expect(boat.dy).toBe(0);
-      expect(boat.dPitch).toBe(0);
-      expect(boat.wakeUnderBoat).toBeGreaterThan(0.01);
-      // A calm sea, so only the wake changes in the frame the CPU is late by.
-      await page.evaluate(() => window.oceano.setParams({ swellAmplitude: 0, rippleStrength: 0 }));
-      const frameLate = await worst(page, cases().slice(1, 2), 'cpuFrameLate');
-      console.log(`[oceano] wake parity control, CPU 1/60 s late on a calm sea: |Δh| ${frameLate.height.toExponential(2)} m, |Δn| ${frameLate.normal.toExponential(2)}`);
-      expect(frameLate.height).toBeGreaterThan(height);
-    }
-    await page.close();
-  });
+  ])(
+    "agrees on every point with the wake on, within the model's own limits; the controls do not: $query",
+    async ({ query, height, normal, late }) => {
+      const { page, consoleErrors } = await openOcean(harness, query, 320, 180);
+      const ok = await worst(page, cases(), 'none');
+      const control = await worst(page, cases(), 'noWakeOnCpu');
+      console.log(
+        `[oceano] wake parity (${query}): |Δh| ${ok.height.toExponential(2)} m, |Δn| ${ok.normal.toExponential(2)} (largest wake ${ok.wake.toExponential(2)} m); ` +
+          `control, CPU without wake: |Δh| ${control.height.toExponential(2)} m, |Δn| ${control.normal.toExponential(2)}`,
+      );
+      expect(consoleErrors).toEqual([]);
+      expect(ok.wake).toBeGreaterThan(0.05);
+      expect(ok.height).toBeLessThan(height);
+      expect(ok.normal).toBeLessThan(normal);
+      expect(control.height).toBeGreaterThan(height);
+      expect(control.normal).toBeGreaterThan(normal);
+      if (late) {
+        // The boat floats on the waves without its own wake: its undamped pose is the same with
+        // the wake off, while the surface drawn under its centre is not (the control).
+        const boat = await page.evaluate(() => {
+          const o = window.oceano;
+          o.setTime(37.25);
+          o.renderFrame();
+          const on = o.boat().target;
+          const drawn = o.sampleSurface(on.position[0], on.position[2]).height;
+          o.setParams({ wake: false });
+          o.renderFrame();
+          const off = o.boat().target;
+          const bare = o.sampleSurface(on.position[0], on.position[2]).height;
+          o.setParams({ wake: true });
+          return {
+            dy: Math.abs(on.position[1] - off.position[1]),
+            dPitch: Math.abs(on.pitch - off.pitch),
+            wakeUnderBoat: Math.abs(drawn - bare),
+          };
+        });
+        console.log(
+          `[oceano] the boat with and without its own wake: |Δy| ${boat.dy} m, |Δpitch| ${boat.dPitch}; the wake under it ${boat.wakeUnderBoat.toExponential(2)} m`,
+        );
+        expect(boat.dy).toBe(0);
+        expect(boat.dPitch).toBe(0);
+        expect(boat.wakeUnderBoat).toBeGreaterThan(0.01);
+        // A calm sea, so only the wake changes in the frame the CPU is late by.
+        await page.evaluate(() => window.oceano.setParams({ swellAmplitude: 0, rippleStrength: 0 }));
+        const frameLate = await worst(page, cases().slice(1, 2), 'cpuFrameLate');
+        console.log(
+          `[oceano] wake parity control, CPU 1/60 s late on a calm sea: |Δh| ${frameLate.height.toExponential(2)} m, |Δn| ${frameLate.normal.toExponential(2)}`,
+        );
+        expect(frameLate.height).toBeGreaterThan(height);
+      }
+      await page.close();
+    },
+  );
 
   // Control: without its track it shows the replay instead.
   it('a share link made while sailing and steering reopens on the same wake, pixel for pixel', async () => {

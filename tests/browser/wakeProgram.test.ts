@@ -39,12 +39,18 @@ describe('the wake compiled into the ocean only while it is on', () => {
         };
         const shareMoved = (a: Uint8Array, b: Uint8Array) => {
           let moved = 0;
-          for (let i = 0; i < a.length; i += 4) if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 2) moved++;
+          for (let i = 0; i < a.length; i += 4)
+            if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 2) moved++;
           return moved / (a.length / 4);
         };
         const same = (a: Uint8Array, b: Uint8Array) => a.every((v, i) => v === b[i]);
         // Both ocean programs (the far bands' material and its near twin), by their uniforms.
-        type Material = { defines: Record<string, string>; uniforms: Record<string, { value: unknown }>; onBeforeRender(...args: unknown[]): void; needsUpdate: boolean };
+        type Material = {
+          defines: Record<string, string>;
+          uniforms: Record<string, { value: unknown }>;
+          onBeforeRender(...args: unknown[]): void;
+          needsUpdate: boolean;
+        };
         const materials = new Set<Material>();
         o.three.scene.traverse((object) => {
           const m = (object as unknown as { material?: Material }).material;
@@ -59,13 +65,14 @@ describe('the wake compiled into the ocean only while it is on', () => {
         const onAgain = await picture(true);
         // The control: the wake's code taken out again after each material has compiled it in.
         const original = Object.getPrototypeOf([...materials][0]).onBeforeRender as (this: Material, ...args: unknown[]) => void;
-        for (const m of materials) m.onBeforeRender = function (this: Material, ...args: unknown[]) {
-          original.apply(this, args);
-          if ('OCEAN_WAKE' in this.defines) {
-            delete this.defines.OCEAN_WAKE;
-            this.needsUpdate = true;
-          }
-        };
+        for (const m of materials)
+          m.onBeforeRender = function (this: Material, ...args: unknown[]) {
+            original.apply(this, args);
+            if ('OCEAN_WAKE' in this.defines) {
+              delete this.defines.OCEAN_WAKE;
+              this.needsUpdate = true;
+            }
+          };
         await picture(false);
         const faulty = await picture(true);
         for (const m of materials) delete (m as Partial<Material>).onBeforeRender;
@@ -79,7 +86,9 @@ describe('the wake compiled into the ocean only while it is on', () => {
           controlMoved: shareMoved(off, faulty),
         };
       });
-      console.log(`[oceano] the wake on the drawn sea: ${(100 * result.moved).toFixed(2)} % of pixels moved by more than 2 levels; control (never compiled in) ${(100 * result.controlMoved).toFixed(2)} %`);
+      console.log(
+        `[oceano] the wake on the drawn sea: ${(100 * result.moved).toFixed(2)} % of pixels moved by more than 2 levels; control (never compiled in) ${(100 * result.controlMoved).toFixed(2)} %`,
+      );
       expect(result.materials).toBe(2);
       expect(result.offDefines).toEqual([false, false]);
       expect(result.onDefines).toEqual([true, true]);

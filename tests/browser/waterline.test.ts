@@ -11,7 +11,10 @@ const harness = useHarness();
  * surface there, looking level along −z. At t=10 the near plane (0.5 m out) crosses the
  * water at both: the frame is 'straddling' and goes through the per-pixel waterline.
  */
-const SPOTS: readonly [number, number][] = [[300, 300], [20, 0]];
+const SPOTS: readonly [number, number][] = [
+  [300, 300],
+  [20, 0],
+];
 const EYE_CLEARANCE = 0.05;
 // Measured at 640 × 360: 0 and 0 with the near plane fitted (no sea bed drawn), 0 and 0
 // with the 0.5 m near plane and the sand marked as under the water, 249 and 73 unmarked
@@ -43,16 +46,26 @@ function sparklePixels(png: Buffer): number {
   return count;
 }
 
-async function viewFromJustAbove(page: Page, x: number, z: number, clearance = EYE_CLEARANCE): Promise<{ png: Buffer; submersion: string }> {
-  const submersion = await page.evaluate(async (x, z, clearance) => {
-    const eyeY = window.oceano.sampleSurface(x, z).height + clearance;
-    window.oceano.setCamera({ position: [x, eyeY, z], target: [x, eyeY, z - 100] });
-    // This frame asks for any part the view needs (the underwater passes); loaded() draws
-    // again once they are there, and that frame's stats are read (canvasPng draws the picture).
-    window.oceano.renderFrame();
-    await window.oceano.loaded();
-    return window.oceano.stats().submersion;
-  }, x, z, clearance);
+async function viewFromJustAbove(
+  page: Page,
+  x: number,
+  z: number,
+  clearance = EYE_CLEARANCE,
+): Promise<{ png: Buffer; submersion: string }> {
+  const submersion = await page.evaluate(
+    async (x, z, clearance) => {
+      const eyeY = window.oceano.sampleSurface(x, z).height + clearance;
+      window.oceano.setCamera({ position: [x, eyeY, z], target: [x, eyeY, z - 100] });
+      // This frame asks for any part the view needs (the underwater passes); loaded() draws
+      // again once they are there, and that frame's stats are read (canvasPng draws the picture).
+      window.oceano.renderFrame();
+      await window.oceano.loaded();
+      return window.oceano.stats().submersion;
+    },
+    x,
+    z,
+    clearance,
+  );
   return { png: await canvasPng(page), submersion };
 }
 
@@ -81,7 +94,9 @@ describe('the waterline seen from just above the water', () => {
     await page.evaluate(() => window.oceano.debug.setShadingFixes({ seaBedMark: false }));
     const unmarked: number[] = [];
     for (const [x, z] of SPOTS) unmarked.push(sparklePixels((await viewFromJustAbove(page, x, z)).png));
-    console.log(`[oceano] sparkle pixels 5 cm up: near fitted ${fitted.join(', ')}; near 0.5 m ${fixed.join(', ')}; sand unmarked ${unmarked.join(', ')}`);
+    console.log(
+      `[oceano] sparkle pixels 5 cm up: near fitted ${fitted.join(', ')}; near 0.5 m ${fixed.join(', ')}; sand unmarked ${unmarked.join(', ')}`,
+    );
     for (const count of [...fitted, ...fixed]) expect(count).toBeLessThan(MAX_SPARKLE_PIXELS);
     for (const count of unmarked) expect(count).toBeGreaterThan(MAX_SPARKLE_PIXELS);
     expect(consoleErrors).toEqual([]);
@@ -93,7 +108,10 @@ describe('the waterline seen from just above the water', () => {
  * Spots for the lower frame: (300, 300) puts the eye's plane on a grid row (its vertices at
  * clip w = 0, see ocean.vert), (301, 299.3) does not. The surface falls ahead of both.
  */
-const LOW_SPOTS: readonly [number, number][] = [[300, 300], [301, 299.3]];
+const LOW_SPOTS: readonly [number, number][] = [
+  [300, 300],
+  [301, 299.3],
+];
 const LOW_CLEARANCES = [0.05, 0.3];
 
 /** Mean colour of the bottom quarter of the frame, where a level eye looks 20-27° down. */
@@ -130,7 +148,9 @@ describe('the lower frame seen from just above the water', () => {
     // Negative control, and main's picture: the fixed 0.5 m near plane.
     await page.evaluate(() => window.oceano.debug.setShadingFixes({ clearanceNear: false }));
     const fixedNear = await measure();
-    console.log(`[oceano] lower frame 5 / 30 cm up, colour distance to 0.6 m up: near fitted ${JSON.stringify(fixed)}; near 0.5 m ${JSON.stringify(fixedNear)}`);
+    console.log(
+      `[oceano] lower frame 5 / 30 cm up, colour distance to 0.6 m up: near fitted ${JSON.stringify(fixed)}; near 0.5 m ${JSON.stringify(fixedNear)}`,
+    );
     for (const row of fixed) {
       expect(row.submersion).toBe('above');
       expect(row.distance).toBeLessThan(MAX_LOWER_FRAME_DISTANCE);

@@ -124,7 +124,12 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     const state = (selector: string) =>
       page.evaluate((s) => {
         const view = document.querySelector(s) as ViewElement;
-        return { live: view.oceano !== null, webgl: view.querySelector('canvas.oceano-canvas') !== null, still: view.querySelector('canvas.oceano-still') !== null, activity: view.oceano?.activity() ?? null };
+        return {
+          live: view.oceano !== null,
+          webgl: view.querySelector('canvas.oceano-canvas') !== null,
+          still: view.querySelector('canvas.oceano-still') !== null,
+          activity: view.oceano?.activity() ?? null,
+        };
       }, selector);
     // The eager figure started at once, drew, and, being far away, gave its context back.
     await page.waitForFunction(() => (document.querySelector('#far') as ViewElement).querySelector('.oceano-still') !== null);
@@ -157,7 +162,11 @@ describe('<oceano-view> (dist/oceano.js)', () => {
     expect(await first()).toEqual(before);
     expect(before.looping).toBe(false);
     await page.click('#first .oceano-play');
-    await page.waitForFunction((n) => (document.querySelector('#first') as ViewElement).oceano!.activity().framesDrawn > n + 1, {}, before.framesDrawn);
+    await page.waitForFunction(
+      (n) => (document.querySelector('#first') as ViewElement).oceano!.activity().framesDrawn > n + 1,
+      {},
+      before.framesDrawn,
+    );
     expect((await first()).looping).toBe(true);
     await page.close();
   });

@@ -7,7 +7,8 @@ export function highPass(values: Float64Array, width: number, height: number, r:
   const stride = width + 1;
   const sums = new Float64Array(stride * (height + 1));
   for (let y = 0; y < height; y++) {
-    for (let x = 0; x < width; x++) sums[(y + 1) * stride + x + 1] = values[y * width + x] + sums[y * stride + x + 1] + sums[(y + 1) * stride + x] - sums[y * stride + x];
+    for (let x = 0; x < width; x++)
+      sums[(y + 1) * stride + x + 1] = values[y * width + x] + sums[y * stride + x + 1] + sums[(y + 1) * stride + x] - sums[y * stride + x];
   }
   const out = new Float64Array(values.length);
   for (let y = 0; y < height; y++) {

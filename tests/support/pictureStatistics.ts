@@ -39,7 +39,10 @@ export function differingPixels(a: PNG, b: PNG, x0: number, x1: number, levels =
   for (let y = 0; y < a.height; y++) {
     for (let x = x0; x < x1; x++) {
       const i = (y * a.width + x) * 4;
-      if (Math.max(Math.abs(a.data[i] - b.data[i]), Math.abs(a.data[i + 1] - b.data[i + 1]), Math.abs(a.data[i + 2] - b.data[i + 2])) > levels) count++;
+      if (
+        Math.max(Math.abs(a.data[i] - b.data[i]), Math.abs(a.data[i + 1] - b.data[i + 1]), Math.abs(a.data[i + 2] - b.data[i + 2])) > levels
+      )
+        count++;
     }
   }
   return count;

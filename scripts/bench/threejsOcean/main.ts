@@ -43,7 +43,12 @@ function waterNormalsTexture(size: number): THREE.DataTexture {
   const data = new Uint8Array(size * size * 4);
   // Wave vectors in whole cycles per tile, so the map repeats without a seam.
   const waves: [number, number, number, number][] = [
-    [3, 1, 0.35, 0.0], [-2, 5, 0.25, 1.3], [7, -4, 0.15, 2.1], [11, 9, 0.1, 0.7], [-17, 6, 0.06, 4.0], [23, -19, 0.04, 5.2],
+    [3, 1, 0.35, 0.0],
+    [-2, 5, 0.25, 1.3],
+    [7, -4, 0.15, 2.1],
+    [11, 9, 0.1, 0.7],
+    [-17, 6, 0.06, 4.0],
+    [23, -19, 0.04, 5.2],
   ];
   for (let j = 0; j < size; j++) {
     for (let i = 0; i < size; i++) {

@@ -7,24 +7,29 @@ import { isCameraPose, type CameraPose } from '../camera/cameraPose';
  */
 /** The URL's `t` range (src/sim/params/simulationTime.ts), so a time set here always makes a link that opens. */
 export function checkTime(seconds: unknown): number {
-  if (!isValidTime(seconds)) throw new TypeError(`setTime needs a time in seconds between 0 and ${MAX_TIME} (as the URL's t), got ${String(seconds)}.`);
+  if (!isValidTime(seconds))
+    throw new TypeError(`setTime needs a time in seconds between 0 and ${MAX_TIME} (as the URL's t), got ${String(seconds)}.`);
   return seconds;
 }
 
 export function checkCameraPose(pose: unknown): CameraPose {
   if (!isCameraPose(pose)) {
-    throw new TypeError('setCamera needs { position: [x, y, z], target: [x, y, z] }: finite numbers within ±1e6 m, the target apart from the position.');
+    throw new TypeError(
+      'setCamera needs { position: [x, y, z], target: [x, y, z] }: finite numbers within ±1e6 m, the target apart from the position.',
+    );
   }
   return pose;
 }
 
 export function checkSurfacePoint(x: number, z: number): void {
-  if (!Number.isFinite(x) || !Number.isFinite(z)) throw new TypeError(`sampleSurface needs finite x and z, got ${String(x)}, ${String(z)}.`);
+  if (!Number.isFinite(x) || !Number.isFinite(z))
+    throw new TypeError(`sampleSurface needs finite x and z, got ${String(x)}, ${String(z)}.`);
 }
 
 export function checkProbe(points: unknown, time: unknown): [number, number][] {
   const valid =
-    Array.isArray(points) && points.every((p) => Array.isArray(p) && p.length === 2 && p.every((c) => typeof c === 'number' && Number.isFinite(c)));
+    Array.isArray(points) &&
+    points.every((p) => Array.isArray(p) && p.length === 2 && p.every((c) => typeof c === 'number' && Number.isFinite(c)));
   if (!valid) throw new TypeError('probeGpu needs an array of [x, z] pairs of finite numbers.');
   if (time !== undefined && !Number.isFinite(time)) throw new TypeError(`probeGpu's time must be a finite number, got ${String(time)}.`);
   return points as [number, number][];

@@ -66,7 +66,13 @@ export class BoatController {
    * following, carries the camera along. Then records the boat into its wake and hands the
    * wake and the hull for this frame to `view`.
    */
-  update(time: number, params: OceanParams, waves: LiveWaveModel, view: Pick<OceanView, 'setWake'>, ocean?: { setBoat(boat: BoatInField | null): void; readonly interactiveWaves: InteractiveWaves | null }): void {
+  update(
+    time: number,
+    params: OceanParams,
+    waves: LiveWaveModel,
+    view: Pick<OceanView, 'setWake'>,
+    ocean?: { setBoat(boat: BoatInField | null): void; readonly interactiveWaves: InteractiveWaves | null },
+  ): void {
     const previous = this.state?.pose;
     const model = (x: number, z: number) => waves.height(x, z, time);
     const field = ocean?.interactiveWaves;
@@ -77,18 +83,31 @@ export class BoatController {
       model,
       waves,
       // With the interactive waves on, the boat rides them too, as they stand beside its hull.
-      field ? (x, z, heading) => {
-        const beside = field.beside({ x, z, heading, ...WAKE_HULL });
-        return (px, pz) => model(px, pz) + beside(px, pz);
-      } : undefined,
+      field
+        ? (x, z, heading) => {
+            const beside = field.beside({ x, z, heading, ...WAKE_HULL });
+            return (px, pz) => model(px, pz) + beside(px, pz);
+          }
+        : undefined,
     );
     const pose = this.state.pose;
     this.view.setPose(pose);
     if (params.boatFollow && previous) this.carryCamera(pose.x - previous.x, pose.z - previous.z);
     this.wake.record(time, { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, turnRate: params.boatTurnRate * DEG });
     const data = this.wake.uniforms(time, { enabled: params.wake, strength: params.wakeStrength });
-    view.setWake(data, wakeHeightBound(data), { visible: params.wake && params.wakeGuide, x: pose.x, y: 0.05, z: pose.z, heading: pose.heading });
-    ocean?.setBoat({ hull: { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, ...WAKE_HULL, strength: params.wakeStrength }, turnRate: params.boatTurnRate * DEG, time, wake: params.wake });
+    view.setWake(data, wakeHeightBound(data), {
+      visible: params.wake && params.wakeGuide,
+      x: pose.x,
+      y: 0.05,
+      z: pose.z,
+      heading: pose.heading,
+    });
+    ocean?.setBoat({
+      hull: { x: pose.x, z: pose.z, heading: pose.heading, speed: params.boatSpeed, ...WAKE_HULL, strength: params.wakeStrength },
+      turnRate: params.boatTurnRate * DEG,
+      time,
+      wake: params.wake,
+    });
   }
 
   /**

@@ -85,13 +85,17 @@ export class BoatSteering {
     if (turn === 0 && throttle === 0 && boatTurnRate === 0) return;
     // Start from the stored values whenever something else (GUI, API, URL) changed them.
     const stored = this.exact?.stored;
-    if (!this.exact || stored?.speed !== boatSpeed || stored.heading !== boatHeading) this.exact = { speed: boatSpeed, heading: boatHeading, stored: { speed: boatSpeed, heading: boatHeading } };
+    if (!this.exact || stored?.speed !== boatSpeed || stored.heading !== boatHeading)
+      this.exact = { speed: boatSpeed, heading: boatHeading, stored: { speed: boatSpeed, heading: boatHeading } };
     const exact = this.exact;
     // The boatTurnRate parameter is a rudder held over: it turns the boat as a key does.
     exact.heading = (((exact.heading + (turn * TURN_RATE + boatTurnRate) * seconds) % 360) + 360) % 360;
     const { min, max } = paramDefs.boatSpeed;
     exact.speed = Math.min(max, Math.max(min, exact.speed + throttle * ACCELERATION * seconds));
-    exact.stored = { speed: onStep(exact.speed, paramDefs.boatSpeed.step), heading: onStep(exact.heading, paramDefs.boatHeading.step) % 360 };
+    exact.stored = {
+      speed: onStep(exact.speed, paramDefs.boatSpeed.step),
+      heading: onStep(exact.heading, paramDefs.boatHeading.step) % 360,
+    };
     this.setParams({ boatHeading: exact.stored.heading, boatSpeed: exact.stored.speed });
   }
 

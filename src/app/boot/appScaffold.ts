@@ -12,7 +12,14 @@ export interface Scaffold {
   loading: LoadingProgress;
 }
 
-export function buildScaffold(container: HTMLElement, tr: Translator, params: OceanParams, onPlayToggle: () => void, alt?: string, onProgress?: (fraction: number) => void): Scaffold {
+export function buildScaffold(
+  container: HTMLElement,
+  tr: Translator,
+  params: OceanParams,
+  onPlayToggle: () => void,
+  alt?: string,
+  onProgress?: (fraction: number) => void,
+): Scaffold {
   const canvas = document.createElement('canvas');
   canvas.className = 'oceano-canvas';
   canvas.setAttribute('role', 'img');

@@ -12,7 +12,12 @@ export class ContextWatch {
 
   constructor(
     private readonly renderer: WebGLRenderer,
-    private readonly hooks: { showNotice(): HTMLElement; removeNotice(notice: HTMLElement): void; setLost(lost: boolean): void; redraw(): void },
+    private readonly hooks: {
+      showNotice(): HTMLElement;
+      removeNotice(notice: HTMLElement): void;
+      setLost(lost: boolean): void;
+      redraw(): void;
+    },
   ) {
     this.canvas = renderer.domElement;
     // After three.js's own listeners (added when the renderer was made): a restored frame is drawn once its state is new.

@@ -26,21 +26,24 @@ export class OrbitCamera {
     private readonly onChange: () => void,
   ) {
     camera.lookAt(this.target);
-    this.loaded = import('three/addons/controls/OrbitControls.js').then(({ OrbitControls }) => {
-      if (this.disposed) return undefined;
-      const pose = this.pose();
-      const controls = new OrbitControls(camera, canvas);
-      controls.target = this.target;
-      // The whole sphere around the target: orbiting below its level takes the eye under the water.
-      controls.maxPolarAngle = Math.PI;
-      controls.addEventListener('change', onChange);
-      this.controls = controls;
-      this.setPose(pose);
-      return controls;
-    }, (error) => {
-      console.warn('Oceano: the camera\'s pointer controls could not be loaded; the camera keys still work.', error);
-      return undefined;
-    });
+    this.loaded = import('three/addons/controls/OrbitControls.js').then(
+      ({ OrbitControls }) => {
+        if (this.disposed) return undefined;
+        const pose = this.pose();
+        const controls = new OrbitControls(camera, canvas);
+        controls.target = this.target;
+        // The whole sphere around the target: orbiting below its level takes the eye under the water.
+        controls.maxPolarAngle = Math.PI;
+        controls.addEventListener('change', onChange);
+        this.controls = controls;
+        this.setPose(pose);
+        return controls;
+      },
+      (error) => {
+        console.warn("Oceano: the camera's pointer controls could not be loaded; the camera keys still work.", error);
+        return undefined;
+      },
+    );
   }
 
   setPose(pose: CameraPose): void {

@@ -83,7 +83,13 @@ export class CompareDividers {
     divider.setAttribute('aria-label', this.tr.ui('compareDivider'));
     divider.dataset.split = SPLIT_KEYS[index];
     // Each strip named once: the first divider names both its sides, a second only its right.
-    const labels = index === 0 ? ([['left', left], ['right', right]] as const) : ([['right', right]] as const);
+    const labels =
+      index === 0
+        ? ([
+            ['left', left],
+            ['right', right],
+          ] as const)
+        : ([['right', right]] as const);
     for (const [side, name] of labels) {
       const label = document.createElement('span');
       label.className = `oceano-compare-label oceano-compare-label-${side}`;
@@ -102,7 +108,14 @@ export class CompareDividers {
     });
     divider.addEventListener('keydown', (event) => {
       const f = this.shown[index];
-      const to: Record<string, number> = { ArrowLeft: f - KEY_STEP, ArrowRight: f + KEY_STEP, PageDown: f - PAGE_STEP, PageUp: f + PAGE_STEP, Home: 0, End: 1 };
+      const to: Record<string, number> = {
+        ArrowLeft: f - KEY_STEP,
+        ArrowRight: f + KEY_STEP,
+        PageDown: f - PAGE_STEP,
+        PageUp: f + PAGE_STEP,
+        Home: 0,
+        End: 1,
+      };
       if (!(event.key in to)) return;
       // The arrows also steer the boat (boatSteering.ts): a focused divider keeps them.
       event.preventDefault();

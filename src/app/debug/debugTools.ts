@@ -15,7 +15,8 @@ export function debugTools(app: OceanApp) {
     fresnelTable: (): Float32Array => view().ocean.fresnelData.slice(),
     fresnelTableFromBelow: (): Float32Array => view().ocean.fresnelFromBelowData.slice(),
     passTimings: (): PassTiming[] => profileFrame(view(), app.clock.time),
-    heightmaps: (): { size: number; data: Float32Array }[] => (view().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
+    heightmaps: (): { size: number; data: Float32Array }[] =>
+      (view().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
     lodUpdateMs: (batches?: number): number => timeLodUpdate(view(), checkBatches(batches)),
     forceShaftLightWindow: (on: boolean): void => view().underwater.forceShaftLightWindow(on === true),
     setShadingFixes: (fixes: Partial<ShadingFixes>): void => setShadingFixes(view(), fixes),

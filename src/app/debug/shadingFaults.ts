@@ -60,7 +60,10 @@ interface ShaderFault {
 }
 
 /** Per-pixel detail normals weighted to nothing: the far bands keep their vertex normals. */
-const NO_DETAIL_NORMALS: ShaderFault = { name: 'no-detail-normals', fragment: [['float weight = smoothstep(DETAIL_FROM', 'float weight = 0.0 * smoothstep(DETAIL_FROM']] };
+const NO_DETAIL_NORMALS: ShaderFault = {
+  name: 'no-detail-normals',
+  fragment: [['float weight = smoothstep(DETAIL_FROM', 'float weight = 0.0 * smoothstep(DETAIL_FROM']],
+};
 /** Per-pixel normals and foam at absolute grid points, where float32 moves in 6 cm steps 10⁶ m out. */
 const ABSOLUTE_PIXELS: ShaderFault = {
   name: 'absolute-pixels',
@@ -88,7 +91,10 @@ const WINDLESS_ROUGHNESS: ShaderFault = {
   name: 'windless-roughness',
   fragment: [['float roughness = waveUnresolvedSlopeVariance();', 'float roughness = 0.05 + 0.0 * waveUnresolvedSlopeVariance();']],
 };
-const EVERY_CASCADE_SLOPE: ShaderFault = { name: 'every-cascade-slope', fragment: [['vec3 share = clamp(', 'vec3 share = vec3(1.0) + 0.0 * clamp(']] };
+const EVERY_CASCADE_SLOPE: ShaderFault = {
+  name: 'every-cascade-slope',
+  fragment: [['vec3 share = clamp(', 'vec3 share = vec3(1.0) + 0.0 * clamp(']],
+};
 const EVERY_TROCHOID_SLOPE: ShaderFault = {
   name: 'every-trochoid-slope',
   fragment: [['float share = gerstnerShare(uGerstnerWaves[i], gerstnerFootprint);', 'float share = 1.0;']],
@@ -104,12 +110,23 @@ const SOLID_KEPT_FOAM: ShaderFault = {
  */
 const TILED_FOAM: ShaderFault = {
   name: 'tiled-foam',
-  fragment: [['float breakup = fftBreakup(p, near);', 'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);']],
+  fragment: [
+    [
+      'float breakup = fftBreakup(p, near);',
+      'float breakup = foamBreakup(mod(p + uFftNearOffset[2] / uFftScale.z, uFftN / uFftScale.z), true);',
+    ],
+  ],
 };
 /** Every FFT tile read once at every distance: its repeat shows from high above. */
-const SINGLE_TILES: ShaderFault = { name: 'single-tiles', fragment: [['float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);', 'float far = 0.0;']] };
+const SINGLE_TILES: ShaderFault = {
+  name: 'single-tiles',
+  fragment: [['float far = smoothstep(TILE_COPY_FROM, TILE_COPY_FULL, footprint);', 'float far = 0.0;']],
+};
 /** Far foam's share of a pixel its thickness alone, as smooth grey patches: the lace's patches and streaks averaged away. */
-const SMOOTH_FAR_FOAM: ShaderFault = { name: 'smooth-far-foam', fragment: [['clamp(amount * density / uFoamDensityMean, 0.0, 1.0)', 'amount']] };
+const SMOOTH_FAR_FOAM: ShaderFault = {
+  name: 'smooth-far-foam',
+  fragment: [['clamp(amount * density / uFoamDensityMean, 0.0, 1.0)', 'amount']],
+};
 /** Foam cut hard at half its thickness, near and far: no lace thinning towards its edges. */
 const HARD_FOAM_EDGES: ShaderFault = {
   name: 'hard-foam-edges',
@@ -119,14 +136,25 @@ const HARD_FOAM_EDGES: ShaderFault = {
   ],
 };
 /** Foam as bright as the albedo it was drawn with before its reflectance was measured foam's. */
-const BRIGHTER_FOAM: ShaderFault = { name: 'brighter-foam', fragment: [['vec3 foam = FOAM_REFLECTANCE *', 'vec3 foam = vec3(0.72, 0.77, 0.80) *']] };
+const BRIGHTER_FOAM: ShaderFault = {
+  name: 'brighter-foam',
+  fragment: [['vec3 foam = FOAM_REFLECTANCE *', 'vec3 foam = vec3(0.72, 0.77, 0.80) *']],
+};
 /** Foam lit by a grey sky of the sky's luminance: no blue from above. */
 const GREY_SKY_ON_FOAM: ShaderFault = {
   name: 'grey-sky-on-foam',
-  fragment: [['vec3 skyLight = 3.14159265 * skyCubeColor(normalize(nf + vec3(0.0, 1.0, 0.0)));', 'vec3 skyLight = vec3(3.14159265 * dot(skyCubeColor(normalize(nf + vec3(0.0, 1.0, 0.0))), vec3(0.2126, 0.7152, 0.0722)));']],
+  fragment: [
+    [
+      'vec3 skyLight = 3.14159265 * skyCubeColor(normalize(nf + vec3(0.0, 1.0, 0.0)));',
+      'vec3 skyLight = vec3(3.14159265 * dot(skyCubeColor(normalize(nf + vec3(0.0, 1.0, 0.0))), vec3(0.2126, 0.7152, 0.0722)));',
+    ],
+  ],
 };
 /** The subsurface glow on every pixel alike, crest or trough. */
-const GLOW_EVERYWHERE: ShaderFault = { name: 'glow-everywhere', fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']] };
+const GLOW_EVERYWHERE: ShaderFault = {
+  name: 'glow-everywhere',
+  fragment: [['float crest = crestPinch()', 'float crest = 1.0 + 0.0 * crestPinch()']],
+};
 /** The water's own colour 3 % brighter. */
 const BRIGHTER_WATER: ShaderFault = { name: 'brighter-water', fragment: [['vec3 water = vWaterBody;', 'vec3 water = 1.03 * vWaterBody;']] };
 /** The sand written with alpha 1, as if it were above the water, for the waterline test. */

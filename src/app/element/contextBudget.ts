@@ -44,7 +44,8 @@ export class ContextBudget {
     this.waiting.delete(figure);
     if (!this.live.delete(figure)) return;
     let nearest: BudgetedFigure | undefined;
-    for (const candidate of this.waiting) if (!nearest || candidate.distanceToViewport() < nearest.distanceToViewport()) nearest = candidate;
+    for (const candidate of this.waiting)
+      if (!nearest || candidate.distanceToViewport() < nearest.distanceToViewport()) nearest = candidate;
     nearest?.retry();
   }
 }

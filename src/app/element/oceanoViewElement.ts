@@ -14,12 +14,32 @@ import { ContextBudget, distanceToViewport, type BudgetedFigure } from './contex
 /** HTML lower-cases attribute names: map them back to the URL's names (swellamplitude → swellAmplitude). */
 /** An attribute's name for a setting: its name lower-cased (HTML folds case), or written kebab-case (interactive-waves). */
 const kebab = (name: string) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
-const SETTING_NAMES = new Map<string, string>([...paramKeys, ...PAGE_KEYS].flatMap((name) => [[name.toLowerCase(), name], [kebab(name), name]] as [string, string][]));
+const SETTING_NAMES = new Map<string, string>(
+  [...paramKeys, ...PAGE_KEYS].flatMap(
+    (name) =>
+      [
+        [name.toLowerCase(), name],
+        [kebab(name), name],
+      ] as [string, string][],
+  ),
+);
 /** A boolean written bare (<oceano-view interactive-waves>) is on, as HTML's own are. */
 const settingText = (key: string, text: string) => (text === '' && isParamKey(key) && paramDefs[key].kind === 'boolean' ? '1' : text);
 
 /** Attributes that do not configure the ocean. */
-const HTML_ATTRIBUTES = new Set<string>(['id', 'class', 'style', 'title', 'hidden', 'tabindex', 'slot', 'part', 'role', 'dir', ...STARTUP_ATTRIBUTES]);
+const HTML_ATTRIBUTES = new Set<string>([
+  'id',
+  'class',
+  'style',
+  'title',
+  'hidden',
+  'tabindex',
+  'slot',
+  'part',
+  'role',
+  'dir',
+  ...STARTUP_ATTRIBUTES,
+]);
 
 /**
  * waiting: no context yet (lazy, or a poster until activated); starting; live; released: its
@@ -103,10 +123,13 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
     this.addEventListener('webglcontextlost', this.onContextLost, true);
     for (const notice of notices) this.reportError('attribute', notice);
     if (typeof IntersectionObserver === 'function') {
-      this.nearWatch = new IntersectionObserver((entries) => {
-        this.near = entries[entries.length - 1].isIntersecting;
-        this.reconcile();
-      }, { rootMargin: OceanoViewElement.nearMargin });
+      this.nearWatch = new IntersectionObserver(
+        (entries) => {
+          this.near = entries[entries.length - 1].isIntersecting;
+          this.reconcile();
+        },
+        { rootMargin: OceanoViewElement.nearMargin },
+      );
       this.nearWatch.observe(this);
     } else {
       this.near = true;

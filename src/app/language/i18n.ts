@@ -25,7 +25,10 @@ export function preferredLanguage(browserLanguages: readonly string[]): Language
 
 export type Render = (v: MessageValues) => string;
 /** Inner text ended with exactly one full stop, so "…404)." never becomes "…404).)" or "..". */
-const sentence = (text: string | number | boolean | undefined) => `${String(text ?? '').trim().replace(/[.\s]+$/, '')}.`;
+const sentence = (text: string | number | boolean | undefined) =>
+  `${String(text ?? '')
+    .trim()
+    .replace(/[.\s]+$/, '')}.`;
 const unit = (v: MessageValues) => (v.unit ? ` ${v.unit}` : '');
 
 /**
@@ -44,25 +47,31 @@ const MESSAGES: Record<Language, Record<Exclude<MessageId, LateNoticeId>, Render
     paramClamped: (v) => `"${v.key}=${v.text}" is outside [${v.min}, ${v.max}]${unit(v)}; clamped to ${v.clamped}.`,
     timeInvalid: (v) => `"t=${v.text}" is not a time in seconds between 0 and 1e9; the animation runs from 0 instead.`,
     skyInvalid: (v) => `"sky=${v.text}" is not a path on this site; using the built-in sky.`,
-    cameraInvalid: (v) => `"cam=${v.text}" is not six finite numbers x,y,z,tx,ty,tz (target apart from the position, each within ±1e6 m); using the default camera.`,
+    cameraInvalid: (v) =>
+      `"cam=${v.text}" is not six finite numbers x,y,z,tx,ty,tz (target apart from the position, each within ±1e6 m); using the default camera.`,
     languageInvalid: (v) => `"lang=${v.text}" is not a language we speak (en, es); using the browser's language.`,
     embedInvalid: (v) => `"embed=${v.text}" is not 1 or 0; showing the full page.`,
     presetUnknown: (v) => `There is no preset "${v.name}"; showing the default view. Presets: ${v.known}.`,
     lessonUnknown: (v) => `There is no lesson "${v.name}"; nothing was changed. Lessons: ${v.known}.`,
     unknownUrlParam: (v) => `Unknown URL parameter "${v.key}" was ignored.`,
     skyLoadFailed: (v) => `The sky images under "${v.base}" could not be loaded. Showing the sky painted from the sun instead.`,
-    skyCustomSunFixed: (v) => `Showing the sky images under "${v.base}": their sun is painted in, so the sun's direction now moves only the lighting and the glint on the water.`,
-    contextLost: () => 'The graphics context was lost: the GPU was reset, or this page holds more 3D views than the browser keeps alive (about 16). The ocean comes back if the browser restores the context; if it does not, reload the page.',
+    skyCustomSunFixed: (v) =>
+      `Showing the sky images under "${v.base}": their sun is painted in, so the sun's direction now moves only the lighting and the glint on the water.`,
+    contextLost: () =>
+      'The graphics context was lost: the GPU was reset, or this page holds more 3D views than the browser keeps alive (about 16). The ocean comes back if the browser restores the context; if it does not, reload the page.',
     shareCopied: () => 'Link to this view copied to the clipboard.',
     shareFallback: (v) => `Copy this link to share the view: ${v.url}`,
-    webgl2Missing: () => 'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.',
+    webgl2Missing: () =>
+      'Oceano needs WebGL2, which this browser or device does not provide. Try a recent Chrome, Firefox or Safari, or enable hardware acceleration.',
     startFailed: (v) => `Oceano could not start: ${sentence(v.error)}`,
     boatPathInvalid: (v) => `"boat=${v.text}" is not a path on this site; using the built-in boat.`,
     boatLoadFailed: (v) => `The boat could not be loaded: ${sentence(v.reason)} The ocean runs without the boat.`,
     boatStateInvalid: (v) => `"boatState=${v.text}" is not ten finite numbers within the boat's area; the boat starts afresh.`,
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" is not a recorded track; the wake is replayed from the boat's present course.`,
-    modelLoadFailed: (v) => `The code of the "${v.name}" waves could not be downloaded; still showing "${v.fallback}". Choose it again later, or reload the page.`,
-    underwaterLoadFailed: () => 'The underwater effects (water fog, light shafts, blur) could not be downloaded; the sea is drawn from below without them. Reload the page to try again.',
+    modelLoadFailed: (v) =>
+      `The code of the "${v.name}" waves could not be downloaded; still showing "${v.fallback}". Choose it again later, or reload the page.`,
+    underwaterLoadFailed: () =>
+      'The underwater effects (water fog, light shafts, blur) could not be downloaded; the sea is drawn from below without them. Reload the page to try again.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" is not one of ${v.allowed}; using "${v.fallback}".`,
     panelLoadFailed: () => 'The control panel could not be downloaded; the ocean runs without it. Reload the page to try again.',
     disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} is not in [${v.min}, ${v.max}] m; no stone dropped.`,
@@ -79,28 +88,35 @@ const MESSAGES: Record<Language, Record<Exclude<MessageId, LateNoticeId>, Render
     paramClamped: (v) => `"${v.key}=${v.text}" está fuera de [${v.min}, ${v.max}]${unit(v)}; se limita a ${v.clamped}.`,
     timeInvalid: (v) => `"t=${v.text}" no es un tiempo en segundos entre 0 y 1e9; la animación corre desde 0.`,
     skyInvalid: (v) => `"sky=${v.text}" no es una ruta de este sitio; se usa el cielo incluido.`,
-    cameraInvalid: (v) => `"cam=${v.text}" no son seis números finitos x,y,z,tx,ty,tz (objetivo distinto de la posición, cada uno dentro de ±1e6 m); se usa la cámara por defecto.`,
+    cameraInvalid: (v) =>
+      `"cam=${v.text}" no son seis números finitos x,y,z,tx,ty,tz (objetivo distinto de la posición, cada uno dentro de ±1e6 m); se usa la cámara por defecto.`,
     languageInvalid: (v) => `"lang=${v.text}" no es un idioma disponible (en, es); se usa el idioma del navegador.`,
     embedInvalid: (v) => `"embed=${v.text}" no es 1 ni 0; se muestra la página completa.`,
     presetUnknown: (v) => `No existe la vista predefinida "${v.name}"; se muestra la vista por defecto. Disponibles: ${v.known}.`,
     lessonUnknown: (v) => `No existe la lección "${v.name}"; no se ha cambiado nada. Lecciones: ${v.known}.`,
     unknownUrlParam: (v) => `Se ignoró el parámetro de URL desconocido "${v.key}".`,
     skyLoadFailed: (v) => `No se pudieron cargar las imágenes del cielo en "${v.base}". Se muestra el cielo pintado a partir del sol.`,
-    skyCustomSunFixed: (v) => `Se muestran las imágenes del cielo en "${v.base}": su sol está pintado en ellas, así que la dirección del sol solo mueve la iluminación y el brillo en el agua.`,
-    contextLost: () => 'Se perdió el contexto gráfico: la GPU se reinició, o esta página tiene más vistas 3D de las que el navegador mantiene (unas 16). El océano vuelve si el navegador restablece el contexto; si no, recarga la página.',
+    skyCustomSunFixed: (v) =>
+      `Se muestran las imágenes del cielo en "${v.base}": su sol está pintado en ellas, así que la dirección del sol solo mueve la iluminación y el brillo en el agua.`,
+    contextLost: () =>
+      'Se perdió el contexto gráfico: la GPU se reinició, o esta página tiene más vistas 3D de las que el navegador mantiene (unas 16). El océano vuelve si el navegador restablece el contexto; si no, recarga la página.',
     shareCopied: () => 'Enlace a esta vista copiado al portapapeles.',
     shareFallback: (v) => `Copia este enlace para compartir la vista: ${v.url}`,
-    webgl2Missing: () => 'Oceano necesita WebGL2, que este navegador o dispositivo no ofrece. Prueba un Chrome, Firefox o Safari reciente, o activa la aceleración por hardware.',
+    webgl2Missing: () =>
+      'Oceano necesita WebGL2, que este navegador o dispositivo no ofrece. Prueba un Chrome, Firefox o Safari reciente, o activa la aceleración por hardware.',
     // The error's own text is English (a browser or library message): the console has it.
     startFailed: () => 'Oceano no pudo arrancar; el detalle técnico está en la consola del navegador.',
     boatPathInvalid: (v) => `"boat=${v.text}" no es una ruta de este sitio; se usa el barco incluido.`,
     boatLoadFailed: () => 'No se pudo cargar el barco; el detalle técnico está en la consola del navegador. El océano sigue sin él.',
     boatStateInvalid: (v) => `"boatState=${v.text}" no son diez números finitos dentro de la zona del barco; el barco empieza de nuevo.`,
     wakeTrackInvalid: (v) => `"wakeTrack=${v.text}" no es una derrota grabada; la estela se reconstruye con el rumbo actual del barco.`,
-    modelLoadFailed: (v) => `No se pudo descargar el código de las olas "${v.name}"; se sigue mostrando "${v.fallback}". Vuelve a elegirlas más tarde o recarga la página.`,
-    underwaterLoadFailed: () => 'No se pudieron descargar los efectos bajo el agua (niebla, rayos de luz, desenfoque); el mar se ve desde abajo sin ellos. Recarga la página para intentarlo de nuevo.',
+    modelLoadFailed: (v) =>
+      `No se pudo descargar el código de las olas "${v.name}"; se sigue mostrando "${v.fallback}". Vuelve a elegirlas más tarde o recarga la página.`,
+    underwaterLoadFailed: () =>
+      'No se pudieron descargar los efectos bajo el agua (niebla, rayos de luz, desenfoque); el mar se ve desde abajo sin ellos. Recarga la página para intentarlo de nuevo.',
     elementAttributeInvalid: (v) => `"${v.name}=${v.text}" no es uno de ${v.allowed}; se usa "${v.fallback}".`,
-    panelLoadFailed: () => 'No se pudo descargar el panel de controles; el océano sigue sin él. Recarga la página para intentarlo de nuevo.',
+    panelLoadFailed: () =>
+      'No se pudo descargar el panel de controles; el océano sigue sin él. Recarga la página para intentarlo de nuevo.',
     disturbInvalid: (v) => `disturb: ${v.name} = ${v.got} no está en [${v.min}, ${v.max}] m; no se tira la piedra.`,
     disturbRadiusRaised: (v) => `disturb: el radio ${v.radius} m es menor que un texel; se sube a ${v.raised} m.`,
     disturbFieldOff: () => 'disturb: las olas interactivas están apagadas.',
@@ -130,7 +146,8 @@ export type UiTextId =
 const UI: Record<Language, Record<UiTextId, string>> = {
   en: {
     canvasLabel: 'Animated 3D ocean under a sky',
-    canvasLabelFigure: 'A teaching figure in place of the sea: the heightmaps, the steps of their Perlin noise, or the sky’s cube map unfolded',
+    canvasLabelFigure:
+      'A teaching figure in place of the sea: the heightmaps, the steps of their Perlin noise, or the sky’s cube map unfolded',
     canvasLabelNormals: 'Animated 3D ocean coloured by its surface normals',
     compareDivider: 'Divider between wave models (drag, or arrow keys)',
     loadingTitle: 'Loading',
@@ -143,7 +160,8 @@ const UI: Record<Language, Record<UiTextId, string>> = {
   },
   es: {
     canvasLabel: 'Océano 3D animado bajo un cielo',
-    canvasLabelFigure: 'Una figura didáctica en lugar del mar: los mapas de alturas, los pasos de su ruido de Perlin o el cube map del cielo desplegado',
+    canvasLabelFigure:
+      'Una figura didáctica en lugar del mar: los mapas de alturas, los pasos de su ruido de Perlin o el cube map del cielo desplegado',
     canvasLabelNormals: 'Océano 3D animado coloreado según las normales de su superficie',
     compareDivider: 'Divisor entre modelos de olas (arrastrar o flechas)',
     loadingTitle: 'Cargando',
@@ -155,7 +173,6 @@ const UI: Record<Language, Record<UiTextId, string>> = {
     dismiss: 'Cerrar',
   },
 };
-
 
 /** What the canvas shows, for its aria-label: it follows the teaching view. */
 export function canvasLabel(tr: Translator, params: Pick<OceanParams, 'view' | 'shading'>): string {

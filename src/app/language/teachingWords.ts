@@ -82,7 +82,8 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     lodBandLegend: 'Band {band}: from {from} m',
     kelvinAngleLabel: '19.47° (Kelvin)',
     snellWindowLabel: "48.6°: edge of Snell's window",
-    hullPointsLegend: 'The dots: the five points where the hull asks the CPU twin for the water’s height (centre, bow and stern, port and starboard).',
+    hullPointsLegend:
+      'The dots: the five points where the hull asks the CPU twin for the water’s height (centre, bow and stern, port and starboard).',
     hull_centre: 'centre',
     hull_bow: 'bow',
     hull_stern: 'stern',
@@ -144,7 +145,8 @@ const WORDS: Record<Language, Record<TeachingWordId, string>> = {
     lodBandLegend: 'Banda {band}: desde {from} m',
     kelvinAngleLabel: '19,47° (Kelvin)',
     snellWindowLabel: '48,6°: borde de la ventana de Snell',
-    hullPointsLegend: 'Los puntos: los cinco lugares donde el casco pide al gemelo en CPU la altura del agua (centro, proa y popa, babor y estribor).',
+    hullPointsLegend:
+      'Los puntos: los cinco lugares donde el casco pide al gemelo en CPU la altura del agua (centro, proa y popa, babor y estribor).',
     hull_centre: 'centro',
     hull_bow: 'proa',
     hull_stern: 'popa',

@@ -20,10 +20,25 @@ export const CONCEPT_STAGES: readonly ConceptStage[] = [
   { name: { en: 'Gerstner’s waves', es: 'Las olas de Gerstner' }, lessons: ['gerstner-gentle', 'gerstner-steepness'] },
   { name: { en: 'Spectra', es: 'Espectros' }, lessons: ['spectra-compared', 'fft-calm', 'fft-short-fetch', 'physics-panel'] },
   { name: { en: 'The FFT', es: 'La FFT' }, lessons: ['fft-transform', 'fft-gale', 'fft-normals', 'compare-models'] },
-  { name: { en: 'Detail with distance', es: 'El detalle con la distancia' }, lessons: ['slope-filtering', 'lod-bands', 'lod-morph', 'horizon'] },
+  {
+    name: { en: 'Detail with distance', es: 'El detalle con la distancia' },
+    lessons: ['slope-filtering', 'lod-bands', 'lod-morph', 'horizon'],
+  },
   {
     name: { en: 'Light', es: 'La luz' },
-    lessons: ['light-units', 'sky-cube', 'reflection', 'fresnel', 'fresnel-schlick', 'sun-glint', 'water-colour', 'snell-window', 'underwater-fog', 'caustics', 'god-rays'],
+    lessons: [
+      'light-units',
+      'sky-cube',
+      'reflection',
+      'fresnel',
+      'fresnel-schlick',
+      'sun-glint',
+      'water-colour',
+      'snell-window',
+      'underwater-fog',
+      'caustics',
+      'god-rays',
+    ],
   },
 ];
 

@@ -62,14 +62,21 @@ export class FigureCaptions {
     if (params.view === 'heightmap' && waves === 'gerstner') return [];
     if (params.view === SKY_CUBE_VIEW) {
       const { box, cell } = crossPlacement(free);
-      const faces = CROSS_CELLS.map((c) => ({ text: word(`face_${c.face}`), inside: { x: box.x + c.column * cell, y: box.y + c.row * cell, width: cell, height: cell } }));
+      const faces = CROSS_CELLS.map((c) => ({
+        text: word(`face_${c.face}`),
+        inside: { x: box.x + c.column * cell, y: box.y + c.row * cell, width: cell, height: cell },
+      }));
       return [...faces, { text: word('skyCubeCaption'), below: box }];
     }
     const b = surfaceStateAt(params, time).rippleBlend;
     return figurePictures(params.view, free).map(({ id, rect }) => {
       // Under waves=fft the heightmap view shows the cascades' height fields.
-      const name: TeachingWordId = waves === 'fft' && id.startsWith('heightmap') ? (id === 'heightmap0' ? 'picture_cascade0' : 'picture_cascade1') : `picture_${id}`;
-      return { text: word(name).replace('{b}', b.toLocaleString(this.tr.language, { minimumFractionDigits: 2, maximumFractionDigits: 2 })), below: rect };
+      const name: TeachingWordId =
+        waves === 'fft' && id.startsWith('heightmap') ? (id === 'heightmap0' ? 'picture_cascade0' : 'picture_cascade1') : `picture_${id}`;
+      return {
+        text: word(name).replace('{b}', b.toLocaleString(this.tr.language, { minimumFractionDigits: 2, maximumFractionDigits: 2 })),
+        below: rect,
+      };
     });
   }
 

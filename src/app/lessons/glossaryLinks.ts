@@ -23,7 +23,9 @@ function formPattern(form: string): RegExp {
 export function firstTermOccurrences(text: string, language: Language, glossary: Record<string, GlossaryTerm>): TermOccurrence[] {
   const all: TermOccurrence[] = [];
   for (const [key, term] of Object.entries(glossary)) {
-    const elsewhere = (term.otherSenses?.[language] ?? []).flatMap((phrase) => [...text.matchAll(formPattern(phrase))].map((m) => [m.index, m.index + m[0].length]));
+    const elsewhere = (term.otherSenses?.[language] ?? []).flatMap((phrase) =>
+      [...text.matchAll(formPattern(phrase))].map((m) => [m.index, m.index + m[0].length]),
+    );
     for (const form of term.words[language]) {
       for (const match of text.matchAll(formPattern(form))) {
         const [start, end] = [match.index, match.index + match[0].length];

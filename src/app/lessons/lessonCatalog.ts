@@ -27,48 +27,52 @@ export const LESSONS: readonly Lesson[] = [
   {
     id: 'heightmap-blend',
     params: { swellAmplitude: 0, rippleStrength: 1.2, view: 'noise-blend' },
-    camera: { position: [0, 8, 30], target: [0, 0, -30] }
+    camera: { position: [0, 8, 30], target: [0, 0, -30] },
   },
   { id: 'normals-wrong', preset: 'normals-wrong' },
   { id: 'normals-right', preset: 'normals-right' },
   {
     id: 'sky-cube',
     params: { view: 'sky-cube' },
-    camera: { position: [0, 3, 40], target: [0, 40, -40] }
+    camera: { position: [0, 3, 40], target: [0, 40, -40] },
   },
   { id: 'reflection', preset: 'still-ocean' },
   { id: 'fresnel', preset: 'fresnel' },
   { id: 'fresnel-schlick', preset: 'fresnel', params: { fresnel: false } },
   // From 20 m up towards a 25° sun: the glitter's centre, 43 m ahead, in the middle of the view.
-  { id: 'sun-glint', params: { waves: 'fft', windSpeed: 5, sunElevation: 25, sunAzimuth: 20 }, camera: { position: [0, 20, 0], target: [14.7, 0, -40.4] } },
+  {
+    id: 'sun-glint',
+    params: { waves: 'fft', windSpeed: 5, sunElevation: 25, sunAzimuth: 20 },
+    camera: { position: [0, 20, 0], target: [14.7, 0, -40.4] },
+  },
   {
     id: 'boat-twin',
     preset: 'boat-pitch',
     // Looking at the boat, so its sample points stay in sight on a phone held upright too.
-    camera: { position: [18, 6, 14], target: [7, 0, -5] }
+    camera: { position: [18, 6, 14], target: [7, 0, -5] },
   },
   { id: 'boat-pitch', preset: 'boat-pitch' },
   { id: 'snell-window', preset: 'underwater' },
   {
     id: 'underwater-fog',
     params: { fogDensity: 0.06 },
-    camera: { position: [0, -5, 20], target: [0, -6, -20] }
+    camera: { position: [0, -5, 20], target: [0, -6, -20] },
   },
   {
     id: 'caustics',
     params: { seaBedDepth: 10, godRays: false, sunElevation: 60 },
-    camera: { position: [0, -3, 14], target: [0, -10, -6] }
+    camera: { position: [0, -3, 14], target: [0, -10, -6] },
   },
   {
     id: 'god-rays',
     params: { sunElevation: 40, sunAzimuth: 20 },
-    camera: { position: [0, -10, 20], target: [0, -4, -20] }
+    camera: { position: [0, -10, 20], target: [0, -4, -20] },
   },
   { id: 'lod-bands', preset: 'lod-bands' },
   {
     id: 'lod-morph',
     params: { wireframe: true, lodColors: true, lodDistance: 40 },
-    camera: { position: [0, 30, 50], target: [0, 0, -60] }
+    camera: { position: [0, 30, 50], target: [0, 0, -60] },
   },
   { id: 'frustum-culling', preset: 'frustum-culling' },
   { id: 'fft-calm', preset: 'calm' },
@@ -90,7 +94,7 @@ export const LESSONS: readonly Lesson[] = [
   {
     id: 'horizon',
     preset: 'lod-bands',
-    camera: { position: [0, 120, 60], target: [0, 60, -1500] }
+    camera: { position: [0, 120, 60], target: [0, 60, -1500] },
   },
   // The ideas under the models (conceptPath.ts walks them in the ideas' order).
   { id: 'airy-waves', preset: 'gerstner-gentle' },
@@ -124,7 +128,9 @@ export function lessonView(lesson: Lesson): LessonView {
   return {
     params: { ...defaultParams(), ...preset?.params, ...lesson.params },
     camera: { position: [...camera.position], target: [...camera.target] },
-    cullingCamera: preset?.cullingCamera ? { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] } : null,
+    cullingCamera: preset?.cullingCamera
+      ? { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] }
+      : null,
     stones: [...(preset?.stones ?? [])],
   };
 }

@@ -18,7 +18,6 @@ import { CONCEPT_STAGES, LESSON_ORDERS, ORDER_NAMES, type LessonOrder } from './
 import { lessonDiagram, type LessonDiagram } from './diagrams/lessonDiagram';
 import { lessonExercise } from './lessonExercise';
 
-
 /** Views at least this wide (CSS px) show the list of lessons unfolded when none is open. */
 const ROOMY_WIDTH = 1000;
 /** Figures in a course page narrower than this show their card folded to its title, the sea in sight; a click unfolds it. */
@@ -66,7 +65,10 @@ export class LessonDrawer {
   private readonly position: HTMLElement;
   private readonly headerTitle: HTMLElement;
   private readonly lessonButtons = new Map<string, HTMLButtonElement>();
-  private readonly controls = new Map<ParamKey, { field: HTMLInputElement | HTMLSelectElement; output: HTMLOutputElement | null; note: HTMLElement; row: HTMLElement }>();
+  private readonly controls = new Map<
+    ParamKey,
+    { field: HTMLInputElement | HTMLSelectElement; output: HTMLOutputElement | null; note: HTMLElement; row: HTMLElement }
+  >();
   private readonly legend: LessonLegend;
   private readonly captions: FigureCaptions;
   private current: OutlinedLesson | null = null;
@@ -85,7 +87,9 @@ export class LessonDrawer {
     this.root.setAttribute('aria-label', teachingWord(tr, 'lessonsTitle'));
     this.root.lang = tr.language;
     const header = element('div', 'oceano-lessons-header');
-    this.toggle = button('oceano-lessons-toggle', teachingWord(tr, 'lessonsCollapse'), '', () => this.setCollapsed(!this.root.classList.contains('oceano-lessons-collapsed')));
+    this.toggle = button('oceano-lessons-toggle', teachingWord(tr, 'lessonsCollapse'), '', () =>
+      this.setCollapsed(!this.root.classList.contains('oceano-lessons-collapsed')),
+    );
     this.toggle.setAttribute('aria-expanded', 'true');
     // A figure's card (not listed) is titled with its lesson: folded, that title is all it shows.
     this.headerTitle = element('span', 'oceano-lessons-title', teachingWord(tr, 'lessonsTitle'));
@@ -159,7 +163,9 @@ export class LessonDrawer {
     };
     const entry = (id: string, number: number) => {
       const item = element('li', 'oceano-lessons-item');
-      const open = button('oceano-lessons-open', LESSON_TITLES[id][language], `${number}. ${LESSON_TITLES[id][language]}`, () => this.open(id));
+      const open = button('oceano-lessons-open', LESSON_TITLES[id][language], `${number}. ${LESSON_TITLES[id][language]}`, () =>
+        this.open(id),
+      );
       open.dataset.lesson = id;
       this.lessonButtons.set(id, open);
       item.append(open);
@@ -200,7 +206,9 @@ export class LessonDrawer {
   private showListView(view: ListView): void {
     const heading = element('h2', 'oceano-lessons-view-title', teachingWord(this.tr, view));
     heading.tabIndex = -1;
-    const back = button('oceano-lessons-back', teachingWord(this.tr, 'backToLessons'), `‹ ${teachingWord(this.tr, 'backToLessons')}`, () => this.showList());
+    const back = button('oceano-lessons-back', teachingWord(this.tr, 'backToLessons'), `‹ ${teachingWord(this.tr, 'backToLessons')}`, () =>
+      this.showList(),
+    );
     this.listView.replaceChildren(back, heading, view === 'bibliography' ? bibliographyList() : glossaryList(this.tr));
     this.listView.dataset.view = view;
     this.list.hidden = true;
@@ -263,7 +271,12 @@ export class LessonDrawer {
   private moveListFocus(key: string): void {
     const buttons = [...this.lessonButtons.values()];
     const at = buttons.indexOf(document.activeElement as HTMLButtonElement);
-    const to = key === 'Home' ? 0 : key === 'End' ? buttons.length - 1 : Math.min(buttons.length - 1, Math.max(0, at + (key === 'ArrowDown' ? 1 : -1)));
+    const to =
+      key === 'Home'
+        ? 0
+        : key === 'End'
+          ? buttons.length - 1
+          : Math.min(buttons.length - 1, Math.max(0, at + (key === 'ArrowDown' ? 1 : -1)));
     buttons[to]?.focus();
   }
 
@@ -271,7 +284,12 @@ export class LessonDrawer {
     const index = this.current ? LESSONS.findIndex((lesson) => lesson.id === this.current?.id) : -1;
     // A figure shows one lesson: its place in the course would say nothing there.
     this.position.textContent = index < 0 || !this.listed ? '' : `${index + 1} / ${LESSONS.length}`;
-    this.position.title = index < 0 ? '' : teachingWord(this.tr, 'lessonPosition').replace('{n}', String(index + 1)).replace('{total}', String(LESSONS.length));
+    this.position.title =
+      index < 0
+        ? ''
+        : teachingWord(this.tr, 'lessonPosition')
+            .replace('{n}', String(index + 1))
+            .replace('{total}', String(LESSONS.length));
     for (const [id, b] of this.lessonButtons) {
       if (id === this.current?.id) b.setAttribute('aria-current', 'true');
       else b.removeAttribute('aria-current');
@@ -313,7 +331,10 @@ export class LessonDrawer {
     math.innerHTML = words.math;
     const code = element('figure', 'oceano-lesson-code');
     const caption = element('figcaption', 'oceano-lesson-code-caption');
-    caption.append(`${teachingWord(this.tr, 'lessonCode')}: `, element('code', 'oceano-lesson-code-file', `${quote.file}:${quote.firstLine}–${quote.lastLine}`));
+    caption.append(
+      `${teachingWord(this.tr, 'lessonCode')}: `,
+      element('code', 'oceano-lesson-code-file', `${quote.file}:${quote.firstLine}–${quote.lastLine}`),
+    );
     const pre = element('pre', 'oceano-lesson-code-text');
     pre.append(element('code', '', quote.text));
     pre.tabIndex = 0;
@@ -332,10 +353,15 @@ export class LessonDrawer {
       this.card.append(choice);
     }
     this.card.append(math, ...(this.diagram ? [this.diagram.element] : []), code, controls);
-    const exercise = lessonExercise(lesson.id, language, () => this.params, () => {
-      const { time, stoneDropped } = this.hooks.scene();
-      return { stoneAge: stoneDropped === null ? null : time - stoneDropped };
-    });
+    const exercise = lessonExercise(
+      lesson.id,
+      language,
+      () => this.params,
+      () => {
+        const { time, stoneDropped } = this.hooks.scene();
+        return { stoneAge: stoneDropped === null ? null : time - stoneDropped };
+      },
+    );
     if (exercise) this.card.append(exercise);
     const legend = this.legend.cardLegend(lesson);
     if (legend) this.card.append(legend);
@@ -434,7 +460,12 @@ export class LessonDrawer {
     if (this.params) this.diagram?.update(this.params, this.hooks.scene().time);
     if (!this.params || this.params.view === 'ocean') return this.captions.clear();
     const { canvas, time } = this.hooks.scene();
-    this.captions.place(this.params, FreeArea.of(this.container).rect ?? { x: 0, y: 0, width: canvas.clientWidth, height: canvas.clientHeight }, canvas, time);
+    this.captions.place(
+      this.params,
+      FreeArea.of(this.container).rect ?? { x: 0, y: 0, width: canvas.clientWidth, height: canvas.clientHeight },
+      canvas,
+      time,
+    );
   }
 
   dispose(): void {

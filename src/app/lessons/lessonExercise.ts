@@ -2,7 +2,13 @@ import type { Language } from '../language/i18n';
 import type { OceanParams } from '../../sim/params/params';
 import { WAVE_EQUATION_SPEED } from '../../sim/iwave/interactiveField';
 import { GRAVITY } from '../../sim/waves/dispersion';
-import { exerciseFor, withinTolerance, type ExerciseMoment, type ExerciseQuantity, type MeasurementExercise } from '../../sim/teaching/measurementExercises';
+import {
+  exerciseFor,
+  withinTolerance,
+  type ExerciseMoment,
+  type ExerciseQuantity,
+  type MeasurementExercise,
+} from '../../sim/teaching/measurementExercises';
 
 type Words = Record<Language, string>;
 
@@ -100,7 +106,10 @@ const WORDS = {
   theory: { en: 'theory', es: 'teoría' },
   tolerance: { en: 'tolerance', es: 'tolerancia' },
   empty: { en: 'Type a number first.', es: 'Escribe primero un número.' },
-  noTheory: { en: 'Nothing to compare yet: no stone has fallen, or its crests have left the grid.', es: 'Aún no hay con qué comparar: no ha caído ninguna piedra, o sus crestas ya salieron de la malla.' },
+  noTheory: {
+    en: 'Nothing to compare yet: no stone has fallen, or its crests have left the grid.',
+    es: 'Aún no hay con qué comparar: no ha caído ninguna piedra, o sus crestas ya salieron de la malla.',
+  },
 } satisfies Record<string, Words>;
 
 function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: string, text?: string): HTMLElementTagNameMap[K] {
@@ -122,7 +131,12 @@ function parseTyped(text: string): number {
  * (aria-live): within tolerance or not yet, then the theory's value from the parameters of
  * the moment (`params()`, and `moment()`: how long ago the stone fell) and how it follows.
  */
-export function lessonExercise(lesson: string, language: Language, params: () => OceanParams | null, moment: () => ExerciseMoment = () => ({ stoneAge: null })): HTMLElement | null {
+export function lessonExercise(
+  lesson: string,
+  language: Language,
+  params: () => OceanParams | null,
+  moment: () => ExerciseMoment = () => ({ stoneAge: null }),
+): HTMLElement | null {
   const exercise = exerciseFor(lesson);
   if (!exercise) return null;
   const root = element('section', 'oceano-lesson-exercise');
@@ -132,7 +146,11 @@ export function lessonExercise(lesson: string, language: Language, params: () =>
   heading.id = headingId;
   root.setAttribute('aria-labelledby', headingId);
   const task = element('p', 'oceano-lesson-exercise-task', TASKS[exercise.quantity][language]);
-  const tolerance = element('p', 'oceano-lesson-exercise-tolerance', `${WORDS.tolerance[language]}: ±${Math.round(exercise.tolerance * 100)} %`);
+  const tolerance = element(
+    'p',
+    'oceano-lesson-exercise-tolerance',
+    `${WORDS.tolerance[language]}: ±${Math.round(exercise.tolerance * 100)} %`,
+  );
   const form = element('form', 'oceano-lesson-exercise-form');
   const label = element('label', 'oceano-lesson-exercise-label');
   label.append(element('span', '', `${exercise.symbol} =`));

@@ -15,5 +15,13 @@ export interface LessonHooks {
    * boat floats on at a point now; `stoneDropped`, when the last stone in the interactive
    * waves fell (null: none).
    */
-  scene(): { camera: Camera; pose: CameraPose; canvas: HTMLCanvasElement; time: number; boat: BoatInfo; height(x: number, z: number): number; stoneDropped: number | null };
+  scene(): {
+    camera: Camera;
+    pose: CameraPose;
+    canvas: HTMLCanvasElement;
+    time: number;
+    boat: BoatInfo;
+    height(x: number, z: number): number;
+    stoneDropped: number | null;
+  };
 }

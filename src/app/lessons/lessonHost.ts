@@ -60,7 +60,7 @@ export class LessonHost {
 
   /** The lessons in order, titled in the page's language; their titles arrive with `ready`. */
   titles(): ReturnType<typeof lessonList> {
-    if (!this.list) throw new Error('The lessons\' titles have not arrived yet: await oceano.ready first.');
+    if (!this.list) throw new Error("The lessons' titles have not arrived yet: await oceano.ready first.");
     return this.list(this.tr.language);
   }
 

@@ -73,7 +73,10 @@ export class LessonLegend {
       box.append(list);
     } else {
       const text = document.createElement('p');
-      text.textContent = teachingWord(this.tr, lesson.legend === 'kelvinAngle' ? 'kelvinAngleLabel' : lesson.legend === 'snellWindow' ? 'snellWindowLabel' : 'hullPointsLegend');
+      text.textContent = teachingWord(
+        this.tr,
+        lesson.legend === 'kelvinAngle' ? 'kelvinAngleLabel' : lesson.legend === 'snellWindow' ? 'snellWindowLabel' : 'hullPointsLegend',
+      );
       box.append(text);
     }
     return box;
@@ -86,10 +89,13 @@ export class LessonLegend {
     this.kind = lesson?.legend ?? null;
     if (params) this.params = params;
     const texts =
-      this.kind === 'kelvinAngle' ? [1, 2].map(() => teachingWord(this.tr, 'kelvinAngleLabel'))
-      : this.kind === 'snellWindow' ? [teachingWord(this.tr, 'snellWindowLabel')]
-      : this.kind === 'hullPoints' ? HULL_POINTS.map((name) => teachingWord(this.tr, `hull_${name}`))
-      : [];
+      this.kind === 'kelvinAngle'
+        ? [1, 2].map(() => teachingWord(this.tr, 'kelvinAngleLabel'))
+        : this.kind === 'snellWindow'
+          ? [teachingWord(this.tr, 'snellWindowLabel')]
+          : this.kind === 'hullPoints'
+            ? HULL_POINTS.map((name) => teachingWord(this.tr, `hull_${name}`))
+            : [];
     for (const text of texts) {
       const label = document.createElement('div');
       label.className = `oceano-lesson-label oceano-lesson-label-${this.kind}`;
@@ -104,7 +110,9 @@ export class LessonLegend {
   sync(params: OceanParams): void {
     this.params = params;
     for (const { band, text } of this.bandRows) {
-      text.textContent = teachingWord(this.tr, 'lodBandLegend').replace('{band}', String(band)).replace('{from}', String(Math.round(bandStart(band, params.lodDistance))));
+      text.textContent = teachingWord(this.tr, 'lodBandLegend')
+        .replace('{band}', String(band))
+        .replace('{from}', String(Math.round(bandStart(band, params.lodDistance))));
       text.parentElement?.classList.toggle('oceano-unread', band >= params.lodBands);
     }
   }
@@ -157,7 +165,10 @@ export class LessonLegend {
       if (!params.wake || !params.wakeGuide) return [[], []];
       const { position, heading } = scene.boat;
       const ends = KELVIN_LABEL_DISTANCES.map((distance) => kelvinGuideLines(position[0], position[2], heading, distance));
-      return [ends.map(([, , px, pz]): [number, number, number] => [px, 0, pz]), ends.map(([, , , , sx, sz]): [number, number, number] => [sx, 0, sz])];
+      return [
+        ends.map(([, , px, pz]): [number, number, number] => [px, 0, pz]),
+        ends.map(([, , , , sx, sz]): [number, number, number] => [sx, 0, sz]),
+      ];
     }
     // Where the cone of Snell's window, opening up from the eye, meets a flat sea straight ahead.
     const { position, target } = scene.pose;

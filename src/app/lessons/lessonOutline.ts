@@ -3,7 +3,29 @@ import type { ParamKey } from '../../sim/params/params';
 import { LESSONS, type Lesson } from './lessonCatalog';
 
 /** The course's chapters: the seed report's sections in its order, then what lies beyond it (names below). */
-export const LESSON_SECTIONS = ['surface', 'motion', 'noise', 'normals', 'envmap', 'optics', 'boat', 'underwater', 'lod', 'culling', 'spectral', 'gerstner', 'compare', 'physics', 'wake', 'interactive', 'horizon', 'linearWaves', 'spectra', 'filtering', 'light'] as const;
+export const LESSON_SECTIONS = [
+  'surface',
+  'motion',
+  'noise',
+  'normals',
+  'envmap',
+  'optics',
+  'boat',
+  'underwater',
+  'lod',
+  'culling',
+  'spectral',
+  'gerstner',
+  'compare',
+  'physics',
+  'wake',
+  'interactive',
+  'horizon',
+  'linearWaves',
+  'spectra',
+  'filtering',
+  'light',
+] as const;
 export type LessonSection = (typeof LESSON_SECTIONS)[number];
 
 /** What a lesson draws over the picture besides its card (lessonLegend.ts). */
@@ -38,7 +60,7 @@ export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { b
 export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: ParamKey[]; legend?: LessonLegend }> = {
   'flat-plane': { section: 'surface', controls: ['wireframe', 'lodDistance'] },
   'displaced-plane': { section: 'surface', controls: ['wireframe', 'swellAmplitude', 'rippleStrength'] },
-  'swell': { section: 'motion', controls: ['swellAmplitude', 'swellFrequency'] },
+  swell: { section: 'motion', controls: ['swellAmplitude', 'swellFrequency'] },
   'swell-maximum': { section: 'motion', controls: ['swellAmplitude', 'swellFrequency'] },
   'perlin-hash': { section: 'noise', controls: ['seed'] },
   'perlin-smoothing': { section: 'noise', controls: ['seed'] },
@@ -47,15 +69,15 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'normals-wrong': { section: 'normals', controls: ['normals', 'shading'] },
   'normals-right': { section: 'normals', controls: ['normals', 'shading', 'swellAmplitude'] },
   'sky-cube': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'view'] },
-  'reflection': { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'fresnel', 'seaRoughness', 'skyBlur'] },
-  'fresnel': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
+  reflection: { section: 'envmap', controls: ['sunElevation', 'sunAzimuth', 'fresnel', 'seaRoughness', 'skyBlur'] },
+  fresnel: { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
   'fresnel-schlick': { section: 'optics', controls: ['fresnel', 'fresnelPlot'] },
   'sun-glint': { section: 'optics', controls: ['windSpeed', 'seaRoughness', 'sunElevation', 'exposure'] },
   'boat-twin': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatResponse'], legend: 'hullPoints' },
   'boat-pitch': { section: 'boat', controls: ['swellAmplitude', 'swellFrequency', 'boatHeading'], legend: 'hullPoints' },
   'snell-window': { section: 'underwater', controls: ['fresnel', 'blurStrength'], legend: 'snellWindow' },
   'underwater-fog': { section: 'underwater', controls: ['fogDensity', 'blurStrength', 'seaBedDepth'] },
-  'caustics': { section: 'underwater', controls: ['caustics', 'causticsIntensity', 'seaBedDepth'] },
+  caustics: { section: 'underwater', controls: ['caustics', 'causticsIntensity', 'seaBedDepth'] },
   'god-rays': { section: 'underwater', controls: ['godRays', 'godRaysIntensity', 'fogDensity'] },
   'lod-bands': { section: 'lod', controls: ['lodDistance', 'lodBands', 'lodColors'], legend: 'lodBands' },
   'lod-morph': { section: 'lod', controls: ['lodMorph', 'wireframe', 'lodDistance'], legend: 'lodBands' },
@@ -75,7 +97,7 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'iwave-stone': { section: 'interactive', controls: ['iwaveGuide', 'timeScale', 'interactiveWaves'] },
   'iwave-compare': { section: 'interactive', controls: ['iwaveEquation', 'iwaveGuide', 'timeScale'] },
   'iwave-boat': { section: 'interactive', controls: ['boatSpeed', 'wake', 'wakeStrength', 'interactiveWaves'] },
-  'horizon': { section: 'horizon', controls: ['lodColors', 'lodDistance', 'visibility'], legend: 'lodBands' },
+  horizon: { section: 'horizon', controls: ['lodColors', 'lodDistance', 'visibility'], legend: 'lodBands' },
   'airy-waves': { section: 'linearWaves', controls: ['gerstnerCount', 'gerstnerSteepness', 'windSpeed'] },
   'group-velocity': { section: 'linearWaves', controls: ['iwaveGuide', 'timeScale'] },
   'spectra-compared': { section: 'spectra', controls: ['spectrum', 'windSpeed', 'fetch'] },
@@ -93,7 +115,7 @@ export const outlined = (lesson: Lesson): OutlinedLesson => ({ ...lesson, ...LES
 export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'flat-plane': { en: 'A flat grid of vertices', es: 'Una malla plana de vértices' },
   'displaced-plane': { en: 'The grid displaced in the vertex shader', es: 'La malla desplazada en el vertex shader' },
-  'swell': { en: 'The swell: sines times cosines', es: 'El oleaje: senos por cosenos' },
+  swell: { en: 'The swell: sines times cosines', es: 'El oleaje: senos por cosenos' },
   'swell-maximum': { en: 'Top “frequency” (wavenumber) and amplitude', es: 'Máxima “frecuencia” (número de onda) y amplitud' },
   'perlin-hash': { en: 'Step 1: an integer noise function (value noise)', es: 'Paso 1: una función de ruido entera (ruido de valor)' },
   'perlin-smoothing': { en: 'Step 2: smoothing with the neighbours', es: 'Paso 2: suavizado con los vecinos' },
@@ -102,15 +124,15 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'normals-wrong': { en: 'Wrong normals: the flat plane’s', es: 'Normales incorrectas: las del plano' },
   'normals-right': { en: 'Right normals from fabricated neighbours', es: 'Normales correctas con vecinos fabricados' },
   'sky-cube': { en: 'The sky as a cube map', es: 'El cielo como cube map' },
-  'reflection': { en: 'The cube map reflected', es: 'El cube map reflejado' },
-  'fresnel': { en: 'Fresnel: how much the sea reflects', es: 'Fresnel: cuánto refleja el mar' },
+  reflection: { en: 'The cube map reflected', es: 'El cube map reflejado' },
+  fresnel: { en: 'Fresnel: how much the sea reflects', es: 'Fresnel: cuánto refleja el mar' },
   'fresnel-schlick': { en: 'The table against Schlick', es: 'La tabla frente a Schlick' },
   'sun-glint': { en: 'The sun’s glitter and the tone curve', es: 'El destello del sol y la curva de tono' },
   'boat-twin': { en: 'The CPU twin of the shader', es: 'El gemelo en CPU del shader' },
   'boat-pitch': { en: 'Heave, pitch and roll', es: 'Elevación, cabeceo y balanceo' },
   'snell-window': { en: 'Snell’s window', es: 'La ventana de Snell' },
   'underwater-fog': { en: 'Fog and blur under the water', es: 'Niebla y desenfoque bajo el agua' },
-  'caustics': { en: 'Caustics on the sea bed', es: 'Cáusticas en el fondo' },
+  caustics: { en: 'Caustics on the sea bed', es: 'Cáusticas en el fondo' },
   'god-rays': { en: 'God rays', es: 'Rayos de luz' },
   'lod-bands': { en: 'Distance bands', es: 'Bandas de distancia' },
   'lod-morph': { en: 'Geomorphing between bands', es: 'Geomorfismo entre bandas' },
@@ -130,18 +152,43 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
   'iwave-stone': { en: 'A stone: long waves lead', es: 'Una piedra: las olas largas van delante' },
   'iwave-compare': { en: 'Dispersion against the wave equation', es: 'Dispersión frente a la ecuación de ondas' },
   'iwave-boat': { en: 'The boat pushes water', es: 'El barco empuja el agua' },
-  'horizon': { en: 'Rings out to the horizon', es: 'Anillos hasta el horizonte' },
+  horizon: { en: 'Rings out to the horizon', es: 'Anillos hasta el horizonte' },
   'airy-waves': { en: 'Linear (Airy) waves: orbits and energy', es: 'Olas lineales (Airy): órbitas y energía' },
   'group-velocity': { en: 'Phase speed and group velocity', es: 'Velocidad de fase y velocidad de grupo' },
   'spectra-compared': { en: 'Phillips beside Pierson–Moskowitz and JONSWAP', es: 'Phillips junto a Pierson–Moskowitz y JONSWAP' },
-  'fft-transform': { en: 'The FFT itself: random amplitudes, butterflies, tiles', es: 'La FFT en sí: amplitudes aleatorias, mariposas, teselas' },
-  'slope-filtering': { en: 'Filtering: slopes too fine to draw become roughness', es: 'Filtrado: las pendientes demasiado finas se vuelven rugosidad' },
-  'light-units': { en: 'Light’s units: HDR radiance, the tone curve, sRGB', es: 'Las unidades de la luz: radiancia HDR, curva de tono, sRGB' },
+  'fft-transform': {
+    en: 'The FFT itself: random amplitudes, butterflies, tiles',
+    es: 'La FFT en sí: amplitudes aleatorias, mariposas, teselas',
+  },
+  'slope-filtering': {
+    en: 'Filtering: slopes too fine to draw become roughness',
+    es: 'Filtrado: las pendientes demasiado finas se vuelven rugosidad',
+  },
+  'light-units': {
+    en: 'Light’s units: HDR radiance, the tone curve, sRGB',
+    es: 'Las unidades de la luz: radiancia HDR, curva de tono, sRGB',
+  },
   'water-colour': { en: 'The water’s colour and the crests’ glow', es: 'El color del agua y el brillo de las crestas' },
 };
 
 /** The lessons whose card has a measurement exercise (src/sim/teaching/measurementExercises.ts; a unit test keeps the two alike). */
-export const EXERCISE_LESSONS: readonly string[] = ['fft-calm', 'fft-fresh-breeze', 'fft-short-fetch', 'fft-gale', 'physics-panel', 'kelvin-wake', 'airy-waves', 'gerstner-gentle', 'spectra-compared', 'sun-glint', 'fft-transform', 'wake-turn', 'iwave-compare', 'iwave-stone', 'group-velocity'];
+export const EXERCISE_LESSONS: readonly string[] = [
+  'fft-calm',
+  'fft-fresh-breeze',
+  'fft-short-fetch',
+  'fft-gale',
+  'physics-panel',
+  'kelvin-wake',
+  'airy-waves',
+  'gerstner-gentle',
+  'spectra-compared',
+  'sun-glint',
+  'fft-transform',
+  'wake-turn',
+  'iwave-compare',
+  'iwave-stone',
+  'group-velocity',
+];
 
 /** `[{ id, title, section, question, exercise }]` in a language, in the course's order (oceano.lessons()). */
 export function lessonList(language: Language): { id: string; title: string; section: string; question: boolean; exercise: boolean }[] {

@@ -13,4 +13,10 @@ export type { LessonText };
  * A chunk of its own, fetched with the lessons drawer after the first frame. Every card, by
  * lesson id; each part of the course in a file of its own (texts/).
  */
-export const LESSON_TEXTS: Record<string, LessonText> = { ...seedSeaTexts, ...lightTexts, ...spectralSeaTexts, ...beyondTexts, ...ideasTexts };
+export const LESSON_TEXTS: Record<string, LessonText> = {
+  ...seedSeaTexts,
+  ...lightTexts,
+  ...spectralSeaTexts,
+  ...beyondTexts,
+  ...ideasTexts,
+};

@@ -27,14 +27,17 @@ export const MIN_QUOTE_LINES = 3;
 export function extractQuote(fileText: string, source: QuoteSource): Quote {
   const lines = fileText.split(/\r?\n/);
   const starts = lines.flatMap((line, i) => (line.includes(source.from) ? [i] : []));
-  if (starts.length !== 1) throw new Error(`${source.file}: the start marker "${source.from}" occurs on ${starts.length} lines, not exactly one.`);
+  if (starts.length !== 1)
+    throw new Error(`${source.file}: the start marker "${source.from}" occurs on ${starts.length} lines, not exactly one.`);
   const first = starts[0];
   let last = first;
   while (last < lines.length && !lines[last].includes(source.to)) last++;
   if (last === lines.length) throw new Error(`${source.file}: no line after "${source.from}" contains the end marker "${source.to}".`);
   const count = last - first + 1;
   if (count < MIN_QUOTE_LINES || count > MAX_QUOTE_LINES) {
-    throw new Error(`${source.file}: the quote from "${source.from}" to "${source.to}" has ${count} lines; a card shows ${MIN_QUOTE_LINES} to ${MAX_QUOTE_LINES}.`);
+    throw new Error(
+      `${source.file}: the quote from "${source.from}" to "${source.to}" has ${count} lines; a card shows ${MIN_QUOTE_LINES} to ${MAX_QUOTE_LINES}.`,
+    );
   }
   return { file: source.file, firstLine: first + 1, lastLine: last + 1, text: lines.slice(first, last + 1).join('\n') };
 }

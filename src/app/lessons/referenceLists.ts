@@ -39,7 +39,9 @@ export function bibliographyList(): HTMLOListElement {
 export function glossaryList(tr: Translator): HTMLDListElement {
   const language = tr.language;
   const headword = (term: GlossaryTerm) => term.words[language][0];
-  const terms = (Object.entries(GLOSSARY) as [string, GlossaryTerm][]).sort(([, a], [, b]) => headword(a).localeCompare(headword(b), language, { sensitivity: 'base' }));
+  const terms = (Object.entries(GLOSSARY) as [string, GlossaryTerm][]).sort(([, a], [, b]) =>
+    headword(a).localeCompare(headword(b), language, { sensitivity: 'base' }),
+  );
   const dl = document.createElement('dl');
   dl.className = 'oceano-glossary-list';
   for (const [key, term] of terms) {

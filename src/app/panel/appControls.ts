@@ -46,15 +46,30 @@ export class AppControls {
   constructor(
     private readonly container: HTMLElement,
     private readonly fresnelData: Float32Array,
-    private readonly state: { showPanel: boolean; params: OceanParams; playing: boolean; tr: Translator; physics: PhysicsSource; panelFailed: () => void },
+    private readonly state: {
+      showPanel: boolean;
+      params: OceanParams;
+      playing: boolean;
+      tr: Translator;
+      physics: PhysicsSource;
+      panelFailed: () => void;
+    },
     app: KeyedApp,
     private readonly hooks: ControlPanelHooks,
   ) {
     this.shown = { params: state.params, playing: state.playing };
     // The full page steers from anywhere; an embedded figure only when it has the focus.
     const keyTarget: Window | HTMLElement = state.showPanel ? window : container;
-    this.steering = new BoatSteering(keyTarget, (change) => app.setParams(change), () => app.getParams());
-    this.cameraKeys = new CameraKeys(keyTarget, () => app.camera(), (pose) => app.setCamera(pose));
+    this.steering = new BoatSteering(
+      keyTarget,
+      (change) => app.setParams(change),
+      () => app.getParams(),
+    );
+    this.cameraKeys = new CameraKeys(
+      keyTarget,
+      () => app.camera(),
+      (pose) => app.setCamera(pose),
+    );
     this.tr = state.tr;
     this.physics = new PhysicsPanel(container, state.physics);
     this.sync(state.params, state.playing);
@@ -75,7 +90,7 @@ export class AppControls {
         this.panel.openFoldersOf(this.opened);
       },
       (error: unknown) => {
-        console.warn('Oceano: the control panel\'s code could not be loaded.', error);
+        console.warn("Oceano: the control panel's code could not be loaded.", error);
         if (!this.disposed) this.state.panelFailed();
       },
     );
@@ -93,7 +108,7 @@ export class AppControls {
         this.fresnelPlot = new FresnelPlot(this.container, this.fresnelData, this.tr);
         this.fresnelPlot.setVisible(this.shown.params.fresnelPlot);
       },
-      (error: unknown) => console.warn('Oceano: the Fresnel plot\'s code could not be loaded.', error),
+      (error: unknown) => console.warn("Oceano: the Fresnel plot's code could not be loaded.", error),
     );
     return this.fresnelPlotLoad;
   }
@@ -109,7 +124,7 @@ export class AppControls {
         this.dividers = new CompareDividers(this.container, this.tr, (key, value) => this.hooks.onParam(key, value));
         this.dividers.sync(this.shown.params);
       },
-      (error: unknown) => console.warn('Oceano: the compare dividers\' code could not be loaded.', error),
+      (error: unknown) => console.warn("Oceano: the compare dividers' code could not be loaded.", error),
     );
     return this.dividersLoad;
   }

@@ -13,14 +13,65 @@ import type { SeaTools } from '../tools/seaTools';
 const FOLDERS: { title: PanelWordId; keys: ParamKey[] }[] = [
   { title: 'folderSwell', keys: ['waves', 'swellAmplitude', 'swellFrequency'] },
   // The wind sea that both waves=fft and waves=gerstner draw from.
-  { title: 'folderSpectral', keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel', 'choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'foamTexture', 'waveGroups', 'windrows'] },
+  {
+    title: 'folderSpectral',
+    keys: [
+      'windSpeed',
+      'windDirection',
+      'spectrum',
+      'fetch',
+      'depth',
+      'spreading',
+      'spreadingModel',
+      'choppiness',
+      'fftSize',
+      'foam',
+      'foamThreshold',
+      'foamFade',
+      'foamTexture',
+      'waveGroups',
+      'windrows',
+    ],
+  },
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderGerstner', keys: ['gerstnerCount', 'gerstnerSteepness'] },
   { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },
   { title: 'folderPhysics', keys: ['physics'] },
-  { title: 'folderLight', keys: ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'skyBlur', 'subsurface', 'visibility', 'exposure'] },
-  { title: 'folderBoat', keys: ['boatSpeed', 'boatHeading', 'boatTurnRate', 'boatResponse', 'boatFollow', 'wake', 'wakeStrength', 'wakeGuide', 'interactiveWaves', 'iwaveEquation', 'iwaveGuide'] },
-  { title: 'folderUnderwater', keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'] },
+  {
+    title: 'folderLight',
+    keys: [
+      'sunElevation',
+      'sunAzimuth',
+      'waterColor',
+      'waterColorPicked',
+      'fresnel',
+      'seaRoughness',
+      'skyBlur',
+      'subsurface',
+      'visibility',
+      'exposure',
+    ],
+  },
+  {
+    title: 'folderBoat',
+    keys: [
+      'boatSpeed',
+      'boatHeading',
+      'boatTurnRate',
+      'boatResponse',
+      'boatFollow',
+      'wake',
+      'wakeStrength',
+      'wakeGuide',
+      'interactiveWaves',
+      'iwaveEquation',
+      'iwaveGuide',
+    ],
+  },
+  {
+    title: 'folderUnderwater',
+    keys: ['blurStrength', 'fogDensity', 'seaBedDepth', 'caustics', 'causticsIntensity', 'godRays', 'godRaysIntensity'],
+  },
   { title: 'folderLod', keys: ['lodDistance', 'lodBands', 'lodColors', 'lodMorph', 'freezeCulling', 'lodBruteForce'] },
   { title: 'folderView', keys: ['wireframe', 'shading', 'normals', 'normalsCompare', 'view', 'fresnelPlot'] },
 ];
@@ -64,7 +115,13 @@ export class ControlPanel {
   private readonly froude = { value: '' };
   private readonly froudeController: Controller;
 
-  constructor(private readonly container: HTMLElement, params: OceanParams, playing: boolean, hooks: ControlPanelHooks, private readonly tr: Translator) {
+  constructor(
+    private readonly container: HTMLElement,
+    params: OceanParams,
+    playing: boolean,
+    hooks: ControlPanelHooks,
+    private readonly tr: Translator,
+  ) {
     // Its styles come from the page's stylesheet (main.ts): no <style> element with a data: font.
     this.gui = new GUI({ container, title: panelWord(tr, 'panelTitle'), injectStyles: false });
     this.model = { ...params, playing };
@@ -94,7 +151,10 @@ export class ControlPanel {
     ];
     for (const [key, label] of labels) this.countControllers.push(live.add(this.counts, key).name(panelWord(tr, label)).disable());
     this.controllers.push(
-      this.gui.add(this.model, 'playing').name(panelWord(tr, 'playing')).onChange((value: boolean) => hooks.onPlayingChange(value)),
+      this.gui
+        .add(this.model, 'playing')
+        .name(panelWord(tr, 'playing'))
+        .onChange((value: boolean) => hooks.onPlayingChange(value)),
     );
     // The teacher's time controls beside Play: slow motion, and one frame at a time while paused.
     const speed = this.addControl(this.gui, 'timeScale', hooks);
@@ -119,7 +179,11 @@ export class ControlPanel {
     const emit = (value: OceanParams[ParamKey]) => hooks.onParam(key, value);
     if (def.kind === 'color') return group.addColor(this.model, key).name(label).onChange(emit);
     if (def.kind === 'boolean') return group.add(this.model, key).name(label).onChange(emit);
-    if (def.kind === 'choice') return group.add(this.model, key, [...def.options]).name(label).onChange(emit);
+    if (def.kind === 'choice')
+      return group
+        .add(this.model, key, [...def.options])
+        .name(label)
+        .onChange(emit);
     const name = def.unit ? `${label} (${def.unit})` : label;
     const step = def.kind === 'integer' ? 1 : (def.step ?? (def.max - def.min) / 100);
     // A slider over the whole int32 range of the seed is useless: give it a number box.

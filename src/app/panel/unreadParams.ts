@@ -7,8 +7,16 @@ type WaveModelName = OceanParams['waves'];
 /** The parameters only some wave models read, and who reads them. */
 const READ_BY: { keys: ParamKey[]; models: WaveModelName[]; reason: TeachingWordId }[] = [
   { keys: ['swellAmplitude', 'swellFrequency', 'rippleStrength', 'rippleBlendSpeed'], models: ['seed'], reason: 'unusedBySpectral' },
-  { keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel'], models: ['fft', 'gerstner'], reason: 'unusedBySeed' },
-  { keys: ['choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'waveGroups', 'windrows', 'normalsCompare'], models: ['fft'], reason: 'unusedByNonFft' },
+  {
+    keys: ['windSpeed', 'windDirection', 'spectrum', 'fetch', 'depth', 'spreading', 'spreadingModel'],
+    models: ['fft', 'gerstner'],
+    reason: 'unusedBySeed',
+  },
+  {
+    keys: ['choppiness', 'fftSize', 'foam', 'foamThreshold', 'foamFade', 'waveGroups', 'windrows', 'normalsCompare'],
+    models: ['fft'],
+    reason: 'unusedByNonFft',
+  },
   { keys: ['gerstnerCount', 'gerstnerSteepness'], models: ['gerstner'], reason: 'unusedByNonGerstner' },
 ];
 
@@ -33,7 +41,9 @@ export function modelsShown(params: Pick<OceanParams, 'waves' | 'compare'>): Wav
  * reads it, or its switch is off (a switch left out counts as on). The panel and the lesson
  * cards show these disabled, so a control that changes nothing never looks live.
  */
-export function unreadParams(params: Pick<OceanParams, 'waves' | 'compare'> & Partial<Pick<OceanParams, SwitchKey>>): Map<ParamKey, TeachingWordId> {
+export function unreadParams(
+  params: Pick<OceanParams, 'waves' | 'compare'> & Partial<Pick<OceanParams, SwitchKey>>,
+): Map<ParamKey, TeachingWordId> {
   const shown = modelsShown(params);
   const unread = new Map<ParamKey, TeachingWordId>();
   for (const group of READ_BY) {

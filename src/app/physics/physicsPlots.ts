@@ -171,7 +171,10 @@ export class PhysicsView {
           height: PLOT_HEIGHT,
           scales: { x: { time: false }, y: { distr: 3 } },
           // Log axis: powers of ten written as such (the default rounds 10⁻⁴ to "0").
-          axes: [{ label: 'ω, rad/s' }, { label: 'S, m²·s', values: (_, ticks) => ticks.map((v) => (v === null ? '' : v >= 1 ? String(v) : v.toExponential(0))) }],
+          axes: [
+            { label: 'ω, rad/s' },
+            { label: 'S, m²·s', values: (_, ticks) => ticks.map((v) => (v === null ? '' : v >= 1 ? String(v) : v.toExponential(0))) },
+          ],
           series,
         },
         data,
@@ -187,4 +190,3 @@ export class PhysicsView {
     this.root.remove();
   }
 }
-

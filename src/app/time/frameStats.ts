@@ -78,6 +78,14 @@ export class FrameStats {
     this.timingWanted = true;
     const med = (samples: number[]) => (samples.length ? median(samples) : 0);
     const twinMs = this.twinTimes.length ? this.twinTimes.reduce((a, b) => a + b, 0) / this.twinTimes.length : null;
-    return { frameMs: med(this.frameTimes), cpuMs: med(this.updateTimes), boatMs: med(this.boatTimes), twinMs, twin, ...render, ttffMs: this.firstFrameAt };
+    return {
+      frameMs: med(this.frameTimes),
+      cpuMs: med(this.updateTimes),
+      boatMs: med(this.boatTimes),
+      twinMs,
+      twin,
+      ...render,
+      ttffMs: this.firstFrameAt,
+    };
   }
 }

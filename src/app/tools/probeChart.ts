@@ -38,7 +38,11 @@ export class ProbeChart {
           { ...axis, label: words.time, size: 30, labelSize: 14 },
           { ...axis, label: words.height, size: 40, labelSize: 14 },
         ],
-        series: [{}, { label: words.measured, stroke: MEASURED_COLOUR, width: 1.5 }, { label: words.theory, stroke: THEORY_COLOUR, width: 1, dash: [4, 4] }],
+        series: [
+          {},
+          { label: words.measured, stroke: MEASURED_COLOUR, width: 1.5 },
+          { label: words.theory, stroke: THEORY_COLOUR, width: 1, dash: [4, 4] },
+        ],
       },
       [[], [], []],
       parent,

@@ -110,7 +110,12 @@ export class ProbeTool implements SeaTool {
       ({ ProbeChart }) => {
         if (this.disposed) return;
         const t = this.context.tr;
-        this.chart = new ProbeChart(this.chartBox, { time: toolWord(t, 'chartTime'), height: toolWord(t, 'chartHeight'), measured: toolWord(t, 'measured'), theory: toolWord(t, 'swellFormula') });
+        this.chart = new ProbeChart(this.chartBox, {
+          time: toolWord(t, 'chartTime'),
+          height: toolWord(t, 'chartHeight'),
+          measured: toolWord(t, 'measured'),
+          theory: toolWord(t, 'swellFormula'),
+        });
         this.refresh();
       },
       (error: unknown) => console.warn('Oceano: the probe’s chart could not be loaded.', error),
@@ -159,7 +164,14 @@ export class ProbeTool implements SeaTool {
     if (!this.point) return null;
     const { times, heights } = this.record.window();
     const record = { times, heights };
-    return { x: this.point.x, z: this.point.z, times, heights, measured: probeFigures(record), theory: probeTheory(this.context.params(), this.point.x, this.point.z, times) };
+    return {
+      x: this.point.x,
+      z: this.point.z,
+      times,
+      heights,
+      measured: probeFigures(record),
+      theory: probeTheory(this.context.params(), this.point.x, this.point.z, times),
+    };
   }
 
   /** The chart and the table redrawn from the record. */
@@ -216,7 +228,9 @@ export class ProbeTool implements SeaTool {
 
   private showPoint(): void {
     const tr = this.context.tr;
-    this.where.textContent = this.point ? toolWord(tr, 'probeAt', { x: toolNumber(tr, this.point.x, 1), z: toolNumber(tr, this.point.z, 1) }) : toolWord(tr, 'probeNone');
+    this.where.textContent = this.point
+      ? toolWord(tr, 'probeAt', { x: toolNumber(tr, this.point.x, 1), z: toolNumber(tr, this.point.z, 1) })
+      : toolWord(tr, 'probeNone');
     this.body.classList.toggle('oceano-tool-empty', !this.point);
     if (!this.point) {
       this.table.replaceChildren();

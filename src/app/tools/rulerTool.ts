@@ -115,7 +115,12 @@ export class RulerTool implements SeaTool {
     let x = ((p.x + 1) / 2) * canvas.clientWidth;
     let y = ((1 - p.y) / 2) * canvas.clientHeight;
     // Only in the part of the canvas the panels leave free, as the lessons' labels (the whole canvas in a figure without panels).
-    const free = (canvas.parentElement && FreeArea.of(canvas.parentElement).rect) || { x: 0, y: 0, width: canvas.clientWidth, height: canvas.clientHeight };
+    const free = (canvas.parentElement && FreeArea.of(canvas.parentElement).rect) || {
+      x: 0,
+      y: 0,
+      width: canvas.clientWidth,
+      height: canvas.clientHeight,
+    };
     const visible = Math.abs(p.z) <= 1 && x >= free.x && x <= free.x + free.width && y >= free.y && y <= free.y + free.height;
     this.label.hidden = !visible;
     if (!visible) return;

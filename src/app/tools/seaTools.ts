@@ -162,7 +162,11 @@ export class SeaTools {
     const { app } = this;
     const t = app.clock.time;
     const sample = { height: app.view.waves.height(x, z, t), normal: UP };
-    return app.view.ocean.withInteractiveWaves(app.boatMotion.withWake(sample, x, z, t, app.getParams(), app.view.ocean.wakeWeight(x, z)), x, z).height;
+    return app.view.ocean.withInteractiveWaves(
+      app.boatMotion.withWake(sample, x, z, t, app.getParams(), app.view.ocean.wakeWeight(x, z)),
+      x,
+      z,
+    ).height;
   }
 
   private async dropStone(point: SeaXZ): Promise<void> {
@@ -177,7 +181,10 @@ export class SeaTools {
     const camera = this.context.camera;
     const rect = this.app.canvas.getBoundingClientRect();
     camera.updateMatrixWorld();
-    this.ray.set(((clientX - rect.left) / rect.width) * 2 - 1, 1 - ((clientY - rect.top) / rect.height) * 2, 0.5).unproject(camera).sub(camera.position);
+    this.ray
+      .set(((clientX - rect.left) / rect.width) * 2 - 1, 1 - ((clientY - rect.top) / rect.height) * 2, 0.5)
+      .unproject(camera)
+      .sub(camera.position);
     const origin = camera.position.toArray();
     // The tallest wave the ocean can draw (its culling bounds) bounds the search.
     const maxHeight = this.app.view.ocean.cullingBounds().vertical;

@@ -156,12 +156,31 @@ export const PRESETS = {
    * trail and the bow wave.
    */
   'kelvin-wake': {
-    params: { swellAmplitude: 0, rippleStrength: 0.05, seaRoughness: false, wake: true, boatSpeed: 4, boatHeading: 270, sunElevation: 25, sunAzimuth: 300 },
+    params: {
+      swellAmplitude: 0,
+      rippleStrength: 0.05,
+      seaRoughness: false,
+      wake: true,
+      boatSpeed: 4,
+      boatHeading: 270,
+      sunElevation: 25,
+      sunAzimuth: 300,
+    },
     camera: { position: [60, 60, 60], target: [60, 0, -10] },
   },
   /** The same boat holding a 3 °/s turn to starboard (a 76 m radius): the wake follows the curved track, not a straight wedge. */
   'wake-turn': {
-    params: { swellAmplitude: 0, rippleStrength: 0.05, seaRoughness: false, wake: true, boatSpeed: 4, boatHeading: 270, boatTurnRate: 3, sunElevation: 25, sunAzimuth: 300 },
+    params: {
+      swellAmplitude: 0,
+      rippleStrength: 0.05,
+      seaRoughness: false,
+      wake: true,
+      boatSpeed: 4,
+      boatHeading: 270,
+      boatTurnRate: 3,
+      sunElevation: 25,
+      sunAzimuth: 300,
+    },
     camera: { position: [50, 110, 70], target: [50, 0, -50] },
   },
   // Interactive waves (iWave, src/sim/iwave/): a height field stepped in time, where a stone or the boat makes waves.
@@ -171,7 +190,15 @@ export const PRESETS = {
    * this instant, r = g t²/(8πn), those the grid carries (src/sim/iwave/cauchyPoissonRings.ts).
    */
   stone: {
-    params: { swellAmplitude: 0, rippleStrength: 0, seaRoughness: false, interactiveWaves: true, iwaveGuide: true, sunElevation: 10, sunAzimuth: 0 },
+    params: {
+      swellAmplitude: 0,
+      rippleStrength: 0,
+      seaRoughness: false,
+      interactiveWaves: true,
+      iwaveGuide: true,
+      sunElevation: 10,
+      sunAzimuth: 0,
+    },
     // Low, into the sun: its glint breaks on each crest. The field centres where the camera looks.
     camera: { position: [-20, 7, 16], target: [-20, 0, -20] },
     stones: [[0, -20, -20, 1.2, 2]],
@@ -182,9 +209,21 @@ export const PRESETS = {
    * along the field's centre. One ring for the wave equation, a spreading train for the sea.
    */
   'stone-compare': {
-    params: { swellAmplitude: 0, rippleStrength: 0, seaRoughness: false, interactiveWaves: true, iwaveEquation: 'side-by-side', iwaveGuide: true, sunElevation: 12, sunAzimuth: 345 },
+    params: {
+      swellAmplitude: 0,
+      rippleStrength: 0,
+      seaRoughness: false,
+      interactiveWaves: true,
+      iwaveEquation: 'side-by-side',
+      iwaveGuide: true,
+      sunElevation: 12,
+      sunAzimuth: 345,
+    },
     camera: { position: [-60, 20, 25], target: [-60, 0, -20] },
-    stones: [[0, -88, -20, 1.2, 2], [0, -32, -20, 1.2, 2]],
+    stones: [
+      [0, -88, -20, 1.2, 2],
+      [0, -32, -20, 1.2, 2],
+    ],
   },
   /**
    * The boat at 4 m/s in the interactive waves, the camera following: its hull a solid in the
@@ -192,7 +231,18 @@ export const PRESETS = {
    * takes them over.
    */
   'boat-interactive': {
-    params: { swellAmplitude: 0, rippleStrength: 0.05, seaRoughness: false, interactiveWaves: true, wake: true, boatSpeed: 4, boatHeading: 270, boatFollow: true, sunElevation: 22, sunAzimuth: 315 },
+    params: {
+      swellAmplitude: 0,
+      rippleStrength: 0.05,
+      seaRoughness: false,
+      interactiveWaves: true,
+      wake: true,
+      boatSpeed: 4,
+      boatHeading: 270,
+      boatFollow: true,
+      sunElevation: 22,
+      sunAzimuth: 315,
+    },
     camera: { position: [26, 16, 18], target: [1, 0, -5] },
   },
 } satisfies Record<string, Preset>;

@@ -22,7 +22,9 @@ export interface SharedView {
 }
 
 /** What it carries of the page as it was opened: its address, language, assets and embedding. */
-export type OpenedPage = Pick<OceanAppOptions, 'shareBase' | 'language'> & { state: Pick<OceanAppOptions['state'], 'sky' | 'boat' | 'embed'> };
+export type OpenedPage = Pick<OceanAppOptions, 'shareBase' | 'language'> & {
+  state: Pick<OceanAppOptions['state'], 'sky' | 'boat' | 'embed'>;
+};
 
 /** A link that reopens this exact view: parameters, camera, language, the current time (frozen) and the boat's motion then. */
 export function shareUrl(page: OpenedPage, view: SharedView): string {

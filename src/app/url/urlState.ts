@@ -11,7 +11,20 @@ import { IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS } from '../../sim/iwave/fieldSize';
 import type { Stone } from './presets';
 
 /** Settings that are not ocean parameters but are understood by the page and the web component. */
-export const PAGE_KEYS = ['t', 'sky', 'cam', 'lang', 'embed', 'preset', 'lesson', 'boat', 'boatState', 'wakeTrack', 'probe', 'stones'] as const;
+export const PAGE_KEYS = [
+  't',
+  'sky',
+  'cam',
+  'lang',
+  'embed',
+  'preset',
+  'lesson',
+  'boat',
+  'boatState',
+  'wakeTrack',
+  'probe',
+  'stones',
+] as const;
 
 /** Everything a URL (or an <oceano-view>'s attributes) can say, validated. */
 export interface UrlState {
@@ -61,7 +74,22 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
-  const state: UrlState = { params, time: null, sky: null, boat: null, boatState: null, wakeTrack: null, camera: null, cullingCamera: null, language: null, embed: false, notices, lesson: null, probe: null, stones: [] };
+  const state: UrlState = {
+    params,
+    time: null,
+    sky: null,
+    boat: null,
+    boatState: null,
+    wakeTrack: null,
+    camera: null,
+    cullingCamera: null,
+    language: null,
+    embed: false,
+    notices,
+    lesson: null,
+    probe: null,
+    stones: [],
+  };
 
   for (const [key, text] of pairs) {
     if (key !== 'preset') continue;
@@ -70,7 +98,8 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
       Object.assign(params, preset.params);
       state.camera = { position: [...preset.camera.position], target: [...preset.camera.target] };
       state.stones = [...(preset.stones ?? [])];
-      if (preset.cullingCamera) state.cullingCamera = { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] };
+      if (preset.cullingCamera)
+        state.cullingCamera = { position: [...preset.cullingCamera.position], target: [...preset.cullingCamera.target] };
     } else {
       notices.push(message('presetUnknown', { name: text, known: presetNames.join(', ') }));
     }
@@ -188,7 +217,20 @@ export function formatUrlState(state: ShareableState): string {
 
 /** `x,z,heading,headingRate,heave,heaveRate,pitch,pitchRate,roll,rollRate`, numbers written to read back bit for bit. */
 export function formatBoatState(b: BoatSnapshot): string {
-  return [b.x, b.z, b.heading.value, b.heading.velocity, b.heave.value, b.heave.velocity, b.pitch.value, b.pitch.velocity, b.roll.value, b.roll.velocity].map(String).join(',');
+  return [
+    b.x,
+    b.z,
+    b.heading.value,
+    b.heading.velocity,
+    b.heave.value,
+    b.heave.velocity,
+    b.pitch.value,
+    b.pitch.velocity,
+    b.roll.value,
+    b.roll.velocity,
+  ]
+    .map(String)
+    .join(',');
 }
 
 /** Ten finite numbers, the position within the boat's square; null otherwise. Only meaningful with `t`. */
@@ -196,7 +238,8 @@ export function parseBoatState(text: string): BoatSnapshot | null {
   const parts = text.split(',');
   if (parts.length !== 10 || parts.some((p) => p.trim() === '')) return null;
   const n = parts.map(Number);
-  if (!n.every((v) => Number.isFinite(v) && Math.abs(v) <= 1e6) || Math.abs(n[0]) > BOAT_EXTENT || Math.abs(n[1]) > BOAT_EXTENT) return null;
+  if (!n.every((v) => Number.isFinite(v) && Math.abs(v) <= 1e6) || Math.abs(n[0]) > BOAT_EXTENT || Math.abs(n[1]) > BOAT_EXTENT)
+    return null;
   const f = (i: number) => ({ value: n[i], velocity: n[i + 1] });
   return { x: n[0], z: n[1], heading: f(2), heave: f(4), pitch: f(6), roll: f(8) };
 }
@@ -215,6 +258,12 @@ export function parseStones(text: string): Stone[] | null {
   if (text.trim() === '') return [];
   const stones = text.split(';').map((part) => part.split(',').map((p) => (p.trim() === '' ? NaN : Number(p))));
   const fair = ([t, x, z, r, h, ...rest]: number[]) =>
-    rest.length === 0 && isValidTime(t) && Math.abs(x) <= 1e6 && Math.abs(z) <= 1e6 && r > 0 && r <= IWAVE_MAX_RADIUS && Math.abs(h) <= IWAVE_MAX_HEIGHT;
+    rest.length === 0 &&
+    isValidTime(t) &&
+    Math.abs(x) <= 1e6 &&
+    Math.abs(z) <= 1e6 &&
+    r > 0 &&
+    r <= IWAVE_MAX_RADIUS &&
+    Math.abs(h) <= IWAVE_MAX_HEIGHT;
   return stones.every(fair) ? (stones as unknown as Stone[]) : null;
 }

@@ -46,14 +46,20 @@ async function fetchBoatModel(url: string): Promise<BoatModel> {
     throw new MessageError(message('boatUnreachable', { url }), `The boat model "${url}" could not be fetched.`);
   }
   if (!response.ok) {
-    throw new MessageError(message('boatNotFound', { url, status: response.status }), `The boat model "${url}" was not found (HTTP ${response.status}).`);
+    throw new MessageError(
+      message('boatNotFound', { url, status: response.status }),
+      `The boat model "${url}" was not found (HTTP ${response.status}).`,
+    );
   }
   if ((response.headers.get('content-type') ?? '').includes('text/html')) {
     throw new MessageError(message('boatWebPage', { url }), `The boat model "${url}" is missing: the server sent a web page in its place.`);
   }
   const data = await response.arrayBuffer();
   if (!looksLikeGltf(data)) {
-    throw new MessageError(message('boatNotGltf', { url }), `The boat model "${url}" is not a valid glTF model: it is neither a binary .glb nor a JSON .gltf file.`);
+    throw new MessageError(
+      message('boatNotGltf', { url }),
+      `The boat model "${url}" is not a valid glTF model: it is neither a binary .glb nor a JSON .gltf file.`,
+    );
   }
   // The loader is fetched with the model, after the first frame: the page's first load stays small.
   const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
@@ -69,6 +75,7 @@ async function fetchBoatModel(url: string): Promise<BoatModel> {
   const box = new Box3().setFromObject(object);
   const length = box.max.z - box.min.z;
   const beam = box.max.x - box.min.x;
-  if (!(length > 0) || !(beam > 0)) throw new MessageError(message('boatNoGeometry', { url }), `The boat model "${url}" has no geometry to float.`);
+  if (!(length > 0) || !(beam > 0))
+    throw new MessageError(message('boatNoGeometry', { url }), `The boat model "${url}" has no geometry to float.`);
   return { object, hull: { length, beam } };
 }

@@ -22,7 +22,15 @@ export class BoatView {
     // A paused view drawn again, or a boat at rest: the same pose leaves the group as it is
     // (setting the rotation remakes its quaternion). Object.is, so even a zero's sign stays.
     const { position: p, rotation: r } = this.group;
-    if (Object.is(p.x, pose.x) && Object.is(p.y, pose.y) && Object.is(p.z, pose.z) && Object.is(r.x, pose.pitch) && Object.is(r.y, -pose.heading) && Object.is(r.z, pose.roll)) return;
+    if (
+      Object.is(p.x, pose.x) &&
+      Object.is(p.y, pose.y) &&
+      Object.is(p.z, pose.z) &&
+      Object.is(r.x, pose.pitch) &&
+      Object.is(r.y, -pose.heading) &&
+      Object.is(r.z, pose.roll)
+    )
+      return;
     this.group.position.set(pose.x, pose.y, pose.z);
     this.group.rotation.set(pose.pitch, -pose.heading, pose.roll);
   }

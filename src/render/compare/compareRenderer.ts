@@ -80,7 +80,13 @@ export class CompareRenderer {
       if (i === 0) this.ocean.cull(stripCamera, this.stripCulling);
       else {
         const side = this.sides[i - 1];
-        side.chunks.update(stripCamera, this.ocean.lodSettings, this.ocean.grownByWake(side.bounds()), this.stripCulling, nearBandRefinement(side.view.finestVertexStep ?? BASE_STEP));
+        side.chunks.update(
+          stripCamera,
+          this.ocean.lodSettings,
+          this.ocean.grownByWake(side.bounds()),
+          this.stripCulling,
+          nearBandRefinement(side.view.finestVertexStep ?? BASE_STEP),
+        );
       }
     });
   }

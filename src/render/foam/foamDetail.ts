@@ -1,4 +1,12 @@
-import { LinearFilter, LinearMipmapLinearFilter, RepeatWrapping, ShaderMaterial, WebGLRenderTarget, type Texture, type WebGLRenderer } from 'three';
+import {
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  RepeatWrapping,
+  ShaderMaterial,
+  WebGLRenderTarget,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
 import { FullScreenQuad } from 'three/addons/postprocessing/Pass.js';
 import vertexShader from '../../../shaders/fullscreen.vert?raw';
 import fragmentShader from '../../../shaders/foam/foamDetail.frag?raw';

@@ -24,7 +24,13 @@ import stepFragment from '../../../shaders/iwaveStep.frag?raw';
 import disturbFragment from '../../../shaders/iwaveDisturb.frag?raw';
 import scrollFragment from '../../../shaders/iwaveScroll.frag?raw';
 import { BUMP_REACH, GRAVITY, IWAVE_SPONGE, type Disturbance, type SpongeLayer } from '../../sim/iwave/iwaveGrid';
-import { fittedVerticalDerivativeKernel, IWAVE_KERNEL_ORBITS, IWAVE_KERNEL_RADIUS, kernelOrbitWeights, type ConvolutionKernel } from '../../sim/iwave/verticalDerivativeKernel';
+import {
+  fittedVerticalDerivativeKernel,
+  IWAVE_KERNEL_ORBITS,
+  IWAVE_KERNEL_RADIUS,
+  kernelOrbitWeights,
+  type ConvolutionKernel,
+} from '../../sim/iwave/verticalDerivativeKernel';
 import { hullSources, type MovingHull } from '../../sim/iwave/movingHull';
 import { forwardOf } from '../../sim/boat/boatPose';
 import { floatTexture } from '../optics/dataTextures';
@@ -84,7 +90,8 @@ export class GpuIWave {
   private readonly scrollMaterial: RawShaderMaterial;
 
   constructor(renderer: WebGLRenderer, options: GpuIWaveOptions) {
-    if (!renderer.extensions.has('EXT_color_buffer_float')) throw new Error('Interactive waves need WebGL2 float render targets (EXT_color_buffer_float).');
+    if (!renderer.extensions.has('EXT_color_buffer_float'))
+      throw new Error('Interactive waves need WebGL2 float render targets (EXT_color_buffer_float).');
     this.renderer = renderer;
     const { n, spacing } = options;
     this.n = n;
@@ -95,7 +102,15 @@ export class GpuIWave {
     const sponge = options.sponge ?? IWAVE_SPONGE;
     const orbits = IWAVE_KERNEL_ORBITS;
     const pass = (name: string, fragmentShader: string, uniforms: Record<string, { value: unknown }>) =>
-      new RawShaderMaterial({ name, glslVersion: GLSL3, vertexShader: quadVertex, fragmentShader, uniforms, depthTest: false, depthWrite: false });
+      new RawShaderMaterial({
+        name,
+        glslVersion: GLSL3,
+        vertexShader: quadVertex,
+        fragmentShader,
+        uniforms,
+        depthTest: false,
+        depthWrite: false,
+      });
     const stepText = `#define IWAVE_KERNEL_RADIUS ${IWAVE_KERNEL_RADIUS}\n#define IWAVE_ORBITS ${orbits}\n${stepFragment}`;
     this.stepMaterial = pass('IWaveStep', stepText, {
       uHeights: { value: null },

@@ -12,5 +12,9 @@ export interface InteractiveWaveUniforms {
 }
 
 export function createInteractiveWaveUniforms(): InteractiveWaveUniforms {
-  return { uIWaveField: { value: null }, uIWaveGrid: { value: new Vector4(0, 0, IWAVE_SPACING, IWAVE_GRID_SIZE) }, uIWaveHandOver: { value: new Vector4() } };
+  return {
+    uIWaveField: { value: null },
+    uIWaveGrid: { value: new Vector4(0, 0, IWAVE_SPACING, IWAVE_GRID_SIZE) },
+    uIWaveHandOver: { value: new Vector4() },
+  };
 }

@@ -1,6 +1,18 @@
 import type { WebGLRenderer } from 'three';
 import { GpuIWave } from './gpuIWave';
-import { IWAVE_DAMPING, IWAVE_STEP, IWAVE_CATCH_UP_STEPS, IWAVE_GRID_SIZE, IWAVE_SPACING, checkDisturbance, equationKernels, sampleField, type DisturbanceOptions, type FieldSnapshot, type IWaveEquation } from '../../sim/iwave/interactiveField';
+import {
+  IWAVE_DAMPING,
+  IWAVE_STEP,
+  IWAVE_CATCH_UP_STEPS,
+  IWAVE_GRID_SIZE,
+  IWAVE_SPACING,
+  checkDisturbance,
+  equationKernels,
+  sampleField,
+  type DisturbanceOptions,
+  type FieldSnapshot,
+  type IWaveEquation,
+} from '../../sim/iwave/interactiveField';
 import type { Disturbance, Stone } from '../../sim/iwave/iwaveGrid';
 import { StoneGuideView } from './stoneGuideView';
 import { besideHull, hullEarlier, type MovingHull } from '../../sim/iwave/movingHull';
@@ -94,7 +106,11 @@ export class InteractiveWaves {
       this.field.clear();
       this.step = Math.max(0, target - IWAVE_CATCH_UP_STEPS);
       // Calm water with no boat pushing stays calm: start at the first stone instead.
-      if (!this.pushing()) this.step = Math.min(target, this.log.reduce((first, entry) => (entry.step >= this.step ? Math.min(first, entry.step) : first), target));
+      if (!this.pushing())
+        this.step = Math.min(
+          target,
+          this.log.reduce((first, entry) => (entry.step >= this.step ? Math.min(first, entry.step) : first), target),
+        );
       for (const entry of this.log) if (entry.step === this.step) this.field.disturb(entry.disturbance);
     }
     while (this.step < target) {
@@ -104,8 +120,16 @@ export class InteractiveWaves {
       for (const entry of this.log) if (entry.step === this.step) this.field.disturb(entry.disturbance);
     }
     const boat = this.boat;
-    this.handOver = boat?.wake ? { x: boat.hull.x, z: boat.hull.z, distance: handOverDistance(Math.abs(boat.hull.speed), boat.hull.length) } : null;
-    this.guide.update(this.guideShown, this.guideShown ? this.stones(time, StoneGuideView.steps) : [], time, this.equation, this.field.centerX);
+    this.handOver = boat?.wake
+      ? { x: boat.hull.x, z: boat.hull.z, distance: handOverDistance(Math.abs(boat.hull.speed), boat.hull.length) }
+      : null;
+    this.guide.update(
+      this.guideShown,
+      this.guideShown ? this.stones(time, StoneGuideView.steps) : [],
+      time,
+      this.equation,
+      this.field.centerX,
+    );
     this.publish();
   }
 
@@ -140,7 +164,10 @@ export class InteractiveWaves {
   record(stones: readonly Stone[], after = 0): void {
     for (const [time, x, z, radius, height] of stones) {
       try {
-        this.log.push({ step: Math.round((time + after) / IWAVE_STEP), disturbance: checkDisturbance(x, z, { radius, height }).disturbance });
+        this.log.push({
+          step: Math.round((time + after) / IWAVE_STEP),
+          disturbance: checkDisturbance(x, z, { radius, height }).disturbance,
+        });
       } catch {
         continue;
       }
@@ -154,7 +181,9 @@ export class InteractiveWaves {
    */
   stones(time: number, within = IWAVE_CATCH_UP_STEPS): Stone[] {
     const now = Math.floor(time / IWAVE_STEP + 1e-9);
-    return this.log.filter((entry) => entry.step <= now && entry.step >= now - within).map(({ step, disturbance: d }) => [step * IWAVE_STEP, d.x, d.z, d.radius, d.height]);
+    return this.log
+      .filter((entry) => entry.step <= now && entry.step >= now - within)
+      .map(({ step, disturbance: d }) => [step * IWAVE_STEP, d.x, d.z, d.radius, d.height]);
   }
 
   /**
@@ -166,7 +195,14 @@ export class InteractiveWaves {
     this.reading = true;
     const n = this.field.n;
     const heights = new Float32Array(4 * n * n);
-    const snapshot: FieldSnapshot = { heights, stride: 4, n, spacing: this.field.spacing, centerX: this.field.centerX, centerZ: this.field.centerZ };
+    const snapshot: FieldSnapshot = {
+      heights,
+      stride: 4,
+      n,
+      spacing: this.field.spacing,
+      centerX: this.field.centerX,
+      centerZ: this.field.centerZ,
+    };
     this.renderer
       .readRenderTargetPixelsAsync(this.field.target, 0, 0, n, n, heights)
       .then(() => {

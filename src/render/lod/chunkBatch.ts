@@ -51,7 +51,11 @@ export class ChunkBatch<M extends Material> {
   private tilesPlaced = false;
 
   /** `maxChunks`: the most a frame may add (add() says no past it). */
-  constructor(private readonly grid: ChunkGridData, material: M, readonly maxChunks: number) {
+  constructor(
+    private readonly grid: ChunkGridData,
+    material: M,
+    readonly maxChunks: number,
+  ) {
     this.verticesPerChunk = grid.positions.length / 3;
     this.expanded = this.verticesPerChunk <= EXPANDED_UP_TO_VERTICES;
     this.capacity = this.expanded ? Math.min(FIRST_EXPANDED_CAPACITY, maxChunks) : maxChunks;
@@ -117,7 +121,11 @@ export class ChunkBatch<M extends Material> {
   /** Chunk n's record as added: corner x, z, band, unit, the four edge steps, tile x, z. */
   record(n: number): number[] {
     const v = n * (this.expanded ? this.verticesPerChunk : 1);
-    return [...this.chunkData.subarray(v * 4, v * 4 + 4), ...this.edgeData.subarray(v * 4, v * 4 + 4), ...this.tileData.subarray(v * 2, v * 2 + 2)];
+    return [
+      ...this.chunkData.subarray(v * 4, v * 4 + 4),
+      ...this.edgeData.subarray(v * 4, v * 4 + 4),
+      ...this.tileData.subarray(v * 2, v * 2 + 2),
+    ];
   }
 
   dispose(): void {
@@ -145,7 +153,8 @@ export class ChunkBatch<M extends Material> {
     if (this.expanded) {
       const vertices = this.verticesPerChunk;
       const repeated = new Float32Array(records * 3);
-      const repeatedIndices = records > 65536 ? new Uint32Array(this.capacity * indices.length) : new Uint16Array(this.capacity * indices.length);
+      const repeatedIndices =
+        records > 65536 ? new Uint32Array(this.capacity * indices.length) : new Uint16Array(this.capacity * indices.length);
       for (let c = 0; c < this.capacity; c++) {
         repeated.set(positions, c * vertices * 3);
         for (let k = 0; k < indices.length; k++) repeatedIndices[c * indices.length + k] = indices[k] + c * vertices;

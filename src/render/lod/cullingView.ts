@@ -68,13 +68,28 @@ export class CullingView {
     const last = this.lastCameraPose;
     const { position: p, quaternion: q, scale: s } = camera;
     const projection = camera.projectionMatrix.elements;
-    let same = camera.parent === null &&
-      last[0] === p.x && last[1] === p.y && last[2] === p.z &&
-      last[3] === q.x && last[4] === q.y && last[5] === q.z && last[6] === q.w &&
-      last[7] === s.x && last[8] === s.y && last[9] === s.z;
-    last[0] = p.x; last[1] = p.y; last[2] = p.z;
-    last[3] = q.x; last[4] = q.y; last[5] = q.z; last[6] = q.w;
-    last[7] = s.x; last[8] = s.y; last[9] = s.z;
+    let same =
+      camera.parent === null &&
+      last[0] === p.x &&
+      last[1] === p.y &&
+      last[2] === p.z &&
+      last[3] === q.x &&
+      last[4] === q.y &&
+      last[5] === q.z &&
+      last[6] === q.w &&
+      last[7] === s.x &&
+      last[8] === s.y &&
+      last[9] === s.z;
+    last[0] = p.x;
+    last[1] = p.y;
+    last[2] = p.z;
+    last[3] = q.x;
+    last[4] = q.y;
+    last[5] = q.z;
+    last[6] = q.w;
+    last[7] = s.x;
+    last[8] = s.y;
+    last[9] = s.z;
     for (let i = 0; i < 16; i++) {
       same &&= last[10 + i] === projection[i];
       last[10 + i] = projection[i];

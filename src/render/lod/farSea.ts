@@ -22,7 +22,10 @@ export class FarSea {
   private readonly skirtPoints: Float64Array;
   private readonly edgeScratch = [0, 0, 0, 0];
 
-  constructor(private readonly material: OceanMaterial, parent: Object3D) {
+  constructor(
+    private readonly material: OceanMaterial,
+    parent: Object3D,
+  ) {
     this.cells = new ChunkBatch(squareGrid(RING_OWN_STEP, RING_CELL_QUADS, true), material, this.selector.total);
     // The rings have already been culled by their quadtrees.
     this.cells.mesh.frustumCulled = false;
@@ -81,7 +84,12 @@ export class FarSea {
     const e = rings[rings.length - 1].outer;
     const R = SKIRT_RADIUS;
     let seen = false;
-    for (const [x0, z0, x1, z1] of [[-R, e, R, R], [-R, -R, R, -e], [e, -R, R, R], [-R, -R, -e, R]]) {
+    for (const [x0, z0, x1, z1] of [
+      [-R, e, R, R],
+      [-R, -R, R, -e],
+      [e, -R, R, R],
+      [-R, -R, -e, R],
+    ]) {
       if (classifyBox(planes, centerX + x0, 0, centerZ + z0, centerX + x1, 0, centerZ + z1) !== OUTSIDE) seen = true;
     }
     this.skirt.visible = seen;

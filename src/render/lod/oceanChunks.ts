@@ -181,7 +181,9 @@ export class OceanChunks {
   /** What each batch draws (bands, their tiles, then the far cells): its chunks' records (ChunkBatch.record), for tests. */
   drawnRecords(): number[][][] {
     const batches = [...this.batches, ...this.refined.values(), ...this.tiles.batches, this.far.cells];
-    return batches.flatMap((batch) => (batch && batch.mesh.visible ? [Array.from({ length: batch.count }, (_, n) => batch.record(n))] : []));
+    return batches.flatMap((batch) =>
+      batch && batch.mesh.visible ? [Array.from({ length: batch.count }, (_, n) => batch.record(n))] : [],
+    );
   }
 
   stats(): ChunkStats {

@@ -50,7 +50,15 @@ export class StripTiles {
    * coarser of the next band's step and the chunk's edge steps, `edgeSteps[e … e + 3]`), so
    * no tile left out can put a triangle inside the frustum.
    */
-  add(planes: readonly Plane[], band: number, x0: number, z0: number, edgeSteps: Uint8Array, e: number, bounds: DisplacementBounds): boolean {
+  add(
+    planes: readonly Plane[],
+    band: number,
+    x0: number,
+    z0: number,
+    edgeSteps: Uint8Array,
+    e: number,
+    bounds: DisplacementBounds,
+  ): boolean {
     const batch = this.batches[band];
     if (!batch || batch.count + TILES * TILES > batch.maxChunks) return false;
     const h = bounds.horizontal;
@@ -65,7 +73,8 @@ export class StripTiles {
       for (let ti = 0; ti < TILES; ti++) {
         const tx = x0 + ti * tileSize;
         const tz = z0 + tj * tileSize;
-        if (classifyBox(planes, tx - reach, -v - 0.05, tz - reach, tx + tileSize + reach, v + 0.05, tz + tileSize + reach) === OUTSIDE) continue;
+        if (classifyBox(planes, tx - reach, -v - 0.05, tz - reach, tx + tileSize + reach, v + 0.05, tz + tileSize + reach) === OUTSIDE)
+          continue;
         batch.add(x0, z0, band, BASE_STEP, edgeSteps, e, ti * tileUnits, tj * tileUnits);
       }
     }

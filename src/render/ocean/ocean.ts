@@ -1,6 +1,12 @@
 import { PerspectiveCamera, Quaternion, Vector3, type Camera, type CubeTexture, type Material, type WebGLRenderer } from 'three';
 import type { OceanParams } from '../../sim/params/params';
-import { checkOceanKeys, OCEAN_EXTRA_OPTIONS, oceanParametersOf, type OceanParamKey, type OceanParameters } from '../../sim/params/oceanOptionKeys';
+import {
+  checkOceanKeys,
+  OCEAN_EXTRA_OPTIONS,
+  oceanParametersOf,
+  type OceanParamKey,
+  type OceanParameters,
+} from '../../sim/params/oceanOptionKeys';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import type { SurfacePoints, SurfaceSamples } from '../../sim/waves/surfaceBatch';
 import { OceanEngine } from './oceanEngine';
@@ -20,7 +26,9 @@ export interface OceanOptions extends Partial<OceanParameters> {
 
 // The run-time check's list of options beyond the parameters is OceanOptions' own, both ways.
 type ExtraOption = Exclude<keyof OceanOptions, OceanParamKey>;
-const extraOptionsInStep: [ExtraOption, (typeof OCEAN_EXTRA_OPTIONS)[number]] extends [(typeof OCEAN_EXTRA_OPTIONS)[number], ExtraOption] ? true : never = true;
+const extraOptionsInStep: [ExtraOption, (typeof OCEAN_EXTRA_OPTIONS)[number]] extends [(typeof OCEAN_EXTRA_OPTIONS)[number], ExtraOption]
+  ? true
+  : never = true;
 void extraOptionsInStep;
 
 /**
@@ -165,8 +173,18 @@ export class Ocean extends OceanEngine {
     this.updateWorldMatrix(true, false);
     const { position, turn, scale } = this.placement;
     this.matrixWorld.decompose(position, turn, scale);
-    const fault = 1 - Math.abs(turn.w) > 1e-6 ? 'rotated' : Math.abs(scale.x - 1) + Math.abs(scale.y - 1) + Math.abs(scale.z - 1) > 1e-6 ? 'scaled' : Math.abs(position.x) + Math.abs(position.z) > 1e-6 ? 'moved sideways' : null;
-    if (fault) throw new Error(`Ocean: it (or a parent) is ${fault}, but an endless level sea can only move up and down: set position.y, the sea level, alone.`);
+    const fault =
+      1 - Math.abs(turn.w) > 1e-6
+        ? 'rotated'
+        : Math.abs(scale.x - 1) + Math.abs(scale.y - 1) + Math.abs(scale.z - 1) > 1e-6
+          ? 'scaled'
+          : Math.abs(position.x) + Math.abs(position.z) > 1e-6
+            ? 'moved sideways'
+            : null;
+    if (fault)
+      throw new Error(
+        `Ocean: it (or a parent) is ${fault}, but an endless level sea can only move up and down: set position.y, the sea level, alone.`,
+      );
     return position.y;
   }
 

@@ -1,4 +1,13 @@
-import { Color, Object3D, Vector3, type CubeTexture, type DataTexture, type IUniform, type PerspectiveCamera, type WebGLRenderer } from 'three';
+import {
+  Color,
+  Object3D,
+  Vector3,
+  type CubeTexture,
+  type DataTexture,
+  type IUniform,
+  type PerspectiveCamera,
+  type WebGLRenderer,
+} from 'three';
 import { defaultParams, validateParams, type OceanParams, type ParamKey } from '../../sim/params/params';
 import { paramsChanged } from '../../sim/params/paramChanges';
 import type { LiveWaveModel, SurfaceSample, WavesChoice } from '../../sim/waves/waveModel';
@@ -36,7 +45,25 @@ import { checkSurfaceBatch, sampleSurfaces, type SurfacePoints, type SurfaceSamp
 import type { FoamDetail } from '../foam/foamDetail';
 
 /** @internal The parameters an ocean material shows (every model's material of a comparison alike). */
-export const LOOK_KEYS: readonly ParamKey[] = ['sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fresnel', 'seaRoughness', 'skyBlur', 'wireframe', 'normals', 'shading', 'normalsCompare', 'lodColors', 'subsurface', 'waveGroups', 'windrows', 'windSpeed', 'visibility'];
+export const LOOK_KEYS: readonly ParamKey[] = [
+  'sunElevation',
+  'sunAzimuth',
+  'waterColor',
+  'waterColorPicked',
+  'fresnel',
+  'seaRoughness',
+  'skyBlur',
+  'wireframe',
+  'normals',
+  'shading',
+  'normalsCompare',
+  'lodColors',
+  'subsurface',
+  'waveGroups',
+  'windrows',
+  'windSpeed',
+  'visibility',
+];
 
 /**
  * The machinery of the ocean, which the app drives piece by piece and the library's `Ocean`
@@ -117,12 +144,22 @@ export class OceanEngine extends Object3D {
     this.waveView = createWaveModelView({ ...full, waves: available }, renderer);
     this.binding = new WaveBinding(this.waveView);
     this.fresnelTextures = { fromAbove: fresnelTexture(this.fresnelData), fromBelow: fresnelTexture(this.fresnelFromBelowData) };
-    this.lightUniforms = { ...this.waterVolume, uRefractedSun: { value: new Vector3() }, uSunColor: { value: new Color(...SUN_LIGHT_COLOR) } };
+    this.lightUniforms = {
+      ...this.waterVolume,
+      uRefractedSun: { value: new Vector3() },
+      uSunColor: { value: new Color(...SUN_LIGHT_COLOR) },
+    };
     this.materialInputs = {
       fresnelTables: this.fresnelTextures,
       sky: this.skySource.texture,
       late: this.binding.late,
-      shared: { ...this.waterVolume, ...this.wakeUniforms, ...this.interactiveWaveUniforms, ...this.foamUniforms, uSunColor: this.lightUniforms.uSunColor },
+      shared: {
+        ...this.waterVolume,
+        ...this.wakeUniforms,
+        ...this.interactiveWaveUniforms,
+        ...this.foamUniforms,
+        uSunColor: this.lightUniforms.uSunColor,
+      },
     };
     this.material = new OceanMaterial(this.binding, this.fresnelTextures, this.skySource.texture, this.materialInputs.shared);
     this.waitFor(this.material.ready);
@@ -250,7 +287,13 @@ export class OceanEngine extends Object3D {
     if (changed('windDirection')) setFoamWind(this.foamUniforms, params.windDirection);
     this.setFoamTexture(foamTextureWanted(params));
     if (changed('lodDistance', 'lodBands', 'lodBruteForce', 'freezeCulling', 'lodMorph')) {
-      this.lod = { lodDistance: params.lodDistance, lodBands: params.lodBands, lodBruteForce: params.lodBruteForce, freezeCulling: params.freezeCulling, lodMorph: params.lodMorph };
+      this.lod = {
+        lodDistance: params.lodDistance,
+        lodBands: params.lodBands,
+        lodBruteForce: params.lodBruteForce,
+        freezeCulling: params.freezeCulling,
+        lodMorph: params.lodMorph,
+      };
     }
     // The wave bound too: a bed below every trough skips the caustics' above-the-surface test.
     this.seaBed.setDepth(params.seaBedDepth, this.underwaterShortcuts ? this.bounds.vertical : Infinity);
@@ -361,7 +404,8 @@ export class OceanEngine extends Object3D {
    * texel is raised to one texel).
    */
   disturb(x: number, z: number, options: DisturbanceOptions = {}): Message[] {
-    if (!this.interactive) throw new MessageError(message('disturbFieldOff'), 'disturb: the interactive waves are off (set interactiveWaves: true first).');
+    if (!this.interactive)
+      throw new MessageError(message('disturbFieldOff'), 'disturb: the interactive waves are off (set interactiveWaves: true first).');
     return this.interactive.disturb(x, z, options);
   }
 
@@ -443,7 +487,13 @@ export class OceanEngine extends Object3D {
    */
   sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
     const into = checkSurfaceBatch(points, out);
-    return sampleSurfaces(this.waveView.model, points, time, into, this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null);
+    return sampleSurfaces(
+      this.waveView.model,
+      points,
+      time,
+      into,
+      this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null,
+    );
   }
 
   /** @internal The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */

@@ -1,4 +1,19 @@
-import { BackSide, Color, DoubleSide, FrontSide, Matrix4, NoToneMapping, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture, type IUniform, type Texture, type WebGLRenderer } from 'three';
+import {
+  BackSide,
+  Color,
+  DoubleSide,
+  FrontSide,
+  Matrix4,
+  NoToneMapping,
+  ShaderMaterial,
+  Vector2,
+  Vector3,
+  type Camera,
+  type CubeTexture,
+  type IUniform,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
 import { renderOrigin } from './renderOrigin';
 import type { Submersion } from '../../sim/underwater/snellWindow';
 import vertexShader from '../../../shaders/ocean.vert?raw';

@@ -22,7 +22,6 @@ import { DEFAULT_NEAR } from './nearPlane';
 import { CAMERA_FAR, EyeClearance } from './eyeClearance';
 import { LOOK_KEYS, OceanEngine } from './oceanEngine';
 
-
 export interface RenderStats extends ChunkStats {
   drawCalls: number;
   triangles: number;
@@ -70,14 +69,30 @@ export class OceanView {
   private free: Rect | null = null;
   private probe?: SurfaceProbe;
 
-  private lastStats: RenderStats = { drawCalls: 0, triangles: 0, chunksTotal: 0, chunksVisible: 0, farCellsVisible: 0, lodCounts: [], underwater: false, submersion: 'above', composerPasses: 0 };
+  private lastStats: RenderStats = {
+    drawCalls: 0,
+    triangles: 0,
+    chunksTotal: 0,
+    chunksVisible: 0,
+    farCellsVisible: 0,
+    lodCounts: [],
+    underwater: false,
+    submersion: 'above',
+    composerPasses: 0,
+  };
 
   /**
    * `customSky`: a page's own cube map, or null for the sky painted from the sun. `redraw`
    * asks the app for a frame once a part loaded on first use (the underwater passes) has
    * arrived; `partFailed` says that part could not be fetched.
    */
-  constructor(canvas: HTMLCanvasElement, customSky: CubeTexture | null, params: OceanParams, private readonly redraw: () => void = () => undefined, partFailed: () => void = () => undefined) {
+  constructor(
+    canvas: HTMLCanvasElement,
+    customSky: CubeTexture | null,
+    params: OceanParams,
+    private readonly redraw: () => void = () => undefined,
+    partFailed: () => void = () => undefined,
+  ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance', preserveDrawingBuffer: true });
     // Reset once per frame by draw(), so a frame of several composer passes counts them all.
     this.renderer.info.autoReset = false;
@@ -121,7 +136,8 @@ export class OceanView {
     this.ensureCompare(params);
     this.compare?.apply(params);
     if (changed(...LOOK_KEYS)) this.compare?.applyLook(params);
-    if (changed('sunElevation', 'sunAzimuth', 'waterColor')) this.lights.update(sunDirection(params.sunElevation, params.sunAzimuth), params.waterColor);
+    if (changed('sunElevation', 'sunAzimuth', 'waterColor'))
+      this.lights.update(sunDirection(params.sunElevation, params.sunAzimuth), params.waterColor);
     if (changed('view')) this.showFigure = params.view !== 'ocean';
     if (changed('exposure')) this.renderer.toneMappingExposure = 2 ** params.exposure;
     // The teaching views' code is fetched the first time one is shown; until then the frame is clear.
@@ -131,7 +147,7 @@ export class OceanView {
           this.figureCode = code;
           if (!this.disposed) this.redraw();
         },
-        (error: unknown) => console.warn('Oceano: the teaching view\'s code could not be loaded.', error),
+        (error: unknown) => console.warn("Oceano: the teaching view's code could not be loaded.", error),
       );
     }
   }
@@ -146,7 +162,7 @@ export class OceanView {
           this.kelvinGuide = new KelvinGuideView(this.scene);
           this.redraw();
         },
-        (error: unknown) => console.warn('Oceano: the Kelvin guide\'s code could not be loaded.', error),
+        (error: unknown) => console.warn("Oceano: the Kelvin guide's code could not be loaded.", error),
       );
     }
     this.kelvinGuide?.update(guide.visible, guide.x, guide.y, guide.z, guide.heading);
@@ -208,7 +224,13 @@ export class OceanView {
 
   /** Settles once every part asked for so far (the underwater passes, the compare code, the Kelvin guide, the ocean's own) has loaded. */
   whenPartsLoaded(): Promise<void> {
-    return Promise.all([this.underwater.whenLoaded(), this.ocean.whenReady(), this.compareLoad, this.figureLoad, this.kelvinGuideLoad]).then(() => undefined);
+    return Promise.all([
+      this.underwater.whenLoaded(),
+      this.ocean.whenReady(),
+      this.compareLoad,
+      this.figureLoad,
+      this.kelvinGuideLoad,
+    ]).then(() => undefined);
   }
 
   /**
@@ -229,7 +251,7 @@ export class OceanView {
         this.compare?.apply(this.params);
         this.redraw();
       },
-      (error: unknown) => console.warn('Oceano: the compare view\'s code could not be loaded; the first model is drawn alone.', error),
+      (error: unknown) => console.warn("Oceano: the compare view's code could not be loaded; the first model is drawn alone.", error),
     );
   }
 
@@ -263,7 +285,16 @@ export class OceanView {
   private drawFigure(): void {
     const ocean = this.ocean;
     const canvas = this.cssSize;
-    const drawn = this.figureCode && (this.figure ??= new this.figureCode.TeachingFigure()).draw(this.renderer, { params: this.params, time: ocean.time, waves: ocean.waveModelView, sky: ocean.skyTexture, free: this.free ?? { x: 0, y: 0, ...canvas }, canvas });
+    const drawn =
+      this.figureCode &&
+      (this.figure ??= new this.figureCode.TeachingFigure()).draw(this.renderer, {
+        params: this.params,
+        time: ocean.time,
+        waves: ocean.waveModelView,
+        sky: ocean.skyTexture,
+        free: this.free ?? { x: 0, y: 0, ...canvas },
+        canvas,
+      });
     if (!drawn) this.renderer.clear();
   }
 

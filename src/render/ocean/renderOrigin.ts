@@ -9,5 +9,8 @@ export const RENDER_ORIGIN_STEP = 4096;
 
 export function renderOrigin(cameraX: number, cameraZ: number): [number, number] {
   // + 0 turns a rounded −0 into 0.
-  return [Math.round(cameraX / RENDER_ORIGIN_STEP) * RENDER_ORIGIN_STEP + 0, Math.round(cameraZ / RENDER_ORIGIN_STEP) * RENDER_ORIGIN_STEP + 0];
+  return [
+    Math.round(cameraX / RENDER_ORIGIN_STEP) * RENDER_ORIGIN_STEP + 0,
+    Math.round(cameraZ / RENDER_ORIGIN_STEP) * RENDER_ORIGIN_STEP + 0,
+  ];
 }

@@ -1,4 +1,14 @@
-import { BackSide, BoxGeometry, CubeCamera, Mesh, Scene, ShaderMaterial, type IUniform, type WebGLCubeRenderTarget, type WebGLRenderer } from 'three';
+import {
+  BackSide,
+  BoxGeometry,
+  CubeCamera,
+  Mesh,
+  Scene,
+  ShaderMaterial,
+  type IUniform,
+  type WebGLCubeRenderTarget,
+  type WebGLRenderer,
+} from 'three';
 import vertexShader from '../../../shaders/skyDome.vert?raw';
 import { resolveChunks } from '../shaders/shaderChunks';
 
@@ -15,7 +25,14 @@ export class CubePainter {
   private readonly box = new BoxGeometry(2, 2, 2);
 
   constructor(target: WebGLCubeRenderTarget, fragmentShader: string, uniforms: Record<string, IUniform>) {
-    this.material = new ShaderMaterial({ vertexShader, fragmentShader: resolveChunks(fragmentShader), side: BackSide, depthTest: false, depthWrite: false, uniforms });
+    this.material = new ShaderMaterial({
+      vertexShader,
+      fragmentShader: resolveChunks(fragmentShader),
+      side: BackSide,
+      depthTest: false,
+      depthWrite: false,
+      uniforms,
+    });
     this.scene.add(new Mesh(this.box, this.material));
     this.camera = new CubeCamera(0.1, 10, target);
   }

@@ -21,7 +21,12 @@ import { createSkyCubeUniforms, setSkyCube, SQUARE_ROOT_SKY, type SkyCubeUniform
 /** The blur's mip level is rounded to a 64th of a level: finer than any picture shows (docs/light-cost.md). */
 const LEVEL_STEPS = 64;
 
-const MIPMAP_FILTERS: readonly number[] = [NearestMipmapNearestFilter, NearestMipmapLinearFilter, LinearMipmapNearestFilter, LinearMipmapLinearFilter];
+const MIPMAP_FILTERS: readonly number[] = [
+  NearestMipmapNearestFilter,
+  NearestMipmapLinearFilter,
+  LinearMipmapNearestFilter,
+  LinearMipmapLinearFilter,
+];
 
 /** The side of one face of a sky cube, in texels: a render target's, or its first image's; null before the images arrive. */
 function skyFaceSize(sky: CubeTexture): number | null {
@@ -56,10 +61,18 @@ export class PrefilteredSky {
   private painted: { sky: CubeTexture; version: number; level: number; sunX: number; sunY: number; sunZ: number } | null = null;
 
   constructor() {
-    this.target = new WebGLCubeRenderTarget(8, { type: UnsignedByteType, generateMipmaps: false, minFilter: LinearFilter, magFilter: LinearFilter });
+    this.target = new WebGLCubeRenderTarget(8, {
+      type: UnsignedByteType,
+      generateMipmaps: false,
+      minFilter: LinearFilter,
+      magFilter: LinearFilter,
+    });
     this.target.texture.colorSpace = LinearSRGBColorSpace;
     this.target.texture.userData[SQUARE_ROOT_SKY] = true;
-    this.painter = new CubePainter(this.target, fragmentShader, { ...createSkyCubeUniforms(this.target.texture), uSlopeVariance: { value: 0 } });
+    this.painter = new CubePainter(this.target, fragmentShader, {
+      ...createSkyCubeUniforms(this.target.texture),
+      uSlopeVariance: { value: 0 },
+    });
   }
 
   get texture(): CubeTexture {

@@ -16,7 +16,11 @@ const SUN_DISTANCE = 100;
  */
 export class SceneLights {
   private readonly sun = new DirectionalLight(new Color().setRGB(...SUN), SUN_INTENSITY);
-  private readonly sky = new HemisphereLight(new Color().setRGB(...ZENITH).lerp(new Color().setRGB(...HORIZON), 0.5), new Color(), SKY_INTENSITY);
+  private readonly sky = new HemisphereLight(
+    new Color().setRGB(...ZENITH).lerp(new Color().setRGB(...HORIZON), 0.5),
+    new Color(),
+    SKY_INTENSITY,
+  );
 
   constructor(scene: Scene) {
     scene.add(this.sun, this.sun.target, this.sky);

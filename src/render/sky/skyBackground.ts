@@ -40,17 +40,19 @@ export class SkyBackground {
     const geometry = new BufferGeometry();
     // One triangle over the whole of clip space [-1, 1]².
     geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
-    const material = markOceanoMaterial(new ShaderMaterial({
-      vertexShader: resolveChunks(vertexShader),
-      fragmentShader: resolveChunks(fragmentShader),
-      uniforms: {
-        ...createSkyCubeUniforms(sky),
-        uClipToWorldDirection: { value: this.clipToWorld },
-        uSunDirection: { value: new Vector3(0, 1, 0) },
-        uSunRadiance: { value: new Vector3() },
-      },
-      depthWrite: false,
-    }));
+    const material = markOceanoMaterial(
+      new ShaderMaterial({
+        vertexShader: resolveChunks(vertexShader),
+        fragmentShader: resolveChunks(fragmentShader),
+        uniforms: {
+          ...createSkyCubeUniforms(sky),
+          uClipToWorldDirection: { value: this.clipToWorld },
+          uSunDirection: { value: new Vector3(0, 1, 0) },
+          uSunRadiance: { value: new Vector3() },
+        },
+        depthWrite: false,
+      }),
+    );
     this.mesh = new Mesh(geometry, material);
     this.mesh.name = SKY_BACKGROUND_NAME;
     this.mesh.frustumCulled = false;

@@ -1,4 +1,13 @@
-import { CubeTexture, CubeTextureLoader, DataTexture, RGBAFormat, SRGBColorSpace, UnsignedByteType, LinearFilter, LinearMipmapNearestFilter } from 'three';
+import {
+  CubeTexture,
+  CubeTextureLoader,
+  DataTexture,
+  RGBAFormat,
+  SRGBColorSpace,
+  UnsignedByteType,
+  LinearFilter,
+  LinearMipmapNearestFilter,
+} from 'three';
 import { CUBE_FACES, SkyPainter } from '../../sim/optics/skyPainter';
 
 /** The six face URLs under a base path, in three.js's loader order. */

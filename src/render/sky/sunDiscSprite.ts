@@ -1,4 +1,16 @@
-import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, Vector2, Vector4, type Camera, type IUniform, type Vector3, type WebGLRenderer } from 'three';
+import {
+  BufferAttribute,
+  BufferGeometry,
+  Matrix4,
+  Mesh,
+  ShaderMaterial,
+  Vector2,
+  Vector4,
+  type Camera,
+  type IUniform,
+  type Vector3,
+  type WebGLRenderer,
+} from 'three';
 import { SUN_DISC_COS_EDGE } from '../../sim/optics/sunDisc';
 import vertexShader from '../../../shaders/sunDiscSprite.vert?raw';
 import fragmentShader from '../../../shaders/skyBackground.frag?raw';
@@ -34,13 +46,18 @@ export class SunDiscSprite {
   /** `sky`: the sky material's uniforms (cube, sun, its radiance, the camera's rays), shared. */
   constructor(sky: Record<string, IUniform>, renderOrder: number) {
     const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, -1, 1, 0]), 3));
-    const material = markOceanoMaterial(new ShaderMaterial({
-      vertexShader: resolveChunks(vertexShader),
-      fragmentShader: resolveChunks(fragmentShader),
-      uniforms: { ...sky, uDiscCentre: { value: this.centre }, uDiscHalfSize: { value: this.halfSize } },
-      depthWrite: false,
-    }));
+    geometry.setAttribute(
+      'position',
+      new BufferAttribute(new Float32Array([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, -1, 1, 0]), 3),
+    );
+    const material = markOceanoMaterial(
+      new ShaderMaterial({
+        vertexShader: resolveChunks(vertexShader),
+        fragmentShader: resolveChunks(fragmentShader),
+        uniforms: { ...sky, uDiscCentre: { value: this.centre }, uDiscHalfSize: { value: this.halfSize } },
+        depthWrite: false,
+      }),
+    );
     this.mesh = new Mesh(geometry, material);
     this.mesh.name = 'oceano-sun-disc';
     this.mesh.frustumCulled = false;

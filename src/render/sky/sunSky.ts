@@ -14,7 +14,19 @@ import {
 } from 'three';
 import fragmentShader from '../../../shaders/skyDome.frag?raw';
 import { CubePainter } from './cubePainter';
-import { BELOW_HORIZON, CLOUD_LIT, CLOUD_SHADE, DUSK_HORIZON, DUSK_ZENITH, HORIZON, NIGHT_HORIZON, NIGHT_ZENITH, SUN, ZENITH, cloudDensityTile } from '../../sim/optics/skyPainter';
+import {
+  BELOW_HORIZON,
+  CLOUD_LIT,
+  CLOUD_SHADE,
+  DUSK_HORIZON,
+  DUSK_ZENITH,
+  HORIZON,
+  NIGHT_HORIZON,
+  NIGHT_ZENITH,
+  SUN,
+  ZENITH,
+  cloudDensityTile,
+} from '../../sim/optics/skyPainter';
 import { SQUARE_ROOT_SKY } from './skyCubeUniforms';
 
 /**
@@ -44,7 +56,12 @@ export class SunSky {
     // 8 bits a channel holding the colour's square root (shaders/skyCube.glsl says why), with
     // mipmaps: a rough sea reflects the sky blurred (skyCubeColorRough, which blends two levels
     // itself: perf, for SwiftShader only: its trilinear cube filter cost the default view 15 %, docs/light-sun-and-sky.md).
-    this.target = new WebGLCubeRenderTarget(size, { type: UnsignedByteType, generateMipmaps: true, minFilter: LinearMipmapNearestFilter, magFilter: LinearFilter });
+    this.target = new WebGLCubeRenderTarget(size, {
+      type: UnsignedByteType,
+      generateMipmaps: true,
+      minFilter: LinearMipmapNearestFilter,
+      magFilter: LinearFilter,
+    });
     this.target.texture.colorSpace = LinearSRGBColorSpace;
     this.target.texture.userData[SQUARE_ROOT_SKY] = true;
     const density = cloudDensityTile(CLOUD_TILE_SIZE);

@@ -1,4 +1,15 @@
-import { Mesh, OrthographicCamera, PlaneGeometry, Scene, ShaderMaterial, Vector2, Vector3, Vector4, type CubeTexture, type WebGLRenderer } from 'three';
+import {
+  Mesh,
+  OrthographicCamera,
+  PlaneGeometry,
+  Scene,
+  ShaderMaterial,
+  Vector2,
+  Vector3,
+  Vector4,
+  type CubeTexture,
+  type WebGLRenderer,
+} from 'three';
 import type { Rect } from '../../sim/layout/rect';
 import { CROSS_CELLS } from '../../sim/optics/cubeCross';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from '../sky/skyCubeUniforms';
@@ -40,7 +51,12 @@ export class CubeCrossFigure {
   render(renderer: WebGLRenderer, sky: CubeTexture, box: Rect, canvas: { width: number; height: number }): void {
     const u = this.material.uniforms;
     if (u.uSky.value !== sky) setSkyCube(u as SkyCubeUniforms, sky);
-    (u.uBox.value as Vector4).set(box.x / canvas.width, 1 - (box.y + box.height) / canvas.height, (box.x + box.width) / canvas.width, 1 - box.y / canvas.height);
+    (u.uBox.value as Vector4).set(
+      box.x / canvas.width,
+      1 - (box.y + box.height) / canvas.height,
+      (box.x + box.width) / canvas.width,
+      1 - box.y / canvas.height,
+    );
     renderer.render(this.scene, this.camera);
   }
 

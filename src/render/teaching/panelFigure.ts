@@ -51,7 +51,12 @@ export class PanelFigure {
     panels.slice(0, MAX_PANELS).forEach((panel, i) => {
       const { x, y, width, height } = panel.rect;
       // Fractions of the canvas with y upwards, as vUv runs.
-      (u.uRect.value as Vector4[])[i].set(x / canvas.width, 1 - (y + height) / canvas.height, (x + width) / canvas.width, 1 - y / canvas.height);
+      (u.uRect.value as Vector4[])[i].set(
+        x / canvas.width,
+        1 - (y + height) / canvas.height,
+        (x + width) / canvas.width,
+        1 - y / canvas.height,
+      );
       (u.uWeight.value as number[])[i] = panel.second ? (panel.weight ?? 0) : 0;
       (u.uRange.value as number[])[i] = panel.range ?? 1;
       u[`uFirst${i}`].value = panel.first;

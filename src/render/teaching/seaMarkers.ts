@@ -1,4 +1,14 @@
-import { BufferAttribute, BufferGeometry, DoubleSide, Line, LineBasicMaterial, Mesh, MeshBasicMaterial, type Camera, type Object3D } from 'three';
+import {
+  BufferAttribute,
+  BufferGeometry,
+  DoubleSide,
+  Line,
+  LineBasicMaterial,
+  Mesh,
+  MeshBasicMaterial,
+  type Camera,
+  type Object3D,
+} from 'three';
 
 /**
  * The marks the sea tools put on the water: the probe's pin, the ruler's line and its two

@@ -59,7 +59,8 @@ export class TeachingFigure {
     const textures = this.stageTextures(input.params.seed);
     if (id === 'first') return { rect, first: textures.octaves };
     // The weight the sea mixes its two heightmaps with at this instant (seedSurface.ts).
-    if (id === 'blend') return { rect, first: textures.octaves, second: textures.second, weight: surfaceStateAt(input.params, input.time).rippleBlend };
+    if (id === 'blend')
+      return { rect, first: textures.octaves, second: textures.second, weight: surfaceStateAt(input.params, input.time).rippleBlend };
     return { rect, first: textures[id] };
   }
 

@@ -9,7 +9,9 @@ const PLACEHOLDER = 'vec3 CustomToneMapping( vec3 color ) { return color; }';
  * as the way to give CustomToneMapping a body; only renderers set to CustomToneMapping call it.
  */
 function withHighlightRollOff(chunk: string): string {
-  return chunk.replace(PLACEHOLDER, `${resolveChunks('#include <oceano_highlight_roll_off>')}\nvec3 CustomToneMapping( vec3 color ) { return rollOffHighlights( toneMappingExposure * color ); }`);
+  const rollOff = resolveChunks('#include <oceano_highlight_roll_off>');
+  const body = 'vec3 CustomToneMapping( vec3 color ) { return rollOffHighlights( toneMappingExposure * color ); }';
+  return chunk.replace(PLACEHOLDER, `${rollOff}\n${body}`);
 }
 
 /**

@@ -18,7 +18,12 @@ export function createCausticsUniforms(): CausticsUniforms {
   };
 }
 
-export function applyCaustics(u: CausticsUniforms, towardsSun: readonly [number, number, number], enabled: boolean, intensity: number): void {
+export function applyCaustics(
+  u: CausticsUniforms,
+  towardsSun: readonly [number, number, number],
+  enabled: boolean,
+  intensity: number,
+): void {
   const sun = (u.uCausticsSunDirection.value as Vector3).fromArray(towardsSun).normalize();
   // The sunlight's direction under a flat sea is the same for every fragment: refracted once
   // here instead of per fragment in the shader. A sun at or below the horizon gets no

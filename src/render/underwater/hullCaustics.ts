@@ -20,7 +20,10 @@ export function lightWithCaustics(model: Object3D, waves: WaveBinding, uniforms:
           .replace('#include <common>', '#include <common>\nvarying vec3 vOceanoWorld;')
           .replace('#include <project_vertex>', '#include <project_vertex>\nvOceanoWorld = (modelMatrix * vec4(transformed, 1.0)).xyz;');
         shader.fragmentShader = shader.fragmentShader
-          .replace('#include <common>', waves.resolve('#include <common>\nvarying vec3 vOceanoWorld;\n#include <oceano_waves>\n#include <oceano_caustics>'))
+          .replace(
+            '#include <common>',
+            waves.resolve('#include <common>\nvarying vec3 vOceanoWorld;\n#include <oceano_waves>\n#include <oceano_caustics>'),
+          )
           .replace(
             '#include <lights_fragment_end>',
             '#include <lights_fragment_end>\nfloat oceanoCaustic = causticLight(vOceanoWorld);\nreflectedLight.directDiffuse *= oceanoCaustic;\nreflectedLight.directSpecular *= oceanoCaustic;',

@@ -1,4 +1,13 @@
-import { DepthTexture, HalfFloatType, UnsignedByteType, Vector2, WebGLRenderTarget, type PerspectiveCamera, type Scene, type WebGLRenderer } from 'three';
+import {
+  DepthTexture,
+  HalfFloatType,
+  UnsignedByteType,
+  Vector2,
+  WebGLRenderTarget,
+  type PerspectiveCamera,
+  type Scene,
+  type WebGLRenderer,
+} from 'three';
 import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import type { OceanEngine } from '../ocean/oceanEngine';
 import type { PassTiming } from '../diagnostics/passTiming';

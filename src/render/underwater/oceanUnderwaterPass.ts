@@ -71,7 +71,12 @@ export class OceanUnderwaterPass extends Pass {
   }
 
   /** The frame's passes, with `afterEachPass` called after each (OceanUnderwater's profile). */
-  draw(renderer: WebGLRenderer, writeBuffer: WebGLRenderTarget, readBuffer: WebGLRenderTarget, afterEachPass?: (name: string) => void): void {
+  draw(
+    renderer: WebGLRenderer,
+    writeBuffer: WebGLRenderTarget,
+    readBuffer: WebGLRenderTarget,
+    afterEachPass?: (name: string) => void,
+  ): void {
     const submersion = this.ocean.submersion;
     const output = this.renderToScreen ? null : writeBuffer;
     if (submersion === 'above') {
@@ -87,7 +92,7 @@ export class OceanUnderwaterPass extends Pass {
     }
     if (!readBuffer.depthTexture) {
       throw new Error(
-        'OceanUnderwaterPass reads the scene\'s depth, and the composer\'s render target has no depth texture: ' +
+        "OceanUnderwaterPass reads the scene's depth, and the composer's render target has no depth texture: " +
           'create the EffectComposer with new WebGLRenderTarget(width, height, { type: HalfFloatType, depthTexture: new DepthTexture(width, height) }).',
       );
     }

@@ -36,7 +36,6 @@ export const SCENE_CONSTANTS = [
  */
 export const SCENE_ENCODE_CHUNK = `${SCENE_CONSTANTS}${sceneEncode}`;
 
-
 /** Marks a material as Oceano's own: its shaders end with `#include <oceano_scene_encode>`. */
 export function markOceanoMaterial<M extends Material>(material: M): M {
   material.userData[OCEANO_MATERIAL] = true;
@@ -54,7 +53,10 @@ function patchToEncode(material: Material): void {
   const key = material.customProgramCacheKey;
   material.onBeforeCompile = (shader, renderer) => {
     before.call(material, shader, renderer);
-    shader.fragmentShader = shader.fragmentShader.replace('#include <colorspace_fragment>', `#include <colorspace_fragment>\n${SCENE_ENCODE_CHUNK}`);
+    shader.fragmentShader = shader.fragmentShader.replace(
+      '#include <colorspace_fragment>',
+      `#include <colorspace_fragment>\n${SCENE_ENCODE_CHUNK}`,
+    );
   };
   material.customProgramCacheKey = () => `${key.call(material)}|oceano-scene-encode`;
 }

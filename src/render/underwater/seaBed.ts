@@ -26,18 +26,20 @@ export class SeaBed {
 
   constructor(waves: WaveBinding, shared: WaterVolumeUniforms & CausticsUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>) {
     this.material = waves.attach(
-      markOceanoMaterial(new ShaderMaterial({
-        vertexShader,
-        fragmentShader,
-        uniforms: {
-          ...shared,
-          uSandColor: { value: SAND.clone() },
-          uSunTransmission: { value: 1 },
-          uSandMottle: { value: null },
-          uSandMottleTile: { value: RIPPLE_TILE_SIZE },
-          uSandMottleSize: { value: HEIGHTMAP_SIZE },
-        },
-      })),
+      markOceanoMaterial(
+        new ShaderMaterial({
+          vertexShader,
+          fragmentShader,
+          uniforms: {
+            ...shared,
+            uSandColor: { value: SAND.clone() },
+            uSunTransmission: { value: 1 },
+            uSandMottle: { value: null },
+            uSandMottleTile: { value: RIPPLE_TILE_SIZE },
+            uSandMottleSize: { value: HEIGHTMAP_SIZE },
+          },
+        }),
+      ),
     );
     const geometry = new PlaneGeometry(BED_SIZE, BED_SIZE);
     geometry.rotateX(-Math.PI / 2);

@@ -66,7 +66,12 @@ const half = (pixels: number) => Math.max(1, Math.ceil(pixels / 2));
  * linearly filtered for the water pass's upsample.
  */
 function godRaysTarget(encoded: boolean): WebGLRenderTarget {
-  return new WebGLRenderTarget(1, 1, { type: encoded ? UnsignedByteType : HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+  return new WebGLRenderTarget(1, 1, {
+    type: encoded ? UnsignedByteType : HalfFloatType,
+    minFilter: LinearFilter,
+    magFilter: LinearFilter,
+    depthBuffer: false,
+  });
 }
 
 /**
@@ -159,7 +164,12 @@ export type EncodedScene = 'linear' | 'oceano-materials' | 'every-material';
  * after it (bloom, OutputPass) expect.
  */
 function blurredTarget(toCanvas: boolean): WebGLRenderTarget {
-  return new WebGLRenderTarget(1, 1, { type: toCanvas ? UnsignedByteType : HalfFloatType, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+  return new WebGLRenderTarget(1, 1, {
+    type: toCanvas ? UnsignedByteType : HalfFloatType,
+    minFilter: LinearFilter,
+    magFilter: LinearFilter,
+    depthBuffer: false,
+  });
 }
 
 /**
@@ -219,7 +229,14 @@ export class UnderwaterPost {
     // Where the bake lies, the same objects in the bake and the water pass.
     const tile: Record<string, IUniform> = { uShaftOrigin: { value: new Vector2() }, uShaftExtent: { value: 1 } };
     this.shaftPass = new QuadPass(
-      waves.attach(new ShaderMaterial({ name: 'UnderwaterShaftLight', vertexShader: fullscreenVertex, fragmentShader: shaftLightFragment, uniforms: { ...tile } })),
+      waves.attach(
+        new ShaderMaterial({
+          name: 'UnderwaterShaftLight',
+          vertexShader: fullscreenVertex,
+          fragmentShader: shaftLightFragment,
+          uniforms: { ...tile },
+        }),
+      ),
       () => this.shaftTarget,
     );
     // The view's uniforms, the same objects in the water pass and the composite.
@@ -247,13 +264,15 @@ export class UnderwaterPost {
       },
     );
     this.volumePass = new QuadPass(
-      waves.attach(new ShaderMaterial({
-        name: 'UnderwaterVolume',
-        defines: { ...decode },
-        vertexShader: fullscreenVertex,
-        fragmentShader: withPassChunks(underwaterFragment),
-        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tGodRays: { value: this.rays.texture }, uWriteMask: { value: false } },
-      })),
+      waves.attach(
+        new ShaderMaterial({
+          name: 'UnderwaterVolume',
+          defines: { ...decode },
+          vertexShader: fullscreenVertex,
+          fragmentShader: withPassChunks(underwaterFragment),
+          uniforms: { ...shared, ...view, tDiffuse: { value: null }, tGodRays: { value: this.rays.texture }, uWriteMask: { value: false } },
+        }),
+      ),
       (readBuffer) => {
         this.volumePass.uniforms.tDiffuse.value = readBuffer.texture;
         view.tDepth.value = readBuffer.depthTexture;
@@ -271,13 +290,15 @@ export class UnderwaterPost {
       return this.blurred;
     });
     this.compositePass = new QuadPass(
-      waves.attach(new ShaderMaterial({
-        name: 'UnderwaterComposite',
-        defines: { ...decode },
-        vertexShader: fullscreenVertex,
-        fragmentShader: withPassChunks(compositeFragment),
-        uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.blurred.texture } },
-      })),
+      waves.attach(
+        new ShaderMaterial({
+          name: 'UnderwaterComposite',
+          defines: { ...decode },
+          vertexShader: fullscreenVertex,
+          fragmentShader: withPassChunks(compositeFragment),
+          uniforms: { ...shared, ...view, tDiffuse: { value: null }, tBlurred: { value: this.blurred.texture } },
+        }),
+      ),
       (readBuffer) => {
         this.compositePass.uniforms.tDiffuse.value = readBuffer.texture;
         view.tDepth.value = readBuffer.depthTexture;
@@ -390,7 +411,7 @@ export class UnderwaterPost {
   /** Plans this frame's bake of the shaft light (src/render/underwater/shaftLightTile.ts) and points the passes at it. */
   private placeShaftLight(): void {
     const model = this.waves.model;
-    const eye = (this.volumePass.uniforms.uEye.value as Vector3);
+    const eye = this.volumePass.uniforms.uEye.value as Vector3;
     const sun = this.raysPass.uniforms.uRefractedSun.value as Vector3;
     const period = this.forceShaftLightWindow ? null : model.lensPeriod;
     const tile = planShaftLightTile(period, [eye.x, eye.y, eye.z], [sun.x, sun.y, sun.z]);

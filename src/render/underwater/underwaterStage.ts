@@ -31,7 +31,9 @@ export class UnderwaterStage {
   /** The passes, once loaded; starts loading them on the first call. */
   passes(): OceanUnderwater | undefined {
     if (!this.underwater && this.code) {
-      this.underwater = new this.code.OceanUnderwater(this.renderer, this.scene, this.camera, this.ocean, { encodedScene: this.encodedScene });
+      this.underwater = new this.code.OceanUnderwater(this.renderer, this.scene, this.camera, this.ocean, {
+        encodedScene: this.encodedScene,
+      });
       this.underwater.forceShaftLightWindow = this.shaftLightWindowForced;
     }
     this.load ??= import('./oceanUnderwater').then(

@@ -33,7 +33,13 @@ export function createWaterVolumeUniforms(): WaterVolumeUniforms {
  * times the daylight: a low sun puts less light into the sea (its elevation's sine, never
  * quite zero: the sky still lights it).
  */
-export function applyWaterVolume(u: WaterVolumeUniforms, waterColor: string, waterColorPicked: boolean, sunHeight: number, fogDensity: number): void {
+export function applyWaterVolume(
+  u: WaterVolumeUniforms,
+  waterColor: string,
+  waterColorPicked: boolean,
+  sunHeight: number,
+  fogDensity: number,
+): void {
   const daylight = 0.25 + 0.75 * Math.max(0, Math.min(1, sunHeight));
   const scatter = u.uWaterScatter.value as Color;
   if (waterColorPicked) scatter.set(waterColor).multiplyScalar(SCATTER_GAIN).add(SCATTER_LIFT);

@@ -97,4 +97,3 @@ export interface HeightmapLayout {
   /** Height drawn white in each texture, m. */
   range: readonly [number, number];
 }
-

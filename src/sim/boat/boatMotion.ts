@@ -66,7 +66,11 @@ interface TargetKey {
 }
 
 const clampTo = (state: FollowerState, target: number, band: number): FollowerState =>
-  state.value > target + band ? { value: target + band, velocity: 0 } : state.value < target - band ? { value: target - band, velocity: 0 } : state;
+  state.value > target + band
+    ? { value: target + band, velocity: 0 }
+    : state.value < target - band
+      ? { value: target - band, velocity: 0 }
+      : state;
 const clampToExtent = (v: number) => Math.min(BOAT_EXTENT, Math.max(-BOAT_EXTENT, v));
 const TWO_PI = 2 * Math.PI;
 /** The angle in [−π, π) equal to `angle` modulo 2π. */
@@ -118,7 +122,14 @@ export class BoatMotion {
    * at (x, z, heading), read in place of `heightAt` (water that the hull itself changes: the
    * interactive waves, held at 0 under it), and never kept.
    */
-  update(time: number, controls: BoatControls, hull: HullSize, heightAt: HeightAt, surface?: SurfaceKey, around?: (x: number, z: number, heading: number) => HeightAt): BoatMotionState {
+  update(
+    time: number,
+    controls: BoatControls,
+    hull: HullSize,
+    heightAt: HeightAt,
+    surface?: SurfaceKey,
+    around?: (x: number, z: number, heading: number) => HeightAt,
+  ): BoatMotionState {
     const dt = this.lastTime === null ? NaN : time - this.lastTime;
     this.lastTime = time;
     const stepping = dt > 0 && dt <= this.maxStep;
@@ -138,7 +149,9 @@ export class BoatMotion {
       this.heading = { value: controls.heading, velocity: 0 };
     }
     const heading = this.heading.value - TWO_PI * Math.floor(this.heading.value / TWO_PI);
-    const target = around ? targetPose(around(this.x, this.z, heading), this.x, this.z, heading, hull) : this.targetAt(time, heading, hull, heightAt, surface);
+    const target = around
+      ? targetPose(around(this.x, this.z, heading), this.x, this.z, heading, hull)
+      : this.targetAt(time, heading, hull, heightAt, surface);
     if (stepping) {
       const omega = 1 / controls.response;
       this.heave = followStep(this.heave, target.y, dt, omega, HEAVE_BAND);
@@ -163,15 +176,25 @@ export class BoatMotion {
   private targetAt(time: number, heading: number, hull: HullSize, heightAt: HeightAt, surface?: SurfaceKey): BoatPose {
     const k = this.targetKey;
     if (
-      surface && this.lastTarget && k &&
-      k.time === time && k.x === this.x && k.z === this.z && k.heading === heading && k.length === hull.length && k.beam === hull.beam &&
-      k.model === surface && k.revision === surface.surfaceRevision
+      surface &&
+      this.lastTarget &&
+      k &&
+      k.time === time &&
+      k.x === this.x &&
+      k.z === this.z &&
+      k.heading === heading &&
+      k.length === hull.length &&
+      k.beam === hull.beam &&
+      k.model === surface &&
+      k.revision === surface.surfaceRevision
     ) {
       return this.lastTarget;
     }
     const target = targetPose(heightAt, this.x, this.z, heading, hull);
     this.lastTarget = target;
-    this.targetKey = surface ? { time, x: this.x, z: this.z, heading, length: hull.length, beam: hull.beam, model: surface, revision: surface.surfaceRevision } : null;
+    this.targetKey = surface
+      ? { time, x: this.x, z: this.z, heading, length: hull.length, beam: hull.beam, model: surface, revision: surface.surfaceRevision }
+      : null;
     return target;
   }
 
@@ -182,7 +205,14 @@ export class BoatMotion {
   /** The state at `time`, or null when the motion was last updated at another time (or never). */
   snapshot(time: number): BoatSnapshot | null {
     if (this.lastTime !== time || this.current === null) return null;
-    return { x: this.x, z: this.z, heading: { ...this.heading }, heave: { ...this.heave }, pitch: { ...this.pitch }, roll: { ...this.roll } };
+    return {
+      x: this.x,
+      z: this.z,
+      heading: { ...this.heading },
+      heave: { ...this.heave },
+      pitch: { ...this.pitch },
+      roll: { ...this.roll },
+    };
   }
 
   /** Puts the boat back as `snapshot` had it at `time`: the next update at that time draws that very pose. */
@@ -196,6 +226,9 @@ export class BoatMotion {
     this.lastTime = time;
     this.command = null;
     // Marks the motion as under way, so the first update holds the restored springs.
-    this.current = { pose: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value }, target: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value } };
+    this.current = {
+      pose: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value },
+      target: { x: this.x, y: this.heave.value, z: this.z, heading: this.heading.value, pitch: this.pitch.value, roll: this.roll.value },
+    };
   }
 }

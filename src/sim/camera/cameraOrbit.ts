@@ -20,5 +20,9 @@ export function orbit(position: Vec3, target: Vec3, yaw: number, pitch: number, 
   const polar = Math.min(Math.PI - POLE_MARGIN, Math.max(POLE_MARGIN, Math.acos(Math.max(-1, Math.min(1, dy / radius))) + pitch));
   const azimuth = Math.atan2(dx, dz) + yaw;
   const r = Math.min(maxDistance, Math.max(minDistance, radius * zoom));
-  return [target[0] + r * Math.sin(polar) * Math.sin(azimuth), target[1] + r * Math.cos(polar), target[2] + r * Math.sin(polar) * Math.cos(azimuth)];
+  return [
+    target[0] + r * Math.sin(polar) * Math.sin(azimuth),
+    target[1] + r * Math.cos(polar),
+    target[2] + r * Math.sin(polar) * Math.cos(azimuth),
+  ];
 }

@@ -18,7 +18,10 @@ export const STATIONARY_PHASE_FROM = 12;
  * least `minPhase` (the stationary-phase region; 12 rad leaves out the first crest, n = 1),
  * k within [kMin, kMax], radius at most `maxRadius`. Outermost first.
  */
-export function crestRadii(age: number, options: { kMin: number; kMax: number; maxRadius: number; minPhase?: number; gravity?: number }): number[] {
+export function crestRadii(
+  age: number,
+  options: { kMin: number; kMax: number; maxRadius: number; minPhase?: number; gravity?: number },
+): number[] {
   const g = options.gravity ?? GRAVITY;
   const minPhase = options.minPhase ?? STATIONARY_PHASE_FROM;
   if (!(age > 0)) return [];

@@ -21,13 +21,22 @@ export function checkDisturbance(x: number, z: number, options: DisturbanceOptio
   const radius = options.radius ?? 1;
   const height = options.height ?? 0.3;
   const fail = (name: string, got: unknown, min: number, max: number, wanted: string): never => {
-    throw new MessageError(message('disturbInvalid', { name, got: String(got), min, max }), `disturb: ${name} must be ${wanted} (got ${String(got)}).`);
+    throw new MessageError(
+      message('disturbInvalid', { name, got: String(got), min, max }),
+      `disturb: ${name} must be ${wanted} (got ${String(got)}).`,
+    );
   };
-  for (const [name, value] of [['x', x], ['z', z]] as const) {
-    if (!(typeof value === 'number' && Math.abs(value) <= DISTURB_REACH)) fail(name, value, -DISTURB_REACH, DISTURB_REACH, `a finite number of metres within ±${DISTURB_REACH}`);
+  for (const [name, value] of [
+    ['x', x],
+    ['z', z],
+  ] as const) {
+    if (!(typeof value === 'number' && Math.abs(value) <= DISTURB_REACH))
+      fail(name, value, -DISTURB_REACH, DISTURB_REACH, `a finite number of metres within ±${DISTURB_REACH}`);
   }
-  if (!(typeof radius === 'number' && radius > 0 && radius <= IWAVE_MAX_RADIUS)) fail('radius', radius, 0, IWAVE_MAX_RADIUS, `a number of metres above 0 and at most ${IWAVE_MAX_RADIUS}`);
-  if (!(typeof height === 'number' && Math.abs(height) <= IWAVE_MAX_HEIGHT)) fail('height', height, -IWAVE_MAX_HEIGHT, IWAVE_MAX_HEIGHT, `a number of metres from −${IWAVE_MAX_HEIGHT} to ${IWAVE_MAX_HEIGHT}`);
+  if (!(typeof radius === 'number' && radius > 0 && radius <= IWAVE_MAX_RADIUS))
+    fail('radius', radius, 0, IWAVE_MAX_RADIUS, `a number of metres above 0 and at most ${IWAVE_MAX_RADIUS}`);
+  if (!(typeof height === 'number' && Math.abs(height) <= IWAVE_MAX_HEIGHT))
+    fail('height', height, -IWAVE_MAX_HEIGHT, IWAVE_MAX_HEIGHT, `a number of metres from −${IWAVE_MAX_HEIGHT} to ${IWAVE_MAX_HEIGHT}`);
   const notices: Message[] = [];
   let used = radius;
   if (radius < IWAVE_SPACING) {

@@ -1,7 +1,15 @@
 import { GRAVITY } from './iwaveGrid';
 import { fittedVerticalDerivativeKernel, waveEquationKernel, type ConvolutionKernel } from './verticalDerivativeKernel';
 
-import { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP } from './fieldSize';
+import {
+  IWAVE_CATCH_UP_STEPS,
+  IWAVE_DAMPING,
+  IWAVE_GRID_SIZE,
+  IWAVE_MAX_HEIGHT,
+  IWAVE_MAX_RADIUS,
+  IWAVE_SPACING,
+  IWAVE_STEP,
+} from './fieldSize';
 import { smoothstep } from '../math/smoothstep';
 
 export { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS, IWAVE_SPACING, IWAVE_STEP };
@@ -17,7 +25,10 @@ export const WAVE_EQUATION_SPEED = Math.sqrt(GRAVITY / 1.5);
 export type IWaveEquation = 'dispersive' | 'non-dispersive' | 'side-by-side';
 
 /** The kernels for an equation: the one of every texel (or of the left half), and the right half's, if split. */
-export function equationKernels(equation: IWaveEquation, spacing = IWAVE_SPACING): { kernel: ConvolutionKernel; rightKernel: ConvolutionKernel | null } {
+export function equationKernels(
+  equation: IWaveEquation,
+  spacing = IWAVE_SPACING,
+): { kernel: ConvolutionKernel; rightKernel: ConvolutionKernel | null } {
   const wave = () => waveEquationKernel(WAVE_EQUATION_SPEED, spacing, GRAVITY);
   if (equation === 'non-dispersive') return { kernel: wave(), rightKernel: null };
   return { kernel: fittedVerticalDerivativeKernel(), rightKernel: equation === 'side-by-side' ? wave() : null };
@@ -61,4 +72,3 @@ export function sampleField(field: FieldSnapshot, x: number, z: number): [number
   const dz = (bilinear(u, v + 1) - bilinear(u, v - 1)) / (2 * spacing);
   return [fade * h, fade * dx, fade * dz];
 }
-

@@ -142,7 +142,8 @@ export class IWaveGrid {
         const fromZ = Math.min(j, m - 1 - j) + 0.5;
         const fromEdge = axes === 'x' ? fromX : Math.min(fromX, fromZ);
         let sponge = options.sponge ? spongeDamping(fromEdge, options.sponge) : 0;
-        if (options.sponge && this.rightKernel) sponge = Math.max(sponge, spongeDamping(Math.abs(i + 0.5 - n / 2), { ...options.sponge, width: options.sponge.width / 2 }));
+        if (options.sponge && this.rightKernel)
+          sponge = Math.max(sponge, spongeDamping(Math.abs(i + 0.5 - n / 2), { ...options.sponge, width: options.sponge.width / 2 }));
         this.damping[j * n + i] = (options.damping ?? 0) + sponge;
       }
     }
@@ -217,8 +218,8 @@ export class IWaveGrid {
     padded.fill(0);
     for (let j = -r; j < rows + r; j++) {
       for (let i = -r; i < n + r; i++) {
-        const si = this.wrapX ? (((i % n) + n) % n) : i;
-        const sj = this.wrapZ ? (((j % rows) + rows) % rows) : j;
+        const si = this.wrapX ? ((i % n) + n) % n : i;
+        const sj = this.wrapZ ? ((j % rows) + rows) % rows : j;
         if (si < 0 || si >= n || sj < 0 || sj >= rows) continue;
         padded[(j + r) * p + (i + r)] = h[sj * n + si];
       }
@@ -253,7 +254,8 @@ export class IWaveGrid {
     this.convolve(this.height, conv);
     if (this.rightKernel) {
       this.convolve(this.height, this.rightConvolution, this.rightKernel);
-      for (let j = 0; j < this.rows; j++) for (let i = this.n / 2; i < this.n; i++) conv[j * this.n + i] = this.rightConvolution[j * this.n + i];
+      for (let j = 0; j < this.rows; j++)
+        for (let i = this.n / 2; i < this.n; i++) conv[j * this.n + i] = this.rightConvolution[j * this.n + i];
     }
     const kick = (this.gravity * dt * dt) / this.spacing;
     const out = this.next;
@@ -265,7 +267,9 @@ export class IWaveGrid {
     this.next = this.previous;
     this.previous = this.height;
     this.height = out;
-    if (this.hull) for (const source of hullSources(this.hull)) this.addAtRest({ x: source.x, z: source.z, radius: source.radius, height: source.rate * dt }, mask);
+    if (this.hull)
+      for (const source of hullSources(this.hull))
+        this.addAtRest({ x: source.x, z: source.z, radius: source.radius, height: source.rate * dt }, mask);
   }
 
   /** The obstacle mask with the hull's footprint made solid. */

@@ -38,7 +38,10 @@ function orbits(radius: number): [number, number][] {
 function mirrorImages(a: number, b: number): [number, number][] {
   const seen = new Set<string>();
   const images: [number, number][] = [];
-  for (const [x, y] of [[a, b], [b, a]]) {
+  for (const [x, y] of [
+    [a, b],
+    [b, a],
+  ]) {
     for (const sx of [1, -1]) {
       for (const sy of [1, -1]) {
         const key = `${sx * x},${sy * y}`;
@@ -147,7 +150,10 @@ function solve(a: Float64Array, b: Float64Array, n: number): Float64Array {
  * stays positive. Tessendorf's own construction, tessendorfKernel below, keeps ω² = g k to 5 %
  * only in a sliver of this band once truncated to 13 × 13 (docs/iwave.md gives the figures).
  */
-export function fittedVerticalDerivativeKernel(radius = IWAVE_KERNEL_RADIUS, band: readonly [number, number] = IWAVE_KERNEL_BAND): ConvolutionKernel {
+export function fittedVerticalDerivativeKernel(
+  radius = IWAVE_KERNEL_RADIUS,
+  band: readonly [number, number] = IWAVE_KERNEL_BAND,
+): ConvolutionKernel {
   const basis = orbits(radius);
   const unknowns = basis.length;
   const normal = new Float64Array(unknowns * unknowns);
@@ -168,12 +174,24 @@ export function fittedVerticalDerivativeKernel(radius = IWAVE_KERNEL_RADIUS, ban
     const angle = (d / (headings - 1)) * (Math.PI / 4);
     for (let s = 0; s < steps; s++) {
       const k = low * (high / low) ** (s / (steps - 1));
-      accumulate(basis.map(([a, b]) => orbitResponse(a, b, k, angle) / k), 1, 1);
-      accumulate(basis.map(([a, b]) => orbitSlope(a, b, k, angle)), 1, 1);
+      accumulate(
+        basis.map(([a, b]) => orbitResponse(a, b, k, angle) / k),
+        1,
+        1,
+      );
+      accumulate(
+        basis.map(([a, b]) => orbitSlope(a, b, k, angle)),
+        1,
+        1,
+      );
     }
     for (let s = 0; s < above; s++) {
       const k = high + ((top - high) * s) / (above - 1);
-      accumulate(basis.map(([a, b]) => orbitSlope(a, b, k, angle)), 0.5, 0.1);
+      accumulate(
+        basis.map(([a, b]) => orbitSlope(a, b, k, angle)),
+        0.5,
+        0.1,
+      );
     }
   }
   return kernelFromOrbits(radius, solve(normal, rhs, unknowns));
@@ -191,7 +209,8 @@ export function besselJ0(x: number): number {
   }
   const y = 3 / ax;
   const f0 = 0.79788456 + y * (-0.00000077 + y * (-0.0055274 + y * (-0.00009512 + y * (0.00137237 + y * (-0.00072805 + y * 0.00014476)))));
-  const theta0 = ax - 0.78539816 + y * (-0.04166397 + y * (-0.00003954 + y * (0.00262573 + y * (-0.00054125 + y * (-0.00029333 + y * 0.00013558)))));
+  const theta0 =
+    ax - 0.78539816 + y * (-0.04166397 + y * (-0.00003954 + y * (0.00262573 + y * (-0.00054125 + y * (-0.00029333 + y * 0.00013558)))));
   return (f0 * Math.cos(theta0)) / Math.sqrt(ax);
 }
 

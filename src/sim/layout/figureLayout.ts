@@ -22,7 +22,12 @@ export function squaresInRow(count: number, area: Rect, spacing: FigureSpacing =
   const rowWidth = count * side + (count - 1) * spacing.gap;
   const left = area.x + (area.width - rowWidth) / 2;
   const top = area.y + (area.height - side - spacing.caption) / 2;
-  return Array.from({ length: count }, (_, i) => ({ x: Math.round(left + i * (side + spacing.gap)), y: Math.round(top), width: side, height: side }));
+  return Array.from({ length: count }, (_, i) => ({
+    x: Math.round(left + i * (side + spacing.gap)),
+    y: Math.round(top),
+    width: side,
+    height: side,
+  }));
 }
 
 /**
@@ -30,11 +35,19 @@ export function squaresInRow(count: number, area: Rect, spacing: FigureSpacing =
  * round it and a caption's height under it, centred: the unfolded cube map's cross.
  */
 export function cellGrid(columns: number, rows: number, area: Rect, spacing: FigureSpacing = FIGURE_SPACING): { box: Rect; cell: number } {
-  const cell = Math.max(0, Math.floor(Math.min((area.width - 2 * spacing.margin) / columns, (area.height - 2 * spacing.margin - spacing.caption) / rows)));
+  const cell = Math.max(
+    0,
+    Math.floor(Math.min((area.width - 2 * spacing.margin) / columns, (area.height - 2 * spacing.margin - spacing.caption) / rows)),
+  );
   const width = cell * columns;
   const height = cell * rows;
   return {
-    box: { x: Math.round(area.x + (area.width - width) / 2), y: Math.round(area.y + (area.height - height - spacing.caption) / 2), width, height },
+    box: {
+      x: Math.round(area.x + (area.width - width) / 2),
+      y: Math.round(area.y + (area.height - height - spacing.caption) / 2),
+      width,
+      height,
+    },
     cell,
   };
 }

@@ -14,7 +14,9 @@ export function largestFreeRectangle(view: Rect, obstacles: readonly Rect[]): Re
   const inside = obstacles.filter((o) => o.width > 0 && o.height > 0 && overlaps(o, view));
   const clamp = (v: number, low: number, high: number) => Math.min(high, Math.max(low, v));
   const edges = (start: number, length: number, pick: (o: Rect) => [number, number]) =>
-    [...new Set([start, start + length, ...inside.flatMap((o) => pick(o).map((v) => clamp(v, start, start + length)))])].sort((a, b) => a - b);
+    [...new Set([start, start + length, ...inside.flatMap((o) => pick(o).map((v) => clamp(v, start, start + length)))])].sort(
+      (a, b) => a - b,
+    );
   const xs = edges(view.x, view.width, (o) => [o.x, o.x + o.width]);
   const ys = edges(view.y, view.height, (o) => [o.y, o.y + o.height]);
   let best: Rect = { x: view.x, y: view.y, width: 0, height: 0 };

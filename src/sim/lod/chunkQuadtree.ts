@@ -14,7 +14,8 @@ export class ChunkQuadtree {
   private readonly stack: Int32Array;
 
   constructor(side: number) {
-    if (!Number.isInteger(side) || side < 1) throw new RangeError(`A chunk quadtree needs a whole number of chunks per side ≥ 1, got ${side}.`);
+    if (!Number.isInteger(side) || side < 1)
+      throw new RangeError(`A chunk quadtree needs a whole number of chunks per side ≥ 1, got ${side}.`);
     this.side = side;
     this.leafCount = side * side;
     // A quadtree over n leaves has fewer than 2n nodes even when it splits in two along one axis.
@@ -34,8 +35,14 @@ export class ChunkQuadtree {
     const jMid = j1 - j0 > 1 ? (j0 + j1) >> 1 : j1;
     const first = this.nodeCount;
     let count = 0;
-    for (const [a0, a1] of [[i0, iMid], [iMid, i1]]) {
-      for (const [b0, b1] of [[j0, jMid], [jMid, j1]]) {
+    for (const [a0, a1] of [
+      [i0, iMid],
+      [iMid, i1],
+    ]) {
+      for (const [b0, b1] of [
+        [j0, jMid],
+        [jMid, j1],
+      ]) {
         if (a1 > a0 && b1 > b0) count++;
       }
     }
@@ -43,8 +50,14 @@ export class ChunkQuadtree {
     this.nodes[o + 4] = first;
     this.nodes[o + 5] = count;
     let c = 0;
-    for (const [a0, a1] of [[i0, iMid], [iMid, i1]]) {
-      for (const [b0, b1] of [[j0, jMid], [jMid, j1]]) {
+    for (const [a0, a1] of [
+      [i0, iMid],
+      [iMid, i1],
+    ]) {
+      for (const [b0, b1] of [
+        [j0, jMid],
+        [jMid, j1],
+      ]) {
         if (a1 > a0 && b1 > b0) this.fill(first + c++, a0, b0, a1, b1);
       }
     }
@@ -57,7 +70,16 @@ export class ChunkQuadtree {
    * [minY, maxY]; `margin` grows every box in x and z (vertices displaced sideways). Writes
    * leaf indices into `out` and returns how many.
    */
-  select(planes: readonly Plane[], originX: number, originZ: number, size: number, minY: number, maxY: number, out: Uint32Array, margin = 0): number {
+  select(
+    planes: readonly Plane[],
+    originX: number,
+    originZ: number,
+    size: number,
+    minY: number,
+    maxY: number,
+    out: Uint32Array,
+    margin = 0,
+  ): number {
     const nodes = this.nodes;
     const side = this.side;
     const stack = this.stack;
@@ -70,7 +92,9 @@ export class ChunkQuadtree {
       const j0 = nodes[o + 1];
       const i1 = nodes[o + 2];
       const j1 = nodes[o + 3];
-      const verdict = classifyBox(planes, originX + i0 * size - margin, minY, originZ + j0 * size - margin, originX + i1 * size + margin, maxY, originZ + j1 * size + margin);
+      const x0 = originX + i0 * size - margin;
+      const z0 = originZ + j0 * size - margin;
+      const verdict = classifyBox(planes, x0, minY, z0, originX + i1 * size + margin, maxY, originZ + j1 * size + margin);
       if (verdict === OUTSIDE) continue;
       const childCount = nodes[o + 5];
       if (verdict === INSIDE || childCount === 0) {

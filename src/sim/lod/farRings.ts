@@ -132,7 +132,16 @@ export class FarRingSelector {
       const ring = this.rings[r];
       // Rings past the fade are flat: their boxes need no room for waves.
       const flat = ring.inner >= FAR_FADE_END;
-      const found = this.trees[r].select(planes, centerX - ring.outer, centerZ - ring.outer, ring.cellSize, flat ? 0 : minY, flat ? 0 : maxY, this.scratch, flat ? 0 : margin);
+      const found = this.trees[r].select(
+        planes,
+        centerX - ring.outer,
+        centerZ - ring.outer,
+        ring.cellSize,
+        flat ? 0 : minY,
+        flat ? 0 : maxY,
+        this.scratch,
+        flat ? 0 : margin,
+      );
       for (let n = 0; n < found; n++) {
         const leaf = this.scratch[n];
         const i = leaf % ring.side;
@@ -150,7 +159,17 @@ export class FarRingSelector {
 }
 
 /** Whether a ring cell's box is outside the frustum: the brute-force twin of select(), for tests. */
-export function ringCellOutside(planes: readonly Plane[], ring: FarRing, i: number, j: number, centerX: number, centerZ: number, minY: number, maxY: number, margin = 0): boolean {
+export function ringCellOutside(
+  planes: readonly Plane[],
+  ring: FarRing,
+  i: number,
+  j: number,
+  centerX: number,
+  centerZ: number,
+  minY: number,
+  maxY: number,
+  margin = 0,
+): boolean {
   const flat = ring.inner >= FAR_FADE_END;
   const m = flat ? 0 : margin;
   const x0 = centerX - ring.outer + i * ring.cellSize - m;

@@ -78,7 +78,6 @@ export function resolvedShare(footprint: number, shortest: number, longest: numb
   return Math.min(1, Math.max(0, share));
 }
 
-
 /** The facets' variance within a pixel: the sea's total less what the normals show, never below the sun's disc. */
 export { SUN_DISC_SLOPE_VARIANCE };
 

@@ -41,5 +41,9 @@ export function deepWaterReflectance(absorption: number, scattering: number): nu
 
 /** R at the three wavelengths, red, green, blue: the body colour of deep clear water, per unit down-welling light. */
 export function bodyColor(): [number, number, number] {
-  return WAVELENGTHS.map((wavelength, i) => deepWaterReflectance(PURE_WATER_ABSORPTION[i], molecularScattering(wavelength))) as [number, number, number];
+  return WAVELENGTHS.map((wavelength, i) => deepWaterReflectance(PURE_WATER_ABSORPTION[i], molecularScattering(wavelength))) as [
+    number,
+    number,
+    number,
+  ];
 }

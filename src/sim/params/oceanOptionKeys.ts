@@ -5,7 +5,23 @@ import { isParamKey, paramKeys, type OceanParams, type ParamKey } from './params
  * and side-by-side models (an Ocean draws one model: `waves`). The library's `Ocean` never
  * looks at them, so a user who passes one is told so instead of being ignored.
  */
-export const APP_ONLY_PARAMS = ['compare', 'compareSplit', 'exposure', 'boatSpeed', 'boatHeading', 'boatResponse', 'boatFollow', 'boatTurnRate', 'wake', 'wakeStrength', 'wakeGuide', 'view', 'fresnelPlot', 'timeScale', 'physics'] as const satisfies readonly ParamKey[];
+export const APP_ONLY_PARAMS = [
+  'compare',
+  'compareSplit',
+  'exposure',
+  'boatSpeed',
+  'boatHeading',
+  'boatResponse',
+  'boatFollow',
+  'boatTurnRate',
+  'wake',
+  'wakeStrength',
+  'wakeGuide',
+  'view',
+  'fresnelPlot',
+  'timeScale',
+  'physics',
+] as const satisfies readonly ParamKey[];
 
 export type AppOnlyParamKey = (typeof APP_ONLY_PARAMS)[number];
 /** The parameters an `Ocean` reads. */
@@ -32,7 +48,9 @@ export function oceanParametersOf(params: OceanParams): OceanParameters {
 export function checkOceanKeys(options: object, extraKeys: readonly string[], where: string): void {
   for (const key of Object.keys(options)) {
     if (!extraKeys.includes(key) && (isAppOnly(key) || !isParamKey(key))) {
-      throw new Error(`${where}: "${key}" is not an Ocean option${isAppOnly(key) ? ' but the app\'s (boat, clock, panels, views, compare)' : ''}. Its options: ${[...oceanParamKeys, ...extraKeys].join(', ')}.`);
+      throw new Error(
+        `${where}: "${key}" is not an Ocean option${isAppOnly(key) ? " but the app's (boat, clock, panels, views, compare)" : ''}. Its options: ${[...oceanParamKeys, ...extraKeys].join(', ')}.`,
+      );
     }
   }
 }

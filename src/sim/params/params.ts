@@ -45,7 +45,12 @@ export const paramDefs = {
   // Side by side (src/sim/compare/compareLayout.ts): two or three models, left to right, on the same
   // camera, wind and seed, each drawing only its own strip of the screen. The first replaces
   // `waves` while the split is on: the boat, the underwater view and the physics panel use it.
-  compare: { kind: 'choice', default: COMPARE_OFF, options: [COMPARE_OFF, ...compareOrderings(WAVE_MODEL_NAMES)], label: 'Compare models side by side' },
+  compare: {
+    kind: 'choice',
+    default: COMPARE_OFF,
+    options: [COMPARE_OFF, ...compareOrderings(WAVE_MODEL_NAMES)],
+    label: 'Compare models side by side',
+  },
   // Where the dividers stand, as fractions of the view's width (the second only with three models).
   compareSplit: { kind: 'number', default: 0.5, min: 0, max: 1, step: 0.001, unit: '', label: 'Compare: first divider' },
   compareSplit2: { kind: 'number', default: 0.75, min: 0, max: 1, step: 0.001, unit: '', label: 'Compare: second divider' },
@@ -120,7 +125,12 @@ export const paramDefs = {
   // What the field solves: deep water (iWave), the plain wave equation, or the two side by side
   // about the field's centre (src/sim/iwave/interactiveField.ts); and the teaching rings drawn
   // round each stone where theory puts its crests.
-  iwaveEquation: { kind: 'choice', default: 'dispersive', options: ['dispersive', 'non-dispersive', 'side-by-side'], label: 'Interactive waves: equation' },
+  iwaveEquation: {
+    kind: 'choice',
+    default: 'dispersive',
+    options: ['dispersive', 'non-dispersive', 'side-by-side'],
+    label: 'Interactive waves: equation',
+  },
   iwaveGuide: { kind: 'boolean', default: false, label: 'Rings where theory puts the crests' },
   // Teaching views of the seed's figures.
   shading: { kind: 'choice', default: 'water', options: ['water', 'normals'], label: 'Shading' },
@@ -130,7 +140,12 @@ export const paramDefs = {
   normalsCompare: { kind: 'boolean', default: false, label: 'Compare slope | fabricated normals' },
   // What the canvas shows: the sea, or a teaching figure in its place (src/sim/teaching/teachingFigures.ts):
   // the heightmaps, the Perlin noise's steps, the sky's cube map unfolded.
-  view: { kind: 'choice', default: 'ocean', options: ['ocean', 'heightmap', 'noise-hash', 'noise-smoothing', 'noise-octaves', 'noise-blend', 'sky-cube'], label: 'View' },
+  view: {
+    kind: 'choice',
+    default: 'ocean',
+    options: ['ocean', 'heightmap', 'noise-hash', 'noise-smoothing', 'noise-octaves', 'noise-blend', 'sky-cube'],
+    label: 'View',
+  },
   fresnelPlot: { kind: 'boolean', default: false, label: 'Fresnel plot' },
   // Slow motion for teaching: simulated seconds per second of the frame loop (and per Step of 1/60 s).
   timeScale: { kind: 'choice', default: '1', options: ['1', '0.5', '0.25', '0.1'], label: 'Speed (time scale)' },
@@ -258,7 +273,10 @@ export function parseParamText(key: ParamKey, text: string): { value: OceanParam
   }
   if (def.kind === 'choice') {
     if (def.options.includes(text)) return { value: text as OceanParams[ParamKey] };
-    return { value: def.default as OceanParams[ParamKey], notice: message('paramNotChoice', { key, text, options: def.options.join(', '), fallback: def.default }) };
+    return {
+      value: def.default as OceanParams[ParamKey],
+      notice: message('paramNotChoice', { key, text, options: def.options.join(', '), fallback: def.default }),
+    };
   }
   if (def.kind === 'color') {
     const hex = text.startsWith('#') ? text : `#${text}`;

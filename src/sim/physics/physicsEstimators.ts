@@ -307,12 +307,24 @@ export function peakPeriod(peakOmega: number): number {
  * FFTs for each new t) computes it once for all the points, so P points cost about what one
  * does.
  */
-export function heightSeriesAt(sampler: HeightSampler, points: readonly (readonly [number, number])[], startTime: number, timeStep: number, count: number): Float64Array[] {
+export function heightSeriesAt(
+  sampler: HeightSampler,
+  points: readonly (readonly [number, number])[],
+  startTime: number,
+  timeStep: number,
+  count: number,
+): Float64Array[] {
   return finish(heightSeriesSteps(sampler, points, startTime, timeStep, count));
 }
 
 /** heightSeriesAt, one time per step. */
-export function* heightSeriesSteps(sampler: HeightSampler, points: readonly (readonly [number, number])[], startTime: number, timeStep: number, count: number): Steps<Float64Array[]> {
+export function* heightSeriesSteps(
+  sampler: HeightSampler,
+  points: readonly (readonly [number, number])[],
+  startTime: number,
+  timeStep: number,
+  count: number,
+): Steps<Float64Array[]> {
   const series = points.map(() => new Float64Array(count));
   for (let i = 0; i < count; i++) {
     const t = startTime + i * timeStep;
@@ -332,7 +344,14 @@ export function meanFrequencySpectrum(series: readonly ArrayLike<number>[], time
 }
 
 /** One point's heights η(x, z, t₀ + i dt), i < count: the series the spectrum and Hs read. */
-export function heightSeries(sampler: HeightSampler, x: number, z: number, startTime: number, timeStep: number, count: number): Float64Array {
+export function heightSeries(
+  sampler: HeightSampler,
+  x: number,
+  z: number,
+  startTime: number,
+  timeStep: number,
+  count: number,
+): Float64Array {
   const series = new Float64Array(count);
   for (let i = 0; i < count; i++) series[i] = sampler(x, z, startTime + i * timeStep);
   return series;

@@ -179,7 +179,11 @@ function spectrumCitation(sea: SeaState): Citation[] {
           formula: 'S(ω) = α g² ω⁻⁵ exp(−β (g/(U₁₉.₅ ω))⁴), α = 8.1·10⁻³, β = 0.74; ωp = 0.877 g / U₁₉.₅',
           source: 'Pierson & Moskowitz 1964, J. Geophys. Res. 69(24)',
         },
-        { what: 'Hs (PM)', formula: 'Hs ≈ 0.21 U₁₉.₅² / g, U₁₉.₅ ≈ 1.026 U₁₀', source: 'Pierson & Moskowitz 1964; Stewart 2008, eq. 16.31' },
+        {
+          what: 'Hs (PM)',
+          formula: 'Hs ≈ 0.21 U₁₉.₅² / g, U₁₉.₅ ≈ 1.026 U₁₀',
+          source: 'Pierson & Moskowitz 1964; Stewart 2008, eq. 16.31',
+        },
       ];
     case 'jonswap':
       return [
@@ -188,10 +192,20 @@ function spectrumCitation(sea: SeaState): Citation[] {
           formula: 'S = α g² ω⁻⁵ exp(−5/4 (ωp/ω)⁴) γ^r, γ = 3.3; α = 0.076 x̃^−0.22, ωp = 22 (g²/(U₁₀ F))^⅓',
           source: 'Hasselmann et al. 1973, Dtsch. Hydrogr. Z. A8(12)',
         },
-        { what: 'Hs (JONSWAP)', formula: 'g Hs / U₁₀² = 1.6·10⁻³ (g F / U₁₀²)^½', source: 'Hasselmann et al. 1973; CERC 1984, Shore Protection Manual, eq. 3-33' },
+        {
+          what: 'Hs (JONSWAP)',
+          formula: 'g Hs / U₁₀² = 1.6·10⁻³ (g F / U₁₀²)^½',
+          source: 'Hasselmann et al. 1973; CERC 1984, Shore Protection Manual, eq. 3-33',
+        },
       ];
     case 'phillips':
-      return [{ what: 'Spectrum (Phillips)', formula: 'S(ω) = α g² ω⁻⁵ above the peak', source: 'Phillips 1958, J. Fluid Mech. 4(4); Tessendorf 2001 eq. 23' }];
+      return [
+        {
+          what: 'Spectrum (Phillips)',
+          formula: 'S(ω) = α g² ω⁻⁵ above the peak',
+          source: 'Phillips 1958, J. Fluid Mech. 4(4); Tessendorf 2001 eq. 23',
+        },
+      ];
   }
 }
 
@@ -212,7 +226,14 @@ export function* physicsSteps(measured: MeasuredSea, time: number): Steps<Physic
   const lambda = (2 * Math.PI) / peakK;
 
   const theory = (k: number) => angularFrequency(k, depth);
-  const points = yield* dispersionSteps(measured.height, { size: 4 * lambda, resolution: 32, startTime: time, timeStep: tp / 16, snapshots: 16, modes: 24 });
+  const points = yield* dispersionSteps(measured.height, {
+    size: 4 * lambda,
+    resolution: 32,
+    startTime: time,
+    timeStep: tp / 16,
+    snapshots: 16,
+    modes: 24,
+  });
   const fit = fitDispersion(points, theory);
 
   const dt = tp / 8;

@@ -16,7 +16,15 @@ import { gerstnerWavesFor } from '../waves/gerstner/gerstnerLiveModel';
 /** The tool the quantity is read with: the ruler (a drag on the sea) or the physics panel's "measured" column. */
 export type ExerciseTool = 'ruler' | 'physics';
 
-export type ExerciseQuantity = 'significantHeight' | 'wavesSignificantHeight' | 'peakPeriod' | 'transverseWavelength' | 'turningRadius' | 'ringRadius' | 'crestSpacing' | 'groupDistance';
+export type ExerciseQuantity =
+  | 'significantHeight'
+  | 'wavesSignificantHeight'
+  | 'peakPeriod'
+  | 'transverseWavelength'
+  | 'turningRadius'
+  | 'ringRadius'
+  | 'crestSpacing'
+  | 'groupDistance';
 
 /**
  * What the sea is doing at the moment of the check besides its parameters: how long ago the

@@ -67,7 +67,12 @@ export function spectralTheory(spectrum: Pick<FrequencySpectrum, 'density' | 'pe
 }
 
 /** The seed swell's own heights at (x, z) and the record's times. */
-export function swellRecord(params: Pick<OceanParams, 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed'>, x: number, z: number, times: ArrayLike<number>): HeightRecord {
+export function swellRecord(
+  params: Pick<OceanParams, 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed'>,
+  x: number,
+  z: number,
+  times: ArrayLike<number>,
+): HeightRecord {
   const heights = Float64Array.from(times, (t) => swellHeight(surfaceStateAt(params, t), x, z));
   return { times, heights };
 }

@@ -75,7 +75,8 @@ export function wakeHeightBound(data: WakeUniformData): number {
   const c = Math.abs(data.params[0]);
   const sigma = data.params[1];
   const g = data.params[3];
-  const peak = (tau: number) => (tau <= 0 ? 0 : Math.min(tau ** 3 / sigma ** 4, 64 / (Math.E * g * g * sigma * sigma * tau)) * historyWeight(tau));
+  const peak = (tau: number) =>
+    tau <= 0 ? 0 : Math.min(tau ** 3 / sigma ** 4, 64 / (Math.E * g * g * sigma * sigma * tau)) * historyWeight(tau);
   let sum = 0;
   for (let i = 1; i < data.count; i++) {
     const a = data.track[(i - 1) * 4 + 2];
@@ -123,7 +124,10 @@ export class BoatWake {
     const fresh = head === null || !(time >= head.time) || time - head.time > TRACK_MAX_GAP;
     // Paused on a replayed track and given new controls (a slider, the API): replay them, so
     // a frozen view shows the wake of what it now says the boat does.
-    const changed = r !== null && r.time === time && (r.x !== c.x || r.z !== c.z || r.heading !== c.heading || r.speed !== c.speed || r.turnRate !== c.turnRate);
+    const changed =
+      r !== null &&
+      r.time === time &&
+      (r.x !== c.x || r.z !== c.z || r.heading !== c.heading || r.speed !== c.speed || r.turnRate !== c.turnRate);
     if (fresh || changed) this.replay(time, c);
     // A paused view drawn again with the boat where it was: the track, and so the packed
     // uniforms, stand (recording would change nothing but cost the repacking).

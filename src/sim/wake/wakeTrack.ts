@@ -63,7 +63,8 @@ export class TrackRecorder {
     readonly capacity = TRACK_FINE_SAMPLES,
     private readonly maxGap = TRACK_MAX_GAP,
   ) {
-    if (!(interval > 0) || !Number.isInteger(capacity) || capacity < 1) throw new Error('TrackRecorder needs interval > 0 and capacity ≥ 1.');
+    if (!(interval > 0) || !Number.isInteger(capacity) || capacity < 1)
+      throw new Error('TrackRecorder needs interval > 0 and capacity ≥ 1.');
     this.buffer = new Float64Array(capacity * 4);
   }
 
@@ -132,14 +133,16 @@ export class TrackRecorder {
     for (let i = 0; i < samples.length; i++) {
       const s = samples[i];
       if (![s.x, s.z, s.time, s.speed].every(Number.isFinite)) throw new Error('Track sample is not finite.');
-      if (i > 0 && Math.abs(s.time - samples[i - 1].time - state.interval) > 1e-6) throw new Error('Track samples are not one interval apart.');
+      if (i > 0 && Math.abs(s.time - samples[i - 1].time - state.interval) > 1e-6)
+        throw new Error('Track samples are not one interval apart.');
       recorder.push(s);
     }
     if (state.head) {
       const h = state.head;
       if (![h.x, h.z, h.time, h.speed].every(Number.isFinite)) throw new Error('Track head is not finite.');
       const newest = samples[samples.length - 1];
-      if (newest && (h.time < newest.time || h.time - newest.time >= state.interval + 1e-6)) throw new Error('Track head does not follow its samples.');
+      if (newest && (h.time < newest.time || h.time - newest.time >= state.interval + 1e-6))
+        throw new Error('Track head does not follow its samples.');
       recorder.head = { ...h };
     } else if (samples.length > 0) {
       throw new Error('A track with samples needs a head.');
@@ -201,7 +204,10 @@ export class WakeTrack {
   }
 
   static fromState(state: { fine: TrackState; coarse: TrackState }): WakeTrack {
-    return new WakeTrack(TrackRecorder.fromState(state.fine, TRACK_FINE_SAMPLES), TrackRecorder.fromState(state.coarse, TRACK_COARSE_SAMPLES));
+    return new WakeTrack(
+      TrackRecorder.fromState(state.fine, TRACK_FINE_SAMPLES),
+      TrackRecorder.fromState(state.coarse, TRACK_COARSE_SAMPLES),
+    );
   }
 
   /** Share-link text: the two recorders' texts joined by "~". */

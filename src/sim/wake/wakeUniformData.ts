@@ -1,4 +1,14 @@
-import { FOOTPRINT_PER_LENGTH, GRAVITY, TAPER_END, TAPER_START, wakeAmplitudeConstant, wakeHeightAndGradient, wakeSources, type WakeParams, type WakeSource } from './kelvinWake';
+import {
+  FOOTPRINT_PER_LENGTH,
+  GRAVITY,
+  TAPER_END,
+  TAPER_START,
+  wakeAmplitudeConstant,
+  wakeHeightAndGradient,
+  wakeSources,
+  type WakeParams,
+  type WakeSource,
+} from './kelvinWake';
 import { BOW_DECAY, TRAIL_DECAY } from './wakeFoam';
 import { TRACK_POINTS, type TrackPoint } from './wakeTrack';
 
@@ -48,7 +58,12 @@ export function packWakeUniforms(points: readonly TrackPoint[], time: number, pa
     origin,
     track,
     count: on ? sources.length : 0,
-    params: [on ? wakeAmplitudeConstant(params) : 0, FOOTPRINT_PER_LENGTH * params.hullLength, on ? wakeRadius(sources, params.hullLength) : 0, params.gravity ?? GRAVITY],
+    params: [
+      on ? wakeAmplitudeConstant(params) : 0,
+      FOOTPRINT_PER_LENGTH * params.hullLength,
+      on ? wakeRadius(sources, params.hullLength) : 0,
+      params.gravity ?? GRAVITY,
+    ],
     taper: [TAPER_START, TAPER_END],
     foam: [params.hullLength, hullBeam, TRAIL_DECAY, BOW_DECAY],
   };
@@ -57,7 +72,8 @@ export function packWakeUniforms(points: readonly TrackPoint[], time: number, pa
 /** The sources exactly as the GPU sees them (float32-rounded), for the parity probe's CPU side. */
 export function sourcesFromUniforms(data: WakeUniformData): WakeSource[] {
   const out: WakeSource[] = [];
-  for (let i = 0; i < data.count; i++) out.push({ x: data.track[i * 4], z: data.track[i * 4 + 1], age: data.track[i * 4 + 2], speed: data.track[i * 4 + 3] });
+  for (let i = 0; i < data.count; i++)
+    out.push({ x: data.track[i * 4], z: data.track[i * 4 + 1], age: data.track[i * 4 + 2], speed: data.track[i * 4 + 3] });
   return out;
 }
 

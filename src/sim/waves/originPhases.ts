@@ -22,7 +22,12 @@ function fract(x: number): number {
  * share cₓ oₓ + c_z o_z folded in: the shader's angle fract(cₓ x) + fract(c_z z) + τ at
  * x = oₓ + rₓ equals fract(cₓ rₓ) + fract(c_z r_z) + τ′ modulo whole turns.
  */
-export function gerstnerOriginPhases(waves: readonly OriginWave[], timePhases: ArrayLike<number>, originX: number, originZ: number): Float64Array {
+export function gerstnerOriginPhases(
+  waves: readonly OriginWave[],
+  timePhases: ArrayLike<number>,
+  originX: number,
+  originZ: number,
+): Float64Array {
   const phases = new Float64Array(waves.length);
   for (let i = 0; i < waves.length; i++) {
     // Each product reduced alone: cₓ oₓ reaches 10⁶ turns, which a double still holds to 1e-10.

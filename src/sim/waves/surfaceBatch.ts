@@ -21,7 +21,9 @@ export type SurfaceSamples = Float32Array | Float64Array;
 export function checkSurfaceBatch(points: unknown, out: unknown): SurfaceSamples {
   const typed = points instanceof Float32Array || points instanceof Float64Array;
   if (!typed && !Array.isArray(points)) {
-    throw new TypeError(`sampleSurfaces needs points as a Float32Array, Float64Array or array of x, z pairs (metres), got ${describe(points)}.`);
+    throw new TypeError(
+      `sampleSurfaces needs points as a Float32Array, Float64Array or array of x, z pairs (metres), got ${describe(points)}.`,
+    );
   }
   const list = points as ArrayLike<unknown>;
   if (list.length % 2 !== 0) throw new TypeError(`sampleSurfaces needs x, z pairs: an even number of coordinates, got ${list.length}.`);
@@ -34,7 +36,9 @@ export function checkSurfaceBatch(points: unknown, out: unknown): SurfaceSamples
   const wanted = (list.length / 2) * SAMPLE_FLOATS;
   if (out === undefined) return new Float32Array(wanted);
   if (!(out instanceof Float32Array || out instanceof Float64Array)) {
-    throw new TypeError(`sampleSurfaces writes into a Float32Array or Float64Array (4 numbers per point: height, nx, ny, nz), got ${describe(out)}.`);
+    throw new TypeError(
+      `sampleSurfaces writes into a Float32Array or Float64Array (4 numbers per point: height, nx, ny, nz), got ${describe(out)}.`,
+    );
   }
   if (out.length !== wanted) {
     throw new TypeError(`sampleSurfaces needs out of length ${wanted} (4 per point for ${list.length / 2} points), got ${out.length}.`);

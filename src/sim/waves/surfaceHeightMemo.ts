@@ -15,7 +15,8 @@ export class SurfaceHeightMemo {
   private last = Number.NaN;
 
   height(model: LiveWaveModel, x: number, z: number, time: number): number {
-    if (model === this.model && model.surfaceRevision === this.revision && time === this.time && x === this.x && z === this.z) return this.last;
+    if (model === this.model && model.surfaceRevision === this.revision && time === this.time && x === this.x && z === this.z)
+      return this.last;
     const height = model.height(x, z, time);
     // Read after the height: taking it may compute the model's data (the FFT twin at a jump).
     this.revision = model.surfaceRevision;

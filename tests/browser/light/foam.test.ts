@@ -57,7 +57,8 @@ describe('foam from above', () => {
     for (const ratio of ratios) expect(Math.abs(ratio - 1), ratios.map((r) => r.toFixed(2)).join(', ')).toBeLessThan(TOLERANCE);
     const withoutGroups = await coverageRatios(true, '&waveGroups=0');
     console.log(`[oceano] without wave groups (waveGroups=0): ${withoutGroups.map((r) => r.toFixed(2)).join(', ')}`);
-    for (const ratio of withoutGroups) expect(Math.abs(ratio - 1), `without groups: ${withoutGroups.map((r) => r.toFixed(2)).join(', ')}`).toBeLessThan(TOLERANCE);
+    for (const ratio of withoutGroups)
+      expect(Math.abs(ratio - 1), `without groups: ${withoutGroups.map((r) => r.toFixed(2)).join(', ')}`).toBeLessThan(TOLERANCE);
     const control = await coverageRatios(false);
     console.log(`[oceano] control, foam left behind drawn solid: ${control.map((r) => r.toFixed(2)).join(', ')}`);
     expect(Math.min(...control), control.map((r) => r.toFixed(2)).join(', ')).toBeGreaterThan(1 + TOLERANCE);
@@ -78,7 +79,9 @@ describe('foam from above', () => {
     await page.close();
     const expected = { peak: Math.min(...SOLID), tint: SOLID[2] - SOLID[0] };
     const line = (m: { peak: number; tint: number }) => `peak ${m.peak.toFixed(1)}, blue over red ${m.tint.toFixed(1)}`;
-    console.log(`[oceano] solid foam from its reflectance: ${line(expected)}; drawn: ${line(measured)}; with the albedo before: ${line(brighter)}; lit by a grey sky: ${line(greySky)}`);
+    console.log(
+      `[oceano] solid foam from its reflectance: ${line(expected)}; drawn: ${line(measured)}; with the albedo before: ${line(brighter)}; lit by a grey sky: ${line(greySky)}`,
+    );
     expect(Math.abs(measured.peak - expected.peak), line(measured)).toBeLessThanOrEqual(MAX_PEAK_OFF);
     expect(Math.abs(measured.tint - expected.tint), line(measured)).toBeLessThanOrEqual(MAX_TINT_OFF);
     expect(Math.abs(brighter.peak - expected.peak), line(brighter)).toBeGreaterThan(MAX_PEAK_OFF);

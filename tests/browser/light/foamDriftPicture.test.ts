@@ -70,7 +70,9 @@ describe('the foam left behind drifts with the surface', () => {
     const [x0, z0] = foamDriftTexels(velocity, texel, foamLatticeIndex(FROM));
     const expected = [x1 - x0, z1 - z0];
     const control = await measuredShift(false);
-    console.log(`[oceano] foam drift over ${TO - FROM} s: best shift ${shift.join(', ')} texels of ${texel.toFixed(3)} m (expected ${expected.join(', ')}); control ${control.shift.join(', ')}`);
+    console.log(
+      `[oceano] foam drift over ${TO - FROM} s: best shift ${shift.join(', ')} texels of ${texel.toFixed(3)} m (expected ${expected.join(', ')}); control ${control.shift.join(', ')}`,
+    );
     expect(shift).toEqual(expected);
     expect(expected[0]).toBeGreaterThanOrEqual(4);
     expect(control.shift).toEqual([0, 0]);

@@ -32,7 +32,8 @@ async function relief(foamTexture: boolean): Promise<{ contrast: number; pixels:
     for (let y = BOX; y < H - BOX; y++) {
       for (let x = BOX; x < W - BOX; x++) {
         let solid = true;
-        for (let j = -BOX; j <= BOX && solid; j++) for (let i = -BOX; i <= BOX && solid; i++) solid = light[(y + j) * W + x + i] >= SOLID_LEVELS;
+        for (let j = -BOX; j <= BOX && solid; j++)
+          for (let i = -BOX; i <= BOX && solid; i++) solid = light[(y + j) * W + x + i] >= SOLID_LEVELS;
         if (!solid) continue;
         const k = y * W + x;
         fine += detail[k] * detail[k];

@@ -51,13 +51,19 @@ function sheen(elevation: number): number {
 /** The picture with every sea pixel solid foam, with or without the sheen; `faults` are more edits of the shader. */
 async function solidFoam(withSheen: boolean, faults: [string, string][] = []): Promise<PNG> {
   const cam = [...eye, ...target].map((c) => c.toFixed(3)).join(',');
-  const { page } = await openOcean(harness, `waves=fft&windSpeed=3&sunElevation=${SUN_ELEVATION}&sunAzimuth=0&t=10&cam=${cam}`, WIDTH, HEIGHT);
+  const { page } = await openOcean(
+    harness,
+    `waves=fft&windSpeed=3&sunElevation=${SUN_ELEVATION}&sunAzimuth=0&t=10&cam=${cam}`,
+    WIDTH,
+    HEIGHT,
+  );
   const edits: [string, string][] = [['if (foam > 0.0) {', 'foam = 1.0;\n  if (foam > 0.0) {'], ...faults];
   if (!withSheen) edits.push(['uSunColor * SUN_IRRADIANCE * sheen * sunUp', '0.0 * sheen']);
   await page.evaluate((edits) => {
     const materials = new Set<{ fragmentShader: string; needsUpdate: boolean }>();
     window.oceano.three.scene.traverse((c) => {
-      const material = (c as unknown as { material?: { uniforms?: Record<string, unknown>; fragmentShader: string; needsUpdate: boolean } }).material;
+      const material = (c as unknown as { material?: { uniforms?: Record<string, unknown>; fragmentShader: string; needsUpdate: boolean } })
+        .material;
       if (material?.uniforms?.uEyeRelative) materials.add(material);
     });
     for (const material of materials) {
@@ -106,13 +112,19 @@ describe("foam's wet sheen", () => {
   it('is the rough Beckmann lobe the material states, in size and in its fall across the view', async () => {
     const without = await solidFoam(false);
     const ratios = sheenRatios(await solidFoam(true), without);
-    const smoother = sheenRatios(await solidFoam(true, [['const float FOAM_SHEEN_VARIANCE = 0.3;', 'const float FOAM_SHEEN_VARIANCE = 0.15;']]), without);
+    const smoother = sheenRatios(
+      await solidFoam(true, [['const float FOAM_SHEEN_VARIANCE = 0.3;', 'const float FOAM_SHEEN_VARIANCE = 0.15;']]),
+      without,
+    );
     const say = `measured over predicted, bands of ${BAND} rows from the horizon down: ${ratios.map((r) => r.toFixed(2)).join(', ')}; control (σ² 0.15): ${smoother.map((r) => r.toFixed(2)).join(', ')}`;
     console.log(`[oceano] foam sheen ${say}`);
     for (const ratio of ratios) {
       expect(ratio, say).toBeGreaterThan(RATIO_BOUNDS[0]);
       expect(ratio, say).toBeLessThan(RATIO_BOUNDS[1]);
     }
-    expect(smoother.some((r) => r > RATIO_BOUNDS[1]), say).toBe(true);
+    expect(
+      smoother.some((r) => r > RATIO_BOUNDS[1]),
+      say,
+    ).toBe(true);
   });
 });

@@ -19,12 +19,16 @@ async function withSplit(page: Page, bound: string): Promise<Buffer> {
     const o = window.oceano;
     o.pause();
     o.three.scene.traverse((object) => {
-      const material = (object as { material?: { uniforms?: Record<string, unknown>; vertexShader: string; needsUpdate: boolean; userData: Record<string, unknown> } }).material;
+      const material = (
+        object as {
+          material?: { uniforms?: Record<string, unknown>; vertexShader: string; needsUpdate: boolean; userData: Record<string, unknown> };
+        }
+      ).material;
       if (!material?.uniforms?.uEyeRelative) return;
       material.userData.shipped ??= material.vertexShader;
       const shipped = material.userData.shipped as string;
       const line = 'const float GERSTNER_VERTEX_SLOPE_ERROR = 0.02;';
-      if (!shipped.includes(line)) throw new Error('The ocean\'s vertex shader has no split bound to set.');
+      if (!shipped.includes(line)) throw new Error("The ocean's vertex shader has no split bound to set.");
       material.vertexShader = shipped.split(line).join(`const float GERSTNER_VERTEX_SLOPE_ERROR = ${value};`);
       material.needsUpdate = true;
     });
@@ -50,7 +54,7 @@ function meanDifference(a: Buffer, b: Buffer): number {
   return sum / count;
 }
 
-describe('Gerstner\'s normal: long waves per vertex, short ones per pixel', () => {
+describe("Gerstner's normal: long waves per vertex, short ones per pixel", () => {
   // Control: every wave per vertex differs by over 0.5.
   it('draws the closed-form normal within 0.1 level of every wave per pixel', { timeout: 120_000 }, async () => {
     const { page } = await openOcean(harness, VIEW.query, VIEW.width, VIEW.height);

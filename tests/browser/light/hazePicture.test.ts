@@ -60,10 +60,17 @@ const PARITY_SIZE = { width: 320, height: 180 };
 // Measured: median 0.0082 (95th percentile 0.0218) over 3966 pixels; the control 0.065 (0.108).
 const PARITY_MEDIAN_LIMIT = 0.02;
 
-async function hazeRatios(cpuWeight: (beta: number, distance: number) => number): Promise<{ median: number; worst: number; pixels: number }> {
+async function hazeRatios(
+  cpuWeight: (beta: number, distance: number) => number,
+): Promise<{ median: number; worst: number; pixels: number }> {
   const { width, height } = PARITY_SIZE;
   const cam = [...PARITY_EYE, ...PARITY_TARGET].join(',');
-  const { page } = await openOcean(harness, `waves=seed&swellAmplitude=0&rippleStrength=0&seaRoughness=false&subsurface=false&sunAzimuth=180&sunElevation=30&t=10&cam=${cam}`, width, height);
+  const { page } = await openOcean(
+    harness,
+    `waves=seed&swellAmplitude=0&rippleStrength=0&seaRoughness=false&subsurface=false&sunAzimuth=180&sunElevation=30&t=10&cam=${cam}`,
+    width,
+    height,
+  );
   const pictures: PNG[] = [];
   for (const visibility of PARITY_VISIBILITIES) {
     await page.evaluate((v) => window.oceano.setParams({ visibility: v }), visibility);
@@ -94,7 +101,9 @@ describe('the haze on the GPU', () => {
   it('weighs each pixel as the CPU does, from 300 m up at three visibilities', async () => {
     const exact = await hazeRatios((beta, distance) => hazeWeight(beta, PARITY_EYE[1], 0, distance));
     const flat = await hazeRatios((beta, distance) => hazeWeight(beta, 0, 0, distance));
-    console.log(`[oceano] haze parity over ${exact.pixels} pixels: ratio error median ${exact.median.toFixed(4)}, 95th percentile ${exact.worst.toFixed(4)}; control ${flat.median.toFixed(4)}, ${flat.worst.toFixed(4)}`);
+    console.log(
+      `[oceano] haze parity over ${exact.pixels} pixels: ratio error median ${exact.median.toFixed(4)}, 95th percentile ${exact.worst.toFixed(4)}; control ${flat.median.toFixed(4)}, ${flat.worst.toFixed(4)}`,
+    );
     expect(exact.pixels).toBeGreaterThan(500);
     expect(exact.median).toBeLessThan(PARITY_MEDIAN_LIMIT);
     expect(flat.median).toBeGreaterThan(PARITY_MEDIAN_LIMIT);

@@ -24,7 +24,8 @@ function farDetail(png: Buffer): number {
   const luma = (x: number, y: number) => pixelLuminance(image.data, y * image.width + x);
   let sum = 0;
   let count = 0;
-  for (let y = FAR_ROWS[0]; y < FAR_ROWS[1]; y++) for (let x = 0; x + 1 < LEFT_OF_GLINT; x++, count++) sum += Math.abs(luma(x + 1, y) - luma(x, y));
+  for (let y = FAR_ROWS[0]; y < FAR_ROWS[1]; y++)
+    for (let x = 0; x + 1 < LEFT_OF_GLINT; x++, count++) sum += Math.abs(luma(x + 1, y) - luma(x, y));
   return sum / count;
 }
 

@@ -45,7 +45,10 @@ async function surfaceHeights(page: Page, pixels: [number, number][]): Promise<(
   })()`)) as (number | null)[];
 }
 
-async function crestAndTrough(fixes: Record<string, boolean> | null, waves: 'fft' | 'seed' | 'gerstner' = 'fft'): Promise<{ on: Colours; off: Colours }> {
+async function crestAndTrough(
+  fixes: Record<string, boolean> | null,
+  waves: 'fft' | 'seed' | 'gerstner' = 'fft',
+): Promise<{ on: Colours; off: Colours }> {
   const { page } = await openOcean(harness, glowQuery(true, waves), width, height);
   await page.evaluate(() => window.oceano.pause());
   if (fixes) await page.evaluate((f) => window.oceano.debug.setShadingFixes(f), fixes);
@@ -60,7 +63,8 @@ async function crestAndTrough(fixes: Record<string, boolean> | null, waves: 'fft
   const share = Math.floor(0.15 * hits.length);
   const troughs = hits.slice(0, share).map(([, i]) => pixels[i]);
   const crests = hits.slice(hits.length - share).map(([, i]) => pixels[i]);
-  const mean = (image: PNG, at: [number, number][]) => [0, 1, 2].map((c) => at.reduce((sum, [x, y]) => sum + image.data[4 * (y * width + x) + c], 0) / at.length);
+  const mean = (image: PNG, at: [number, number][]) =>
+    [0, 1, 2].map((c) => at.reduce((sum, [x, y]) => sum + image.data[4 * (y * width + x) + c], 0) / at.length);
   return { on: { crest: mean(on, crests), trough: mean(on, troughs) }, off: { crest: mean(off, crests), trough: mean(off, troughs) } };
 }
 
@@ -106,7 +110,11 @@ describe('the subsurface glow', () => {
   // frozen frame, so the troughs' gain, 0.0, is the noise), more green than red, and the
   // trough under a tenth of the crest's gain.
   it('lights the crests, not the troughs, on the seed and Gerstner seas too', { timeout: 240_000 }, async () => {
-    const ADDED = ['crest gains green more than red', 'crest greener than trough by more than without', 'trough gains under a tenth of the crest'];
+    const ADDED = [
+      'crest gains green more than red',
+      'crest greener than trough by more than without',
+      'trough gains under a tenth of the crest',
+    ];
     for (const waves of ['seed', 'gerstner'] as const) {
       const { on, off } = await crestAndTrough(null, waves);
       console.log(`[oceano] ${waves}: ${describeColours(on, off)}`);

@@ -56,7 +56,10 @@ async function repeatPeak(windSpeed: number, fixed: boolean, extraQuery = ''): P
   return measuredPeak(windSpeed, { fixes: fixed ? undefined : { foamBreakup: false }, extraQuery });
 }
 
-async function measuredPeak(windSpeed: number, { fixes, extraQuery = '', measure = whiteFoam, minLagMetres = MIN_LAG_METRES }: RepeatOptions): Promise<Peak> {
+async function measuredPeak(
+  windSpeed: number,
+  { fixes, extraQuery = '', measure = whiteFoam, minLagMetres = MIN_LAG_METRES }: RepeatOptions,
+): Promise<Peak> {
   const { page } = await openOcean(harness, tilingQuery(windSpeed) + extraQuery, TILING_VIEW.width, TILING_VIEW.height);
   if (fixes) await page.evaluate((f) => window.oceano.debug.setShadingFixes(f), fixes);
   const correlations: Autocorrelation[] = [];
@@ -69,7 +72,11 @@ async function measuredPeak(windSpeed: number, { fixes, extraQuery = '', measure
   }
   await page.close();
   const [first] = correlations;
-  const mean: Autocorrelation = { maxX: first.maxX, maxY: first.maxY, at: (dx, dy) => correlations.reduce((sum, c) => sum + c.at(dx, dy), 0) / correlations.length };
+  const mean: Autocorrelation = {
+    maxX: first.maxX,
+    maxY: first.maxY,
+    at: (dx, dy) => correlations.reduce((sum, c) => sum + c.at(dx, dy), 0) / correlations.length,
+  };
   const metres = tilingMetresPerPixel();
   const peak = peakBeyond(mean, minLagMetres / metres, 1);
   return { rho: peak.rho, lag: [peak.dx * metres, peak.dy * metres] };

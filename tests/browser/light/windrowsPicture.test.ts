@@ -65,9 +65,17 @@ describe('windrows: the GPU against the CPU twin', () => {
     const random = seededRandom(20261127);
     const cases = PARITY.times.map((t) => ({
       t,
-      points: Array.from({ length: PARITY.points }, () => [Math.fround((random() * 2 - 1) * PARITY.extent), Math.fround((random() * 2 - 1) * PARITY.extent)] as [number, number]),
+      points: Array.from(
+        { length: PARITY.points },
+        () => [Math.fround((random() * 2 - 1) * PARITY.extent), Math.fround((random() * 2 - 1) * PARITY.extent)] as [number, number],
+      ),
     }));
-    const { page } = await openOcean(harness, `waves=fft&seed=${PARITY.seed}&windSpeed=${PARITY.windSpeed}&windDirection=${PARITY.windDirection}&t=0`, 320, 180);
+    const { page } = await openOcean(
+      harness,
+      `waves=fft&seed=${PARITY.seed}&windSpeed=${PARITY.windSpeed}&windDirection=${PARITY.windDirection}&t=0`,
+      320,
+      180,
+    );
     let worst = 0;
     let control = 0;
     for (const { t, points } of cases) {

@@ -1,7 +1,16 @@
 import { describe, expect, it } from 'vitest';
 import { LESSONS } from '../../../src/app/lessons/lessonCatalog';
 import { PRESETS } from '../../../src/app/url/presets';
-import { docFiles, historyMarks, lineCount, MAX_DOC_LINES, missingPaths, overlongDocs, readRepoFile, statedCounts } from '../../support/docChecks';
+import {
+  docFiles,
+  historyMarks,
+  lineCount,
+  MAX_DOC_LINES,
+  missingPaths,
+  overlongDocs,
+  readRepoFile,
+  statedCounts,
+} from '../../support/docChecks';
 import { readingPathMarkdown, READING_PATH_DOC } from '../../../scripts/build/readingPath';
 
 const DOCS = Object.fromEntries(docFiles().map((path) => [path, readRepoFile(path)]));
@@ -20,7 +29,8 @@ describe('docs cite files that exist', () => {
   });
 
   it('reports a planted missing path, a bad relative link and an unmatched glob (negative control)', () => {
-    const planted = 'See `src/sim/optics/waterColour.ts`, [the tools](tool.md) and `shaders/nothing*.glsl`; `src/sim/optics/waterColor.ts` exists.';
+    const planted =
+      'See `src/sim/optics/waterColour.ts`, [the tools](tool.md) and `shaders/nothing*.glsl`; `src/sim/optics/waterColor.ts` exists.';
     expect(missingPaths(planted, 'docs/planted.md')).toEqual([
       'docs/planted.md: src/sim/optics/waterColour.ts',
       'docs/planted.md: shaders/nothing*.glsl',
@@ -41,7 +51,9 @@ describe('docs stay short enough to read', () => {
 
   it('flags a doc one line over the limit (negative control)', () => {
     const long = 'line\n'.repeat(MAX_DOC_LINES + 1);
-    expect(overlongDocs({ 'docs/long.md': long, 'docs/short.md': 'line\n'.repeat(MAX_DOC_LINES) })).toEqual([`docs/long.md: ${MAX_DOC_LINES + 1}`]);
+    expect(overlongDocs({ 'docs/long.md': long, 'docs/short.md': 'line\n'.repeat(MAX_DOC_LINES) })).toEqual([
+      `docs/long.md: ${MAX_DOC_LINES + 1}`,
+    ]);
   });
 });
 

@@ -11,7 +11,9 @@ const ROOT = resolve(__dirname, '../../..');
 const LAYERS = ['sim', 'render', 'app'] as const;
 
 function files(dir: string): string[] {
-  return readdirSync(dir, { withFileTypes: true }).flatMap((e) => (e.isDirectory() ? files(join(dir, e.name)) : e.name.endsWith('.ts') ? [join(dir, e.name)] : []));
+  return readdirSync(dir, { withFileTypes: true }).flatMap((e) =>
+    e.isDirectory() ? files(join(dir, e.name)) : e.name.endsWith('.ts') ? [join(dir, e.name)] : [],
+  );
 }
 
 /**
@@ -128,9 +130,16 @@ describe('layering sim ← render ← app', () => {
 
   it('would report a cycle closed by a Worker entry (negative control)', () => {
     const planted = new Map(graph);
-    planted.set('src/render/plantedSource.ts', importTargets('src/render/plantedSource.ts', "new Worker(new URL('./plantedWorker.ts', import.meta.url));"));
+    planted.set(
+      'src/render/plantedSource.ts',
+      importTargets('src/render/plantedSource.ts', "new Worker(new URL('./plantedWorker.ts', import.meta.url));"),
+    );
     planted.set('src/render/plantedWorker.ts', importTargets('src/render/plantedWorker.ts', "import { helper } from './plantedSource';"));
-    expect(importCycles(planted)).toContainEqual(['src/render/plantedSource.ts', 'src/render/plantedWorker.ts', 'src/render/plantedSource.ts']);
+    expect(importCycles(planted)).toContainEqual([
+      'src/render/plantedSource.ts',
+      'src/render/plantedWorker.ts',
+      'src/render/plantedSource.ts',
+    ]);
   });
 
   it('reads a URL that is not a module (no import.meta.url) as no import', () => {

@@ -10,7 +10,11 @@ export function markLabel(diagram: Diagram, mark: DiagramMark, language: Languag
 }
 
 function filled(words: MarkWords, mark: DiagramMark, language: Language): string {
-  const value = new Intl.NumberFormat(language, { minimumFractionDigits: words.digits, maximumFractionDigits: words.digits, useGrouping: false }).format(mark.value);
+  const value = new Intl.NumberFormat(language, {
+    minimumFractionDigits: words.digits,
+    maximumFractionDigits: words.digits,
+    useGrouping: false,
+  }).format(mark.value);
   return words[language].replaceAll('{v}', value).replace('{i}', String((mark.index ?? 0) + (words.first ?? 0)));
 }
 
@@ -24,5 +28,8 @@ export function diagramName(diagram: Diagram, language: Language): string {
 
 /** Every labelled value of the diagram, for its longer description. */
 export function diagramDescription(diagram: Diagram, language: Language): string {
-  return diagram.marks.filter((m) => !m.quiet).map((m) => markLabel(diagram, m, language)).join('; ');
+  return diagram.marks
+    .filter((m) => !m.quiet)
+    .map((m) => markLabel(diagram, m, language))
+    .join('; ');
 }

@@ -32,17 +32,36 @@ function svg<K extends keyof SVGElementTagNameMap>(tag: K, attributes: Record<st
 /** Linear RGB (0..1) as the sRGB hex the LOD view's tint shows on screen. */
 function srgbHex(color: readonly [number, number, number]): string {
   const encode = (c: number) => (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
-  return `#${color.map((c) => Math.round(255 * Math.min(1, Math.max(0, encode(c)))).toString(16).padStart(2, '0')).join('')}`;
+  return `#${color
+    .map((c) =>
+      Math.round(255 * Math.min(1, Math.max(0, encode(c))))
+        .toString(16)
+        .padStart(2, '0'),
+    )
+    .join('')}`;
 }
 
 /** The drawing box and the map from diagram units into it. */
-function frame(diagram: Diagram): { height: number; map: (p: Point) => [number, number]; plot: { x: number; y: number; width: number; height: number } } {
+function frame(diagram: Diagram): {
+  height: number;
+  map: (p: Point) => [number, number];
+  plot: { x: number; y: number; width: number; height: number };
+} {
   const [x0, x1] = diagram.x;
   const [y0, y1] = diagram.y;
   if (!diagram.equalScale) {
     const graphHeight = diagram.graphHeight ?? GRAPH_HEIGHT;
-    const plot = { x: GRAPH_PAD.left, y: GRAPH_PAD.top, width: WIDTH - GRAPH_PAD.left - GRAPH_PAD.right, height: graphHeight - GRAPH_PAD.top - GRAPH_PAD.bottom };
-    return { height: graphHeight, plot, map: ([x, y]) => [plot.x + ((x - x0) / (x1 - x0)) * plot.width, plot.y + (1 - (y - y0) / (y1 - y0)) * plot.height] };
+    const plot = {
+      x: GRAPH_PAD.left,
+      y: GRAPH_PAD.top,
+      width: WIDTH - GRAPH_PAD.left - GRAPH_PAD.right,
+      height: graphHeight - GRAPH_PAD.top - GRAPH_PAD.bottom,
+    };
+    return {
+      height: graphHeight,
+      plot,
+      map: ([x, y]) => [plot.x + ((x - x0) / (x1 - x0)) * plot.width, plot.y + (1 - (y - y0) / (y1 - y0)) * plot.height],
+    };
   }
   const inner = WIDTH - 2 * PICTURE_PAD;
   const scale = Math.min(inner / (x1 - x0), PICTURE_HEIGHT[1] / (y1 - y0));
@@ -50,7 +69,11 @@ function frame(diagram: Diagram): { height: number; map: (p: Point) => [number, 
   const height = plotHeight + 2 * PICTURE_PAD;
   const left = PICTURE_PAD + (inner - (x1 - x0) * scale) / 2;
   const top = PICTURE_PAD + (plotHeight - (y1 - y0) * scale) / 2;
-  return { height, plot: { x: PICTURE_PAD, y: PICTURE_PAD, width: inner, height: plotHeight }, map: ([x, y]) => [left + (x - x0) * scale, top + (y1 - y) * scale] };
+  return {
+    height,
+    plot: { x: PICTURE_PAD, y: PICTURE_PAD, width: inner, height: plotHeight },
+    map: ([x, y]) => [left + (x - x0) * scale, top + (y1 - y) * scale],
+  };
 }
 
 /**
@@ -98,7 +121,8 @@ export class DiagramSvg {
     parts.push(drawing);
     for (const mark of diagram.marks) {
       const [x, y] = map([mark.x, mark.y]);
-      if (!mark.bare) parts.push(svg('circle', { cx: x.toFixed(1), cy: y.toFixed(1), r: 3, fill: '#ffffff', stroke: '#082d3f', 'stroke-width': 1 }));
+      if (!mark.bare)
+        parts.push(svg('circle', { cx: x.toFixed(1), cy: y.toFixed(1), r: 3, fill: '#ffffff', stroke: '#082d3f', 'stroke-width': 1 }));
       if (mark.quiet) continue;
       // A note reads from where it stands unless that is near the right edge; a dot's label leans away from the edge.
       const right = x > WIDTH * (mark.bare ? 0.8 : 0.62);
@@ -118,7 +142,13 @@ export class DiagramSvg {
   private polyline(line: DiagramLine, map: (p: Point) => [number, number]): SVGPolylineElement {
     const stroke = STROKES[line.role];
     const attributes: Record<string, string | number> = {
-      points: line.points.map((p) => map(p).map((v) => v.toFixed(1)).join(',')).join(' '),
+      points: line.points
+        .map((p) =>
+          map(p)
+            .map((v) => v.toFixed(1))
+            .join(','),
+        )
+        .join(' '),
       stroke: line.color ? srgbHex(line.color) : stroke.color,
       'stroke-width': line.color ? 6 : stroke.width,
     };
@@ -139,7 +169,13 @@ export class DiagramSvg {
       parts.push(t);
     }
     if (yTitle) {
-      const t = svg('text', { x: 10, y: plot.y + plot.height / 2, 'text-anchor': 'middle', transform: `rotate(-90 10 ${plot.y + plot.height / 2})`, ...TEXT });
+      const t = svg('text', {
+        x: 10,
+        y: plot.y + plot.height / 2,
+        'text-anchor': 'middle',
+        transform: `rotate(-90 10 ${plot.y + plot.height / 2})`,
+        ...TEXT,
+      });
       t.textContent = yTitle;
       parts.push(t);
     }
@@ -148,4 +184,11 @@ export class DiagramSvg {
 }
 
 /** Text light on the card, ringed in its dark blue so it reads over a line. */
-const TEXT = { 'font-size': 10, fill: '#e8f2f7', stroke: 'rgba(8, 30, 45, 0.9)', 'stroke-width': 2.5, 'paint-order': 'stroke', 'font-family': 'system-ui, sans-serif' } as const;
+const TEXT = {
+  'font-size': 10,
+  fill: '#e8f2f7',
+  stroke: 'rgba(8, 30, 45, 0.9)',
+  'stroke-width': 2.5,
+  'paint-order': 'stroke',
+  'font-family': 'system-ui, sans-serif',
+} as const;

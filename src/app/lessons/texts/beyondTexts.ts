@@ -8,7 +8,9 @@ export const beyondTexts: Record<string, LessonText> = {
       en: 'The three wave models side by side, on one camera and one noise seed. Left, the seed’s sines and its octaves of value noise (the report calls them Perlin); middle, 32 Gerstner trochoids drawn from the wind spectrum; right, Tessendorf’s FFT of the same spectrum. Only the middle and right models follow the 10 m/s wind: the seed’s waves read no wind at all. Each model draws only its strip of the screen. A divider at fraction f of the part of the view the panels leave free, from pixel column x₀ to x₁, stands on the column below. Drag the dividers, or move them with the arrow keys.',
       es: 'Los tres modelos de olas lado a lado, con una cámara y una semilla de ruido. A la izquierda, los senos del informe y sus octavas de ruido de valor (el informe lo llama Perlin); en el centro, 32 trocoides de Gerstner tomadas del espectro del viento; a la derecha, la FFT de Tessendorf del mismo espectro. Solo el centro y la derecha siguen el viento de 10 m/s: las olas del informe no leen el viento. Cada modelo dibuja solo su franja. Un divisor en la fracción f de la parte libre de la vista, de la columna de píxeles x₀ a x₁, queda en la columna de abajo. Arrastra los divisores o muévelos con las flechas.',
     },
-    math: m('<msub><mi>x</mi><mtext>split</mtext></msub><mo>=</mo><mtext>round</mtext><mo>(</mo><msub><mi>x</mi><mn>0</mn></msub><mo>+</mo><mi>f</mi><mo>·</mo><mo>(</mo><msub><mi>x</mi><mn>1</mn></msub><mo>−</mo><msub><mi>x</mi><mn>0</mn></msub><mo>)</mo><mo>)</mo>'),
+    math: m(
+      '<msub><mi>x</mi><mtext>split</mtext></msub><mo>=</mo><mtext>round</mtext><mo>(</mo><msub><mi>x</mi><mn>0</mn></msub><mo>+</mo><mi>f</mi><mo>·</mo><mo>(</mo><msub><mi>x</mi><mn>1</mn></msub><mo>−</mo><msub><mi>x</mi><mn>0</mn></msub><mo>)</mo><mo>)</mo>',
+    ),
     question: {
       ask: {
         en: 'Before you touch anything: if you raise Wind speed from 10 to 20 m/s, which strips will change their waves, and which will not?',
@@ -31,8 +33,12 @@ export const beyondTexts: Record<string, LessonText> = {
       es: '¿Obedece el mar a la física? El panel lo mide con su gemelo en CPU. Registra la altura en un punto: cuatro veces su desviación típica σ_η es la altura significativa medida Hs, y el pico ωp de su espectro da el periodo de pico Tp. Al lado, la teoría: 4√m₀, con m₀ la varianza del espectro del modelo, y la ley de Pierson y Moskowitz con U₁₉.₅ = 1,026 U₁₀, el viento a 19,5 m. A 10 m/s: Hs ≈ 2,25 m y Tp ≈ 7,5 s. En un parche cronometra la fase de cada modo de Fourier, ω, frente a √(g k tanh kh), con g la gravedad, k su número de onda y h la profundidad.',
     },
     math:
-      m('<msub><mi>H</mi><mi>s</mi></msub><mo>=</mo><mn>4</mn><msub><mi>σ</mi><mi>η</mi></msub><mo>≈</mo><mn>4</mn><msqrt><msub><mi>m</mi><mn>0</mn></msub></msqrt><mo>≈</mo><mn>0.21</mn><mfrac><msubsup><mi>U</mi><mn>19.5</mn><mn>2</mn></msubsup><mi>g</mi></mfrac>') +
-      m('<msub><mi>T</mi><mi>p</mi></msub><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi></mrow><msub><mi>ω</mi><mi>p</mi></msub></mfrac><mo>,</mo><mspace width="0.5em"/><msub><mi>ω</mi><mi>p</mi></msub><mo>=</mo><mn>0.877</mn><mfrac><mi>g</mi><msub><mi>U</mi><mn>19.5</mn></msub></mfrac><mo>,</mo><mspace width="0.5em"/><msub><mi>U</mi><mn>19.5</mn></msub><mo>=</mo><mn>1.026</mn><msub><mi>U</mi><mn>10</mn></msub>'),
+      m(
+        '<msub><mi>H</mi><mi>s</mi></msub><mo>=</mo><mn>4</mn><msub><mi>σ</mi><mi>η</mi></msub><mo>≈</mo><mn>4</mn><msqrt><msub><mi>m</mi><mn>0</mn></msub></msqrt><mo>≈</mo><mn>0.21</mn><mfrac><msubsup><mi>U</mi><mn>19.5</mn><mn>2</mn></msubsup><mi>g</mi></mfrac>',
+      ) +
+      m(
+        '<msub><mi>T</mi><mi>p</mi></msub><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi></mrow><msub><mi>ω</mi><mi>p</mi></msub></mfrac><mo>,</mo><mspace width="0.5em"/><msub><mi>ω</mi><mi>p</mi></msub><mo>=</mo><mn>0.877</mn><mfrac><mi>g</mi><msub><mi>U</mi><mn>19.5</mn></msub></mfrac><mo>,</mo><mspace width="0.5em"/><msub><mi>U</mi><mn>19.5</mn></msub><mo>=</mo><mn>1.026</mn><msub><mi>U</mi><mn>10</mn></msub>',
+      ),
     question: {
       ask: {
         en: 'At 10 m/s theory’s Hs is about 2.25 m. If you double Wind speed to 20 m/s, will Hs double, or grow by more? And the peak period?',
@@ -52,7 +58,9 @@ export const beyondTexts: Record<string, LessonText> = {
     },
     math:
       m('<mi>α</mi><mo>=</mo><mi>arcsin</mi><mfrac><mn>1</mn><mn>3</mn></mfrac><mo>=</mo><mn>19.47</mn><mo>°</mo>') +
-      m('<msub><mi>λ</mi><mtext>t</mtext></msub><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi><msup><mi>U</mi><mn>2</mn></msup></mrow><mi>g</mi></mfrac><mo>≈</mo><mn>10.2</mn><mspace width="0.2em"/><mtext>m</mtext>') +
+      m(
+        '<msub><mi>λ</mi><mtext>t</mtext></msub><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi><msup><mi>U</mi><mn>2</mn></msup></mrow><mi>g</mi></mfrac><mo>≈</mo><mn>10.2</mn><mspace width="0.2em"/><mtext>m</mtext>',
+      ) +
       m('<mi>Fr</mi><mo>=</mo><mfrac><mi>U</mi><msqrt><mi>g</mi><mi>L</mi></msqrt></mfrac><mo>=</mo><mn>0.45</mn>'),
     question: {
       ask: {
@@ -76,8 +84,12 @@ export const beyondTexts: Record<string, LessonText> = {
       es: 'El mismo barco en un giro de ω = 3° por segundo: a U = 4 m/s, un círculo de radio U/ω ≈ 76 m. La estela no es una cuña fija tras el casco: su altura η suma las olas dejadas en cada punto xⱼ de la derrota hace τⱼ segundos, cada una por el Δτⱼ entre muestras. Cada una, G, responde como el agua profunda a un empujón: a distancia r las olas tienen número de onda k = gτ²/(4r²), filtrado por la huella del casco, de radio σ = 2 m. Así la estela se curva con la derrota, y la guía, trazada recta hacia atrás desde el rumbo actual, se separa de ella lejos del barco.',
     },
     math:
-      m('<mi>η</mi><mo>(</mo><mi mathvariant="bold">x</mi><mo>)</mo><mo>=</mo><munder><mo>∑</mo><mi>j</mi></munder><mi>Δ</mi><msub><mi>τ</mi><mi>j</mi></msub><mspace width="0.1em"/><mi>G</mi><mo>(</mo><mo>|</mo><mi mathvariant="bold">x</mi><mo>−</mo><msub><mi mathvariant="bold">x</mi><mi>j</mi></msub><mo>|</mo><mo>,</mo><msub><mi>τ</mi><mi>j</mi></msub><mo>)</mo>') +
-      m('<mi>G</mi><mo>(</mo><mi>r</mi><mo>,</mo><mi>τ</mi><mo>)</mo><mo>∝</mo><mfrac><msup><mi>τ</mi><mn>3</mn></msup><msup><mi>r</mi><mn>4</mn></msup></mfrac><msup><mi>e</mi><mrow><mo>−</mo><msup><mi>k</mi><mn>2</mn></msup><msup><mi>σ</mi><mn>2</mn></msup><mo>/</mo><mn>4</mn></mrow></msup><mi>sin</mi><mfrac><mrow><mi>g</mi><msup><mi>τ</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><mi>r</mi></mrow></mfrac><mo>,</mo><mspace width="0.5em"/><mi>k</mi><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>τ</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><msup><mi>r</mi><mn>2</mn></msup></mrow></mfrac>'),
+      m(
+        '<mi>η</mi><mo>(</mo><mi mathvariant="bold">x</mi><mo>)</mo><mo>=</mo><munder><mo>∑</mo><mi>j</mi></munder><mi>Δ</mi><msub><mi>τ</mi><mi>j</mi></msub><mspace width="0.1em"/><mi>G</mi><mo>(</mo><mo>|</mo><mi mathvariant="bold">x</mi><mo>−</mo><msub><mi mathvariant="bold">x</mi><mi>j</mi></msub><mo>|</mo><mo>,</mo><msub><mi>τ</mi><mi>j</mi></msub><mo>)</mo>',
+      ) +
+      m(
+        '<mi>G</mi><mo>(</mo><mi>r</mi><mo>,</mo><mi>τ</mi><mo>)</mo><mo>∝</mo><mfrac><msup><mi>τ</mi><mn>3</mn></msup><msup><mi>r</mi><mn>4</mn></msup></mfrac><msup><mi>e</mi><mrow><mo>−</mo><msup><mi>k</mi><mn>2</mn></msup><msup><mi>σ</mi><mn>2</mn></msup><mo>/</mo><mn>4</mn></mrow></msup><mi>sin</mi><mfrac><mrow><mi>g</mi><msup><mi>τ</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><mi>r</mi></mrow></mfrac><mo>,</mo><mspace width="0.5em"/><mi>k</mi><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>τ</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><msup><mi>r</mi><mn>2</mn></msup></mrow></mfrac>',
+      ),
     question: {
       ask: {
         en: 'Far behind the turning boat, will the wake lie along the straight guide lines or along the curved track?',
@@ -100,8 +112,12 @@ export const beyondTexts: Record<string, LessonText> = {
       es: 'El océano espectral de fondo es una fórmula cerrada del tiempo: su altura η suma olas de vector de onda k, amplitud h̃₀(k) y frecuencia ω(k), conocidas en todo t: llega gratis al horizonte y a cualquier instante, pero nada lo perturba. Los anillos sumados son una simulación: un campo de alturas hⁿ en el paso n, avanzado cada Δt = 1/60 s en una malla de 128 m (Δx = 0,5 m) en torno al foco con un núcleo G de 13 × 13 que mantiene ω² = gk al 5 % para olas de 1,5 a 10 m, y amortiguamiento α. Responde a piedras y al barco cerca de la cámara; un salto repite como mucho 10 s.',
     },
     math:
-      m('<mi>η</mi><mo>(</mo><mi mathvariant="bold">x</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><munder><mo>∑</mo><mi mathvariant="bold">k</mi></munder><mo>[</mo><msub><mover><mi>h</mi><mo>~</mo></mover><mn>0</mn></msub><mo>(</mo><mi mathvariant="bold">k</mi><mo>)</mo><msup><mi>e</mi><mrow><mi>i</mi><mi>ω</mi><mi>t</mi></mrow></msup><mo>+</mo><msubsup><mover><mi>h</mi><mo>~</mo></mover><mn>0</mn><mo>*</mo></msubsup><mo>(</mo><mo>−</mo><mi mathvariant="bold">k</mi><mo>)</mo><msup><mi>e</mi><mrow><mo>−</mo><mi>i</mi><mi>ω</mi><mi>t</mi></mrow></msup><mo>]</mo><msup><mi>e</mi><mrow><mi>i</mi><mi mathvariant="bold">k</mi><mo>·</mo><mi mathvariant="bold">x</mi></mrow></msup>') +
-      m('<msup><mi>h</mi><mrow><mi>n</mi><mo>+</mo><mn>1</mn></mrow></msup><mo>=</mo><mfrac><mrow><mn>2</mn><msup><mi>h</mi><mi>n</mi></msup><mo>−</mo><mo>(</mo><mn>1</mn><mo>−</mo><mfrac><mrow><mi>α</mi><mi>Δ</mi><mi>t</mi></mrow><mn>2</mn></mfrac><mo>)</mo><msup><mi>h</mi><mrow><mi>n</mi><mo>−</mo><mn>1</mn></mrow></msup><mo>−</mo><mfrac><mrow><mi>g</mi><mi>Δ</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mi>Δ</mi><mi>x</mi></mrow></mfrac><mo>(</mo><mi>G</mi><mo>∗</mo><msup><mi>h</mi><mi>n</mi></msup><mo>)</mo></mrow><mrow><mn>1</mn><mo>+</mo><mfrac><mrow><mi>α</mi><mi>Δ</mi><mi>t</mi></mrow><mn>2</mn></mfrac></mrow></mfrac>'),
+      m(
+        '<mi>η</mi><mo>(</mo><mi mathvariant="bold">x</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>=</mo><munder><mo>∑</mo><mi mathvariant="bold">k</mi></munder><mo>[</mo><msub><mover><mi>h</mi><mo>~</mo></mover><mn>0</mn></msub><mo>(</mo><mi mathvariant="bold">k</mi><mo>)</mo><msup><mi>e</mi><mrow><mi>i</mi><mi>ω</mi><mi>t</mi></mrow></msup><mo>+</mo><msubsup><mover><mi>h</mi><mo>~</mo></mover><mn>0</mn><mo>*</mo></msubsup><mo>(</mo><mo>−</mo><mi mathvariant="bold">k</mi><mo>)</mo><msup><mi>e</mi><mrow><mo>−</mo><mi>i</mi><mi>ω</mi><mi>t</mi></mrow></msup><mo>]</mo><msup><mi>e</mi><mrow><mi>i</mi><mi mathvariant="bold">k</mi><mo>·</mo><mi mathvariant="bold">x</mi></mrow></msup>',
+      ) +
+      m(
+        '<msup><mi>h</mi><mrow><mi>n</mi><mo>+</mo><mn>1</mn></mrow></msup><mo>=</mo><mfrac><mrow><mn>2</mn><msup><mi>h</mi><mi>n</mi></msup><mo>−</mo><mo>(</mo><mn>1</mn><mo>−</mo><mfrac><mrow><mi>α</mi><mi>Δ</mi><mi>t</mi></mrow><mn>2</mn></mfrac><mo>)</mo><msup><mi>h</mi><mrow><mi>n</mi><mo>−</mo><mn>1</mn></mrow></msup><mo>−</mo><mfrac><mrow><mi>g</mi><mi>Δ</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mi>Δ</mi><mi>x</mi></mrow></mfrac><mo>(</mo><mi>G</mi><mo>∗</mo><msup><mi>h</mi><mi>n</mi></msup><mo>)</mo></mrow><mrow><mn>1</mn><mo>+</mo><mfrac><mrow><mi>α</mi><mi>Δ</mi><mi>t</mi></mrow><mn>2</mn></mfrac></mrow></mfrac>',
+      ),
     question: {
       ask: {
         en: 'When the stone’s ring runs over a spectral wave, will that wave change shape, or pass on as if the ring were not there?',
@@ -124,8 +140,12 @@ export const beyondTexts: Record<string, LessonText> = {
       es: 'Una piedra cae en un mar en calma. El agua profunda es dispersiva: una ola de número de onda k tiene frecuencia ω = √(gk), con g la gravedad, así que su velocidad depende de su longitud: las olas largas que levanta la piedra se adelantan y las cortas quedan atrás, y el anillo se abre en un tren de crestas, más juntas hacia el centro. Cauchy y Poisson calcularon dónde están las crestas: a distancia r tras un tiempo t las olas tienen k = gt²/(4r²), y las crestas están en rₙ, donde la fase gt²/(4r) es un número entero n de vueltas. Los anillos amarillos son esas crestas, dibujadas desde la teoría; el agua alrededor es la simulación.',
     },
     math:
-      m('<mi>k</mi><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><msup><mi>r</mi><mn>2</mn></msup></mrow></mfrac>') +
-      m('<msub><mi>r</mi><mi>n</mi></msub><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mn>8</mn><mi>π</mi><mi>n</mi></mrow></mfrac>'),
+      m(
+        '<mi>k</mi><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mn>4</mn><msup><mi>r</mi><mn>2</mn></msup></mrow></mfrac>',
+      ) +
+      m(
+        '<msub><mi>r</mi><mi>n</mi></msub><mo>=</mo><mfrac><mrow><mi>g</mi><msup><mi>t</mi><mn>2</mn></msup></mrow><mrow><mn>8</mn><mi>π</mi><mi>n</mi></mrow></mfrac>',
+      ),
     question: {
       ask: {
         en: 'Ten seconds after the stone falls, will its crests be farther apart at the front of the train or near the stone?',
@@ -148,8 +168,12 @@ export const beyondTexts: Record<string, LessonText> = {
       es: 'La misma piedra dos veces. A la izquierda, la ecuación del agua profunda para la altura h, con g la gravedad: el núcleo de iWave hace de √(−∇²), así que una ola de número de onda k tiene frecuencia ω = √(gk): cada longitud corre a su velocidad y el anillo se abre en un tren. A la derecha, la ecuación de ondas simple, usada en muchos juegos para el agua interactiva: toda ola larga frente a la malla corre a la misma velocidad, aquí c = 2,56 m/s, y la piedra deja un único anillo que conserva su forma, como el sonido o la luz. Una esponja central separa las mitades. Cambia la ecuación para ver cada una sola.',
     },
     math:
-      m('<mfrac><mrow><msup><mo>∂</mo><mn>2</mn></msup><mi>h</mi></mrow><mrow><mo>∂</mo><msup><mi>t</mi><mn>2</mn></msup></mrow></mfrac><mo>=</mo><mo>−</mo><mi>g</mi><msqrt><mo>−</mo><msup><mo>∇</mo><mn>2</mn></msup></msqrt><mi>h</mi><mspace width="1em"/><mo>⇒</mo><mspace width="1em"/><msup><mi>ω</mi><mn>2</mn></msup><mo>=</mo><mi>g</mi><mi>k</mi>') +
-      m('<mfrac><mrow><msup><mo>∂</mo><mn>2</mn></msup><mi>h</mi></mrow><mrow><mo>∂</mo><msup><mi>t</mi><mn>2</mn></msup></mrow></mfrac><mo>=</mo><msup><mi>c</mi><mn>2</mn></msup><msup><mo>∇</mo><mn>2</mn></msup><mi>h</mi><mspace width="1em"/><mo>⇒</mo><mspace width="1em"/><mi>ω</mi><mo>=</mo><mi>c</mi><mi>k</mi><mo>,</mo><mspace width="0.5em"/><mi>c</mi><mo>=</mo><msqrt><mfrac><mi>g</mi><mrow><mn>1.5</mn><mspace width="0.1em"/><mtext>rad/m</mtext></mrow></mfrac></msqrt><mo>=</mo><mn>2.56</mn><mspace width="0.2em"/><mtext>m/s</mtext>'),
+      m(
+        '<mfrac><mrow><msup><mo>∂</mo><mn>2</mn></msup><mi>h</mi></mrow><mrow><mo>∂</mo><msup><mi>t</mi><mn>2</mn></msup></mrow></mfrac><mo>=</mo><mo>−</mo><mi>g</mi><msqrt><mo>−</mo><msup><mo>∇</mo><mn>2</mn></msup></msqrt><mi>h</mi><mspace width="1em"/><mo>⇒</mo><mspace width="1em"/><msup><mi>ω</mi><mn>2</mn></msup><mo>=</mo><mi>g</mi><mi>k</mi>',
+      ) +
+      m(
+        '<mfrac><mrow><msup><mo>∂</mo><mn>2</mn></msup><mi>h</mi></mrow><mrow><mo>∂</mo><msup><mi>t</mi><mn>2</mn></msup></mrow></mfrac><mo>=</mo><msup><mi>c</mi><mn>2</mn></msup><msup><mo>∇</mo><mn>2</mn></msup><mi>h</mi><mspace width="1em"/><mo>⇒</mo><mspace width="1em"/><mi>ω</mi><mo>=</mo><mi>c</mi><mi>k</mi><mo>,</mo><mspace width="0.5em"/><mi>c</mi><mo>=</mo><msqrt><mfrac><mi>g</mi><mrow><mn>1.5</mn><mspace width="0.1em"/><mtext>rad/m</mtext></mrow></mfrac></msqrt><mo>=</mo><mn>2.56</mn><mspace width="0.2em"/><mtext>m/s</mtext>',
+      ),
     question: {
       ask: {
         en: 'After a few seconds, which half will show one ring and which a train of rings, and on which side do the crests crowd together?',
@@ -172,8 +196,12 @@ export const beyondTexts: Record<string, LessonText> = {
       es: 'El barco a U = 4 m/s en las olas interactivas. Su línea de flotación es un sólido en el campo, así que las olas se reflejan en el casco; al avanzar, la proa aparta Q = U·V/L metros cúbicos de agua por segundo, con V su volumen desplazado y L su eslora, y la popa deja volver otros tantos: aquí 3,2 m³/s. Esas dos fuentes forman las olas del campo cercano, y el barco navega sobre ellas. Hasta D = 16 m del barco el campo lleva sus olas; más allá, la estela analítica de Kelvin toma el relevo, mezclada a lo largo de 8 m, para no contar ninguna ola dos veces.',
     },
     math:
-      m('<mi>Q</mi><mo>=</mo><mfrac><mrow><mi>U</mi><mi>V</mi></mrow><mi>L</mi></mfrac><mo>=</mo><mn>3.2</mn><mspace width="0.2em"/><msup><mtext>m</mtext><mn>3</mn></msup><mtext>/s</mtext>') +
-      m('<mi>D</mi><mo>=</mo><mi>max</mi><mo>(</mo><mn>2</mn><mi>L</mi><mo>,</mo><mfrac><mrow><mn>2</mn><mi>π</mi><msup><mi>U</mi><mn>2</mn></msup></mrow><mi>g</mi></mfrac><mo>)</mo><mo>=</mo><mn>16</mn><mspace width="0.2em"/><mtext>m</mtext>'),
+      m(
+        '<mi>Q</mi><mo>=</mo><mfrac><mrow><mi>U</mi><mi>V</mi></mrow><mi>L</mi></mfrac><mo>=</mo><mn>3.2</mn><mspace width="0.2em"/><msup><mtext>m</mtext><mn>3</mn></msup><mtext>/s</mtext>',
+      ) +
+      m(
+        '<mi>D</mi><mo>=</mo><mi>max</mi><mo>(</mo><mn>2</mn><mi>L</mi><mo>,</mo><mfrac><mrow><mn>2</mn><mi>π</mi><msup><mi>U</mi><mn>2</mn></msup></mrow><mi>g</mi></mfrac><mo>)</mo><mo>=</mo><mn>16</mn><mspace width="0.2em"/><mtext>m</mtext>',
+      ),
     question: {
       ask: {
         en: 'Set Boat speed to −2 m/s, going astern: where will the raised water stand, at the bow or at the stern?',
@@ -197,7 +225,9 @@ export const beyondTexts: Record<string, LessonText> = {
     },
     math:
       m('<msub><mi>c</mi><mrow><mi>i</mi><mo>+</mo><mn>1</mn></mrow></msub><mo>=</mo><mn>2</mn><msub><mi>c</mi><mi>i</mi></msub>') +
-      m('<msub><mi>β</mi><mn>0</mn></msub><mo>=</mo><mfrac><mrow><mi>ln</mi><mspace width="0.17em"/><mn>50</mn></mrow><mi>V</mi></mfrac><mo>≈</mo><mfrac><mn>3.912</mn><mi>V</mi></mfrac><mo>,</mo><mspace width="0.5em"/><mi>β</mi><mo>(</mo><mi>y</mi><mo>)</mo><mo>=</mo><msub><mi>β</mi><mn>0</mn></msub><msup><mi>e</mi><mrow><mo>−</mo><mi>y</mi><mo>/</mo><mi>H</mi></mrow></msup>'),
+      m(
+        '<msub><mi>β</mi><mn>0</mn></msub><mo>=</mo><mfrac><mrow><mi>ln</mi><mspace width="0.17em"/><mn>50</mn></mrow><mi>V</mi></mfrac><mo>≈</mo><mfrac><mn>3.912</mn><mi>V</mi></mfrac><mo>,</mo><mspace width="0.5em"/><mi>β</mi><mo>(</mo><mi>y</mi><mo>)</mo><mo>=</mo><msub><mi>β</mi><mn>0</mn></msub><msup><mi>e</mi><mrow><mo>−</mo><mi>y</mi><mo>/</mo><mi>H</mi></mrow></msup>',
+      ),
     question: {
       ask: {
         en: 'If you lower Visibility from 20 to 5 km, will the sea’s edge against the sky move closer, or stay put while the haze thickens?',

@@ -8,7 +8,9 @@ export const lightTexts: Record<string, LessonText> = {
       en: 'The sky is a cube map: six square images, one per face of a cube around the camera. Here it is unfolded into a cross, seen from inside: the middle row is the horizon all round, from −x through −z (where the default camera looks) to +x and +z, with +y, the zenith, above and −y below. A unit direction d̂ is enough to look it up: the GPU picks the face whose axis d̂ points along most, and the texel. The cube keeps the square root s of each colour in 8 bits, so the shader squares what it reads. Move the sun and the six faces are painted again, not every frame.',
       es: 'El cielo es un cube map: seis imágenes cuadradas, una por cara de un cubo alrededor de la cámara. Aquí está desplegado en una cruz, visto desde dentro: la fila central es el horizonte entero, de −x pasando por −z (adonde mira la cámara por defecto) a +x y +z, con +y, el cenit, arriba y −y abajo. Basta una dirección unitaria d̂ para consultarlo: la GPU elige la cara hacia cuyo eje apunta más d̂, y el texel. El cubo guarda la raíz cuadrada s de cada color en 8 bits, así que el shader eleva al cuadrado lo que lee. Al mover el sol se vuelven a pintar las seis caras, no en cada fotograma.',
     },
-    math: m('<mi>s</mi><mo>=</mo><mtext>textureLod</mtext><mo>(</mo><mtext>sky</mtext><mo>,</mo><mover><mi>d</mi><mo>^</mo></mover><mo>,</mo><mn>0</mn><mo>)</mo><mo>,</mo><mspace width="0.6em"/><mtext>color</mtext><mo>=</mo><msup><mi>s</mi><mn>2</mn></msup>'),
+    math: m(
+      '<mi>s</mi><mo>=</mo><mtext>textureLod</mtext><mo>(</mo><mtext>sky</mtext><mo>,</mo><mover><mi>d</mi><mo>^</mo></mover><mo>,</mo><mn>0</mn><mo>)</mo><mo>,</mo><mspace width="0.6em"/><mtext>color</mtext><mo>=</mo><msup><mi>s</mi><mn>2</mn></msup>',
+    ),
     choice: {
       en: 'The sky is painted, not computed from scattering in the air: a zenith-to-horizon gradient, painted clouds, and a sun disc drawn 0.99° in radius where the real one’s is 0.27°.',
       es: 'El cielo está pintado, no calculado por dispersión atmosférica: degradado del cenit al horizonte, nubes pintadas y un disco solar de 0,99° de radio; el real tiene 0,27°.',
@@ -30,7 +32,11 @@ export const lightTexts: Record<string, LessonText> = {
       en: 'A still sea is a mirror: with no swell, no ripples and roughness off, what you see is the cube map looked up along the reflected view ray. With v the unit vector from the surface to the eye and n the normal, the shader reflects −v, the ray’s own direction, into r. A ray that would point below the horizon is lifted onto it. The sky read along r, c_sky, is mixed with the water’s own colour, c_water, by the Fresnel reflectance F, which nears 1 at grazing angles: far off, the sea is almost all sky. Switch roughness on and the slopes the mesh does not show blur the reflected sky.',
       es: 'Un mar en calma es un espejo: sin oleaje, sin ondas y sin rugosidad, lo que se ve es el cube map consultado en la dirección del rayo de vista reflejado. Con v el vector unitario de la superficie hacia el ojo y n la normal, el shader refleja −v, la dirección del propio rayo, en r. Un rayo que apuntaría bajo el horizonte se levanta hasta él. El cielo leído en r, c_sky, se mezcla con el color propio del agua, c_water, según la reflectancia de Fresnel F, que tiende a 1 en incidencia rasante: a lo lejos, el mar es casi todo cielo. Activa la rugosidad y las pendientes que la malla no muestra desenfocan el cielo reflejado.',
     },
-    math: m('<mi>r</mi><mo>=</mo><mo>−</mo><mi>v</mi><mo>+</mo><mn>2</mn><mo>(</mo><mi>v</mi><mo>·</mo><mi>n</mi><mo>)</mo><mi>n</mi>') + m('<mi>c</mi><mo>=</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>F</mi><mo>)</mo><msub><mi>c</mi><mtext>water</mtext></msub><mo>+</mo><mi>F</mi><msub><mi>c</mi><mtext>sky</mtext></msub>'),
+    math:
+      m('<mi>r</mi><mo>=</mo><mo>−</mo><mi>v</mi><mo>+</mo><mn>2</mn><mo>(</mo><mi>v</mi><mo>·</mo><mi>n</mi><mo>)</mo><mi>n</mi>') +
+      m(
+        '<mi>c</mi><mo>=</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>F</mi><mo>)</mo><msub><mi>c</mi><mtext>water</mtext></msub><mo>+</mo><mi>F</mi><msub><mi>c</mi><mtext>sky</mtext></msub>',
+      ),
     choice: {
       en: 'Lifting r onto the horizon is a choice: the sea reflects only the sky cube, never other waves, the boat or itself.',
       es: 'Levantar r hasta el horizonte es una elección: el mar solo refleja el cubo del cielo, nunca otras olas, el barco ni a sí mismo.',
@@ -52,7 +58,13 @@ export const lightTexts: Record<string, LessonText> = {
       en: 'Water’s reflectance depends on the angle of incidence θi, from the normal: 2 % looking straight down, all at grazing incidence. Snell’s law gives the angle θt of the ray that enters, from n₁ = 1 (air) and n₂ = 1.333 (water); the Fresnel equations give the amplitude ratios r_s and r_p of the two polarisations, and unpolarised light reflects the mean of their squares, F. The CPU tabulates F once, 256 entries by cos θi, uploaded as a 256 × 1 float texture (WebGL2 has no 1D textures); the fragment shader reads two entries with texelFetch and interpolates by hand, since float textures are not always filterable. The plot shows that table.',
       es: 'La reflectancia del agua depende del ángulo de incidencia θi, desde la normal: un 2 % en vertical, toda en incidencia rasante. La ley de Snell da el ángulo θt del rayo que entra, con los índices n₁ = 1 (aire) y n₂ = 1,333 (agua); las ecuaciones de Fresnel dan los cocientes de amplitud r_s y r_p de las dos polarizaciones; la luz no polarizada refleja la media de sus cuadrados, F. La CPU tabula F una vez, 256 entradas por cos θi, como textura float de 256 × 1 (WebGL2 no tiene texturas 1D); el fragment shader lee dos con texelFetch e interpola a mano: las texturas float no siempre se filtran. El gráfico muestra esa tabla.',
     },
-    math: m('<msub><mi>n</mi><mn>1</mn></msub><mi>sin</mi><msub><mi>θ</mi><mi>i</mi></msub><mo>=</mo><msub><mi>n</mi><mn>2</mn></msub><mi>sin</mi><msub><mi>θ</mi><mi>t</mi></msub>') + m('<mi>F</mi><mo>=</mo><mfrac><mrow><msubsup><mi>r</mi><mi>s</mi><mn>2</mn></msubsup><mo>+</mo><msubsup><mi>r</mi><mi>p</mi><mn>2</mn></msubsup></mrow><mn>2</mn></mfrac>'),
+    math:
+      m(
+        '<msub><mi>n</mi><mn>1</mn></msub><mi>sin</mi><msub><mi>θ</mi><mi>i</mi></msub><mo>=</mo><msub><mi>n</mi><mn>2</mn></msub><mi>sin</mi><msub><mi>θ</mi><mi>t</mi></msub>',
+      ) +
+      m(
+        '<mi>F</mi><mo>=</mo><mfrac><mrow><msubsup><mi>r</mi><mi>s</mi><mn>2</mn></msubsup><mo>+</mo><msubsup><mi>r</mi><mi>p</mi><mn>2</mn></msubsup></mrow><mn>2</mn></mfrac>',
+      ),
     question: {
       ask: {
         en: 'Before reading the plot: at 60° from the vertical, is water’s reflectance nearer 6 %, 25 % or 50 %?',
@@ -70,7 +82,13 @@ export const lightTexts: Record<string, LessonText> = {
       en: 'Schlick’s approximation replaces the Fresnel equations by one power of the angle of incidence θ: the reflectance at normal incidence, R₀ = ((n − 1)/(n + 1))² = 0.0204 for water’s index n = 1.333, plus the rest, 1 − R₀, times (1 − cos θ)⁵. The plot draws both curves. They agree at 0° and at 90°, not between: the largest difference, 0.059, lies near 84°, where Schlick gives 0.574 and the exact table 0.515. The shader never uses Schlick. Here Fresnel is switched off, so the sea mixes sky and water with a constant F = 0.5 at every angle, the sun’s glint too: compare it with the previous lesson.',
       es: 'La aproximación de Schlick sustituye las ecuaciones de Fresnel por una potencia del ángulo de incidencia θ: la reflectancia en incidencia normal, R₀ = ((n − 1)/(n + 1))² = 0,0204 para el índice del agua n = 1,333, más el resto, 1 − R₀, por (1 − cos θ)⁵. El gráfico dibuja ambas curvas. Coinciden en 0° y en 90°, no entre medias: la mayor diferencia, 0,059, está cerca de 84°, donde Schlick da 0,574 y la tabla exacta 0,515. El shader nunca usa Schlick. Aquí Fresnel está apagado, así que el mar mezcla cielo y agua con una F constante de 0,5 en todos los ángulos, también en el destello del sol: compáralo con la lección anterior.',
     },
-    math: m('<mi>F</mi><mo>≈</mo><msub><mi>R</mi><mn>0</mn></msub><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><msub><mi>R</mi><mn>0</mn></msub><mo>)</mo><msup><mrow><mo>(</mo><mn>1</mn><mo>−</mo><mi>cos</mi><mi>θ</mi><mo>)</mo></mrow><mn>5</mn></msup>') + m('<msub><mi>R</mi><mn>0</mn></msub><mo>=</mo><msup><mrow><mo>(</mo><mfrac><mrow><mi>n</mi><mo>−</mo><mn>1</mn></mrow><mrow><mi>n</mi><mo>+</mo><mn>1</mn></mrow></mfrac><mo>)</mo></mrow><mn>2</mn></msup><mo>=</mo><mn>0.0204</mn>'),
+    math:
+      m(
+        '<mi>F</mi><mo>≈</mo><msub><mi>R</mi><mn>0</mn></msub><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><msub><mi>R</mi><mn>0</mn></msub><mo>)</mo><msup><mrow><mo>(</mo><mn>1</mn><mo>−</mo><mi>cos</mi><mi>θ</mi><mo>)</mo></mrow><mn>5</mn></msup>',
+      ) +
+      m(
+        '<msub><mi>R</mi><mn>0</mn></msub><mo>=</mo><msup><mrow><mo>(</mo><mfrac><mrow><mi>n</mi><mo>−</mo><mn>1</mn></mrow><mrow><mi>n</mi><mo>+</mo><mn>1</mn></mrow></mfrac><mo>)</mo></mrow><mn>2</mn></msup><mo>=</mo><mn>0.0204</mn>',
+      ),
     choice: {
       en: 'Fresnel off is a teaching switch: the constant F = 0.5 is no physical value; it shows what the angle dependence adds.',
       es: 'Fresnel apagado es un interruptor didáctico: la F constante de 0,5 no es un valor físico; muestra lo que añade la dependencia del ángulo.',
@@ -93,8 +111,12 @@ export const lightTexts: Record<string, LessonText> = {
       es: 'El destello es el sol visto en incontables facetas inclinadas. Cox y Munk lo fotografiaron desde el aire en 1951: la pendiente cuadrática media de las facetas es σ² = 0,003 + 0,00512 U, con U el viento en m/s a 12,5 m sobre el mar (el control, a 10 m, se convierte): con más viento, el destello se ensancha. El shader refleja el sol con una distribución de Beckmann de esa σ², menos las pendientes que ya dibujan las olas. El sol brilla mucho más que el blanco de la pantalla: cada canal de color c, tras la exposición, pasa por una curva de tono f; bajo k = 0,6 no cambia, encima se acerca al blanco sin recortarse.',
     },
     math:
-      m('<msup><mi>σ</mi><mn>2</mn></msup><mo>=</mo><mn>0.003</mn><mo>+</mo><mn>5.12</mn><mo>·</mo><msup><mn>10</mn><mrow><mo>−</mo><mn>3</mn></mrow></msup><mi>U</mi>') +
-      m('<mi>f</mi><mo>(</mo><mi>c</mi><mo>)</mo><mo>=</mo><mi>c</mi><mspace width="0.3em"/><mtext>if</mtext><mspace width="0.3em"/><mi>c</mi><mo>≤</mo><mi>k</mi><mo>;</mo><mspace width="0.6em"/><mi>f</mi><mo>(</mo><mi>c</mi><mo>)</mo><mo>=</mo><mi>k</mi><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo><mo>(</mo><mn>1</mn><mo>−</mo><msup><mi>e</mi><mrow><mo>−</mo><mo>(</mo><mi>c</mi><mo>−</mo><mi>k</mi><mo>)</mo><mo>/</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo></mrow></msup><mo>)</mo><mspace width="0.3em"/><mtext>if</mtext><mspace width="0.3em"/><mi>c</mi><mo>&gt;</mo><mi>k</mi>'),
+      m(
+        '<msup><mi>σ</mi><mn>2</mn></msup><mo>=</mo><mn>0.003</mn><mo>+</mo><mn>5.12</mn><mo>·</mo><msup><mn>10</mn><mrow><mo>−</mo><mn>3</mn></mrow></msup><mi>U</mi>',
+      ) +
+      m(
+        '<mi>f</mi><mo>(</mo><mi>c</mi><mo>)</mo><mo>=</mo><mi>c</mi><mspace width="0.3em"/><mtext>if</mtext><mspace width="0.3em"/><mi>c</mi><mo>≤</mo><mi>k</mi><mo>;</mo><mspace width="0.6em"/><mi>f</mi><mo>(</mo><mi>c</mi><mo>)</mo><mo>=</mo><mi>k</mi><mo>+</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo><mo>(</mo><mn>1</mn><mo>−</mo><msup><mi>e</mi><mrow><mo>−</mo><mo>(</mo><mi>c</mi><mo>−</mo><mi>k</mi><mo>)</mo><mo>/</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>k</mi><mo>)</mo></mrow></msup><mo>)</mo><mspace width="0.3em"/><mtext>if</mtext><mspace width="0.3em"/><mi>c</mi><mo>&gt;</mo><mi>k</mi>',
+      ),
     choice: {
       en: 'The tone curve’s knee k = 0.6 and its exponential shoulder are a display choice; Cox and Munk’s slopes are measured, Beckmann’s facets a model of them.',
       es: 'El codo k = 0,6 y el hombro exponencial de la curva de tono son una elección; las pendientes de Cox y Munk son medidas, y Beckmann, su modelo.',
@@ -117,8 +139,12 @@ export const lightTexts: Record<string, LessonText> = {
       es: 'La GPU mueve los vértices, pero leer sus alturas en cada fotograma haría esperar a la página. Por eso la función de desplazamiento M se escribe dos veces: en GLSL para la imagen y en TypeScript para la CPU. La CPU calcula las fases φ₁…φ₄ una vez por fotograma, en doble precisión, para ambas; las ondas salen de los mismos mapas de alturas. Una prueba lee de la GPU las alturas del shader: difieren menos de 0,03 mm de este gemelo con los parámetros por defecto. El barco flota sobre las alturas del gemelo, en los cinco puntos marcados en su casco. En el oleaje, A es la amplitud, k el número de onda, (u, v) los ejes girados 37°.',
     },
     math:
-      m('<msub><mi>h</mi><mtext>swell</mtext></msub><mo>=</mo><mi>A</mi><mo>[</mo><mi>sin</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>+</mo><msub><mi>φ</mi><mn>1</mn></msub><mo>)</mo><mi>cos</mi><mo>(</mo><mi>k</mi><mi>z</mi><mo>+</mo><msub><mi>φ</mi><mn>2</mn></msub><mo>)</mo><mo>+</mo><mn>0.45</mn><mspace width="0.1em"/><mi>sin</mi><mo>(</mo><mn>1.73</mn><mi>k</mi><mi>u</mi><mo>+</mo><msub><mi>φ</mi><mn>3</mn></msub><mo>)</mo><mi>cos</mi><mo>(</mo><mn>1.73</mn><mi>k</mi><mi>v</mi><mo>+</mo><msub><mi>φ</mi><mn>4</mn></msub><mo>)</mo><mo>]</mo>') +
-      m('<msub><mi>M</mi><mtext>CPU</mtext></msub><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>≈</mo><msub><mi>M</mi><mtext>GPU</mtext></msub><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo>'),
+      m(
+        '<msub><mi>h</mi><mtext>swell</mtext></msub><mo>=</mo><mi>A</mi><mo>[</mo><mi>sin</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>+</mo><msub><mi>φ</mi><mn>1</mn></msub><mo>)</mo><mi>cos</mi><mo>(</mo><mi>k</mi><mi>z</mi><mo>+</mo><msub><mi>φ</mi><mn>2</mn></msub><mo>)</mo><mo>+</mo><mn>0.45</mn><mspace width="0.1em"/><mi>sin</mi><mo>(</mo><mn>1.73</mn><mi>k</mi><mi>u</mi><mo>+</mo><msub><mi>φ</mi><mn>3</mn></msub><mo>)</mo><mi>cos</mi><mo>(</mo><mn>1.73</mn><mi>k</mi><mi>v</mi><mo>+</mo><msub><mi>φ</mi><mn>4</mn></msub><mo>)</mo><mo>]</mo>',
+      ) +
+      m(
+        '<msub><mi>M</mi><mtext>CPU</mtext></msub><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>≈</mo><msub><mi>M</mi><mtext>GPU</mtext></msub><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo>',
+      ),
     question: {
       ask: {
         en: 'Raise Float response time from 0.25 s to 2 s: how far can the boat fall behind the water it floats on?',
@@ -136,8 +162,12 @@ export const lightTexts: Record<string, LessonText> = {
       es: 'El “Quiero mover el bote” del informe: el barco muestrea el gemelo en CPU en cinco puntos, marcados en el casco: su centro, la proa y la popa a media eslora L, y ambos costados a media manga B. La altura del centro da la elevación; la diferencia de altura de popa a proa entre L da el cabeceo θ, y la de babor a estribor entre B, el balanceo φ, dividida por √(1 + tan²θ) para que sobre un plano inclinado el eje vertical del casco sea justo su normal. Después un seguidor con amortiguamiento crítico suaviza los tres, para que el casco no tiemble con cada onda.',
     },
     math:
-      m('<mi>θ</mi><mo>=</mo><mi>arctan</mi><mfrac><mrow><msub><mi>h</mi><mtext>bow</mtext></msub><mo>−</mo><msub><mi>h</mi><mtext>stern</mtext></msub></mrow><mi>L</mi></mfrac>') +
-      m('<mi>φ</mi><mo>=</mo><mi>arctan</mi><mfrac><mrow><msub><mi>h</mi><mtext>starboard</mtext></msub><mo>−</mo><msub><mi>h</mi><mtext>port</mtext></msub></mrow><mrow><mi>B</mi><msqrt><mn>1</mn><mo>+</mo><msup><mi>tan</mi><mn>2</mn></msup><mi>θ</mi></msqrt></mrow></mfrac>'),
+      m(
+        '<mi>θ</mi><mo>=</mo><mi>arctan</mi><mfrac><mrow><msub><mi>h</mi><mtext>bow</mtext></msub><mo>−</mo><msub><mi>h</mi><mtext>stern</mtext></msub></mrow><mi>L</mi></mfrac>',
+      ) +
+      m(
+        '<mi>φ</mi><mo>=</mo><mi>arctan</mi><mfrac><mrow><msub><mi>h</mi><mtext>starboard</mtext></msub><mo>−</mo><msub><mi>h</mi><mtext>port</mtext></msub></mrow><mrow><mi>B</mi><msqrt><mn>1</mn><mo>+</mo><msup><mi>tan</mi><mn>2</mn></msup><mi>θ</mi></msqrt></mrow></mfrac>',
+      ),
     choice: {
       en: 'The damped follower is a choice, not hydrostatics: the boat has no buoyancy, mass or natural period, and stays within 0.2 m and 4.6° of the surface’s pose.',
       es: 'El seguidor amortiguado es una elección, no hidrostática: el barco no tiene flotabilidad, masa ni periodo propio, y queda a menos de 0,2 m y 4,6° de la superficie.',
@@ -158,7 +188,9 @@ export const lightTexts: Record<string, LessonText> = {
       en: 'Seen from below, the whole sky is squeezed into a circle overhead: Snell’s window. A ray leaving water (n_water = 1.333) for air (n_air = 1) bends away from the normal; beyond the critical angle θc = arcsin(1/1.333) = 48.6° it cannot leave at all: it is totally reflected, and you see the water’s own colour mirrored. So the sky’s whole hemisphere fits in a cone 97° across. Inside it the reflectance from below climbs from 2 % overhead to 1 at the rim, so the sky dims towards the edge. The rim moves with the waves, because each facet has its own normal.',
       es: 'Visto desde abajo, todo el cielo se comprime en un círculo sobre la cabeza: la ventana de Snell. Un rayo que pasa del agua (n_water = 1,333) al aire (n_air = 1) se aleja de la normal; más allá del ángulo crítico θc = arcsen(1/1,333) = 48,6° no puede salir: se refleja totalmente y se ve el color propio del agua reflejado. Así, todo el hemisferio del cielo cabe en un cono de 97°. Dentro, la reflectancia desde abajo sube del 2 % en la vertical a 1 en el borde, y el cielo se oscurece hacia él. El borde se mueve con las olas, porque cada faceta tiene su propia normal.',
     },
-    math: m('<msub><mi>θ</mi><mi>c</mi></msub><mo>=</mo><mi>arcsin</mi><mfrac><msub><mi>n</mi><mtext>air</mtext></msub><msub><mi>n</mi><mtext>water</mtext></msub></mfrac><mo>=</mo><mn>48.6</mn><mo>°</mo>'),
+    math: m(
+      '<msub><mi>θ</mi><mi>c</mi></msub><mo>=</mo><mi>arcsin</mi><mfrac><msub><mi>n</mi><mtext>air</mtext></msub><msub><mi>n</mi><mtext>water</mtext></msub></mfrac><mo>=</mo><mn>48.6</mn><mo>°</mo>',
+    ),
     choice: {
       en: 'Outside the window, what the surface mirrors is the fog’s painted colour for that direction, not a true reflection of the sea bed or the boat.',
       es: 'Fuera de la ventana, lo que refleja la superficie es el color pintado de la niebla en esa dirección, no un reflejo real del fondo ni del barco.',
@@ -180,7 +212,11 @@ export const lightTexts: Record<string, LessonText> = {
       en: 'Under the water, light is absorbed and scattered: red goes first, blue travels farthest. Pure water’s measured beam attenuation sets the ratios ε, 9.7 : 1 : 0.43 for red, green and blue; Water fog density σ is green’s attenuation per metre (0.035 is pure water, this view sets 0.06). The shader attenuates each channel by the Beer–Lambert law over the distance d travelled, and fills what was lost with the water’s own colour c_water, lighter looking up, darker looking down; c₀ is the colour behind the water. Then a Gaussian blur softens the whole picture, as the seed did when the camera dives.',
       es: 'Bajo el agua la luz se absorbe y se dispersa: el rojo desaparece antes y el azul llega más lejos. La atenuación medida del agua pura fija las proporciones ε, 9,7 : 1 : 0,43 para rojo, verde y azul; la densidad de niebla σ es la atenuación del verde por metro (0,035 es agua pura; esta vista pone 0,06). El shader atenúa cada canal con la ley de Beer–Lambert según la distancia recorrida d y rellena lo perdido con el color propio del agua c_water, más claro mirando hacia arriba y más oscuro hacia abajo; c₀ es el color detrás del agua. Después un desenfoque gaussiano suaviza toda la imagen, como hacía el informe al sumergirse.',
     },
-    math: m('<mi>T</mi><mo>(</mo><mi>d</mi><mo>)</mo><mo>=</mo><msup><mi>e</mi><mrow><mo>−</mo><mi>σ</mi><mi>ε</mi><mi>d</mi></mrow></msup>') + m('<mi>c</mi><mo>=</mo><msub><mi>c</mi><mn>0</mn></msub><mi>T</mi><mo>+</mo><msub><mi>c</mi><mtext>water</mtext></msub><mo>(</mo><mn>1</mn><mo>−</mo><mi>T</mi><mo>)</mo>'),
+    math:
+      m('<mi>T</mi><mo>(</mo><mi>d</mi><mo>)</mo><mo>=</mo><msup><mi>e</mi><mrow><mo>−</mo><mi>σ</mi><mi>ε</mi><mi>d</mi></mrow></msup>') +
+      m(
+        '<mi>c</mi><mo>=</mo><msub><mi>c</mi><mn>0</mn></msub><mi>T</mi><mo>+</mo><msub><mi>c</mi><mtext>water</mtext></msub><mo>(</mo><mn>1</mn><mo>−</mo><mi>T</mi><mo>)</mo>',
+      ),
     choice: {
       en: 'Only the ratios ε are measured; the water’s own colour, from 0.22 looking down to 1 looking up, and the blur are painted choices.',
       es: 'Solo las proporciones ε son medidas; el color propio del agua, de 0,22 mirando abajo a 1 mirando arriba, y el desenfoque son elecciones pintadas.',
@@ -202,7 +238,13 @@ export const lightTexts: Record<string, LessonText> = {
       en: 'Caustics are the bright net of light on the sea bed. Each wave is a small lens: sunlight refracted through it converges in some places and spreads in others. For every point of the bed the shader follows three rays from the corners of a 0.75 m patch of the surface, refracts them by Snell’s law, and compares the area A_bed their landing points span with the patch’s own area A_surface. A patch squeezed to half its area receives twice the light. Where rays cross, the gain would be infinite, so it is capped at 8; Caustics intensity s then mixes it with the flat light, 1.',
       es: 'Las cáusticas son la red brillante de luz en el fondo. Cada ola es una pequeña lente: la luz del sol refractada converge en unos sitios y se dispersa en otros. Para cada punto del fondo el shader sigue tres rayos desde las esquinas de un trozo de superficie de 0,75 m, los refracta con la ley de Snell y compara el área A_bed que abarcan sus puntos de llegada con el área propia del trozo, A_surface. Un trozo comprimido a la mitad de su área recibe el doble de luz. Donde los rayos se cruzan la ganancia sería infinita, así que se limita a 8; la intensidad de las cáusticas s la mezcla con la luz plana, 1.',
     },
-    math: m('<mtext>gain</mtext><mo>=</mo><mi>min</mi><mo>(</mo><mfrac><msub><mi>A</mi><mtext>surface</mtext></msub><msub><mi>A</mi><mtext>bed</mtext></msub></mfrac><mo>,</mo><mn>8</mn><mo>)</mo>') + m('<mi>E</mi><mo>=</mo><mi>max</mi><mo>(</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>+</mo><mi>s</mi><mo>(</mo><mtext>gain</mtext><mo>−</mo><mn>1</mn><mo>)</mo><mo>)</mo>'),
+    math:
+      m(
+        '<mtext>gain</mtext><mo>=</mo><mi>min</mi><mo>(</mo><mfrac><msub><mi>A</mi><mtext>surface</mtext></msub><msub><mi>A</mi><mtext>bed</mtext></msub></mfrac><mo>,</mo><mn>8</mn><mo>)</mo>',
+      ) +
+      m(
+        '<mi>E</mi><mo>=</mo><mi>max</mi><mo>(</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>+</mo><mi>s</mi><mo>(</mo><mtext>gain</mtext><mo>−</mo><mn>1</mn><mo>)</mo><mo>)</mo>',
+      ),
     choice: {
       en: 'The cap at 8 and an intensity above 1 are choices: a true caustic is unbounded on its fold lines, and intensity 2 or 3 exaggerates the contrast.',
       es: 'El límite de 8 y una intensidad mayor que 1 son elecciones: una cáustica real no tiene cota en sus pliegues, y una intensidad 2 o 3 exagera el contraste.',
@@ -225,7 +267,9 @@ export const lightTexts: Record<string, LessonText> = {
       es: 'Los rayos de luz son haces de sol que el agua hace visibles. El shader avanza N = 40 pasos de longitud Δt por cada línea de visión, hasta 60 m. En el paso i, a distancia t_i y profundidad d_i, lee S, la luz que dejan pasar las olas donde ese sol cruzó la superficie; la atenúa bajando, d_i/μ con μ el coseno del ángulo cenital del sol refractado, y hasta el ojo, t_i, con la extinción σε de cada canal; desvanece el contraste de los haces en D = 30 m de profundidad; y dispersa según σ y una fase p(θ), θ el ángulo respecto del sol. Cada factor es exponencial en t: cada paso multiplica por constantes.',
     },
     math:
-      m('<mi>L</mi><mo>=</mo><mi>σ</mi><mspace width="0.1em"/><mi>p</mi><mo>(</mo><mi>θ</mi><mo>)</mo><mspace width="0.1em"/><mi>Δ</mi><mi>t</mi><munderover><mo>∑</mo><mrow><mi>i</mi><mo>=</mo><mn>1</mn></mrow><mi>N</mi></munderover><mi>S</mi><mo>(</mo><msub><mi>s</mi><mi>i</mi></msub><mo>)</mo><mspace width="0.1em"/><msup><mi>e</mi><mrow><mo>−</mo><msub><mi>d</mi><mi>i</mi></msub><mo>/</mo><mi>D</mi></mrow></msup><mspace width="0.1em"/><msup><mi>e</mi><mrow><mo>−</mo><mi>σ</mi><mi>ε</mi><mo>(</mo><msub><mi>t</mi><mi>i</mi></msub><mo>+</mo><msub><mi>d</mi><mi>i</mi></msub><mo>/</mo><mi>μ</mi><mo>)</mo></mrow></msup>') +
+      m(
+        '<mi>L</mi><mo>=</mo><mi>σ</mi><mspace width="0.1em"/><mi>p</mi><mo>(</mo><mi>θ</mi><mo>)</mo><mspace width="0.1em"/><mi>Δ</mi><mi>t</mi><munderover><mo>∑</mo><mrow><mi>i</mi><mo>=</mo><mn>1</mn></mrow><mi>N</mi></munderover><mi>S</mi><mo>(</mo><msub><mi>s</mi><mi>i</mi></msub><mo>)</mo><mspace width="0.1em"/><msup><mi>e</mi><mrow><mo>−</mo><msub><mi>d</mi><mi>i</mi></msub><mo>/</mo><mi>D</mi></mrow></msup><mspace width="0.1em"/><msup><mi>e</mi><mrow><mo>−</mo><mi>σ</mi><mi>ε</mi><mo>(</mo><msub><mi>t</mi><mi>i</mi></msub><mo>+</mo><msub><mi>d</mi><mi>i</mi></msub><mo>/</mo><mi>μ</mi><mo>)</mo></mrow></msup>',
+      ) +
       m('<mi>p</mi><mo>(</mo><mi>θ</mi><mo>)</mo><mo>=</mo><mn>0.3</mn><mo>+</mo><mn>3</mn><msup><mi>cos</mi><mn>4</mn></msup><mi>θ</mi>'),
     choice: {
       en: 'S is a stand-in, the ripples’ height band-passed and cubed, not refraction; the phase p(θ), the 30 m fade and the gain are artistic.',

@@ -29,7 +29,10 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'The same grid, now displaced. For every vertex the shader evaluates the displacement function M(x, z, t), the sea’s height at that point and time t, and lifts the point by it: the seed’s “displacement shader”. Here M is the swell s (amplitude 1.4 m) plus the ripples r (strength 0.6 m). The grid’s vertices go to the GPU once; each frame the CPU sends only a few numbers (the swell’s phases, the ripples’ blend weight and offsets) and the GPU moves every vertex. The seed’s model only lifts points: no vertex ever moves sideways.',
       es: 'La misma malla, ahora desplazada. Para cada vértice el shader evalúa la función de desplazamiento M(x, z, t), la altura del mar en ese punto y en el instante t, y eleva el punto esa altura: el “displacement shader” del informe. Aquí M es el oleaje s (amplitud 1,4 m) más las ondas r (0,6 m). Los vértices suben a la GPU una sola vez; en cada fotograma la CPU envía solo unos números (las fases del oleaje, el peso de mezcla y los desplazamientos de las ondas) y la GPU mueve cada vértice. El modelo del informe solo eleva los puntos: ningún vértice se mueve de lado.',
     },
-    math: m('<mi>P</mi><mo>=</mo><mo>(</mo><mi>x</mi><mo>,</mo><mi>M</mi><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>,</mo><mi>z</mi><mo>)</mo>') + m('<mi>M</mi><mo>=</mo><mi>s</mi><mo>+</mo><mi>r</mi>'),
+    math:
+      m(
+        '<mi>P</mi><mo>=</mo><mo>(</mo><mi>x</mi><mo>,</mo><mi>M</mi><mo>(</mo><mi>x</mi><mo>,</mo><mi>z</mi><mo>,</mo><mi>t</mi><mo>)</mo><mo>,</mo><mi>z</mi><mo>)</mo>',
+      ) + m('<mi>M</mi><mo>=</mo><mi>s</mi><mo>+</mo><mi>r</mi>'),
     question: {
       ask: {
         en: 'If you set the ripple strength to 0, will the wireframe turn smooth and regular, or stay bumpy?',
@@ -50,9 +53,14 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'The swell is A times a sine of x times a cosine of z; a second, smaller product (0.45 A, wavenumber 1.73 k) turned by 37° breaks the egg box. The sine’s phase grows at ω = √(g k), with g = 9.81 m/s² and t the time; the cosine’s at 0.7 ω. The identity shows the product as two diagonal plane waves of wavenumber √2 k at 1.7 ω and 0.3 ω: neither has the √(g √2 k) ≈ 1.19 ω deep-water dispersion gives that length. They slide the egg box rigidly towards −x and −z; the second product slides another way, so the sum changes shape. The frequency control sets k, a wavenumber in rad/m; amplitude sets A.',
       es: 'El oleaje es A por un seno de x por un coseno de z; otro menor (0,45 A, 1,73 k), girado 37°, rompe la huevera. La fase del seno crece a ω = √(g k), con g = 9,81 m/s² y t el tiempo; la del coseno, a 0,7 ω. El producto equivale a dos ondas planas diagonales de número de onda √2 k, a 1,7 ω y 0,3 ω: ninguna tiene los √(g √2 k) ≈ 1,19 ω de la dispersión en aguas profundas. Deslizan la huevera rígida hacia −x y −z; el segundo producto, en otra dirección: la suma cambia de forma. El control de frecuencia fija k, un número de onda en rad/m; el de amplitud, A.',
     },
-    math: m('<mi>h</mi><mo>=</mo><mi>A</mi><mspace width="0.2em"/><mi>sin</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>+</mo><mi>ω</mi><mi>t</mi><mo>)</mo><mspace width="0.2em"/><mi>cos</mi><mo>(</mo><mi>k</mi><mi>z</mi><mo>+</mo><mn>0.7</mn><mi>ω</mi><mi>t</mi><mo>)</mo>')
-      + m('<mi>h</mi><mo>=</mo><mfrac><mi>A</mi><mn>2</mn></mfrac><mo>[</mo><mi>sin</mi><mo>(</mo><mi>k</mi><mo>(</mo><mi>x</mi><mo>+</mo><mi>z</mi><mo>)</mo><mo>+</mo><mn>1.7</mn><mi>ω</mi><mi>t</mi><mo>)</mo><mo>+</mo><mi>sin</mi><mo>(</mo><mi>k</mi><mo>(</mo><mi>x</mi><mo>−</mo><mi>z</mi><mo>)</mo><mo>+</mo><mn>0.3</mn><mi>ω</mi><mi>t</mi><mo>)</mo><mo>]</mo>')
-      + m('<mi>ω</mi><mo>=</mo><msqrt><mi>g</mi><mi>k</mi></msqrt>'),
+    math:
+      m(
+        '<mi>h</mi><mo>=</mo><mi>A</mi><mspace width="0.2em"/><mi>sin</mi><mo>(</mo><mi>k</mi><mi>x</mi><mo>+</mo><mi>ω</mi><mi>t</mi><mo>)</mo><mspace width="0.2em"/><mi>cos</mi><mo>(</mo><mi>k</mi><mi>z</mi><mo>+</mo><mn>0.7</mn><mi>ω</mi><mi>t</mi><mo>)</mo>',
+      ) +
+      m(
+        '<mi>h</mi><mo>=</mo><mfrac><mi>A</mi><mn>2</mn></mfrac><mo>[</mo><mi>sin</mi><mo>(</mo><mi>k</mi><mo>(</mo><mi>x</mi><mo>+</mo><mi>z</mi><mo>)</mo><mo>+</mo><mn>1.7</mn><mi>ω</mi><mi>t</mi><mo>)</mo><mo>+</mo><mi>sin</mi><mo>(</mo><mi>k</mi><mo>(</mo><mi>x</mi><mo>−</mo><mi>z</mi><mo>)</mo><mo>+</mo><mn>0.3</mn><mi>ω</mi><mi>t</mi><mo>)</mo><mo>]</mo>',
+      ) +
+      m('<mi>ω</mi><mo>=</mo><msqrt><mi>g</mi><mi>k</mi></msqrt>'),
     question: {
       ask: {
         en: 'If you raise the frequency control from 0.05 to 0.2 rad/m, will the swell’s bumps travel across the sea faster or slower?',
@@ -74,8 +82,13 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'The swell at the top of both ranges: A = 4 m and k = 0.2 rad/m, so the first product repeats every λ = 2π/k ≈ 31 m along x and along z. Crest to trough it spans H = 2A = 8 m in those 31 m, H/λ ≈ 0.25: real water cannot hold that, deep-water waves break near H/λ ≈ 1/7. The grid’s 2 m vertices start to show along the crests. The shader counts angles in turns and keeps only the fraction, so the angle stays small however far out, then takes the sine by its own series: a GPU’s own sin is promised only to about 2⁻¹¹.',
       es: 'El oleaje en lo más alto de ambos rangos: A = 4 m y k = 0,2 rad/m, así que el primer producto se repite cada λ = 2π/k ≈ 31 m en x y en z. De cresta a valle abarca H = 2A = 8 m en esos 31 m, H/λ ≈ 0,25: el agua real no lo sostiene, las olas profundas rompen cerca de H/λ ≈ 1/7. Los vértices, a 2 m, se notan en las crestas. El shader cuenta los ángulos en vueltas y conserva solo la fracción, y el ángulo sigue pequeño por lejos que esté, y calcula el seno con su propia serie: el sin de la GPU solo se garantiza con unos 2⁻¹¹.',
     },
-    math: m('<mi>λ</mi><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi></mrow><mi>k</mi></mfrac><mo>≈</mo><mn>31</mn><mspace width="0.2em"/><mtext>m</mtext>')
-      + m('<mfrac><mi>H</mi><mi>λ</mi></mfrac><mo>=</mo><mfrac><mrow><mn>2</mn><mi>A</mi></mrow><mi>λ</mi></mfrac><mo>≈</mo><mn>0.25</mn><mo>&gt;</mo><mfrac><mn>1</mn><mn>7</mn></mfrac>'),
+    math:
+      m(
+        '<mi>λ</mi><mo>=</mo><mfrac><mrow><mn>2</mn><mi>π</mi></mrow><mi>k</mi></mfrac><mo>≈</mo><mn>31</mn><mspace width="0.2em"/><mtext>m</mtext>',
+      ) +
+      m(
+        '<mfrac><mi>H</mi><mi>λ</mi></mfrac><mo>=</mo><mfrac><mrow><mn>2</mn><mi>A</mi></mrow><mi>λ</mi></mfrac><mo>≈</mo><mn>0.25</mn><mo>&gt;</mo><mfrac><mn>1</mn><mn>7</mn></mfrac>',
+      ),
     question: {
       ask: {
         en: 'Keep k = 0.2 rad/m and lower the amplitude from 4 m to 1 m: will the crests still look as steep, and will they stand closer together?',
@@ -97,7 +110,9 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'The seed report calls its noise Perlin noise; what it builds, and perlinNoise.ts with it, is value noise: random values at lattice points, smoothed and interpolated, where Perlin’s own noise puts random gradients. It begins with an integer noise function n(i, j): the same lattice point (i, j) and seed always give the same value in [−1, 1), with no pattern between neighbours. The picture is n on a 16 × 16 lattice, one grey square per value (the first heightmap’s third octave). Ours hashes i, j and the seed into a 32-bit integer h with the MurmurHash3 finaliser, exact in every browser.',
       es: 'El informe llama a su ruido ruido de Perlin; lo que construye, y perlinNoise.ts con él, es ruido de valor: valores aleatorios en los puntos de una red, suavizados e interpolados, donde el ruido de Perlin pone gradientes aleatorios. Empieza con una función de ruido entera n(i, j): el mismo punto (i, j) y la misma semilla dan siempre el mismo valor en [−1, 1), sin patrón entre vecinos. La imagen es n en una red de 16 × 16, un cuadrado gris por valor (la tercera octava del primer mapa de alturas). La nuestra mezcla i, j y la semilla en un entero h de 32 bits con el finalizador de MurmurHash3, exacto en todo navegador.',
     },
-    math: m('<mi>n</mi><mo>(</mo><mi>i</mi><mo>,</mo><mi>j</mi><mo>)</mo><mo>=</mo><mfrac><mi>h</mi><msup><mn>2</mn><mn>31</mn></msup></mfrac><mo>−</mo><mn>1</mn><mo>∈</mo><mo>[</mo><mo>−</mo><mn>1</mn><mo>,</mo><mn>1</mn><mo>)</mo>'),
+    math: m(
+      '<mi>n</mi><mo>(</mo><mi>i</mi><mo>,</mo><mi>j</mi><mo>)</mo><mo>=</mo><mfrac><mi>h</mi><msup><mn>2</mn><mn>31</mn></msup></mfrac><mo>−</mo><mn>1</mn><mo>∈</mo><mo>[</mo><mo>−</mo><mn>1</mn><mo>,</mo><mn>1</mn><mo>)</mo>',
+    ),
     question: {
       ask: {
         en: 'If you change the noise seed from 1 to 2, will the squares change a few at a time, or will the whole picture become a new one?',
@@ -119,8 +134,13 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'Step two replaces each lattice value n by a weighted mean s of its 3 × 3 neighbourhood: a quarter for the point itself, an eighth for each side (e, the sum of the four sides), a sixteenth for each corner (c, the sum of the four corners). Left, the integer noise of step one; right, the same lattice smoothed. The weights add up to one, so the values stay within [−1, 1), but their spread shrinks: for independent values the standard deviation σ falls to √(Σw²) = 3/8 of the raw one, so the greys draw towards the middle. The lattice wraps at its own period, which lets the heightmaps tile the sea without a seam.',
       es: 'El segundo paso sustituye cada valor n de la red por una media ponderada s de sus 3 × 3 vecinos: un cuarto para el propio punto, un octavo para cada lado (e, suma de los cuatro lados), un dieciseisavo para cada esquina (c, suma de las cuatro esquinas). A la izquierda, el ruido del paso uno; a la derecha, la red suavizada. Los pesos suman uno, así que los valores siguen en [−1, 1), pero se dispersan menos: para valores independientes la desviación típica σ baja a √(Σw²) = 3/8 de la original, y los grises se acercan al centro. La red se repite con su propio periodo: los mapas de alturas cubren el mar sin costuras.',
     },
-    math: m('<mi>s</mi><mo>=</mo><mfrac><mi>n</mi><mn>4</mn></mfrac><mo>+</mo><mfrac><mi>e</mi><mn>8</mn></mfrac><mo>+</mo><mfrac><mi>c</mi><mn>16</mn></mfrac>')
-      + m('<msub><mi>σ</mi><mi>s</mi></msub><mo>=</mo><msqrt><mfrac><mn>1</mn><mn>16</mn></mfrac><mo>+</mo><mfrac><mn>4</mn><mn>64</mn></mfrac><mo>+</mo><mfrac><mn>4</mn><mn>256</mn></mfrac></msqrt><mspace width="0.2em"/><msub><mi>σ</mi><mi>n</mi></msub><mo>=</mo><mfrac><mn>3</mn><mn>8</mn></mfrac><msub><mi>σ</mi><mi>n</mi></msub>'),
+    math:
+      m(
+        '<mi>s</mi><mo>=</mo><mfrac><mi>n</mi><mn>4</mn></mfrac><mo>+</mo><mfrac><mi>e</mi><mn>8</mn></mfrac><mo>+</mo><mfrac><mi>c</mi><mn>16</mn></mfrac>',
+      ) +
+      m(
+        '<msub><mi>σ</mi><mi>s</mi></msub><mo>=</mo><msqrt><mfrac><mn>1</mn><mn>16</mn></mfrac><mo>+</mo><mfrac><mn>4</mn><mn>64</mn></mfrac><mo>+</mo><mfrac><mn>4</mn><mn>256</mn></mfrac></msqrt><mspace width="0.2em"/><msub><mi>σ</mi><mi>n</mi></msub><mo>=</mo><mfrac><mn>3</mn><mn>8</mn></mfrac><msub><mi>σ</mi><mi>n</mi></msub>',
+      ),
     question: {
       ask: {
         en: 'Is the right picture the left one blurred, with its dark and light patches where they were, or a new pattern?',
@@ -142,8 +162,13 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'Step three interpolates between lattice points with the cosine curve (1 − cos πt)/2, flat at both ends: left, the smoothed lattice of step two, now a smooth surface. Then octaves are summed: octave o (0 to 4) is such a surface nₒ on 4·2ᵒ cells across the tile, twice the previous one’s, weighted by pᵒ with the persistence p = 0.62; the sum N is divided by the weights’ sum. Right: large soft hills with fine detail, centred on the mean N̄ and scaled to a peak of 1. That is the first heightmap H₀, 128 × 128 texels over a 96 m tile, as the vertex shader receives it.',
       es: 'El tercer paso interpola entre puntos de la red con la curva coseno (1 − cos πt)/2, plana en ambos extremos: a la izquierda, la red del paso dos, ahora una superficie suave. Después se suman octavas: la octava o (de 0 a 4) es una superficie nₒ de 4·2ᵒ celdas por mosaico, el doble que la anterior, con peso pᵒ y persistencia p = 0,62; la suma N se divide por la de los pesos. A la derecha: colinas suaves con detalle fino, centradas en la media N̄ y escaladas a un pico de 1. Es el primer mapa de alturas H₀, 128 × 128 téxeles sobre 96 m, como lo recibe el vertex shader.',
     },
-    math: m('<mi>N</mi><mo>=</mo><mfrac><mrow><munderover><mo>∑</mo><mrow><mi>o</mi><mo>=</mo><mn>0</mn></mrow><mn>4</mn></munderover><msup><mi>p</mi><mi>o</mi></msup><mspace width="0.2em"/><msub><mi>n</mi><mi>o</mi></msub></mrow><mrow><munderover><mo>∑</mo><mrow><mi>o</mi><mo>=</mo><mn>0</mn></mrow><mn>4</mn></munderover><msup><mi>p</mi><mi>o</mi></msup></mrow></mfrac>')
-      + m('<msub><mi>H</mi><mn>0</mn></msub><mo>=</mo><mfrac><mrow><mi>N</mi><mo>−</mo><mover><mi>N</mi><mo>¯</mo></mover></mrow><mrow><mi>max</mi><mo>|</mo><mi>N</mi><mo>−</mo><mover><mi>N</mi><mo>¯</mo></mover><mo>|</mo></mrow></mfrac>'),
+    math:
+      m(
+        '<mi>N</mi><mo>=</mo><mfrac><mrow><munderover><mo>∑</mo><mrow><mi>o</mi><mo>=</mo><mn>0</mn></mrow><mn>4</mn></munderover><msup><mi>p</mi><mi>o</mi></msup><mspace width="0.2em"/><msub><mi>n</mi><mi>o</mi></msub></mrow><mrow><munderover><mo>∑</mo><mrow><mi>o</mi><mo>=</mo><mn>0</mn></mrow><mn>4</mn></munderover><msup><mi>p</mi><mi>o</mi></msup></mrow></mfrac>',
+      ) +
+      m(
+        '<msub><mi>H</mi><mn>0</mn></msub><mo>=</mo><mfrac><mrow><mi>N</mi><mo>−</mo><mover><mi>N</mi><mo>¯</mo></mover></mrow><mrow><mi>max</mi><mo>|</mo><mi>N</mi><mo>−</mo><mover><mi>N</mi><mo>¯</mo></mover><mo>|</mo></mrow></mfrac>',
+      ),
     question: {
       ask: {
         en: 'The left picture is octave 2 alone. Will the right picture look like it with detail added, or will its big hills lie elsewhere?',
@@ -165,8 +190,13 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'The vertex shader reads both heightmaps as textures (vertex texture fetch) and mixes them with a weight b = (1 − cos βt)/2 swinging between 0 and 1, β the blend speed (0.25 rad/s here, a full swing every 25 s): left H₀, right H₁, in the middle their mix now. Each map is read at p + vᵢt, p the point, so its pattern slides at 0.59 or 0.51 m/s; S is the ripple strength, 1.2 m here. The ripples change all the time, but both maps repeat every 96 m, so at any instant the ripples do too: the blend changes them in time, not in space. Set View to ocean to see the ripples alone.',
       es: 'El vertex shader lee ambos mapas de alturas como texturas (vertex texture fetch) y los mezcla con un peso b = (1 − cos βt)/2 que oscila entre 0 y 1, con β la velocidad de mezcla (aquí 0,25 rad/s: una oscilación cada 25 s): a la izquierda H₀, a la derecha H₁, en el centro su mezcla ahora. Cada mapa se lee en p + vᵢt (p, el punto): su dibujo se desliza a 0,59 o 0,51 m/s; S es la intensidad de las ondas, aquí 1,2 m. Ambos mapas se repiten cada 96 m; en cada instante, las ondas también: la mezcla las cambia en el tiempo, no en el espacio. Con Vista en ocean se ven solas.',
     },
-    math: m('<mi>r</mi><mo>=</mo><mi>S</mi><mspace width="0.2em"/><mo>[</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>b</mi><mo>)</mo><msub><mi>H</mi><mn>0</mn></msub><mo>(</mo><mi>p</mi><mo>+</mo><msub><mi>v</mi><mn>0</mn></msub><mi>t</mi><mo>)</mo><mo>+</mo><mi>b</mi><msub><mi>H</mi><mn>1</mn></msub><mo>(</mo><mi>p</mi><mo>+</mo><msub><mi>v</mi><mn>1</mn></msub><mi>t</mi><mo>)</mo><mo>]</mo>')
-      + m('<mi>b</mi><mo>=</mo><mfrac><mrow><mn>1</mn><mo>−</mo><mi>cos</mi><mo>(</mo><mi>β</mi><mi>t</mi><mo>)</mo></mrow><mn>2</mn></mfrac>'),
+    math:
+      m(
+        '<mi>r</mi><mo>=</mo><mi>S</mi><mspace width="0.2em"/><mo>[</mo><mo>(</mo><mn>1</mn><mo>−</mo><mi>b</mi><mo>)</mo><msub><mi>H</mi><mn>0</mn></msub><mo>(</mo><mi>p</mi><mo>+</mo><msub><mi>v</mi><mn>0</mn></msub><mi>t</mi><mo>)</mo><mo>+</mo><mi>b</mi><msub><mi>H</mi><mn>1</mn></msub><mo>(</mo><mi>p</mi><mo>+</mo><msub><mi>v</mi><mn>1</mn></msub><mi>t</mi><mo>)</mo><mo>]</mo>',
+      ) +
+      m(
+        '<mi>b</mi><mo>=</mo><mfrac><mrow><mn>1</mn><mo>−</mo><mi>cos</mi><mo>(</mo><mi>β</mi><mi>t</mi><mo>)</mo></mrow><mn>2</mn></mfrac>',
+      ),
     question: {
       ask: {
         en: 'Watch the middle picture: will it ever look exactly like the left one, and how often?',
@@ -187,7 +217,11 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'The seed’s “wrong normals”: the vertices move, but each keeps the flat plane’s normal N = (0, 1, 0). Colour shows the normal, each component taken from [−1, 1] to [0, 1] (x, y, z as red, green, blue), so the whole sea is one pale green, (0.5, 1, 0.5): the lighting cannot see the waves, and only the outline against the sky moves. Switch Normals to fabricated to see the difference the next lesson explains.',
       es: 'Las “normales incorrectas” del informe: los vértices se mueven, pero cada uno conserva la normal del plano, N = (0, 1, 0). El color muestra la normal, cada componente llevada de [−1, 1] a [0, 1] (x, y, z como rojo, verde, azul), así que todo el mar es un mismo verde pálido, (0,5, 1, 0,5): la iluminación no ve las olas, y solo se mueve el contorno contra el cielo. Cambia Normales a fabricadas para ver la diferencia que explica la lección siguiente.',
     },
-    math: m('<mi>N</mi><mo>=</mo><mo>(</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>,</mo><mn>0</mn><mo>)</mo>') + m('<mtext>colour</mtext><mo>=</mo><mfrac><mrow><mi>N</mi><mo>+</mo><mn>1</mn></mrow><mn>2</mn></mfrac><mo>=</mo><mo>(</mo><mn>0.5</mn><mo>,</mo><mn>1</mn><mo>,</mo><mn>0.5</mn><mo>)</mo>'),
+    math:
+      m('<mi>N</mi><mo>=</mo><mo>(</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>,</mo><mn>0</mn><mo>)</mo>') +
+      m(
+        '<mtext>colour</mtext><mo>=</mo><mfrac><mrow><mi>N</mi><mo>+</mo><mn>1</mn></mrow><mn>2</mn></mfrac><mo>=</mo><mo>(</mo><mn>0.5</mn><mo>,</mo><mn>1</mn><mo>,</mo><mn>0.5</mn><mo>)</mo>',
+      ),
     question: {
       ask: {
         en: 'The swell here has a 2.5 m amplitude. If you raise it to 4 m, will any colour on the sea change?',
@@ -204,8 +238,13 @@ export const seedSeaTexts: Record<string, LessonText> = {
       en: 'Right normals, as the seed fabricates them. Besides the vertex V1 = (x, M(x, z), z), the shader evaluates M at two invented neighbours, V2 a step Δ = 1 m along x and V3 a step Δ along z; h₁, h₂, h₃ are their heights. The two edges from V1 span a small triangle that approximates the tangent plane, and their cross product is its normal: a forward difference, exact only as Δ shrinks. Colours now change across every wave: faces tilted towards +x gain red and towards −x lose it, faces towards +z gain blue, and the steeper a face, the less green.',
       es: 'Normales correctas, como las fabrica el informe. Además del vértice V1 = (x, M(x, z), z), el shader evalúa M en dos vecinos inventados: V2, un paso Δ = 1 m en x, y V3, un paso Δ en z; h₁, h₂, h₃ son sus alturas. Las dos aristas desde V1 forman un pequeño triángulo que aproxima el plano tangente, y su producto vectorial es su normal: una diferencia hacia delante, exacta solo cuando Δ tiende a cero. Ahora los colores cambian en cada ola: las caras inclinadas hacia +x ganan rojo y hacia −x lo pierden, hacia +z ganan azul, y cuanto más empinada la cara, menos verde.',
     },
-    math: m('<mi>N</mi><mo>∝</mo><mo>(</mo><msub><mi>V</mi><mn>3</mn></msub><mo>−</mo><msub><mi>V</mi><mn>1</mn></msub><mo>)</mo><mo>×</mo><mo>(</mo><msub><mi>V</mi><mn>2</mn></msub><mo>−</mo><msub><mi>V</mi><mn>1</mn></msub><mo>)</mo>')
-      + m('<mi>N</mi><mo>∝</mo><mo>(</mo><mo>−</mo><mi>Δ</mi><mo>(</mo><msub><mi>h</mi><mn>2</mn></msub><mo>−</mo><msub><mi>h</mi><mn>1</mn></msub><mo>)</mo><mo>,</mo><msup><mi>Δ</mi><mn>2</mn></msup><mo>,</mo><mo>−</mo><mi>Δ</mi><mo>(</mo><msub><mi>h</mi><mn>3</mn></msub><mo>−</mo><msub><mi>h</mi><mn>1</mn></msub><mo>)</mo><mo>)</mo>'),
+    math:
+      m(
+        '<mi>N</mi><mo>∝</mo><mo>(</mo><msub><mi>V</mi><mn>3</mn></msub><mo>−</mo><msub><mi>V</mi><mn>1</mn></msub><mo>)</mo><mo>×</mo><mo>(</mo><msub><mi>V</mi><mn>2</mn></msub><mo>−</mo><msub><mi>V</mi><mn>1</mn></msub><mo>)</mo>',
+      ) +
+      m(
+        '<mi>N</mi><mo>∝</mo><mo>(</mo><mo>−</mo><mi>Δ</mi><mo>(</mo><msub><mi>h</mi><mn>2</mn></msub><mo>−</mo><msub><mi>h</mi><mn>1</mn></msub><mo>)</mo><mo>,</mo><msup><mi>Δ</mi><mn>2</mn></msup><mo>,</mo><mo>−</mo><mi>Δ</mi><mo>(</mo><msub><mi>h</mi><mn>3</mn></msub><mo>−</mo><msub><mi>h</mi><mn>1</mn></msub><mo>)</mo><mo>)</mo>',
+      ),
     question: {
       ask: {
         en: 'The swell here has a 2.5 m amplitude. If you raise it to 4 m, will the colours swing further from pale green or less?',

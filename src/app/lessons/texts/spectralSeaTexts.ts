@@ -8,8 +8,13 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'Level of detail, the seed’s optimisation: the sea is cut into square chunks 48 m wide, and each is drawn with fewer vertices the farther its nearest point lies from the camera, height included. Band b begins at distance d_b from the camera and keeps every s_b-th vertex: band 0, nearer than L, every vertex (2 m apart); band 1, from L, every 2nd; band 2, from 2L, every 3rd; then every 6th, 12th and 24th from 4L, 8L and 16L. The colours name the bands: red, orange, yellow, green, cyan, violet. This camera is 260 m up and L = 100 m.',
       es: 'Nivel de detalle, optimización del informe: el mar se divide en parcelas cuadradas de 48 m de lado, y cada una se dibuja con menos vértices cuanto más lejos de la cámara está su punto más cercano, altura incluida. La banda b empieza a la distancia d_b de la cámara y conserva uno de cada s_b vértices: la banda 0, a menos de L, todos (a 2 m); la banda 1, desde L, uno de cada dos; la banda 2, desde 2L, uno de cada tres; luego uno de cada 6, 12 y 24 desde 4L, 8L y 16L. Colores de las bandas: rojo, naranja, amarillo, verde, cian, violeta. Cámara a 260 m de altura, L = 100 m.',
     },
-    math: m('<msub><mi>d</mi><mn>0</mn></msub><mo>=</mo><mn>0</mn><mo>,</mo><mspace width="0.4em"/><msub><mi>d</mi><mi>b</mi></msub><mo>=</mo><mi>L</mi><mspace width="0.2em"/><msup><mn>2</mn><mrow><mi>b</mi><mo>−</mo><mn>1</mn></mrow></msup><mspace width="0.4em"/><mo>(</mo><mi>b</mi><mo>≥</mo><mn>1</mn><mo>)</mo>') +
-      m('<msub><mi>s</mi><mi>b</mi></msub><mo>=</mo><mn>1</mn><mo>,</mo><mn>2</mn><mo>,</mo><mn>3</mn><mo>,</mo><mn>6</mn><mo>,</mo><mn>12</mn><mo>,</mo><mn>24</mn>'),
+    math:
+      m(
+        '<msub><mi>d</mi><mn>0</mn></msub><mo>=</mo><mn>0</mn><mo>,</mo><mspace width="0.4em"/><msub><mi>d</mi><mi>b</mi></msub><mo>=</mo><mi>L</mi><mspace width="0.2em"/><msup><mn>2</mn><mrow><mi>b</mi><mo>−</mo><mn>1</mn></mrow></msup><mspace width="0.4em"/><mo>(</mo><mi>b</mi><mo>≥</mo><mn>1</mn><mo>)</mo>',
+      ) +
+      m(
+        '<msub><mi>s</mi><mi>b</mi></msub><mo>=</mo><mn>1</mn><mo>,</mo><mn>2</mn><mo>,</mo><mn>3</mn><mo>,</mo><mn>6</mn><mo>,</mo><mn>12</mn><mo>,</mo><mn>24</mn>',
+      ),
     question: {
       ask: {
         en: 'The camera is 260 m up and L = 100 m. Will you see any red (band 0) chunks? If not, how large must L be for red to appear?',
@@ -30,7 +35,9 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'Where two bands meet, a sudden change of vertex spacing makes the waves pop. Geomorphing (CDLOD) removes it: in a zone at the end of a band, a vertex with grid coordinate k slides in the plane to k′, towards k_c, where the coarser band’s grid puts it, by a factor f that grows linearly from 0 to 1 as its distance d crosses the zone, which starts at d_s and is w wide. At the border the grids agree: the switch changes nothing on screen. A zone spans at most half its band and, past band 0, must leave the band’s first 69 m still, so a short band gets none. Turn Geomorphing off to see the pops.',
       es: 'Donde se tocan dos bandas, un cambio brusco de espaciado hace saltar las olas. El geomorfismo (CDLOD) lo evita: en una zona al final de cada banda, un vértice de coordenada de malla k se desliza en el plano hasta k′, hacia k_c, donde lo pone la malla de la banda más gruesa, con un factor f que crece linealmente de 0 a 1 mientras su distancia d cruza la zona, que empieza en d_s y mide w. En el borde las mallas coinciden: el cambio no se nota. Una zona ocupa como mucho media banda y, pasada la banda 0, deja quietos sus primeros 69 m: una banda corta no tiene zona. Apaga el geomorfismo para ver los saltos.',
     },
-    math: m('<msup><mi>k</mi><mo>′</mo></msup><mo>=</mo><mi>k</mi><mo>+</mo><mi>f</mi><mo>(</mo><msub><mi>k</mi><mi>c</mi></msub><mo>−</mo><mi>k</mi><mo>)</mo><mo>,</mo><mspace width="0.4em"/><mi>f</mi><mo>=</mo><mi>clamp</mi><mrow><mo>(</mo><mfrac><mrow><mi>d</mi><mo>−</mo><msub><mi>d</mi><mi>s</mi></msub></mrow><mi>w</mi></mfrac><mo>,</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>)</mo></mrow>'),
+    math: m(
+      '<msup><mi>k</mi><mo>′</mo></msup><mo>=</mo><mi>k</mi><mo>+</mo><mi>f</mi><mo>(</mo><msub><mi>k</mi><mi>c</mi></msub><mo>−</mo><mi>k</mi><mo>)</mo><mo>,</mo><mspace width="0.4em"/><mi>f</mi><mo>=</mo><mi>clamp</mi><mrow><mo>(</mo><mfrac><mrow><mi>d</mi><mo>−</mo><msub><mi>d</mi><mi>s</mi></msub></mrow><mi>w</mi></mfrac><mo>,</mo><mn>0</mn><mo>,</mo><mn>1</mn><mo>)</mo></mrow>',
+    ),
     question: {
       ask: {
         en: 'Here L = 40 m. With Geomorphing on, will every border between bands switch without a pop?',
@@ -52,8 +59,13 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'Frustum culling: only chunks the camera may see are drawn. They are kept in a quadtree; each node’s box spans the sea’s lowest to highest point. Each of the frustum’s six planes π has an inward normal n and offset d. From the root, a box whose corner p⁺ farthest along n lies behind some plane is skipped with everything below it; a box whose corner p⁻ least far along n lies in front of all six is drawn without testing its children; only the others are opened, down to single chunks. The test is conservative: near the frustum’s edges an outside box may still be drawn. Here the selection, frozen for the default camera, is seen from afar.',
       es: 'Frustum culling: solo se dibujan las parcelas visibles. Se guardan en un quadtree; la caja de cada nodo va del punto más bajo del mar al más alto. Cada uno de los seis planos π del frustum tiene una normal interior n y un término d. Desde la raíz, una caja cuya esquina p⁺ más avanzada según n queda tras algún plano se descarta con todo lo de debajo; una cuya esquina p⁻ menos avanzada según n queda delante de los seis se dibuja sin mirar sus hijos; solo se abren las demás. La prueba es conservadora: cerca de los bordes puede dibujarse una caja que está fuera. Aquí la selección, congelada para la cámara habitual, se ve desde lejos.',
     },
-    math: m('<mtext>skip</mtext><mo>⇐</mo><mo>∃</mo><mi>π</mi><mo>:</mo><mspace width="0.2em"/><mi>n</mi><mo>·</mo><msup><mi>p</mi><mo>+</mo></msup><mo>+</mo><mi>d</mi><mo>&lt;</mo><mn>0</mn>') +
-      m('<mtext>inside</mtext><mo>⇔</mo><mo>∀</mo><mi>π</mi><mo>:</mo><mspace width="0.2em"/><mi>n</mi><mo>·</mo><msup><mi>p</mi><mo>−</mo></msup><mo>+</mo><mi>d</mi><mo>≥</mo><mn>0</mn>'),
+    math:
+      m(
+        '<mtext>skip</mtext><mo>⇐</mo><mo>∃</mo><mi>π</mi><mo>:</mo><mspace width="0.2em"/><mi>n</mi><mo>·</mo><msup><mi>p</mi><mo>+</mo></msup><mo>+</mo><mi>d</mi><mo>&lt;</mo><mn>0</mn>',
+      ) +
+      m(
+        '<mtext>inside</mtext><mo>⇔</mo><mo>∀</mo><mi>π</mi><mo>:</mo><mspace width="0.2em"/><mi>n</mi><mo>·</mo><msup><mi>p</mi><mo>−</mo></msup><mo>+</mo><mi>d</mi><mo>≥</mo><mn>0</mn>',
+      ),
     question: {
       ask: {
         en: 'Seen from afar, will the drawn sea end exactly at the frozen frustum’s edges, or stick out past them?',
@@ -71,7 +83,9 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'Beyond the seed: a sea built from the wind. A spectrum S(ω) gives the variance of the surface’s height per unit of angular frequency ω; Pierson and Moskowitz fitted it to fully developed seas, where the wind has blown long enough over enough water. In it α = 8.1·10⁻³ and β = 0.74 are fitted constants, g is gravity and ω₀ = g/U₁₉.₅, with U₁₉.₅ = 1.026 U₁₀ the wind 19.5 m up. Here U₁₀ = 4 m/s, a gentle breeze (Beaufort 3): the peak wavelength is about 14 m and the significant height Hs = 4√m₀, m₀ = ∫S dω, only about 0.36 m. The FFT then adds thousands of waves drawn from S.',
       es: 'Más allá del informe: un mar construido a partir del viento. Un espectro S(ω) da la varianza de la altura de la superficie por unidad de frecuencia angular ω; Pierson y Moskowitz lo ajustaron a mares totalmente desarrollados, donde el viento sopló lo bastante. En él α = 8,1·10⁻³ y β = 0,74 son constantes ajustadas, g es la gravedad y ω₀ = g/U₁₉.₅, con U₁₉.₅ = 1,026 U₁₀ el viento a 19,5 m. Aquí U₁₀ = 4 m/s, una brisa débil (Beaufort 3): la longitud de onda del pico es de unos 14 m y la altura significativa Hs = 4√m₀, m₀ = ∫S dω, solo de unos 0,36 m. La FFT suma miles de olas de S.',
     },
-    math: m('<mi>S</mi><mo>(</mo><mi>ω</mi><mo>)</mo><mo>=</mo><mfrac><mrow><mi>α</mi><msup><mi>g</mi><mn>2</mn></msup></mrow><msup><mi>ω</mi><mn>5</mn></msup></mfrac><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mi>β</mi><msup><mrow><mo>(</mo><mfrac><msub><mi>ω</mi><mn>0</mn></msub><mi>ω</mi></mfrac><mo>)</mo></mrow><mn>4</mn></msup><mo>)</mo></mrow><mo>,</mo><mspace width="0.4em"/><msub><mi>ω</mi><mn>0</mn></msub><mo>=</mo><mfrac><mi>g</mi><msub><mi>U</mi><mn>19.5</mn></msub></mfrac>'),
+    math: m(
+      '<mi>S</mi><mo>(</mo><mi>ω</mi><mo>)</mo><mo>=</mo><mfrac><mrow><mi>α</mi><msup><mi>g</mi><mn>2</mn></msup></mrow><msup><mi>ω</mi><mn>5</mn></msup></mfrac><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mi>β</mi><msup><mrow><mo>(</mo><mfrac><msub><mi>ω</mi><mn>0</mn></msub><mi>ω</mi></mfrac><mo>)</mo></mrow><mn>4</mn></msup><mo>)</mo></mrow><mo>,</mo><mspace width="0.4em"/><msub><mi>ω</mi><mn>0</mn></msub><mo>=</mo><mfrac><mi>g</mi><msub><mi>U</mi><mn>19.5</mn></msub></mfrac>',
+    ),
     question: {
       ask: {
         en: 'If you double the wind to 8 m/s, how much longer will the peak wave be, and how much higher the sea?',
@@ -111,7 +125,9 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'JONSWAP is the spectrum of a growing sea, fitted to measurements in the North Sea: the wind has blown over a limited fetch F, here 20 km at U₁₀ = 15 m/s. Its peak ωp = 22 (g²/(U₁₀F))^⅓ and its level α = 0.076 (gF/U₁₀²)^−0.22 both come from the fetch, and the peak is sharpened by γ = 3.3 with widths σ = 0.07 below ωp and 0.09 above. Here Hs is about 1.25 m and the peak wavelength about 27 m, against 5.1 m and 197 m for a fully developed sea at this wind. Raise the fetch and the peak moves to longer waves, towards Pierson–Moskowitz’s.',
       es: 'JONSWAP es el espectro de un mar en crecimiento, ajustado a medidas en el mar del Norte: el viento ha soplado sobre un fetch limitado F, aquí 20 km a U₁₀ = 15 m/s. Su pico ωp = 22 (g²/(U₁₀F))^⅓ y su nivel α = 0,076 (gF/U₁₀²)^−0,22 salen ambos del fetch, y el pico se afila con γ = 3,3 y anchos σ = 0,07 bajo ωp y 0,09 encima. Aquí Hs es de unos 1,25 m y la longitud de onda del pico de unos 27 m, frente a 5,1 m y 197 m de un mar totalmente desarrollado con este viento. Si subes el fetch, el pico pasa a olas más largas, hacia el de Pierson–Moskowitz.',
     },
-    math: m('<mi>S</mi><mo>(</mo><mi>ω</mi><mo>)</mo><mo>=</mo><mfrac><mrow><mi>α</mi><msup><mi>g</mi><mn>2</mn></msup></mrow><msup><mi>ω</mi><mn>5</mn></msup></mfrac><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mfrac><mn>5</mn><mn>4</mn></mfrac><msup><mrow><mo>(</mo><mfrac><msub><mi>ω</mi><mi>p</mi></msub><mi>ω</mi></mfrac><mo>)</mo></mrow><mn>4</mn></msup><mo>)</mo></mrow><msup><mi>γ</mi><mi>r</mi></msup><mo>,</mo><mspace width="0.4em"/><mi>r</mi><mo>=</mo><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mfrac><msup><mrow><mo>(</mo><mi>ω</mi><mo>−</mo><msub><mi>ω</mi><mi>p</mi></msub><mo>)</mo></mrow><mn>2</mn></msup><mrow><mn>2</mn><msup><mi>σ</mi><mn>2</mn></msup><msubsup><mi>ω</mi><mi>p</mi><mn>2</mn></msubsup></mrow></mfrac><mo>)</mo></mrow>'),
+    math: m(
+      '<mi>S</mi><mo>(</mo><mi>ω</mi><mo>)</mo><mo>=</mo><mfrac><mrow><mi>α</mi><msup><mi>g</mi><mn>2</mn></msup></mrow><msup><mi>ω</mi><mn>5</mn></msup></mfrac><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mfrac><mn>5</mn><mn>4</mn></mfrac><msup><mrow><mo>(</mo><mfrac><msub><mi>ω</mi><mi>p</mi></msub><mi>ω</mi></mfrac><mo>)</mo></mrow><mn>4</mn></msup><mo>)</mo></mrow><msup><mi>γ</mi><mi>r</mi></msup><mo>,</mo><mspace width="0.4em"/><mi>r</mi><mo>=</mo><mi>exp</mi><mrow><mo>(</mo><mo>−</mo><mfrac><msup><mrow><mo>(</mo><mi>ω</mi><mo>−</mo><msub><mi>ω</mi><mi>p</mi></msub><mo>)</mo></mrow><mn>2</mn></msup><mrow><mn>2</mn><msup><mi>σ</mi><mn>2</mn></msup><msubsup><mi>ω</mi><mi>p</mi><mn>2</mn></msubsup></mrow></mfrac><mo>)</mo></mrow>',
+    ),
     question: {
       ask: {
         en: 'If you raise the fetch eightfold, from 20 to 160 km, how much longer will the peak wave be?',
@@ -133,9 +149,16 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'A gale, U₁₀ = 20 m/s (Beaufort 8): Hs about 9 m, peak wavelength about 350 m. Choppiness λ moves points sideways towards the crests, which sharpen while the troughs widen. Where that horizontal map folds, its Jacobian J, with entries Jxx = ∂Dx/∂x, Jzz = ∂Dz/∂z and Jxz = ∂Dx/∂z of the sideways displacement D, has its determinant or its smaller eigenvalue λmin fall to zero. Below a threshold of min(det J, λmin), set so that about 10 % of the sea is breaking (Monahan’s coverage), the shader makes foam F₀. Foam left behind fades with time t (below), τ = 2.5 s, and drifts at 3 % of the wind; from Beaufort 7 windrows sweep it into streaks.',
       es: 'Un temporal, U₁₀ = 20 m/s (Beaufort 8): Hs de unos 9 m, longitud de onda del pico de unos 350 m. La agudeza λ lleva los puntos hacia las crestas, que se afilan; los senos se ensanchan. Donde esa transformación se pliega, su jacobiano J, con entradas Jxx = ∂Dx/∂x, Jzz = ∂Dz/∂z y Jxz = ∂Dx/∂z del desplazamiento D, ve anularse su determinante o su menor autovalor λmin. Bajo un umbral de min(det J, λmin), fijado para que rompa un 10 % del mar (Monahan), se forma espuma F₀. La que queda decae con el tiempo t (abajo), τ = 2,5 s, y deriva al 3 % del viento; desde Beaufort 7 las hileras la barren en franjas.',
     },
-    math: m('<mi>det</mi><mi>J</mi><mo>=</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>J</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>)</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>J</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub><mo>)</mo><mo>−</mo><msubsup><mi>J</mi><mrow><mi>x</mi><mi>z</mi></mrow><mn>2</mn></msubsup>') +
-      m('<msub><mi>λ</mi><mtext>min</mtext></msub><mo>=</mo><mn>1</mn><mo>+</mo><mfrac><mrow><msub><mi>J</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>+</mo><msub><mi>J</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub></mrow><mn>2</mn></mfrac><mo>−</mo><msqrt><msup><mrow><mo>(</mo><mfrac><mrow><msub><mi>J</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>−</mo><msub><mi>J</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub></mrow><mn>2</mn></mfrac><mo>)</mo></mrow><mn>2</mn></msup><mo>+</mo><msubsup><mi>J</mi><mrow><mi>x</mi><mi>z</mi></mrow><mn>2</mn></msubsup></msqrt>') +
-      m('<mi>F</mi><mo>(</mo><mi>t</mi><mo>)</mo><mo>=</mo><msub><mi>F</mi><mn>0</mn></msub><mspace width="0.1em"/><msup><mi>e</mi><mrow><mo>−</mo><mi>t</mi><mo>/</mo><mi>τ</mi></mrow></msup>'),
+    math:
+      m(
+        '<mi>det</mi><mi>J</mi><mo>=</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>J</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>)</mo><mo>(</mo><mn>1</mn><mo>+</mo><msub><mi>J</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub><mo>)</mo><mo>−</mo><msubsup><mi>J</mi><mrow><mi>x</mi><mi>z</mi></mrow><mn>2</mn></msubsup>',
+      ) +
+      m(
+        '<msub><mi>λ</mi><mtext>min</mtext></msub><mo>=</mo><mn>1</mn><mo>+</mo><mfrac><mrow><msub><mi>J</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>+</mo><msub><mi>J</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub></mrow><mn>2</mn></mfrac><mo>−</mo><msqrt><msup><mrow><mo>(</mo><mfrac><mrow><msub><mi>J</mi><mrow><mi>x</mi><mi>x</mi></mrow></msub><mo>−</mo><msub><mi>J</mi><mrow><mi>z</mi><mi>z</mi></mrow></msub></mrow><mn>2</mn></mfrac><mo>)</mo></mrow><mn>2</mn></msup><mo>+</mo><msubsup><mi>J</mi><mrow><mi>x</mi><mi>z</mi></mrow><mn>2</mn></msubsup></msqrt>',
+      ) +
+      m(
+        '<mi>F</mi><mo>(</mo><mi>t</mi><mo>)</mo><mo>=</mo><msub><mi>F</mi><mn>0</mn></msub><mspace width="0.1em"/><msup><mi>e</mi><mrow><mo>−</mo><mi>t</mi><mo>/</mo><mi>τ</mi></mrow></msup>',
+      ),
     question: {
       ask: {
         en: 'If you raise Foam decay τ from 2.5 s to 8 s, will more whitecaps break, or will only the trails behind them last longer?',
@@ -157,8 +180,13 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'Left half: normals computed per pixel from the spectrum’s exact derivatives, summed by the same FFTs as the heights. The slopes are ∇h, with k each wave’s wavevector, h̃(k, t) its complex amplitude and x the point; the choppy displacement D’s derivatives come the same way, and the normal N is the cross product of the displaced surface P’s two tangents. Right half: the seed’s way, per vertex: neighbours 1 m away displaced and differenced, then interpolated across each triangle. Both show the same sea at 10 m/s. The exact normals keep detail finer than the grid; the vertex normals cannot show a ripple shorter than two vertex spacings.',
       es: 'Mitad izquierda: normales calculadas por píxel a partir de las derivadas exactas del espectro, sumadas por las mismas FFT que las alturas. Las pendientes son ∇h, con k el vector de onda de cada ola, h̃(k, t) su amplitud compleja y x el punto; las derivadas del desplazamiento lateral D salen igual, y la normal N es el producto vectorial de las dos tangentes de la superficie desplazada P. Mitad derecha: el método del informe, por vértice: vecinos a 1 m desplazados y restados, e interpolados en cada triángulo. Las dos muestran el mismo mar a 10 m/s. Las exactas conservan detalle más fino que la malla; las de vértice no muestran ondas más cortas que dos espaciados de vértice.',
     },
-    math: m('<mo>∇</mo><mi>h</mi><mo>=</mo><munder><mo>∑</mo><mi mathvariant="bold">k</mi></munder><mi>i</mi><mi mathvariant="bold">k</mi><mspace width="0.2em"/><mover><mi>h</mi><mo>~</mo></mover><mo>(</mo><mi mathvariant="bold">k</mi><mo>,</mo><mi>t</mi><mo>)</mo><msup><mi>e</mi><mrow><mi>i</mi><mi mathvariant="bold">k</mi><mo>·</mo><mi mathvariant="bold">x</mi></mrow></msup>') +
-      m('<mi>P</mi><mo>=</mo><mo>(</mo><mi>x</mi><mo>+</mo><msub><mi>D</mi><mi>x</mi></msub><mo>,</mo><mi>h</mi><mo>,</mo><mi>z</mi><mo>+</mo><msub><mi>D</mi><mi>z</mi></msub><mo>)</mo><mo>,</mo><mspace width="0.4em"/><mi>N</mi><mo>∝</mo><mfrac><mrow><mo>∂</mo><mi>P</mi></mrow><mrow><mo>∂</mo><mi>z</mi></mrow></mfrac><mo>×</mo><mfrac><mrow><mo>∂</mo><mi>P</mi></mrow><mrow><mo>∂</mo><mi>x</mi></mrow></mfrac>'),
+    math:
+      m(
+        '<mo>∇</mo><mi>h</mi><mo>=</mo><munder><mo>∑</mo><mi mathvariant="bold">k</mi></munder><mi>i</mi><mi mathvariant="bold">k</mi><mspace width="0.2em"/><mover><mi>h</mi><mo>~</mo></mover><mo>(</mo><mi mathvariant="bold">k</mi><mo>,</mo><mi>t</mi><mo>)</mo><msup><mi>e</mi><mrow><mi>i</mi><mi mathvariant="bold">k</mi><mo>·</mo><mi mathvariant="bold">x</mi></mrow></msup>',
+      ) +
+      m(
+        '<mi>P</mi><mo>=</mo><mo>(</mo><mi>x</mi><mo>+</mo><msub><mi>D</mi><mi>x</mi></msub><mo>,</mo><mi>h</mi><mo>,</mo><mi>z</mi><mo>+</mo><msub><mi>D</mi><mi>z</mi></msub><mo>)</mo><mo>,</mo><mspace width="0.4em"/><mi>N</mi><mo>∝</mo><mfrac><mrow><mo>∂</mo><mi>P</mi></mrow><mrow><mo>∂</mo><mi>z</mi></mrow></mfrac><mo>×</mo><mfrac><mrow><mo>∂</mo><mi>P</mi></mrow><mrow><mo>∂</mo><mi>x</mi></mrow></mfrac>',
+      ),
     question: {
       ask: {
         en: 'Near the camera, will ripples a metre or two long show in the right half’s colours as they do in the left half’s?',
@@ -176,7 +204,9 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'Gerstner waves move each point of the surface on a closed orbit, forward under the crest and back under the trough, as water particles do, so the surface is a trochoid instead of a sine. A point at rest position x₀ is moved by each wave i: Aᵢ is its vertical amplitude, k̂ᵢ its unit direction, θᵢ its phase there and QᵢAᵢ its horizontal amplitude, so the orbit is a circle only when Qᵢ = 1. Four waves, each 0.28 m in amplitude, three of 25 to 38 m and one of 3.9 m, are drawn here from a JONSWAP spectrum (20 m/s over 20 km) at a gentle Q = 0.2: flat ellipses, round crests, nearly sinusoidal.',
       es: 'Las olas de Gerstner mueven cada punto de la superficie en una órbita cerrada, adelante bajo la cresta y atrás bajo el seno, como las partículas de agua: la superficie es una trocoide, no un seno. Cada ola i mueve un punto de posición de reposo x₀: Aᵢ es su amplitud vertical, k̂ᵢ su dirección unitaria, θᵢ su fase allí y QᵢAᵢ su amplitud horizontal, así que la órbita solo es un círculo cuando Qᵢ = 1. Aquí hay cuatro olas de 0,28 m de amplitud, tres de 25 a 38 m y una de 3,9 m, de un espectro JONSWAP (20 m/s sobre 20 km) con una pendiente suave Q = 0,2: elipses planas, crestas redondas, casi sinusoidales.',
     },
-    math: m('<mi>x</mi><mo>=</mo><msub><mi>x</mi><mn>0</mn></msub><mo>−</mo><munder><mo>∑</mo><mi>i</mi></munder><msub><mi>Q</mi><mi>i</mi></msub><msub><mi>A</mi><mi>i</mi></msub><msub><mover><mi>k</mi><mo>^</mo></mover><mi>i</mi></msub><mi>sin</mi><msub><mi>θ</mi><mi>i</mi></msub><mo>,</mo><mspace width="0.4em"/><mi>y</mi><mo>=</mo><munder><mo>∑</mo><mi>i</mi></munder><msub><mi>A</mi><mi>i</mi></msub><mi>cos</mi><msub><mi>θ</mi><mi>i</mi></msub>'),
+    math: m(
+      '<mi>x</mi><mo>=</mo><msub><mi>x</mi><mn>0</mn></msub><mo>−</mo><munder><mo>∑</mo><mi>i</mi></munder><msub><mi>Q</mi><mi>i</mi></msub><msub><mi>A</mi><mi>i</mi></msub><msub><mover><mi>k</mi><mo>^</mo></mover><mi>i</mi></msub><mi>sin</mi><msub><mi>θ</mi><mi>i</mi></msub><mo>,</mo><mspace width="0.4em"/><mi>y</mi><mo>=</mo><munder><mo>∑</mo><mi>i</mi></munder><msub><mi>A</mi><mi>i</mi></msub><mi>cos</mi><msub><mi>θ</mi><mi>i</mi></msub>',
+    ),
     question: {
       ask: {
         en: 'At Q = 0.2, will a particle’s vertical excursion shrink or grow if you raise Q to 1?',
@@ -198,7 +228,9 @@ export const spectralSeaTexts: Record<string, LessonText> = {
       en: 'The same sea at Q = 1, the steepest the model allows. The crests sharpen towards cusps and the troughs flatten. Wave i, of wavenumber kᵢ = 2π over its wavelength and amplitude Aᵢ, moves a point sideways by up to QᵢAᵢ. If those motions together grew larger still, neighbouring points would overtake each other and the surface would loop through itself. That cannot happen while Σ Qᵢ kᵢ Aᵢ ≤ 1, so every wave gets the same Qᵢ = Q·min(1, 1/Σ kⱼAⱼ). Here Σ kᵢAᵢ is about 0.64, so Qᵢ = 1: circular orbits, not reduced.',
       es: 'El mismo mar con Q = 1, la mayor pendiente que admite el modelo. Las crestas se afilan hacia cúspides y los senos se aplanan. La ola i, de número de onda kᵢ = 2π entre su longitud de onda y amplitud Aᵢ, mueve un punto de lado hasta QᵢAᵢ. Si esos movimientos juntos crecieran aún más, los puntos vecinos se adelantarían unos a otros y la superficie se cruzaría consigo misma. Eso no ocurre mientras Σ Qᵢ kᵢ Aᵢ ≤ 1, así que todas las olas reciben la misma Qᵢ = Q·min(1, 1/Σ kⱼAⱼ). Aquí Σ kᵢAᵢ vale unos 0,64, así que Qᵢ = 1: órbitas circulares, sin reducir.',
     },
-    math: m('<munder><mo>∑</mo><mi>i</mi></munder><msub><mi>Q</mi><mi>i</mi></msub><msub><mi>k</mi><mi>i</mi></msub><msub><mi>A</mi><mi>i</mi></msub><mo>≤</mo><mn>1</mn><mo>,</mo><mspace width="0.4em"/><msub><mi>Q</mi><mi>i</mi></msub><mo>=</mo><mi>Q</mi><mspace width="0.1em"/><mi>min</mi><mrow><mo>(</mo><mn>1</mn><mo>,</mo><mfrac><mn>1</mn><mrow><msub><mo>∑</mo><mi>j</mi></msub><msub><mi>k</mi><mi>j</mi></msub><msub><mi>A</mi><mi>j</mi></msub></mrow></mfrac><mo>)</mo></mrow>'),
+    math: m(
+      '<munder><mo>∑</mo><mi>i</mi></munder><msub><mi>Q</mi><mi>i</mi></msub><msub><mi>k</mi><mi>i</mi></msub><msub><mi>A</mi><mi>i</mi></msub><mo>≤</mo><mn>1</mn><mo>,</mo><mspace width="0.4em"/><msub><mi>Q</mi><mi>i</mi></msub><mo>=</mo><mi>Q</mi><mspace width="0.1em"/><mi>min</mi><mrow><mo>(</mo><mn>1</mn><mo>,</mo><mfrac><mn>1</mn><mrow><msub><mo>∑</mo><mi>j</mi></msub><msub><mi>k</mi><mi>j</mi></msub><msub><mi>A</mi><mi>j</mi></msub></mrow></mfrac><mo>)</mo></mrow>',
+    ),
     question: {
       ask: {
         en: 'At Q = 1, raise the number of Gerstner waves from 4 to 64. Will every wave keep Qᵢ = 1?',

@@ -1,4 +1,15 @@
-import { FloatType, GLSL3, Vector2, LinearFilter, NearestFilter, RawShaderMaterial, RepeatWrapping, RGBAFormat, WebGLRenderTarget, type Texture } from 'three';
+import {
+  FloatType,
+  GLSL3,
+  Vector2,
+  LinearFilter,
+  NearestFilter,
+  RawShaderMaterial,
+  RepeatWrapping,
+  RGBAFormat,
+  WebGLRenderTarget,
+  type Texture,
+} from 'three';
 import quadVertex from '../../../../shaders/fftQuad.vert?raw';
 import packFragment from '../../../../shaders/fftFoam.frag?raw';
 import memoryFragment from '../../../../shaders/fftFoamMemory.frag?raw';
@@ -26,7 +37,15 @@ function foamTarget(n: number, count: number, filtered: boolean): WebGLRenderTar
 }
 
 function passMaterial(name: string, fragmentShader: string, uniforms: RawShaderMaterial['uniforms']): RawShaderMaterial {
-  return new RawShaderMaterial({ name, glslVersion: GLSL3, vertexShader: quadVertex, fragmentShader, uniforms, depthTest: false, depthWrite: false });
+  return new RawShaderMaterial({
+    name,
+    glslVersion: GLSL3,
+    vertexShader: quadVertex,
+    fragmentShader,
+    uniforms,
+    depthTest: false,
+    depthWrite: false,
+  });
 }
 
 /** The cascade whose tile remembers foam: the smallest, whose texels are finer than a whitecap. */

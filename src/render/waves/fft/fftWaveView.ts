@@ -9,7 +9,14 @@ import { cascadeSpread } from '../../../sim/waves/spectra/spectralBounds';
 import { foamRemaining, whitecapCoverage } from '../../../sim/waves/fft/whitecaps';
 import { breakingSpread, breakingThreshold, jacobianCovariance } from '../../../sim/waves/fft/breaking';
 import { WINDROW_STREAM, windrowLattice, windrowStrength } from '../../../sim/waves/fft/windrows';
-import { BREAKUP_STREAM, BREAKUP_STRENGTH, breakupLattice, breakupNoise, foamBreakup, type FoamBreakup } from '../../../sim/waves/fft/foamBreakup';
+import {
+  BREAKUP_STREAM,
+  BREAKUP_STRENGTH,
+  breakupLattice,
+  breakupNoise,
+  foamBreakup,
+  type FoamBreakup,
+} from '../../../sim/waves/fft/foamBreakup';
 import { FOAM_STEP_SECONDS, foamSteps } from '../../../sim/waves/fft/foamMemory';
 import { foamDriftStep, foamDriftVelocity } from '../../../sim/waves/fft/foamDrift';
 import { seededRandom } from '../../../sim/noise/integerHash';
@@ -45,13 +52,37 @@ const REMEMBERED_FOAM_SHARE = 1 / 6;
 const FABRICATED_DELTA = 1;
 
 type FftUniforms = Record<
-  | 'uFftDisplacement0' | 'uFftDisplacement1' | 'uFftDisplacement2'
-  | 'uFftDerivatives0' | 'uFftDerivatives1' | 'uFftDerivatives2'
-  | 'uFftFoam0' | 'uFftFoam1' | 'uFftFoam2'
-  | 'uFftScale' | 'uFftNearOffset' | 'uFftN' | 'uFoamEnabled' | 'uFoamThreshold' | 'uFoamSoftness' | 'uFabricatedDelta'
-  | 'uFftSlopeVariance' | 'uFftLogLongestWave' | 'uFftPerLogBand' | 'uSeaSlopeVariance'
-  | 'uFoamBreakupScale' | 'uFoamBreakupCells' | 'uFoamBreakupOffset' | 'uFoamBreakupOrigin' | 'uFoamBreakupSeed' | 'uFoamBreakupStrength'
-  | 'uWindrowAxes' | 'uWindrowCells' | 'uWindrowOffset' | 'uWindrowSeed' | 'uWindrowStrength',
+  | 'uFftDisplacement0'
+  | 'uFftDisplacement1'
+  | 'uFftDisplacement2'
+  | 'uFftDerivatives0'
+  | 'uFftDerivatives1'
+  | 'uFftDerivatives2'
+  | 'uFftFoam0'
+  | 'uFftFoam1'
+  | 'uFftFoam2'
+  | 'uFftScale'
+  | 'uFftNearOffset'
+  | 'uFftN'
+  | 'uFoamEnabled'
+  | 'uFoamThreshold'
+  | 'uFoamSoftness'
+  | 'uFabricatedDelta'
+  | 'uFftSlopeVariance'
+  | 'uFftLogLongestWave'
+  | 'uFftPerLogBand'
+  | 'uSeaSlopeVariance'
+  | 'uFoamBreakupScale'
+  | 'uFoamBreakupCells'
+  | 'uFoamBreakupOffset'
+  | 'uFoamBreakupOrigin'
+  | 'uFoamBreakupSeed'
+  | 'uFoamBreakupStrength'
+  | 'uWindrowAxes'
+  | 'uWindrowCells'
+  | 'uWindrowOffset'
+  | 'uWindrowSeed'
+  | 'uWindrowStrength',
   IUniform
 >;
 
@@ -215,7 +246,10 @@ export class FftWaveView implements WaveModelView {
     const rebuilt = this.model.setParams(params);
     const { sea, tiles } = this.model.ocean.setup;
     const cascadeSpreads = tiles.map((tile) => cascadeSpread(tile, sea.depth));
-    this.setSlopeStatistics(cascadeSpreads.map((spread) => spread.slope * spread.slope), params.windSpeed);
+    this.setSlopeStatistics(
+      cascadeSpreads.map((spread) => spread.slope * spread.slope),
+      params.windSpeed,
+    );
     this.heightmapLayout = { channel: 1, range: [3 * cascadeSpreads[0].height, 3 * cascadeSpreads[cascadeSpreads.length - 1].height] };
     const groupsToggled = params.waveGroups !== this.groups;
     this.groups = params.waveGroups;
@@ -267,7 +301,9 @@ export class FftWaveView implements WaveModelView {
     const shift = () => strength * breakupNoise(1e4 * random(), 1e4 * random(), sea.seed);
     const own = jacobianCovariance([tiles[REMEMBERING_CASCADE]], sea.choppiness);
     return {
-      active: this.groups ? breakingThreshold(whole, ACTIVE_FOAM_SHARE * coverage, shift) : breakingThreshold(whole, ACTIVE_FOAM_SHARE_WITHOUT_GROUPS * coverage),
+      active: this.groups
+        ? breakingThreshold(whole, ACTIVE_FOAM_SHARE * coverage, shift)
+        : breakingThreshold(whole, ACTIVE_FOAM_SHARE_WITHOUT_GROUPS * coverage),
       activeSoftness: FOAM_EDGE * spread,
       memory: breakingThreshold(own, REMEMBERED_FOAM_SHARE * coverage),
       memorySoftness: FOAM_EDGE * breakingSpread(own),

@@ -86,13 +86,15 @@ export class GpuInverseFft {
     n: number,
     radices?: readonly number[],
   ) {
-    if (!renderer.extensions.has('EXT_color_buffer_float')) throw new Error('The spectral ocean needs WebGL2 float render targets (EXT_color_buffer_float).');
+    if (!renderer.extensions.has('EXT_color_buffer_float'))
+      throw new Error('The spectral ocean needs WebGL2 float render targets (EXT_color_buffer_float).');
     this.n = n;
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
     this.twiddle = twiddleTable(n);
     this.radices = [...(radices ?? stockhamRadices(n))];
-    if (this.radices.reduce((a, b) => a * b, 1) !== n) throw new RangeError(`The radices ${this.radices.join(', ')} do not multiply to ${n}.`);
+    if (this.radices.reduce((a, b) => a * b, 1) !== n)
+      throw new RangeError(`The radices ${this.radices.join(', ')} do not multiply to ${n}.`);
     const twiddle = this.twiddle;
     const stage = (radix: number): RawShaderMaterial =>
       new RawShaderMaterial({
@@ -227,7 +229,11 @@ export class GpuFftOcean {
    * `filtered`: the result targets are LINEAR-filtered (the caller has checked that float
    * textures are filterable, OES_texture_float_linear), for the ocean's per-pixel reads.
    */
-  constructor(renderer: WebGLRenderer, setup: FftOceanSetup, readonly filtered = false) {
+  constructor(
+    renderer: WebGLRenderer,
+    setup: FftOceanSetup,
+    readonly filtered = false,
+  ) {
     const n = setup.sea.fftSize;
     this.n = n;
     this.fft = new GpuInverseFft(renderer, n);

@@ -42,7 +42,10 @@ export class SeedWaveView implements WaveModelView {
     applySurfaceState(this.uniforms, state);
     // Cox & Munk's σ² for the app's wind less the slopes the normals show, never smoother than
     // the sun's disc allows (as src/sim/optics/resolvedSlopes.ts unresolvedSlopeVariance).
-    this.uniforms.uSlopeRoughness.value = Math.max(SUN_DISC_SLOPE_VARIANCE, seaSlopeVariance(this.model.windSpeed) - this.model.slopeVariance(time));
+    this.uniforms.uSlopeRoughness.value = Math.max(
+      SUN_DISC_SLOPE_VARIANCE,
+      seaSlopeVariance(this.model.windSpeed) - this.model.slopeVariance(time),
+    );
   }
 
   uniformRoughness(): number {

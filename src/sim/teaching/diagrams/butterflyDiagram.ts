@@ -30,8 +30,20 @@ export function butterflyDiagram(params: SeaParams, time = 0): Diagram {
     const half = 2 ** s;
     for (let o = 0; o < n; o++) {
       const { j, r } = stockhamSource(o, n, half);
-      lines.push({ role: 'faint', points: [[s, -j], [s + 1, -o]] });
-      lines.push({ role: r === 0 ? 'main' : 'second', points: [[s, -(j + n / 2)], [s + 1, -o]] });
+      lines.push({
+        role: 'faint',
+        points: [
+          [s, -j],
+          [s + 1, -o],
+        ],
+      });
+      lines.push({
+        role: r === 0 ? 'main' : 'second',
+        points: [
+          [s, -(j + n / 2)],
+          [s + 1, -o],
+        ],
+      });
     }
   }
   const sea = seaStateFromParams(params);
@@ -49,19 +61,47 @@ export function butterflyDiagram(params: SeaParams, time = 0): Diagram {
     const base = heights ? top - STRIP / 2 : top - STRIP + 0.15;
     // Below the strip's label, which stands at its top.
     const reach = heights ? 0.3 * STRIP : 0.55 * STRIP;
-    lines.push({ role: heights ? 'main' : 'second', points: Array.from({ length: live.n }, (_, p) => [(right * p) / (live.n - 1), base + (reach * value(p)) / largest] as const) });
+    lines.push({
+      role: heights ? 'main' : 'second',
+      points: Array.from({ length: live.n }, (_, p) => [(right * p) / (live.n - 1), base + (reach * value(p)) / largest] as const),
+    });
     if (s === 0) stripMarks.push({ id: 'rowSpectrum', x: 0, y: top, value: live.n, unit: '', bare: true });
     else if (heights) stripMarks.push({ id: 'heights', x: 0, y: top, value: largest, unit: 'm', bare: true });
     else stripMarks.push({ id: 'liveStage', x: 0, y: top, value: live.radices[s - 1], unit: '', index: s - 1, bare: true });
   });
   const tiles = cascadeLayout(peakWavelength(sea), size);
   const marks: DiagramMark[] = [
-    ...Array.from({ length: stages }, (_, s): DiagramMark => ({ id: 'stage', x: s + 0.5, y: 0.7, value: 2 ** s, unit: '', index: s, bare: true })),
+    ...Array.from({ length: stages }, (_, s): DiagramMark => ({
+      id: 'stage',
+      x: s + 0.5,
+      y: 0.7,
+      value: 2 ** s,
+      unit: '',
+      index: s,
+      bare: true,
+    })),
     { id: 'size', x: stages + 0.35, y: 0, value: size, unit: '', bare: true },
     { id: 'passes', x: stages + 0.35, y: -1.4, value: stockhamRadices(size).length, unit: '', bare: true },
-    ...tiles.map((tile, index): DiagramMark => ({ id: 'tile', x: stages + 0.35, y: -2.8 - 1.4 * index, value: tile.size, unit: 'm', index, bare: true })),
+    ...tiles.map((tile, index): DiagramMark => ({
+      id: 'tile',
+      x: stages + 0.35,
+      y: -2.8 - 1.4 * index,
+      value: tile.size,
+      unit: 'm',
+      index,
+      bare: true,
+    })),
     ...stripMarks,
   ];
   const bottom = STRIPS_TOP - live.stages.length * STRIP - 0.1;
-  return { kind: 'butterflies', x: [-0.15, stages + 2.6], y: [bottom, 1.1], equalScale: false, lines, marks, headline: 'size', graphHeight: 330 };
+  return {
+    kind: 'butterflies',
+    x: [-0.15, stages + 2.6],
+    y: [bottom, 1.1],
+    equalScale: false,
+    lines,
+    marks,
+    headline: 'size',
+    graphHeight: 330,
+  };
 }

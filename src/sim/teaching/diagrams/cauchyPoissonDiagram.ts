@@ -20,14 +20,31 @@ export function cauchyPoissonDiagram(age: number): Diagram {
   // Outward of where the phase g t²/(4r) falls below crestRadii's stationary-phase limit the formula does not hold: not drawn.
   const outer = Math.min(reach.maxRadius, (GRAVITY * t2) / (4 * STATIONARY_PHASE_FROM));
   const profile = outer > inner ? sampled(inner, outer, 600, (r) => [r, Math.cos((GRAVITY * t2) / (4 * r))]) : [];
-  const marks: DiagramMark[] = radii.map((r, index) => ({ id: 'crest', x: r, y: 1, value: r, unit: 'm', index, quiet: index >= LABELLED_CRESTS }));
+  const marks: DiagramMark[] = radii.map((r, index) => ({
+    id: 'crest',
+    x: r,
+    y: 1,
+    value: r,
+    unit: 'm',
+    index,
+    quiet: index >= LABELLED_CRESTS,
+  }));
   marks.push({ id: 'age', x: 0.02 * reach.maxRadius, y: -1.45, value: age, unit: 's', bare: true });
   return {
     kind: 'cauchyPoisson',
     x: [0, reach.maxRadius],
     y: [-1.7, 1.7],
     equalScale: false,
-    lines: [{ role: 'faint', points: [[0, 0], [reach.maxRadius, 0]] }, ...(profile.length ? [{ role: 'main' as const, points: profile }] : [])],
+    lines: [
+      {
+        role: 'faint',
+        points: [
+          [0, 0],
+          [reach.maxRadius, 0],
+        ],
+      },
+      ...(profile.length ? [{ role: 'main' as const, points: profile }] : []),
+    ],
     marks,
     headline: 'age',
   };

@@ -50,7 +50,17 @@ export interface Diagram {
   headline: string;
 }
 
-export type DiagramKind = 'seedDispersion' | 'depthDispersion' | 'orbit' | 'snell' | 'spectrum' | 'butterflies' | 'lodBands' | 'kelvin' | 'cauchyPoisson' | 'fresnel';
+export type DiagramKind =
+  | 'seedDispersion'
+  | 'depthDispersion'
+  | 'orbit'
+  | 'snell'
+  | 'spectrum'
+  | 'butterflies'
+  | 'lodBands'
+  | 'kelvin'
+  | 'cauchyPoisson'
+  | 'fresnel';
 
 /** Samples f on [a, b] at n + 1 evenly spaced points. */
 export function sampled(a: number, b: number, n: number, f: (t: number) => Point): Point[] {

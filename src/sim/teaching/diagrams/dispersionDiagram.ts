@@ -41,7 +41,13 @@ export function seedDispersionDiagram(params: SwellParams): Diagram {
     equalScale: false,
     lines: [
       { role: 'main', points: curve },
-      { role: 'guide', points: [[sum.k, 0], [sum.k, omegaMax]] },
+      {
+        role: 'guide',
+        points: [
+          [sum.k, 0],
+          [sum.k, omegaMax],
+        ],
+      },
     ],
     marks: [
       { id: 'sum', x: sum.k, y: sum.omega, value: sum.speed, unit: 'm/s' },
@@ -68,8 +74,20 @@ export function depthDispersionDiagram(params: SeaParams): Diagram {
   if (Number.isFinite(sea.depth)) lines.push({ role: 'faint', points: sampled(0, kMax, 80, (k) => [k, angularFrequency(k)]) });
   lines.push(
     { role: 'main', points: sampled(0, kMax, 80, (k) => [k, angularFrequency(k, sea.depth)]) },
-    { role: 'second', points: [[0, 0], [kMax, phase * kMax]] },
-    { role: 'guide', points: [[0.3 * kPeak, omegaPeak - 0.7 * kPeak * group], [1.8 * kPeak, omegaPeak + 0.8 * kPeak * group]] },
+    {
+      role: 'second',
+      points: [
+        [0, 0],
+        [kMax, phase * kMax],
+      ],
+    },
+    {
+      role: 'guide',
+      points: [
+        [0.3 * kPeak, omegaPeak - 0.7 * kPeak * group],
+        [1.8 * kPeak, omegaPeak + 0.8 * kPeak * group],
+      ],
+    },
   );
   return {
     kind: 'depthDispersion',

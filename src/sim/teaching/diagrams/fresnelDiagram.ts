@@ -29,7 +29,13 @@ export function fresnelDiagram(n1 = AIR_IOR, n2 = WATER_IOR): Diagram {
     lines: [
       { role: 'second', points: curve(schlickReflectance) },
       { role: 'main', points: curve(fresnelReflectance) },
-      { role: 'guide', points: [[worst.angle, worst.exact], [worst.angle, worst.schlick]] },
+      {
+        role: 'guide',
+        points: [
+          [worst.angle, worst.exact],
+          [worst.angle, worst.schlick],
+        ],
+      },
     ],
     marks: [
       { id: 'difference', x: worst.angle, y: Math.max(worst.exact, worst.schlick), value: Math.abs(worst.exact - worst.schlick), unit: '' },

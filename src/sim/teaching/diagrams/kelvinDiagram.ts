@@ -21,17 +21,36 @@ export function kelvinDiagram(params: Pick<OceanParams, 'boatSpeed'>): Diagram {
   const reach = moving ? (CRESTS + 0.6) * wavelength : 10;
   const lines: DiagramLine[] = [];
   for (const side of [-1, 1]) {
-    lines.push({ role: 'second', points: [[0, 0], [-reach * Math.cos(KELVIN_HALF_ANGLE), side * reach * Math.sin(KELVIN_HALF_ANGLE)]] });
+    lines.push({
+      role: 'second',
+      points: [
+        [0, 0],
+        [-reach * Math.cos(KELVIN_HALF_ANGLE), side * reach * Math.sin(KELVIN_HALF_ANGLE)],
+      ],
+    });
   }
   if (moving) {
     for (let n = 1; n <= CRESTS; n++) {
       const a = n * wavelength;
-      lines.push({ role: 'main', points: sampled(-Math.PI / 2, Math.PI / 2, 90, (psi) => [-a * Math.cos(psi) * (1 + Math.sin(psi) ** 2), a * Math.cos(psi) ** 2 * Math.sin(psi)]) });
+      lines.push({
+        role: 'main',
+        points: sampled(-Math.PI / 2, Math.PI / 2, 90, (psi) => [
+          -a * Math.cos(psi) * (1 + Math.sin(psi) ** 2),
+          a * Math.cos(psi) ** 2 * Math.sin(psi),
+        ]),
+      });
     }
   }
   const half = reach * Math.sin(KELVIN_HALF_ANGLE) * 1.25;
   const marks: DiagramMark[] = [
-    { id: 'angle', x: -0.55 * reach, y: 0.55 * reach * Math.tan(KELVIN_HALF_ANGLE) * 0.5, value: KELVIN_HALF_ANGLE / DEGREE, unit: '°', bare: true },
+    {
+      id: 'angle',
+      x: -0.55 * reach,
+      y: 0.55 * reach * Math.tan(KELVIN_HALF_ANGLE) * 0.5,
+      value: KELVIN_HALF_ANGLE / DEGREE,
+      unit: '°',
+      bare: true,
+    },
     // The boat is a dot at the apex; its speed is written in the corner below it, clear of the crests.
     { id: 'boat', x: 0, y: 0, value: params.boatSpeed, unit: 'm/s', quiet: true },
     { id: 'boat', x: 0.1 * reach, y: -0.85 * half, value: params.boatSpeed, unit: 'm/s', bare: true },

@@ -13,7 +13,15 @@ const RAY_ANGLES = [0, 20, 35, 60, 75];
  */
 export function snellDiagram(nWater = WATER_IOR, nAir = AIR_IOR): Diagram {
   const critical = snellWindowHalfAngle(nWater, nAir);
-  const lines: DiagramLine[] = [{ role: 'faint', points: [[-3, 0], [3, 0]] }];
+  const lines: DiagramLine[] = [
+    {
+      role: 'faint',
+      points: [
+        [-3, 0],
+        [3, 0],
+      ],
+    },
+  ];
   const eye: [number, number] = [0, -1];
   const rays = [...RAY_ANGLES.map((a) => a * DEGREE), critical].sort((a, b) => a - b);
   for (const angle of rays) {

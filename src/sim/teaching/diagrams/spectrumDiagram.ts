@@ -26,7 +26,13 @@ export function spectrumDiagram(params: SeaParams): Diagram {
     lines: [
       ...SPECTRA.filter((name) => name !== sea.spectrum).map((name) => ({ role: 'faint' as const, points: curve(name) })),
       { role: 'main', points: main },
-      { role: 'guide', points: [[spectrum.peak, 0], [spectrum.peak, spectrum.density(spectrum.peak)]] },
+      {
+        role: 'guide',
+        points: [
+          [spectrum.peak, 0],
+          [spectrum.peak, spectrum.density(spectrum.peak)],
+        ],
+      },
     ],
     marks: [
       { id: 'peak', x: spectrum.peak, y: spectrum.density(spectrum.peak), value: spectrum.peak, unit: 'rad/s' },

@@ -85,7 +85,8 @@ export class FftOcean implements WaveModel {
    * arrays it held before, which this ocean no longer reads (a Worker may fill them again).
    */
   adoptFields(time: number, fields: readonly CascadeFields[]): CascadeFields[] {
-    if (fields.length !== this.fields.length) throw new RangeError(`Expected ${this.fields.length} cascades of fields, got ${fields.length}.`);
+    if (fields.length !== this.fields.length)
+      throw new RangeError(`Expected ${this.fields.length} cascades of fields, got ${fields.length}.`);
     const replaced = this.fields.slice();
     fields.forEach((f, c) => (this.fields[c] = f));
     this.time = time;

@@ -147,7 +147,8 @@ export class FftWaveModel implements LiveWaveModel {
     const previous = this.lastFrameTime;
     if (!exact) this.lastFrameTime = time;
     if (time === held) return time;
-    const playing = !exact && this.source !== null && Math.abs(time - previous) <= MAX_FRAME_STEP && Math.abs(time - held) <= MAX_LAG_SECONDS;
+    const playing =
+      !exact && this.source !== null && Math.abs(time - previous) <= MAX_FRAME_STEP && Math.abs(time - held) <= MAX_LAG_SECONDS;
     if (playing) {
       this.source?.request(this.sea, time);
       return this.ocean.fieldsTime;
@@ -227,7 +228,8 @@ export class FftWaveModel implements LiveWaveModel {
     const start = this.now();
     const at = this.fieldsFor(time, true);
     const count = points.length >> 1;
-    for (let i = 0; i < count; i++) this.ocean.sampleInto(points[2 * i], points[2 * i + 1], at, INVERSION_STEPS, INVERSION_TOLERANCE, out, 4 * i);
+    for (let i = 0; i < count; i++)
+      this.ocean.sampleInto(points[2 * i], points[2 * i + 1], at, INVERSION_STEPS, INVERSION_TOLERANCE, out, 4 * i);
     this.busyMs += this.now() - start;
   }
 

@@ -72,7 +72,12 @@ export function breakupOther([first, second]: [number, number]): number {
  * only: the field at origin + r is breakupNoise(r / cell + first.offset + first.cells), the
  * second octave's lattice point the turned, scaled one (second.cells, second.offset).
  */
-export function breakupLattice(breakup: FoamBreakup, originX: number, originZ: number, time: number): { cells: [number, number, number, number]; offset: [number, number, number, number] } {
+export function breakupLattice(
+  breakup: FoamBreakup,
+  originX: number,
+  originZ: number,
+  time: number,
+): { cells: [number, number, number, number]; offset: [number, number, number, number] } {
   const u = (originX - breakup.velocity[0] * time) / breakup.cell;
   const v = (originZ - breakup.velocity[1] * time) / breakup.cell;
   const { cos, sin, scale } = BREAKUP_SECOND_OCTAVE;

@@ -41,7 +41,13 @@ export function foamDriftStep(velocity: readonly [number, number], texel: number
  * takes what lay `shift` texels upstream (the tile wraps), faded by `decay`, or the fresh
  * potential, the larger (rememberFoam per texel). The TS twin of shaders/fftFoamMemory.frag.
  */
-export function driftedMemoryStep(previous: Float32Array, fresh: Float32Array, n: number, decay: number, shift: readonly [number, number]): Float32Array {
+export function driftedMemoryStep(
+  previous: Float32Array,
+  fresh: Float32Array,
+  n: number,
+  decay: number,
+  shift: readonly [number, number],
+): Float32Array {
   const next = new Float32Array(n * n);
   const wrap = (i: number) => ((i % n) + n) % n;
   for (let z = 0; z < n; z++) {

@@ -69,7 +69,12 @@ export interface WindrowLattice {
  * double precision into whole cells and the rest, so the shader adds small numbers only: the
  * windrows' share at origin + r is windrowShare at axes · r + offset + cells.
  */
-export function windrowLattice(sea: Pick<SeaState, 'windSpeed' | 'windDirection'>, originX: number, originZ: number, time: number): WindrowLattice {
+export function windrowLattice(
+  sea: Pick<SeaState, 'windSpeed' | 'windDirection'>,
+  originX: number,
+  originZ: number,
+  time: number,
+): WindrowLattice {
   const [wx, wz] = windVector(sea.windDirection);
   const along = 1 / (WINDROW_STRETCH * WINDROW_SPACING);
   const across = 1 / WINDROW_SPACING;

@@ -12,7 +12,16 @@ import type { LiveWaveModel } from '../waveModel';
 /** The parameters the Gerstner sea is drawn from: the FFT sea's wind and spectrum, plus count and Q. */
 export type GerstnerSeaParams = Pick<
   OceanParams,
-  'seed' | 'gerstnerCount' | 'gerstnerSteepness' | 'windSpeed' | 'windDirection' | 'spectrum' | 'fetch' | 'depth' | 'spreading' | 'spreadingModel'
+  | 'seed'
+  | 'gerstnerCount'
+  | 'gerstnerSteepness'
+  | 'windSpeed'
+  | 'windDirection'
+  | 'spectrum'
+  | 'fetch'
+  | 'depth'
+  | 'spreading'
+  | 'spreadingModel'
 >;
 
 const SEA_KEYS: readonly (keyof GerstnerSeaParams)[] = [

@@ -99,12 +99,7 @@ export interface GerstnerDerivatives {
  *   ∂dx/∂x = −Σ QᵢAᵢ k̂ₓ kₓ cos θ,  ∂dx/∂z = ∂dz/∂x = −Σ QᵢAᵢ k̂ₓ k_z cos θ,  ∂dz/∂z = −Σ QᵢAᵢ k̂_z k_z cos θ
  *   ∂dy/∂x = −Σ Aᵢ kₓ sin θ,         ∂dy/∂z = −Σ Aᵢ k_z sin θ
  */
-export function gerstnerDerivativesAt(
-  waves: readonly GerstnerWave[],
-  phases: Float64Array,
-  x: number,
-  z: number,
-): GerstnerDerivatives {
+export function gerstnerDerivativesAt(waves: readonly GerstnerWave[], phases: Float64Array, x: number, z: number): GerstnerDerivatives {
   let dxdx = 0;
   let dxdz = 0;
   let dzdz = 0;
@@ -134,12 +129,7 @@ export function gerstnerDerivativesAt(
  * (x, z): the cross product of the closed-form tangents, ∂P/∂z × ∂P/∂x (y up; the flat
  * sea gives (0, 1, 0)).
  */
-export function gerstnerNormalAt(
-  waves: readonly GerstnerWave[],
-  phases: Float64Array,
-  x: number,
-  z: number,
-): [number, number, number] {
+export function gerstnerNormalAt(waves: readonly GerstnerWave[], phases: Float64Array, x: number, z: number): [number, number, number] {
   const { dxdx, dxdz, dzdz, dydx, dydz } = gerstnerDerivativesAt(waves, phases, x, z);
   // Tangents tx = ∂P/∂x = (1 + dxdx, dydx, dxdz), tz = ∂P/∂z = (dxdz, dydz, 1 + dzdz).
   const tx0 = 1 + dxdx;

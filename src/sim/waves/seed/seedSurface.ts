@@ -54,7 +54,10 @@ export function deepWaterAngularFrequency(waveNumber: number): number {
   return Math.sqrt(GRAVITY * waveNumber);
 }
 
-export function surfaceStateAt(params: Pick<OceanParams, 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed'>, time: number): SurfaceState {
+export function surfaceStateAt(
+  params: Pick<OceanParams, 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed'>,
+  time: number,
+): SurfaceState {
   const k1 = params.swellFrequency;
   const k2 = k1 * SECOND_SWELL.frequency;
   const w1 = deepWaterAngularFrequency(k1) * time;

@@ -9,7 +9,10 @@ import type { DisplacementBounds, SurfaceSample, WaveModel } from '../waveModel'
  * waves know no wind: the wind only sets the roughness its glint is given (Cox & Munk's σ²
  * less the slopes its normals show, src/render/waves/seed/seedWaveView.ts).
  */
-export type SeedWaveParams = Pick<OceanParams, 'seed' | 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed' | 'windSpeed'>;
+export type SeedWaveParams = Pick<
+  OceanParams,
+  'seed' | 'swellAmplitude' | 'swellFrequency' | 'rippleStrength' | 'rippleBlendSpeed' | 'windSpeed'
+>;
 
 /**
  * The seed report's sea (sines for the swell, two blended Perlin heightmaps for the

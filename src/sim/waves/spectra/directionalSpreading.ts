@@ -55,8 +55,15 @@ export type SpreadingModel = 'cos-2s' | 'hasselmann';
  * D(θ, ω) for a sea: cos-2s with exponent `s` at every frequency, or Hasselmann et al.'s
  * exponent for each ω relative to the peak ωp at wind speed U (then `s` is not read).
  */
-export function spreadingFunction(model: SpreadingModel, s: number, omegaPeak: number, windSpeed: number): (theta: number, omega: number) => number {
-  return model === 'hasselmann' ? (theta, omega) => hasselmannSpreading(theta, omega, omegaPeak, windSpeed) : (theta) => cos2sSpreading(theta, s);
+export function spreadingFunction(
+  model: SpreadingModel,
+  s: number,
+  omegaPeak: number,
+  windSpeed: number,
+): (theta: number, omega: number) => number {
+  return model === 'hasselmann'
+    ? (theta, omega) => hasselmannSpreading(theta, omega, omegaPeak, windSpeed)
+    : (theta) => cos2sSpreading(theta, s);
 }
 
 /** Hasselmann et al. (1980) spreading: cos-2s with the exponent of its frequency (above); ∫D dθ = 1 at every ω. */

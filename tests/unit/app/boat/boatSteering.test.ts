@@ -27,7 +27,7 @@ function steer(codes: string[], frames: number, start: Partial<OceanParams> = {}
 }
 
 // So the panel and a shared link show 2.4, not 2.4335999999999984.
-describe('keyboard steering stores values on the parameters\' steps', () => {
+describe("keyboard steering stores values on the parameters' steps", () => {
   it('holding W for 2 s gives speeds of one decimal, reaching 4 m/s', () => {
     const { stored, params } = steer(['KeyW'], 120);
     expect(stored.length).toBeGreaterThan(100);
@@ -50,7 +50,7 @@ describe('keyboard steering stores values on the parameters\' steps', () => {
     expect(steer([], 300).stored).toEqual([]);
   });
 
-  it('rounds to the step with the step\'s decimals', () => {
+  it("rounds to the step with the step's decimals", () => {
     expect(onStep(2.4335999999999984, 0.1)).toBe(2.4);
     expect(onStep(0.15000000000000002, 0.05)).toBe(0.15);
     expect(onStep(359.6, 1)).toBe(360);

@@ -29,7 +29,9 @@ describe('language', () => {
   });
 
   it('renders every notice of a bad URL in both languages, with its values in it', () => {
-    const state = parseUrlState('?t=abc&seed=-1.5&swellAmplitude=1e9&bogus=1&fresnel=maybe&waterColor=red&sky=//x&cam=1&lang=fr&embed=2&preset=nope');
+    const state = parseUrlState(
+      '?t=abc&seed=-1.5&swellAmplitude=1e9&bogus=1&fresnel=maybe&waterColor=red&sky=//x&cam=1&lang=fr&embed=2&preset=nope',
+    );
     expect(state.notices).toHaveLength(11);
     const es = state.notices.map((m) => new Translator('es').message(m));
     const en = state.notices.map((m) => new Translator('en').message(m));
@@ -40,7 +42,26 @@ describe('language', () => {
 
   it('has both languages for every message id, each carrying the same values', () => {
     // Each value a distinct token, so a translation that drops or swaps one shows.
-    const values = { key: 'K7', text: 'T7', fallback: 'F7', options: 'O7', min: 'MIN7', max: 'MAX7', unit: 'U7', clamped: 'C7', name: 'N7', known: 'KN7', base: 'B7', url: 'http://x/?a=URL7', error: 'E7', reason: 'R7', allowed: 'AL7', got: 'G7', radius: 'RA7', raised: 'RR7' };
+    const values = {
+      key: 'K7',
+      text: 'T7',
+      fallback: 'F7',
+      options: 'O7',
+      min: 'MIN7',
+      max: 'MAX7',
+      unit: 'U7',
+      clamped: 'C7',
+      name: 'N7',
+      known: 'KN7',
+      base: 'B7',
+      url: 'http://x/?a=URL7',
+      error: 'E7',
+      reason: 'R7',
+      allowed: 'AL7',
+      got: 'G7',
+      radius: 'RA7',
+      raised: 'RR7',
+    };
     const tokens = Object.values(values);
     for (const id of MESSAGE_IDS) {
       const m = message(id, values);
@@ -52,13 +73,16 @@ describe('language', () => {
       // so a Spanish page never shows an English sentence.
       const english = ENGLISH_ONLY[id];
       const expected = tokens.filter((t) => en.includes(t) && t !== english);
-      expect(tokens.filter((t) => es.includes(t)), id).toEqual(expected);
+      expect(
+        tokens.filter((t) => es.includes(t)),
+        id,
+      ).toEqual(expected);
       if (english) expect(en, id).toContain(english);
     }
     expect(MESSAGE_IDS.length).toBe(38);
   });
 
-  it('leaves the boat loader\'s notices to its own chunk: without it their text is missing and says so', async () => {
+  it("leaves the boat loader's notices to its own chunk: without it their text is missing and says so", async () => {
     vi.resetModules();
     const fresh = await import('../../../../src/app/language/i18n');
     const notFound = message('boatNotFound', { url: 'm/b.glb', status: 404 });
@@ -66,6 +90,8 @@ describe('language', () => {
     // The notice the page gives when that chunk itself cannot be fetched is in the first script.
     expect(new fresh.Translator('es').message(message('boatLoadFailed', { reason: 'R' }))).toMatch(/No se pudo cargar el barco/);
     await import('../../../../src/app/boot/boatLoad');
-    expect(new fresh.Translator('en').message(notFound)).toBe('The boat model "m/b.glb" was not found (HTTP 404). The ocean runs without the boat.');
+    expect(new fresh.Translator('en').message(notFound)).toBe(
+      'The boat model "m/b.glb" was not found (HTTP 404). The ocean runs without the boat.',
+    );
   });
 });

@@ -47,7 +47,9 @@ describe('notices in the page language', () => {
 
   it('carries a failure as a message id, so the boat notice is Spanish end to end', () => {
     const error = new MessageError(message('boatNotFound', { url: 'models/none.glb', status: 404 }), 'English for the console');
-    expect(new Translator('es').message(messageOf(error, 'boatLoadFailed'))).toBe('No se encontró el modelo del barco "models/none.glb" (HTTP 404). El océano sigue sin él.');
+    expect(new Translator('es').message(messageOf(error, 'boatLoadFailed'))).toBe(
+      'No se encontró el modelo del barco "models/none.glb" (HTTP 404). El océano sigue sin él.',
+    );
     expect(messageOf(new Error('boom'), 'boatLoadFailed')).toEqual(message('boatLoadFailed', { reason: 'boom' }));
   });
 

@@ -5,21 +5,32 @@ import { citation } from '../../../../src/app/lessons/referenceLists';
 
 /** The keys the cards cite that the bibliography lacks, as "lesson: key". */
 function unknownReferences(texts: Record<string, Pick<LessonText, 'references'>>, bibliography: Record<string, Reference>): string[] {
-  return Object.entries(texts).flatMap(([id, card]) => (card.references ?? []).filter((key) => !(key in bibliography)).map((key) => `${id}: ${key}`));
+  return Object.entries(texts).flatMap(([id, card]) =>
+    (card.references ?? []).filter((key) => !(key in bibliography)).map((key) => `${id}: ${key}`),
+  );
 }
 
 /** The entries that miss a field, or give a year no printed work could have. */
 function incompleteEntries(bibliography: Record<string, Reference>): string[] {
   const thisYear = new Date().getFullYear();
   return Object.entries(bibliography)
-    .filter(([, r]) => [r.authors, r.title, r.where].some((field) => typeof field !== 'string' || field.trim().length < 2) || !Number.isInteger(r.year) || r.year < 1600 || r.year > thisYear)
+    .filter(
+      ([, r]) =>
+        [r.authors, r.title, r.where].some((field) => typeof field !== 'string' || field.trim().length < 2) ||
+        !Number.isInteger(r.year) ||
+        r.year < 1600 ||
+        r.year > thisYear,
+    )
     .map(([key]) => key);
 }
 
 describe('the bibliography', () => {
   it('has every work a card cites (control: a card citing an unknown key is reported)', () => {
     expect(unknownReferences(LESSON_TEXTS, BIBLIOGRAPHY)).toEqual([]);
-    const planted = { ...LESSON_TEXTS, planted: { references: ['tessendorf2001', 'nobody1999'] } } as Record<string, Pick<LessonText, 'references'>>;
+    const planted = { ...LESSON_TEXTS, planted: { references: ['tessendorf2001', 'nobody1999'] } } as Record<
+      string,
+      Pick<LessonText, 'references'>
+    >;
     expect(unknownReferences(planted, BIBLIOGRAPHY)).toEqual(['planted: nobody1999']);
   });
 
@@ -58,7 +69,9 @@ describe('the bibliography', () => {
     // Control: the last word of the first name, as the drawer once read it, gives "al." and files the work near the top.
     const lastWord = (reference: Reference) => reference.authors.split(',')[0].split(' ').at(-1);
     expect(lastWord(BIBLIOGRAPHY.hasselmann1973)).toBe('al.');
-    const byLastWord = [...all].sort((a, b) => lastWord(BIBLIOGRAPHY[a])!.localeCompare(lastWord(BIBLIOGRAPHY[b])!, 'en') || BIBLIOGRAPHY[a].year - BIBLIOGRAPHY[b].year);
+    const byLastWord = [...all].sort(
+      (a, b) => lastWord(BIBLIOGRAPHY[a])!.localeCompare(lastWord(BIBLIOGRAPHY[b])!, 'en') || BIBLIOGRAPHY[a].year - BIBLIOGRAPHY[b].year,
+    );
     expect(byLastWord.indexOf('hasselmann1973')).toBeLessThan(ordered.indexOf('hasselmann1973') - 5);
     // Control: a list with that work moved to its "al." place is not in surname order.
     const misfiled: ReferenceKey[] = ordered.filter((key) => key !== 'hasselmann1973');

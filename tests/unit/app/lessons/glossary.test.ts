@@ -6,7 +6,10 @@ import { LESSON_TEXTS } from '../../../../src/app/lessons/lessonTexts';
 const LANGUAGES = ['en', 'es'] as const;
 const cardTexts = (language: 'en' | 'es') => Object.values(LESSON_TEXTS).map((card) => card.text[language]);
 const sentences = (text: string) => text.split(/[.!?](?:\s|$)/).filter((s) => s.trim() !== '').length;
-const term = (en: string[], es: string[]): GlossaryTerm => ({ words: { en, es }, definition: { en: 'A planted term.', es: 'Un término plantado.' } });
+const term = (en: string[], es: string[]): GlossaryTerm => ({
+  words: { en, es },
+  definition: { en: 'A planted term.', es: 'Un término plantado.' },
+});
 
 describe('the glossary', () => {
   it('has at least 30 terms, each with its words and a one-sentence definition in both languages', () => {
@@ -70,14 +73,18 @@ describe('linking the terms in a card', () => {
 
   it('leaves a form alone inside a phrase where it means something else (control: without that phrase it is linked)', () => {
     const text = 'Bright colours roll off towards white; the boat’s roll follows the slope.';
-    const rolls = (glossary: Record<string, GlossaryTerm>) => firstTermOccurrences(text, 'en', glossary).filter((o) => o.key === 'roll').map((o) => o.start);
+    const rolls = (glossary: Record<string, GlossaryTerm>) =>
+      firstTermOccurrences(text, 'en', glossary)
+        .filter((o) => o.key === 'roll')
+        .map((o) => o.start);
     expect(rolls(GLOSSARY)).toEqual([text.indexOf('roll follows')]);
     expect(rolls({ roll: { ...GLOSSARY.roll, otherSenses: {} } })).toEqual([text.indexOf('roll off')]);
   });
 
   it('every card links at least one term in each language', () => {
     for (const [id, card] of Object.entries(LESSON_TEXTS)) {
-      for (const language of LANGUAGES) expect(firstTermOccurrences(card.text[language], language, GLOSSARY).length, `${id} ${language}`).toBeGreaterThan(0);
+      for (const language of LANGUAGES)
+        expect(firstTermOccurrences(card.text[language], language, GLOSSARY).length, `${id} ${language}`).toBeGreaterThan(0);
     }
   });
 });

@@ -1,6 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { LESSONS, lessonIds, lessonView, findLesson } from '../../../../src/app/lessons/lessonCatalog';
-import { LESSON_OUTLINE, LESSON_SECTIONS, LESSON_TITLES, SECTION_NAMES, lessonList, type LessonSection } from '../../../../src/app/lessons/lessonOutline';
+import {
+  LESSON_OUTLINE,
+  LESSON_SECTIONS,
+  LESSON_TITLES,
+  SECTION_NAMES,
+  lessonList,
+  type LessonSection,
+} from '../../../../src/app/lessons/lessonOutline';
 import { LESSON_TEXTS } from '../../../../src/app/lessons/lessonTexts';
 import { LESSON_QUOTE_SOURCES } from '../../../../src/app/lessons/lessonQuoteSources';
 import { PRESETS, presetNames } from '../../../../src/app/url/presets';
@@ -13,13 +20,15 @@ import { CONCEPT_PATH, CONCEPT_STAGES } from '../../../../src/app/lessons/concep
 const CONCEPT_SECTIONS: LessonSection[] = ['linearWaves', 'spectra', 'filtering', 'light'];
 const words = (text: string) => text.trim().split(/\s+/).length;
 /** The presets no lesson opens. */
-const presetsWithoutLesson = (lessons: readonly { preset?: string }[]) => presetNames.filter((name) => !lessons.some((lesson) => lesson.preset === name));
+const presetsWithoutLesson = (lessons: readonly { preset?: string }[]) =>
+  presetNames.filter((name) => !lessons.some((lesson) => lesson.preset === name));
 
 describe('the lessons', () => {
   it('are at least 24, with unique ids, and every part of each lesson exists: outline, title, text, quote', () => {
     expect(LESSONS.length).toBeGreaterThanOrEqual(24);
     expect(new Set(lessonIds).size).toBe(LESSONS.length);
-    for (const table of [LESSON_OUTLINE, LESSON_TITLES, LESSON_TEXTS, LESSON_QUOTE_SOURCES]) expect(Object.keys(table).sort()).toEqual([...lessonIds].sort());
+    for (const table of [LESSON_OUTLINE, LESSON_TITLES, LESSON_TEXTS, LESSON_QUOTE_SOURCES])
+      expect(Object.keys(table).sort()).toEqual([...lessonIds].sort());
   });
 
   it('every preset belongs to a lesson (control: dropping the lesson of one leaves it out)', () => {
@@ -78,7 +87,13 @@ describe('the lessons', () => {
     const wake = lessonView(findLesson('kelvin-wake')!);
     expect(wake.params.wakeGuide).toBe(true);
     expect(lessonView(findLesson('frustum-culling')!).cullingCamera).toEqual(PRESETS['frustum-culling'].cullingCamera);
-    expect(lessonList('es')[0]).toEqual({ id: 'flat-plane', title: LESSON_TITLES['flat-plane'].es, section: 'Superficie del agua', question: true, exercise: false });
+    expect(lessonList('es')[0]).toEqual({
+      id: 'flat-plane',
+      title: LESSON_TITLES['flat-plane'].es,
+      section: 'Superficie del agua',
+      question: true,
+      exercise: false,
+    });
   });
 
   it('?lesson= opens a lesson, explicit values override it, a share link carries it, and an unknown one is a notice', () => {
@@ -87,7 +102,16 @@ describe('the lessons', () => {
     expect(state.params.swellFrequency).toBe(0.2);
     expect(state.params.swellAmplitude).toBe(2);
     expect(state.camera).toEqual(PRESETS['swell-maximum'].camera);
-    const query = formatUrlState({ params: state.params, time: 3, camera: state.camera!, language: 'en', sky: null, boat: null, embed: false, lesson: 'swell-maximum' });
+    const query = formatUrlState({
+      params: state.params,
+      time: 3,
+      camera: state.camera!,
+      language: 'en',
+      sky: null,
+      boat: null,
+      embed: false,
+      lesson: 'swell-maximum',
+    });
     expect(parseUrlState(`?${query}`).lesson).toBe('swell-maximum');
     const unknown = parseUrlState('?lesson=nope');
     expect(unknown.lesson).toBeNull();
@@ -99,7 +123,9 @@ describe('the lessons', () => {
 describe('the ideas’ order (conceptPath.ts)', () => {
   /** What is wrong with an order: unknown ids, repeats, and concept lessons it leaves out. */
   const faults = (path: readonly string[]) => {
-    const concept = LESSONS.filter((lesson) => (CONCEPT_SECTIONS as string[]).includes(LESSON_OUTLINE[lesson.id].section)).map((lesson) => lesson.id);
+    const concept = LESSONS.filter((lesson) => (CONCEPT_SECTIONS as string[]).includes(LESSON_OUTLINE[lesson.id].section)).map(
+      (lesson) => lesson.id,
+    );
     return {
       unknown: path.filter((id) => !lessonIds.includes(id)),
       repeated: path.filter((id, i) => path.indexOf(id) !== i),

@@ -44,6 +44,8 @@ describe('lesson code quotes', () => {
     expect(quoteMatchesFile({ ...quote, lastLine: text.split('\n').length + 1 }, text)).toBe(false);
     expect(() => extractQuote(text, { file: quote.file, from: 'uniform float', to: ';' })).toThrow(/exactly one/);
     expect(() => extractQuote(text, { file: quote.file, from: 'float swellHeight(vec2 p) {', to: 'no such line' })).toThrow(/end marker/);
-    expect(() => extractQuote(text, { file: quote.file, from: 'float swellHeight(vec2 p) {', to: 'return swellHeight(p) + rippleHeight(p);' })).toThrow(/lines/);
+    expect(() =>
+      extractQuote(text, { file: quote.file, from: 'float swellHeight(vec2 p) {', to: 'return swellHeight(p) + rippleHeight(p);' }),
+    ).toThrow(/lines/);
   });
 });

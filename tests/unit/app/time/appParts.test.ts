@@ -8,7 +8,17 @@ import { shareUrl } from '../../../../src/app/url/sharing';
 import { parseUrlState } from '../../../../src/app/url/urlState';
 import type { BoatSnapshot } from '../../../../src/sim/boat/boatMotion';
 
-const RENDER: RenderStats = { drawCalls: 2, triangles: 10, chunksTotal: 4, chunksVisible: 3, farCellsVisible: 5, lodCounts: [3], underwater: false, submersion: 'above', composerPasses: 0 };
+const RENDER: RenderStats = {
+  drawCalls: 2,
+  triangles: 10,
+  chunksTotal: 4,
+  chunksVisible: 3,
+  farCellsVisible: 5,
+  lodCounts: [3],
+  underwater: false,
+  submersion: 'above',
+  composerPasses: 0,
+};
 
 describe('FrameStats', () => {
   it('never stalls the shipped loop on the GPU until stats are asked for, then one frame in eight', () => {
@@ -34,7 +44,7 @@ describe('FrameStats', () => {
     expect(stats.summary(RENDER, null)).toMatchObject({ frameMs: 7, cpuMs: 3, boatMs: 0.3 });
   });
 
-  it('reports the wave twin\'s mean main-thread ms per frame, null where the model does not measure it', () => {
+  it("reports the wave twin's mean main-thread ms per frame, null where the model does not measure it", () => {
     const stats = new FrameStats();
     expect(stats.summary(RENDER, null).twinMs).toBeNull();
     for (const ms of [0, 0.1, 0, 0.3]) stats.recordTwin(ms);
@@ -92,9 +102,20 @@ describe('shareUrl', () => {
   it("carries the view, the boat's motion at its time and the page's choices, and reads back as they were", () => {
     const params = { ...defaultParams(), boatSpeed: 2.4, boatHeading: 30 };
     // Values with full double precision, so a link that rounds any of them shows.
-    const boatState: BoatSnapshot = { x: 6.361234567891, z: -5.33, heading: { value: 0.1 / 3, velocity: -0.2 }, heave: { value: 1 / 7, velocity: 0.01 }, pitch: { value: -0.02, velocity: 1e-5 }, roll: { value: 0.03, velocity: -2e-4 } };
+    const boatState: BoatSnapshot = {
+      x: 6.361234567891,
+      z: -5.33,
+      heading: { value: 0.1 / 3, velocity: -0.2 },
+      heave: { value: 1 / 7, velocity: 0.01 },
+      pitch: { value: -0.02, velocity: 1e-5 },
+      roll: { value: 0.03, velocity: -2e-4 },
+    };
     const camera = { position: [10, 4, 12] as [number, number, number], target: [0, 0, 0] as [number, number, number] };
-    const page = { shareBase: 'https://example.org/ocean/', language: 'es' as const, state: { sky: 'skies/dusk', boat: 'models/b.glb', embed: true } };
+    const page = {
+      shareBase: 'https://example.org/ocean/',
+      language: 'es' as const,
+      state: { sky: 'skies/dusk', boat: 'models/b.glb', embed: true },
+    };
     const url = shareUrl(page, { params, time: 3.25, camera, boatState });
     expect(url.startsWith('https://example.org/ocean/?')).toBe(true);
     const back = parseUrlState(url.slice(url.indexOf('?')));

@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { defaultParams, paramDefs, paramKeys } from '../../../../src/sim/params/params';
 import { seededRandom } from '../../../../src/sim/noise/integerHash';
-import { formatStones, formatUrlState, parseSettings, parseStones, parseUrlState, type ShareableState } from '../../../../src/app/url/urlState';
+import {
+  formatStones,
+  formatUrlState,
+  parseSettings,
+  parseStones,
+  parseUrlState,
+  type ShareableState,
+} from '../../../../src/app/url/urlState';
 import { formatCameraText, isCameraPose, parseCameraText } from '../../../../src/app/camera/cameraPose';
 import { findPreset, PRESETS, presetNames } from '../../../../src/app/url/presets';
 import { Translator } from '../../../../src/app/language/i18n';
@@ -16,13 +23,24 @@ function randomState(seed: number): ShareableState {
     const def = paramDefs[key];
     const p = params as Record<string, unknown>;
     if (def.kind === 'boolean') p[key] = random() < 0.5;
-    else if (def.kind === 'color') p[key] = `#${Math.floor(random() * 0xffffff).toString(16).padStart(6, '0')}`;
+    else if (def.kind === 'color')
+      p[key] = `#${Math.floor(random() * 0xffffff)
+        .toString(16)
+        .padStart(6, '0')}`;
     else if (def.kind === 'choice') p[key] = def.options[Math.floor(random() * def.options.length)];
     else if (def.kind === 'integer') p[key] = def.min + Math.floor(random() * Math.min(def.max - def.min, 1e6));
     else p[key] = def.min + random() * (def.max - def.min);
   }
   const v = (): [number, number, number] => [random() * 200 - 100, random() * 50 + 0.1, random() * 200 - 100];
-  return { params, time: random() * 1e5, camera: { position: v(), target: v() }, language: random() < 0.5 ? 'es' : 'en', sky: null, boat: null, embed: false };
+  return {
+    params,
+    time: random() * 1e5,
+    camera: { position: v(), target: v() },
+    language: random() < 0.5 ? 'es' : 'en',
+    sky: null,
+    boat: null,
+    embed: false,
+  };
 }
 
 describe('URL state round trip', () => {
@@ -55,12 +73,25 @@ describe('URL state round trip', () => {
 describe('camera text', () => {
   it('parses six numbers and rejects anything else with null', () => {
     expect(parseCameraText('0,9,40,0,0,-60')).toEqual({ position: [0, 9, 40], target: [0, 0, -60] });
-    for (const bad of ['', '1,2,3,4,5', '1,2,3,4,5,6,7', '1,2,x,4,5,6', '1,2,,4,5,6', '1,2,3,1,2,3', '0,1e7,0,0,0,0', 'NaN,0,0,0,0,1', 'Infinity,0,0,0,0,1']) {
+    for (const bad of [
+      '',
+      '1,2,3,4,5',
+      '1,2,3,4,5,6,7',
+      '1,2,x,4,5,6',
+      '1,2,,4,5,6',
+      '1,2,3,1,2,3',
+      '0,1e7,0,0,0,0',
+      'NaN,0,0,0,0,1',
+      'Infinity,0,0,0,0,1',
+    ]) {
       expect(parseCameraText(bad), bad).toBeNull();
     }
   });
   it('formats so that parsing gives the same doubles', () => {
-    const pose = { position: [0.1 + 0.2, 1 / 3, -1e-7] as [number, number, number], target: [Math.PI, -Math.E, 123456.789] as [number, number, number] };
+    const pose = {
+      position: [0.1 + 0.2, 1 / 3, -1e-7] as [number, number, number],
+      target: [Math.PI, -Math.E, 123456.789] as [number, number, number],
+    };
     expect(parseCameraText(formatCameraText(pose))).toEqual(pose);
     expect(isCameraPose({ position: [0, 1, 2], target: [0, 1] })).toBe(false);
   });
@@ -122,30 +153,60 @@ describe('presets', () => {
 });
 
 describe('stones for the interactive waves (stones=)', () => {
-  it('round-trips every number bit for bit, and a preset\'s stones come with it', () => {
-    const stones = [[0.1 + 0.2, -3.7, 12 / 7, 1.25, -0.3], [10, 1e5, -2, 0.5, 2]] as const;
+  it("round-trips every number bit for bit, and a preset's stones come with it", () => {
+    const stones = [
+      [0.1 + 0.2, -3.7, 12 / 7, 1.25, -0.3],
+      [10, 1e5, -2, 0.5, 2],
+    ] as const;
     expect(parseStones(formatStones(stones))).toEqual(stones);
     expect(parseStones('')).toEqual([]);
     expect(parseUrlState('?preset=stone').stones).toEqual(PRESETS.stone.stones);
     expect(parseUrlState('?preset=stone-compare').stones).toHaveLength(2);
   });
 
-  it('a link writes them with the field on, an empty list too, and its list replaces a lesson\'s', () => {
-    const base = { time: 3, camera: { position: [0, 5, 10] as [number, number, number], target: [0, 0, 0] as [number, number, number] }, language: 'en' as const, sky: null, boat: null, embed: false };
+  it("a link writes them with the field on, an empty list too, and its list replaces a lesson's", () => {
+    const base = {
+      time: 3,
+      camera: { position: [0, 5, 10] as [number, number, number], target: [0, 0, 0] as [number, number, number] },
+      language: 'en' as const,
+      sky: null,
+      boat: null,
+      embed: false,
+    };
     const on = formatUrlState({ ...base, params: { ...defaultParams(), interactiveWaves: true }, stones: [[1, 2, 3, 1, 0.4]] });
     expect(parseUrlState(`?${on}`).stones).toEqual([[1, 2, 3, 1, 0.4]]);
-    expect(new URLSearchParams(formatUrlState({ ...base, params: defaultParams(), stones: [[1, 2, 3, 1, 0.4]] })).has('stones')).toBe(false);
-    const overLesson = formatUrlState({ ...base, params: { ...defaultParams(), interactiveWaves: true }, lesson: 'iwave-stone', stones: [] });
+    expect(new URLSearchParams(formatUrlState({ ...base, params: defaultParams(), stones: [[1, 2, 3, 1, 0.4]] })).has('stones')).toBe(
+      false,
+    );
+    const overLesson = formatUrlState({
+      ...base,
+      params: { ...defaultParams(), interactiveWaves: true },
+      lesson: 'iwave-stone',
+      stones: [],
+    });
     expect(parseUrlState(`?${overLesson}`).stones).toEqual([]);
     expect(parseUrlState('?lesson=iwave-stone').stones).toEqual(PRESETS.stone.stones);
   });
 
   // Control: a good one passes.
   it('a bad list is a notice and no stones: wrong count, time out of range, radius or height too large', () => {
-    for (const text of ['1,2,3,1', '1,2,3,1,0.4,9', '-1,0,0,1,0.3', '1,0,0,11,0.3', '1,0,0,1,2.5', '1,NaN,0,1,0.3', '1,,0,1,0.3', '1,2e6,0,1,0.3', '1,0,0,0,0.3']) {
+    for (const text of [
+      '1,2,3,1',
+      '1,2,3,1,0.4,9',
+      '-1,0,0,1,0.3',
+      '1,0,0,11,0.3',
+      '1,0,0,1,2.5',
+      '1,NaN,0,1,0.3',
+      '1,,0,1,0.3',
+      '1,2e6,0,1,0.3',
+      '1,0,0,0,0.3',
+    ]) {
       const state = parseUrlState(`?stones=${encodeURIComponent(text)}`);
       expect(state.stones, text).toEqual([]);
-      expect(state.notices.map((n) => n.id), text).toEqual(['stonesInvalid']);
+      expect(
+        state.notices.map((n) => n.id),
+        text,
+      ).toEqual(['stonesInvalid']);
     }
     // A radius under one texel is raised when the stone falls (disturb's rule), not here.
     expect(parseUrlState('?stones=1,0,0,0.1,0.3').stones).toEqual([[1, 0, 0, 0.1, 0.3]]);

@@ -31,7 +31,6 @@ describe('public/models/boat.glb', () => {
       for (let i = 0; i < normals.count; i++) expect(Math.hypot(normals.getX(i), normals.getY(i), normals.getZ(i))).toBeCloseTo(1, 5);
     }
   });
-
 });
 
 describe('loadBoatModel', () => {
@@ -54,11 +53,21 @@ describe('loadBoatModel', () => {
     const cases: [() => Promise<Response>, RegExp][] = [
       [() => Promise.reject(new TypeError('Failed to fetch')), /^The boat model "m\/b\.glb" could not be fetched\.$/],
       [async () => new Response('no', { status: 404 }), /was not found \(HTTP 404\)/],
-      [async () => new Response('<!doctype html><title>app</title>', { status: 200, headers: { 'content-type': 'text/html; charset=utf-8' } }), /is missing: the server sent a web page in its place/],
-      [async () => new Response('not a model', { status: 200 }), /is not a valid glTF model: it is neither a binary \.glb nor a JSON \.gltf file/],
+      [
+        async () =>
+          new Response('<!doctype html><title>app</title>', { status: 200, headers: { 'content-type': 'text/html; charset=utf-8' } }),
+        /is missing: the server sent a web page in its place/,
+      ],
+      [
+        async () => new Response('not a model', { status: 200 }),
+        /is not a valid glTF model: it is neither a binary \.glb nor a JSON \.gltf file/,
+      ],
       // The GLB's magic and header, cut off in its JSON chunk: GLTFLoader's own error, wrapped.
       [async () => new Response(GLB.subarray(0, 600), { status: 200 }), /is not a valid glTF model \(.+\)\.$/],
-      [async () => new Response('{"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0}', { status: 200 }), /has no geometry to float/],
+      [
+        async () => new Response('{"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0}', { status: 200 }),
+        /has no geometry to float/,
+      ],
     ];
     for (const [answer, message] of cases) {
       serve(answer);

@@ -21,7 +21,8 @@ function drawnVertices(batch: ChunkBatch<MeshBasicMaterial>): Vertex[] {
   const out: Vertex[] = [];
   if (geometry instanceof InstancedBufferGeometry) {
     for (let instance = 0; instance < geometry.instanceCount; instance++) {
-      for (const i of index) out.push([...read('position', i), ...read('aChunk', instance), ...read('aEdgeSteps', instance), ...read('aTile', instance)]);
+      for (const i of index)
+        out.push([...read('position', i), ...read('aChunk', instance), ...read('aEdgeSteps', instance), ...read('aTile', instance)]);
     }
     return out;
   }
@@ -45,9 +46,16 @@ function expectedVertices(grid: { positions: Float32Array; indices: Uint16Array 
 function randomRecords(seed: number, count: number): number[][] {
   const random = seededRandom(seed);
   return Array.from({ length: count }, () => [
-    Math.round((random() - 0.5) * 4000), Math.round((random() - 0.5) * 4000), Math.floor(random() * 6), 2,
-    1 + Math.floor(random() * 24), 1 + Math.floor(random() * 24), 1 + Math.floor(random() * 24), 1 + Math.floor(random() * 24),
-    Math.floor(random() * 4) * 6, Math.floor(random() * 4) * 6,
+    Math.round((random() - 0.5) * 4000),
+    Math.round((random() - 0.5) * 4000),
+    Math.floor(random() * 6),
+    2,
+    1 + Math.floor(random() * 24),
+    1 + Math.floor(random() * 24),
+    1 + Math.floor(random() * 24),
+    1 + Math.floor(random() * 24),
+    Math.floor(random() * 4) * 6,
+    Math.floor(random() * 4) * 6,
   ]);
 }
 

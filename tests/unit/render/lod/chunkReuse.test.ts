@@ -12,7 +12,10 @@ function chunks(): OceanChunks {
 
 /** What a frame uploads: each drawn batch's chunk records, in order. */
 function uploaded(ocean: OceanChunks): string {
-  return ocean.drawnRecords().map((records) => records.map((r) => r.join(',')).join('|')).join('\n');
+  return ocean
+    .drawnRecords()
+    .map((records) => records.map((r) => r.join(',')).join('|'))
+    .join('\n');
 }
 
 interface Step {
@@ -44,7 +47,13 @@ function walk(seed: number, length: number): Step[] {
   const steps: Step[] = [];
   for (let n = 0; n < length; n++) {
     const change = Math.floor(random() * 7);
-    const next: Step = { ...step, position: [...step.position], target: [...step.target], settings: { ...step.settings }, bounds: { ...step.bounds } };
+    const next: Step = {
+      ...step,
+      position: [...step.position],
+      target: [...step.target],
+      settings: { ...step.settings },
+      bounds: { ...step.bounds },
+    };
     if (change === 1) next.position[0] += (random() - 0.5) * 80;
     if (change === 2) next.position[1] = 2 + random() * 300;
     if (change === 3) next.target[0] += (random() - 0.5) * 200;
@@ -112,17 +121,25 @@ describe('a camera moved in place is captured again', () => {
     // camera): a new position, the same rotation.
     const steps = walk(12, 60).map((walked, n) => {
       const shift = 40 * Math.floor(n / 3) * (n % 3 === 0 ? 1 : 0);
-      return { ...walked, position: [walked.position[0] + shift, walked.position[1], walked.position[2]] as [number, number, number], target: [walked.target[0] + shift, walked.target[1], walked.target[2]] as [number, number, number] };
+      return {
+        ...walked,
+        position: [walked.position[0] + shift, walked.position[1], walked.position[2]] as [number, number, number],
+        target: [walked.target[0] + shift, walked.target[1], walked.target[2]] as [number, number, number],
+      };
     });
-    const changedFrames = uploadsAsFresh(steps, (step) => {
-      moved.position.set(...step.position);
-      moved.lookAt(...step.target); // three updates the world matrix first, with the old rotation
-      if (moved.fov !== step.fov) {
-        moved.fov = step.fov;
-        moved.updateProjectionMatrix();
-      }
-      reused.update(moved, step.settings, step.bounds);
-    }, reused);
+    const changedFrames = uploadsAsFresh(
+      steps,
+      (step) => {
+        moved.position.set(...step.position);
+        moved.lookAt(...step.target); // three updates the world matrix first, with the old rotation
+        if (moved.fov !== step.fov) {
+          moved.fov = step.fov;
+          moved.updateProjectionMatrix();
+        }
+        reused.update(moved, step.settings, step.bounds);
+      },
+      reused,
+    );
     expect(changedFrames).toBeGreaterThan(30);
   });
 });
@@ -141,7 +158,8 @@ describe('a compare strip draws the nearest band split as the model alone does',
     alone.update(camera(step), step.settings, step.bounds, false, 4);
     const strip = chunks();
     strip.update(camera(step), step.settings, step.bounds, true, 4);
-    const refinedOf = (ocean: OceanChunks) => (ocean as unknown as { refined: Map<number, { count: number; record(n: number): number[] }> }).refined.get(4);
+    const refinedOf = (ocean: OceanChunks) =>
+      (ocean as unknown as { refined: Map<number, { count: number; record(n: number): number[] }> }).refined.get(4);
     /** The split nearest band's records (its quads 2 m / 4), as the frame uploads them. */
     const records = (ocean: OceanChunks) => {
       const batch = refinedOf(ocean);

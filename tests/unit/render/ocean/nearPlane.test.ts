@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_NEAR, MARGIN_PER_NEAR, NEAR_FLOOR, nearForClearance, nearPlaneDrop, type ViewAxes } from '../../../../src/render/ocean/nearPlane';
+import {
+  DEFAULT_NEAR,
+  MARGIN_PER_NEAR,
+  NEAR_FLOOR,
+  nearForClearance,
+  nearPlaneDrop,
+  type ViewAxes,
+} from '../../../../src/render/ocean/nearPlane';
 
 const tan = Math.tan((55 * Math.PI) / 360);
 const level: ViewAxes = { forwardY: 0, upY: 1, rightY: 0, tanHalfFov: tan, aspect: 16 / 9 };
@@ -7,15 +14,16 @@ const level: ViewAxes = { forwardY: 0, upY: 1, rightY: 0, tanHalfFov: tan, aspec
 /** The lowest of a dense grid of near-plane points for a camera pitched by `pitch` (rad, negative down). */
 function lowestNearPoint(pitch: number, near: number): number {
   let lowest = Infinity;
-  for (let i = 0; i <= 20; i++) for (let j = 0; j <= 20; j++) {
-    const sy = -1 + i / 10;
-    const y = near * (Math.sin(pitch) + sy * tan * Math.cos(pitch));
-    lowest = Math.min(lowest, y);
-  }
+  for (let i = 0; i <= 20; i++)
+    for (let j = 0; j <= 20; j++) {
+      const sy = -1 + i / 10;
+      const y = near * (Math.sin(pitch) + sy * tan * Math.cos(pitch));
+      lowest = Math.min(lowest, y);
+    }
   return lowest;
 }
 
-describe('the near plane from the eye\'s clearance', () => {
+describe("the near plane from the eye's clearance", () => {
   it('keeps the default near plane for an eye well above the water or under it', () => {
     expect(nearForClearance(5, level)).toBe(DEFAULT_NEAR);
     expect(nearForClearance(-0.05, level)).toBe(DEFAULT_NEAR);

@@ -41,7 +41,8 @@ describe('linearSampledKernel', () => {
     const i = Math.floor(x);
     return signal[i] + (x - i) * (signal[i + 1] - signal[i]);
   };
-  const discreteBlur = (w: Float32Array, c: number) => w.reduce((sum, wi, i) => sum + (i === 0 ? wi * signal[c] : wi * (signal[c + i] + signal[c - i])), 0);
+  const discreteBlur = (w: Float32Array, c: number) =>
+    w.reduce((sum, wi, i) => sum + (i === 0 ? wi * signal[c] : wi * (signal[c + i] + signal[c - i])), 0);
   const linearBlur = (k: LinearSampledKernel, c: number) => {
     let sum = k.weights[0] * signal[c];
     for (let t = 1; t < k.taps; t++) sum += k.weights[t] * (fetch(c + k.offsets[t]) + fetch(c - k.offsets[t]));
@@ -76,14 +77,34 @@ describe('linearSampledKernel', () => {
 
 describe('highFrequencyEnergy', () => {
   it('is 0 for a flat image and for a linear ramp', () => {
-    expect(highFrequencyEnergy(grey([[7, 7, 7], [7, 7, 7], [7, 7, 7]]), 3, 3)).toBe(0);
+    expect(
+      highFrequencyEnergy(
+        grey([
+          [7, 7, 7],
+          [7, 7, 7],
+          [7, 7, 7],
+        ]),
+        3,
+        3,
+      ),
+    ).toBe(0);
     const ramp = Array.from({ length: 5 }, (_, y) => Array.from({ length: 6 }, (_, x) => 10 * x + 3 * y));
     expect(highFrequencyEnergy(grey(ramp), 6, 5)).toBeCloseTo(0, 9);
   });
 
   it('is the squared Laplacian of a single bright pixel, exactly', () => {
     // Centre pixel 100 among zeros: Laplacian −400 at the only interior pixel. Luma weights sum to 1.
-    expect(highFrequencyEnergy(grey([[0, 0, 0], [0, 100, 0], [0, 0, 0]]), 3, 3)).toBeCloseTo(160000, 6);
+    expect(
+      highFrequencyEnergy(
+        grey([
+          [0, 0, 0],
+          [0, 100, 0],
+          [0, 0, 0],
+        ]),
+        3,
+        3,
+      ),
+    ).toBeCloseTo(160000, 6);
   });
 
   it('drops when seeded random noise (seed 11) is box-blurred', () => {
@@ -94,13 +115,14 @@ describe('highFrequencyEnergy', () => {
       row.map((_, x) => {
         let sum = 0;
         let count = 0;
-        for (let dy = -1; dy <= 1; dy++) for (let dx = -1; dx <= 1; dx++) {
-          const v = noise[y + dy]?.[x + dx];
-          if (v !== undefined) {
-            sum += v;
-            count++;
+        for (let dy = -1; dy <= 1; dy++)
+          for (let dx = -1; dx <= 1; dx++) {
+            const v = noise[y + dy]?.[x + dx];
+            if (v !== undefined) {
+              sum += v;
+              count++;
+            }
           }
-        }
         return Math.round(sum / count);
       }),
     );

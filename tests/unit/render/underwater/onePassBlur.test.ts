@@ -3,12 +3,23 @@ import { gaussianKernel, halfResolutionSigma, ONE_PASS_TAIL, onePassBlurOffset }
 
 /** What four bilinear taps at (±o, ±o), each weighing ¼, add up to over a 3×3 neighbourhood (index [y + 1][x + 1]). */
 function fourTapKernel(o: number): number[][] {
-  const k = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
+  const k = [
+    [0, 0, 0],
+    [0, 0, 0],
+    [0, 0, 0],
+  ];
   for (const sx of [-1, 1]) {
     for (const sy of [-1, 1]) {
       // A bilinear tap at (sx·o, sy·o) weighs texel 0 by (1 − o) and texel ±1 by o along each axis.
-      for (const [x, wx] of [[0, 1 - o], [sx, o]] as const) {
-        for (const [y, wy] of [[0, 1 - o], [sy, o]] as const) k[y + 1][x + 1] += 0.25 * wx * wy;
+      for (const [x, wx] of [
+        [0, 1 - o],
+        [sx, o],
+      ] as const) {
+        for (const [y, wy] of [
+          [0, 1 - o],
+          [sy, o],
+        ] as const)
+          k[y + 1][x + 1] += 0.25 * wx * wy;
       }
     }
   }

@@ -1,6 +1,24 @@
 import { describe, expect, it } from 'vitest';
-import { BoxGeometry, Group, LineBasicMaterial, LineSegments, Mesh, MeshStandardMaterial, Scene, ShaderChunk, ShaderMaterial, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
-import { encodeSceneForPost, markOceanoMaterial, SCENE_BRIGHTEST, SCENE_ENCODE_CHUNK, SCENE_LOW_CODES } from '../../../../src/render/underwater/sceneEncoding';
+import {
+  BoxGeometry,
+  Group,
+  LineBasicMaterial,
+  LineSegments,
+  Mesh,
+  MeshStandardMaterial,
+  Scene,
+  ShaderChunk,
+  ShaderMaterial,
+  type WebGLProgramParametersWithUniforms,
+  type WebGLRenderer,
+} from 'three';
+import {
+  encodeSceneForPost,
+  markOceanoMaterial,
+  SCENE_BRIGHTEST,
+  SCENE_ENCODE_CHUNK,
+  SCENE_LOW_CODES,
+} from '../../../../src/render/underwater/sceneEncoding';
 import { SCENE_DECODE_CHUNK, withPassChunks } from '../../../../src/render/underwater/passChunks';
 import { resolveChunks } from '../../../../src/render/shaders/shaderChunks';
 
@@ -21,7 +39,11 @@ function sceneOfEveryKind() {
 
 /** What three hands a material's onBeforeCompile, reduced to the part the patch reads. */
 function compiled(material: MeshStandardMaterial): string {
-  const shader = { fragmentShader: 'main {\n#include <colorspace_fragment>\n}', vertexShader: '', uniforms: {} } as unknown as WebGLProgramParametersWithUniforms;
+  const shader = {
+    fragmentShader: 'main {\n#include <colorspace_fragment>\n}',
+    vertexShader: '',
+    uniforms: {},
+  } as unknown as WebGLProgramParametersWithUniforms;
   material.onBeforeCompile(shader, null as unknown as WebGLRenderer);
   return shader.fragmentShader;
 }
@@ -73,7 +95,9 @@ describe("the underwater passes' scene encoding (src/render/underwater/sceneEnco
   });
 
   it("resolves Oceano's chunks per shader and leaves three's ShaderChunk table as three ships it", () => {
-    const text = resolveChunks(withPassChunks('#include <common>\n#include <colorspace_fragment>\n#include <oceano_scene_encode>\n#include <oceano_scene_decode>'));
+    const text = resolveChunks(
+      withPassChunks('#include <common>\n#include <colorspace_fragment>\n#include <oceano_scene_encode>\n#include <oceano_scene_decode>'),
+    );
     expect(text).toContain('#include <common>');
     expect(text).toContain(SCENE_ENCODE_CHUNK);
     expect(text).toContain(SCENE_DECODE_CHUNK);

@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { GOD_RAY_RANGE, planShaftLightTile, SHAFT_LIGHT_TEXEL, SHAFT_LIGHT_WINDOW_SIDE, type ShaftLightTile } from '../../../../src/render/underwater/shaftLightTile';
+import {
+  GOD_RAY_RANGE,
+  planShaftLightTile,
+  SHAFT_LIGHT_TEXEL,
+  SHAFT_LIGHT_WINDOW_SIDE,
+  type ShaftLightTile,
+} from '../../../../src/render/underwater/shaftLightTile';
 import { refractedSunDirection, type Vec3 } from '../../../../src/sim/underwater/snellWindow';
 import { seededRandom } from '../../../../src/sim/noise/integerHash';
 import { BLUR_MAX_RADIUS, BLUR_MAX_TAPS, halfResolutionSigma, linearSampledKernel } from '../../../../src/render/underwater/gaussianKernel';

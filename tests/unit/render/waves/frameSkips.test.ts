@@ -1,5 +1,18 @@
 import { describe, expect, it, vi } from 'vitest';
-import { ACESFilmicToneMapping, BackSide, CubeTexture, CustomToneMapping, DoubleSide, FrontSide, Group, NoToneMapping, PerspectiveCamera, Scene, Texture, type IUniform } from 'three';
+import {
+  ACESFilmicToneMapping,
+  BackSide,
+  CubeTexture,
+  CustomToneMapping,
+  DoubleSide,
+  FrontSide,
+  Group,
+  NoToneMapping,
+  PerspectiveCamera,
+  Scene,
+  Texture,
+  type IUniform,
+} from 'three';
 import { createWakeUniforms } from '../../../../src/render/wake/wakeUniforms';
 import { createFoamUniforms } from '../../../../src/render/foam/foamUniforms';
 import { OceanMaterial } from '../../../../src/render/ocean/oceanMaterial';
@@ -18,8 +31,16 @@ import { defaultParams } from '../../../../src/sim/params/params';
  */
 
 function material(wakeCodeArrived = true): OceanMaterial {
-  const view = { name: 'seed', chunkName: 'oceano_waves_test', chunk: '', uniforms: {}, model: { bounds: () => ({ vertical: 1, horizontal: 0 }) } } as unknown as WaveModelView;
-  const shared = { uSunColor: { value: null }, ...createWakeUniforms(), ...createFoamUniforms() } as unknown as ConstructorParameters<typeof OceanMaterial>[3];
+  const view = {
+    name: 'seed',
+    chunkName: 'oceano_waves_test',
+    chunk: '',
+    uniforms: {},
+    model: { bounds: () => ({ vertical: 1, horizontal: 0 }) },
+  } as unknown as WaveModelView;
+  const shared = { uSunColor: { value: null }, ...createWakeUniforms(), ...createFoamUniforms() } as unknown as ConstructorParameters<
+    typeof OceanMaterial
+  >[3];
   const binding = new WaveBinding(view);
   // The wake's GLSL is fetched with the wake (lateChunks.ts); the define waits for it.
   if (wakeCodeArrived) binding.late.provide('oceano_wake', '// the wake');
@@ -32,12 +53,32 @@ const plainRenderer = { toneMapping: NoToneMapping };
 /** What setSeenFromBelow decides, for both programs. */
 function seen(m: OceanMaterial) {
   const defines = (x: OceanMaterial) => Object.keys(x.defines).sort().join();
-  return { side: m.side, nearSide: m.near.side, defines: defines(m), nearDefines: defines(m.near), marks: (m.uniforms.uMarkSides as IUniform<boolean>).value };
+  return {
+    side: m.side,
+    nearSide: m.near.side,
+    defines: defines(m),
+    nearDefines: defines(m.near),
+    marks: (m.uniforms.uMarkSides as IUniform<boolean>).value,
+  };
 }
 
 describe('OceanMaterial.setSeenFromBelow: the same answer again changes nothing', () => {
   it('walks every change between the three answers and leaves each as a fresh material set once would', () => {
-    const walk: Submersion[] = ['above', 'above', 'straddling', 'straddling', 'below', 'below', 'above', 'below', 'straddling', 'above', 'straddling', 'below', 'below'];
+    const walk: Submersion[] = [
+      'above',
+      'above',
+      'straddling',
+      'straddling',
+      'below',
+      'below',
+      'above',
+      'below',
+      'straddling',
+      'above',
+      'straddling',
+      'below',
+      'below',
+    ];
     const m = material();
     let previous: Submersion | null = null;
     for (const where of walk) {
@@ -119,20 +160,33 @@ describe('OceanMaterial teaching and debug views are compiled in only while show
   it('puts each define in both programs and takes it out again; a repeat recompiles nothing', () => {
     const m = material();
     // Each view's define, in the material and in its near-band twin.
-    const defines = () => ['OCEAN_LOD_COLORS', 'OCEAN_SHOW_NORMALS', 'OCEAN_NORMALS_COMPARE'].map((name) => [name in m.defines, name in m.near.defines]);
+    const defines = () =>
+      ['OCEAN_LOD_COLORS', 'OCEAN_SHOW_NORMALS', 'OCEAN_NORMALS_COMPARE'].map((name) => [name in m.defines, name in m.near.defines]);
     const show = (on: boolean) => {
       m.setLodColors(on);
       m.setTeachingViews(!on, on);
       m.setNormalsCompare(on);
     };
-    expect(defines()).toEqual([[false, false], [false, false], [false, false]]);
+    expect(defines()).toEqual([
+      [false, false],
+      [false, false],
+      [false, false],
+    ]);
     show(true);
-    expect(defines()).toEqual([[true, true], [true, true], [true, true]]);
+    expect(defines()).toEqual([
+      [true, true],
+      [true, true],
+      [true, true],
+    ]);
     const versions = [m.version, m.near.version];
     show(true);
     expect([m.version, m.near.version]).toEqual(versions);
     show(false);
-    expect(defines()).toEqual([[false, false], [false, false], [false, false]]);
+    expect(defines()).toEqual([
+      [false, false],
+      [false, false],
+      [false, false],
+    ]);
   });
 });
 
@@ -149,7 +203,16 @@ describe('BoatView.setPose: the same pose again leaves the group as it is', () =
     view.setPose(pose({}));
     expect(rotationSet).not.toHaveBeenCalled();
     expect(positionSet).not.toHaveBeenCalled();
-    for (const change of [{ x: 7.001 }, { y: 0.31 }, { z: -5.2 }, { heading: 0.41 }, { pitch: 0.03 }, { roll: -0.04 }, { heading: -0 }, { heading: 0 }]) {
+    for (const change of [
+      { x: 7.001 },
+      { y: 0.31 },
+      { z: -5.2 },
+      { heading: 0.41 },
+      { pitch: 0.03 },
+      { roll: -0.04 },
+      { heading: -0 },
+      { heading: 0 },
+    ]) {
       view.setPose(pose(change));
       const freshScene = new Scene();
       new BoatView(freshScene).setPose(pose(change));
@@ -169,17 +232,26 @@ describe('SeedWaveView.update: the state already applied is not applied again', 
     Object.fromEntries(
       Object.entries(view.uniforms)
         .filter(([, u]) => !(u.value instanceof Texture))
-        .map(([k, u]) => [k, u.value && typeof u.value === 'object' && 'toArray' in u.value ? (u.value as { toArray(): number[] }).toArray() : u.value]),
+        .map(([k, u]) => [
+          k,
+          u.value && typeof u.value === 'object' && 'toArray' in u.value ? (u.value as { toArray(): number[] }).toArray() : u.value,
+        ]),
     );
 
-  it('repeats set nothing; a new time or new parameters at the same time give a fresh view\'s uniforms', () => {
+  it("repeats set nothing; a new time or new parameters at the same time give a fresh view's uniforms", () => {
     const params = defaultParams();
     const view = new SeedWaveView(new SeedWaveModel(params));
     view.update(10);
     const offset = vi.spyOn(view.uniforms.uRippleOffset.value as { fromArray(a: number[]): unknown }, 'fromArray');
     view.update(10);
     expect(offset).not.toHaveBeenCalled();
-    const steps: [number, Partial<typeof params>][] = [[10, { swellAmplitude: 0.9 }], [10, { rippleStrength: 0.2 }], [10.5, {}], [10.5, {}], [10.5, { rippleBlendSpeed: 0.3 }]];
+    const steps: [number, Partial<typeof params>][] = [
+      [10, { swellAmplitude: 0.9 }],
+      [10, { rippleStrength: 0.2 }],
+      [10.5, {}],
+      [10.5, {}],
+      [10.5, { rippleBlendSpeed: 0.3 }],
+    ];
     let current = params;
     for (const [time, change] of steps) {
       current = { ...current, ...change };

@@ -4,9 +4,15 @@ import { backendArgs, isSoftwareRenderer, requestedBackend } from '../../../../s
 
 describe('benchmark results table', () => {
   it('renders headings, a separator and one line per row', () => {
-    expect(markdownTable(['scenario', 'ms'], [['default view', '236.0'], ['lod', '12.5']])).toBe(
-      '| scenario | ms |\n| --- | --- |\n| default view | 236.0 |\n| lod | 12.5 |',
-    );
+    expect(
+      markdownTable(
+        ['scenario', 'ms'],
+        [
+          ['default view', '236.0'],
+          ['lod', '12.5'],
+        ],
+      ),
+    ).toBe('| scenario | ms |\n| --- | --- |\n| default view | 236.0 |\n| lod | 12.5 |');
   });
   it('escapes pipes and flattens line breaks inside cells', () => {
     expect(markdownTable(['a'], [['x|y\nz']])).toBe('| a |\n| --- |\n| x\\|y z |');

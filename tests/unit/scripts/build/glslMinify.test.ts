@@ -5,7 +5,9 @@ import { minifyGlsl, SHADER_RAW_IMPORT } from '../../../../scripts/build/glslMin
 
 const SHADERS = new URL('../../../../shaders/', import.meta.url).pathname;
 const files = (dir: string): string[] =>
-  readdirSync(dir, { withFileTypes: true }).flatMap((entry) => (entry.isDirectory() ? files(join(dir, entry.name)) : [join(dir, entry.name)]));
+  readdirSync(dir, { withFileTypes: true }).flatMap((entry) =>
+    entry.isDirectory() ? files(join(dir, entry.name)) : [join(dir, entry.name)],
+  );
 const shaderFiles = files(SHADERS).filter((file) => /\.(glsl|vert|frag)$/.test(file));
 
 /** The code a compiler sees: comments gone, then each line's tokens; directives are whole lines. */

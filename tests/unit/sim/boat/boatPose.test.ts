@@ -106,7 +106,8 @@ describe('followStep', () => {
 
 describe('BoatMotion', () => {
   const still = { heading: 0, speed: 0, response: 0.25 };
-  const wave = (t: number) => (x: number, z: number) => 1.4 * Math.sin(0.05 * x + 0.7 * t) * Math.cos(0.05 * z) + 0.3 * Math.sin(1.3 * x - 2 * t);
+  const wave = (t: number) => (x: number, z: number) =>
+    1.4 * Math.sin(0.05 * x + 0.7 * t) * Math.cos(0.05 * z) + 0.3 * Math.sin(1.3 * x - 2 * t);
 
   it('sits exactly on the surface at the first frame, and holds its damped pose while the clock stands still', () => {
     const motion = new BoatMotion([3, -7]);
@@ -234,9 +235,11 @@ describe('BoatMotion', () => {
 describe('BoatMotion keeps the target pose of a paused view only while the surface is the same', () => {
   const still = { heading: 0.3, speed: 0, response: 0.25 };
   /** The boat on `model` at `time`, as BoatController floats it. */
-  const float = (motion: BoatMotion, model: LiveWaveModel, time: number) => motion.update(time, still, HULL, (x, z) => model.height(x, z, time), model);
+  const float = (motion: BoatMotion, model: LiveWaveModel, time: number) =>
+    motion.update(time, still, HULL, (x, z) => model.height(x, z, time), model);
   /** The target a boat that keeps nothing would take there now. */
-  const fresh = (model: LiveWaveModel, time: number, at: { x: number; z: number }) => targetPose((x, z) => model.height(x, z, time), at.x, at.z, still.heading, HULL);
+  const fresh = (model: LiveWaveModel, time: number, at: { x: number; z: number }) =>
+    targetPose((x, z) => model.height(x, z, time), at.x, at.z, still.heading, HULL);
 
   it('samples the surface once for a paused view drawn again, and again for another time, place or model', () => {
     const model = new SeedWaveModel(defaultParams());
@@ -273,7 +276,7 @@ describe('BoatMotion keeps the target pose of a paused view only while the surfa
     expect(Math.abs(after.y - before.y)).toBeGreaterThan(1e-3);
   });
 
-  it('the FFT sea: the Worker\'s fields for the paused time arrive after a lagged frame', () => {
+  it("the FFT sea: the Worker's fields for the paused time arrive after a lagged frame", () => {
     const params = { ...defaultParams(), waves: 'fft' as const, fftSize: '64' as const, windSpeed: 12 };
     const model = new FftWaveModel(params);
     model.attachSource({ request: () => {}, dispose: () => {} });
@@ -283,7 +286,11 @@ describe('BoatMotion keeps the target pose of a paused view only while the surfa
     expect(float(motion, model, 10.016).target).toBe(lagged); // paused there: kept
     const worker = new FftOcean(model.sea);
     worker.setTime(10.016);
-    model.receive(model.sea, 10.016, worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));
+    model.receive(
+      model.sea,
+      10.016,
+      worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })),
+    );
     const after = float(motion, model, 10.016).target;
     expect(after).toEqual(fresh(model, 10.016, after));
     expect(Math.abs(after.y - lagged.y)).toBeGreaterThan(1e-4);
@@ -297,4 +304,3 @@ describe('BoatMotion keeps the target pose of a paused view only while the surfa
     expect(Math.abs(exact.y - laggedAgain.y)).toBeGreaterThan(1e-4);
   });
 });
-

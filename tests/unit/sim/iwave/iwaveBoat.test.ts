@@ -10,7 +10,15 @@ import { VOLUME_PER_LENGTH_CUBED } from '../../../../src/sim/wake/kelvinWake';
 /** The boat in the interactive field (src/sim/iwave/movingHull.ts) and its hand-over to the analytic wake, on the CPU solver. */
 const spacing = 0.5;
 const kernel = fittedVerticalDerivativeKernel();
-const boat = (x: number, z: number, heading: number, speed = 0): MovingHull => ({ x, z, heading, speed, length: 8, beam: 2.6, strength: 1 });
+const boat = (x: number, z: number, heading: number, speed = 0): MovingHull => ({
+  x,
+  z,
+  heading,
+  speed,
+  length: 8,
+  beam: 2.6,
+  strength: 1,
+});
 
 describe('the hull in the field', () => {
   // Planted fault: the hull out of reach sends nothing.
@@ -41,8 +49,12 @@ describe('the hull in the field', () => {
     const hulled = run(boat(0, 0, 0));
     const { back, free } = backFrom(hulled);
     let dry = 0;
-    for (let j = 0; j < hulled.n; j++) for (let i = 0; i < hulled.n; i++) if (hullCovers(boat(0, 0, 0), hulled.texelX(i), hulled.texelZ(j))) dry = Math.max(dry, Math.abs(hulled.height[j * hulled.n + i]));
-    console.log(`Waves sent back by the hull, on the stone's side: ${back.toFixed(4)} m, against the free ring's ${free.toFixed(4)} m there (${((100 * back) / free).toFixed(0)} %)`);
+    for (let j = 0; j < hulled.n; j++)
+      for (let i = 0; i < hulled.n; i++)
+        if (hullCovers(boat(0, 0, 0), hulled.texelX(i), hulled.texelZ(j))) dry = Math.max(dry, Math.abs(hulled.height[j * hulled.n + i]));
+    console.log(
+      `Waves sent back by the hull, on the stone's side: ${back.toFixed(4)} m, against the free ring's ${free.toFixed(4)} m there (${((100 * back) / free).toFixed(0)} %)`,
+    );
     expect(dry).toBe(0);
     expect(back).toBeGreaterThan(0.1 * free);
     // Planted fault: the same hull 40 m east, out of the waves' reach by then.
@@ -68,7 +80,9 @@ describe('the hull in the field', () => {
       }
     }
     const flux = 4 * VOLUME_PER_LENGTH_CUBED * 8 * 8;
-    console.log(`One step at 4 m/s: ${ahead.toExponential(3)} m³ ahead of the hull's centre, flux × dt ${(flux / 60).toExponential(3)} m³, sum ${total.toExponential(2)} m³`);
+    console.log(
+      `One step at 4 m/s: ${ahead.toExponential(3)} m³ ahead of the hull's centre, flux × dt ${(flux / 60).toExponential(3)} m³, sum ${total.toExponential(2)} m³`,
+    );
     expect(Math.abs(total)).toBeLessThan(1e-3 * ahead);
     // The footprint cuts the bump's tail inside the hull: within 10 % of the whole.
     expect(ahead / (flux / 60)).toBeGreaterThan(0.9);
@@ -100,7 +114,9 @@ describe('the hull in the field', () => {
     const beside = besideHull(field, hull, 2 * spacing);
     const pose = targetPose(beside, hull.x, hull.z, hull.heading, hull);
     const under = targetPose(field, hull.x, hull.z, hull.heading, hull);
-    console.log(`Heave from the field beside the hull: ${pose.y.toFixed(4)} m, roll ${pose.roll.toFixed(4)} rad; read under the hull: ${under.y} m`);
+    console.log(
+      `Heave from the field beside the hull: ${pose.y.toFixed(4)} m, roll ${pose.roll.toFixed(4)} rad; read under the hull: ${under.y} m`,
+    );
     expect(under.y).toBe(0);
     expect(Math.abs(pose.y)).toBeGreaterThan(1e-3);
     expect(Math.abs(pose.roll)).toBeGreaterThan(1e-4);

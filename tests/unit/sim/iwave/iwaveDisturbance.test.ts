@@ -21,8 +21,14 @@ describe('disturb() arguments', () => {
       }
       return null;
     };
-    expect(noticeOf(() => checkDisturbance(0, 0, { radius: 11 }))).toEqual({ id: 'disturbInvalid', values: { name: 'radius', got: '11', min: 0, max: 10 } });
-    expect(noticeOf(() => checkDisturbance(0, Number.NaN))).toEqual({ id: 'disturbInvalid', values: { name: 'z', got: 'NaN', min: -1e6, max: 1e6 } });
+    expect(noticeOf(() => checkDisturbance(0, 0, { radius: 11 }))).toEqual({
+      id: 'disturbInvalid',
+      values: { name: 'radius', got: '11', min: 0, max: 10 },
+    });
+    expect(noticeOf(() => checkDisturbance(0, Number.NaN))).toEqual({
+      id: 'disturbInvalid',
+      values: { name: 'z', got: 'NaN', min: -1e6, max: 1e6 },
+    });
   });
 
   it('raises a radius under one texel to one texel and says so; a fair one passes unchanged with no notice', () => {
@@ -41,18 +47,33 @@ describe('sampling a read-back of the field (the CPU twin of shaders/iwave.glsl)
   grid.recentre(3.2, -7.9);
   grid.disturb({ x: 4, z: -8, radius: 1.5, height: 0.4 });
   for (let s = 0; s < 30; s++) grid.step(1 / 60);
-  const snapshot: FieldSnapshot = { heights: Float32Array.from(grid.height), stride: 1, n, spacing: IWAVE_SPACING, centerX: grid.centerX, centerZ: grid.centerZ };
+  const snapshot: FieldSnapshot = {
+    heights: Float32Array.from(grid.height),
+    stride: 1,
+    n,
+    spacing: IWAVE_SPACING,
+    centerX: grid.centerX,
+    centerZ: grid.centerZ,
+  };
 
   // Planted fault: a half-texel shift misses.
   it("gives the solver's bilinear height inside the square and its slope by central differences", () => {
     let worst = 0;
     let worstShifted = 0;
-    for (const [x, z] of [[4.1, -7.7], [5.3, -9.2], [2.05, -6.4], [4, -8]]) {
+    for (const [x, z] of [
+      [4.1, -7.7],
+      [5.3, -9.2],
+      [2.05, -6.4],
+      [4, -8],
+    ]) {
       const [h, dx, dz] = sampleField(snapshot, x, z);
       worst = Math.max(worst, Math.abs(h - grid.sample(x, z)));
       expect(dx).toBeCloseTo((grid.sample(x + 0.5, z) - grid.sample(x - 0.5, z)) / 1, 6);
       expect(dz).toBeCloseTo((grid.sample(x, z + 0.5) - grid.sample(x, z - 0.5)) / 1, 6);
-      worstShifted = Math.max(worstShifted, Math.abs(sampleField({ ...snapshot, centerX: snapshot.centerX + 0.25 }, x, z)[0] - grid.sample(x, z)));
+      worstShifted = Math.max(
+        worstShifted,
+        Math.abs(sampleField({ ...snapshot, centerX: snapshot.centerX + 0.25 }, x, z)[0] - grid.sample(x, z)),
+      );
     }
     expect(worst).toBeLessThan(1e-6);
     expect(worstShifted).toBeGreaterThan(1e-3);

@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { fittedVerticalDerivativeKernel, kernelOrbitWeights, kernelResponse, tessendorfKernel, waveEquationKernel, IWAVE_KERNEL_BAND, IWAVE_KERNEL_ORBITS, type ConvolutionKernel } from '../../../../src/sim/iwave/verticalDerivativeKernel';
+import {
+  fittedVerticalDerivativeKernel,
+  kernelOrbitWeights,
+  kernelResponse,
+  tessendorfKernel,
+  waveEquationKernel,
+  IWAVE_KERNEL_BAND,
+  IWAVE_KERNEL_ORBITS,
+  type ConvolutionKernel,
+} from '../../../../src/sim/iwave/verticalDerivativeKernel';
 import { GRAVITY, IWAVE_SPONGE, IWaveGrid, type SpongeLayer } from '../../../../src/sim/iwave/iwaveGrid';
 import { crestRadii, waveFrontRadius } from '../../../../src/sim/iwave/cauchyPoissonRings';
 import { equationKernels, WAVE_EQUATION_SPEED } from '../../../../src/sim/iwave/interactiveField';
@@ -42,7 +51,20 @@ function measuredDispersionError(kernel: ConvolutionKernel, m: number, diagonal:
 
 describe('the dispersion of the vertical-derivative kernel', () => {
   // Modes of the 64² box (0.5 m texels) inside the band, along an axis and the diagonal.
-  const modes: [number, boolean][] = [[3, false], [2, true], [4, false], [3, true], [6, false], [6, true], [8, false], [10, false], [10, true], [12, false], [15, false], [15, true]];
+  const modes: [number, boolean][] = [
+    [3, false],
+    [2, true],
+    [4, false],
+    [3, true],
+    [6, false],
+    [6, true],
+    [8, false],
+    [10, false],
+    [10, true],
+    [12, false],
+    [15, false],
+    [15, true],
+  ];
 
   // Planted fault: the wave equation fails.
   it('evolves single Fourier modes with ω² = g k within 5 % from k = 0.55 to 4.2 rad/m', () => {
@@ -52,7 +74,9 @@ describe('the dispersion of the vertical-derivative kernel', () => {
     expect(Math.max(...measured.map((r) => r.k))).toBeGreaterThan(4);
     for (const r of measured) expect(Math.abs(r.error)).toBeLessThan(0.05);
     // Negative control: ∂²h/∂t² = c²∇²h with c the phase speed of a 4 m wave, ω² = c²k².
-    const control = modes.map(([m, d]) => measuredDispersionError(waveEquationKernel(Math.sqrt(g / ((2 * Math.PI) / 4)), spacing, g), m, d));
+    const control = modes.map(([m, d]) =>
+      measuredDispersionError(waveEquationKernel(Math.sqrt(g / ((2 * Math.PI) / 4)), spacing, g), m, d),
+    );
     console.log(`Wave equation, ω²/(gk) − 1: ${control.map((r) => `${(100 * r.error).toFixed(0)} %`).join(', ')}`);
     expect(control.filter((r) => Math.abs(r.error) > 0.05).length).toBeGreaterThan(modes.length / 2);
   }, 120_000);
@@ -88,11 +112,15 @@ describe('the dispersion of the vertical-derivative kernel', () => {
       return worst;
     };
     let lowest = Infinity;
-    for (let q = 0; q <= 60; q++) for (let p = 0; p <= 60; p++) lowest = Math.min(lowest, kernelResponse(fitted, -Math.PI + (2 * Math.PI * p) / 60, -Math.PI + (2 * Math.PI * q) / 60));
+    for (let q = 0; q <= 60; q++)
+      for (let p = 0; p <= 60; p++)
+        lowest = Math.min(lowest, kernelResponse(fitted, -Math.PI + (2 * Math.PI * p) / 60, -Math.PI + (2 * Math.PI * q) / 60));
     expect(lowest).toBeGreaterThan(0.1);
     const fittedWorst = worstInBand(fitted);
     const tessendorfWorst = worstInBand(tessendorfKernel());
-    console.log(`Kernel response vs |k| over ${IWAVE_KERNEL_BAND.join('–')} rad/texel: fitted ${(100 * fittedWorst).toFixed(1)} %, Tessendorf σ = 1 ${(100 * tessendorfWorst).toFixed(0)} %; R(0) = ${kernelResponse(fitted, 0, 0).toFixed(3)}`);
+    console.log(
+      `Kernel response vs |k| over ${IWAVE_KERNEL_BAND.join('–')} rad/texel: fitted ${(100 * fittedWorst).toFixed(1)} %, Tessendorf σ = 1 ${(100 * tessendorfWorst).toFixed(0)} %; R(0) = ${kernelResponse(fitted, 0, 0).toFixed(3)}`,
+    );
     expect(fittedWorst).toBeLessThan(0.05);
     expect(tessendorfWorst).toBeGreaterThan(0.05);
   }, 60_000);
@@ -159,7 +187,9 @@ describe('a dropped stone (Cauchy–Poisson)', () => {
   // Long waves lead (planted fault: the wave equation fails).
   it('spaces its crests as k = g t²/(4 r²) within 15 %, at several radii and three times', () => {
     const checks = ringChecks(fitted);
-    console.log(`Cauchy–Poisson: ${checks.map((c) => `t ${c.t} s, r ${c.radius.toFixed(1)} m: k ${c.measured.toFixed(2)} vs ${c.theory.toFixed(2)} (${(100 * (c.measured / c.theory - 1)).toFixed(1)} %)`).join('; ')}`);
+    console.log(
+      `Cauchy–Poisson: ${checks.map((c) => `t ${c.t} s, r ${c.radius.toFixed(1)} m: k ${c.measured.toFixed(2)} vs ${c.theory.toFixed(2)} (${(100 * (c.measured / c.theory - 1)).toFixed(1)} %)`).join('; ')}`,
+    );
     for (const t of [8, 10, 12]) expect(checks.filter((c) => c.t === t).length).toBeGreaterThanOrEqual(2);
     for (const c of checks) expect(Math.abs(c.measured / c.theory - 1)).toBeLessThan(0.15);
     // Long waves ahead, short behind: along each time's checks the wavenumber falls outwards.
@@ -200,7 +230,9 @@ describe('the guide rings of the stone preset', () => {
       }
       const crests = crestsOnAxis(grid, 3, 30);
       const rings = crestRadii(t, { kMin: 0.6, kMax: 4.4, maxRadius: 30 });
-      console.log(`t ${t} s: guide rings ${rings.map((r) => r.toFixed(2)).join(', ')} m; the solver's crests ${crests.map((r) => r.toFixed(2)).join(', ')} m`);
+      console.log(
+        `t ${t} s: guide rings ${rings.map((r) => r.toFixed(2)).join(', ')} m; the solver's crests ${crests.map((r) => r.toFixed(2)).join(', ')} m`,
+      );
       expect(rings.length).toBeGreaterThanOrEqual(3);
       for (const r of rings) expect(nearest(crests, r)).toBeLessThan(spacing);
       // Planted fault: rings where the phase is π off (troughs): most are more than a texel from a crest.
@@ -239,8 +271,16 @@ describe('the wave equation beside iWave (stone-compare)', () => {
     // The right-hand ring's front: the outermost crest stands near c t (the wave equation's ring trails behind its front).
     const front = waveFrontRadius(6, WAVE_EQUATION_SPEED);
     let outer = 0;
-    for (let r = 2; r < 20; r += 0.05) if (grid.sample(28 + r, 0) > 0.02 * 0.4 && grid.sample(28 + r, 0) >= grid.sample(28 + r + 0.05, 0) && grid.sample(28 + r, 0) > grid.sample(28 + r - 0.05, 0)) outer = r;
-    console.log(`Wave equation at c = ${WAVE_EQUATION_SPEED.toFixed(2)} m/s: outermost crest ${outer.toFixed(2)} m at 6 s, c t = ${front.toFixed(2)} m`);
+    for (let r = 2; r < 20; r += 0.05)
+      if (
+        grid.sample(28 + r, 0) > 0.02 * 0.4 &&
+        grid.sample(28 + r, 0) >= grid.sample(28 + r + 0.05, 0) &&
+        grid.sample(28 + r, 0) > grid.sample(28 + r - 0.05, 0)
+      )
+        outer = r;
+    console.log(
+      `Wave equation at c = ${WAVE_EQUATION_SPEED.toFixed(2)} m/s: outermost crest ${outer.toFixed(2)} m at 6 s, c t = ${front.toFixed(2)} m`,
+    );
     expect(Math.abs(outer - front)).toBeLessThan(2);
   }, 120_000);
 });
@@ -337,7 +377,9 @@ describe('the absorbing border', () => {
   // Planted fault: no sponge, the edge reflects.
   it("reflects at most 5 % of a wave packet's amplitude from 0.6 to 4 rad/m", () => {
     const reflections = [0.6, 1, 2, 4].map((k) => borderReflection(k, IWAVE_SPONGE));
-    console.log(`Sponge (${IWAVE_SPONGE.width} texels, ${IWAVE_SPONGE.strength}/s): reflection ${reflections.map((r) => `${(100 * r).toFixed(2)} %`).join(', ')} at k = 0.6, 1, 2, 4 rad/m`);
+    console.log(
+      `Sponge (${IWAVE_SPONGE.width} texels, ${IWAVE_SPONGE.strength}/s): reflection ${reflections.map((r) => `${(100 * r).toFixed(2)} %`).join(', ')} at k = 0.6, 1, 2, 4 rad/m`,
+    );
     for (const r of reflections) expect(r).toBeLessThan(0.05);
     const bare = borderReflection(1, undefined);
     console.log(`No sponge: reflection ${(100 * bare).toFixed(0)} % at k = 1 rad/m`);

@@ -35,51 +35,63 @@ function energy(grid: IWaveGrid, dt: number): number {
 }
 
 describe('the interactive field over a long run', () => {
-  it(`keeps its energy bounded for ${drivenSeconds} s of steady sources, and loses it once they stop`, () => {
-    const grid = new IWaveGrid({ n, spacing: IWAVE_SPACING, kernel: fittedVerticalDerivativeKernel(), damping: IWAVE_DAMPING, sponge: IWAVE_SPONGE });
-    // The boat on a circle of radius 8 m round the centre: 4 m/s, turning 0.5 rad/s.
-    const turnRate = 0.5;
-    const start: MovingHull = { x: -8, z: 0, heading: 0, speed: 4, length: 8, beam: 2.6, strength: 1 };
-    const windows: number[] = [];
-    let windowSum = 0;
-    let windowCount = 0;
-    const stepsPerWindow = Math.round(10 / IWAVE_STEP);
-    const total = Math.round((drivenSeconds + quietSeconds) / IWAVE_STEP);
-    const driven = Math.round(drivenSeconds / IWAVE_STEP);
-    let atStop = 0;
-    let largest = 0;
-    for (let s = 1; s <= total; s++) {
-      const t = s * IWAVE_STEP;
-      grid.hull = s <= driven ? hullEarlier(start, turnRate, -t) : null;
-      grid.step(IWAVE_STEP);
-      if (s <= driven && s % 120 === 0) grid.disturb({ x: ((s / 120) % 2 === 0 ? -1 : 1) * 6, z: 5, radius: 1, height: 0.4 });
-      if (s % 6 === 0) {
-        const e = energy(grid, IWAVE_STEP);
-        expect(Number.isFinite(e)).toBe(true);
-        largest = Math.max(largest, e);
-        windowSum += e;
-        windowCount++;
+  it(
+    `keeps its energy bounded for ${drivenSeconds} s of steady sources, and loses it once they stop`,
+    () => {
+      const grid = new IWaveGrid({
+        n,
+        spacing: IWAVE_SPACING,
+        kernel: fittedVerticalDerivativeKernel(),
+        damping: IWAVE_DAMPING,
+        sponge: IWAVE_SPONGE,
+      });
+      // The boat on a circle of radius 8 m round the centre: 4 m/s, turning 0.5 rad/s.
+      const turnRate = 0.5;
+      const start: MovingHull = { x: -8, z: 0, heading: 0, speed: 4, length: 8, beam: 2.6, strength: 1 };
+      const windows: number[] = [];
+      let windowSum = 0;
+      let windowCount = 0;
+      const stepsPerWindow = Math.round(10 / IWAVE_STEP);
+      const total = Math.round((drivenSeconds + quietSeconds) / IWAVE_STEP);
+      const driven = Math.round(drivenSeconds / IWAVE_STEP);
+      let atStop = 0;
+      let largest = 0;
+      for (let s = 1; s <= total; s++) {
+        const t = s * IWAVE_STEP;
+        grid.hull = s <= driven ? hullEarlier(start, turnRate, -t) : null;
+        grid.step(IWAVE_STEP);
+        if (s <= driven && s % 120 === 0) grid.disturb({ x: ((s / 120) % 2 === 0 ? -1 : 1) * 6, z: 5, radius: 1, height: 0.4 });
+        if (s % 6 === 0) {
+          const e = energy(grid, IWAVE_STEP);
+          expect(Number.isFinite(e)).toBe(true);
+          largest = Math.max(largest, e);
+          windowSum += e;
+          windowCount++;
+        }
+        if (s % stepsPerWindow === 0) {
+          windows.push(windowSum / windowCount);
+          windowSum = 0;
+          windowCount = 0;
+        }
+        if (s === driven) atStop = energy(grid, IWAVE_STEP);
       }
-      if (s % stepsPerWindow === 0) {
-        windows.push(windowSum / windowCount);
-        windowSum = 0;
-        windowCount = 0;
-      }
-      if (s === driven) atStop = energy(grid, IWAVE_STEP);
-    }
-    const drivenWindows = windows.slice(0, drivenSeconds / 10);
-    const settled = drivenWindows.slice(3);
-    console.log(`iWave ${n}², ${drivenSeconds} s driven: energy per 10 s window ${drivenWindows.map((e) => e.toFixed(3)).join(', ')} m⁴/s²; largest ${largest.toFixed(3)}; at the stop ${atStop.toFixed(3)}, ${quietSeconds} s later ${windows.at(-1)!.toFixed(4)}`);
-    // Bounded: once the sources have run 30 s, no window holds twice the middle one (a stone that
-    // falls into the bow wave makes a spike), and the last third of them no more than the first
-    // third give or take a quarter: a blow-up grows without end.
-    const sorted = [...settled].sort((a, b) => a - b);
-    const median = sorted[Math.floor(sorted.length / 2)];
-    for (const e of settled) expect(e).toBeLessThan(2 * median);
-    const third = Math.max(1, Math.floor(settled.length / 3));
-    const mean = (list: number[]) => list.reduce((a, b) => a + b, 0) / list.length;
-    expect(mean(settled.slice(-third))).toBeLessThan(1.25 * mean(settled.slice(0, third)));
-    // Decaying: the last quiet window holds under a tenth of the energy at the stop.
-    expect(windows.at(-1)!).toBeLessThan(0.1 * atStop);
-  }, full ? 3_600_000 : 300_000);
+      const drivenWindows = windows.slice(0, drivenSeconds / 10);
+      const settled = drivenWindows.slice(3);
+      console.log(
+        `iWave ${n}², ${drivenSeconds} s driven: energy per 10 s window ${drivenWindows.map((e) => e.toFixed(3)).join(', ')} m⁴/s²; largest ${largest.toFixed(3)}; at the stop ${atStop.toFixed(3)}, ${quietSeconds} s later ${windows.at(-1)!.toFixed(4)}`,
+      );
+      // Bounded: once the sources have run 30 s, no window holds twice the middle one (a stone that
+      // falls into the bow wave makes a spike), and the last third of them no more than the first
+      // third give or take a quarter: a blow-up grows without end.
+      const sorted = [...settled].sort((a, b) => a - b);
+      const median = sorted[Math.floor(sorted.length / 2)];
+      for (const e of settled) expect(e).toBeLessThan(2 * median);
+      const third = Math.max(1, Math.floor(settled.length / 3));
+      const mean = (list: number[]) => list.reduce((a, b) => a + b, 0) / list.length;
+      expect(mean(settled.slice(-third))).toBeLessThan(1.25 * mean(settled.slice(0, third)));
+      // Decaying: the last quiet window holds under a tenth of the energy at the stop.
+      expect(windows.at(-1)!).toBeLessThan(0.1 * atStop);
+    },
+    full ? 3_600_000 : 300_000,
+  );
 });

@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { FOAM_FROM_SLOPE, STOKES_LIMIT_SLOPE, TINT_FROM_SLOPE, TINT_STRENGTH, fieldFoam, fieldTint } from '../../../../src/sim/iwave/steepnessTint';
+import {
+  FOAM_FROM_SLOPE,
+  STOKES_LIMIT_SLOPE,
+  TINT_FROM_SLOPE,
+  TINT_STRENGTH,
+  fieldFoam,
+  fieldTint,
+} from '../../../../src/sim/iwave/steepnessTint';
 
 describe('the steep water of the interactive waves', () => {
   it('takes Stokes’s limiting wave for its scale: a 120° crest, slope tan 30° = 0.577 (Stokes 1880)', () => {

@@ -44,12 +44,20 @@ describe('the free part of the canvas', () => {
 
   it('is the largest and free, against brute force on seeded random obstacles (seed 7)', () => {
     let state = 7;
-    const random = () => ((state = (state * 1103515245 + 12345) % 2147483648) / 2147483648);
+    const random = () => (state = (state * 1103515245 + 12345) % 2147483648) / 2147483648;
     for (let trial = 0; trial < 12; trial++) {
       const view = { x: 0, y: 0, width: 60, height: 40 };
-      const obstacles = Array.from({ length: 1 + (trial % 3) }, () => ({ x: Math.round(random() * 25) * 2, y: Math.round(random() * 15) * 2, width: 2 + Math.round(random() * 10) * 2, height: 2 + Math.round(random() * 10) * 2 }));
+      const obstacles = Array.from({ length: 1 + (trial % 3) }, () => ({
+        x: Math.round(random() * 25) * 2,
+        y: Math.round(random() * 15) * 2,
+        width: 2 + Math.round(random() * 10) * 2,
+        height: 2 + Math.round(random() * 10) * 2,
+      }));
       const found = largestFreeRectangle(view, obstacles);
-      expect(obstacles.some((o) => overlaps(o, found)), `trial ${trial}`).toBe(false);
+      expect(
+        obstacles.some((o) => overlaps(o, found)),
+        `trial ${trial}`,
+      ).toBe(false);
       expect(contains(view, found)).toBe(true);
       expect(area(found), `trial ${trial}`).toBe(bruteForce(view, obstacles));
       // Control: the whole view, which the check must refuse since obstacles lie in it.
@@ -68,7 +76,9 @@ describe('figures laid out in the free part', () => {
     expect(a.width).toBe(394);
     expect(Math.abs(a.x - free.x - (free.x + free.width - (b.x + b.width)))).toBeLessThanOrEqual(1);
     expect(contains(free, { ...a, height: a.height + 34 })).toBe(true);
-    for (const count of [1, 2, 3]) for (const square of squaresInRow(count, { x: 0, y: 24, width: 390, height: 482 })) expect(contains({ x: 0, y: 24, width: 390, height: 482 }, square)).toBe(true);
+    for (const count of [1, 2, 3])
+      for (const square of squaresInRow(count, { x: 0, y: 24, width: 390, height: 482 }))
+        expect(contains({ x: 0, y: 24, width: 390, height: 482 }, square)).toBe(true);
   });
 
   it('the cube’s cross is 4 × 3 cells inside the area', () => {

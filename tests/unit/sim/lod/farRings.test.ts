@@ -3,7 +3,19 @@ import { viewProjection } from '../../../support/cameraMath';
 import { chunkGrid, squareGrid } from '../../../../src/sim/lod/chunkGrid';
 import { BORDER_STEP, OCEAN_CHUNKS_PER_SIDE, OCEAN_EXTENT } from '../../../../src/sim/lod/chunkSelection';
 import { snapGridVertex } from '../../../../src/sim/lod/edgeSnap';
-import { FAR_FADE_END, FAR_RING_COUNT, FarRingSelector, farRings, inRingHole, RING_CELL_QUADS, RING_OWN_STEP, ringCellOutside, ringEdgeSteps, skirtMesh, type FarRing } from '../../../../src/sim/lod/farRings';
+import {
+  FAR_FADE_END,
+  FAR_RING_COUNT,
+  FarRingSelector,
+  farRings,
+  inRingHole,
+  RING_CELL_QUADS,
+  RING_OWN_STEP,
+  ringCellOutside,
+  ringEdgeSteps,
+  skirtMesh,
+  type FarRing,
+} from '../../../../src/sim/lod/farRings';
 import { planesFromMatrix } from '../../../../src/sim/lod/frustumMath';
 import { seededRandom } from '../../../../src/sim/noise/integerHash';
 import { BASE_STEP, CHUNK_QUADS, MAX_LOD_BANDS } from '../../../../src/sim/lod/lodBands';
@@ -67,7 +79,11 @@ function tilingProblems(triangles: Point[][], half: number): string[] {
     if (signed === 0) continue;
     if (signed > 0) problems.push(`flipped ${a} ${b} ${c}`);
     area += Math.abs(signed) / 2;
-    for (const [p, q] of [[a, b], [b, c], [c, a]]) {
+    for (const [p, q] of [
+      [a, b],
+      [b, c],
+      [c, a],
+    ]) {
       if (p[0] === q[0] && p[1] === q[1]) continue;
       const key = `${p}|${q}`;
       directed.set(key, (directed.get(key) ?? 0) + 1);
@@ -116,11 +132,13 @@ describe('far rings', () => {
     const triangles: Point[][] = [];
     const cellAt = (grid: typeof plain, x0: number, z0: number, steps: number[]) => {
       for (let t = 0; t < grid.indices.length; t += 3) {
-        triangles.push([0, 1, 2].map((c) => {
-          const v = grid.indices[t + c] * 3;
-          const [si, sj] = snapGridVertex(grid.positions[v], grid.positions[v + 2], CHUNK_QUADS, steps);
-          return [x0 + si, z0 + sj] as Point;
-        }));
+        triangles.push(
+          [0, 1, 2].map((c) => {
+            const v = grid.indices[t + c] * 3;
+            const [si, sj] = snapGridVertex(grid.positions[v], grid.positions[v + 2], CHUNK_QUADS, steps);
+            return [x0 + si, z0 + sj] as Point;
+          }),
+        );
       }
     };
     // One corner cell with both outer sides snapped, alone: its outline is the cell's square.
@@ -129,13 +147,19 @@ describe('far rings', () => {
     expect(tilingProblems(triangles, CHUNK_QUADS / 2).length).toBeGreaterThan(0);
   });
 
-  it('end where the skirt starts: its inner vertices are the last ring\'s outer corners, its quads face up', () => {
+  it("end where the skirt starts: its inner vertices are the last ring's outer corners, its quads face up", () => {
     const last = rings[rings.length - 1];
     const { points, indices } = skirtMesh(last);
     const corners = new Set<string>();
     for (let k = 0; k <= last.side; k++) {
       const t = -last.outer + k * last.cellSize;
-      for (const p of [[t, -last.outer], [t, last.outer], [-last.outer, t], [last.outer, t]]) corners.add(`${p}`);
+      for (const p of [
+        [t, -last.outer],
+        [t, last.outer],
+        [-last.outer, t],
+        [last.outer, t],
+      ])
+        corners.add(`${p}`);
     }
     const inner = new Set<string>();
     for (let v = 0; v < points.length / 2; v += 2) inner.add(`${points[v * 2]},${points[v * 2 + 1]}`);
@@ -160,7 +184,11 @@ describe('far rings', () => {
         const eye: [number, number, number] = [(random() - 0.5) * 2000, 0.5 + random() ** 2 * 10_000, (random() - 0.5) * 2000];
         const yaw = random() * 2 * Math.PI;
         const pitch = (-89 + random() * 120) * (Math.PI / 180);
-        const target: [number, number, number] = [eye[0] + Math.cos(pitch) * Math.cos(yaw), eye[1] + Math.sin(pitch), eye[2] + Math.cos(pitch) * Math.sin(yaw)];
+        const target: [number, number, number] = [
+          eye[0] + Math.cos(pitch) * Math.cos(yaw),
+          eye[1] + Math.sin(pitch),
+          eye[2] + Math.cos(pitch) * Math.sin(yaw),
+        ];
         const planes = planesFromMatrix(viewProjection(eye, target, 55, 16 / 9, 0.5, 1e9));
         const [cx, cz] = [Math.round(eye[0] / 48) * 48, Math.round(eye[2] / 48) * 48];
         const withoutMargin = selector.select(planes, cx, cz, -2.3, 2.3);
@@ -172,7 +200,8 @@ describe('far rings', () => {
         selector.rings.forEach((ring, r) => {
           for (let j = 0; j < ring.side; j++) {
             for (let i = 0; i < ring.side; i++) {
-              if (!inRingHole(ring, i, j) && !ringCellOutside(planes, ring, i, j, cx, cz, -2.3, 2.3, margin)) expected.add(`${r}:${i},${j}`);
+              if (!inRingHole(ring, i, j) && !ringCellOutside(planes, ring, i, j, cx, cz, -2.3, 2.3, margin))
+                expected.add(`${r}:${i},${j}`);
             }
           }
         });

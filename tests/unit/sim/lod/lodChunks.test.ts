@@ -7,7 +7,15 @@ import { ChunkSelector, OCEAN_CHUNKS_PER_SIDE, OCEAN_EXTENT, oceanOrigin } from 
 import { snapEdgeCoordinate, snapGridVertex, snappedEdge } from '../../../../src/sim/lod/edgeSnap';
 import { classifyBox, distanceToBox, OUTSIDE, planesFromMatrix, pointInside, type Plane } from '../../../../src/sim/lod/frustumMath';
 import { seededRandom } from '../../../../src/sim/noise/integerHash';
-import { BAND_STEPS, bandForDistance, bandQuads, bandStart, CHUNK_QUADS, CHUNK_SIZE, MAX_LOD_BANDS } from '../../../../src/sim/lod/lodBands';
+import {
+  BAND_STEPS,
+  bandForDistance,
+  bandQuads,
+  bandStart,
+  CHUNK_QUADS,
+  CHUNK_SIZE,
+  MAX_LOD_BANDS,
+} from '../../../../src/sim/lod/lodBands';
 
 const BOUNDS_HEIGHT = 2.3;
 
@@ -30,7 +38,14 @@ function randomView(random: () => number): RandomView {
     camera[1] + Math.sin(pitch),
     camera[2] + Math.cos(pitch) * Math.sin(yaw),
   ];
-  return { camera, target, fov: 20 + random() * 80, aspect: 0.4 + random() * 2.4, near: 0.1 + random(), far: random() < 0.3 ? 100 + random() * 2000 : 20000 };
+  return {
+    camera,
+    target,
+    fov: 20 + random() * 80,
+    aspect: 0.4 + random() * 2.4,
+    near: 0.1 + random(),
+    far: random() < 0.3 ? 100 + random() * 2000 : 20000,
+  };
 }
 
 function planesOf(view: RandomView): Plane[] {
@@ -43,7 +58,8 @@ function bruteForceLeaves(planes: Plane[], originX: number, originZ: number): nu
     for (let i = 0; i < OCEAN_CHUNKS_PER_SIDE; i++) {
       const x0 = originX + i * CHUNK_SIZE;
       const z0 = originZ + j * CHUNK_SIZE;
-      if (classifyBox(planes, x0, -BOUNDS_HEIGHT, z0, x0 + CHUNK_SIZE, BOUNDS_HEIGHT, z0 + CHUNK_SIZE) !== OUTSIDE) leaves.push(j * OCEAN_CHUNKS_PER_SIDE + i);
+      if (classifyBox(planes, x0, -BOUNDS_HEIGHT, z0, x0 + CHUNK_SIZE, BOUNDS_HEIGHT, z0 + CHUNK_SIZE) !== OUTSIDE)
+        leaves.push(j * OCEAN_CHUNKS_PER_SIDE + i);
     }
   }
   return leaves;
@@ -58,7 +74,9 @@ describe('frustum planes', () => {
       camera.position.fromArray(view.camera);
       camera.lookAt(...view.target);
       camera.updateMatrixWorld();
-      const frustum = new Frustum().setFromProjectionMatrix(new Matrix4().multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
+      const frustum = new Frustum().setFromProjectionMatrix(
+        new Matrix4().multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse),
+      );
       const ours = planesOf(view);
       frustum.planes.forEach((plane, k) => {
         expect(ours[k].nx).toBeCloseTo(plane.normal.x, 5);
@@ -163,7 +181,15 @@ describe('LOD bands', () => {
         const view = randomView(random);
         const lodDistance = CHUNK_SIZE + random() * 300;
         const [originX, originZ] = oceanOrigin(view.camera[0], view.camera[2]);
-        const input = { planes: planesOf(view), camera: view.camera, originX, originZ, maxDisplacement: BOUNDS_HEIGHT, lodDistance, lodBands: 6 };
+        const input = {
+          planes: planesOf(view),
+          camera: view.camera,
+          originX,
+          originZ,
+          maxDisplacement: BOUNDS_HEIGHT,
+          lodDistance,
+          lodBands: 6,
+        };
         const count = selector.select(input);
         expect(selector.lodCounts.reduce((a, b) => a + b, 0)).toBe(count);
         // Collected rather than asserted one by one: thousands of expect() calls are slow.
@@ -177,19 +203,29 @@ describe('LOD bands', () => {
           const d = distanceToBox(...view.camera, x0, -BOUNDS_HEIGHT, z0, x0 + CHUNK_SIZE, BOUNDS_HEIGHT, z0 + CHUNK_SIZE);
           const band = selector.bands[k];
           if (band !== bandForDistance(d, lodDistance, 6)) wrong.push(`chunk ${i},${j} at ${d} m has band ${band}`);
-          const neighbours: [number, number][] = [[i - 1, j], [i + 1, j], [i, j - 1], [i, j + 1]];
+          const neighbours: [number, number][] = [
+            [i - 1, j],
+            [i + 1, j],
+            [i, j - 1],
+            [i, j + 1],
+          ];
           neighbours.forEach(([ni, nj], side) => {
             const inside = ni >= 0 && nj >= 0 && ni < OCEAN_CHUNKS_PER_SIDE && nj < OCEAN_CHUNKS_PER_SIDE;
             let other = band;
             if (inside) {
               const nx = originX + ni * CHUNK_SIZE;
               const nz = originZ + nj * CHUNK_SIZE;
-              other = bandForDistance(distanceToBox(...view.camera, nx, -BOUNDS_HEIGHT, nz, nx + CHUNK_SIZE, BOUNDS_HEIGHT, nz + CHUNK_SIZE), lodDistance, 6);
+              other = bandForDistance(
+                distanceToBox(...view.camera, nx, -BOUNDS_HEIGHT, nz, nx + CHUNK_SIZE, BOUNDS_HEIGHT, nz + CHUNK_SIZE),
+                lodDistance,
+                6,
+              );
             }
             if (Math.abs(other - band) > 1) wrong.push(`chunk ${i},${j} band ${band} next to band ${other}`);
             // On the grid's border the neighbour is the first far ring, one vertex per chunk corner.
             const expected = inside ? Math.max(BAND_STEPS[band], BAND_STEPS[other]) : CHUNK_QUADS;
-            if (selector.edgeSteps[k * 4 + side] !== expected) wrong.push(`chunk ${i},${j} side ${side}: step ${selector.edgeSteps[k * 4 + side]}, expected ${expected}`);
+            if (selector.edgeSteps[k * 4 + side] !== expected)
+              wrong.push(`chunk ${i},${j} side ${side}: step ${selector.edgeSteps[k * 4 + side]}, expected ${expected}`);
           });
         }
         expect(wrong).toEqual([]);
@@ -263,7 +299,11 @@ describe('edges between bands', () => {
             const signed = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
             area += Math.abs(signed) / 2;
             if (signed > 0) flipped++;
-            for (const [p, q] of [[a, b], [b, c], [c, a]]) {
+            for (const [p, q] of [
+              [a, b],
+              [b, c],
+              [c, a],
+            ]) {
               const key = `${p}|${q}`;
               directed.set(key, (directed.get(key) ?? 0) + 1);
             }

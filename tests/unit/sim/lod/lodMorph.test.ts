@@ -39,7 +39,14 @@ function selectFor(camera: Vec3, selector: ChunkSelector, planes: Plane[] = EVER
  * the vertex shader puts them (morphed, snapped), each at the wave's height there, and
  * the triangle that covers the point, interpolated as the rasteriser does.
  */
-function drawnHeight(x: number, z: number, camera: Vec3, zones: Float32Array, selector: ChunkSelector, height: (x: number, z: number) => number): { height: number; band: number } {
+function drawnHeight(
+  x: number,
+  z: number,
+  camera: Vec3,
+  zones: Float32Array,
+  selector: ChunkSelector,
+  height: (x: number, z: number) => number,
+): { height: number; band: number } {
   // Culled to a strip 200 m wide along the camera's path, which keeps the sweep fast.
   const strip: Plane[] = [
     { nx: 0, ny: 0, nz: 1, d: -(z - 100) },
@@ -49,8 +56,9 @@ function drawnHeight(x: number, z: number, camera: Vec3, zones: Float32Array, se
   const chunk = place(Math.floor((x - originX) / CHUNK_SIZE), Math.floor((z - originZ) / CHUNK_SIZE));
   if (!chunk) throw new Error('The point lies outside the chunk grid.');
   const { positions, indices } = GRIDS[chunk.band];
-  const placed = new Float64Array(positions.length / 3 * 2);
-  for (let v = 0; v < positions.length / 3; v++) placed.set(morphedVertex(positions[v * 3], positions[v * 3 + 2], chunk, camera, H, zones), v * 2);
+  const placed = new Float64Array((positions.length / 3) * 2);
+  for (let v = 0; v < positions.length / 3; v++)
+    placed.set(morphedVertex(positions[v * 3], positions[v * 3 + 2], chunk, camera, H, zones), v * 2);
   for (let t = 0; t < indices.length; t += 3) {
     const [ia, ib, ic] = [indices[t] * 2, indices[t + 1] * 2, indices[t + 2] * 2];
     const [ax, az, bx, bz, cx, cz] = [placed[ia], placed[ia + 1], placed[ib], placed[ib + 1], placed[ic], placed[ic + 1]];
@@ -60,7 +68,8 @@ function drawnHeight(x: number, z: number, camera: Vec3, zones: Float32Array, se
     const wc = ((bx - ax) * (z - az) - (bz - az) * (x - ax)) / area;
     const wa = 1 - wb - wc;
     // Heights only for the covering triangle's corners: the wave is the costly part.
-    if (wa >= -1e-9 && wb >= -1e-9 && wc >= -1e-9) return { height: wa * height(ax, az) + wb * height(bx, bz) + wc * height(cx, cz), band: chunk.band };
+    if (wa >= -1e-9 && wb >= -1e-9 && wc >= -1e-9)
+      return { height: wa * height(ax, az) + wb * height(bx, bz) + wc * height(cx, cz), band: chunk.band };
   }
   throw new Error(`No triangle covers (${x}, ${z}).`);
 }

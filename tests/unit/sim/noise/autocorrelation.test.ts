@@ -11,7 +11,7 @@ describe('the image autocorrelation the no-tiling test reads (tests/support/auto
   it('finds a pattern that repeats every 30 pixels, and no peak in independent noise', () => {
     const random = seededRandom(3);
     const tile = Array.from({ length: 30 * height }, () => (random() < 0.1 ? 1 : 0));
-    const tiled = Float64Array.from({ length: width * height }, (_, i) => tile[(i % width) % 30 + 30 * Math.floor(i / width)]);
+    const tiled = Float64Array.from({ length: width * height }, (_, i) => tile[((i % width) % 30) + 30 * Math.floor(i / width)]);
     const acf = autocorrelation(tiled, width, height);
     expect(acf.at(30, 0)).toBeCloseTo(1, 6);
     expect(acf.at(0, 0)).toBeCloseTo(1, 6);
@@ -20,10 +20,11 @@ describe('the image autocorrelation the no-tiling test reads (tests/support/auto
     const variance = tiled.reduce((a, b) => a + (b - mean) ** 2, 0) / tiled.length;
     let sum = 0;
     let pairs = 0;
-    for (let y = 0; y < height - 5; y++) for (let x = 0; x < width - 7; x++) {
-      sum += (tiled[y * width + x] - mean) * (tiled[(y + 5) * width + x + 7] - mean);
-      pairs++;
-    }
+    for (let y = 0; y < height - 5; y++)
+      for (let x = 0; x < width - 7; x++) {
+        sum += (tiled[y * width + x] - mean) * (tiled[(y + 5) * width + x + 7] - mean);
+        pairs++;
+      }
     expect(acf.at(7, 5)).toBeCloseTo(sum / pairs / variance, 9);
     expect(peakBeyond(acf, 10, 0).rho).toBeGreaterThan(0.9);
 

@@ -1,6 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { integerNoise } from '../../../../src/sim/noise/integerHash';
-import { cosineInterpolate, defaultNoiseSettings, generateRippleHeightmaps, interpolatedGrid, octaveSeed, smoothedLattice, TilingPerlinNoise } from '../../../../src/sim/noise/perlinNoise';
+import {
+  cosineInterpolate,
+  defaultNoiseSettings,
+  generateRippleHeightmaps,
+  interpolatedGrid,
+  octaveSeed,
+  smoothedLattice,
+  TilingPerlinNoise,
+} from '../../../../src/sim/noise/perlinNoise';
 import { blendedStage, noiseStages, TEACHING_OCTAVE, type StageImage } from '../../../../src/sim/noise/noiseStages';
 
 const SEED = 4;
@@ -8,14 +16,21 @@ const SIZE = 64;
 const stages = noiseStages(SEED, SIZE);
 const cells = 16;
 // The first heightmap's noise seed is seed × 2; its third octave's lattice stream follows from it.
-const latticeSeed = (SEED * 2) * 7 + TEACHING_OCTAVE * 1013;
+const latticeSeed = SEED * 2 * 7 + TEACHING_OCTAVE * 1013;
 
 /** Root-mean-square difference of two pictures of equal size. */
-const rmsDifference = (a: StageImage, b: StageImage) => Math.sqrt(a.data.reduce((sum, v, k) => sum + (v - b.data[k]) ** 2, 0) / a.data.length);
+const rmsDifference = (a: StageImage, b: StageImage) =>
+  Math.sqrt(a.data.reduce((sum, v, k) => sum + (v - b.data[k]) ** 2, 0) / a.data.length);
 /** A lattice picture spread to `size` × `size`, each lattice value a square, as the view draws it (nearest texel). */
 const spread = (lattice: StageImage, size: number): StageImage => ({
   size,
-  data: Float32Array.from({ length: size * size }, (_, k) => lattice.data[Math.floor((Math.floor(k / size) * lattice.size) / size) * lattice.size + Math.floor(((k % size) * lattice.size) / size)]),
+  data: Float32Array.from(
+    { length: size * size },
+    (_, k) =>
+      lattice.data[
+        Math.floor((Math.floor(k / size) * lattice.size) / size) * lattice.size + Math.floor(((k % size) * lattice.size) / size)
+      ],
+  ),
 });
 
 describe('the Perlin noise, step by step', () => {
@@ -23,7 +38,8 @@ describe('the Perlin noise, step by step', () => {
     expect(octaveSeed(SEED * 2, TEACHING_OCTAVE)).toBe(latticeSeed);
     expect(stages.hash.size).toBe(cells);
     expect(defaultNoiseSettings.baseCells << TEACHING_OCTAVE).toBe(cells);
-    for (let y = 0; y < cells; y++) for (let x = 0; x < cells; x++) expect(stages.hash.data[y * cells + x]).toBe(Math.fround(integerNoise(x, y, latticeSeed)));
+    for (let y = 0; y < cells; y++)
+      for (let x = 0; x < cells; x++) expect(stages.hash.data[y * cells + x]).toBe(Math.fround(integerNoise(x, y, latticeSeed)));
   });
 
   // Control: another octave’s lattice.
@@ -39,7 +55,9 @@ describe('the Perlin noise, step by step', () => {
     }
     // Float32 storage of each value: about 1e-7.
     expect(worst).toBeLessThan(1e-6);
-    const otherOctave = new Float32Array(cells * cells).map((_, k) => integerNoise(k % cells, Math.floor(k / cells), octaveSeed(SEED * 2, 0)));
+    const otherOctave = new Float32Array(cells * cells).map((_, k) =>
+      integerNoise(k % cells, Math.floor(k / cells), octaveSeed(SEED * 2, 0)),
+    );
     expect(rmsDifference(stages.hash, { size: cells, data: otherOctave })).toBeGreaterThan(0.3);
   });
 
@@ -77,14 +95,22 @@ describe('the Perlin noise, step by step', () => {
   });
 
   it('each stage’s picture differs from the next, the blend lying between the two heightmaps', () => {
-    const order = [spread(stages.hash, SIZE), spread(stages.smoothed, SIZE), stages.interpolated, stages.octaves, blendedStage(stages.octaves, stages.second, 0.5)];
-    for (let i = 0; i + 1 < order.length; i++) expect(rmsDifference(order[i], order[i + 1]), `stage ${i} to ${i + 1}`).toBeGreaterThan(0.05);
+    const order = [
+      spread(stages.hash, SIZE),
+      spread(stages.smoothed, SIZE),
+      stages.interpolated,
+      stages.octaves,
+      blendedStage(stages.octaves, stages.second, 0.5),
+    ];
+    for (let i = 0; i + 1 < order.length; i++)
+      expect(rmsDifference(order[i], order[i + 1]), `stage ${i} to ${i + 1}`).toBeGreaterThan(0.05);
     // Control for the check itself: a stage against itself.
     expect(rmsDifference(stages.octaves, stages.octaves)).toBe(0);
     const half = blendedStage(stages.octaves, stages.second, 0.5);
     expect(blendedStage(stages.octaves, stages.second, 0).data).toEqual(stages.octaves.data);
     expect(blendedStage(stages.octaves, stages.second, 1).data).toEqual(stages.second.data);
-    for (let k = 0; k < half.data.length; k += 97) expect(half.data[k]).toBeCloseTo((stages.octaves.data[k] + stages.second.data[k]) / 2, 6);
+    for (let k = 0; k < half.data.length; k += 97)
+      expect(half.data[k]).toBeCloseTo((stages.octaves.data[k] + stages.second.data[k]) / 2, 6);
   });
 
   it('smoothing keeps the range but lowers the contrast: the spread of step 2 is well under step 1’s', () => {

@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { integerNoise, seededRandom } from '../../../../src/sim/noise/integerHash';
-import { TilingPerlinNoise, cosineInterpolate, generateHeightmap, generateRippleHeightmaps, defaultNoiseSettings } from '../../../../src/sim/noise/perlinNoise';
+import {
+  TilingPerlinNoise,
+  cosineInterpolate,
+  generateHeightmap,
+  generateRippleHeightmaps,
+  defaultNoiseSettings,
+} from '../../../../src/sim/noise/perlinNoise';
 
 describe('integer noise', () => {
   it('is the MurmurHash3 finaliser of the mixed lattice point and seed, as documented', () => {
@@ -164,7 +170,9 @@ describe('grid sampling (the start-up fast path)', () => {
         for (let j = 0; j < size; j++) {
           for (let i = 0; i < size; i++) {
             if (!Object.is(grid[j * size + i], noise.sample(i / size, j / size))) {
-              throw new Error(`grid (${i}, ${j}) of size ${size} with ${JSON.stringify(settings)}: ${grid[j * size + i]} ≠ ${noise.sample(i / size, j / size)}`);
+              throw new Error(
+                `grid (${i}, ${j}) of size ${size} with ${JSON.stringify(settings)}: ${grid[j * size + i]} ≠ ${noise.sample(i / size, j / size)}`,
+              );
             }
           }
         }

@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { beckmannSlopeDensity, complementaryErrorFunction, glintPerIrradiance, smithLambda, smithLambdaRational } from '../../../../src/sim/optics/beckmannGlint';
+import {
+  beckmannSlopeDensity,
+  complementaryErrorFunction,
+  glintPerIrradiance,
+  smithLambda,
+  smithLambdaRational,
+} from '../../../../src/sim/optics/beckmannGlint';
 
 /** ∫∫ p(ζx, ζz) dζx dζz over a square of ±limit slopes, midpoint rule. */
 function integrateDensity(density: (s2: number) => number, limit = 2, steps = 800): number {
@@ -109,7 +115,12 @@ describe('the glint', () => {
     const a = albedo(70, 0.03);
     expect(a).toBeGreaterThan(0.93);
     expect(a).toBeLessThan(1.02);
-    const withoutFour = (l: readonly [number, number, number], v: readonly [number, number, number], n: readonly [number, number, number], s: number) => 4 * glintPerIrradiance(l, v, n, s);
+    const withoutFour = (
+      l: readonly [number, number, number],
+      v: readonly [number, number, number],
+      n: readonly [number, number, number],
+      s: number,
+    ) => 4 * glintPerIrradiance(l, v, n, s);
     expect(albedo(70, 0.03, withoutFour)).toBeGreaterThan(3.5);
   });
 

@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { criticalAngle, fresnelClosedForm, fresnelReflectance, fresnelTable, schlickReflectance, WATER_IOR } from '../../../../src/sim/optics/fresnel';
+import {
+  criticalAngle,
+  fresnelClosedForm,
+  fresnelReflectance,
+  fresnelTable,
+  schlickReflectance,
+  WATER_IOR,
+} from '../../../../src/sim/optics/fresnel';
 
 const deg = (d: number) => (d * Math.PI) / 180;
 
@@ -31,7 +38,9 @@ describe('Fresnel reflectance, air to water', () => {
   it('differs from Schlick in the middle but agrees at the ends', () => {
     expect(schlickReflectance(1, 1, WATER_IOR)).toBeCloseTo(fresnelReflectance(1, 1, WATER_IOR), 12);
     expect(schlickReflectance(0, 1, WATER_IOR)).toBeCloseTo(1, 12);
-    expect(Math.abs(schlickReflectance(Math.cos(deg(80)), 1, WATER_IOR) - fresnelReflectance(Math.cos(deg(80)), 1, WATER_IOR))).toBeGreaterThan(0.001);
+    expect(
+      Math.abs(schlickReflectance(Math.cos(deg(80)), 1, WATER_IOR) - fresnelReflectance(Math.cos(deg(80)), 1, WATER_IOR)),
+    ).toBeGreaterThan(0.001);
   });
 });
 

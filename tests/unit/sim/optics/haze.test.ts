@@ -57,6 +57,7 @@ describe('haze (Koschmieder, aerosols thinning with height)', () => {
   it('takes the series near x = 0, continuous with the quotient', () => {
     expect(meanDecay(0)).toBe(1);
     const series = (x: number) => 1 - x / 2 + (x * x) / 6;
-    for (const x of [-1e-5, 0.99e-4, 1.01e-4, 1e-2, -0.3]) expect(Math.abs(meanDecay(x) - series(x))).toBeLessThan(Math.max(1e-9, Math.abs(x) ** 3 / 20));
+    for (const x of [-1e-5, 0.99e-4, 1.01e-4, 1e-2, -0.3])
+      expect(Math.abs(meanDecay(x) - series(x))).toBeLessThan(Math.max(1e-9, Math.abs(x) ** 3 / 20));
   });
 });

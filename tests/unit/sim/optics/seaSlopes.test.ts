@@ -28,9 +28,9 @@ function matchesCoxMunk(variance: (u: number) => number): boolean {
 describe('Cox & Munk mean-square slope', () => {
   it('is 0.0286, 0.0542, 0.0798 at U₁₂.₅ = 5, 10, 15 m/s; control: a slope law in U² fails', () => {
     expect(matchesCoxMunk(coxMunkSlopeVariance)).toBe(true);
-    expect(matchesCoxMunk((u) => 0.003 + 5.12e-3 * u * u / 10)).toBe(false);
+    expect(matchesCoxMunk((u) => 0.003 + (5.12e-3 * u * u) / 10)).toBe(false);
     expect(matchesCoxMunk((u) => 5.12e-3 * u)).toBe(false);
-    expect(Math.sqrt(coxMunkSlopeVariance(15) / coxMunkSlopeVariance(5))).toBeCloseTo(1.670, 3);
+    expect(Math.sqrt(coxMunkSlopeVariance(15) / coxMunkSlopeVariance(5))).toBeCloseTo(1.67, 3);
   });
 
   it('takes U₁₂.₅ = 1.0201 U₁₀ from the log profile (C_D = 1.3·10⁻³, κ = 0.4); control: U₁₀ used as is fails', () => {

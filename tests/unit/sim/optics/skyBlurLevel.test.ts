@@ -1,6 +1,12 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { MIN_PREFILTERED_SIZE, PREFILTER_OVERSAMPLING, prefilteredFaceSize, skyBlurLevel, slopeVarianceAtLevel } from '../../../../src/sim/optics/skyBlurLevel';
+import {
+  MIN_PREFILTERED_SIZE,
+  PREFILTER_OVERSAMPLING,
+  prefilteredFaceSize,
+  skyBlurLevel,
+  slopeVarianceAtLevel,
+} from '../../../../src/sim/optics/skyBlurLevel';
 
 /** The mip level a rough mirror reads, and the size of the cube that holds the sky as it shows it (src/render/sky/prefilteredSky.ts). */
 describe("the sky's blur level and the prefiltered cube's size", () => {

@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { HIGHLIGHT_KNEE, rollOffHighlight } from '../../../../src/sim/optics/highlightRollOff';
-import { SUN_DISC_COS_CORE, SUN_DISC_COS_EDGE, SUN_DISC_COS_MID, SUN_DISC_SOLID_ANGLE, sunDiscRadiance } from '../../../../src/sim/optics/sunDisc';
+import {
+  SUN_DISC_COS_CORE,
+  SUN_DISC_COS_EDGE,
+  SUN_DISC_COS_MID,
+  SUN_DISC_SOLID_ANGLE,
+  sunDiscRadiance,
+} from '../../../../src/sim/optics/sunDisc';
 import { SUN_IRRADIANCE } from '../../../../src/sim/optics/sun';
 
 const slope = (f: (x: number) => number, x: number, h = 1e-6) => (f(x + h) - f(x - h)) / (2 * h);
@@ -11,7 +17,7 @@ function keepsOrderAboveWhite(curve: (x: number) => number): boolean {
   return lights.every((x, i) => i === 0 || curve(x) > curve(lights[i - 1]) + 1e-3);
 }
 
-describe('the whole frame\'s tone curve: the highlight roll-off', () => {
+describe("the whole frame's tone curve: the highlight roll-off", () => {
   it('leaves every colour below the knee exactly as it is', () => {
     for (let x = 0; x <= HIGHLIGHT_KNEE; x += 0.01) expect(rollOffHighlight(x)).toBe(x);
   });
@@ -38,7 +44,7 @@ describe('the whole frame\'s tone curve: the highlight roll-off', () => {
   });
 });
 
-describe('the sun\'s disc in full brightness', () => {
+describe("the sun's disc in full brightness", () => {
   /** 2π ∫ coverage d(cos θ) for the drawn disc's smoothstep edge, by the midpoint rule. */
   function drawnSolidAngle(edge: number, core: number): number {
     const steps = 100_000;
@@ -59,7 +65,7 @@ describe('the sun\'s disc in full brightness', () => {
     expect(SUN_DISC_SOLID_ANGLE).toBeCloseTo(7.23e-4, 5);
   });
 
-  it('gives back the sun\'s irradiance over that solid angle; control: the real disc\'s size does not', () => {
+  it("gives back the sun's irradiance over that solid angle; control: the real disc's size does not", () => {
     expect(sunDiscRadiance(SUN_IRRADIANCE) * SUN_DISC_SOLID_ANGLE).toBeCloseTo(SUN_IRRADIANCE, 12);
     const realDisc = Math.PI * 0.00465 ** 2;
     expect(Math.abs(sunDiscRadiance(SUN_IRRADIANCE) * realDisc - SUN_IRRADIANCE)).toBeGreaterThan(1);

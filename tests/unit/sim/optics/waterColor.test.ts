@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { bodyColor, deepWaterReflectance, molecularScattering, PURE_WATER_ABSORPTION, WAVELENGTHS } from '../../../../src/sim/optics/waterColor';
+import {
+  bodyColor,
+  deepWaterReflectance,
+  molecularScattering,
+  PURE_WATER_ABSORPTION,
+  WAVELENGTHS,
+} from '../../../../src/sim/optics/waterColor';
 
 describe('water colour from optics', () => {
   it('takes pure-water absorption from Pope & Fry 1997: 0.34, 0.0325, 0.0114 m⁻¹ at 650, 510, 475 nm', () => {

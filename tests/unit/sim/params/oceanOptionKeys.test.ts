@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { APP_ONLY_PARAMS, checkOceanKeys, OCEAN_EXTRA_OPTIONS, oceanParamKeys, oceanParametersOf, type OceanParameters } from '../../../../src/sim/params/oceanOptionKeys';
+import {
+  APP_ONLY_PARAMS,
+  checkOceanKeys,
+  OCEAN_EXTRA_OPTIONS,
+  oceanParamKeys,
+  oceanParametersOf,
+  type OceanParameters,
+} from '../../../../src/sim/params/oceanOptionKeys';
 import { defaultParams, paramKeys } from '../../../../src/sim/params/params';
 
 /** Compiled by `tsc --noEmit`: each marked line must be a type error, or the compile fails. */
@@ -26,9 +33,13 @@ describe('the keys an Ocean reads', () => {
   });
 
   it('throws naming an app-only key, an unknown key, or an extra where none is allowed', () => {
-    expect(() => checkOceanKeys({ windSpeed: 12, boatSpeed: 3 }, ['sky'], 'new Ocean')).toThrow(/^new Ocean: "boatSpeed" is not an Ocean option but the app's/);
+    expect(() => checkOceanKeys({ windSpeed: 12, boatSpeed: 3 }, ['sky'], 'new Ocean')).toThrow(
+      /^new Ocean: "boatSpeed" is not an Ocean option but the app's/,
+    );
     expect(() => checkOceanKeys({ compare: 'off' }, [], 'Ocean.setParams')).toThrow(/^Ocean\.setParams: "compare" is not an Ocean option/);
-    expect(() => checkOceanKeys({ seaLevel: -1 }, ['sky'], 'new Ocean')).toThrow(/"seaLevel" is not an Ocean option\. Its options: waves, .*, sky\.$/);
+    expect(() => checkOceanKeys({ seaLevel: -1 }, ['sky'], 'new Ocean')).toThrow(
+      /"seaLevel" is not an Ocean option\. Its options: waves, .*, sky\.$/,
+    );
     expect(() => checkOceanKeys({ sky: null }, [], 'Ocean.setParams')).toThrow(/"sky"/);
   });
 });

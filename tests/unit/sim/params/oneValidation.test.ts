@@ -18,7 +18,17 @@ describe('one validation for every entry point', () => {
   });
 
   it('takes every parameter in its URL text form through setParams validation too', () => {
-    const query = new URLSearchParams(formatUrlState({ params: defaultParams(), time: 1, camera: { position: [0, 9, 40], target: [0, 0, -60] }, language: 'en', sky: null, boat: null, embed: false }));
+    const query = new URLSearchParams(
+      formatUrlState({
+        params: defaultParams(),
+        time: 1,
+        camera: { position: [0, 9, 40], target: [0, 0, -60] },
+        language: 'en',
+        sky: null,
+        boat: null,
+        embed: false,
+      }),
+    );
     for (const key of paramKeys) {
       const text = query.get(key)!;
       const { value, notice } = parseParamText(key, text);
@@ -30,7 +40,8 @@ describe('one validation for every entry point', () => {
     }
     expect(validateParam('waterColor', '06283a')).toBe('#06283a');
     expect(validateParam('waterColor', '#06283A')).toBe('#06283a');
-    for (const bad of ['06283', '#06283', 'blue', '##06283a', '']) expect(() => validateParam('waterColor', bad)).toThrow(/must be a colour/);
+    for (const bad of ['06283', '#06283', 'blue', '##06283a', ''])
+      expect(() => validateParam('waterColor', bad)).toThrow(/must be a colour/);
   });
 
   it('reads lang by its primary subtag: es-ES, es_MX and ES are Spanish, fr-FR is refused', () => {
@@ -48,7 +59,14 @@ describe('one validation for every entry point', () => {
 describe('boat state in a link', () => {
   it('writes the boat state so that it reads back bit for bit, and refuses a bad one with a notice', async () => {
     const { formatBoatState, parseBoatState } = await import('../../../../src/app/url/urlState');
-    const b = { x: 6.36123456789, z: -5.3312345, heading: { value: 5.1, velocity: -0.01 }, heave: { value: 1.0001, velocity: 0.3 }, pitch: { value: 0.01, velocity: 1e-17 }, roll: { value: -0.02, velocity: 0 } };
+    const b = {
+      x: 6.36123456789,
+      z: -5.3312345,
+      heading: { value: 5.1, velocity: -0.01 },
+      heave: { value: 1.0001, velocity: 0.3 },
+      pitch: { value: 0.01, velocity: 1e-17 },
+      roll: { value: -0.02, velocity: 0 },
+    };
     expect(parseBoatState(formatBoatState(b))).toEqual(b);
     expect(parseUrlState(`?t=3&boatState=${formatBoatState(b)}`).boatState).toEqual(b);
     const bad = parseUrlState('?t=3&boatState=1,2,3');

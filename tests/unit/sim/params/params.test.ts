@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { defaultParams, paramDefs, paramKeys, ParamError, parseParamText, validateParam, validateParams } from '../../../../src/sim/params/params';
+import {
+  defaultParams,
+  paramDefs,
+  paramKeys,
+  ParamError,
+  parseParamText,
+  validateParam,
+  validateParams,
+} from '../../../../src/sim/params/params';
 import { isSafeAssetPath, parseUrlState } from '../../../../src/app/url/urlState';
 import { Translator } from '../../../../src/app/language/i18n';
 import type { Message } from '../../../../src/sim/params/message';
@@ -114,7 +122,11 @@ describe('parseUrlState', () => {
 
 describe('choice parameters', () => {
   it('accept only their options, from the API and from the URL', () => {
-    expect(validateParams({ shading: 'normals', view: 'heightmap', normals: 'flat' })).toEqual({ shading: 'normals', view: 'heightmap', normals: 'flat' });
+    expect(validateParams({ shading: 'normals', view: 'heightmap', normals: 'flat' })).toEqual({
+      shading: 'normals',
+      view: 'heightmap',
+      normals: 'flat',
+    });
     expect(() => validateParams({ shading: 'toon' })).toThrow(/"shading" must be one of water, normals/);
     expect(parseParamText('view', 'heightmap')).toEqual({ value: 'heightmap' });
     expect(parseParamText('view', 'x-ray')).toMatchObject({ value: 'ocean', notice: { id: 'paramNotChoice', values: { text: 'x-ray' } } });

@@ -31,7 +31,13 @@ describe('physicsInputs: when the physics panel must measure again', () => {
   });
 
   it('stays put for the sun, the exposure, the camera’s tools and the panel’s own switch (the control)', () => {
-    for (const change of [{ sunElevation: 5 }, { exposure: 1 }, { physics: true }, { wireframe: true }, { foam: false }] as Partial<OceanParams>[]) {
+    for (const change of [
+      { sunElevation: 5 },
+      { exposure: 1 },
+      { physics: true },
+      { wireframe: true },
+      { foam: false },
+    ] as Partial<OceanParams>[]) {
       expect(changed(change), JSON.stringify(change)).toBe(false);
     }
   });

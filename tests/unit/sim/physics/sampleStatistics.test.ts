@@ -24,7 +24,12 @@ describe('percentile (nearest rank)', () => {
     expect(percentile(oneToThirty, 95)).toBe(29);
   });
   it('p95 of 20 frames is the 19th, p50 of 30 the 15th, p100 the slowest', () => {
-    expect(percentile(Array.from({ length: 20 }, (_, k) => k + 1), 95)).toBe(19);
+    expect(
+      percentile(
+        Array.from({ length: 20 }, (_, k) => k + 1),
+        95,
+      ),
+    ).toBe(19);
     expect(percentile(oneToThirty, 50)).toBe(15);
     expect(percentile(oneToThirty, 100)).toBe(30);
   });

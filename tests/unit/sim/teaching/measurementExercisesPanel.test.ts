@@ -74,7 +74,12 @@ describe('panel exercises on more cards: Hs from the live spectrum', () => {
 
 describe('their tolerances', () => {
   it('pass just inside and fail just outside (±10 % on the Gerstner sea, ±15 % on the FFT seas)', () => {
-    for (const [lesson, tolerance] of [['airy-waves', 0.1], ['spectra-compared', 0.15], ['sun-glint', 0.15], ['fft-transform', 0.15]] as const) {
+    for (const [lesson, tolerance] of [
+      ['airy-waves', 0.1],
+      ['spectra-compared', 0.15],
+      ['sun-glint', 0.15],
+      ['fft-transform', 0.15],
+    ] as const) {
       const exercise = exerciseFor(lesson)!;
       expect(exercise.tolerance, lesson).toBe(tolerance);
       expect(exercise.tool).toBe('physics');

@@ -9,7 +9,8 @@ function paramsOf(lesson: string, change: Partial<OceanParams> = {}): OceanParam
   return { ...lessonView(findLesson(lesson)!).params, ...change };
 }
 const at = (stoneAge: number | null): ExerciseMoment => ({ stoneAge });
-const expected = (lesson: string, moment: ExerciseMoment = at(null), change: Partial<OceanParams> = {}) => exerciseFor(lesson)!.expected(paramsOf(lesson, change), moment);
+const expected = (lesson: string, moment: ExerciseMoment = at(null), change: Partial<OceanParams> = {}) =>
+  exerciseFor(lesson)!.expected(paramsOf(lesson, change), moment);
 
 const g = 9.81;
 const RULER_LESSONS = ['wake-turn', 'iwave-compare', 'iwave-stone', 'group-velocity'];
@@ -67,7 +68,9 @@ describe('ruler exercises: the tolerance check', () => {
     expect(withinTolerance(4 / 3, r, turn.tolerance)).toBe(false);
     const ring = exerciseFor('iwave-compare')!;
     // A ring read at 10 s checked against 12 s: the clock matters.
-    expect(withinTolerance(ring.expected(paramsOf('iwave-compare'), at(10)), ring.expected(paramsOf('iwave-compare'), at(12)), ring.tolerance)).toBe(false);
+    expect(
+      withinTolerance(ring.expected(paramsOf('iwave-compare'), at(10)), ring.expected(paramsOf('iwave-compare'), at(12)), ring.tolerance),
+    ).toBe(false);
     const stone = exerciseFor('iwave-stone')!;
     const spacing = stone.expected(paramsOf('iwave-stone'), at(12));
     expect(withinTolerance(2 * spacing, spacing, stone.tolerance)).toBe(false);

@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { crestToTrough, meanUpCrossingPeriod, probeFigures, significantHeight, timeMean, upCrossings } from '../../../../src/sim/tools/probeStatistics';
+import {
+  crestToTrough,
+  meanUpCrossingPeriod,
+  probeFigures,
+  significantHeight,
+  timeMean,
+  upCrossings,
+} from '../../../../src/sim/tools/probeStatistics';
 import { PROBE_WINDOW, ProbeRecord } from '../../../../src/sim/tools/probeRecord';
 
 /** a sin(2π t / T + φ) + offset sampled at `times`. */

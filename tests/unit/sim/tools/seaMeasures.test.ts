@@ -43,7 +43,8 @@ describe('where a probe may stand (?probe=x,z)', () => {
   });
 
   it('refuses anything else: not two numbers, not finite, beyond ±1e6 m', () => {
-    for (const text of ['', '1', '1,2,3', '1,oops', ',2', '1,', 'NaN,0', 'Infinity,0', '2e6,0']) expect(parseProbeText(text), text).toBeNull();
+    for (const text of ['', '1', '1,2,3', '1,oops', ',2', '1,', 'NaN,0', 'Infinity,0', '2e6,0'])
+      expect(parseProbeText(text), text).toBeNull();
     expect(isProbeCoordinate(1e6)).toBe(true);
     expect(isProbeCoordinate('1')).toBe(false);
   });

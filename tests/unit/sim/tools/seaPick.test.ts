@@ -30,7 +30,7 @@ describe('the point a click picks on the sea', () => {
 
   it('on a wavy sea lies on the surface and is the first crossing along the ray (seeded rays, brute force)', () => {
     let seed = 7;
-    const random = () => ((seed = (seed * 16807) % 2147483647) / 2147483647);
+    const random = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
     for (let i = 0; i < 40; i++) {
       const origin: Vec3 = [random() * 100 - 50, 2.5 + random() * 20, random() * 100 - 50];
       // Down at 2° to 60°: grazing rays pass over crests before they meet the sea.

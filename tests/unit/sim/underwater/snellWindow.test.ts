@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { AIR_IOR, fresnelReflectance, WATER_IOR } from '../../../../src/sim/optics/fresnel';
-import { classifyNearPlane, fresnelTableFromBelow, refractDirection, refractedSunDirection, snellWindowHalfAngle } from '../../../../src/sim/underwater/snellWindow';
+import {
+  classifyNearPlane,
+  fresnelTableFromBelow,
+  refractDirection,
+  refractedSunDirection,
+  snellWindowHalfAngle,
+} from '../../../../src/sim/underwater/snellWindow';
 import { sunDirection } from '../../../../src/sim/optics/sun';
 
 const deg = (d: number) => (d * Math.PI) / 180;
@@ -34,7 +40,10 @@ describe('Fresnel reflectance from below (water to air)', () => {
   it('equals the reflectance from above at the refracted angle (reciprocity) inside the window', () => {
     for (const angle of [10, 20, 30, 40, 45, 48]) {
       const inAir = Math.asin(Math.sin(deg(angle)) * WATER_IOR);
-      expect(fresnelReflectance(Math.cos(deg(angle)), WATER_IOR, AIR_IOR)).toBeCloseTo(fresnelReflectance(Math.cos(inAir), AIR_IOR, WATER_IOR), 12);
+      expect(fresnelReflectance(Math.cos(deg(angle)), WATER_IOR, AIR_IOR)).toBeCloseTo(
+        fresnelReflectance(Math.cos(inAir), AIR_IOR, WATER_IOR),
+        12,
+      );
     }
   });
 
@@ -102,10 +111,42 @@ describe('sunlight under a flat sea', () => {
 
 describe('classifyNearPlane', () => {
   it('is above or below only when every point clears the surface by the margin on that side', () => {
-    expect(classifyNearPlane([{ y: 1, surface: 0.5 }, { y: 2, surface: 0 }], 0.25)).toBe('above');
-    expect(classifyNearPlane([{ y: -1, surface: 0.5 }, { y: -2, surface: 0 }], 0.25)).toBe('below');
-    expect(classifyNearPlane([{ y: 1, surface: 0.9 }, { y: 2, surface: 0 }], 0.25)).toBe('straddling');
-    expect(classifyNearPlane([{ y: 1, surface: 0 }, { y: -1, surface: 0 }], 0.25)).toBe('straddling');
+    expect(
+      classifyNearPlane(
+        [
+          { y: 1, surface: 0.5 },
+          { y: 2, surface: 0 },
+        ],
+        0.25,
+      ),
+    ).toBe('above');
+    expect(
+      classifyNearPlane(
+        [
+          { y: -1, surface: 0.5 },
+          { y: -2, surface: 0 },
+        ],
+        0.25,
+      ),
+    ).toBe('below');
+    expect(
+      classifyNearPlane(
+        [
+          { y: 1, surface: 0.9 },
+          { y: 2, surface: 0 },
+        ],
+        0.25,
+      ),
+    ).toBe('straddling');
+    expect(
+      classifyNearPlane(
+        [
+          { y: 1, surface: 0 },
+          { y: -1, surface: 0 },
+        ],
+        0.25,
+      ),
+    ).toBe('straddling');
     expect(() => classifyNearPlane([], 0.25)).toThrow(RangeError);
   });
 });

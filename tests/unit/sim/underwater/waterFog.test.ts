@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import type { Color } from 'three';
-import { DEPTH_DARKENING, FOG_HIDES_BELOW, WATER_EXTINCTION, daylightAtDepth, fogHidingDistance } from '../../../../src/sim/underwater/waterFog';
+import {
+  DEPTH_DARKENING,
+  FOG_HIDES_BELOW,
+  WATER_EXTINCTION,
+  daylightAtDepth,
+  fogHidingDistance,
+} from '../../../../src/sim/underwater/waterFog';
 import { applyWaterVolume, createWaterVolumeUniforms, setEyeDepth } from '../../../../src/render/underwater/waterVolumeUniforms';
 import { SCENE_BRIGHTEST } from '../../../../src/render/underwater/sceneEncoding';
 import { paramDefs } from '../../../../src/sim/params/params';
@@ -58,7 +64,6 @@ describe("the water's extinction and the daylight's fading, from pure water's op
     expect(DEPTH_DARKENING[2]).toBeCloseTo(0.0137, 4);
     expect(1.0395 * a[2]).toBeLessThan(0.87 * DEPTH_DARKENING[2]);
   });
-
 });
 
 describe("the daylight left at the eye's depth (the water's colour there, uWaterAtEye)", () => {

@@ -23,7 +23,7 @@ describe('the boat wake as the app keeps it', () => {
     expect(ua.origin).toEqual(ub.origin);
   });
 
-  it('lays a turning boat\'s replay on its circle (radius U/ω) within 1 cm, and a straight one on its line', () => {
+  it("lays a turning boat's replay on its circle (radius U/ω) within 1 cm, and a straight one on its line", () => {
     const c: WakeControls = { x: 7, z: -5, heading: 270 * DEG, speed: 4, turnRate: 3 * DEG };
     const radius = c.speed / c.turnRate;
     const [sx, sz] = starboardOf(c.heading);
@@ -57,7 +57,7 @@ describe('the boat wake as the app keeps it', () => {
     expect(after.track[4 * 40 + 1]).toBeCloseTo(fast[4 * 40 + 1] + 3, 3);
   });
 
-  it('is off with wake off: no sources, and sampleSurface\'s sum is then the model\'s sample itself', () => {
+  it("is off with wake off: no sources, and sampleSurface's sum is then the model's sample itself", () => {
     const w = new BoatWake();
     w.record(10, { x: 0, z: 0, heading: 0, speed: 4, turnRate: 0 });
     const off = w.uniforms(10, { enabled: false, strength: 1 });
@@ -69,7 +69,13 @@ describe('the boat wake as the app keeps it', () => {
 
   // Negative control: the head segment alone does not.
   it('bounds |η| everywhere it was sampled, at 2, 4, 8 and 12 m/s and on a turn', () => {
-    for (const [speed, turn] of [[2, 0], [4, 0], [8, 0], [12, 0], [4, 3]]) {
+    for (const [speed, turn] of [
+      [2, 0],
+      [4, 0],
+      [8, 0],
+      [12, 0],
+      [4, 3],
+    ]) {
       const w = new BoatWake();
       w.record(100, { x: 0, z: 0, heading: 90 * DEG, speed, turnRate: turn * DEG });
       const data = w.uniforms(100, ON);
@@ -119,7 +125,16 @@ describe('the wake in a share link', () => {
     }
     const time = 100 + 40;
     const params = { ...defaultParams(), wake: true };
-    const link = formatUrlState({ params, time, camera: { position: [0, 10, 10], target: [0, 0, 0] }, language: 'en', sky: null, boat: null, embed: false, wakeTrack: live.track.serialize() });
+    const link = formatUrlState({
+      params,
+      time,
+      camera: { position: [0, 10, 10], target: [0, 0, 0] },
+      language: 'en',
+      sky: null,
+      boat: null,
+      embed: false,
+      wakeTrack: live.track.serialize(),
+    });
     const state = parseSettings(new URLSearchParams(link));
     expect(state.notices).toEqual([]);
     const head = live.track.fine.latest()!;
@@ -139,7 +154,18 @@ describe('the wake in a share link', () => {
     for (let i = 0; i < a.length; i++) off = Math.max(off, Math.abs(a[i] - c[i]));
     expect(off).toBeGreaterThan(10);
     // A link with the wake off carries no track; a mangled one gives a notice and no track.
-    expect(formatUrlState({ params: defaultParams(), time, camera: { position: [0, 10, 10], target: [0, 0, 0] }, language: 'en', sky: null, boat: null, embed: false, wakeTrack: live.track.serialize() })).not.toContain('wakeTrack');
+    expect(
+      formatUrlState({
+        params: defaultParams(),
+        time,
+        camera: { position: [0, 10, 10], target: [0, 0, 0] },
+        language: 'en',
+        sky: null,
+        boat: null,
+        embed: false,
+        wakeTrack: live.track.serialize(),
+      }),
+    ).not.toContain('wakeTrack');
     const bad = parseSettings(new URLSearchParams('wakeTrack=0.5;3;1,2,3|'));
     expect(bad.wakeTrack).toBeNull();
     expect(bad.notices.map((n) => n.id)).toEqual(['wakeTrackInvalid']);

@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { GRAVITY, froudeNumber, wakeHeight, wakeHeightAndGradient, wakeSources, type WakeParams, type WakeSource } from '../../../../src/sim/wake/kelvinWake';
+import {
+  GRAVITY,
+  froudeNumber,
+  wakeHeight,
+  wakeHeightAndGradient,
+  wakeSources,
+  type WakeParams,
+  type WakeSource,
+} from '../../../../src/sim/wake/kelvinWake';
 import { TRACK_POINTS, WakeTrack } from '../../../../src/sim/wake/wakeTrack';
 
 const KELVIN_DEG = (Math.asin(1 / 3) * 180) / Math.PI; // 19.47°
@@ -49,7 +57,13 @@ function envelope(sources: WakeSource[], params: WakeParams, radius: number, wav
 }
 
 /** Angle of the envelope's largest value along the arc (0.2° steps, parabolic refinement), and the envelope. */
-function wedgeAngle(sources: WakeSource[], params: WakeParams, radius: number, wavelength: number, side: 1 | -1 = 1): { angle: number; env: number[] } {
+function wedgeAngle(
+  sources: WakeSource[],
+  params: WakeParams,
+  radius: number,
+  wavelength: number,
+  side: 1 | -1 = 1,
+): { angle: number; env: number[] } {
   const step = 0.2;
   const env: number[] = [];
   for (let d = 0; d <= 40 + 1e-9; d += step) env.push(envelope(sources, params, radius, wavelength, side * d));
@@ -81,25 +95,35 @@ describe('Kelvin wake of a boat sailing straight on a flat sea (CPU twin)', () =
   // first maximum of the Airy function that smooths the cusp, which lies inside the caustic
   // by an angle ∝ (k₀R)^(−2/3): 17.95–17.99° at R = 10 λ, 1.2° short at 14 λ, which is about
   // as far as the 78 s of recorded track reach at these speeds. The tolerance is the issue's.
-  it.each(SPEEDS)('puts the largest amplitude within 1.5° of 19.47° on both sides, at U = %s m/s', (speed) => {
-    const sources = straightSources(speed);
-    const wavelength = (2 * Math.PI * speed * speed) / GRAVITY;
-    for (const side of [1, -1] as const) {
-      const { angle, env } = wedgeAngle(sources, PARAMS, 14 * wavelength, wavelength, side);
-      if (process.env.WAKE_REPORT) console.log(`U=${speed} side=${side} angle=${angle.toFixed(2)} beyond25=${(Math.max(...env.slice(125)) / Math.max(...env)).toFixed(3)} at10λ=${wedgeAngle(sources, PARAMS, 10 * wavelength, wavelength, side).angle.toFixed(2)}`);
-      expect(Math.abs(angle - KELVIN_DEG)).toBeLessThan(1.5);
-      // The wedge is closed: beyond 25° the envelope is under 10 % of its peak (measured ≤ 3 %).
-      const peak = Math.max(...env);
-      expect(Math.max(...env.slice(Math.round(25 / 0.2)))).toBeLessThan(0.1 * peak);
-    }
-  }, HEAVY_TIMEOUT);
+  it.each(SPEEDS)(
+    'puts the largest amplitude within 1.5° of 19.47° on both sides, at U = %s m/s',
+    (speed) => {
+      const sources = straightSources(speed);
+      const wavelength = (2 * Math.PI * speed * speed) / GRAVITY;
+      for (const side of [1, -1] as const) {
+        const { angle, env } = wedgeAngle(sources, PARAMS, 14 * wavelength, wavelength, side);
+        if (process.env.WAKE_REPORT)
+          console.log(
+            `U=${speed} side=${side} angle=${angle.toFixed(2)} beyond25=${(Math.max(...env.slice(125)) / Math.max(...env)).toFixed(3)} at10λ=${wedgeAngle(sources, PARAMS, 10 * wavelength, wavelength, side).angle.toFixed(2)}`,
+          );
+        expect(Math.abs(angle - KELVIN_DEG)).toBeLessThan(1.5);
+        // The wedge is closed: beyond 25° the envelope is under 10 % of its peak (measured ≤ 3 %).
+        const peak = Math.max(...env);
+        expect(Math.max(...env.slice(Math.round(25 / 0.2)))).toBeLessThan(0.1 * peak);
+      }
+    },
+    HEAVY_TIMEOUT,
+  );
 
   // Measured (upward zero crossings 3–8 λ behind): 7.798 m for 7.846 (−0.61 %), 10.257 m
   // for 10.248 (+0.09 %), 12.945 m for 12.970 (−0.19 %). The issue's tolerance, 5 %.
   it.each(SPEEDS)('has a transverse wavelength within five percent of 2πU²/g along the track, at U = %s m/s', (speed) => {
     const expected = (2 * Math.PI * speed * speed) / GRAVITY;
     const measured = axisWavelength(straightSources(speed), PARAMS, expected);
-    if (process.env.WAKE_REPORT) console.log(`U=${speed} wavelength=${measured.toFixed(3)} expected=${expected.toFixed(3)} err=${((measured / expected - 1) * 100).toFixed(2)}%`);
+    if (process.env.WAKE_REPORT)
+      console.log(
+        `U=${speed} wavelength=${measured.toFixed(3)} expected=${expected.toFixed(3)} err=${((measured / expected - 1) * 100).toFixed(2)}%`,
+      );
     expect(Math.abs(measured / expected - 1)).toBeLessThan(0.05);
   });
 
@@ -120,13 +144,17 @@ describe('Kelvin wake of a boat sailing straight on a flat sea (CPU twin)', () =
     expect(Math.abs(measured / expected - 1)).toBeGreaterThan(0.05);
   });
 
-  it('fails the angle test with a wrong dispersion relation (negative control: ω ∝ k^0.6)', () => {
-    const speed = 4;
-    const wavelength = (2 * Math.PI * speed * speed) / GRAVITY;
-    const { angle } = wedgeAngle(straightSources(speed), { ...PARAMS, dispersionPower: 0.6 }, 14 * wavelength, wavelength);
-    if (process.env.WAKE_REPORT) console.log(`control n=0.6 angle=${angle.toFixed(2)}`);
-    expect(Math.abs(angle - KELVIN_DEG)).toBeGreaterThan(1.5);
-  }, HEAVY_TIMEOUT);
+  it(
+    'fails the angle test with a wrong dispersion relation (negative control: ω ∝ k^0.6)',
+    () => {
+      const speed = 4;
+      const wavelength = (2 * Math.PI * speed * speed) / GRAVITY;
+      const { angle } = wedgeAngle(straightSources(speed), { ...PARAMS, dispersionPower: 0.6 }, 14 * wavelength, wavelength);
+      if (process.env.WAKE_REPORT) console.log(`control n=0.6 angle=${angle.toFixed(2)}`);
+      expect(Math.abs(angle - KELVIN_DEG)).toBeGreaterThan(1.5);
+    },
+    HEAVY_TIMEOUT,
+  );
 
   // Hull 8 m at 4 m/s and hull 18 m at 6 m/s: Fr = 0.4515 both. Lengths scale by 2.25,
   // times by √2.25 = 1.5. Only the history taper, fixed in seconds, breaks the similarity,
@@ -137,7 +165,13 @@ describe('Kelvin wake of a boat sailing straight on a flat sea (CPU twin)', () =
     const scaled: WakeSource[] = a.map((s) => ({ x: s.x * 2.25, z: s.z * 2.25, age: s.age * 1.5, speed: s.speed * 1.5 }));
     let gap = 0;
     let size = 0;
-    for (const [x, z] of [[-30, 5], [-50, -12], [-45, 0], [-20, 6], [-12, 3]] as const) {
+    for (const [x, z] of [
+      [-30, 5],
+      [-50, -12],
+      [-45, 0],
+      [-20, 6],
+      [-12, 3],
+    ] as const) {
       const hA = wakeHeightAndGradient(x, z, a, PARAMS)[0];
       const hB = wakeHeightAndGradient(x * 2.25, z * 2.25, scaled, { ...PARAMS, hullLength: hullB })[0] / 2.25;
       gap = Math.max(gap, Math.abs(hB - hA));
@@ -159,7 +193,12 @@ describe('Kelvin wake of a boat sailing straight on a flat sea (CPU twin)', () =
     const sources = straightSources(4);
     let worst = 0;
     let scale = 0;
-    for (const [x, z] of [[-40, 3], [-60, 15], [-25, -6], [-90, 20]] as const) {
+    for (const [x, z] of [
+      [-40, 3],
+      [-60, 15],
+      [-25, -6],
+      [-90, 20],
+    ] as const) {
       const [, gx, gz] = wakeHeightAndGradient(x, z, sources, PARAMS);
       const e = 1e-3;
       const fx = (wakeHeightAndGradient(x + e, z, sources, PARAMS)[0] - wakeHeightAndGradient(x - e, z, sources, PARAMS)[0]) / (2 * e);
@@ -207,26 +246,34 @@ describe('Kelvin wake of a turning boat', () => {
   // A 4 m/s boat turning at 0.05 rad/s: a circle of 80 m radius. Measured offsets 4–20 s
   // behind: 0.1, −0.1, 0.5, 0.7, 0.1, 0.8, 1.4, 1.3, 1.6 m (drifting outwards with age: the
   // transverse waves run on along the heading they were made with).
-  it('keeps the wake centred on the recorded path within 3 m', () => {
-    const { track, path, time } = sail(4, 60, 0.05);
-    const head = track.points()[0];
-    const sources = wakeSources(track.points(), time, head.x, head.z);
-    const offsets = centrelineOffsets(sources, path, head.x, head.z, 4);
-    expect(Math.max(...offsets.map(Math.abs))).toBeLessThan(3);
-  }, HEAVY_TIMEOUT);
+  it(
+    'keeps the wake centred on the recorded path within 3 m',
+    () => {
+      const { track, path, time } = sail(4, 60, 0.05);
+      const head = track.points()[0];
+      const sources = wakeSources(track.points(), time, head.x, head.z);
+      const offsets = centrelineOffsets(sources, path, head.x, head.z, 4);
+      expect(Math.max(...offsets.map(Math.abs))).toBeLessThan(3);
+    },
+    HEAVY_TIMEOUT,
+  );
 
   // Measured: up to 14.1 m off by 20 s behind.
-  it('misses the path by far more when the sources are laid on a straight line (negative control)', () => {
-    const { track, path, time } = sail(4, 60, 0.05);
-    const head = track.points()[0];
-    const real = wakeSources(track.points(), time, head.x, head.z);
-    // Same ages, but every source behind the boat along its current heading.
-    const [hx, hz] = [path[0][0] - path[3][0], path[0][1] - path[3][1]];
-    const l = Math.hypot(hx, hz);
-    const straight = real.map((s) => ({ ...s, x: (-hx / l) * 4 * s.age, z: (-hz / l) * 4 * s.age }));
-    const offsets = centrelineOffsets(straight, path, head.x, head.z, 4);
-    expect(Math.max(...offsets.map(Math.abs))).toBeGreaterThan(3);
-  }, HEAVY_TIMEOUT);
+  it(
+    'misses the path by far more when the sources are laid on a straight line (negative control)',
+    () => {
+      const { track, path, time } = sail(4, 60, 0.05);
+      const head = track.points()[0];
+      const real = wakeSources(track.points(), time, head.x, head.z);
+      // Same ages, but every source behind the boat along its current heading.
+      const [hx, hz] = [path[0][0] - path[3][0], path[0][1] - path[3][1]];
+      const l = Math.hypot(hx, hz);
+      const straight = real.map((s) => ({ ...s, x: (-hx / l) * 4 * s.age, z: (-hz / l) * 4 * s.age }));
+      const offsets = centrelineOffsets(straight, path, head.x, head.z, 4);
+      expect(Math.max(...offsets.map(Math.abs))).toBeGreaterThan(3);
+    },
+    HEAVY_TIMEOUT,
+  );
 });
 
 describe('wakeHeight', () => {

@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { TRACK_COARSE_INTERVAL, TRACK_INTERVAL, TRACK_POINTS, TrackRecorder, WakeTrack, parseTrack, serializeTrack } from '../../../../src/sim/wake/wakeTrack';
+import {
+  TRACK_COARSE_INTERVAL,
+  TRACK_INTERVAL,
+  TRACK_POINTS,
+  TrackRecorder,
+  WakeTrack,
+  parseTrack,
+  serializeTrack,
+} from '../../../../src/sim/wake/wakeTrack';
 
 /** A boat on a circle of 50 m radius at 5 m/s, position at time t. */
 const circle = (t: number): [number, number] => [50 * Math.sin(t / 10), 50 - 50 * Math.cos(t / 10)];
@@ -68,7 +76,16 @@ describe('TrackRecorder', () => {
   });
 
   it('rejects text whose samples are not one interval apart or are not numbers (negative controls)', () => {
-    expect(() => TrackRecorder.fromState({ interval: 0.5, samples: [{ x: 0, z: 0, time: 1, speed: 1 }, { x: 0, z: 0, time: 2, speed: 1 }], head: { x: 0, z: 0, time: 2.1, speed: 1 } })).toThrow();
+    expect(() =>
+      TrackRecorder.fromState({
+        interval: 0.5,
+        samples: [
+          { x: 0, z: 0, time: 1, speed: 1 },
+          { x: 0, z: 0, time: 2, speed: 1 },
+        ],
+        head: { x: 0, z: 0, time: 2.1, speed: 1 },
+      }),
+    ).toThrow();
     expect(() => parseTrack('0.5;2;1,2,x|1,2,3,4')).toThrow();
     expect(() => parseTrack('0.5;2;1,2,3')).toThrow();
   });

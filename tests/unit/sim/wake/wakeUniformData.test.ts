@@ -25,7 +25,13 @@ describe('packWakeUniforms / wakeAtWorld', () => {
     expect(data.origin).toEqual(head.map(Math.fround));
     expect(data.count).toBe(64);
     let worst = 0;
-    for (const [dx, dz] of [[-30, 5], [-60, -12], [-45, 0], [-120, 30], [-8, 2]]) {
+    for (const [dx, dz] of [
+      [-30, 5],
+      [-60, -12],
+      [-45, 0],
+      [-120, 30],
+      [-8, 2],
+    ]) {
       const exact = wakeHeight(head[0] + dx, head[1] + dz, time, track.points(), PARAMS);
       worst = Math.max(worst, Math.abs(wakeAtWorld(head[0] + dx, head[1] + dz, data, PARAMS)[0] - exact));
     }
@@ -37,7 +43,13 @@ describe('packWakeUniforms / wakeAtWorld', () => {
   it('would lose the wake to float32 if absolute times were uploaded instead of ages (negative control)', () => {
     const world = track.points().map((p) => ({ ...p, time: Math.fround(p.time) }));
     let worst = 0;
-    for (const [dx, dz] of [[-30, 5], [-60, -12], [-45, 0], [-120, 30], [-8, 2]]) {
+    for (const [dx, dz] of [
+      [-30, 5],
+      [-60, -12],
+      [-45, 0],
+      [-120, 30],
+      [-8, 2],
+    ]) {
       const exact = wakeHeight(head[0] + dx, head[1] + dz, time, track.points(), PARAMS);
       worst = Math.max(worst, Math.abs(wakeHeight(head[0] + dx, head[1] + dz, Math.fround(time), world, PARAMS) - exact));
     }

@@ -18,7 +18,11 @@ describe('phases relative to the render origin', () => {
   it('gives the absolute angle at origin + r from the relative point r', () => {
     const [ox, oz] = [1_003_520, -999_424];
     const near = gerstnerOriginPhases(waves, time, ox, oz);
-    for (const [rx, rz] of [[0, 0], [12.375, -40.5], [-1800.25, 950.125]]) {
+    for (const [rx, rz] of [
+      [0, 0],
+      [12.375, -40.5],
+      [-1800.25, 950.125],
+    ]) {
       waves.forEach((w, i) => {
         // The absolute angle in double precision (big products reduced with care: exact to ~1e-9 turns).
         const absolute = time[i] + w.cx * (ox + rx) + w.cz * (oz + rz);

@@ -16,7 +16,12 @@ function randomPoints(seed: number, count: number): Float64Array {
 }
 
 /** How many points of `batch` differ from `sample` at the same point (every number compared as `round` stores it). */
-function mismatches(batch: SurfaceSamples, points: ArrayLike<number>, sample: (x: number, z: number) => SurfaceSample, round = (v: number) => v): number {
+function mismatches(
+  batch: SurfaceSamples,
+  points: ArrayLike<number>,
+  sample: (x: number, z: number) => SurfaceSample,
+  round = (v: number) => v,
+): number {
   let count = 0;
   for (let i = 0; i < points.length / 2; i++) {
     const s = sample(points[2 * i], points[2 * i + 1]);
@@ -49,7 +54,7 @@ describe('sampleSurfaces: many points, each what sampleSurface answers', () => {
     expect(mismatches(later, points, (x, z) => model.sample(x, z, 12.5))).toBeGreaterThan(490);
   });
 
-  it('the FFT sample is the seam\'s inversion, displacement and normal, bit for bit (random points, seed 31)', () => {
+  it("the FFT sample is the seam's inversion, displacement and normal, bit for bit (random points, seed 31)", () => {
     const points = randomPoints(31, 300);
     for (const sea of [gale, { ...gale, windSpeed: 6, choppiness: 1 }]) {
       const model = new FftWaveModel(sea);
@@ -88,7 +93,10 @@ describe('sampleSurfaces: many points, each what sampleSurface answers', () => {
 
   it('seed and Gerstner seas, which have no batch of their own: one sample per point, equal (seed 43)', () => {
     const points = randomPoints(43, 100);
-    const models: LiveWaveModel[] = [new SeedWaveModel(defaultParams()) as unknown as LiveWaveModel, new GerstnerLiveModel(defaultParams())];
+    const models: LiveWaveModel[] = [
+      new SeedWaveModel(defaultParams()) as unknown as LiveWaveModel,
+      new GerstnerLiveModel(defaultParams()),
+    ];
     for (const model of models) {
       expect(model.sampleMany).toBeUndefined();
       const batch = sampleSurfaces(model, points, 4, new Float64Array(400));
@@ -108,13 +116,16 @@ describe('sampleSurfaces: many points, each what sampleSurface answers', () => {
 
 describe('sampleSurfaces: bad input is a TypeError that says what was wanted', () => {
   it('names the fault', () => {
-    expect(() => checkSurfaceBatch('1,2', undefined)).toThrow(new TypeError('sampleSurfaces needs points as a Float32Array, Float64Array or array of x, z pairs (metres), got string 1,2.'));
+    expect(() => checkSurfaceBatch('1,2', undefined)).toThrow(
+      new TypeError('sampleSurfaces needs points as a Float32Array, Float64Array or array of x, z pairs (metres), got string 1,2.'),
+    );
     expect(() => checkSurfaceBatch([1, 2, 3], undefined)).toThrow(/even number of coordinates, got 3/);
     expect(() => checkSurfaceBatch([1, 2, 3, Number.NaN], undefined)).toThrow(/point 1's z is NaN/);
     expect(() => checkSurfaceBatch([1, '2'], undefined)).toThrow(/point 0's z is 2/);
     expect(() => checkSurfaceBatch([1, 2], new Float32Array(3))).toThrow(/out of length 4 \(4 per point for 1 points\), got 3/);
     expect(() => checkSurfaceBatch([1, 2], [0, 0, 0, 0])).toThrow(/got Array/);
-    for (const bad of [() => checkSurfaceBatch(null, undefined), () => checkSurfaceBatch(new Int32Array(2), undefined)]) expect(bad).toThrow(TypeError);
+    for (const bad of [() => checkSurfaceBatch(null, undefined), () => checkSurfaceBatch(new Int32Array(2), undefined)])
+      expect(bad).toThrow(TypeError);
   });
 
   it('control: good input passes, and gets a Float32Array of 4 per point when no out is given', () => {

@@ -22,7 +22,11 @@ describe('SurfaceHeightMemo: the height under the eye, kept while nothing it dep
     expect(memo.height(model, 3, 4, 10)).toBe(seed.height(3, 4, 10));
     expect(memo.height(model, 3, 4, 10)).toBe(seed.height(3, 4, 10));
     expect(calls()).toBe(1);
-    const changes: [number, number, number][] = [[3.001, 4, 10], [3.001, 4.2, 10], [3.001, 4.2, 10.5]];
+    const changes: [number, number, number][] = [
+      [3.001, 4, 10],
+      [3.001, 4.2, 10],
+      [3.001, 4.2, 10.5],
+    ];
     for (const [x, z, t] of changes) {
       expect(memo.height(model, x, z, t)).toBe(seed.height(x, z, t));
     }
@@ -48,7 +52,11 @@ describe('SurfaceHeightMemo: the height under the eye, kept while nothing it dep
     // The Worker's fields for 10.05 arrive: the same question now has the exact answer.
     const worker = new FftWaveModel(params);
     worker.ocean.setTime(10.05);
-    fft.receive(fft.sea, 10.05, worker.ocean.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));
+    fft.receive(
+      fft.sea,
+      10.05,
+      worker.ocean.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })),
+    );
     const exact = worker.height(5, 6, 10.05);
     expect(exact).not.toBe(answered);
     expect(memo.height(fft, 5, 6, 10.05)).toBe(exact);

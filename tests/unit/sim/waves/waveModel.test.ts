@@ -10,7 +10,7 @@ const trochoid = (x: number): [number, number, number] => [-A * Math.sin(K * x),
 describe('undoHorizontalDisplacement', () => {
   it('finds the grid point whose displaced position is the query point (seeded points, seed 7)', () => {
     let s = 7;
-    const rand = () => ((s = (s * 1103515245 + 12345) % 2147483648) / 2147483648);
+    const rand = () => (s = (s * 1103515245 + 12345) % 2147483648) / 2147483648;
     for (let i = 0; i < 100; i++) {
       const q = (rand() - 0.5) * 200;
       const r = undoHorizontalDisplacement((x) => trochoid(x), q, 3, 40);

@@ -100,12 +100,23 @@ describe('airy-waves: orbits shrink as e^{kz}, E = ½ ρ g a², and the view’s
     const p = viewParams('airy-waves');
     const sea = seaStateFromParams({ ...p, choppiness: 1, fftSize: '128' });
     const draw = (energyBand?: [number, number]) =>
-      drawGerstnerWaves({ count: p.gerstnerCount, seed: p.seed, spectrum: frequencySpectrum(sea).density, spreading: () => 1, windDirection: 0, steepness: p.gerstnerSteepness, energyBand });
+      drawGerstnerWaves({
+        count: p.gerstnerCount,
+        seed: p.seed,
+        spectrum: frequencySpectrum(sea).density,
+        spreading: () => 1,
+        windDirection: 0,
+        steepness: p.gerstnerSteepness,
+        energyBand,
+      });
     const share = 100 * (draw()[0].amplitude / draw([0, 1])[0].amplitude) ** 2;
     // The band's amplitude is the live model's: these are the view's waves.
     expect(draw()[0].amplitude).toBeCloseTo(gerstnerWavesFor(p)[0].amplitude, 12);
     for (const lang of LANGS) {
-      expect(agrees(numberAfter(LESSON_TEXTS['airy-waves'].text[lang], '(?:of the band they sample,|de su banda \\()'), share, 5e-4), lang).toBe(true);
+      expect(
+        agrees(numberAfter(LESSON_TEXTS['airy-waves'].text[lang], '(?:of the band they sample,|de su banda \\()'), share, 5e-4),
+        lang,
+      ).toBe(true);
     }
     expect(agrees(99, share, 5e-4)).toBe(false);
   });
@@ -167,7 +178,8 @@ describe('group-velocity: c_g = dω/dk is c/2 in deep water, and the rings and t
     const k = 0.3;
     const n = groupVelocity(k) / phaseSpeed(k);
     expect(wedge(n)).toBeCloseTo(KELVIN_HALF_ANGLE, 6);
-    for (const lang of LANGS) expect(agrees(numberAfter(cardText('group-velocity', lang), '≈'), (wedge(n) * 180) / Math.PI, 0.001)).toBe(true);
+    for (const lang of LANGS)
+      expect(agrees(numberAfter(cardText('group-velocity', lang), '≈'), (wedge(n) * 180) / Math.PI, 0.001)).toBe(true);
     // Control: c_g = c (n = 1) gives a wedge near 90°, not 19.47°.
     expect(wedge(1)).toBeGreaterThan(1.5);
   });
@@ -310,7 +322,8 @@ describe('fft-transform: Hermitian amplitudes, log₂N butterfly stages, tiles',
       for (let s = 0, half = 1; s < count; s++, half *= 2) data = stockhamStage(data, m, half);
       return data;
     };
-    const error = (x: Float64Array) => Math.max(...Array.from({ length: m }, (_, o) => Math.hypot(x[2 * o] - dft(o)[0], x[2 * o + 1] - dft(o)[1])));
+    const error = (x: Float64Array) =>
+      Math.max(...Array.from({ length: m }, (_, o) => Math.hypot(x[2 * o] - dft(o)[0], x[2 * o + 1] - dft(o)[1])));
     expect(error(stages(Math.log2(m)))).toBeLessThan(1e-9);
     expect(error(stages(Math.log2(m) - 1))).toBeGreaterThan(1);
   });

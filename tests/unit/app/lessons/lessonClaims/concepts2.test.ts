@@ -7,7 +7,12 @@ import { findLesson, lessonView } from '../../../../../src/app/lessons/lessonCat
 import { defaultParams, type OceanParams } from '../../../../../src/sim/params/params';
 import { seaSlopeVariance } from '../../../../../src/sim/optics/coxMunk';
 import { HORIZON, ZENITH } from '../../../../../src/sim/optics/skyPainter';
-import { cascadeWavelengths, resolvedShare, unresolvedSlopeVariance, SUN_DISC_SLOPE_VARIANCE } from '../../../../../src/sim/optics/resolvedSlopes';
+import {
+  cascadeWavelengths,
+  resolvedShare,
+  unresolvedSlopeVariance,
+  SUN_DISC_SLOPE_VARIANCE,
+} from '../../../../../src/sim/optics/resolvedSlopes';
 import { seaStateFromParams } from '../../../../../src/sim/waves/spectra/seaState';
 import { fftOceanSetup } from '../../../../../src/sim/waves/fft/fftOcean';
 import { cascadeSpread } from '../../../../../src/sim/waves/spectra/spectralBounds';
@@ -15,8 +20,21 @@ import { HIGHLIGHT_KNEE, rollOffHighlight } from '../../../../../src/sim/optics/
 import { SUN_IRRADIANCE, SUN_LIGHT_COLOR } from '../../../../../src/sim/optics/sun';
 import { glintPerIrradiance } from '../../../../../src/sim/optics/beckmannGlint';
 import { AIR_IOR, WATER_IOR, fresnelReflectance } from '../../../../../src/sim/optics/fresnel';
-import { PURE_WATER_ABSORPTION, REFLECTANCE_FACTOR, bodyColor, deepWaterReflectance, molecularScattering, WAVELENGTHS } from '../../../../../src/sim/optics/waterColor';
-import { CHLOROPHYLL, CREST_PATH, PARTICLE_MEAN_COSINE, crestScattering, henyeyGreenstein } from '../../../../../src/sim/optics/subsurfaceGlow';
+import {
+  PURE_WATER_ABSORPTION,
+  REFLECTANCE_FACTOR,
+  bodyColor,
+  deepWaterReflectance,
+  molecularScattering,
+  WAVELENGTHS,
+} from '../../../../../src/sim/optics/waterColor';
+import {
+  CHLOROPHYLL,
+  CREST_PATH,
+  PARTICLE_MEAN_COSINE,
+  crestScattering,
+  henyeyGreenstein,
+} from '../../../../../src/sim/optics/subsurfaceGlow';
 import { glslVec3, shaderConstantsChunk } from '../../../../../src/render/shaders/shaderConstants';
 
 /**
@@ -106,7 +124,8 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness', () 
       // Halfway in ln k: half the band's slopes.
       expect(resolvedShare(Math.sqrt(shortest * longest) / 2, shortest, longest)).toBeCloseTo(0.5, 12);
       // Control: a rule counting a wave drawn from one footprint still keeps some of it at λ_max / 2.
-      const fromOneFootprint = (footprint: number) => Math.min(1, Math.max(0, Math.log(longest / footprint) / Math.log(longest / shortest)));
+      const fromOneFootprint = (footprint: number) =>
+        Math.min(1, Math.max(0, Math.log(longest / footprint) / Math.log(longest / shortest)));
       expect(fromOneFootprint(longest / 2)).toBeGreaterThan(0);
     }
   });
@@ -119,7 +138,9 @@ describe('slope-filtering: the slopes a pixel cannot draw become roughness', () 
     expect(shader).toMatch(/vec3 share = clamp\(\(uFftLogLongestWave - log\(2\.0 \* footprint\)\) \* uFftPerLogBand, 0\.0, 1\.0\);/);
     expect(shader.replace('dot(share * share,', 'dot(share,')).not.toMatch(equation);
     // The card's MathML squares the share.
-    expect(LESSON_TEXTS['slope-filtering'].math).toContain('<msubsup><mi>s</mi><mi>c</mi><mn>2</mn></msubsup><msubsup><mi>σ</mi><mi>c</mi><mn>2</mn></msubsup>');
+    expect(LESSON_TEXTS['slope-filtering'].math).toContain(
+      '<msubsup><mi>s</mi><mi>c</mi><mn>2</mn></msubsup><msubsup><mi>σ</mi><mi>c</mi><mn>2</mn></msubsup>',
+    );
     const p = viewParams('slope-filtering');
     const total = seaSlopeVariance(p.windSpeed);
     const held = cascadeSlopeVariances(p).reduce((a, b) => a + b, 0);
@@ -226,7 +247,11 @@ describe('light-units: linear radiance, exposure in stops, the tone curve, sRGB'
     const eye: [number, number, number] = [0, Math.sin(e), Math.cos(e)];
     const total = seaSlopeVariance(p.windSpeed);
     const drawn = cascadeSlopeVariances(p).reduce((a, b) => a + b, 0);
-    const core = (variance: number) => Math.min(...SUN_LIGHT_COLOR) * SUN_IRRADIANCE * fresnelReflectance(Math.sin(e), AIR_IOR, WATER_IOR) * glintPerIrradiance(sun, eye, [0, 1, 0], variance);
+    const core = (variance: number) =>
+      Math.min(...SUN_LIGHT_COLOR) *
+      SUN_IRRADIANCE *
+      fresnelReflectance(Math.sin(e), AIR_IOR, WATER_IOR) *
+      glintPerIrradiance(sun, eye, [0, 1, 0], variance);
     for (const variance of [total - drawn, total]) expect(core(variance)).toBeGreaterThan(2 * white * 4);
     let linearWhite = HIGHLIGHT_KNEE;
     while (Math.round(255 * rollOffHighlight(linearWhite)) < 255) linearWhite += 0.01;
@@ -251,7 +276,11 @@ describe('water-colour: the deep water’s reflectance and the crests’ forward
       expect(numberAfter(text, 'f =')).toBe(REFLECTANCE_FACTOR);
       expect(numberAfter(text, 'a =')).toBe(PURE_WATER_ABSORPTION[0]);
       expect(numberAfter(text, 'λ\\^−')).toBe(4.3);
-      const quoted = text.slice(text.indexOf('R = 0')).match(/\d+[.,]\d+/g)!.slice(0, 3).map((q) => q.replace(',', '.'));
+      const quoted = text
+        .slice(text.indexOf('R = 0'))
+        .match(/\d+[.,]\d+/g)!
+        .slice(0, 3)
+        .map((q) => q.replace(',', '.'));
       quoted.forEach((q, i) => expect(roundsTo(q, body[i]), `${lang} ${WAVELENGTHS[i]} nm`).toBe(true));
     }
     expect(molecularScattering(1000) / molecularScattering(500)).toBeCloseTo(2 ** -4.3, 12);
@@ -291,7 +320,11 @@ describe('water-colour: the deep water’s reflectance and the crests’ forward
     const constants = shaderConstantsChunk();
     expect(constants).toContain(`#define WATER_BODY_REFLECTANCE ${glslVec3(body)}`);
     expect(constants).toContain(`#define SUBSURFACE_SCATTER ${glslVec3(glow)}`);
-    const withoutHalf = WAVELENGTHS.map((w, i) => deepWaterReflectance(PURE_WATER_ABSORPTION[i], 2 * molecularScattering(w))) as [number, number, number];
+    const withoutHalf = WAVELENGTHS.map((w, i) => deepWaterReflectance(PURE_WATER_ABSORPTION[i], 2 * molecularScattering(w))) as [
+      number,
+      number,
+      number,
+    ];
     expect(constants).not.toContain(`#define WATER_BODY_REFLECTANCE ${glslVec3(withoutHalf)}`);
   });
 });

@@ -57,8 +57,16 @@ describe('each FFT card’s Hs and peak wavelength come from the spectrum code a
   // Card, then per language the words before Hs and before the peak wavelength.
   const cases: { id: string; hs: Record<Lang, string>; peak: Record<Lang, string> }[] = [
     { id: 'fft-calm', hs: { en: 'only about', es: 'solo de unos' }, peak: { en: 'peak wavelength is about', es: 'pico es de unos' } },
-    { id: 'fft-fresh-breeze', hs: { en: 'significant height about', es: 'altura significativa de unos' }, peak: { en: 'peak wavelength about', es: 'del pico de unos' } },
-    { id: 'fft-short-fetch', hs: { en: 'Hs is about', es: 'Hs es de unos' }, peak: { en: 'peak wavelength about', es: 'del pico de unos' } },
+    {
+      id: 'fft-fresh-breeze',
+      hs: { en: 'significant height about', es: 'altura significativa de unos' },
+      peak: { en: 'peak wavelength about', es: 'del pico de unos' },
+    },
+    {
+      id: 'fft-short-fetch',
+      hs: { en: 'Hs is about', es: 'Hs es de unos' },
+      peak: { en: 'peak wavelength about', es: 'del pico de unos' },
+    },
     { id: 'fft-gale', hs: { en: 'Hs about', es: 'Hs de unos' }, peak: { en: 'peak wavelength about', es: 'del pico de unos' } },
   ];
   it.each(cases)('$id', ({ id, hs: hsBefore, peak }) => {
@@ -100,7 +108,9 @@ describe('fft-calm', () => {
     for (const lang of LANGS) {
       const a = LESSON_TEXTS['fft-calm'].question!.answer[lang];
       expect(agrees(numberAfter(a, lang === 'en' ? 'to about' : 'hasta unos'), peakWavelength(doubled), 0.02)).toBe(true);
-      expect(agrees(numberAfter(a, lang === 'en' ? 'Hs grows as U², to about' : 'Hs crece como U², hasta unos'), hs(doubled), 0.05)).toBe(true);
+      expect(agrees(numberAfter(a, lang === 'en' ? 'Hs grows as U², to about' : 'Hs crece como U², hasta unos'), hs(doubled), 0.05)).toBe(
+        true,
+      );
     }
     // Control: a linear growth (twice) would be wrong.
     expect(agrees(2 * peakWavelength(sea), peakWavelength(doubled), 0.1)).toBe(false);
@@ -245,7 +255,13 @@ describe('lod-bands', () => {
       const t = cardText('lod-bands', lang);
       expect(numberAfter(t, lang === 'en' ? 'camera is' : 'Cámara a')).toBe(y);
       expect(numberAfter(t, 'L =')).toBe(L);
-      expect(agrees(numberAfter(LESSON_TEXTS['lod-bands'].question!.answer[lang], lang === 'en' ? 'picture is about' : 'imagen está a unos'), bottom, 0.05)).toBe(true);
+      expect(
+        agrees(
+          numberAfter(LESSON_TEXTS['lod-bands'].question!.answer[lang], lang === 'en' ? 'picture is about' : 'imagen está a unos'),
+          bottom,
+          0.05,
+        ),
+      ).toBe(true);
     }
     expect(bottom).toBeGreaterThan(bandStart(2, L));
     expect(bottom).toBeLessThan(bandStart(3, L));
@@ -269,7 +285,13 @@ describe('lod-morph', () => {
       const t = cardText('lod-morph', lang);
       expect(numberAfter(t, 'L =')).toBe(L);
       expect(Math.round(numberAfter(t, lang === 'en' ? 'first' : 'primeros'))).toBe(Math.round(CHUNK_REACH + MORPH_SAFETY));
-      expect(agrees(numberAfter(LESSON_TEXTS['lod-morph'].question!.answer[lang], lang === 'en' ? 'zone' : 'zona de'), 1 / z100.inverseWidth, 0.02)).toBe(true);
+      expect(
+        agrees(
+          numberAfter(LESSON_TEXTS['lod-morph'].question!.answer[lang], lang === 'en' ? 'zone' : 'zona de'),
+          1 / z100.inverseWidth,
+          0.02,
+        ),
+      ).toBe(true);
     }
     for (const lang of LANGS) {
       const a = LESSON_TEXTS['lod-morph'].question!.answer[lang];
@@ -329,7 +351,9 @@ describe('gerstner-gentle and gerstner-steepness', () => {
       expect(agrees(numberAfter(t, lang === 'en' ? 'is about' : 'vale unos'), sum4, 0.01)).toBe(true);
       const a = LESSON_TEXTS['gerstner-steepness'].question!.answer[lang];
       expect(agrees(numberAfter(a, lang === 'en' ? 'grows to about' : 'sube a unos'), sum64, 0.01)).toBe(true);
-      expect(agrees(numberAfter(a, lang === 'en' ? 'cut to about' : 'recorta a unos'), many[0].horizontal / many[0].amplitude, 0.01)).toBe(true);
+      expect(agrees(numberAfter(a, lang === 'en' ? 'cut to about' : 'recorta a unos'), many[0].horizontal / many[0].amplitude, 0.01)).toBe(
+        true,
+      );
       expect(agrees(numberAfter(a, lang === 'en' ? 'falls to about' : 'baja a unos'), many[0].amplitude, 0.05)).toBe(true);
     }
     for (const w of four) expect(w.horizontal).toBe(w.amplitude);

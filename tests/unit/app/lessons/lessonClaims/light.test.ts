@@ -55,7 +55,19 @@ function numbersOf(text: string): number[] {
   return [...text.replace(/(\d),(\d)/g, '$1.$2').matchAll(/\d+(?:\.\d+)?/g)].map((m) => Number(m[0])).sort((a, b) => a - b);
 }
 
-const LIGHT_CARDS = ['sky-cube', 'reflection', 'fresnel', 'fresnel-schlick', 'sun-glint', 'boat-twin', 'boat-pitch', 'snell-window', 'underwater-fog', 'caustics', 'god-rays'];
+const LIGHT_CARDS = [
+  'sky-cube',
+  'reflection',
+  'fresnel',
+  'fresnel-schlick',
+  'sun-glint',
+  'boat-twin',
+  'boat-pitch',
+  'snell-window',
+  'underwater-fog',
+  'caustics',
+  'god-rays',
+];
 
 describe('light cards: both languages state the same numbers', () => {
   it.each(LIGHT_CARDS)('%s: text, question and choice carry the same numbers in English and Spanish', (id) => {
@@ -92,7 +104,9 @@ describe('sky-cube', () => {
     expect(x0 - 1).toBeGreaterThan(0.5);
     const d = sunDirection(elevation, asked);
     const h = Math.hypot(d[0], d[2]);
-    expect(claim(c.question!.answer.en, /along \((−?[\d.]+)/, d[0] / h) || claim(c.question!.answer.en, /along \(−([\d.]+)/, -d[0] / h)).toBe(true);
+    expect(
+      claim(c.question!.answer.en, /along \((−?[\d.]+)/, d[0] / h) || claim(c.question!.answer.en, /along \(−([\d.]+)/, -d[0] / h),
+    ).toBe(true);
     expect(claim(c.question!.answer.en, /along \(−?[\d.]+, ([\d.]+)\)/, d[2] / h)).toBe(true);
   });
 
@@ -127,7 +141,10 @@ describe('reflection', () => {
     expect(c.math).toContain('<mi>r</mi><mo>=</mo><mo>−</mo><mi>v</mi><mo>+</mo><mn>2</mn>');
     const vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
     const card = v.map((x, k) => -x + 2 * vn * n[k]);
-    const shader = glslReflect(v.map((x) => -x), n);
+    const shader = glslReflect(
+      v.map((x) => -x),
+      n,
+    );
     card.forEach((x, k) => expect(x).toBeCloseTo(shader[k], 12));
     expect(card[0] * n[0] + card[1] * n[1] + card[2] * n[2]).toBeGreaterThan(0);
   });
@@ -177,7 +194,13 @@ describe('fresnel', () => {
   });
 
   it('the table has 256 entries, uploaded as a 256 × 1 float texture read with texelFetch and a hand-written lerp', () => {
-    expect(claim(c.text.en, /tabulates F once, (\d+) entries/, Number(source('src/render/ocean/oceanEngine.ts').match(/fresnelData = fresnelTable\((\d+)\)/)![1]))).toBe(true);
+    expect(
+      claim(
+        c.text.en,
+        /tabulates F once, (\d+) entries/,
+        Number(source('src/render/ocean/oceanEngine.ts').match(/fresnelData = fresnelTable\((\d+)\)/)![1]),
+      ),
+    ).toBe(true);
     expect(source('src/render/optics/dataTextures.ts')).toMatch(/floatTexture\(table, table.length, 1, RedFormat/);
     expect(source('src/render/optics/dataTextures.ts')).toMatch(/new DataTexture\(data, width, height, format, FloatType\)/);
     const lookup = source('shaders/fresnelLookup.glsl');
@@ -268,11 +291,17 @@ describe('boat-twin', () => {
     const state = surfaceStateAt(params, 12.3);
     const [p1, p2, p3, p4] = state.swellPhase;
     const k = params.swellFrequency;
-    for (const [x, z] of [[3, -7], [120, 45], [-800, 2500]]) {
+    for (const [x, z] of [
+      [3, -7],
+      [120, 45],
+      [-800, 2500],
+    ]) {
       // The card's 37° is atan(0.6 / 0.8) rounded (checked above); the sum itself uses the exact turn.
       const u = SECOND_SWELL.cos * x + SECOND_SWELL.sin * z;
       const v = -SECOND_SWELL.sin * x + SECOND_SWELL.cos * z;
-      const card = params.swellAmplitude * (Math.sin(k * x + p1) * Math.cos(k * z + p2) + amp * Math.sin(freq * k * u + p3) * Math.cos(freq * k * v + p4));
+      const card =
+        params.swellAmplitude *
+        (Math.sin(k * x + p1) * Math.cos(k * z + p2) + amp * Math.sin(freq * k * u + p3) * Math.cos(freq * k * v + p4));
       expect(card).toBeCloseTo(swellHeight(state, x, z), 9);
     }
   });
@@ -386,7 +415,9 @@ describe('underwater-fog', () => {
     expect(numberIn(c.text.en, /\(([\d.]+) is pure water/)).toBe(defaultParams().fogDensity);
     expect(numberIn(c.text.en, /this view sets ([\d.]+)\)/)).toBe(view('underwater-fog').params.fogDensity);
     expect(numberIn(c.question!.ask.en, /density, ([\d.]+) per metre/)).toBe(view('underwater-fog').params.fogDensity);
-    expect(numberIn(c.choice!.en, /from ([\d.]+) looking down/)).toBe(numberIn(source('shaders/waterVolume.glsl'), /mix\(([\d.]+), 1\.0, up \* up\)/));
+    expect(numberIn(c.choice!.en, /from ([\d.]+) looking down/)).toBe(
+      numberIn(source('shaders/waterVolume.glsl'), /mix\(([\d.]+), 1\.0, up \* up\)/),
+    );
   });
 
   it('the answer’s transmittances over 10 m, and the doubled distance at half the density', () => {
@@ -467,11 +498,11 @@ describe('god-rays', () => {
 describe('second reading: the remaining numbers the code can compute', () => {
   it('sky-cube: the default sky’s cube holds 8 bits a channel', () => {
     expect(numberIn(card('sky-cube').text.en, /in (\d+) bits/)).toBe(8);
-    expect(source('src/render/sky/sunSky.ts')).toMatch(/new WebGLCubeRenderTarget\(size, \{ type: UnsignedByteType,/);
+    expect(source('src/render/sky/sunSky.ts')).toMatch(/new WebGLCubeRenderTarget\(size, \{\s*type: UnsignedByteType,/);
   });
 
   it('control: a cube of half floats would not be the card’s 8 bits', () => {
-    expect(source('src/render/sky/sunSky.ts')).not.toMatch(/new WebGLCubeRenderTarget\(size, \{ type: HalfFloatType,/);
+    expect(source('src/render/sky/sunSky.ts')).not.toMatch(/new WebGLCubeRenderTarget\(size, \{\s*type: HalfFloatType,/);
     expect(numberIn(card('sky-cube').text.en, /in (\d+) bits/)).not.toBe(16);
   });
 
@@ -523,7 +554,10 @@ describe('second reading: the remaining numbers the code can compute', () => {
   });
 
   it('caustics: the choice’s intensities 2 and 3 lie on the slider, and 1 is the physical one', () => {
-    const [a, b] = [numberIn(card('caustics').choice!.en, /intensity (\d) or/), numberIn(card('caustics').choice!.en, /or (\d) exaggerates/)];
+    const [a, b] = [
+      numberIn(card('caustics').choice!.en, /intensity (\d) or/),
+      numberIn(card('caustics').choice!.en, /or (\d) exaggerates/),
+    ];
     expect(a).toBeGreaterThan(1);
     expect(b).toBeLessThanOrEqual(paramDefs.causticsIntensity.max);
     expect(source('shaders/caustics.glsl')).toContain('uniform float uCausticsStrength;    // 0: flat light, 1: physical concentration');

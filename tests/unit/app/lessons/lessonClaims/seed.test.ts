@@ -7,11 +7,25 @@ import { PRESETS } from '../../../../../src/app/url/presets';
 import { defaultParams } from '../../../../../src/sim/params/params';
 import { BASE_STEP, BAND_STEPS, bandForDistance, MAX_LOD_BANDS } from '../../../../../src/sim/lod/lodBands';
 import {
-  GRAVITY, HEIGHTMAP_SIZE, NORMAL_DELTA, RIPPLE_TILE_SIZE, SECOND_SWELL,
-  rippleHeight, surfaceNormal, surfaceStateAt, swellHeight, type SurfaceState,
+  GRAVITY,
+  HEIGHTMAP_SIZE,
+  NORMAL_DELTA,
+  RIPPLE_TILE_SIZE,
+  SECOND_SWELL,
+  rippleHeight,
+  surfaceNormal,
+  surfaceStateAt,
+  swellHeight,
+  type SurfaceState,
 } from '../../../../../src/sim/waves/seed/seedSurface';
 import { integerNoise } from '../../../../../src/sim/noise/integerHash';
-import { cosineInterpolate, defaultNoiseSettings, generateRippleHeightmaps, octaveSeed, smoothedLattice } from '../../../../../src/sim/noise/perlinNoise';
+import {
+  cosineInterpolate,
+  defaultNoiseSettings,
+  generateRippleHeightmaps,
+  octaveSeed,
+  smoothedLattice,
+} from '../../../../../src/sim/noise/perlinNoise';
 import { integerLattice, noiseStages, TEACHING_OCTAVE } from '../../../../../src/sim/noise/noiseStages';
 
 /**
@@ -22,12 +36,16 @@ import { integerLattice, noiseStages, TEACHING_OCTAVE } from '../../../../../src
 
 const card = (id: string) => LESSON_TEXTS[id];
 /** Every number in a string, decimal comma or point, with its sign (−). */
-const numbers = (s: string) => [...s.replace(/(\d),(\d)/g, '$1.$2').matchAll(/[−-]?\d+(?:\.\d+)?/g)].map((m) => Number(m[0].replace('−', '-')));
+const numbers = (s: string) =>
+  [...s.replace(/(\d),(\d)/g, '$1.$2').matchAll(/[−-]?\d+(?:\.\d+)?/g)].map((m) => Number(m[0].replace('−', '-')));
 /** The number right after `label` in `s` (decimal comma or point). */
 function numberAfter(s: string, label: string): number {
   const i = s.indexOf(label);
   if (i < 0) throw new Error(`“${label}” not in “${s.slice(0, 60)}…”`);
-  const match = s.slice(i + label.length).replace(/(\d),(\d)/g, '$1.$2').match(/-?\d+(?:\.\d+)?/);
+  const match = s
+    .slice(i + label.length)
+    .replace(/(\d),(\d)/g, '$1.$2')
+    .match(/-?\d+(?:\.\d+)?/);
   if (!match) throw new Error(`no number after “${label}”`);
   return Number(match[0]);
 }
@@ -43,16 +61,45 @@ const both = (id: string) => [card(id).text.en, card(id).text.es];
 
 function correlation(a: ArrayLike<number>, b: ArrayLike<number>): number {
   const n = a.length;
-  let ma = 0, mb = 0;
-  for (let i = 0; i < n; i++) { ma += a[i]; mb += b[i]; }
-  ma /= n; mb /= n;
-  let sab = 0, saa = 0, sbb = 0;
-  for (let i = 0; i < n; i++) { sab += (a[i] - ma) * (b[i] - mb); saa += (a[i] - ma) ** 2; sbb += (b[i] - mb) ** 2; }
+  let ma = 0,
+    mb = 0;
+  for (let i = 0; i < n; i++) {
+    ma += a[i];
+    mb += b[i];
+  }
+  ma /= n;
+  mb /= n;
+  let sab = 0,
+    saa = 0,
+    sbb = 0;
+  for (let i = 0; i < n; i++) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) ** 2;
+    sbb += (b[i] - mb) ** 2;
+  }
   return sab / Math.sqrt(saa * sbb);
 }
-const std = (a: ArrayLike<number>) => { let m = 0; for (let i = 0; i < a.length; i++) m += a[i]; m /= a.length; let v = 0; for (let i = 0; i < a.length; i++) v += (a[i] - m) ** 2; return Math.sqrt(v / a.length); };
+const std = (a: ArrayLike<number>) => {
+  let m = 0;
+  for (let i = 0; i < a.length; i++) m += a[i];
+  m /= a.length;
+  let v = 0;
+  for (let i = 0; i < a.length; i++) v += (a[i] - m) ** 2;
+  return Math.sqrt(v / a.length);
+};
 
-const SEED_CARDS = ['flat-plane', 'displaced-plane', 'swell', 'swell-maximum', 'perlin-hash', 'perlin-smoothing', 'perlin-octaves', 'heightmap-blend', 'normals-wrong', 'normals-right'];
+const SEED_CARDS = [
+  'flat-plane',
+  'displaced-plane',
+  'swell',
+  'swell-maximum',
+  'perlin-hash',
+  'perlin-smoothing',
+  'perlin-octaves',
+  'heightmap-blend',
+  'normals-wrong',
+  'normals-right',
+];
 
 describe('the seed cards: every card has a question, references that exist', () => {
   it.each(SEED_CARDS)('%s: a question in both languages, answers ≤ 60 words, choice ≤ 30, references in the bibliography', (id) => {
@@ -152,8 +199,12 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
   });
 
   /** The first product, the code's way: swellHeight less the second product (which the state lets us null). */
-  const firstProduct = (state: SurfaceState, x: number, z: number) => swellHeight({ ...state, swellPhase: [state.swellPhase[0], state.swellPhase[1], 0, 0] }, x, z)
-    - state.swellAmplitude * SECOND_SWELL.amplitude * Math.sin(state.swellFrequency * SECOND_SWELL.frequency * (SECOND_SWELL.cos * x + SECOND_SWELL.sin * z)) * Math.cos(state.swellFrequency * SECOND_SWELL.frequency * (-SECOND_SWELL.sin * x + SECOND_SWELL.cos * z));
+  const firstProduct = (state: SurfaceState, x: number, z: number) =>
+    swellHeight({ ...state, swellPhase: [state.swellPhase[0], state.swellPhase[1], 0, 0] }, x, z) -
+    state.swellAmplitude *
+      SECOND_SWELL.amplitude *
+      Math.sin(state.swellFrequency * SECOND_SWELL.frequency * (SECOND_SWELL.cos * x + SECOND_SWELL.sin * z)) *
+      Math.cos(state.swellFrequency * SECOND_SWELL.frequency * (-SECOND_SWELL.sin * x + SECOND_SWELL.cos * z));
   const diagonalWaves = (A: number, k: number, omega: number, t: number, x: number, z: number, a: number, b: number) =>
     (A / 2) * (Math.sin(k * (x + z) + a * omega * t) + Math.sin(k * (x - z) + b * omega * t));
 
@@ -162,7 +213,11 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
     const omega = Math.sqrt(GRAVITY * k);
     for (const t of [0, 1.3, 7.9]) {
       const state = surfaceStateAt({ ...defaultParams(), swellFrequency: k }, t);
-      for (const [x, z] of [[0, 0], [13, -40], [-77, 21]]) {
+      for (const [x, z] of [
+        [0, 0],
+        [13, -40],
+        [-77, 21],
+      ]) {
         expect(firstProduct(state, x, z)).toBeCloseTo(diagonalWaves(state.swellAmplitude, k, omega, t, x, z, fast, slow), 9);
       }
     }
@@ -174,7 +229,9 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
     const k = 0.05;
     const omega = Math.sqrt(GRAVITY * k);
     const state = surfaceStateAt({ ...defaultParams(), swellFrequency: k }, 7.9);
-    expect(Math.abs(firstProduct(state, 13, -40) - diagonalWaves(state.swellAmplitude, k, omega, 7.9, 13, -40, 1.6, slow))).toBeGreaterThan(1e-3);
+    expect(Math.abs(firstProduct(state, 13, -40) - diagonalWaves(state.swellAmplitude, k, omega, 7.9, 13, -40, 1.6, slow))).toBeGreaterThan(
+      1e-3,
+    );
   });
 
   it('neither diagonal wave follows dispersion: a wave of √2 k has ω·2^¼ ≈ 1.19 ω', () => {
@@ -196,7 +253,7 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
       expect(agrees(w1, omega(0.05))).toBe(true);
       expect(agrees(w2, omega(0.2))).toBe(true);
       // Four times closer (2π/k) at half the speed: twice as often past a point, as ω says.
-      expect((speed(0.2) / ((2 * Math.PI) / 0.2)) / (speed(0.05) / ((2 * Math.PI) / 0.05))).toBeCloseTo(w2 / w1, 2);
+      expect(speed(0.2) / ((2 * Math.PI) / 0.2) / (speed(0.05) / ((2 * Math.PI) / 0.05))).toBeCloseTo(w2 / w1, 2);
     }
     // A bump is where sin = 1 and cos = ±1: check it moves so in the code.
     const k = 0.05;
@@ -215,9 +272,14 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
   // The card: the first product slides rigidly towards −x and −z; the second slides another way, so the sum changes shape.
   const k = 0.05;
   const omega = Math.sqrt(GRAVITY * k);
-  const velocity: [number, number] = [-omega / k, -cosineRate * omega / k];
+  const velocity: [number, number] = [-omega / k, (-cosineRate * omega) / k];
   const at = (t: number) => surfaceStateAt({ ...defaultParams(), swellFrequency: k }, t);
-  const points = [[0, 0], [13, -40], [-77, 21], [250, 310]];
+  const points = [
+    [0, 0],
+    [13, -40],
+    [-77, 21],
+    [250, 310],
+  ];
 
   it('the first product keeps its shape: at time t it is the pattern of t = 0 moved by (−ω/k, −0.7 ω/k) t', () => {
     for (const text of both('swell')) expect(text).toContain('−x');
@@ -230,7 +292,9 @@ describe('displaced-plane and swell: the numbers and the identity', () => {
 
   it('control: the whole swell, moved at that velocity, is not the same pattern (the second product slides another way)', () => {
     const t = 11;
-    const worst = Math.max(...points.map(([x, z]) => Math.abs(swellHeight(at(t), x, z) - swellHeight(at(0), x - velocity[0] * t, z - velocity[1] * t))));
+    const worst = Math.max(
+      ...points.map(([x, z]) => Math.abs(swellHeight(at(t), x, z) - swellHeight(at(0), x - velocity[0] * t, z - velocity[1] * t))),
+    );
     expect(worst).toBeGreaterThan(0.1);
   });
 
@@ -279,10 +343,16 @@ describe('swell-maximum: the preset’s λ, H/λ and slopes', () => {
       }
       return best;
     };
-    const firstOnly = (state: SurfaceState, x: number, z: number) => state.swellAmplitude * Math.sin(state.swellFrequency * x + state.swellPhase[0]) * Math.cos(state.swellFrequency * z + state.swellPhase[1]);
+    const firstOnly = (state: SurfaceState, x: number, z: number) =>
+      state.swellAmplitude *
+      Math.sin(state.swellFrequency * x + state.swellPhase[0]) *
+      Math.cos(state.swellFrequency * z + state.swellPhase[1]);
     const answer = card('swell-maximum').question!.answer;
     for (const text of [answer.en, answer.es]) {
-      const [[s4, deg4], [s1, deg1]] = [...text.replace(/(\d),(\d)/g, '$1.$2').matchAll(/(\d+(?:\.\d+)?) \((\d+)°\)/g)].map((m) => [Number(m[1]), Number(m[2])]);
+      const [[s4, deg4], [s1, deg1]] = [...text.replace(/(\d),(\d)/g, '$1.$2').matchAll(/(\d+(?:\.\d+)?) \((\d+)°\)/g)].map((m) => [
+        Number(m[1]),
+        Number(m[2]),
+      ]);
       expect(agrees(s4, steepest(4))).toBe(true);
       expect(agrees(deg4, (Math.atan(steepest(4)) * 180) / Math.PI)).toBe(true);
       expect(agrees(s1, steepest(1))).toBe(true);
@@ -300,8 +370,13 @@ describe('the noise cards: value noise as perlinNoise.ts builds it', () => {
     for (const text of both('perlin-hash')) expect(text).toContain(`${cells} × ${cells}`);
     expect(noiseStages(1, 32).hash.size).toBe(cells);
     expect(mathNumbers('perlin-hash')).toEqual([2, 31, 1, 1, 1]);
-    let lo = Infinity, hi = -Infinity;
-    for (let i = 0; i < 20000; i++) { const v = integerNoise(i * 7 - 5000, i % 131, 3); lo = Math.min(lo, v); hi = Math.max(hi, v); }
+    let lo = Infinity,
+      hi = -Infinity;
+    for (let i = 0; i < 20000; i++) {
+      const v = integerNoise(i * 7 - 5000, i % 131, 3);
+      lo = Math.min(lo, v);
+      hi = Math.max(hi, v);
+    }
     expect(lo).toBeGreaterThanOrEqual(-1);
     expect(hi).toBeLessThan(1);
     expect(lo).toBeLessThan(-0.99);
@@ -326,8 +401,14 @@ describe('the noise cards: value noise as perlinNoise.ts builds it', () => {
     const smooth = smoothedLattice(big, seed);
     // The code's own lattice at one point, against the card's formula.
     const r = (x: number, y: number) => raw[((y + big) % big) * big + ((x + big) % big)];
-    const x = 17, y = 40;
-    expect(smooth[y * big + x]).toBeCloseTo(r(x, y) / n4 + (r(x - 1, y) + r(x + 1, y) + r(x, y - 1) + r(x, y + 1)) / e8 + (r(x - 1, y - 1) + r(x + 1, y - 1) + r(x - 1, y + 1) + r(x + 1, y + 1)) / c16, 14);
+    const x = 17,
+      y = 40;
+    expect(smooth[y * big + x]).toBeCloseTo(
+      r(x, y) / n4 +
+        (r(x - 1, y) + r(x + 1, y) + r(x, y - 1) + r(x, y + 1)) / e8 +
+        (r(x - 1, y - 1) + r(x + 1, y - 1) + r(x - 1, y + 1) + r(x + 1, y + 1)) / c16,
+      14,
+    );
     const ratio = std(smooth) / std(raw);
     expect(Math.sqrt(1 / 16 + 4 / 64 + 4 / 256)).toBe(3 / 8);
     expect(ratio).toBeGreaterThan(0.36);
@@ -352,8 +433,12 @@ describe('the noise cards: value noise as perlinNoise.ts builds it', () => {
     expect(cosineInterpolate(0, 1, 0.5)).toBeCloseTo((1 - Math.cos(Math.PI * 0.5)) / 2, 15);
     expect(cosineInterpolate(0, 1, 1e-4) - cosineInterpolate(0, 1, 0)).toBeLessThan(1e-7);
     const [h0] = generateRippleHeightmaps(1, HEIGHTMAP_SIZE);
-    let sum = 0, peak = 0;
-    for (const v of h0.data) { sum += v; peak = Math.max(peak, Math.abs(v)); }
+    let sum = 0,
+      peak = 0;
+    for (const v of h0.data) {
+      sum += v;
+      peak = Math.max(peak, Math.abs(v));
+    }
     expect(Math.abs(sum / h0.data.length)).toBeLessThan(1e-6);
     expect(peak).toBeCloseTo(1, 6);
     expect(noiseStages(1, HEIGHTMAP_SIZE).octaves.data).toEqual(h0.data);
@@ -403,7 +488,10 @@ describe('heightmap-blend: the weight, the drifts, the period in space', () => {
     }
     const maps = generateRippleHeightmaps(p.seed, HEIGHTMAP_SIZE);
     const state = surfaceStateAt(p, 17.3);
-    for (const [x, z] of [[3.3, 7.1], [-40.2, 12.9]]) {
+    for (const [x, z] of [
+      [3.3, 7.1],
+      [-40.2, 12.9],
+    ]) {
       expect(rippleHeight(state, maps, x + RIPPLE_TILE_SIZE, z)).toBeCloseTo(rippleHeight(state, maps, x, z), 9);
       expect(rippleHeight(state, maps, x, z - RIPPLE_TILE_SIZE)).toBeCloseTo(rippleHeight(state, maps, x, z), 9);
       // Control: half a tile away is another height.
@@ -430,7 +518,10 @@ describe('the normals cards: the flat normal’s colour, the fabricated normal�
     const maps = generateRippleHeightmaps(p.seed, HEIGHTMAP_SIZE);
     const state = surfaceStateAt(p, 5.5);
     const height = (x: number, z: number) => swellHeight(state, x, z) + rippleHeight(state, maps, x, z);
-    for (const [x, z] of [[1.7, -3.2], [40, 25]]) {
+    for (const [x, z] of [
+      [1.7, -3.2],
+      [40, 25],
+    ]) {
       const d = NORMAL_DELTA;
       const [h1, h2, h3] = [height(x, z), height(x + d, z), height(x, z + d)];
       const card = [-d * (h2 - h1), d * d, -d * (h3 - h1)];
@@ -451,8 +542,13 @@ describe('the normals cards: the flat normal’s colour, the fabricated normal�
     const maps = generateRippleHeightmaps(p.seed, HEIGHTMAP_SIZE);
     const meanTilt = (A: number) => {
       const state = surfaceStateAt({ ...p, swellAmplitude: A }, 2);
-      let sum = 0, n = 0;
-      for (let x = -60; x < 60; x += 3.1) for (let z = -60; z < 60; z += 2.9) { sum += Math.abs(surfaceNormal(state, maps, x, z)[0]); n++; }
+      let sum = 0,
+        n = 0;
+      for (let x = -60; x < 60; x += 3.1)
+        for (let z = -60; z < 60; z += 2.9) {
+          sum += Math.abs(surfaceNormal(state, maps, x, z)[0]);
+          n++;
+        }
       return sum / n;
     };
     expect(meanTilt(4)).toBeGreaterThan(meanTilt(2.5) * 1.2);

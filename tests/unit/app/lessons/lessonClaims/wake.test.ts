@@ -9,12 +9,41 @@ import { unreadParams } from '../../../../../src/app/panel/unreadParams';
 import { compareStrips } from '../../../../../src/sim/compare/compareLayout';
 import { piersonMoskowitzHs } from '../../../../../src/sim/physics/physicsReport';
 import { significantWaveHeight } from '../../../../../src/sim/physics/physicsEstimators';
-import { PM_ALPHA, PM_BETA, piersonMoskowitzM0, piersonMoskowitzPeak, windAt19_5 } from '../../../../../src/sim/waves/spectra/piersonMoskowitz';
+import {
+  PM_ALPHA,
+  PM_BETA,
+  piersonMoskowitzM0,
+  piersonMoskowitzPeak,
+  windAt19_5,
+} from '../../../../../src/sim/waves/spectra/piersonMoskowitz';
 import { KELVIN_HALF_ANGLE, kelvinGuideLines } from '../../../../../src/sim/wake/kelvinGuide';
-import { FOOTPRINT_PER_LENGTH, GRAVITY, TAPER_END, TAPER_START, VOLUME_PER_LENGTH_CUBED, froudeNumber, wakeHeightAndGradient, wakeSources, type WakeParams, type WakeSource } from '../../../../../src/sim/wake/kelvinWake';
+import {
+  FOOTPRINT_PER_LENGTH,
+  GRAVITY,
+  TAPER_END,
+  TAPER_START,
+  VOLUME_PER_LENGTH_CUBED,
+  froudeNumber,
+  wakeHeightAndGradient,
+  wakeSources,
+  type WakeParams,
+  type WakeSource,
+} from '../../../../../src/sim/wake/kelvinWake';
 import { TRACK_COARSE_INTERVAL, TRACK_INTERVAL, TRACK_POINTS, WakeTrack } from '../../../../../src/sim/wake/wakeTrack';
-import { IWAVE_CATCH_UP_STEPS, IWAVE_DAMPING, IWAVE_GRID_SIZE, IWAVE_SPACING, IWAVE_STEP, WAVE_EQUATION_SPEED } from '../../../../../src/sim/iwave/interactiveField';
-import { IWAVE_KERNEL_BAND, IWAVE_KERNEL_RADIUS, fittedVerticalDerivativeKernel, kernelResponse } from '../../../../../src/sim/iwave/verticalDerivativeKernel';
+import {
+  IWAVE_CATCH_UP_STEPS,
+  IWAVE_DAMPING,
+  IWAVE_GRID_SIZE,
+  IWAVE_SPACING,
+  IWAVE_STEP,
+  WAVE_EQUATION_SPEED,
+} from '../../../../../src/sim/iwave/interactiveField';
+import {
+  IWAVE_KERNEL_BAND,
+  IWAVE_KERNEL_RADIUS,
+  fittedVerticalDerivativeKernel,
+  kernelResponse,
+} from '../../../../../src/sim/iwave/verticalDerivativeKernel';
 import { IWAVE_SPONGE } from '../../../../../src/sim/iwave/iwaveGrid';
 import { crestRadii, waveFrontRadius } from '../../../../../src/sim/iwave/cauchyPoissonRings';
 import { hullSources } from '../../../../../src/sim/iwave/movingHull';
@@ -55,7 +84,9 @@ function stated(id: string, value: number, digits: number, { math = false, suffi
     [words(id, 'en'), 'en'],
     [words(id, 'es'), 'es'],
   ];
-  const inText = places.every(([where, language]) => new RegExp(`(^|[^0-9.,])${written(value, digits, language).replace('.', '\\.')}${suffix}`).test(where));
+  const inText = places.every(([where, language]) =>
+    new RegExp(`(^|[^0-9.,])${written(value, digits, language).replace('.', '\\.')}${suffix}`).test(where),
+  );
   return inText && (!math || card(id).math.includes(`<mn>${written(value, digits, 'math')}</mn>`));
 }
 /** The number a card's English text gives after a label, e.g. "about 18.3°". */
@@ -67,7 +98,17 @@ function numberAfter(text: string, pattern: RegExp): number {
 const view = (id: string) => lessonView(findLesson(id)!);
 
 describe('every card of the group has a question, and its references are in the bibliography', () => {
-  const ids = ['compare-models', 'physics-panel', 'kelvin-wake', 'wake-turn', 'waves-as-simulation', 'iwave-stone', 'iwave-compare', 'iwave-boat', 'horizon'];
+  const ids = [
+    'compare-models',
+    'physics-panel',
+    'kelvin-wake',
+    'wake-turn',
+    'waves-as-simulation',
+    'iwave-stone',
+    'iwave-compare',
+    'iwave-boat',
+    'horizon',
+  ];
   it.each(ids)('%s', (id) => {
     const c = card(id);
     expect(c.question).toBeDefined();
@@ -107,7 +148,7 @@ describe('physics-panel', () => {
     expect(stated('physics-panel', windAt19_5(1), 3, { math: true })).toBe(true);
     // 4√m₀ = 2√(α/β) U²/g.
     expect(card('physics-panel').math).toContain(`<mn>${(2 * Math.sqrt(PM_ALPHA / PM_BETA)).toFixed(2)}</mn>`);
-    expect(card('physics-panel').math).toContain(`<mn>${(piersonMoskowitzPeak(1) * windAt19_5(1) / GRAVITY).toFixed(3)}</mn>`);
+    expect(card('physics-panel').math).toContain(`<mn>${((piersonMoskowitzPeak(1) * windAt19_5(1)) / GRAVITY).toFixed(3)}</mn>`);
   });
 
   it('at the view’s 10 m/s theory gives Hs ≈ 2.25 m and Tp ≈ 7.5 s; at 20 m/s ≈ 9.0 m and ≈ 15 s', () => {
@@ -184,7 +225,10 @@ describe('kelvin-wake', () => {
   it('the largest crests stand where the card says: ≈ 18.3° at 14 λ for 4 m/s, and 16–17° at 6 m/s', () => {
     const said = numberAfter(card('kelvin-wake').text.en, /about ([0-9.]+)° at 14 wavelengths/);
     expect(Math.abs(crestAngle(speed, 14) - said)).toBeLessThan(0.2);
-    const [low, high] = card('kelvin-wake').question!.answer.en.match(/about (\d+)–(\d+)°/)!.slice(1).map(Number);
+    const [low, high] = card('kelvin-wake')
+      .question!.answer.en.match(/about (\d+)–(\d+)°/)!
+      .slice(1)
+      .map(Number);
     for (const lengths of [8, 14]) {
       const fast = crestAngle(6, lengths);
       expect(fast).toBeGreaterThan(low - 0.5);
@@ -216,7 +260,10 @@ describe('wake-turn', () => {
     // Two sources of one age at the same point: the segment's phase is exactly g τ²/(4 r′), r′ = √(r² + σ²).
     const tau = 20;
     const sigma = FOOTPRINT_PER_LENGTH * HULL_LENGTH;
-    const sources: WakeSource[] = [{ x: 0, z: 0, age: tau, speed: 4 }, { x: 0, z: 0, age: tau + 1e-6, speed: 4 }];
+    const sources: WakeSource[] = [
+      { x: 0, z: 0, age: tau, speed: 4 },
+      { x: 0, z: 0, age: tau + 1e-6, speed: 4 },
+    ];
     const r = 60;
     const [, gx] = wakeHeightAndGradient(r, 0, sources, WAKE);
     const [h] = wakeHeightAndGradient(r, 0, sources, WAKE);
@@ -224,7 +271,7 @@ describe('wake-turn', () => {
     const k = (GRAVITY * tau * tau) / (4 * rr * rr);
     // η ∝ sin Φ: its slope over η is −k cot Φ plus the amplitude's own (small) slope.
     const phase = (GRAVITY * tau * tau) / (4 * rr);
-    const ampSlope = (-4 + k * k * sigma * sigma) / (rr * rr) * r;
+    const ampSlope = ((-4 + k * k * sigma * sigma) / (rr * rr)) * r;
     expect(gx / h).toBeCloseTo((-k * (r / rr)) / Math.tan(phase) + ampSlope, 3);
     expect(card('wake-turn').math).toContain('<mn>4</mn><msup><mi>r</mi><mn>2</mn></msup>');
   });
@@ -251,10 +298,14 @@ describe('waves-as-simulation', () => {
 
   it('the kernel keeps ω² = g k within 5 % for waves 1.5 to 10 m long, along the axis and the diagonal', () => {
     const kernel = fittedVerticalDerivativeKernel();
-    const [shortest, longest] = card('waves-as-simulation').text.en.match(/waves ([0-9.]+) to ([0-9.]+) m long/)!.slice(1).map(Number);
+    const [shortest, longest] = card('waves-as-simulation')
+      .text.en.match(/waves ([0-9.]+) to ([0-9.]+) m long/)!
+      .slice(1)
+      .map(Number);
     for (let lambda = shortest; lambda <= longest; lambda += 0.25) {
       const k = (2 * Math.PI * IWAVE_SPACING) / lambda; // radians per texel
-      for (const angle of [0, Math.PI / 4]) expect(Math.abs(kernelResponse(kernel, k * Math.cos(angle), k * Math.sin(angle)) / k - 1)).toBeLessThan(0.05);
+      for (const angle of [0, Math.PI / 4])
+        expect(Math.abs(kernelResponse(kernel, k * Math.cos(angle), k * Math.sin(angle)) / k - 1)).toBeLessThan(0.05);
     }
     // The band it was fitted on, in metres of wavelength.
     const [kMin, kMax] = IWAVE_KERNEL_BAND.map((k) => k / IWAVE_SPACING);
@@ -306,7 +357,9 @@ describe('iwave-stone', () => {
     const gaps = radii.slice(1).map((r, i) => radii[i] - r);
     for (let i = 1; i < gaps.length; i++) expect(gaps[i]).toBeLessThan(gaps[i - 1]);
     for (const language of ['en', 'es'] as const) {
-      const m = card('iwave-stone').question!.answer[language].match(/(?:gaps of|separaciones de) ([0-9.,]+), ([0-9.,]+) (?:and|y) ([0-9.,]+) m/)!;
+      const m = card('iwave-stone').question!.answer[language].match(
+        /(?:gaps of|separaciones de) ([0-9.,]+), ([0-9.,]+) (?:and|y) ([0-9.,]+) m/,
+      )!;
       const said = m.slice(1).map((s) => Number(s.replace(',', '.')));
       expect(said.length).toBe(gaps.length);
       said.forEach((v, i) => expect(Math.abs(v - gaps[i])).toBeLessThan(0.05));

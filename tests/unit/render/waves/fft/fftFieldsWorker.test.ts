@@ -9,7 +9,10 @@ import type { CascadeFields } from '../../../../../src/sim/waves/fft/fftOcean';
 /** The Worker's script run in node against a stand-in for its global scope, with fake timers. */
 async function startWorker() {
   const replies: { reply: FieldsReply; transfer: Transferable[] }[] = [];
-  const scope: { onmessage: ((event: MessageEvent<FieldsRequest>) => void) | null; postMessage(reply: FieldsReply, transfer: Transferable[]): void } = {
+  const scope: {
+    onmessage: ((event: MessageEvent<FieldsRequest>) => void) | null;
+    postMessage(reply: FieldsReply, transfer: Transferable[]): void;
+  } = {
     onmessage: null,
     postMessage: (reply, transfer) => replies.push({ reply, transfer }),
   };
@@ -90,7 +93,10 @@ describe('WorkerFieldSource: one request in flight, the newest waiting, the arra
     vi.stubGlobal('location', { origin: new URL(import.meta.url).origin });
     const delivered: { sea: unknown; time: number; fields: CascadeFields[] }[] = [];
     const spent: number[] = [];
-    const source = new WorkerFieldSource((sea, time, fields) => delivered.push({ sea, time, fields }), (ms) => spent.push(ms));
+    const source = new WorkerFieldSource(
+      (sea, time, fields) => delivered.push({ sea, time, fields }),
+      (ms) => spent.push(ms),
+    );
     const worker = FakeWorker.last;
     if (!worker) throw new Error('No Worker made.');
     expect(worker.url.pathname.endsWith('/fftFieldsWorker.ts')).toBe(true);

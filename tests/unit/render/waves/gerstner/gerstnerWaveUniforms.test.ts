@@ -5,7 +5,14 @@ import { gerstnerSea } from '../../../../../src/sim/waves/gerstner/gerstnerSpect
 import { gerstnerTimePhases } from '../../../../../src/sim/waves/gerstner/gerstnerWaves';
 import { cosineSquared, piersonMoskowitz } from '../../../../support/testSeas';
 
-const sea = gerstnerSea({ count: 37, seed: 4, spectrum: piersonMoskowitz(9).spectrum, spreading: cosineSquared, windDirection: 2, steepness: 0.7 });
+const sea = gerstnerSea({
+  count: 37,
+  seed: 4,
+  spectrum: piersonMoskowitz(9).spectrum,
+  spreading: cosineSquared,
+  windDirection: 2,
+  steepness: 0.7,
+});
 
 describe('GerstnerWaveUniforms', () => {
   it('uploads the wave table once and zeroes the unused slots', () => {

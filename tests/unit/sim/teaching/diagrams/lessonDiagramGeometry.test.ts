@@ -55,7 +55,10 @@ describe('every lesson diagram', () => {
     expect(Object.keys(LESSON_DIAGRAMS).length).toBeGreaterThanOrEqual(8);
     const kinds = new Set<string>();
     for (const [id, draw] of Object.entries(LESSON_DIAGRAMS)) {
-      expect(LESSONS.some((l) => l.id === id), id).toBe(true);
+      expect(
+        LESSONS.some((l) => l.id === id),
+        id,
+      ).toBe(true);
       const diagram = draw(lessonParams(id), 6);
       kinds.add(diagram.kind);
       for (const line of diagram.lines) for (const p of line.points) expect(p.every(Number.isFinite), `${id} line`).toBe(true);
@@ -63,7 +66,10 @@ describe('every lesson diagram', () => {
         expect(Number.isFinite(m.value) && Number.isFinite(m.x) && Number.isFinite(m.y), `${id} ${m.id}`).toBe(true);
         for (const language of ['en', 'es'] as const) expect(markLabel(diagram, m, language)).not.toMatch(/\{[vi]\}/);
       }
-      expect(diagram.marks.some((m) => m.id === diagram.headline), id).toBe(true);
+      expect(
+        diagram.marks.some((m) => m.id === diagram.headline),
+        id,
+      ).toBe(true);
     }
     expect(kinds.size).toBeGreaterThanOrEqual(9);
   });
@@ -157,7 +163,9 @@ describe('orbits: Gerstner and Airy', () => {
     expect(width / scale).toBeCloseTo(2 * wave.horizontal, 2);
     expect(height / scale).toBeCloseTo(2 * wave.amplitude, 2);
     const k = 2 * Math.PI * Math.hypot(wave.cx, wave.cz);
-    ORBIT_DEPTHS.forEach((depth, i) => expect(mark(d, 'decay', i).value).toBeCloseTo(100 * Math.exp(-k * depth * mark(d, 'wavelength').value), 9));
+    ORBIT_DEPTHS.forEach((depth, i) =>
+      expect(mark(d, 'decay', i).value).toBeCloseTo(100 * Math.exp(-k * depth * mark(d, 'wavelength').value), 9),
+    );
     expect(mark(d, 'decay', 2).value).toBeCloseTo(100 * Math.exp(-Math.PI), 6);
   });
 
@@ -165,7 +173,11 @@ describe('orbits: Gerstner and Airy', () => {
     const gentle = orbitDiagram(lessonParams('gerstner-gentle'));
     const steep = orbitDiagram(lessonParams('gerstner-gentle', { gerstnerSteepness: 1 }));
     expect(mark(steep, 'steepness').value).toBeGreaterThan(mark(gentle, 'steepness').value);
-    expect(mark(steep, 'steepness').value).toBeCloseTo(dominantGerstnerWave(lessonParams('gerstner-gentle', { gerstnerSteepness: 1 })).horizontal / dominantGerstnerWave(lessonParams('gerstner-gentle', { gerstnerSteepness: 1 })).amplitude, 12);
+    expect(mark(steep, 'steepness').value).toBeCloseTo(
+      dominantGerstnerWave(lessonParams('gerstner-gentle', { gerstnerSteepness: 1 })).horizontal /
+        dominantGerstnerWave(lessonParams('gerstner-gentle', { gerstnerSteepness: 1 })).amplitude,
+      12,
+    );
     expect(mark(gentle, 'steepness').value).not.toBeCloseTo(mark(steep, 'steepness').value, 2);
   });
 });
@@ -274,7 +286,9 @@ describe('the Kelvin wedge', () => {
       const [x, y] = wedge.points[1];
       expect(Math.atan2(Math.abs(y), -x)).toBeCloseTo(KELVIN_HALF_ANGLE, 12);
     }
-    const crestAngles = d.lines.filter((l) => l.role === 'main').flatMap((l) => l.points.filter(([x]) => x < 0).map(([x, y]) => Math.atan2(Math.abs(y), -x)));
+    const crestAngles = d.lines
+      .filter((l) => l.role === 'main')
+      .flatMap((l) => l.points.filter(([x]) => x < 0).map(([x, y]) => Math.atan2(Math.abs(y), -x)));
     expect(Math.max(...crestAngles)).toBeCloseTo(KELVIN_HALF_ANGLE, 3);
   });
 

@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { breakingMeasure, breakingThreshold, jacobianCovariance, jacobianDeterminant, jacobianMinEigenvalue } from '../../../../../src/sim/waves/fft/breaking';
+import {
+  breakingMeasure,
+  breakingThreshold,
+  jacobianCovariance,
+  jacobianDeterminant,
+  jacobianMinEigenvalue,
+} from '../../../../../src/sim/waves/fft/breaking';
 import { upperNormalQuantile, whitecapCoverage } from '../../../../../src/sim/waves/fft/whitecaps';
 import { FftOcean } from '../../../../../src/sim/waves/fft/fftOcean';
 import { DEFAULT_SEA_STATE } from '../../../../../src/sim/waves/spectra/seaState';
@@ -31,7 +37,7 @@ describe('the breaking measure: min(det J, λ_min J) of the choppy map (Dupuy & 
   });
 });
 
-describe('the breaking threshold from the sea\'s Jacobian statistics', { timeout: 120_000 }, () => {
+describe("the breaking threshold from the sea's Jacobian statistics", { timeout: 120_000 }, () => {
   const sea = { ...DEFAULT_SEA_STATE, windSpeed: 15, fftSize: 64 as const };
   const ocean = new FftOcean(sea);
   ocean.setTime(10);
@@ -43,7 +49,12 @@ describe('the breaking threshold from the sea\'s Jacobian statistics', { timeout
     tiles.forEach((tile, c) => {
       const cov = jacobianCovariance([tile], sea.choppiness);
       const single = new FftOcean(sea);
-      single.adoptFields(10, ocean.fields.map((f, k) => (k === c ? f : { displacement: new Float64Array(f.displacement.length), derivatives: new Float64Array(f.derivatives.length) })));
+      single.adoptFields(
+        10,
+        ocean.fields.map((f, k) =>
+          k === c ? f : { displacement: new Float64Array(f.displacement.length), derivatives: new Float64Array(f.derivatives.length) },
+        ),
+      );
       const random = seededRandom(3 + c);
       const n = 40_000;
       let xx = 0;
@@ -58,7 +69,9 @@ describe('the breaking threshold from the sea\'s Jacobian statistics', { timeout
         xz += jxz * jxz;
         xxzz += jxx * jzz;
       }
-      console.log(`[oceano] cascade ${c}: var Jxx ${(xx / n).toExponential(3)} vs ${cov[0].toExponential(3)}, Jzz ${(zz / n).toExponential(3)} vs ${cov[4].toExponential(3)}, Jxz ${(xz / n).toExponential(3)} vs ${cov[8].toExponential(3)}`);
+      console.log(
+        `[oceano] cascade ${c}: var Jxx ${(xx / n).toExponential(3)} vs ${cov[0].toExponential(3)}, Jzz ${(zz / n).toExponential(3)} vs ${cov[4].toExponential(3)}, Jxz ${(xz / n).toExponential(3)} vs ${cov[8].toExponential(3)}`,
+      );
       expect(Math.abs(xx / n / cov[0] - 1)).toBeLessThan(0.03);
       expect(Math.abs(zz / n / cov[4] - 1)).toBeLessThan(0.03);
       expect(Math.abs(xz / n / cov[8] - 1)).toBeLessThan(0.03);
@@ -100,7 +113,9 @@ describe('the breaking threshold from the sea\'s Jacobian statistics', { timeout
       }
       const share = breaking / area;
       const oldShare = oldBreaking / area;
-      console.log(`[oceano] ${windSpeed} m/s: Monahan ${(100 * coverage).toFixed(2)} %, breaking measure below threshold ${(100 * share).toFixed(2)} %, old det threshold ${(100 * oldShare).toFixed(2)} %`);
+      console.log(
+        `[oceano] ${windSpeed} m/s: Monahan ${(100 * coverage).toFixed(2)} %, breaking measure below threshold ${(100 * share).toFixed(2)} %, old det threshold ${(100 * oldShare).toFixed(2)} %`,
+      );
       expect(Math.abs(share / coverage - 1)).toBeLessThan(0.15);
       if (windSpeed === 20) expect(Math.abs(oldShare / coverage - 1)).toBeGreaterThan(0.15);
     }

@@ -138,14 +138,16 @@ describe('the synthesised spectral sea', { timeout: 600_000 }, () => {
       // measured: 3 m/s → 1.02 ωp, 10 m/s → 1.02 ωp
       expect(Math.abs(measured / peak - 1)).toBeLessThan(0.1);
       if (u === 3) {
-        const wrong = seas.map((tiles) => tiles.map((tile) => {
-          const dk = (2 * Math.PI) / tile.cascade.size;
-          const omega = tile.omega.map((_, i) => {
-            const k = Math.hypot(signedIndex(i % tile.n, tile.n), signedIndex(Math.floor(i / tile.n), tile.n)) * dk;
-            return quantiseFrequency(Math.sqrt(GRAVITY * k * (1 + k * k)), REPEAT_PERIOD);
-          });
-          return { ...tile, omega };
-        }));
+        const wrong = seas.map((tiles) =>
+          tiles.map((tile) => {
+            const dk = (2 * Math.PI) / tile.cascade.size;
+            const omega = tile.omega.map((_, i) => {
+              const k = Math.hypot(signedIndex(i % tile.n, tile.n), signedIndex(Math.floor(i / tile.n), tile.n)) * dk;
+              return quantiseFrequency(Math.sqrt(GRAVITY * k * (1 + k * k)), REPEAT_PERIOD);
+            });
+            return { ...tile, omega };
+          }),
+        );
         const wrongPeak = temporalPeak(wrong, peak);
         console.log('wrong dispersion: temporal peak / ωp', wrongPeak / peak);
         expect(Math.abs(wrongPeak / peak - 1)).toBeGreaterThan(0.1);
@@ -241,7 +243,8 @@ describe('wrapTexel', () => {
         const i = Math.floor((random() - 0.5) * 2 * scale);
         expect(wrapTexel(i, n)).toBe(((i % n) + n) % n);
       }
-      for (const i of [0, -1, n - 1, n, -n, 2147483647, -2147483648, 2147483648, -2147483649]) expect(wrapTexel(i, n)).toBe(((i % n) + n) % n);
+      for (const i of [0, -1, n - 1, n, -n, 2147483647, -2147483648, 2147483648, -2147483649])
+        expect(wrapTexel(i, n)).toBe(((i % n) + n) % n);
     }
   });
 });

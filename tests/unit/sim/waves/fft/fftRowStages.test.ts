@@ -79,10 +79,17 @@ describe('the live row through the FFT’s stages', () => {
     const drawn = Array.from({ length: n }, (_, p) => last[2 * p]);
     expect(relativeError(drawn, heights)).toBeLessThan(1e-6);
     // Real heights: the imaginary part is rounding.
-    expect(Math.max(...Array.from({ length: n }, (_, p) => Math.abs(last[2 * p + 1])))).toBeLessThan(1e-9 * Math.max(...heights.map(Math.abs)));
+    expect(Math.max(...Array.from({ length: n }, (_, p) => Math.abs(last[2 * p + 1])))).toBeLessThan(
+      1e-9 * Math.max(...heights.map(Math.abs)),
+    );
     // And the intermediate stages are not yet the heights.
     const middle = live.stages[live.stages.length - 2];
-    expect(relativeError(Array.from({ length: n }, (_, p) => middle[2 * p]), heights)).toBeGreaterThan(1e-2);
+    expect(
+      relativeError(
+        Array.from({ length: n }, (_, p) => middle[2 * p]),
+        heights,
+      ),
+    ).toBeGreaterThan(1e-2);
   });
 
   it('control: one twiddle conjugated in the last stage no longer gives the heights', () => {

@@ -37,7 +37,11 @@ describe('FftWaveModel: when the twin is exact', () => {
     // The Worker's reply arrives: the fields of an FftOcean of the same sea at that time.
     const worker = new FftOcean(model.sea);
     worker.setTime(10.016);
-    model.receive(model.sea, 10.016, worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));
+    model.receive(
+      model.sea,
+      10.016,
+      worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })),
+    );
     expect(model.height(1, 2, 10.016)).toBe(reference.height(1, 2, 10.016));
     // Negative control of the lag: the lagged answer really is another time's surface.
     expect(Math.abs(lagged - reference.height(1, 2, 10.016))).toBeGreaterThan(1e-4);
@@ -65,7 +69,11 @@ describe('FftWaveModel: when the twin is exact', () => {
       expect(requests.at(-1), `frame ${frame}`).toBe(clock.time);
       // The Worker answers before the next frame.
       worker.setTime(clock.time);
-      model.receive(model.sea, clock.time, worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })));
+      model.receive(
+        model.sea,
+        clock.time,
+        worker.fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() })),
+      );
     }
   });
 
@@ -82,7 +90,8 @@ describe('FftWaveModel: when the twin is exact', () => {
 });
 
 describe('FftWaveModel: the Worker refills the arrays the model hands back', () => {
-  const copy = (fields: readonly CascadeFields[]) => fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() }));
+  const copy = (fields: readonly CascadeFields[]) =>
+    fields.map((f) => ({ displacement: f.displacement.slice(), derivatives: f.derivatives.slice() }));
 
   it('hands back only arrays it no longer reads: the replaced fields, or a refused reply', () => {
     const model = new FftWaveModel(params);
@@ -150,7 +159,10 @@ describe('FftWaveModel: the Worker refills the arrays the model hands back', () 
     expect(same(copyFields(ocean.fields, null)[2].derivatives, ocean.fields[2].derivatives)).toBe(true);
     // Arrays of the right sizes but in separate buffers (the main thread's first fields, computed
     // by its own FftOcean) are not reused: the reply would carry six buffers again, for good.
-    const separate = ocean.fields.map((f) => ({ displacement: new Float64Array(f.displacement.length), derivatives: new Float64Array(f.derivatives.length) }));
+    const separate = ocean.fields.map((f) => ({
+      displacement: new Float64Array(f.displacement.length),
+      derivatives: new Float64Array(f.derivatives.length),
+    }));
     const repacked = copyFields(ocean.fields, separate);
     expect(repacked === separate).toBe(false);
     expect(fieldBuffers(repacked)).toHaveLength(1);
@@ -159,11 +171,14 @@ describe('FftWaveModel: the Worker refills the arrays the model hands back', () 
   });
 });
 
-describe('FftWaveModel: the frame loop\'s height question', () => {
-  it('is the inversion\'s height bit for bit, reading only the channels it uses (FftOcean.heightAt)', () => {
+describe("FftWaveModel: the frame loop's height question", () => {
+  it("is the inversion's height bit for bit, reading only the channels it uses (FftOcean.heightAt)", () => {
     // A choppy gale (the inversion's slowest convergence) and a calm sea, at t = 10 and 10⁶.
     const random = seededRandom(41);
-    for (const sea of [{ ...params, windSpeed: 20, choppiness: 1.2 }, { ...params, windSpeed: 5 }]) {
+    for (const sea of [
+      { ...params, windSpeed: 20, choppiness: 1.2 },
+      { ...params, windSpeed: 5 },
+    ]) {
       const model = new FftWaveModel(sea);
       for (const t of [10, 1e6 + 0.37]) {
         for (let i = 0; i < 200; i++) {

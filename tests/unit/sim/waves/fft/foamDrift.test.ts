@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { driftedMemoryStep, foamDriftStep, foamDriftTexels, foamDriftVelocity, WIND_DRIFT_SHARE } from '../../../../../src/sim/waves/fft/foamDrift';
+import {
+  driftedMemoryStep,
+  foamDriftStep,
+  foamDriftTexels,
+  foamDriftVelocity,
+  WIND_DRIFT_SHARE,
+} from '../../../../../src/sim/waves/fft/foamDrift';
 import { FOAM_POTENTIAL_MAX, FOAM_STEP_SECONDS, foamSteps } from '../../../../../src/sim/waves/fft/foamMemory';
 import { foamRemaining } from '../../../../../src/sim/waves/fft/whitecaps';
 import { seededRandom } from '../../../../../src/sim/noise/integerHash';
@@ -12,7 +18,7 @@ function freshAt(k: number): Float32Array {
   const random = seededRandom(5000 + k);
   return Float32Array.from({ length: N * N }, () => {
     const r = random();
-    return r < 0.97 ? 0 : FOAM_POTENTIAL_MAX * (r - 0.97) / 0.03;
+    return r < 0.97 ? 0 : (FOAM_POTENTIAL_MAX * (r - 0.97)) / 0.03;
   });
 }
 
@@ -70,7 +76,14 @@ describe('the foam left behind drifts with the surface (src/sim/waves/fft/foamDr
     const velocity: [number, number] = [0.6, 0];
     let memory: Float32Array = previous;
     const steps = 10;
-    for (let k = 1; k <= steps; k++) memory = driftedMemoryStep(memory, new Float32Array(N * N), N, foamRemaining(FOAM_STEP_SECONDS, 2.5), foamDriftStep(velocity, TEXEL, k));
+    for (let k = 1; k <= steps; k++)
+      memory = driftedMemoryStep(
+        memory,
+        new Float32Array(N * N),
+        N,
+        foamRemaining(FOAM_STEP_SECONDS, 2.5),
+        foamDriftStep(velocity, TEXEL, k),
+      );
     const at = memory.findIndex((p) => p > 0);
     const moved = (at % N) - 4;
     expect(Math.abs(moved * TEXEL - velocity[0] * steps * FOAM_STEP_SECONDS)).toBeLessThanOrEqual(TEXEL / 2);

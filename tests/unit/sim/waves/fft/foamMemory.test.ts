@@ -1,12 +1,19 @@
 import { describe, expect, it } from 'vitest';
-import { FOAM_POTENTIAL_MAX, FOAM_STEP_SECONDS, foamLatticeIndex, foamMemorySeconds, foamSteps, rememberFoam } from '../../../../../src/sim/waves/fft/foamMemory';
+import {
+  FOAM_POTENTIAL_MAX,
+  FOAM_STEP_SECONDS,
+  foamLatticeIndex,
+  foamMemorySeconds,
+  foamSteps,
+  rememberFoam,
+} from '../../../../../src/sim/waves/fft/foamMemory';
 import { foamRemaining } from '../../../../../src/sim/waves/fft/whitecaps';
 import { seededRandom } from '../../../../../src/sim/noise/integerHash';
 
 /** One texel's fresh potential at lattice index k: seeded, a fold now and then (values 0–3). */
 function freshAt(k: number): number {
   const r = seededRandom(1000 + k)();
-  return r < 0.7 ? 0 : FOAM_POTENTIAL_MAX * (r - 0.7) / 0.3;
+  return r < 0.7 ? 0 : (FOAM_POTENTIAL_MAX * (r - 0.7)) / 0.3;
 }
 
 /** A texel's memory driven by a frame loop: each frame asks foamSteps, steps those indices, draws memory × fade. */
@@ -17,7 +24,8 @@ function drawnAt(frameTimes: readonly number[], tau: number): number {
   for (const time of frameTimes) {
     const steps = foamSteps(done, time, tau);
     if (steps.fresh) memory = 0;
-    for (let k = steps.first; k <= steps.last; k++) memory = rememberFoam(memory, freshAt(k), k === steps.first && steps.fresh ? 0 : foamRemaining(FOAM_STEP_SECONDS, tau));
+    for (let k = steps.first; k <= steps.last; k++)
+      memory = rememberFoam(memory, freshAt(k), k === steps.first && steps.fresh ? 0 : foamRemaining(FOAM_STEP_SECONDS, tau));
     done = steps.last;
     drawn = memory * steps.fade;
   }

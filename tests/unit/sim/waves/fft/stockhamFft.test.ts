@@ -1,6 +1,12 @@
 import FFT from 'fft.js';
 import { describe, expect, it } from 'vitest';
-import { stockhamInverse, stockhamMixedInverse, stockhamRadices, stockhamRadixStage, stockhamStage } from '../../../../../src/sim/waves/fft/stockhamFft';
+import {
+  stockhamInverse,
+  stockhamMixedInverse,
+  stockhamRadices,
+  stockhamRadixStage,
+  stockhamStage,
+} from '../../../../../src/sim/waves/fft/stockhamFft';
 import { seededRandom } from '../../../../../src/sim/noise/integerHash';
 
 describe('Stockham radix-2 inverse FFT (the GPU pass’s indexing)', () => {

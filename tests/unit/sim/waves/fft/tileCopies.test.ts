@@ -44,7 +44,9 @@ describe('the far tiles’ copies (src/sim/waves/fft/tileCopies.ts)', () => {
       const norm = Math.hypot(1 - share, share);
       return [(1 - share) / norm, share / norm];
     });
-    console.log(`[oceano] repeat left by the copies: turned ${turned.toFixed(4)}, one or the other ${oneOrOther.toFixed(3)} (${pairs.length} pairs)`);
+    console.log(
+      `[oceano] repeat left by the copies: turned ${turned.toFixed(4)}, one or the other ${oneOrOther.toFixed(3)} (${pairs.length} pairs)`,
+    );
     expect(Math.abs(turned)).toBeLessThan(0.01);
     expect(oneOrOther).toBeGreaterThan(0.4);
   });

@@ -108,7 +108,10 @@ describe('windrows (src/sim/waves/fft/windrows.ts)', () => {
     const origin: [number, number] = [1.0e6 + 3.3, -2.0e6 + 0.7];
     const later = windrowLattice(SEA, origin[0], origin[1], t);
     const start = windrowLattice(SEA, 0, 0, 0);
-    for (const [x, z] of [[1.0e6 + 10, -2.0e6 - 4], [1.0e6 - 31.5, -2.0e6 + 17.25]]) {
+    for (const [x, z] of [
+      [1.0e6 + 10, -2.0e6 - 4],
+      [1.0e6 - 31.5, -2.0e6 + 17.25],
+    ]) {
       const carried = shareAt(later, origin[0], origin[1], x + vx * t, z + vz * t, seed);
       expect(carried).toBeCloseTo(shareAt(start, 0, 0, x, z, seed), 6);
     }

@@ -13,8 +13,8 @@ function trochoidByCurve(amplitude: number, k: number, horizontal: number, steps
   let sum = 0;
   let length = 0;
   for (let i = 0; i < steps; i++) {
-    const p0 = (i / steps) * (2 * Math.PI) / k;
-    const p1 = ((i + 1) / steps) * (2 * Math.PI) / k;
+    const p0 = ((i / steps) * (2 * Math.PI)) / k;
+    const p1 = (((i + 1) / steps) * (2 * Math.PI)) / k;
     const dx = p1 - horizontal * Math.sin(k * p1) - (p0 - horizontal * Math.sin(k * p0));
     const dy = amplitude * (Math.cos(k * p1) - Math.cos(k * p0));
     sum += (dy * dy) / dx;
@@ -60,7 +60,14 @@ describe('Gerstner’s resolved slopes', () => {
 
   // Control: each wave’s peak slope squared, (Ak)², fails.
   it('a PM sea of 32 trochoids (Q = 1) has the sum of theirs, measured on its surface, within 3 %', () => {
-    const waves = gerstnerSea({ count: 32, seed: 7, spectrum: piersonMoskowitz(10).spectrum, spreading: cosineSquared, windDirection: 0.3, steepness: 1 });
+    const waves = gerstnerSea({
+      count: 32,
+      seed: 7,
+      spectrum: piersonMoskowitz(10).spectrum,
+      spreading: cosineSquared,
+      windDirection: 0.3,
+      steepness: 1,
+    });
     const surface = measuredOnSurface(waves, 600);
     expect(Math.abs(gerstnerSlopeVariance(waves) / surface - 1)).toBeLessThan(0.03);
     const peak = waves.reduce((sum, w) => sum + (w.amplitude * 2 * Math.PI * Math.hypot(w.cx, w.cz)) ** 2, 0);
@@ -69,7 +76,14 @@ describe('Gerstner’s resolved slopes', () => {
 
   // Control: the sine waves’ (Ak)²/2, 2 % off, fails.
   it('4 steep trochoids (Σ QkA = 1, as gerstner-steepness) too, within 1 %', () => {
-    const waves = gerstnerSea({ count: 4, seed: 1, spectrum: piersonMoskowitz(20).spectrum, spreading: cosineSquared, windDirection: 0.3, steepness: 1 });
+    const waves = gerstnerSea({
+      count: 4,
+      seed: 1,
+      spectrum: piersonMoskowitz(20).spectrum,
+      spreading: cosineSquared,
+      windDirection: 0.3,
+      steepness: 1,
+    });
     const surface = measuredOnSurface(waves, 300);
     const error = Math.abs(gerstnerSlopeVariance(waves) / surface - 1);
     expect(error).toBeLessThan(0.01);

@@ -50,7 +50,7 @@ function crestToTroughCurvature(waves: readonly GerstnerWave[]): number {
 }
 
 describe('the gerstner-steepness preset sharpens crests as Q goes from 0.2 to 1', () => {
-  it('is the gentle preset\'s sea at a higher Q, nothing else changed', () => {
+  it("is the gentle preset's sea at a higher Q, nothing else changed", () => {
     const { gerstnerSteepness: steep, ...steepRest } = PRESETS['gerstner-steepness'].params;
     const { gerstnerSteepness: gentle, ...gentleRest } = PRESETS['gerstner-gentle'].params;
     expect([gentle, steep]).toEqual([0.2, 1]);

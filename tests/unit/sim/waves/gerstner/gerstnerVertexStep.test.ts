@@ -3,7 +3,14 @@ import { defaultParams } from '../../../../../src/sim/params/params';
 import { gerstnerWavesFor } from '../../../../../src/sim/waves/gerstner/gerstnerLiveModel';
 import { gerstnerFinestVertexStep, STEEP_SLOPE } from '../../../../../src/sim/waves/gerstner/gerstnerVertexStep';
 import type { GerstnerWave } from '../../../../../src/sim/waves/gerstner/gerstnerWaves';
-import { BAND_STEPS, BASE_STEP, CHUNK_QUADS, MAX_REFINEMENT, nearBandRefinement, refinedEdgeStep } from '../../../../../src/sim/lod/lodBands';
+import {
+  BAND_STEPS,
+  BASE_STEP,
+  CHUNK_QUADS,
+  MAX_REFINEMENT,
+  nearBandRefinement,
+  refinedEdgeStep,
+} from '../../../../../src/sim/lod/lodBands';
 import { snappedEdge } from '../../../../../src/sim/lod/edgeSnap';
 import { PRESETS } from '../../../../../src/app/url/presets';
 

@@ -2,7 +2,14 @@ import { describe, expect, it } from 'vitest';
 import { generateRippleHeightmaps } from '../../../../../src/sim/noise/perlinNoise';
 import { defaultParams } from '../../../../../src/sim/params/params';
 import { heightmapSlopeVariance, seedSlopeVariance, swellSlopeVariance } from '../../../../../src/sim/waves/seed/seedSlopes';
-import { HEIGHTMAP_SIZE, NORMAL_DELTA, RIPPLE_TILE_SIZE, surfaceNormal, surfaceStateAt, type SurfaceState } from '../../../../../src/sim/waves/seed/seedSurface';
+import {
+  HEIGHTMAP_SIZE,
+  NORMAL_DELTA,
+  RIPPLE_TILE_SIZE,
+  surfaceNormal,
+  surfaceStateAt,
+  type SurfaceState,
+} from '../../../../../src/sim/waves/seed/seedSurface';
 import { SeedWaveModel } from '../../../../../src/sim/waves/seed/seedWaveModel';
 
 /**
@@ -32,13 +39,16 @@ describe('the seed sea’s resolved slopes', () => {
     const extent = (16 * 2 * Math.PI) / state.swellFrequency;
     const brute = measured(state, maps, extent, 400);
     expect(swellSlopeVariance(state.swellAmplitude, state.swellFrequency) / brute).toBeCloseTo(1, 2);
-    expect(Math.abs(((state.swellAmplitude * state.swellFrequency) ** 2 / 4) * 1.6061 / brute - 1)).toBeGreaterThan(0.3);
+    expect(Math.abs((((state.swellAmplitude * state.swellFrequency) ** 2 / 4) * 1.6061) / brute - 1)).toBeGreaterThan(0.3);
   });
 
   // At blends 0–1; the two maps’ slopes correlate a little at some offsets (up to 9 % at t = 20 s). Control:
   // linear weights fail at mid-blend.
   it('the ripples’ follows each map’s variance and the blend’s squared weights, within 10 %', () => {
-    const variances: [number, number] = [heightmapSlopeVariance(maps[0], RIPPLE_TILE_SIZE, NORMAL_DELTA), heightmapSlopeVariance(maps[1], RIPPLE_TILE_SIZE, NORMAL_DELTA)];
+    const variances: [number, number] = [
+      heightmapSlopeVariance(maps[0], RIPPLE_TILE_SIZE, NORMAL_DELTA),
+      heightmapSlopeVariance(maps[1], RIPPLE_TILE_SIZE, NORMAL_DELTA),
+    ];
     const ripplesOnly = { ...params, swellAmplitude: 0 };
     let controlWorst = 0;
     // rippleBlend = ½ − ½ cos(0.25 t): t = 0, 2π, 4π/… gives w = 0, ½, 1 and between.

@@ -82,7 +82,10 @@ describe('heightmap sampling', () => {
   });
 
   it('wraps: one tile further, or negative, is the same place', () => {
-    for (const [x, z] of [[1.3, 2.2], [7.7, 9.1]]) {
+    for (const [x, z] of [
+      [1.3, 2.2],
+      [7.7, 9.1],
+    ]) {
       expect(sampleHeightmap(map, 10, x + 10, z)).toBeCloseTo(sampleHeightmap(map, 10, x, z), 12);
       expect(sampleHeightmap(map, 10, x - 30, z - 10)).toBeCloseTo(sampleHeightmap(map, 10, x, z), 12);
     }

@@ -66,7 +66,11 @@ describe('WaveBinding', () => {
     const b = fakeView('b', { uB: { value: 2 } });
     const binding = new WaveBinding(a);
     const material = binding.attach(
-      new ShaderMaterial({ vertexShader: '#include <oceano_waves>\nvoid main() {}', fragmentShader: 'void main() {}', uniforms: { uOwn: { value: 0 } } }),
+      new ShaderMaterial({
+        vertexShader: '#include <oceano_waves>\nvoid main() {}',
+        fragmentShader: 'void main() {}',
+        uniforms: { uOwn: { value: 0 } },
+      }),
     );
     expect(material.vertexShader).toBe('float wave_a;\nvoid main() {}');
     expect(Object.keys(material.uniforms).sort()).toEqual(['uA', 'uOwn']);

@@ -1,8 +1,26 @@
 import { describe, expect, it } from 'vitest';
-import { angularFrequency, GRAVITY, groupVelocity, quantiseFrequency, timeInPeriod, waveNumber } from '../../../../../src/sim/waves/dispersion';
-import { cos2sNormalisation, cos2sSpreading, hasselmannSpreading, hasselmannSpreadingExponent, logGamma } from '../../../../../src/sim/waves/spectra/directionalSpreading';
+import {
+  angularFrequency,
+  GRAVITY,
+  groupVelocity,
+  quantiseFrequency,
+  timeInPeriod,
+  waveNumber,
+} from '../../../../../src/sim/waves/dispersion';
+import {
+  cos2sNormalisation,
+  cos2sSpreading,
+  hasselmannSpreading,
+  hasselmannSpreadingExponent,
+  logGamma,
+} from '../../../../../src/sim/waves/spectra/directionalSpreading';
 import { jonswap, jonswapM0Approx, jonswapShape, jonswapWithShape } from '../../../../../src/sim/waves/spectra/jonswap';
-import { piersonMoskowitz, piersonMoskowitzM0, piersonMoskowitzPeak, windAt19_5 } from '../../../../../src/sim/waves/spectra/piersonMoskowitz';
+import {
+  piersonMoskowitz,
+  piersonMoskowitzM0,
+  piersonMoskowitzPeak,
+  windAt19_5,
+} from '../../../../../src/sim/waves/spectra/piersonMoskowitz';
 import { phillips, phillipsM0, phillipsPeak } from '../../../../../src/sim/waves/spectra/phillips';
 import { DEFAULT_SEA_STATE, windVector, type SeaState } from '../../../../../src/sim/waves/spectra/seaState';
 import { directionalSpectrum, frequencySpectrum } from '../../../../../src/sim/waves/spectra/waveSpectrum';
@@ -47,7 +65,12 @@ describe('dispersion ω² = g k tanh(k h)', () => {
   });
 
   it('group velocity is dω/dk (central difference)', () => {
-    for (const [k, h] of [[0.05, 10], [0.3, 4], [1, Infinity], [0.02, 200]]) {
+    for (const [k, h] of [
+      [0.05, 10],
+      [0.3, 4],
+      [1, Infinity],
+      [0.02, 200],
+    ]) {
       const e = 1e-6 * k;
       const numeric = (angularFrequency(k + e, h) - angularFrequency(k - e, h)) / (2 * e);
       expect(groupVelocity(k, h)).toBeCloseTo(numeric, 6);
@@ -110,7 +133,11 @@ describe('JONSWAP (Hasselmann et al. 1973)', { timeout: 60_000 }, () => {
     expect(developed.alpha).toBeGreaterThan(0.006);
     expect(developed.alpha).toBeLessThan(0.011);
   });
-  for (const [u, fetch] of [[10, 20_000], [20, 20_000], [15, 100_000]]) {
+  for (const [u, fetch] of [
+    [10, 20_000],
+    [20, 20_000],
+    [15, 100_000],
+  ]) {
     // The closed form for γ = 1, the DNV approximation for γ = 3.3.
     it(`peaks at ωp and m₀ matches its closed form and DNV's, U = ${u}, F = ${fetch / 1000} km`, () => {
       const { alpha, peak } = jonswapShape(u, fetch);
@@ -211,7 +238,9 @@ describe('the spectral sea with Hasselmann spreading', () => {
     const m0 = piersonMoskowitzM0(15);
     expect(Math.abs(cos2s.total / m0 - 1)).toBeLessThan(0.01);
     expect(Math.abs(hasselmann.total / m0 - 1)).toBeLessThan(0.01);
-    console.log(`[oceano] m₀ ${m0.toFixed(4)} m²: cos-2s ${cos2s.total.toFixed(4)}, Hasselmann ${hasselmann.total.toFixed(4)}; short waves > 60° off the wind: ${cos2s.crossWind.toExponential(2)} against ${hasselmann.crossWind.toExponential(2)} m²`);
+    console.log(
+      `[oceano] m₀ ${m0.toFixed(4)} m²: cos-2s ${cos2s.total.toFixed(4)}, Hasselmann ${hasselmann.total.toFixed(4)}; short waves > 60° off the wind: ${cos2s.crossWind.toExponential(2)} against ${hasselmann.crossWind.toExponential(2)} m²`,
+    );
     // Measured: both within 0.04 % of m₀; 6.6× the cross-wind energy with Hasselmann.
     expect(hasselmann.crossWind).toBeGreaterThan(4 * cos2s.crossWind);
   });
