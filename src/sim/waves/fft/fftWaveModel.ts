@@ -227,9 +227,7 @@ export class FftWaveModel implements LiveWaveModel {
   sampleMany(points: ArrayLike<number>, time: number, out: { [i: number]: number }): void {
     const start = this.now();
     const at = this.fieldsFor(time, true);
-    const count = points.length >> 1;
-    for (let i = 0; i < count; i++)
-      this.ocean.sampleInto(points[2 * i], points[2 * i + 1], at, INVERSION_STEPS, INVERSION_TOLERANCE, out, 4 * i);
+    this.ocean.sampleManyInto(points, at, INVERSION_STEPS, INVERSION_TOLERANCE, out);
     this.busyMs += this.now() - start;
   }
 
