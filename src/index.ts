@@ -8,5 +8,5 @@ export { OceanUnderwaterPass, type OceanUnderwaterPassOptions } from './render/u
 export type { EncodedScene } from './render/underwater/underwaterPost';
 export { defaultParams, paramDefs, validateParams, type OceanParams, type ParamKey } from './sim/params/params';
 export type { SurfaceSample, LiveWaveModel, WavesChoice } from './sim/waves/waveModel';
-export type { SurfacePoints, SurfaceSamples } from './sim/waves/surfaceBatch';
+export type { SampleSurfacesOptions, SurfacePoints, SurfaceSamples } from './sim/waves/surfaceBatch';
 export type { Submersion } from './sim/underwater/snellWindow';

@@ -396,22 +396,30 @@ describe('the npm package', () => {
         await tab.waitForFunction(() => (window as unknown as { buoys: { ocean: { time: number } } }).buoys.ocean.time > 0.5);
         const png = PNG.sync.read(Buffer.from(await tab.screenshot({ type: 'png' })));
         if (SHOTS && html === page) writeFileSync(SHOTS, PNG.sync.write(png));
-        // Between two frames: each buoy's y against sampleSurface under it at the frame's time, as the Float32Array stores it.
-        const seen = await tab.evaluate(() => {
-          type Sample = { height: number };
-          const { ocean, buoys } = (
-            window as unknown as {
-              buoys: { ocean: { sampleSurface(x: number, z: number): Sample }; buoys: { position: { x: number; y: number; z: number } }[] };
-            }
-          ).buoys;
-          const heights = buoys.map((b) => Math.fround(ocean.sampleSurface(Math.fround(b.position.x), Math.fround(b.position.z)).height));
-          const ys = buoys.map((b) => b.position.y);
-          return {
-            count: buoys.length,
-            offSample: ys.filter((y, i) => y !== heights[i]).length,
-            spread: Math.max(...ys) - Math.min(...ys),
-          };
-        });
+        // In a frame, after the page's own loop: each buoy's y against that frame's sample under it (the frame's
+        // own fields; no Worker reply can land between two callbacks of one frame), as the Float32Array stores it.
+        const seen = await tab.evaluate(
+          () =>
+            new Promise<{ count: number; offSample: number; spread: number }>((resolve) =>
+              requestAnimationFrame(() => {
+                const { ocean, buoys } = (
+                  window as unknown as {
+                    buoys: {
+                      ocean: { sampleSurfaces(points: Float32Array): Float32Array };
+                      buoys: { position: { x: number; y: number; z: number } }[];
+                    };
+                  }
+                ).buoys;
+                const heights = buoys.map((b) => ocean.sampleSurfaces(Float32Array.of(b.position.x, b.position.z))[0]);
+                const ys = buoys.map((b) => b.position.y);
+                resolve({
+                  count: buoys.length,
+                  offSample: ys.filter((y, i) => y !== heights[i]).length,
+                  spread: Math.max(...ys) - Math.min(...ys),
+                });
+              }),
+            ),
+        );
         return { errors, faults: seaAndSkyFaults(png), ...seen };
       } finally {
         await tab.close();

@@ -157,6 +157,14 @@ export class FftWaveModel implements LiveWaveModel {
     return time;
   }
 
+  /** See LiveWaveModel: the time of the fields height() answers from, asked about the frame at `time`. */
+  frameDataTime(time: number): number {
+    const start = this.now();
+    const at = this.fieldsFor(time, false);
+    this.busyMs += this.now() - start;
+    return at;
+  }
+
   /** Asks the Worker (if any) for the fields at `time` ahead of use: called once per frame. */
   prefetch(time: number): void {
     const start = this.now();
