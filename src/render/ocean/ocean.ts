@@ -8,7 +8,7 @@ import {
   type OceanParameters,
 } from '../../sim/params/oceanOptionKeys';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
-import type { SampleSurfacesOptions, SurfacePoints, SurfaceSamples } from '../../sim/waves/surfaceBatch';
+import { checkSampleOptions, type SampleSurfacesOptions, type SurfacePoints, type SurfaceSamples } from '../../sim/waves/surfaceBatch';
 import { OceanEngine } from './oceanEngine';
 import { CameraHook } from './cameraHook';
 
@@ -172,8 +172,11 @@ export class Ocean extends OceanEngine {
    * ocean.sampleSurfaces(points, samples, { time: 12.5 }); // exactly at t = 12.5 s
    * ```
    */
-  override sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, options?: SampleSurfacesOptions): SurfaceSamples {
-    const samples = super.sampleSurfaces(points, out, options);
+  sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, options?: SampleSurfacesOptions): SurfaceSamples {
+    // Without a time: the time whose data the frame holds (the FFT twin's newest fields). Chosen
+    // here, in the library's class, not in the engine the app's first load carries.
+    const time = checkSampleOptions(options).time ?? this.waves.frameDataTime?.(this.time) ?? this.time;
+    const samples = this.sampleSurfacesAt(points, out, time);
     const level = this.worldSeaLevel();
     if (level !== 0) for (let i = 0; i < samples.length; i += 4) samples[i] += level;
     return samples;

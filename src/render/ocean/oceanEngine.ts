@@ -41,14 +41,7 @@ import { message, MessageError, type Message } from '../../sim/params/message';
 import { OceanChunks, type LodSettings } from '../lod/oceanChunks';
 import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 import { createFoamUniforms, setFoamWind } from '../foam/foamUniforms';
-import {
-  checkSampleOptions,
-  checkSurfaceBatch,
-  sampleSurfaces,
-  type SampleSurfacesOptions,
-  type SurfacePoints,
-  type SurfaceSamples,
-} from '../../sim/waves/surfaceBatch';
+import { checkSurfaceBatch, sampleSurfaces, type SurfacePoints, type SurfaceSamples } from '../../sim/waves/surfaceBatch';
 import type { FoamDetail } from '../foam/foamDetail';
 
 /** @internal The parameters an ocean material shows (every model's material of a comparison alike). */
@@ -488,17 +481,20 @@ export class OceanEngine extends Object3D {
   }
 
   /**
-   * sampleSurface for many points: `points` holds x, z pairs (metres, the sea's own frame), `out`
-   * receives per point [height (metres), nx, ny, nz], each equal to sampleSurface's (as float32 in
-   * a Float32Array). A new Float32Array unless you pass one to reuse; bad input throws a TypeError.
-   * With `options.time`, sampleSurface's answer at that time; without, at `time` from the data
-   * the frame holds (LiveWaveModel.frameDataTime: the FFT twin's newest fields), nothing recomputed.
+   * @internal sampleSurface for many points at `time` (Ocean.sampleSurfaces chooses it): `points`
+   * holds x, z pairs (metres, the sea's own frame), `out` receives per point [height (metres), nx,
+   * ny, nz], each equal to sampleSurface's (as float32 in a Float32Array). A new Float32Array
+   * unless you pass one to reuse; bad input throws a TypeError.
    */
-  sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, options?: SampleSurfacesOptions): SurfaceSamples {
+  sampleSurfacesAt(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
     const into = checkSurfaceBatch(points, out);
-    const model = this.waveView.model;
-    const time = checkSampleOptions(options).time ?? model.frameDataTime?.(this.time) ?? this.time;
-    return sampleSurfaces(model, points, time, into, this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null);
+    return sampleSurfaces(
+      this.waveView.model,
+      points,
+      time,
+      into,
+      this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null,
+    );
   }
 
   /** @internal The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */
