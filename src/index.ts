@@ -6,7 +6,13 @@ export { Ocean, type OceanOptions } from './render/ocean/ocean';
 export { OceanUnderwater, type OceanUnderwaterOptions } from './render/underwater/oceanUnderwater';
 export { OceanUnderwaterPass, type OceanUnderwaterPassOptions } from './render/underwater/oceanUnderwaterPass';
 export type { EncodedScene } from './render/underwater/underwaterPost';
-export { defaultParams, paramDefs, validateParams, type OceanParams, type ParamKey } from './sim/params/params';
+export {
+  defaultOceanOptions,
+  oceanOptionDefs,
+  validateOceanOptions,
+  type OceanParameters,
+  type OceanParamKey,
+} from './sim/params/oceanOptionKeys';
 export type { SurfaceSample, LiveWaveModel, WavesChoice } from './sim/waves/waveModel';
-export type { SurfacePoints, SurfaceSamples } from './sim/waves/surfaceBatch';
+export type { SampleSurfacesOptions, SurfacePoints, SurfaceSamples } from './sim/waves/surfaceBatch';
 export type { Submersion } from './sim/underwater/snellWindow';

@@ -1,6 +1,6 @@
 // What many floating bodies cost: Ocean.sampleSurfaces for 1,000 points on the FFT sea, the
 // same function the Ocean delegates to (src/sim/waves/surfaceBatch.ts) with the FFT twin's
-// fields already at the time asked (as in a frame, after the Worker's reply). Run alone with
+// fields already at the time asked: its default answer, from the frame's own fields. Run alone with
 // `npx tsx scripts/bench/batchSampleCost.ts`; `npm run bench` prints it with its figures.
 import { FftWaveModel } from '../../src/sim/waves/fft/fftWaveModel';
 import { sampleSurfaces } from '../../src/sim/waves/surfaceBatch';

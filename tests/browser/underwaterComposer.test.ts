@@ -44,7 +44,7 @@ const SAME_PICTURE_MEAN = 1.0;
 
 type Drawn = { png: PNG; submersion: string; lamp: [number, number] };
 
-async function draw(way: 'short' | 'composer', options: Parameters<UnderwaterComposerApi['draw']>[1]): Promise<Drawn> {
+async function draw(way: 'short' | 'composer' | 'plain', options: Parameters<UnderwaterComposerApi['draw']>[1]): Promise<Drawn> {
   const seen = await page.evaluate(
     (w, o) => (window as unknown as { underwaterComposer: UnderwaterComposerApi }).underwaterComposer.draw(w, o),
     way,
@@ -113,11 +113,22 @@ describe("OceanUnderwaterPass in the user's composer, beside UnrealBloomPass", (
     expect(on.submersion).toBe('above');
     expect(measureDifference(on.png, off.png).maxLevels).toBe(0);
   });
+});
 
-  it('says what the composer lacks when its target has no depth texture', async () => {
-    const message = await page.evaluate(() =>
-      (window as unknown as { underwaterComposer: UnderwaterComposerApi }).underwaterComposer.depthlessError(),
-    );
-    expect(message).toMatch(/depth texture/);
+describe('OceanUnderwaterPass in a plain new EffectComposer(renderer), whose buffers have no depth texture', () => {
+  // One test, in order: the plain composer's first frame is the control, its second the case.
+  it('attaches the depth it reads on its first frame (which passes through) and then draws as OceanUnderwater', async () => {
+    const short = await draw('short', { aboveSurface: STRADDLING });
+    const first = await draw('plain', { aboveSurface: STRADDLING });
+    const second = await draw('plain', { aboveSurface: STRADDLING });
+    expect(second.submersion).toBe('straddling');
+    // Control: the first frame, before any depth texture, lacks the underwater look the comparison looks for.
+    const before = measureDifference(waterRows(first.png), waterRows(short.png));
+    console.log(`[oceano] plain composer, first frame vs OceanUnderwater, water rows: ${describeDifference(before)}`);
+    expect(Math.max(...before.meanAbsError)).toBeGreaterThan(5 * SAME_PICTURE_MEAN);
+    const after = measureDifference(second.png, short.png);
+    console.log(`[oceano] plain composer, second frame vs OceanUnderwater: ${describeDifference(after)}`);
+    for (const channel of after.meanAbsError) expect(channel).toBeLessThan(SAME_PICTURE_MEAN);
+    expect(errors).toEqual([]);
   });
 });

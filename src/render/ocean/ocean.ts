@@ -8,7 +8,7 @@ import {
   type OceanParameters,
 } from '../../sim/params/oceanOptionKeys';
 import type { SurfaceSample } from '../../sim/waves/waveModel';
-import type { SurfacePoints, SurfaceSamples } from '../../sim/waves/surfaceBatch';
+import { checkSampleOptions, type SampleSurfacesOptions, type SurfacePoints, type SurfaceSamples } from '../../sim/waves/surfaceBatch';
 import { OceanEngine } from './oceanEngine';
 import { CameraHook } from './cameraHook';
 
@@ -157,12 +157,26 @@ export class Ocean extends OceanEngine {
   }
 
   /**
-   * sampleSurface for many world points at once: `points` holds x, z pairs (metres), `out`
-   * receives per point [height (world y, metres), nx, ny, nz]. A new Float32Array unless you pass
-   * one to reuse; bad input throws a TypeError.
+   * sampleSurface for many world points at once, for floating bodies: `points` holds x, z pairs
+   * (metres), `out` receives per point [height (world y, metres), nx, ny, nz]. A new Float32Array
+   * unless you pass one to reuse; bad input throws a TypeError.
+   *
+   * By default it answers for the frame just drawn (at `time`) from the data that frame already
+   * holds, with nothing recomputed: cheap every frame. On the FFT sea while the clock runs, the
+   * CPU twin's fields come from a Worker a frame or two behind the drawn waves (the app's boat
+   * rides the same). `{ time }` asks for that time exactly, each answer equal to
+   * `sampleSurface(x, z, time)`; on the FFT sea that may compute its fields first (milliseconds).
+   *
+   * ```js
+   * ocean.sampleSurfaces(points, samples); // this frame's sea, cheap
+   * ocean.sampleSurfaces(points, samples, { time: 12.5 }); // exactly at t = 12.5 s
+   * ```
    */
-  override sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, time = this.clockTime): SurfaceSamples {
-    const samples = super.sampleSurfaces(points, out, time);
+  sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, options?: SampleSurfacesOptions): SurfaceSamples {
+    // Without a time: the time whose data the frame holds (the FFT twin's newest fields). Chosen
+    // here, in the library's class, not in the engine the app's first load carries.
+    const time = checkSampleOptions(options).time ?? this.waves.frameDataTime?.(this.time) ?? this.time;
+    const samples = this.sampleSurfacesAt(points, out, time);
     const level = this.worldSeaLevel();
     if (level !== 0) for (let i = 0; i < samples.length; i += 4) samples[i] += level;
     return samples;

@@ -481,11 +481,12 @@ export class OceanEngine extends Object3D {
   }
 
   /**
-   * sampleSurface for many points: `points` holds x, z pairs (metres, the sea's own frame), `out`
-   * receives per point [height (metres), nx, ny, nz], each equal to sampleSurface's (as float32 in
-   * a Float32Array). A new Float32Array unless you pass one to reuse; bad input throws a TypeError.
+   * @internal sampleSurface for many points at `time` (Ocean.sampleSurfaces chooses it): `points`
+   * holds x, z pairs (metres, the sea's own frame), `out` receives per point [height (metres), nx,
+   * ny, nz], each equal to sampleSurface's (as float32 in a Float32Array). A new Float32Array
+   * unless you pass one to reuse; bad input throws a TypeError.
    */
-  sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
+  sampleSurfacesAt(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
     const into = checkSurfaceBatch(points, out);
     return sampleSurfaces(
       this.waveView.model,

@@ -1,4 +1,4 @@
-import { ShaderMaterial, type PerspectiveCamera, type WebGLRenderer, type WebGLRenderTarget } from 'three';
+import { DepthTexture, ShaderMaterial, type PerspectiveCamera, type WebGLRenderer, type WebGLRenderTarget } from 'three';
 import { FullScreenQuad, Pass } from 'three/addons/postprocessing/Pass.js';
 import fullscreenVertex from '../../../shaders/fullscreen.vert?raw';
 import type { OceanEngine } from '../ocean/oceanEngine';
@@ -41,8 +41,10 @@ function passThroughMaterial(): ShaderMaterial {
  * parameters (blurStrength, godRays, godRaysIntensity) and `ocean.update(time, camera)`'s
  * camera, which must be the one given here.
  *
- * The pass reads the scene's depth, so the composer's render target needs a depth texture:
- * `new EffectComposer(renderer, new WebGLRenderTarget(w, h, { type: HalfFloatType, depthTexture: new DepthTexture(w, h) }))`.
+ * The pass reads the scene's depth from a DepthTexture of the composer's buffers. A plain
+ * `new EffectComposer(renderer)` has none: the pass attaches one to each buffer on its first
+ * frame (three binds it at the buffer's next use), and that frame, whose depth the RenderPass
+ * already wrote elsewhere, passes through. A target of your own with a depth texture is used as it is.
  */
 export class OceanUnderwaterPass extends Pass {
   private readonly post: UnderwaterPost;
@@ -50,6 +52,8 @@ export class OceanUnderwaterPass extends Pass {
   private readonly passThrough = new FullScreenQuad(this.passThroughMaterial);
   private blur = Number.NaN;
   private godRays = Number.NaN;
+  /** The depth textures this pass attached to buffers that had none, and to which (dispose takes them back). */
+  private readonly attached: { target: WebGLRenderTarget; depth: DepthTexture }[] = [];
   /** The passes the last frame ran (0 above the water); diagnostics read it. */
   passesRun = 0;
 
@@ -79,7 +83,11 @@ export class OceanUnderwaterPass extends Pass {
   ): void {
     const submersion = this.ocean.submersion;
     const output = this.renderToScreen ? null : writeBuffer;
-    if (submersion === 'above') {
+    // Attached above the water too, so the depth is there when the eye goes under.
+    const depthWritten = readBuffer.depthTexture !== null;
+    this.attachDepth(readBuffer);
+    this.attachDepth(writeBuffer);
+    if (submersion === 'above' || !depthWritten) {
       this.passesRun = 0;
       // Into the composer's buffers nothing needs drawing: the next pass reads the same buffer.
       this.needsSwap = this.renderToScreen;
@@ -90,15 +98,17 @@ export class OceanUnderwaterPass extends Pass {
       }
       return;
     }
-    if (!readBuffer.depthTexture) {
-      throw new Error(
-        "OceanUnderwaterPass reads the scene's depth, and the composer's render target has no depth texture: " +
-          'create the EffectComposer with new WebGLRenderTarget(width, height, { type: HalfFloatType, depthTexture: new DepthTexture(width, height) }).',
-      );
-    }
     this.needsSwap = true;
     this.followParams();
     this.passesRun = this.post.render(renderer, readBuffer, output, submersion === 'straddling', afterEachPass);
+  }
+
+  /** A DepthTexture on `target` if it has none: the composer sizes it with the buffer from then on (RenderTarget.setSize). */
+  private attachDepth(target: WebGLRenderTarget): void {
+    if (target.depthTexture !== null) return;
+    const depth = new DepthTexture(target.width, target.height);
+    target.depthTexture = depth;
+    this.attached.push({ target, depth });
   }
 
   /** @internal Bakes the shaft light as the window generic wave models get, even where the lens repeats (a diagnostic). */
@@ -115,6 +125,10 @@ export class OceanUnderwaterPass extends Pass {
   }
 
   dispose(): void {
+    for (const { target, depth } of this.attached.splice(0)) {
+      if (target.depthTexture === depth) target.depthTexture = null;
+      depth.dispose();
+    }
     this.post.dispose();
     this.passThroughMaterial.dispose();
     this.passThrough.dispose();

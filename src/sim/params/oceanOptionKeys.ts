@@ -1,4 +1,4 @@
-import { isParamKey, paramKeys, type OceanParams, type ParamKey } from './params';
+import { defaultParams, isParamKey, paramDefs, paramKeys, validateParams, type OceanParams, type ParamKey } from './params';
 
 /**
  * The parameters only the app reads: its boat and wake, clock, camera, panels, teaching views
@@ -38,6 +38,30 @@ export const oceanParamKeys: readonly OceanParamKey[] = paramKeys.filter((key): 
 /** `params` with only the keys an Ocean reads. */
 export function oceanParametersOf(params: OceanParams): OceanParameters {
   return Object.fromEntries(oceanParamKeys.map((key) => [key, params[key]])) as OceanParameters;
+}
+
+/**
+ * Every option of an Ocean at its default: what `new Ocean(renderer)` starts from, and what
+ * `ocean.getParams()` answers until a setParams.
+ */
+export function defaultOceanOptions(): OceanParameters {
+  return oceanParametersOf(defaultParams());
+}
+
+/** The definition of each option an Ocean reads (kind, default, range, unit, label): what a panel of your own needs to offer it. */
+export const oceanOptionDefs = Object.freeze(Object.fromEntries(oceanParamKeys.map((key) => [key, paramDefs[key]]))) as Readonly<
+  Pick<typeof paramDefs, OceanParamKey>
+>;
+
+/**
+ * `options` checked as `new Ocean` and `setParams` check them (from a URL, a form, a saved
+ * file): each value against its definition (a ParamError naming the key), then each key an
+ * option an Ocean reads (an Error naming an app-only key).
+ */
+export function validateOceanOptions(options: unknown): Partial<OceanParameters> {
+  const valid = validateParams(options);
+  checkOceanKeys(valid, [], 'validateOceanOptions');
+  return valid as Partial<OceanParameters>;
 }
 
 /**

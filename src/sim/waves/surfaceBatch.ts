@@ -17,6 +17,31 @@ export type SurfacePoints = Float32Array | Float64Array | readonly number[];
 /** What it writes: 4 numbers per point (SAMPLE_FLOATS). */
 export type SurfaceSamples = Float32Array | Float64Array;
 
+/** How sampleSurfaces answers (the third argument of Ocean.sampleSurfaces). */
+export interface SampleSurfacesOptions {
+  /**
+   * The time (seconds) to answer for, exactly: the CPU twin's fields are computed for it if they
+   * are not held (on the FFT sea, milliseconds). Left out: the last frame's sea, from the data
+   * the frame already holds, nothing recomputed (what the app's boat rides).
+   */
+  time?: number;
+}
+
+/** The options checked: a TypeError for a key it does not know or a time that is not a finite number. */
+export function checkSampleOptions(options: unknown): SampleSurfacesOptions {
+  if (options === undefined) return {};
+  if (typeof options !== 'object' || options === null) {
+    throw new TypeError(`sampleSurfaces takes its options as an object ({ time }), got ${describe(options)}.`);
+  }
+  for (const [key, value] of Object.entries(options)) {
+    if (key !== 'time') throw new TypeError(`sampleSurfaces has no option "${key}"; its only option is time (seconds).`);
+    if (value !== undefined && (typeof value !== 'number' || !Number.isFinite(value))) {
+      throw new TypeError(`sampleSurfaces needs time as a finite number of seconds, got ${describe(value)}.`);
+    }
+  }
+  return options as SampleSurfacesOptions;
+}
+
 /** `out` for `points`, checked (a TypeError that says what was wanted), or a new Float32Array of the right length. */
 export function checkSurfaceBatch(points: unknown, out: unknown): SurfaceSamples {
   const typed = points instanceof Float32Array || points instanceof Float64Array;

@@ -109,6 +109,12 @@ export interface LiveWaveModel extends WaveModel {
    * each exactly what sample() answers (src/sim/waves/surfaceBatch.ts).
    */
   sampleMany?(points: ArrayLike<number>, time: number, out: { [i: number]: number }): void;
+  /**
+   * The time whose data answers a question about the frame at `time` with nothing recomputed:
+   * what height() reads (the FFT twin's newest fields while the clock plays with a Worker, a
+   * frame or two behind). A model whose answers cost the same at any time omits it: `time`.
+   */
+  frameDataTime?(time: number): number;
   /** Heightmaps the "heightmap" teaching view shows and the API returns, where the model has any. */
   readonly heightmaps?: readonly Heightmap[];
 }

@@ -58,9 +58,14 @@ export class FftOcean implements WaveModel {
   /** Texels per metre of each cascade. */
   private readonly scale: number[];
   private readonly acc = new Float64Array(4);
-  private readonly acc6 = new Float64Array(6);
-  private sumX = 0;
-  private sumZ = 0;
+  /**
+   * fieldSums' answer: the displacement's x and z, the four derivative channels, the height and
+   * ∂Dx/∂x. A typed array, not number fields: a double stored in a field is a new heap number
+   * each time, and the inversion stores one twice a step (270 bytes of garbage per sample).
+   */
+  private readonly sums = new Float64Array(8);
+  /** invertInPlace's answer: the grid point p (x, z). */
+  private readonly point = new Float64Array(2);
 
   constructor(sea: SeaState) {
     this.setup = fftOceanSetup(sea);
@@ -144,27 +149,27 @@ export class FftOcean implements WaveModel {
   heightAt(x: number, z: number, time: number, steps: number, tolerance = 0): number {
     this.setTime(time);
     this.invertInPlace(x, z, steps, tolerance);
-    return this.accumulate(this.sumX, this.sumZ, 'displacement', 1, 4)[1];
+    return this.accumulate(this.point[0], this.point[1], 'displacement', 1, 4)[1];
   }
 
   /**
    * undoHorizontalDisplacement's fixed point p ← q − D(p) for q = (x, z), step for step and
-   * stopping by the same rule, leaving p in sumX, sumZ (the fields of the current time).
+   * stopping by the same rule, leaving p in point[0], point[1] (the fields of the current time).
    */
   private invertInPlace(x: number, z: number, steps: number, tolerance: number): void {
-    let px = x;
-    let pz = z;
+    const p = this.point;
+    const sums = this.sums;
+    p[0] = x;
+    p[1] = z;
     for (let i = 0; i < steps; i++) {
-      this.horizontalSums(px, pz);
-      const nx = x - this.sumX;
-      const nz = z - this.sumZ;
-      const settled = Math.abs(nx - px) <= tolerance && Math.abs(nz - pz) <= tolerance;
-      px = nx;
-      pz = nz;
+      this.fieldSums(false);
+      const nx = x - sums[0];
+      const nz = z - sums[1];
+      const settled = Math.abs(nx - p[0]) <= tolerance && Math.abs(nz - p[1]) <= tolerance;
+      p[0] = nx;
+      p[1] = nz;
       if (settled) break;
     }
-    this.sumX = px;
-    this.sumZ = pz;
   }
 
   /**
@@ -177,17 +182,31 @@ export class FftOcean implements WaveModel {
   sampleInto(x: number, z: number, time: number, steps: number, tolerance: number, out: { [i: number]: number }, at: number): void {
     this.setTime(time);
     this.invertInPlace(x, z, steps, tolerance);
-    const px = this.sumX;
-    const pz = this.sumZ;
-    const r = this.surfaceSums(px, pz);
-    const height = r[4];
+    this.surfaceInto(out, at);
+  }
+
+  /** sampleInto for many points at one time: points[2i], points[2i + 1] are world x, z; out[4i..4i+3] gets the sample. */
+  sampleManyInto(points: ArrayLike<number>, time: number, steps: number, tolerance: number, out: { [i: number]: number }): void {
+    this.setTime(time);
+    const count = points.length >> 1;
+    for (let i = 0; i < count; i++) {
+      this.invertInPlace(points[2 * i], points[2 * i + 1], steps, tolerance);
+      this.surfaceInto(out, 4 * i);
+    }
+  }
+
+  /** Height and normal at the grid point held in `point` (normalAt's arithmetic) into out[at..at+3]. */
+  private surfaceInto(out: { [i: number]: number }, at: number): void {
+    this.fieldSums(true);
+    const r = this.sums;
+    const height = r[6];
     // normalAt's arithmetic, term for term.
-    const tx0 = 1 + r[5];
-    const tx1 = r[0];
-    const tx2 = r[3];
-    const tz0 = r[3];
-    const tz1 = r[1];
-    const tz2 = 1 + r[2];
+    const tx0 = 1 + r[7];
+    const tx1 = r[2];
+    const tx2 = r[5];
+    const tz0 = r[5];
+    const tz1 = r[3];
+    const tz2 = 1 + r[4];
     const nx = tz1 * tx2 - tz2 * tx1;
     const ny = tz2 * tx0 - tz0 * tx2;
     const nz = tz0 * tx1 - tz1 * tx0;
@@ -199,67 +218,77 @@ export class FftOcean implements WaveModel {
   }
 
   /**
-   * At the grid point (x, z), summed over the cascades in accumulate's arithmetic and order: the
-   * four derivative channels, then the height and ∂Dx/∂x, into acc6[0..5]. Both fields are read
-   * with one set of texel indices and weights.
+   * The fields at the grid point (x, z) held in `point` (a typed array, not arguments: a
+   * double passed to a call that is not inlined is boxed, a new heap number), each channel summed over the cascades in accumulate's
+   * arithmetic and order, with one set of texel indices and weights per cascade for every read:
+   * always the displacement's x and z, into sums[0..1] (all a fixed-point step needs); with
+   * `full`, also the four derivative channels, then the height and ∂Dx/∂x, into sums[2..7].
+   * Sums in locals, reads straight from the typed arrays: the inversion's steps are most of a
+   * sample's cost.
    */
-  private surfaceSums(x: number, z: number): Float64Array {
-    const r = this.acc6;
-    r.fill(0);
-    const n = this.setup.sea.fftSize;
-    for (let c = 0; c < this.fields.length; c++) {
-      const { displacement, derivatives } = this.fields[c];
-      const u = x * this.scale[c];
-      const v = z * this.scale[c];
-      const fu = Math.floor(u);
-      const fv = Math.floor(v);
-      const wx = u - fu;
-      const wz = v - fv;
-      const p0 = wrapTexel(fu, n);
-      const q0 = wrapTexel(fv, n);
-      const p1 = p0 + 1 === n ? 0 : p0 + 1;
-      const q1 = q0 + 1 === n ? 0 : q0 + 1;
-      const i00 = 4 * (q0 * n + p0);
-      const i10 = 4 * (q0 * n + p1);
-      const i01 = 4 * (q1 * n + p0);
-      const i11 = 4 * (q1 * n + p1);
-      for (let ch = 0; ch < 4; ch++) r[ch] += bilinear(derivatives, i00 + ch, i10 + ch, i01 + ch, i11 + ch, wx, wz);
-      r[4] += bilinear(displacement, i00 + 1, i10 + 1, i01 + 1, i11 + 1, wx, wz);
-      r[5] += bilinear(displacement, i00 + 3, i10 + 3, i01 + 3, i11 + 3, wx, wz);
-    }
-    return r;
-  }
-
-  /** The displacement's x and z summed over the cascades into sumX and sumZ: accumulate's arithmetic in the same order, in locals. */
-  private horizontalSums(x: number, z: number): void {
-    const n = this.setup.sea.fftSize;
+  private fieldSums(full: boolean): void {
+    const x = this.point[0];
+    const z = this.point[1];
+    const mask = this.setup.sea.fftSize - 1;
+    const row = this.setup.sea.fftSize * 4;
     let sx = 0;
     let sz = 0;
-    for (let c = 0; c < this.fields.length; c++) {
-      const f = this.fields[c].displacement;
-      const u = x * this.scale[c];
-      const v = z * this.scale[c];
+    let d0 = 0;
+    let d1 = 0;
+    let d2 = 0;
+    let d3 = 0;
+    let h = 0;
+    let jxx = 0;
+    const cascades = this.fields;
+    const scales = this.scale;
+    for (let c = 0; c < cascades.length; c++) {
+      const fields = cascades[c];
+      const f = fields.displacement;
+      const scale = scales[c];
+      const u = x * scale;
+      const v = z * scale;
       const fu = Math.floor(u);
       const fv = Math.floor(v);
       const wx = u - fu;
       const wz = v - fv;
-      const p0 = wrapTexel(fu, n);
-      const q0 = wrapTexel(fv, n);
-      const p1 = p0 + 1 === n ? 0 : p0 + 1;
-      const q1 = q0 + 1 === n ? 0 : q0 + 1;
-      const i00 = 4 * (q0 * n + p0);
-      const i10 = 4 * (q0 * n + p1);
-      const i01 = 4 * (q1 * n + p0);
-      const i11 = 4 * (q1 * n + p1);
+      // wrapTexel, inlined: the mask is i mod n for these powers of two.
+      const p0 = (fu | 0) & mask;
+      const q0 = (fv | 0) & mask;
+      const c0 = 4 * p0;
+      const c1 = 4 * ((p0 + 1) & mask);
+      const r0 = row * q0;
+      const r1 = row * ((q0 + 1) & mask);
+      const i00 = r0 + c0;
+      const i10 = r0 + c1;
+      const i01 = r1 + c0;
+      const i11 = r1 + c1;
       const topX = f[i00] + (f[i10] - f[i00]) * wx;
       const bottomX = f[i01] + (f[i11] - f[i01]) * wx;
       sx += topX + (bottomX - topX) * wz;
       const topZ = f[i00 + 2] + (f[i10 + 2] - f[i00 + 2]) * wx;
       const bottomZ = f[i01 + 2] + (f[i11 + 2] - f[i01 + 2]) * wx;
       sz += topZ + (bottomZ - topZ) * wz;
+      if (full) {
+        const g = fields.derivatives;
+        d0 += bilinear(g, i00, i10, i01, i11, wx, wz);
+        d1 += bilinear(g, i00 + 1, i10 + 1, i01 + 1, i11 + 1, wx, wz);
+        d2 += bilinear(g, i00 + 2, i10 + 2, i01 + 2, i11 + 2, wx, wz);
+        d3 += bilinear(g, i00 + 3, i10 + 3, i01 + 3, i11 + 3, wx, wz);
+        h += bilinear(f, i00 + 1, i10 + 1, i01 + 1, i11 + 1, wx, wz);
+        jxx += bilinear(f, i00 + 3, i10 + 3, i01 + 3, i11 + 3, wx, wz);
+      }
     }
-    this.sumX = sx;
-    this.sumZ = sz;
+    const r = this.sums;
+    r[0] = sx;
+    r[1] = sz;
+    if (full) {
+      r[2] = d0;
+      r[3] = d1;
+      r[4] = d2;
+      r[5] = d3;
+      r[6] = h;
+      r[7] = jxx;
+    }
   }
 
   /**

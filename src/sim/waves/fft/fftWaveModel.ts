@@ -157,6 +157,14 @@ export class FftWaveModel implements LiveWaveModel {
     return time;
   }
 
+  /** See LiveWaveModel: the time of the fields height() answers from, asked about the frame at `time`. */
+  frameDataTime(time: number): number {
+    const start = this.now();
+    const at = this.fieldsFor(time, false);
+    this.busyMs += this.now() - start;
+    return at;
+  }
+
   /** Asks the Worker (if any) for the fields at `time` ahead of use: called once per frame. */
   prefetch(time: number): void {
     const start = this.now();
@@ -227,9 +235,7 @@ export class FftWaveModel implements LiveWaveModel {
   sampleMany(points: ArrayLike<number>, time: number, out: { [i: number]: number }): void {
     const start = this.now();
     const at = this.fieldsFor(time, true);
-    const count = points.length >> 1;
-    for (let i = 0; i < count; i++)
-      this.ocean.sampleInto(points[2 * i], points[2 * i + 1], at, INVERSION_STEPS, INVERSION_TOLERANCE, out, 4 * i);
+    this.ocean.sampleManyInto(points, at, INVERSION_STEPS, INVERSION_TOLERANCE, out);
     this.busyMs += this.now() - start;
   }
 

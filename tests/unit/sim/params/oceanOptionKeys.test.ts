@@ -2,12 +2,15 @@ import { describe, expect, it } from 'vitest';
 import {
   APP_ONLY_PARAMS,
   checkOceanKeys,
+  defaultOceanOptions,
   OCEAN_EXTRA_OPTIONS,
+  oceanOptionDefs,
   oceanParamKeys,
   oceanParametersOf,
+  validateOceanOptions,
   type OceanParameters,
 } from '../../../../src/sim/params/oceanOptionKeys';
-import { defaultParams, paramKeys } from '../../../../src/sim/params/params';
+import { defaultParams, paramDefs, paramKeys } from '../../../../src/sim/params/params';
 
 /** Compiled by `tsc --noEmit`: each marked line must be a type error, or the compile fails. */
 export const typeChecks: Partial<OceanParameters>[] = [
@@ -41,5 +44,36 @@ describe('the keys an Ocean reads', () => {
       /"seaLevel" is not an Ocean option\. Its options: waves, .*, sky\.$/,
     );
     expect(() => checkOceanKeys({ sky: null }, [], 'Ocean.setParams')).toThrow(/"sky"/);
+  });
+});
+
+describe("what the library exports of the options: only an Ocean's, with the app's defaults and definitions", () => {
+  it('defaultOceanOptions and oceanOptionDefs: every Ocean option at its parameter default, no app-only key', () => {
+    const defaults = defaultOceanOptions();
+    expect(Object.keys(defaults).sort()).toEqual([...oceanParamKeys].sort());
+    expect(Object.keys(oceanOptionDefs).sort()).toEqual([...oceanParamKeys].sort());
+    for (const key of oceanParamKeys) {
+      expect(defaults[key]).toBe(defaultParams()[key]);
+      expect(oceanOptionDefs[key]).toBe(paramDefs[key]);
+    }
+    // Control: the app's keys are in the parameters, so the filter did something.
+    for (const key of APP_ONLY_PARAMS) {
+      expect(key in defaultParams()).toBe(true);
+      expect(key in defaults || key in oceanOptionDefs).toBe(false);
+    }
+  });
+
+  it('validateOceanOptions passes good options, and throws on a bad value, an unknown key or an app-only key', () => {
+    expect(validateOceanOptions({ waves: 'fft', windSpeed: 12, waterColor: '12AB9F' })).toEqual({
+      waves: 'fft',
+      windSpeed: 12,
+      waterColor: '#12ab9f',
+    });
+    expect(() => validateOceanOptions({ windSpeed: 99 })).toThrow(/"windSpeed" must lie in \[1, 30\] m\/s, got 99/);
+    expect(() => validateOceanOptions({ seaLevel: -1 })).toThrow(/Unknown parameter "seaLevel"/);
+    expect(() => validateOceanOptions({ timeScale: '0.5' })).toThrow(
+      /^validateOceanOptions: "timeScale" is not an Ocean option but the app's/,
+    );
+    expect(() => validateOceanOptions('windSpeed=12')).toThrow(/must be an object/);
   });
 });

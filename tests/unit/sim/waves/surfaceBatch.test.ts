@@ -1,8 +1,15 @@
 import { describe, expect, it } from 'vitest';
-import { FftWaveModel, INVERSION_STEPS, INVERSION_TOLERANCE } from '../../../../src/sim/waves/fft/fftWaveModel';
+import { FftWaveModel, INVERSION_STEPS, INVERSION_TOLERANCE, type FieldSource } from '../../../../src/sim/waves/fft/fftWaveModel';
+import { FftOcean } from '../../../../src/sim/waves/fft/fftOcean';
 import { GerstnerLiveModel } from '../../../../src/sim/waves/gerstner/gerstnerLiveModel';
 import { SeedWaveModel } from '../../../../src/sim/waves/seed/seedWaveModel';
-import { checkSurfaceBatch, sampleSurfaces, SAMPLE_FLOATS, type SurfaceSamples } from '../../../../src/sim/waves/surfaceBatch';
+import {
+  checkSampleOptions,
+  checkSurfaceBatch,
+  sampleSurfaces,
+  SAMPLE_FLOATS,
+  type SurfaceSamples,
+} from '../../../../src/sim/waves/surfaceBatch';
 import { undoHorizontalDisplacement, type LiveWaveModel, type SurfaceSample } from '../../../../src/sim/waves/waveModel';
 import { defaultParams } from '../../../../src/sim/params/params';
 import { seededRandom } from '../../../../src/sim/noise/integerHash';
@@ -111,6 +118,65 @@ describe('sampleSurfaces: many points, each what sampleSurface answers', () => {
     const batch = sampleSurfaces(model, points, 2, new Float64Array(200), raise);
     expect(mismatches(batch, points, (x, z) => raise(model.sample(x, z, 2), x))).toBe(0);
     expect(mismatches(batch, points, (x, z) => model.sample(x, z, 2))).toBeGreaterThan(45);
+  });
+});
+
+describe("sampleSurfaces for a frame: the frame's own data, or an exact time", () => {
+  /** A playing FFT sea whose Worker has delivered the fields of 10 s, and been asked for the frame at 10.016 s. */
+  function playing(): { model: FftWaveModel; requests: number[] } {
+    const model = new FftWaveModel(gale);
+    const requests: number[] = [];
+    const source: FieldSource = { request: (_sea, t) => requests.push(t), dispose: () => {} };
+    model.attachSource(source);
+    const worker = new FftOcean(model.sea);
+    worker.setTime(10);
+    model.receive(model.sea, 10, worker.fields);
+    model.height(0, 0, 10);
+    model.height(0, 0, 10.016);
+    return { model, requests };
+  }
+
+  it("playing: the frame's answer is the held fields' surface (10 s) with no FFT computed; an exact time is exact", () => {
+    const points = randomPoints(53, 200);
+    const { model, requests } = playing();
+    const reference = new FftWaveModel(gale);
+    const revision = model.surfaceRevision;
+    const at = model.frameDataTime(10.016);
+    expect(at).toBe(10);
+    const frame = sampleSurfaces(model, points, at, new Float64Array(800));
+    expect(model.surfaceRevision).toBe(revision); // the fields were read, not recomputed
+    expect(requests.at(-1)).toBe(10.016); // the Worker is still asked for the frame
+    expect(mismatches(frame, points, (x, z) => reference.sample(x, z, 10))).toBe(0);
+    const exact = sampleSurfaces(model, points, 10.016, new Float64Array(800));
+    expect(model.surfaceRevision).not.toBe(revision);
+    expect(mismatches(exact, points, (x, z) => reference.sample(x, z, 10.016))).toBe(0);
+  });
+
+  it("control: the frame's answer really is another time's surface than the frame's exact one", () => {
+    const points = randomPoints(53, 200);
+    const { model } = playing();
+    const reference = new FftWaveModel(gale);
+    const frame = sampleSurfaces(model, points, model.frameDataTime(10.016), new Float64Array(800));
+    expect(mismatches(frame, points, (x, z) => reference.sample(x, z, 10.016))).toBeGreaterThan(190);
+  });
+
+  it('without a Worker, or on a sea with no lagging data, the frame answer is the exact one at the time asked', () => {
+    const model = new FftWaveModel(gale);
+    expect(model.frameDataTime(10.016)).toBe(10.016);
+    expect(model.frameDataTime(10.032)).toBe(10.032);
+    expect((new GerstnerLiveModel(defaultParams()) as LiveWaveModel).frameDataTime).toBeUndefined();
+  });
+
+  it('options: time must be a finite number and is the only key (a TypeError otherwise); control: good ones pass', () => {
+    expect(() => checkSampleOptions({ tme: 3 })).toThrow(
+      new TypeError('sampleSurfaces has no option "tme"; its only option is time (seconds).'),
+    );
+    expect(() => checkSampleOptions({ time: Number.NaN })).toThrow(/finite number of seconds, got number NaN/);
+    expect(() => checkSampleOptions({ time: '3' })).toThrow(/got string 3/);
+    expect(() => checkSampleOptions(3)).toThrow(/as an object \({ time }\), got number 3/);
+    expect(checkSampleOptions(undefined)).toEqual({});
+    expect(checkSampleOptions({ time: 3 })).toEqual({ time: 3 });
+    expect(checkSampleOptions({ time: undefined })).toEqual({ time: undefined });
   });
 });
 
