@@ -266,8 +266,8 @@ export function splitFraction(f: number): [number, number, number] {
  * The spectral ocean on the GPU. h₀ of every cascade is uploaded once (drawn on the CPU from the
  * seed, the same numbers as the CPU twin) as one atlas; each update(t) is then one time-evolution
  * pass over the atlas and the FFT passes of GpuInverseFft (2·⌈log₂n / 2⌉ stages, radix 4, the last
- * one drawn once per tile): 1 + 7 + 3 = 11 passes for three cascades of 128², where one cascade
- * at a time took 3 × 9. After update, per cascade c:
+ * one drawn once per tile): 1 + 7 + 3 = 11 passes for three cascades of 128², instead of
+ * 3 × 9 with a set of passes per cascade. After update, per cascade c:
  *   displacement[c]: RGBA32F n × n, (dx, dy, dz, ∂Dx/∂x)
  *   derivatives[c]:  RGBA32F n × n, (∂h/∂x, ∂h/∂z, ∂Dz/∂z, ∂Dx/∂z)
  * Texel (p, q) is the grid point x = p·L/n, z = q·L/n of a tile of side L = sizes[c], repeating.
