@@ -9,6 +9,10 @@
 // processors", the mixed-radix Stockham formulation; with R = 2 it is the radix-2 indexing of
 // src/sim/waves/fft/stockhamFft.ts, tested against fft.js). The twiddles e^{2πi·q/n} come from a table
 // computed in float64 on the CPU (m·k·n/(R·Ns) < n).
+// The input is an atlas: several n × n grids (tiles) side by side along x, one per cascade, so
+// one pass transforms them all. A stage along x stays inside its texel's tile (o = x mod n, read
+// at the tile's origin + index); a stage along z reads its own column. The last stage may write
+// one tile alone into an n × n target: uTileOrigin then says where that tile sits in the input.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
@@ -19,6 +23,7 @@ uniform sampler2D uTwiddle;   // n × 1: (cos, sin) of 2π q/n
 uniform int uN;
 uniform int uHalfSize;        // Ns: the product of the radices of the stages before this one
 uniform bool uVertical;       // false: along x (texel column), true: along z (texel row)
+uniform int uTileOrigin;      // x of the tile the output's first column reads: 0 when writing the whole atlas
 
 layout(location = 0) out vec4 out0;
 layout(location = 1) out vec4 out1;
@@ -31,8 +36,10 @@ vec4 mul2(vec2 w, vec4 v) { return vec4(mul(w, v.xy), mul(w, v.zw)); }
 // i·v for both complex values of a texel.
 vec4 mulI2(vec4 v) { return vec4(-v.y, v.x, -v.w, v.z); }
 
+// The input texel at `index` along the stage's axis, in the same tile and line as the output texel.
 ivec2 along(ivec2 texel, int index) {
-  return uVertical ? ivec2(texel.x, index) : ivec2(index, texel.y);
+  int tileStart = uTileOrigin + (texel.x / uN) * uN;
+  return uVertical ? ivec2(uTileOrigin + texel.x, index) : ivec2(tileStart + index, texel.y);
 }
 
 vec2 twiddle(int q) {
@@ -41,7 +48,7 @@ vec2 twiddle(int q) {
 
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  int o = uVertical ? texel.y : texel.x;
+  int o = uVertical ? texel.y : texel.x % uN;  // the index along the axis within the tile
   int k = o % uHalfSize;
 #ifdef RADIX_4
   int j = (o / (4 * uHalfSize)) * uHalfSize + k;

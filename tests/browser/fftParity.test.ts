@@ -152,6 +152,35 @@ describe('GPU FFT stages: radix 4 and radix 2', () => {
   }
 });
 
+describe('GPU FFT atlas: several grids in one set of passes', () => {
+  // Three different grids side by side (the cascades' layout): each tile's result against fft.js
+  // of that tile alone, so a stage that strayed into a neighbouring tile would mix in its signal.
+  const n = 64;
+  const tileInputs = [0, 1, 2].map((t): [number[], number[]] => {
+    const r = seededRandom(1000 + t);
+    return [zeros(n).map(() => r() - 0.5), zeros(n).map(() => r() - 0.5)];
+  });
+  const errorsOf = (outputs: [number[], number[]][], wanted: number[]) =>
+    outputs.map(([ga, gb], i) => [
+      relativeError(ga, cpuInverse(n, tileInputs[wanted[i]][0])),
+      relativeError(gb, cpuInverse(n, tileInputs[wanted[i]][1])),
+    ]);
+
+  it('three seeded random tiles, n = 64: each tile within 1e-4 relative of its own CPU FFT', async () => {
+    const outputs = await gpu('atlas', n, tileInputs, [0, 1, 2]);
+    const errors = errorsOf(outputs, [0, 1, 2]);
+    console.log(`GPU FFT atlas: relative errors per tile ${errors.map((e) => e.map((x) => x.toExponential(2)).join(', ')).join(' | ')}`);
+    for (const e of errors.flat()) expect(e).toBeLessThan(1e-4);
+  });
+
+  it('planted fault: a wrong tile offset in the last stage (tile 1 read for tile 0) fails against tile 0', async () => {
+    const outputs = await gpu('atlas', n, tileInputs, [1, 1, 2]);
+    const errors = errorsOf(outputs, [0, 1, 2]);
+    expect(Math.min(...errors[0])).toBeGreaterThan(1e-1);
+    for (const e of [...errors[1], ...errors[2]]) expect(e).toBeLessThan(1e-4);
+  });
+});
+
 describe('GPU spectral ocean against its CPU twin', () => {
   for (const [name, sea] of [
     ['fresh breeze, PM, 64²', { ...DEFAULT_SEA_STATE, fftSize: 64, windSpeed: 10 }],
@@ -182,6 +211,25 @@ describe('GPU spectral ocean against its CPU twin', () => {
       expect(relativeError(gpuFields[0][0][0], cpu.fields[0].displacement)).toBeGreaterThan(1e-3);
     });
   }
+
+  it('the lattice tile (cascade 2 at a time of its own) within 1 mm, riding with the frame and alone', async () => {
+    const sea: SeaState = { ...DEFAULT_SEA_STATE, fftSize: 128, windSpeed: 20, seed: 5 };
+    const [time, latticeTime] = [1e6 + 3.7, 1e6 + 3.6];
+    const { riding, alone } = await gpu('lattice', sea, 2, time, latticeTime);
+    const cpu = new FftOcean(sea);
+    cpu.setTime(latticeTime);
+    const want = cpu.fields[2];
+    for (const [displacement, derivatives] of [riding, alone]) {
+      let mm = 0;
+      for (let i = 0; i < displacement.length; i++) mm = Math.max(mm, Math.abs(displacement[i] - want.displacement[i]));
+      console.log(`lattice tile: max |Δ| ${(mm * 1000).toFixed(4)} mm`);
+      expect(mm).toBeLessThan(1e-3);
+      expect(relativeError(derivatives, want.derivatives)).toBeLessThan(1e-4);
+    }
+    // planted fault: the frame's time is not the lattice time
+    cpu.setTime(time);
+    expect(relativeError(riding[0], cpu.fields[2].displacement)).toBeGreaterThan(1e-3);
+  });
 
   it('reports the GPU FFT cost on this renderer (3 cascades, one update)', async () => {
     for (const fftSize of [64, 128, 256] as const) {

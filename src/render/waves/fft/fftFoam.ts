@@ -54,8 +54,8 @@ export const REMEMBERING_CASCADE = 2;
 /**
  * The foam passes of the spectral sea:
  * - remember: one step of the lattice of simulation times (src/sim/waves/fft/foamMemory.ts) on
- *   the smallest cascade's fields, which the caller has just evolved to that lattice time
- *   (shaders/fftFoamMemory.frag), ping-ponged between two targets;
+ *   the smallest cascade's fields at that lattice time, which the caller has just computed in the
+ *   ocean's lattice tile (GpuFftOcean.lattice; shaders/fftFoamMemory.frag), ping-ponged between two targets;
  * - pack: every frame, what the ocean's pixels read besides the derivatives, per cascade in one
  *   texture of its tile's texel grid (shaders/fftFoam.frag): the remembered foam faded to now,
  *   and ∂Dx/∂x (one draw, three colour attachments).
@@ -70,12 +70,13 @@ export class FftFoam {
   constructor(private readonly gpu: GpuFftOcean) {
     const n = gpu.fft.n;
     if (gpu.targets.length !== 3) throw new RangeError(`shaders/fftFoam.frag packs 3 cascades, the sea has ${gpu.targets.length}.`);
+    if (!gpu.lattice) throw new Error('The remembered foam needs the ocean built with a lattice tile (REMEMBERING_CASCADE).');
     this.memory = [foamTarget(n, 1, false), foamTarget(n, 1, false)];
     this.packed = foamTarget(n, 3, gpu.filtered);
     const constants = `#define FOAM_POTENTIAL_MAX ${glslFloat(FOAM_POTENTIAL_MAX)}\n#define FOAM_POTENTIAL_VISIBLE ${glslFloat(FOAM_POTENTIAL_VISIBLE)}\n`;
     this.memoryMaterial = passMaterial('FftFoamMemory', constants + resolveChunks(memoryFragment, { oceano_fft_breaking: breakingChunk }), {
-      uDisplacement: { value: gpu.displacement[REMEMBERING_CASCADE] },
-      uDerivatives: { value: gpu.derivatives[REMEMBERING_CASCADE] },
+      uDisplacement: { value: gpu.lattice.textures[0] },
+      uDerivatives: { value: gpu.lattice.textures[1] },
       uPrevious: { value: null },
       uDrift: { value: new Vector2() },
       uDecay: { value: 0 },
@@ -97,7 +98,7 @@ export class FftFoam {
   }
 
   /**
-   * One lattice step: decay = e^{−Δ/τ} (0 starts from nothing); the smallest cascade's
+   * One lattice step, on the fields in the ocean's lattice tile: decay = e^{−Δ/τ} (0 starts from nothing); the smallest cascade's
    * breaking threshold and the potential's unit; the whole texels the older foam drifts
    * (src/sim/waves/fft/foamDrift.ts). `keep`: false draws the step without making it the
    * memory (a timing of the pass that leaves the foam as it was).

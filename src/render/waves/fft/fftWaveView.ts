@@ -164,7 +164,7 @@ export class FftWaveView implements WaveModelView {
       uFftPerLogBand: { value: new Vector3(1 / Math.LN2, 1 / Math.LN2, 1 / Math.LN2) },
       uSeaSlopeVariance: { value: 0 },
     };
-    this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered);
+    this.gpu = new GpuFftOcean(renderer, model.ocean.setup, this.filtered, REMEMBERING_CASCADE);
     this.foam = new FftFoam(this.gpu);
     this.bindTextures();
     model.attachSource(
@@ -272,7 +272,7 @@ export class FftWaveView implements WaveModelView {
     if (rebuilt) {
       this.foam.dispose();
       this.gpu.dispose();
-      this.gpu = new GpuFftOcean(this.renderer, this.model.ocean.setup, this.filtered);
+      this.gpu = new GpuFftOcean(this.renderer, this.model.ocean.setup, this.filtered, REMEMBERING_CASCADE);
       this.foam = new FftFoam(this.gpu);
       this.bindTextures();
     }
@@ -325,9 +325,11 @@ export class FftWaveView implements WaveModelView {
   }
 
   /**
-   * FFT passes for every cascade at `time`, then the foam: first the remembered foam's lattice
-   * steps up to `time` (src/sim/waves/fft/foamMemory.ts; each evolves the remembering cascade
-   * alone to its lattice time), then the pack the pixels read.
+   * FFT passes for every cascade at `time`, then the foam: the remembered foam's lattice steps up
+   * to `time` (src/sim/waves/fft/foamMemory.ts; each needs the remembering cascade at its lattice
+   * time, the ocean's lattice tile), then the pack the pixels read. A played frame has at most
+   * one lattice step, the last, and its tile rides in the frame's own FFT passes; the steps
+   * before it (a jump, a first frame, a slow frame) run the lattice tile alone.
    */
   update(time: number): void {
     if (Object.is(time, this.time)) return;
@@ -340,16 +342,18 @@ export class FftWaveView implements WaveModelView {
       const decay = foamRemaining(FOAM_STEP_SECONDS, this.foamFade);
       const texel = this.memoryTexel();
       for (let k = steps.first; k <= steps.last; k++) {
-        this.gpu.update(k * FOAM_STEP_SECONDS, REMEMBERING_CASCADE);
+        if (k < steps.last) this.gpu.updateLattice(k * FOAM_STEP_SECONDS);
+        else this.gpu.update(time, k * FOAM_STEP_SECONDS);
         const drift = foamDriftStep(this.foamDrift, texel, k);
         this.foam.remember(k === steps.first && steps.fresh ? 0 : decay, this.memoryThreshold, this.memorySoftness, drift);
       }
+      if (steps.first > steps.last) this.gpu.update(time);
       this.foamDone = steps.last;
       fade = steps.fade;
     } else {
       this.foamDone = null;
+      this.gpu.update(time);
     }
-    this.gpu.update(time);
     this.foam.pack(fade);
     this.bindFoam();
   }
