@@ -58,7 +58,7 @@ describe('what a played frame asks of the GPU', () => {
     expect((await countsOf('t=70&preset=stone')).bytesUploaded).toBe(0);
   }, 300_000);
 
-  it("the guide's rings upload only when they move: nothing in a frame drawn again at the same time, some in a played one", async () => {
+  it("the guide's rings upload only when they move: none drawing the same time again, some in a played frame", async () => {
     const { page } = await openOcean(harness, 't=5&preset=stone', 1280, 720);
     expect((await frameCounts(page, { seconds: 0 })).bytesUploaded).toBe(0);
     // The control: the rings grow as time runs, and the counter sees them go up.

@@ -21,7 +21,7 @@ const PER_PART = new Set(['uuid', 'id', 'name', 'color', 'roughness', 'metalness
 function mergeable(materials: MeshStandardMaterial[]): boolean {
   const [first] = materials;
   const json = (m: MeshStandardMaterial) =>
-    JSON.stringify(Object.entries(m.toJSON() as Record<string, unknown>).filter(([key]) => !PER_PART.has(key)));
+    JSON.stringify(Object.entries(m.toJSON() as unknown as Record<string, unknown>).filter(([key]) => !PER_PART.has(key)));
   return materials.every(
     (m) => m.type === 'MeshStandardMaterial' && (m.side === FrontSide || m.side === DoubleSide) && json(m) === json(first),
   );
