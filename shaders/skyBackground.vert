@@ -5,10 +5,12 @@
 
 uniform mat4 uClipToWorldDirection;
 varying vec3 vRay;
+varying vec2 vClip;
 
 void main() {
   // At the far plane (depth 1): whatever else is drawn lies in front.
   gl_Position = vec4(position.xy, 1.0, 1.0);
   vec4 far = uClipToWorldDirection * vec4(position.xy, 1.0, 1.0);
   vRay = far.xyz;
+  vClip = position.xy;
 }

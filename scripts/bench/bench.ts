@@ -24,6 +24,8 @@ import { openThreejsOceanExample, serveThreejsOceanExample } from './threejsOcea
 import { formatFigure, markdownTable } from './resultsTable';
 import { sideBySideRatios, type SideBySideRatio } from './sideBySide';
 import { BATCH_POINTS, batchSampleCosts, type BatchSampleCost } from './batchSampleCost';
+import type { FrameCounts } from '../../src/render/diagnostics/frameCounter';
+import { countFrames, formatCounts, guardRatio, type Guard } from './frameCountRows';
 
 const WIDTH = 1280;
 const HEIGHT = 720;
@@ -41,6 +43,8 @@ const ONLY = (process.env.BENCH_ONLY ?? '')
   .split(',')
   .map((word) => word.trim())
   .filter(Boolean);
+// BENCH_COUNTS=only counts one frame of every Oceano row and times nothing: seconds, not minutes.
+const COUNTS_ONLY = process.env.BENCH_COUNTS === 'only';
 const RESULTS_FILE = ONLY.length ? 'scripts/bench/results-subset.md' : 'scripts/bench/results.md';
 // The targets of issue 14, for the 2-core SwiftShader machine.
 const TARGETS = { batchMs: 0.5, ratio: 20, cpuMs: 0.1, twinMs: 0.1, ttffMs: 800, pageKB: 200, componentExtraKB: 20 };
@@ -83,6 +87,8 @@ interface ScenarioResult {
   /** The mean of each window of TWIN_FRAMES looped frames (twinMs is their mean). */
   twinMsWindows?: (number | null)[];
   ttffMs: number | null;
+  /** One frame's draw calls, passes, program switches and bytes uploaded (oceano.debug.frameCounts); null for three.js's example. */
+  counts: FrameCounts | null;
 }
 
 const round = (value: number, decimals: number) => Number(value.toFixed(decimals));
@@ -157,7 +163,7 @@ async function main(): Promise<void> {
   const loadAverage = round(loadavg()[0], 1);
   const sizes = scriptSizes('dist');
   // Measured first, before the browser competes for the cores.
-  const batchSamples = batchSampleCosts();
+  const batchSamples = COUNTS_ONLY ? [] : batchSampleCosts();
   const { server, baseUrl } = await startServer();
   const example = await serveThreejsOceanExample(CROSS_ORIGIN_ISOLATION);
   const exampleBaseUrl = example.baseUrl;
@@ -171,6 +177,7 @@ async function main(): Promise<void> {
     const scenarios = ONLY.length ? SCENARIOS.filter((s) => ONLY.some((word) => s.name.includes(word))) : SCENARIOS;
     if (scenarios.length === 0)
       throw new Error(`BENCH_ONLY="${process.env.BENCH_ONLY}" matches no scenario in scripts/bench/scenarios.ts.`);
+    if (COUNTS_ONLY) return await printCountsOnly(harness, scenarios);
     for (const scenario of scenarios) {
       if (scenario.page === 'threejs-ocean') {
         results.push(await timeThreejsExample(browser, exampleBaseUrl, scenario));
@@ -186,6 +193,7 @@ async function main(): Promise<void> {
         scenario.stepSeconds ?? 0,
         Number(new URLSearchParams(scenario.query).get('t') ?? 0),
       );
+      const counts = await countFrames(page, scenario.stepSeconds ?? 0);
       const passesMs = scenario.passes ? medianOfEach(await page.evaluate(passTimeSamples, PASS_FRAMES)) : undefined;
       const twinWindows: (number | null)[] = [];
       for (let w = 0; scenario.twin && w < TWIN_WINDOWS; w++) twinWindows.push(await page.evaluate(loopTwinMs, TWIN_FRAMES));
@@ -212,6 +220,7 @@ async function main(): Promise<void> {
         drawCalls: frames.drawCalls,
         cpuMs: round(frames.cpuMs, 4),
         ttffMs: frames.ttffMs === null ? null : round(frames.ttffMs, 1),
+        counts,
         ...(passesMs ? { passesMs } : {}),
         ...(twinMs !== undefined
           ? {
@@ -238,6 +247,8 @@ async function main(): Promise<void> {
     });
     const [headline] = results;
     const report = {
+      // First, so that it is seen at every run: the SwiftShader guard, side by side.
+      guard: guardRatio(sideBySide),
       renderer,
       backend,
       browser: await browser.version(),
@@ -262,6 +273,7 @@ async function main(): Promise<void> {
       loadAverageAtEnd: round(loadavg()[0], 1),
       benchSeconds: round((performance.now() - started) / 1000, 1),
     };
+    console.error(`[bench] ${formatGuard(report.guard).replaceAll('**', '')}`);
     console.log(JSON.stringify(report, null, 2));
     mkdirSync(dirname(RESULTS_FILE), { recursive: true });
     writeFileSync(RESULTS_FILE, resultsMarkdown(report, new Date()));
@@ -271,6 +283,27 @@ async function main(): Promise<void> {
     await new Promise<void>((resolve) => server.httpServer.close(() => resolve()));
     await example.close();
   }
+}
+
+/** BENCH_COUNTS=only: each Oceano row's frame counted after a few frames drawn as the bench draws them; printed as JSON and a table. */
+async function printCountsOnly(harness: Harness, scenarios: readonly BenchScenario[]): Promise<void> {
+  const rows: { name: string; query: string; counts: FrameCounts }[] = [];
+  for (const scenario of scenarios) {
+    if (scenario.page === 'threejs-ocean') continue;
+    const { page } = await openOcean(harness, scenario.query, WIDTH, HEIGHT, '', PAGE_TIMEOUT_MS);
+    await scenario.setup?.(page);
+    const startTime = Number(new URLSearchParams(scenario.query).get('t') ?? 0);
+    await page.evaluate(timeOceanFrames, 1, 2, scenario.stepSeconds ?? 0, startTime);
+    rows.push({ name: scenario.name, query: scenario.query, counts: await countFrames(page, scenario.stepSeconds ?? 0) });
+    await page.close();
+  }
+  console.log(JSON.stringify({ viewport: { width: WIDTH, height: HEIGHT }, rows }, null, 2));
+  console.error(
+    markdownTable(
+      ['scenario', 'draw calls', 'passes', 'program switches', 'bytes uploaded'],
+      rows.map((r) => [r.name, ...formatCounts(r.counts)]),
+    ),
+  );
 }
 
 /** One row from the copy of three.js's ocean example, timed like Oceano's frames. */
@@ -292,10 +325,12 @@ async function timeThreejsExample(browser: Browser, baseUrl: string, scenario: B
     drawCalls: frames.drawCalls,
     cpuMs: Number.NaN,
     ttffMs: null,
+    counts: null,
   };
 }
 
 interface Report {
+  guard: Guard | null;
   renderer: string;
   backend: Backend;
   browser: string;
@@ -314,6 +349,13 @@ interface Report {
   sideBySide: SideBySideRatio[];
   batchSamples: BatchSampleCost[];
   scenarios: ScenarioResult[];
+}
+
+/** The guard's line: its ratio, the target beside it, and whether it holds. */
+function formatGuard(guard: Guard | null): string {
+  if (!guard) return '**Guard** (default view ÷ three.js example, no bloom): not run in this subset.';
+  const verdict = guard.ratio <= guard.target ? 'within' : '**over**';
+  return `**Guard**, ${guard.label}: **${formatFigure(guard.ratio, 2)}** (rounds ${formatFigure(guard.min, 2)}–${formatFigure(guard.max, 2)}), target ≤ ${guard.target}: ${verdict}.`;
 }
 
 function resultsMarkdown(report: Report, when: Date): string {
@@ -350,6 +392,8 @@ function resultsMarkdown(report: Report, when: Date): string {
   return [
     '# Oceano benchmark results',
     '',
+    formatGuard(report.guard),
+    '',
     `Written by \`npm run bench\` on ${when.toISOString().slice(0, 16).replace('T', ' ')} UTC.`,
     '',
     `- Machine: ${report.machine}; load average ${report.loadAverage} when the bench started and ${report.loadAverageAtEnd} when it ended (anything above the core count slows every figure)`,
@@ -364,6 +408,13 @@ function resultsMarkdown(report: Report, when: Date): string {
     markdownTable(
       ['scenario', 'query', 'frame median (ms)', 'frame p95 (ms)', 'ratio to floor', 'triangles', 'draw calls', 'cpuMs', 'ttffMs'],
       rows,
+    ),
+    '',
+    'What one frame asks of the GPU, counted from its WebGL calls (`oceano.debug.frameCounts`; the same on every machine):',
+    '',
+    markdownTable(
+      ['scenario', 'draw calls', 'passes', 'program switches', 'bytes uploaded'],
+      report.scenarios.filter((s) => s.counts).map((s) => [s.name, ...formatCounts(s.counts as FrameCounts)]),
     ),
     ...report.scenarios
       .filter((s) => s.passesMs)

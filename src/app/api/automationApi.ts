@@ -73,7 +73,8 @@ export interface OceanoApi {
    * answers a promise. fresnelTable, fresnelTableFromBelow (n₁ = 1.333, n₂ = 1); passTimings
    * (one frame drawn waiting for the GPU after each pass: 'scene', or 'scene <model> strip' per
    * compare strip, after a model's own passes); heightmaps; lodUpdateMs (median CPU ms of one
-   * LOD/culling update, batches of 20); forceShaftLightWindow; setShadingFixes (turn off fixes
+   * LOD/culling update, batches of 20); frameCounts (one frame's draw calls, passes, program
+   * switches and bytes uploaded, counted from its WebGL calls); forceShaftLightWindow; setShadingFixes (turn off fixes
    * for far and very close views); stripCulling (compare= strips drawing only the tiles that
    * reach them); underwaterScene (the underwater passes' scene target, 'linear' or encoded).
    */
@@ -94,6 +95,7 @@ const DEBUG_CALLS = [
   'passTimings',
   'heightmaps',
   'lodUpdateMs',
+  'frameCounts',
   'forceShaftLightWindow',
   'setShadingFixes',
   'foamMemory',

@@ -3,6 +3,8 @@ import type { PassTiming } from '../../render/diagnostics/passTiming';
 import { profileFrame, timeLodUpdate } from '../../render/diagnostics/frameProfiler';
 import { checkBatches } from '../api/apiChecks';
 import { setShadingFixes, type ShadingFixes } from './shadingFaults';
+import { countFrame, type FrameCounts } from '../../render/diagnostics/frameCounter';
+import { drawPlantedPass } from './plantedPass';
 import type { EncodedScene } from '../../render/underwater/underwaterPost';
 
 /**
@@ -17,6 +19,20 @@ export function debugTools(app: OceanApp) {
     passTimings: (): PassTiming[] => profileFrame(view(), app.clock.time),
     heightmaps: (): { size: number; data: Float32Array }[] =>
       (view().waves.heightmaps ?? []).map((map) => ({ size: map.size, data: map.data.slice() })),
+    /**
+     * Draws one frame `seconds` (1/60 by default; 0: the same time again) after the clock's time,
+     * its WebGL calls counted (src/render/diagnostics/frameCounter.ts). `plantedPass`: one render
+     * more into a target of its own, a negative control.
+     */
+    frameCounts: (options: { seconds?: number; plantedPass?: boolean } = {}): FrameCounts => {
+      const seconds = options.seconds ?? 1 / 60;
+      if (!Number.isFinite(seconds) || seconds < 0) throw new Error(`frameCounts: seconds must be a number ≥ 0, got ${seconds}.`);
+      app.clock.setTime(app.clock.time + seconds);
+      return countFrame(view().renderer.getContext() as WebGL2RenderingContext, () => {
+        app.renderFrame(false);
+        if (options.plantedPass === true) drawPlantedPass(view().renderer);
+      });
+    },
     lodUpdateMs: (batches?: number): number => timeLodUpdate(view(), checkBatches(batches)),
     forceShaftLightWindow: (on: boolean): void => view().underwater.forceShaftLightWindow(on === true),
     setShadingFixes: (fixes: Partial<ShadingFixes>): void => setShadingFixes(view(), fixes),

@@ -43,7 +43,7 @@ export interface ShadingFixes {
   wholeFrameToneCurve: boolean;
   /** The sun's disc in the sky in its full brightness (src/render/sky/skyBackground.ts); off: only as the cube holds it, white (1). */
   sunInFullBrightness: boolean;
-  /** The disc's edge antialiased after the tone curve (src/render/sky/sunDiscSprite.ts); off: it steps by whole pixels. */
+  /** The disc's edge antialiased after the tone curve (src/render/sky/sunDiscSquare.ts); off: it steps by whole pixels. */
   sunDiscEdge: boolean;
   /** A sea of one roughness everywhere (the seed's) reads the sky blurred once for it (src/render/sky/prefilteredSky.ts); off: two of the sky's mip levels per pixel, blended. */
   prefilteredSky: boolean;

@@ -1,6 +1,7 @@
 import { Box3, type Object3D } from 'three';
 import type { HullSize } from '../../sim/boat/boatPose';
 import { message, MessageError } from '../../sim/params/message';
+import { oneDrawBoat } from './oneDrawBoat';
 
 export interface BoatModel {
   object: Object3D;
@@ -77,5 +78,6 @@ async function fetchBoatModel(url: string): Promise<BoatModel> {
   const beam = box.max.x - box.min.x;
   if (!(length > 0) || !(beam > 0))
     throw new MessageError(message('boatNoGeometry', { url }), `The boat model "${url}" has no geometry to float.`);
-  return { object, hull: { length, beam } };
+  // One draw for the whole boat (its parts' colours and finishes carried per vertex).
+  return { object: oneDrawBoat(object), hull: { length, beam } };
 }

@@ -23,6 +23,8 @@ export class StoneGuideView {
   private readonly material = new LineBasicMaterial({ color: 0xffd23f, depthTest: false, transparent: true, opacity: 0.85 });
   /** The lines, in world coordinates: add them to the scene (the Ocean holds them). */
   readonly lines: LineSegments;
+  /** What the positions on the GPU were drawn from: the same again uploads nothing. */
+  private drawnFrom = '';
 
   constructor() {
     this.geometry.setAttribute('position', new BufferAttribute(this.positions, 3));
@@ -41,6 +43,8 @@ export class StoneGuideView {
   update(visible: boolean, stones: readonly Stone[], time: number, equation: IWaveEquation, centreX: number): void {
     this.lines.visible = visible;
     if (!visible) return;
+    const from = `${time} ${equation} ${centreX} ${stones.slice(-MAX_STONES).join(';')}`;
+    if (from === this.drawnFrom) return;
     // Rings stop where the sponge starts, and show only the waves the field carries.
     const reach = stoneGuideReach();
     const open = reach.maxRadius;
@@ -59,7 +63,14 @@ export class StoneGuideView {
       }
     }
     this.geometry.setDrawRange(0, 2 * count);
-    (this.geometry.getAttribute('position') as BufferAttribute).needsUpdate = true;
+    this.drawnFrom = from;
+    // No rings (every stone's have left the grid): nothing drawn, nothing to upload.
+    if (count === 0) return;
+    // Only the rings drawn travel to the GPU, not the whole room for twelve stones.
+    const position = this.geometry.getAttribute('position') as BufferAttribute;
+    position.clearUpdateRanges();
+    position.addUpdateRange(0, count * 6);
+    position.needsUpdate = true;
   }
 
   dispose(): void {

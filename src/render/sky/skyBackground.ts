@@ -1,4 +1,4 @@
-import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, Vector3, type Camera, type CubeTexture } from 'three';
+import { BufferAttribute, BufferGeometry, Matrix4, Mesh, ShaderMaterial, Vector2, Vector3, type Camera, type CubeTexture } from 'three';
 import { SUN_IRRADIANCE, SUN_LIGHT_COLOR } from '../../sim/optics/sun';
 import { sunDiscRadiance } from '../../sim/optics/sunDisc';
 import vertexShader from '../../../shaders/skyBackground.vert?raw';
@@ -6,7 +6,7 @@ import fragmentShader from '../../../shaders/skyBackground.frag?raw';
 import { createSkyCubeUniforms, setSkyCube, type SkyCubeUniforms } from './skyCubeUniforms';
 import { resolveChunks } from '../shaders/shaderChunks';
 import { markOceanoMaterial } from '../underwater/sceneEncoding';
-import type { SunDiscSprite } from './sunDiscSprite';
+import type { SunDiscSquare } from './sunDiscSquare';
 
 /** What scenes call the sky mesh, so a test can take it out (to see what is behind the sea). */
 export const SKY_BACKGROUND_NAME = 'oceano-sky';
@@ -29,9 +29,9 @@ export const SKY_RENDER_ORDER = -1;
  */
 export class SkyBackground {
   readonly mesh: Mesh<BufferGeometry, ShaderMaterial>;
-  /** Settles once the disc's square (src/render/sky/sunDiscSprite.ts, fetched on first use) is in place. */
+  /** Settles once the disc's square (src/render/sky/sunDiscSquare.ts, fetched on first use) is in place. */
   readonly ready: Promise<void>;
-  private sunDisc: SunDiscSprite | null = null;
+  private sunDisc: SunDiscSquare | null = null;
   private sunDiscEdge = true;
   private disposed = false;
   private readonly clipToWorld = new Matrix4();
@@ -49,6 +49,9 @@ export class SkyBackground {
           uClipToWorldDirection: { value: this.clipToWorld },
           uSunDirection: { value: new Vector3(0, 1, 0) },
           uSunRadiance: { value: new Vector3() },
+          // The square round the disc where its edge is antialiased (none until its code arrives).
+          uDiscCentre: { value: new Vector2() },
+          uDiscHalfSize: { value: new Vector2() },
         },
         depthWrite: false,
       }),
@@ -58,18 +61,18 @@ export class SkyBackground {
     this.mesh.frustumCulled = false;
     this.mesh.renderOrder = SKY_RENDER_ORDER;
     // The camera of the render in progress (the view's own, a compare strip's, a composer pass's).
-    this.mesh.onBeforeRender = (_renderer, _scene, camera: Camera) => {
+    this.mesh.onBeforeRender = (renderer, _scene, camera: Camera) => {
       // Directions only: the camera's rotation without its position, after the inverse projection.
       this.clipToWorld.extractRotation(camera.matrixWorld).multiply(camera.projectionMatrixInverse);
+      this.sunDisc?.beforeRender(renderer, camera);
     };
-    // The disc drawn again with an antialiased edge, after the sky and before what lies at the
-    // far plane itself. Until its code arrives (or if it never does) the sky's own edge shows.
-    this.ready = import('./sunDiscSprite').then(
-      ({ SunDiscSprite }) => {
+    // The disc's edge antialiased in a square round it, in this same draw. Until its code
+    // arrives (or if it never does) the sky's own edge shows.
+    this.ready = import('./sunDiscSquare').then(
+      ({ SunDiscSquare }) => {
         if (this.disposed) return;
-        this.sunDisc = new SunDiscSprite(material.uniforms, SKY_RENDER_ORDER + 0.5);
+        this.sunDisc = new SunDiscSquare(material);
         this.sunDisc.antialiased = this.sunDiscEdge;
-        this.mesh.add(this.sunDisc.mesh);
       },
       () => undefined,
     );
@@ -112,7 +115,6 @@ export class SkyBackground {
 
   dispose(): void {
     this.disposed = true;
-    this.sunDisc?.dispose();
     this.mesh.geometry.dispose();
     this.mesh.material.dispose();
   }

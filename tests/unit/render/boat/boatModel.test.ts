@@ -41,12 +41,12 @@ describe('loadBoatModel', () => {
     vi.unstubAllGlobals();
   });
 
-  it('loads the real model and measures its hull from the bounding box', async () => {
+  it('loads the real model as one mesh and measures its hull from the bounding box', async () => {
     serve(async () => new Response(GLB, { status: 200, headers: { 'content-type': 'model/gltf-binary' } }));
     const model = await loadBoatModel('models/boat.glb');
     expect(model.hull.length).toBeCloseTo(8, 6);
     expect(model.hull.beam).toBeCloseTo(2.6, 6);
-    expect(model.object.children.length).toBeGreaterThan(0);
+    expect((model.object as Mesh).isMesh).toBe(true);
   });
 
   it('names each failure: unreachable, not found, a web page in its place, not glTF, broken glTF', async () => {
