@@ -49,6 +49,30 @@ describe('what a played frame asks of the GPU', () => {
     expect(breaches(counts, DEFAULT_VIEW)).toContain(`passes ${counts.passes} > 1`);
   });
 
+  // The spectral sea's cascades share one set of passes (src/render/waves/fft/gpuFft.ts): one evolve pass,
+  // one per Stockham stage, the last stage once per cascade, then the foam; a frame that steps the foam's
+  // lattice adds two. Counted on one frame in six of those, the budget must hold for both.
+  const SPECTRAL_VIEW: Budget = { drawCalls: 30, passes: 20 };
+
+  it.each(['t=10&waves=fft', 't=10&preset=gale'])(
+    '%s: at most 20 passes and 30 draw calls in any of six frames',
+    async (query) => {
+      const { page, consoleErrors } = await openOcean(harness, query, 1280, 720);
+      const frames: FrameCounts[] = [await frameCounts(page)];
+      for (let i = 1; i < 6; i++) frames.push(await page.evaluate(() => window.oceano.debug.frameCounts({})));
+      console.log(`[oceano] ${query}: passes ${frames.map((f) => f.passes).join(' ')}, draws ${frames.map((f) => f.drawCalls).join(' ')}`);
+      expect(frames.flatMap((counts) => breaches(counts, SPECTRAL_VIEW))).toEqual([]);
+      expect(consoleErrors).toEqual([]);
+      await page.close();
+    },
+    300_000,
+  );
+
+  it('compare-models, three seas side by side: at most 60 draw calls', async () => {
+    const counts = await countsOf('t=10&preset=compare-models');
+    expect(breaches(counts, { drawCalls: 60 })).toEqual([]);
+  }, 300_000);
+
   // The interactive waves carry nothing from the CPU: their field is stepped, disturbed and read on the GPU.
   it('a stone in the interactive waves, its guide off: no upload in a played frame', async () => {
     expect((await countsOf('t=1&preset=stone&iwaveGuide=0')).bytesUploaded).toBe(0);
