@@ -8,6 +8,8 @@ export const MAX_REFRACTION_COEFFICIENT = 2.5;
 /** Rays launched per texel width of the incoming swell, and ray steps per texel: enough that the ray density is smooth. */
 const RAYS_PER_TEXEL = 2;
 const STEPS_PER_TEXEL = 2;
+/** Passes of the 3×3 binomial filter over the ray density: about a 2-texel radius. */
+const SMOOTHING_PASSES = 4;
 /** Fast-sweeping rounds (each four sweeps) at most; the lee needs a few more than open water. */
 const MAX_SWEEP_ROUNDS = 12;
 
@@ -171,7 +173,7 @@ function fillLand(n: number, phase: Float64Array): void {
  * summed path length in a texel over its area is 1 / b, the ray density. Rays follow
  *   dx/ds = (cos θ, sin θ),  dθ/ds = ∇(ln k) · (−sin θ, cos θ),
  * turning towards larger k (shallower water), and stop at the shoreline, where they break.
- * Path length is splatted bilinearly, and the density is smoothed once (a 3×3 binomial filter).
+ * Path length is splatted bilinearly, and the density is smoothed (SMOOTHING_PASSES binomial passes).
  */
 function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64Array, direction: [number, number]): Float64Array {
   // Per texel, interleaved so one bilinear look-up reads all three: depth, and ∇ ln k by central differences.
@@ -223,6 +225,9 @@ function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64A
         entered = true;
         look(u, v);
         if (local[0] < SHALLOWEST_DEPTH) break;
+        // A ray that has turned back (trapped on the shelf, circling the island) runs against the drawn
+        // wave train, whose phase is the first arrival: its energy is not part of that train.
+        if (Math.cos(theta - theta0) < 0) break;
         splat(pathLength, n, u, v, step);
       }
       if (!inside) look(u, v);
@@ -234,10 +239,19 @@ function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64A
       v += stepTexels * Math.sin(thetaMid);
     }
   }
-  const density = new Float64Array(n * n);
-  const area = spacing * spacing;
+  // Path length per area times the rays' spacing is b0 / b. Then smoothing: the rays sample the
+  // tube unevenly (their spacing drifts against the texels'), which a few binomial passes even out.
+  let density = pathLength.map((length) => (length * rayGap) / (spacing * spacing));
+  for (let pass = 0; pass < SMOOTHING_PASSES; pass++) density = smoothOverWater(n, density, depth);
+  return density;
+}
+
+/** One pass of a 3×3 binomial filter over the water's texels (land neither gives nor takes). */
+function smoothOverWater(n: number, values: Float64Array, depth: Float64Array): Float64Array {
+  const out = new Float64Array(n * n);
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
+      if (depth[j * n + i] <= 0) continue;
       let sum = 0;
       let weight = 0;
       for (let dj = -1; dj <= 1; dj++) {
@@ -246,14 +260,14 @@ function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64A
           const jj = j + dj;
           if (ii < 0 || jj < 0 || ii >= n || jj >= n || depth[jj * n + ii] <= 0) continue;
           const w = (2 - Math.abs(di)) * (2 - Math.abs(dj));
-          sum += w * pathLength[jj * n + ii];
+          sum += w * values[jj * n + ii];
           weight += w;
         }
       }
-      density[j * n + i] = weight > 0 ? ((sum / weight) * rayGap) / area : 0;
+      out[j * n + i] = sum / weight;
     }
   }
-  return density;
+  return out;
 }
 
 /** Adds `length` of ray path at texel coordinates (u, v), shared bilinearly among the four nearest texels inside the grid. */
