@@ -134,37 +134,37 @@ function eikonalPhase(
 
 /** Gives each unreached (land) texel, ring by ring from the water, the mean of its neighbours' phases carried on linearly. */
 function fillLand(n: number, phase: Float64Array): void {
-  let pending = true;
-  while (pending) {
-    pending = false;
-    const next = phase.slice();
-    for (let j = 0; j < n; j++) {
-      for (let i = 0; i < n; i++) {
-        const t = j * n + i;
-        if (phase[t] !== Infinity) continue;
-        let sum = 0;
-        let count = 0;
-        for (const [di, dj] of [
-          [1, 0],
-          [-1, 0],
-          [0, 1],
-          [0, -1],
-        ]) {
-          const i1 = i + di;
-          const j1 = j + dj;
-          if (i1 < 0 || j1 < 0 || i1 >= n || j1 >= n || phase[j1 * n + i1] === Infinity) continue;
-          const near = phase[j1 * n + i1];
-          const i2 = i1 + di;
-          const j2 = j1 + dj;
-          const far = i2 >= 0 && j2 >= 0 && i2 < n && j2 < n ? phase[j2 * n + i2] : Infinity;
-          sum += far === Infinity ? near : 2 * near - far;
-          count++;
-        }
-        if (count > 0) next[t] = sum / count;
-        else pending = true;
+  let pending: number[] = [];
+  for (let t = 0; t < n * n; t++) if (phase[t] === Infinity) pending.push(t);
+  const carried = (i: number, j: number, di: number, dj: number): number => {
+    const i1 = i + di;
+    const j1 = j + dj;
+    if (i1 < 0 || j1 < 0 || i1 >= n || j1 >= n) return Infinity;
+    const near = phase[j1 * n + i1];
+    const i2 = i1 + di;
+    const j2 = j1 + dj;
+    const far = near !== Infinity && i2 >= 0 && j2 >= 0 && i2 < n && j2 < n ? phase[j2 * n + i2] : Infinity;
+    return far === Infinity ? near : 2 * near - far;
+  };
+  while (pending.length > 0) {
+    const ring: [number, number][] = [];
+    const rest: number[] = [];
+    for (const t of pending) {
+      const i = t % n;
+      const j = (t - i) / n;
+      let sum = 0;
+      let count = 0;
+      for (const value of [carried(i, j, 1, 0), carried(i, j, -1, 0), carried(i, j, 0, 1), carried(i, j, 0, -1)]) {
+        if (value === Infinity) continue;
+        sum += value;
+        count++;
       }
+      if (count > 0) ring.push([t, sum / count]);
+      else rest.push(t);
     }
-    phase.set(next);
+    if (ring.length === 0) break;
+    for (const [t, value] of ring) phase[t] = value;
+    pending = rest;
   }
 }
 
