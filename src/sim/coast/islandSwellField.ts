@@ -241,7 +241,7 @@ function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64A
   }
   // Path length per area times the rays' spacing is b0 / b. Then smoothing: the rays sample the
   // tube unevenly (their spacing drifts against the texels'), which a few binomial passes even out.
-  let density = pathLength.map((length) => (length * rayGap) / (spacing * spacing));
+  let density: Float64Array = pathLength.map((length) => (length * rayGap) / (spacing * spacing));
   for (let pass = 0; pass < SMOOTHING_PASSES; pass++) density = smoothOverWater(n, density, depth);
   return density;
 }
