@@ -77,6 +77,13 @@ float withWakeFoam(float foam) { return max(foam, vWakeFoam); }
 vec3 withWakeSlope(vec3 n) { return n; }
 float withWakeFoam(float foam) { return foam; }
 #endif
+#ifdef OCEAN_COAST
+// The coast (shaders/coast.glsl): the depth, breaking and swell phase from the vertices, and
+// the swell's slope with the wind sea's factor, for per-pixel normals.
+#include <oceano_coast>
+varying vec3 vCoastLook;
+varying vec3 vCoastTilt;
+#endif
 #ifdef OCEAN_IWAVE
 // The interactive field's steep water: paler, greener where light crosses a thin crest, and
 // foam as a wave nears Stokes's limit (src/sim/iwave/steepnessTint.ts, shaders/iwave.glsl).
@@ -204,6 +211,9 @@ void main() {
     // At the grid point relative to the render origin: exact 10⁶ m out, where vGridXZ moves in 6 cm steps.
     n = waveNormalNear(vRelativeGridXZ);
     n = withWakeSlope(n);
+#ifdef OCEAN_COAST
+    n = coastTiltNormal(n, vCoastTilt.z, vCoastTilt.xy);
+#endif
   }
 #endif
   // Detail normals: a model whose normals are per vertex loses its short waves where the
@@ -293,6 +303,10 @@ void main() {
 
 #ifdef OCEAN_WATER_OPTICS
   vec3 water = vWaterBody;
+#ifdef OCEAN_COAST
+  // The sea bed seen through the shallows (shaders/coast.glsl).
+  water = coastShallowWater(water, vCoastLook.x);
+#endif
 #else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
 #endif
@@ -318,6 +332,9 @@ void main() {
   foam = withWakeFoam(foam);
 #ifdef OCEAN_IWAVE
   foam = max(foam, iwaveFoam(vIWaveSlope));
+#endif
+#ifdef OCEAN_COAST
+  foam = max(foam, coastSurfFoam(vCoastLook));
 #endif
   if (foam > 0.0) {
 #ifdef OCEAN_FOAM_TEXTURE

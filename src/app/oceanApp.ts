@@ -26,6 +26,8 @@ import { LessonHost } from './lessons/lessonHost';
 import { FREE_AREA_EVENT } from './layout/freeAreaEvent';
 import type { Rect } from '../sim/layout/rect';
 import type { SeaTools } from './tools/seaTools';
+import { HULL_DRAFT } from '../sim/coast/aground';
+import { seaDepth } from '../sim/coast/bathymetry';
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -116,7 +118,9 @@ export class OceanApp {
     startupTimeline?.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.container.addEventListener(FREE_AREA_EVENT, this.onFreeArea);
-    this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state);
+    this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state, () =>
+      this.notify(message('boatAground', { draft: HULL_DRAFT })),
+    );
     this.view.ocean.recordStones(state.stones);
     if (state.cullingCamera && this.params.freezeCulling) {
       // freeze the selection from the culling camera, then look at it from the preset's
@@ -387,6 +391,11 @@ export class OceanApp {
       x,
       z,
     )
+  );
+  /** The still water's depth at world (x, z), metres (≤ 0 on land): seaDepth is tiny, so it is computed here, never waiting for the coast's code. */
+  depth = (x: number, z: number): number => (
+    checkSurfacePoint(x, z),
+    seaDepth({ bathymetry: this.params.bathymetry, beachSlope: this.params.beachSlope, deepDepth: this.params.depth }, x, z)
   );
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> =>
     this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);

@@ -48,6 +48,8 @@ export class BoatController {
     private readonly view: BoatView,
     private readonly carryCamera: (dx: number, dz: number) => void,
     opened: { boatState: BoatSnapshot | null; wakeTrack?: WakeTrack | null; time: number | null } = { boatState: null, time: null },
+    /** Called once each time the boat runs aground (it stops where the water is shallower than its draft). */
+    private readonly onAground: () => void = () => {},
   ) {
     if (opened.boatState && opened.time !== null) this.motion.restore(opened.boatState, opened.time);
     if (opened.wakeTrack && opened.time !== null) this.wake.restore(opened.wakeTrack);
@@ -76,6 +78,8 @@ export class BoatController {
     const previous = this.state?.pose;
     const model = (x: number, z: number) => waves.height(x, z, time);
     const field = ocean?.interactiveWaves;
+    const wasAground = this.motion.aground;
+    this.motion.floor = { bathymetry: params.bathymetry, beachSlope: params.beachSlope, deepDepth: params.depth };
     this.state = this.motion.update(
       time,
       { heading: params.boatHeading * DEG, speed: params.boatSpeed, response: params.boatResponse },
@@ -90,6 +94,7 @@ export class BoatController {
           }
         : undefined,
     );
+    if (this.motion.aground && !wasAground) this.onAground();
     const pose = this.state.pose;
     this.view.setPose(pose);
     if (params.boatFollow && previous) this.carryCamera(pose.x - previous.x, pose.z - previous.z);

@@ -43,6 +43,8 @@ import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 import { createFoamUniforms, setFoamWind } from '../foam/foamUniforms';
 import { checkSurfaceBatch, sampleSurfaces, type SurfacePoints, type SurfaceSamples } from '../../sim/waves/surfaceBatch';
 import type { FoamDetail } from '../foam/foamDetail';
+import { createCoastUniforms } from '../coast/coastUniforms';
+import type { CoastScene } from '../coast/coastScene';
 
 /** @internal The parameters an ocean material shows (every model's material of a comparison alike). */
 export const LOOK_KEYS: readonly ParamKey[] = [
@@ -95,6 +97,8 @@ export class OceanEngine extends Object3D {
   readonly interactiveWaveUniforms = createInteractiveWaveUniforms();
   /** @internal The foam material's detail texture and the wind its streaks follow, for every ocean material of the view. */
   readonly foamUniforms = createFoamUniforms();
+  /** @internal The coast's field and floor (shaders/coast.glsl), filled once its code has arrived (bathymetry other than deep). */
+  readonly coastUniforms = createCoastUniforms();
   /** @internal What a compared model's ocean material shares with this one's. */
   readonly materialInputs: OceanMaterialInputs;
   /** @internal */
@@ -127,6 +131,9 @@ export class OceanEngine extends Object3D {
   private foamDetail: FoamDetail | null = null;
   private foamDetailLoad: Promise<void> | null = null;
   private wakeCodeLoad: Promise<void> | null = null;
+  /** The coast, while `bathymetry` is not `deep` and its code has arrived. */
+  private coast: CoastScene | null = null;
+  private coastCode: Promise<typeof import('../coast/coastScene')> | null = null;
 
   /** `params`: validated as the URL and the GUI validate them; `sky`: a cube map to reflect, or null for the sky painted from the sun. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, sky: CubeTexture | null = null) {
@@ -158,6 +165,7 @@ export class OceanEngine extends Object3D {
         ...this.wakeUniforms,
         ...this.interactiveWaveUniforms,
         ...this.foamUniforms,
+        ...this.coastUniforms,
         uSunColor: this.lightUniforms.uSunColor,
       },
     };
@@ -167,7 +175,7 @@ export class OceanEngine extends Object3D {
     this.add(this.chunks.group);
     this.lod = full;
     this.bounds = this.waveView.model.bounds();
-    this.seaBed = new SeaBed(this.binding, { ...this.waterVolume, ...this.caustics, ...this.lightUniforms });
+    this.seaBed = new SeaBed(this.binding, { ...this.waterVolume, ...this.caustics, ...this.lightUniforms, ...this.coastUniforms });
     this.add(this.seaBed.mesh);
     this.visible = available === first;
     // Until the first model's code arrives, the stand-in's parameters are the ones in force.
@@ -190,7 +198,7 @@ export class OceanEngine extends Object3D {
 
   /** @internal The CPU twin of the waves drawn: sample it for heights and normals at any time. */
   get waves(): LiveWaveModel {
-    return this.waveView.model;
+    return this.coast ? this.coast.surfaceOver(this.waveView.model) : this.waveView.model;
   }
 
   /** The time of the last update, seconds. */
@@ -268,8 +276,9 @@ export class OceanEngine extends Object3D {
       previous.dispose();
     }
     this.waveView.setParams(params);
-    // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
-    this.bounds = this.waveView.model.bounds();
+    if (changed('bathymetry', 'beachSlope', 'depth', 'swellHeight', 'swellPeriod', 'swellDirection', 'windSea')) this.setCoast(params);
+    // Chunk boxes reach as far as any wave can move a vertex (the coast's swell included), so a crest rising into view is never culled.
+    this.bounds = this.waves.bounds();
     if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fogDensity', 'caustics', 'causticsIntensity')) {
       const sun = sunDirection(params.sunElevation, params.sunAzimuth);
@@ -296,7 +305,38 @@ export class OceanEngine extends Object3D {
       };
     }
     // The wave bound too: a bed below every trough skips the caustics' above-the-surface test.
-    this.seaBed.setDepth(params.seaBedDepth, this.underwaterShortcuts ? this.bounds.vertical : Infinity);
+    // On a coast the bed follows the floor (shaders/coast.glsl) and rises through the waves.
+    this.seaBed.setDepth(this.coast ? 0 : params.seaBedDepth, this.underwaterShortcuts && !this.coast ? this.bounds.vertical : Infinity);
+  }
+
+  /**
+   * The coast's code is fetched the first time `bathymetry` is not `deep` (most oceans are
+   * deep); whenReady() covers it. Deep again, the coast is taken away and its programs left out.
+   */
+  private setCoast(params: OceanParams): void {
+    if (params.bathymetry === 'deep') {
+      this.coast?.dispose();
+      this.coast = null;
+      this.showCoast(false);
+      return;
+    }
+    this.coastCode ??= import('../coast/coastScene');
+    const start = this.coastCode.then(({ CoastScene, coastChunk }) => {
+      if (this.disposed || this.params.bathymetry === 'deep') return;
+      this.binding.late.provide('oceano_coast', coastChunk);
+      this.coast ??= new CoastScene(this.coastUniforms, this.material.uniforms, this);
+      this.coast.setParams(this.params);
+      this.coast.update(this.frameTime, this.waveView.model);
+      this.bounds = this.waves.bounds();
+      this.showCoast(true);
+    });
+    this.waitFor(start);
+  }
+
+  private showCoast(on: boolean): void {
+    this.material.setCoast(on);
+    this.seaBed.setCoast(on);
+    this.seaBed.setDepth(on ? 0 : this.params.seaBedDepth, this.underwaterShortcuts && !on ? this.bounds.vertical : Infinity);
   }
 
   /** Everything a frame needs for `camera` at `time` (seconds): the waves, which side of the water the eye is on, and the chunks in view. */
@@ -308,6 +348,16 @@ export class OceanEngine extends Object3D {
     this.shade(camera);
   }
 
+  /** @internal Whether the coast is drawn (its code has arrived and `bathymetry` is not deep). */
+  get hasCoast(): boolean {
+    return this.coast !== null;
+  }
+
+  /** @internal The coast's swell at `time` (the GPU probe sets it for the time it reads, then back). */
+  advanceCoast(time: number): void {
+    this.coast?.update(time, this.waveView.model);
+  }
+
   /** @internal Centres the interactive waves on where `camera` looks (update does; a view that calls advance itself calls this first). */
   follow(camera: PerspectiveCamera): void {
     if (this.interactive) this.interactive.follow(...focusOf(camera));
@@ -317,6 +367,7 @@ export class OceanEngine extends Object3D {
   advance(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
+    this.coast?.update(time, this.waveView.model);
     if (this.interactive) {
       this.interactive.setBoat(this.boat);
       this.interactive.advance(time);
@@ -422,12 +473,12 @@ export class OceanEngine extends Object3D {
 
   /** @internal Height of the surface under (x, z) at `time`, kept while nothing it depends on changes (a paused view asks it every frame). */
   surfaceUnder(x: number, z: number, time: number): number {
-    return this.eye.surfaceUnder(this.waveView.model, x, z, time);
+    return this.eye.surfaceUnder(this.waves, x, z, time);
   }
 
   /** @internal Which side of the water `camera` sees from. */
   locateEye(camera: PerspectiveCamera, time: number): EyePlace {
-    this.place = this.eye.locate(camera, this.waveView.model, this.bounds.vertical, time);
+    this.place = this.eye.locate(camera, this.waves, this.bounds.vertical, time);
     return this.place;
   }
 
@@ -461,6 +512,8 @@ export class OceanEngine extends Object3D {
     const { submersion, eyeSurface } = this.place;
     this.material.setSeenFromBelow(submersion === 'below' && !this.underwaterShortcuts ? 'straddling' : submersion);
     this.seaBed.mesh.visible = submersion !== 'above';
+    // The land above the water; from under it the sea bed, which follows the same floor, takes over.
+    if (this.coast) this.coast.land.mesh.visible = submersion === 'above';
     this.seaBed.follow(camera.position);
     // Seen entirely from below, the sky can only show through the surface.
     this.sky.visible = submersion !== 'below';
@@ -477,7 +530,7 @@ export class OceanEngine extends Object3D {
    * with the interactive waves on, their latest read-back added (a frame or two old, whatever `time` says).
    */
   sampleSurface(x: number, z: number, time = this.frameTime): SurfaceSample {
-    return this.withInteractiveWaves(this.waveView.model.sample(x, z, time), x, z);
+    return this.withInteractiveWaves(this.waves.sample(x, z, time), x, z);
   }
 
   /**
@@ -488,7 +541,7 @@ export class OceanEngine extends Object3D {
   sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
     const into = checkSurfaceBatch(points, out);
     return sampleSurfaces(
-      this.waveView.model,
+      this.waves,
       points,
       time,
       into,
@@ -532,6 +585,7 @@ export class OceanEngine extends Object3D {
     this.chunks.dispose();
     this.material.dispose();
     this.seaBed.dispose();
+    this.coast?.dispose();
     this.waveView.dispose();
     this.interactive?.dispose();
     this.foamDetail?.dispose();
@@ -555,9 +609,9 @@ function focusOf(camera: PerspectiveCamera): [number, number] {
   return [x + forward.x * reach, z + forward.z * reach];
 }
 
-/** Whether foam is drawn as foam: the spectral sea's whitecaps or the wake's foam in view, and the foamTexture parameter on. */
+/** Whether foam is drawn as foam: the spectral sea's whitecaps, the wake's foam or the coast's surf in view, and the foamTexture parameter on. */
 function foamTextureWanted(params: OceanParams): boolean {
-  return params.foamTexture && ((params.foam && modelsDrawn(params).includes('fft')) || params.wake);
+  return params.foamTexture && ((params.foam && modelsDrawn(params).includes('fft')) || params.wake || params.bathymetry !== 'deep');
 }
 
 /** @internal The model the ocean itself draws: the first of a comparison, else `waves`. */

@@ -20,6 +20,7 @@ import type { WakeUniforms } from '../wake/wakeUniforms';
 import type { InteractiveWaveUniforms } from '../iwave/interactiveWaveUniforms';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import { wakeChunk } from '../wake/wakeChunk';
+import type { CoastUniforms } from '../coast/coastUniforms';
 
 const TARGET_WIDTH = 256;
 
@@ -45,6 +46,7 @@ export class SurfaceProbe {
     private readonly waves: WaveBinding,
     wake: WakeUniforms,
     interactive: InteractiveWaveUniforms,
+    coast: CoastUniforms,
   ) {
     // probe.vert adds the wake wherever it is on: its GLSL comes with this code.
     waves.late.provide('oceano_wake', wakeChunk);
@@ -52,7 +54,7 @@ export class SurfaceProbe {
       new ShaderMaterial({
         vertexShader,
         fragmentShader,
-        uniforms: { uTargetSize: { value: new Vector2() }, ...wake, ...interactive },
+        uniforms: { uTargetSize: { value: new Vector2() }, ...wake, ...interactive, ...coast },
         depthTest: false,
         depthWrite: false,
       }),
@@ -64,6 +66,11 @@ export class SurfaceProbe {
   /** Whether the interactive waves are added (their chunk must have reached the binding first). */
   setInteractiveWavesOn(on: boolean): void {
     setMaterialDefine(this.material, 'OCEAN_IWAVE', on);
+  }
+
+  /** Whether the coast's swell and calmed wind sea are added (its chunk must have reached the binding first). */
+  setCoastOn(on: boolean): void {
+    setMaterialDefine(this.material, 'OCEAN_COAST', on);
   }
 
   probe(points: readonly (readonly [number, number])[]): ProbeSample[] {

@@ -1,0 +1,118 @@
+// The coast (OCEAN_COAST; src/render/coast/coastChunk.ts puts the #defines of
+// src/sim/coast/bathymetry.ts and src/sim/coast/shallowWaterColor.ts before this text).
+// Three things the open sea does not have:
+// - the sea floor's depth h(x, z), the same formula as seaDepth on the CPU;
+// - the swell from far away that feels that floor: a precomputed field (src/sim/coast/) of
+//   unwrapped phase S, amplitude a, depth and breaking fraction, read as
+//   sampleCoastField reads it on the CPU, and η = a cos(S − ω t);
+// - the wind sea (the wave model's own waves) calmed where the water is too shallow to hold
+//   them (src/sim/coast/windSeaDamping.ts).
+
+// Four floats per texel: S (rad), a (m), h (m), breaking fraction. A float texture is read
+// with texelFetch and interpolated here, since linear filtering of float textures is an
+// extension WebGL2 does not promise.
+uniform highp sampler2D uCoastField;
+// World x, z of texel (0, 0)'s centre, metres between texel centres, texels per side.
+uniform vec4 uCoastGrid;
+// ω (t mod T): the swell's phase advance, reduced on the CPU so float32 keeps it exact.
+uniform float uCoastAdvance;
+// x: 1 with the wind sea on, 0 off; y: γ / H, the breaker index over the wind sea's largest height.
+uniform vec2 uCoastWind;
+// x: the floor's shape (1 beach, 2 island); y: its slope.
+uniform vec2 uCoastFloor;
+
+// The still water's depth at world (x, z), metres, ≤ 0 on land (seaDepth in src/sim/coast/bathymetry.ts).
+float coastSeaDepth(vec2 xz) {
+  bool beach = uCoastFloor.x < 1.5;
+  float seaward = beach ? COAST_BEACH_SHORE_X - xz.x : length(xz - COAST_ISLAND_CENTER) - COAST_ISLAND_RADIUS;
+  float land = beach ? COAST_DUNE_HEIGHT : COAST_ISLAND_HEIGHT;
+  return min(COAST_OFFSHORE_DEPTH, max(-land, seaward * uCoastFloor.y));
+}
+
+// How much of the wind sea stays at world (x, z): min(1, γ h / H), 0 on land or with the wind sea off.
+float coastWindFactor(vec2 xz) {
+  return uCoastWind.x * clamp(uCoastWind.y * coastSeaDepth(xz), 0.0, 1.0);
+}
+
+vec4 coastTexel(int i, int j) {
+  return texelFetch(uCoastField, ivec2(i, j), 0);
+}
+
+// All four channels at texel-index coordinates (u, v) inside [0, N − 1]²: bilinear between texel centres.
+vec4 coastBilinear(vec2 uv) {
+  int last = int(uCoastGrid.w + 0.5) - 1;
+  int i0 = min(int(floor(uv.x)), last - 1);
+  int j0 = min(int(floor(uv.y)), last - 1);
+  float fu = uv.x - float(i0);
+  float fv = uv.y - float(j0);
+  vec4 bottom = coastTexel(i0, j0) * (1.0 - fu) + coastTexel(i0 + 1, j0) * fu;
+  vec4 top = coastTexel(i0, j0 + 1) * (1.0 - fu) + coastTexel(i0 + 1, j0 + 1) * fu;
+  return bottom * (1.0 - fv) + top * fv;
+}
+
+// The field at world (x, z): outside the grid, the edge's amplitude, depth and breaking, and a
+// phase that goes on growing at the edge's rate (sampleCoastField, src/sim/coast/coastFieldSampling.ts).
+vec4 coastFieldAt(vec2 xz) {
+  float last = uCoastGrid.w - 1.0;
+  vec2 uv = (xz - uCoastGrid.xy) / uCoastGrid.z;
+  vec2 c = clamp(uv, 0.0, last);
+  vec4 s = coastBilinear(c);
+  float edge = s.x;
+  if (uv.x != c.x) {
+    float inward = uv.x > c.x ? -1.0 : 1.0;
+    s.x += (edge - coastBilinear(vec2(c.x + inward, c.y)).x) * -inward * (uv.x - c.x);
+  }
+  if (uv.y != c.y) {
+    float inward = uv.y > c.y ? -1.0 : 1.0;
+    s.x += (edge - coastBilinear(vec2(c.x, c.y + inward)).x) * -inward * (uv.y - c.y);
+  }
+  return s;
+}
+
+// η = a cos(S − ω t) at world (x, z).
+float coastSwellHeight(vec2 xz) {
+  vec4 s = coastFieldAt(xz);
+  return s.y * cos(s.x - uCoastAdvance);
+}
+
+// The swell's height and slope (∂η/∂x, ∂η/∂z) at world (x, z); the slope by central
+// differences of COAST_NORMAL_STEP metres, as coastSwellNormal takes it on the CPU.
+vec3 coastSwell(vec2 xz) {
+  const vec2 dx = vec2(COAST_NORMAL_STEP, 0.0);
+  const vec2 dz = vec2(0.0, COAST_NORMAL_STEP);
+  float slopeX = (coastSwellHeight(xz + dx) - coastSwellHeight(xz - dx)) / (2.0 * COAST_NORMAL_STEP);
+  float slopeZ = (coastSwellHeight(xz + dz) - coastSwellHeight(xz - dz)) / (2.0 * COAST_NORMAL_STEP);
+  return vec3(coastSwellHeight(xz), slopeX, slopeZ);
+}
+
+// The wind sea's normal `n` with its slopes scaled by `factor`, tilted by the swell's `slope`.
+vec3 coastTiltNormal(vec3 n, float factor, vec2 slope) {
+  vec2 wind = -n.xz / max(n.y, 1e-4) * factor;
+  return normalize(vec3(-(wind.x + slope.x), 1.0, -(wind.y + slope.y)));
+}
+
+// What the pixels need, per vertex: the depth, the breaking fraction and the phase S − ω t.
+vec3 coastLook(vec2 xz) {
+  vec4 s = coastFieldAt(xz);
+  return vec3(coastSeaDepth(xz), s.w, s.x - uCoastAdvance);
+}
+
+// The water's own colour over a bed `depth` metres down: the deep water's (`deep`, whose
+// reflectance is R∞) with R∞ replaced by R(h) = R∞ + (ρ − R∞) e^(−2 K h)
+// (src/sim/coast/shallowWaterColor.ts): turquoise over sand in the shallows, sand on the shore.
+vec3 coastShallowWater(vec3 deep, float depth) {
+  vec3 bed = exp(-2.0 * COAST_ATTENUATION * max(depth, 0.0));
+  vec3 reflectance = WATER_BODY_REFLECTANCE + (COAST_BED_ALBEDO - WATER_BODY_REFLECTANCE) * bed;
+  return deep * reflectance / WATER_BODY_REFLECTANCE;
+}
+
+// The surf's foam: where the field says the swell breaks, on the front of each crest (the bore
+// that runs ahead of it) fading behind it, and a thin sheet of what earlier crests left.
+// An artistic shape over a physical place: the breaking fraction decides where, the phase when.
+float coastSurfFoam(vec3 look) {
+  float breaking = clamp(look.y, 0.0, 1.0);
+  if (breaking <= 0.0) return 0.0;
+  // 1 just ahead of the crest (phase slightly past 0), falling off over half a wavelength.
+  float front = pow(0.5 + 0.5 * cos(look.z - 0.6), 6.0);
+  return breaking * clamp(0.25 + 0.85 * front, 0.0, 1.0);
+}
