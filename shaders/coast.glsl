@@ -8,6 +8,8 @@
 // - the wind sea (the wave model's own waves) calmed where the water is too shallow to hold
 //   them (src/sim/coast/windSeaDamping.ts).
 
+#include <oceano_constants>
+
 // Four floats per texel: S (rad), a (m), h (m), breaking fraction. A float texture is read
 // with texelFetch and interpolated here, since linear filtering of float textures is an
 // extension WebGL2 does not promise.
@@ -135,6 +137,6 @@ float coastSurfFoam(vec3 look) {
   float breaking = clamp(look.y, 0.0, 1.0);
   if (breaking <= 0.0) return 0.0;
   // 1 just ahead of the crest (phase slightly past 0), falling off over half a wavelength.
-  float front = pow(0.5 + 0.5 * cos(look.z - 0.6), 6.0);
-  return breaking * clamp(0.25 + 0.85 * front, 0.0, 1.0);
+  float front = pow(0.5 + 0.5 * cos(look.z - 0.6), 10.0);
+  return breaking * clamp(0.08 + 0.9 * front, 0.0, 1.0);
 }
