@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { terrainBreaks } from '../../../../src/sim/coast/coastTerrain';
 
 describe("the land's profile", () => {
-  it('puts vertices where the ground bends: the inland edge, the top of the slope, the shoreline, the deepest part drawn', () => {
+  it('puts vertices where the ground bends: inland edge, top of the slope, shoreline, deepest part drawn', () => {
     const breaks = terrainBreaks(0.02, 4, 30_000, 4);
     expect(breaks).toEqual([-30_000, -200, -100, 0, 100, 200]);
   });
