@@ -77,6 +77,9 @@ float withWakeFoam(float foam) { return max(foam, vWakeFoam); }
 vec3 withWakeSlope(vec3 n) { return n; }
 float withWakeFoam(float foam) { return foam; }
 #endif
+#ifdef OCEAN_COAST
+#include <oceano_coast>
+#endif
 #ifdef OCEAN_IWAVE
 // The interactive field's steep water: paler, greener where light crosses a thin crest, and
 // foam as a wave nears Stokes's limit (src/sim/iwave/steepnessTint.ts, shaders/iwave.glsl).
@@ -204,6 +207,9 @@ void main() {
     // At the grid point relative to the render origin: exact 10⁶ m out, where vGridXZ moves in 6 cm steps.
     n = waveNormalNear(vRelativeGridXZ);
     n = withWakeSlope(n);
+#ifdef OCEAN_COAST
+    n = coastTiltNormal(n, vCoastTilt.z, vCoastTilt.xy);
+#endif
   }
 #endif
   // Detail normals: a model whose normals are per vertex loses its short waves where the
@@ -293,6 +299,9 @@ void main() {
 
 #ifdef OCEAN_WATER_OPTICS
   vec3 water = vWaterBody;
+#ifdef OCEAN_COAST
+  water = coastShallowWater(water, vCoastLook.x);
+#endif
 #else
   vec3 water = mix(uDeepColor, uFacingTint, cosIncidence * cosIncidence);
 #endif
@@ -318,6 +327,9 @@ void main() {
   foam = withWakeFoam(foam);
 #ifdef OCEAN_IWAVE
   foam = max(foam, iwaveFoam(vIWaveSlope));
+#endif
+#ifdef OCEAN_COAST
+  foam = max(foam, coastSurfFoam(vCoastLook));
 #endif
   if (foam > 0.0) {
 #ifdef OCEAN_FOAM_TEXTURE

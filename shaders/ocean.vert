@@ -16,6 +16,9 @@
 #ifdef OCEAN_IWAVE
 #include <oceano_iwave>
 #endif
+#ifdef OCEAN_COAST
+#include <oceano_coast>
+#endif
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
 uniform bool uFlatNormals;
@@ -159,6 +162,9 @@ void main() {
     d *= waves;
     vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
   }
+#ifdef OCEAN_COAST
+  coastDisplace(d, vNormal, gridXZ, waves, uFlatNormals);
+#endif
   vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
 #ifdef OCEAN_IWAVE
   // Near the boat the interactive field carries its waves, farther out the analytic wake:

@@ -11,6 +11,9 @@
 #ifdef OCEAN_IWAVE
 #include <oceano_iwave>
 #endif
+#ifdef OCEAN_COAST
+#include <oceano_coast>
+#endif
 
 attribute vec2 aSample;
 attribute float aIndex;
@@ -22,6 +25,16 @@ void main() {
   bool normalTexel = mod(aIndex, 2.0) > 0.5;
   vec3 d = waveDisplacement(aSample);
   vec3 n = waveNormal(aSample);
+#ifdef OCEAN_COAST
+  // The coast as ocean.vert adds it: the wind sea (off: none) calmed by depth, plus the swell, at the displaced point.
+  d *= uCoastWind.x;
+  float windFactor = coastWindFactor(aSample + d.xz);
+  vec4 slope;
+  vec4 field = coastFieldAt(aSample + d.xz, slope);
+  vec3 swell = coastSwellOf(field, slope);
+  d.y = d.y * windFactor + swell.x;
+  n = coastTiltNormal(n, windFactor, swell.yz);
+#endif
   vec2 at = aSample + d.xz;
 #ifdef OCEAN_IWAVE
   vec2 handOver = iwaveHandOver(at, vec2(0.0));

@@ -32,6 +32,8 @@ export interface OceanoApi {
   getCamera(): CameraPose;
   /** The surface as drawn at the current time: the active waves plus the boat's wake where it is on. */
   sampleSurface(x: number, z: number): SurfaceSample;
+  /** The still water's depth at world (x, z), metres, from the sea floor in force (`bathymetry`): ≤ 0 on land. */
+  depth(x: number, z: number): number;
   /** The same surface evaluated by the GPU shader and read back; `t` defaults to the current time. */
   probeGpu(points: [number, number][], t?: number): Promise<ProbeSample[]>;
   /**
@@ -149,6 +151,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     setCamera: (pose) => app.setCamera(pose),
     getCamera: () => app.camera(),
     sampleSurface: (x, z) => app.sampleSurface(x, z),
+    depth: (x, z) => app.depth(x, z),
     probeGpu: async (points, t) => app.probeGpu(points, t),
     disturb: (x, z, options) => app.disturb(x, z, options),
     probe: (...place) => app.loadSeaTools().then((tools) => tools.probeCall(place)),
@@ -202,6 +205,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     setCamera: fail,
     getCamera: fail,
     sampleSurface: fail,
+    depth: fail,
     probeGpu: () => Promise.reject(reason),
     disturb: fail,
     probe: failed,

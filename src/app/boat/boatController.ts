@@ -9,6 +9,7 @@ import type { BoatInField, InteractiveWaves } from '../../render/iwave/interacti
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import { addWake, BoatWake, WAKE_HULL, wakeHeightBound } from '../../sim/wake/boatWake';
 import type { WakeTrack } from '../../sim/wake/wakeTrack';
+import type { SailLimit } from '../../sim/coast/aground';
 
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
 const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
@@ -48,6 +49,8 @@ export class BoatController {
     private readonly view: BoatView,
     private readonly carryCamera: (dx: number, dz: number) => void,
     opened: { boatState: BoatSnapshot | null; wakeTrack?: WakeTrack | null; time: number | null } = { boatState: null, time: null },
+    /** Called once each time the boat runs aground (it stops where the water is shallower than its draft). */
+    private readonly onAground: () => void = () => {},
   ) {
     if (opened.boatState && opened.time !== null) this.motion.restore(opened.boatState, opened.time);
     if (opened.wakeTrack && opened.time !== null) this.wake.restore(opened.wakeTrack);
@@ -71,11 +74,17 @@ export class BoatController {
     params: OceanParams,
     waves: LiveWaveModel,
     view: Pick<OceanView, 'setWake'>,
-    ocean?: { setBoat(boat: BoatInField | null): void; readonly interactiveWaves: InteractiveWaves | null },
+    ocean?: {
+      setBoat(boat: BoatInField | null): void;
+      readonly interactiveWaves: InteractiveWaves | null;
+      readonly sailLimit: SailLimit | null;
+    },
   ): void {
     const previous = this.state?.pose;
     const model = (x: number, z: number) => waves.height(x, z, time);
     const field = ocean?.interactiveWaves;
+    const wasAground = this.motion.aground;
+    this.motion.limit = ocean?.sailLimit ?? null;
     this.state = this.motion.update(
       time,
       { heading: params.boatHeading * DEG, speed: params.boatSpeed, response: params.boatResponse },
@@ -90,6 +99,7 @@ export class BoatController {
           }
         : undefined,
     );
+    if (this.motion.aground && !wasAground) this.onAground();
     const pose = this.state.pose;
     this.view.setPose(pose);
     if (params.boatFollow && previous) this.carryCamera(pose.x - previous.x, pose.z - previous.z);

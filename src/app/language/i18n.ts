@@ -35,7 +35,7 @@ const unit = (v: MessageValues) => (v.unit ? ` ${v.unit}` : '');
  * Notices that only a part fetched on use can raise: their texts travel in that part and are
  * added here when it loads (registerNoticeTexts), so the page's first script does not carry them.
  */
-export type LateNoticeId = 'boatUnreachable' | 'boatNotFound' | 'boatWebPage' | 'boatNotGltf' | 'boatNoGeometry';
+export type LateNoticeId = 'boatUnreachable' | 'boatNotFound' | 'boatWebPage' | 'boatNotGltf' | 'boatNoGeometry' | 'boatAground';
 
 const MESSAGES: Record<Language, Record<Exclude<MessageId, LateNoticeId>, Render> & Partial<Record<LateNoticeId, Render>>> = {
   en: {

@@ -17,6 +17,7 @@ export type PanelWordId =
   | 'folderUnderwater'
   | 'folderGerstner'
   | 'folderPhysics'
+  | 'folderCoast'
   | 'folderCompare'
   | 'dive'
   | 'surface'
@@ -33,6 +34,7 @@ const WORDS: Record<Language, Record<PanelWordId, string>> = {
   en: {
     panelTitle: 'Oceano',
     folderSwell: 'Swell',
+    folderCoast: 'Coast',
     folderSpectral: 'Wind & spectrum (fft, gerstner)',
     folderRipples: 'Ripples (Perlin)',
     folderLight: 'Light & water',
@@ -57,6 +59,7 @@ const WORDS: Record<Language, Record<PanelWordId, string>> = {
   es: {
     panelTitle: 'Oceano',
     folderSwell: 'Oleaje',
+    folderCoast: 'Costa',
     folderSpectral: 'Viento y espectro (fft, gerstner)',
     folderRipples: 'Ondas (Perlin)',
     folderLight: 'Luz y agua',

@@ -36,6 +36,7 @@ const FOLDERS: { title: PanelWordId; keys: ParamKey[] }[] = [
   { title: 'folderRipples', keys: ['rippleStrength', 'rippleBlendSpeed', 'seed'] },
   { title: 'folderGerstner', keys: ['gerstnerCount', 'gerstnerSteepness'] },
   { title: 'folderCompare', keys: ['compare', 'compareSplit', 'compareSplit2'] },
+  { title: 'folderCoast', keys: ['bathymetry', 'beachSlope', 'swellHeight', 'swellPeriod', 'swellDirection', 'windSea'] },
   { title: 'folderPhysics', keys: ['physics'] },
   {
     title: 'folderLight',

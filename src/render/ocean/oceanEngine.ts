@@ -43,6 +43,8 @@ import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 import { createFoamUniforms, setFoamWind } from '../foam/foamUniforms';
 import { checkSurfaceBatch, sampleSurfaces, type SurfacePoints, type SurfaceSamples } from '../../sim/waves/surfaceBatch';
 import type { FoamDetail } from '../foam/foamDetail';
+import type { CoastScene } from '../coast/coastScene';
+import type { SailLimit } from '../../sim/coast/aground';
 
 /** @internal The parameters an ocean material shows (every model's material of a comparison alike). */
 export const LOOK_KEYS: readonly ParamKey[] = [
@@ -127,6 +129,10 @@ export class OceanEngine extends Object3D {
   private foamDetail: FoamDetail | null = null;
   private foamDetailLoad: Promise<void> | null = null;
   private wakeCodeLoad: Promise<void> | null = null;
+  /** @internal The coast (src/render/coast/coastScene.ts), while `bathymetry` is not `deep` and its code has arrived. */
+  coast: CoastScene | null = null;
+  private coastCode: Promise<void> | null = null;
+  private coastScene: typeof CoastScene | null = null;
 
   /** `params`: validated as the URL and the GUI validate them; `sky`: a cube map to reflect, or null for the sky painted from the sun. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, sky: CubeTexture | null = null) {
@@ -190,7 +196,7 @@ export class OceanEngine extends Object3D {
 
   /** @internal The CPU twin of the waves drawn: sample it for heights and normals at any time. */
   get waves(): LiveWaveModel {
-    return this.waveView.model;
+    return this.coast ? this.coast.surfaceOver(this.waveView.model) : this.waveView.model;
   }
 
   /** The time of the last update, seconds. */
@@ -268,8 +274,9 @@ export class OceanEngine extends Object3D {
       previous.dispose();
     }
     this.waveView.setParams(params);
-    // Chunk boxes reach as far as any wave can move a vertex, so a crest rising into view is never culled.
-    this.bounds = this.waveView.model.bounds();
+    if (changed('bathymetry', 'beachSlope', 'depth', 'swellHeight', 'swellPeriod', 'swellDirection', 'windSea')) this.setCoast(params);
+    // Chunk boxes reach as far as any wave can move a vertex (the coast's swell included), so a crest rising into view is never culled.
+    this.bounds = this.waves.bounds();
     if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);
     if (changed('sunElevation', 'sunAzimuth', 'waterColor', 'waterColorPicked', 'fogDensity', 'caustics', 'causticsIntensity')) {
       const sun = sunDirection(params.sunElevation, params.sunAzimuth);
@@ -296,7 +303,35 @@ export class OceanEngine extends Object3D {
       };
     }
     // The wave bound too: a bed below every trough skips the caustics' above-the-surface test.
-    this.seaBed.setDepth(params.seaBedDepth, this.underwaterShortcuts ? this.bounds.vertical : Infinity);
+    // On a coast the bed follows the floor (shaders/coast.glsl) and rises through the waves.
+    this.seaBed.setDepth(this.coast ? 0 : params.seaBedDepth, this.underwaterShortcuts && !this.coast ? this.bounds.vertical : Infinity);
+  }
+
+  /**
+   * The coast's code is fetched the first time `bathymetry` is not `deep` (most oceans are
+   * deep); whenReady() covers it. Deep again, the coast is taken away and its programs left out.
+   */
+  private setCoast(params: OceanParams): void {
+    if (params.bathymetry === 'deep') {
+      this.coast?.dispose();
+      this.coast = null;
+      return;
+    }
+    if (this.coastScene) {
+      (this.coast ??= new this.coastScene(this)).setParams(params);
+      return;
+    }
+    this.coastCode ??= import('../coast/coastScene').then(({ CoastScene }) => {
+      this.coastScene = CoastScene;
+      if (!this.disposed && this.params.bathymetry !== 'deep') this.setCoast(this.params);
+      this.bounds = this.waves.bounds();
+    });
+    this.waitFor(this.coastCode);
+  }
+
+  /** @internal Where a boat may sail: on a coast it stops aground (src/sim/coast/aground.ts); null on the open sea. */
+  get sailLimit(): SailLimit | null {
+    return this.coast?.sailLimit ?? null;
   }
 
   /** Everything a frame needs for `camera` at `time` (seconds): the waves, which side of the water the eye is on, and the chunks in view. */
@@ -317,6 +352,7 @@ export class OceanEngine extends Object3D {
   advance(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
+    this.coast?.update(time);
     if (this.interactive) {
       this.interactive.setBoat(this.boat);
       this.interactive.advance(time);
@@ -422,12 +458,12 @@ export class OceanEngine extends Object3D {
 
   /** @internal Height of the surface under (x, z) at `time`, kept while nothing it depends on changes (a paused view asks it every frame). */
   surfaceUnder(x: number, z: number, time: number): number {
-    return this.eye.surfaceUnder(this.waveView.model, x, z, time);
+    return this.eye.surfaceUnder(this.waves, x, z, time);
   }
 
   /** @internal Which side of the water `camera` sees from. */
   locateEye(camera: PerspectiveCamera, time: number): EyePlace {
-    this.place = this.eye.locate(camera, this.waveView.model, this.bounds.vertical, time);
+    this.place = this.eye.locate(camera, this.waves, this.bounds.vertical, time);
     return this.place;
   }
 
@@ -462,6 +498,7 @@ export class OceanEngine extends Object3D {
     this.material.setSeenFromBelow(submersion === 'below' && !this.underwaterShortcuts ? 'straddling' : submersion);
     this.seaBed.mesh.visible = submersion !== 'above';
     this.seaBed.follow(camera.position);
+    this.coast?.shade(submersion);
     // Seen entirely from below, the sky can only show through the surface.
     this.sky.visible = submersion !== 'below';
     setEyeDepth(this.waterVolume, eyeSurface - camera.position.y);
@@ -477,7 +514,7 @@ export class OceanEngine extends Object3D {
    * with the interactive waves on, their latest read-back added (a frame or two old, whatever `time` says).
    */
   sampleSurface(x: number, z: number, time = this.frameTime): SurfaceSample {
-    return this.withInteractiveWaves(this.waveView.model.sample(x, z, time), x, z);
+    return this.withInteractiveWaves(this.waves.sample(x, z, time), x, z);
   }
 
   /**
@@ -488,13 +525,7 @@ export class OceanEngine extends Object3D {
    */
   sampleSurfacesAt(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
     const into = checkSurfaceBatch(points, out);
-    return sampleSurfaces(
-      this.waveView.model,
-      points,
-      time,
-      into,
-      this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null,
-    );
+    return sampleSurfaces(this.waves, points, time, into, this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null);
   }
 
   /** @internal The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */
@@ -531,6 +562,7 @@ export class OceanEngine extends Object3D {
     this.removeFromParent();
     this.sky.removeFromParent();
     this.chunks.dispose();
+    this.coast?.dispose();
     this.material.dispose();
     this.seaBed.dispose();
     this.waveView.dispose();
@@ -556,9 +588,9 @@ function focusOf(camera: PerspectiveCamera): [number, number] {
   return [x + forward.x * reach, z + forward.z * reach];
 }
 
-/** Whether foam is drawn as foam: the spectral sea's whitecaps or the wake's foam in view, and the foamTexture parameter on. */
+/** Whether foam is drawn as foam: the spectral sea's whitecaps, the wake's foam or the coast's surf in view, and the foamTexture parameter on. */
 function foamTextureWanted(params: OceanParams): boolean {
-  return params.foamTexture && ((params.foam && modelsDrawn(params).includes('fft')) || params.wake);
+  return params.foamTexture && ((params.foam && modelsDrawn(params).includes('fft')) || params.wake || params.bathymetry !== 'deep');
 }
 
 /** @internal The model the ocean itself draws: the first of a comparison, else `waves`. */

@@ -310,11 +310,14 @@ export class OceanView {
     const { SurfaceProbe } = await import('../teaching/surfaceProbe');
     this.probe ??= new SurfaceProbe(this.renderer, this.ocean.binding, this.ocean.wakeUniforms, this.ocean.interactiveWaveUniforms);
     this.probe.setInteractiveWavesOn(this.ocean.interactiveWaves !== null);
+    this.probe.setCoast(this.ocean.coast?.uniforms ?? null);
     this.ocean.waveModelView.update(time);
+    this.ocean.coast?.update(time);
     try {
       return this.probe.probe(points);
     } finally {
       this.ocean.waveModelView.update(frameTime);
+      this.ocean.coast?.update(frameTime);
     }
   }
 

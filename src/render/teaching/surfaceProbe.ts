@@ -20,6 +20,7 @@ import type { WakeUniforms } from '../wake/wakeUniforms';
 import type { InteractiveWaveUniforms } from '../iwave/interactiveWaveUniforms';
 import { setMaterialDefine } from '../shaders/materialDefines';
 import { wakeChunk } from '../wake/wakeChunk';
+import type { CoastUniforms } from '../coast/coastUniforms';
 
 const TARGET_WIDTH = 256;
 
@@ -64,6 +65,12 @@ export class SurfaceProbe {
   /** Whether the interactive waves are added (their chunk must have reached the binding first). */
   setInteractiveWavesOn(on: boolean): void {
     setMaterialDefine(this.material, 'OCEAN_IWAVE', on);
+  }
+
+  /** The coast's uniforms while there is a coast (its chunk has reached the binding): its swell and calmed wind sea are added; null: none. */
+  setCoast(uniforms: CoastUniforms | null): void {
+    if (uniforms) Object.assign(this.material.uniforms, uniforms);
+    setMaterialDefine(this.material, 'OCEAN_COAST', uniforms !== null);
   }
 
   probe(points: readonly (readonly [number, number])[]): ProbeSample[] {

@@ -1,5 +1,6 @@
 import { followStep, type FollowerState } from './dampedFollower';
 import { forwardOf, targetPose, type BoatPose, type HeightAt, type HullSize } from './boatPose';
+import type { SailLimit } from '../coast/aground';
 
 /** Half side, metres, of the square around the origin the boat may sail in: inside the ocean's extent. */
 export const BOAT_EXTENT = 2000;
@@ -103,6 +104,10 @@ export class BoatMotion {
   /** The last target pose and what it was taken from (only when update was given a SurfaceKey). */
   private targetKey: TargetKey | null = null;
   private lastTarget: BoatPose | null = null;
+  /** Where the boat may sail on a coast (sailUntilAground, src/sim/coast/aground.ts); null on the open sea. */
+  limit: SailLimit | null = null;
+  /** Whether the last step ran the boat aground (it stopped there). */
+  aground = false;
 
   constructor(
     start: readonly [number, number] = BOAT_START,
@@ -143,8 +148,11 @@ export class BoatMotion {
       const commanded = this.heading.value + wrapSigned(controls.heading - this.heading.value);
       this.heading = followStep(this.heading, commanded, dt, 1 / HEADING_RESPONSE, HEADING_BAND);
       const [fx, fz] = forwardOf(this.heading.value);
-      this.x = clampToExtent(this.x + fx * controls.speed * dt);
-      this.z = clampToExtent(this.z + fz * controls.speed * dt);
+      const next: [number, number] = [clampToExtent(this.x + fx * controls.speed * dt), clampToExtent(this.z + fz * controls.speed * dt)];
+      const sailed = this.limit ? this.limit([this.x, this.z], next) : null;
+      this.x = sailed ? sailed.x : next[0];
+      this.z = sailed ? sailed.z : next[1];
+      this.aground = sailed?.stopped ?? false;
     } else if (!holding) {
       this.heading = { value: controls.heading, velocity: 0 };
     }

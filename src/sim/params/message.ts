@@ -42,6 +42,7 @@ export const MESSAGE_IDS = [
   'disturbRadiusRaised',
   'disturbFieldOff',
   'stonesInvalid',
+  'boatAground',
 ] as const;
 
 export type MessageId = (typeof MESSAGE_IDS)[number];
