@@ -1,4 +1,5 @@
-import { paramDefs, type ParamKey } from '../../sim/params/params';
+import type { ParamKey } from '../../sim/params/params';
+import { ENGLISH_PARAM_LABELS } from '../../sim/params/englishParamLabels';
 import type { Translator } from './i18n';
 
 /**
@@ -86,5 +87,5 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
 
 /** A parameter's name in the translator's language. */
 export function paramLabel(tr: Pick<Translator, 'language'>, key: ParamKey): string {
-  return tr.language === 'es' ? SPANISH_PARAM_LABELS[key] : paramDefs[key].label;
+  return tr.language === 'es' ? SPANISH_PARAM_LABELS[key] : ENGLISH_PARAM_LABELS[key];
 }

@@ -1,3 +1,4 @@
+import { ENGLISH_PARAM_LABELS } from './englishParamLabels';
 import { defaultParams, isParamKey, paramDefs, paramKeys, validateParams, type OceanParams, type ParamKey } from './params';
 
 /**
@@ -49,9 +50,9 @@ export function defaultOceanOptions(): OceanParameters {
 }
 
 /** The definition of each option an Ocean reads (kind, default, range, unit, label): what a panel of your own needs to offer it. */
-export const oceanOptionDefs = Object.freeze(Object.fromEntries(oceanParamKeys.map((key) => [key, paramDefs[key]]))) as Readonly<
-  Pick<typeof paramDefs, OceanParamKey>
->;
+export const oceanOptionDefs = Object.freeze(
+  Object.fromEntries(oceanParamKeys.map((key) => [key, { ...paramDefs[key], label: ENGLISH_PARAM_LABELS[key] }])),
+) as Readonly<{ [K in OceanParamKey]: (typeof paramDefs)[K] & { label: string } }>;
 
 /**
  * `options` checked as `new Ocean` and `setParams` check them (from a URL, a form, a saved

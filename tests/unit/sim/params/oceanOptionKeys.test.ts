@@ -11,6 +11,7 @@ import {
   type OceanParameters,
 } from '../../../../src/sim/params/oceanOptionKeys';
 import { defaultParams, paramDefs, paramKeys } from '../../../../src/sim/params/params';
+import { ENGLISH_PARAM_LABELS } from '../../../../src/sim/params/englishParamLabels';
 
 /** Compiled by `tsc --noEmit`: each marked line must be a type error, or the compile fails. */
 export const typeChecks: Partial<OceanParameters>[] = [
@@ -54,7 +55,8 @@ describe("what the library exports of the options: only an Ocean's, with the app
     expect(Object.keys(oceanOptionDefs).sort()).toEqual([...oceanParamKeys].sort());
     for (const key of oceanParamKeys) {
       expect(defaults[key]).toBe(defaultParams()[key]);
-      expect(oceanOptionDefs[key]).toBe(paramDefs[key]);
+      expect(oceanOptionDefs[key]).toEqual({ ...paramDefs[key], label: ENGLISH_PARAM_LABELS[key] });
+      expect(oceanOptionDefs[key].label.length).toBeGreaterThan(2);
     }
     // Control: the app's keys are in the parameters, so the filter did something.
     for (const key of APP_ONLY_PARAMS) {
