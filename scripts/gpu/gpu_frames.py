@@ -5,7 +5,7 @@ That machine has Python but no Node.js, so this is the benchmark's frame timing
 (scripts/bench/pageMeasures.ts timeOceanFrames) again in Python's standard library alone.
 Prepared by scripts/gpu/prepare.sh, run there by run.sh; docs/performance.md says how.
 
-Usage: gpu_frames.py CHROME_DIR SITE_DIR OUT_DIR [ROUNDS]   (FRAMES=n sets the frames a round)
+Usage: gpu_frames.py CHROME_DIR SITE_DIR OUT_DIR [ROUNDS]   (FRAMES=n sets the frames a round, SIZE=3840x2160 the canvas)
 SITE_DIR holds now/ (this build), base/ (the build compared against) and three/ (three.js's ocean example).
 DRY_RUN_SOFTWARE=1 runs it on SwiftShader, to check it on a machine without a GPU.
 """
@@ -14,7 +14,8 @@ import functools, http.server
 
 CHROME_DIR, SITE_DIR, OUT = sys.argv[1], sys.argv[2], sys.argv[3]
 ROUNDS = int(sys.argv[4]) if len(sys.argv) > 4 else 4
-W, H, FRAMES, WARMUP = 1920, 1080, int(os.environ.get('FRAMES', 40)), 8
+W, H = (int(v) for v in os.environ.get('SIZE', '1920x1080').split('x'))
+FRAMES, WARMUP = int(os.environ.get('FRAMES', 40)), 8
 
 
 class Handler(http.server.SimpleHTTPRequestHandler):
@@ -204,6 +205,8 @@ ROWS = [
     ('default view, base build', 'base', 't=10', 0),
     ('compare-models camera, gerstner alone', 'now', 't=10&preset=compare-models&compare=off&waves=gerstner', 1 / 60),
     ('compare-models camera, seed alone', 'now', 't=10&preset=compare-models&compare=off&waves=seed', 1 / 60),
+    ('interactive waves (a stone)', 'now', 't=10&preset=stone', 1 / 60),
+    ('beach view', 'now', 't=10&preset=beach', 1 / 60),
 ]
 if os.environ.get('ONLY'):
     ROWS = [row for row in ROWS if row[0] in os.environ['ONLY'].split(';')]
@@ -313,7 +316,7 @@ def main():
             row['canvas'], row['drawCalls'] = measured['canvas'], measured['drawCalls']
             row.setdefault('cpuMs', []).append(measured.get('cpuMs'))
             row['errors'] += page.errors[:3]
-            if r == ROUNDS - 1 and label in SHOTS:
+            if r == ROUNDS - 1 and label in SHOTS and os.environ.get('SHOTS', '1'):
                 page.screenshot(os.path.join(OUT, SHOTS[label]))
             print(f'round {r} {label}: median {row["medians"][-1]:.2f} ms', flush=True)
     proc.kill()
@@ -340,6 +343,8 @@ def main():
     print('default / three.js example without its bloom (the bench\'s target):', ratio('default view', 'three.js ocean example, no bloom'))
     print('FFT view / FFT view at the base build:', ratio('FFT view', 'FFT view, base build'))
     print('default / default at the base build:', ratio('default view', 'default view, base build'))
+    print('interactive waves / default:', ratio('interactive waves (a stone)', 'default view'))
+    print('beach view / default:', ratio('beach view', 'default view'))
     print('gerstner / seed (compare-models camera):', ratio('compare-models camera, gerstner alone', 'compare-models camera, seed alone'))
 
 
