@@ -28,11 +28,6 @@ import type { CoastSetting } from '../../../../../src/sim/coast/coastField';
 type Lang = 'en' | 'es';
 const LANGS: Lang[] = ['en', 'es'];
 
-function cardText(id: string, lang: Lang): string {
-  const t = LESSON_TEXTS[id];
-  return [t.text[lang], t.question.ask[lang], t.question.answer[lang], t.choice?.[lang] ?? ''].join(' ');
-}
-
 /** The number that follows `before` (a regular expression source), as written, a Spanish decimal comma read as a point. */
 function quotedAfter(text: string, before: string): string {
   const match = new RegExp(`${before}\\s*([0-9]+(?:[.,][0-9]+)?)`).exec(text);
