@@ -8,6 +8,8 @@
 // - the wind sea (the wave model's own waves) calmed where the water is too shallow to hold
 //   them (src/sim/coast/windSeaDamping.ts).
 
+#include <oceano_constants>
+
 // Four floats per texel: S (rad), a (m), h (m), breaking fraction. A float texture is read
 // with texelFetch and interpolated here, since linear filtering of float textures is an
 // extension WebGL2 does not promise.
@@ -97,6 +99,28 @@ vec3 coastLook(vec2 xz) {
   return vec3(coastSeaDepth(xz), s.w, s.x - uCoastAdvance);
 }
 
+// From ocean.vert: the depth, breaking and swell phase for the shallows' colour and the surf,
+// and the swell's slope with the wind sea's factor, for a model whose normals are per pixel.
+varying vec3 vCoastLook;
+varying vec3 vCoastTilt;
+
+#ifdef WAVE_VERTEX_STAGE
+// The ocean's vertex: the model's displacement `d` of grid point `grid` (none with the wind sea
+// off) becomes, at the displaced point as the wake takes it and as the CPU twin adds them
+// (src/sim/coast/coastSurface.ts), the wind sea scaled by the depth's limit plus the swell;
+// `normal` is tilted alike. `fade`: the far rings' fade of the waves.
+void coastDisplace(inout vec3 d, inout vec3 normal, vec2 grid, float fade, bool flatNormals) {
+  d *= uCoastWind.x;
+  vec2 at = grid + d.xz;
+  float windFactor = coastWindFactor(at);
+  vec3 swell = coastSwell(at) * fade;
+  d.y = d.y * windFactor + swell.x;
+  if (!flatNormals) normal = coastTiltNormal(normal, windFactor, swell.yz);
+  vCoastLook = coastLook(at);
+  vCoastTilt = vec3(swell.yz, windFactor);
+}
+#endif
+
 // The water's own colour over a bed `depth` metres down: the deep water's (`deep`, whose
 // reflectance is R∞) with R∞ replaced by R(h) = R∞ + (ρ − R∞) e^(−2 K h)
 // (src/sim/coast/shallowWaterColor.ts): turquoise over sand in the shallows, sand on the shore.
@@ -113,6 +137,6 @@ float coastSurfFoam(vec3 look) {
   float breaking = clamp(look.y, 0.0, 1.0);
   if (breaking <= 0.0) return 0.0;
   // 1 just ahead of the crest (phase slightly past 0), falling off over half a wavelength.
-  float front = pow(0.5 + 0.5 * cos(look.z - 0.6), 6.0);
-  return breaking * clamp(0.25 + 0.85 * front, 0.0, 1.0);
+  float front = pow(0.5 + 0.5 * cos(look.z - 0.6), 10.0);
+  return breaking * clamp(0.08 + 0.9 * front, 0.0, 1.0);
 }

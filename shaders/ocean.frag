@@ -78,11 +78,7 @@ vec3 withWakeSlope(vec3 n) { return n; }
 float withWakeFoam(float foam) { return foam; }
 #endif
 #ifdef OCEAN_COAST
-// The coast (shaders/coast.glsl): the depth, breaking and swell phase from the vertices, and
-// the swell's slope with the wind sea's factor, for per-pixel normals.
 #include <oceano_coast>
-varying vec3 vCoastLook;
-varying vec3 vCoastTilt;
 #endif
 #ifdef OCEAN_IWAVE
 // The interactive field's steep water: paler, greener where light crosses a thin crest, and
@@ -304,7 +300,6 @@ void main() {
 #ifdef OCEAN_WATER_OPTICS
   vec3 water = vWaterBody;
 #ifdef OCEAN_COAST
-  // The sea bed seen through the shallows (shaders/coast.glsl).
   water = coastShallowWater(water, vCoastLook.x);
 #endif
 #else

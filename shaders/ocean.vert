@@ -16,14 +16,8 @@
 #ifdef OCEAN_IWAVE
 #include <oceano_iwave>
 #endif
-// The coast (shaders/coast.glsl): its swell, the wind sea calmed in the shallows, and what
-// the pixels need of it; compiled in only while `bathymetry` is not deep.
 #ifdef OCEAN_COAST
 #include <oceano_coast>
-// The depth, the breaking fraction and the swell's phase S − ω t, for the shallows' colour and the surf.
-varying vec3 vCoastLook;
-// The swell's slope and the wind sea's factor, for a model whose normals ocean.frag evaluates per pixel.
-varying vec3 vCoastTilt;
 #endif
 
 // The seed's "normales incorrectas": every vertex keeps the flat plane's (0, 1, 0).
@@ -169,20 +163,9 @@ void main() {
     vNormal = normalize(mix(vec3(0.0, 1.0, 0.0), vNormal, waves));
   }
 #ifdef OCEAN_COAST
-  // With the wind sea off, only the swell moves the water.
-  d *= uCoastWind.x;
+  coastDisplace(d, vNormal, gridXZ, waves, uFlatNormals);
 #endif
   vec3 world = vec3(gridXZ.x + d.x, d.y, gridXZ.y + d.z);
-#ifdef OCEAN_COAST
-  // At the displaced point's own (x, z), as the wake below: the wind sea scaled by the depth's
-  // limit, plus the swell, as the CPU twin adds them (src/sim/coast/coastSurface.ts).
-  float windFactor = coastWindFactor(world.xz);
-  vec3 swell = coastSwell(world.xz) * waves;
-  world.y = world.y * windFactor + swell.x;
-  if (!uFlatNormals) vNormal = coastTiltNormal(vNormal, windFactor, swell.yz);
-  vCoastLook = coastLook(world.xz);
-  vCoastTilt = vec3(swell.yz, windFactor);
-#endif
 #ifdef OCEAN_IWAVE
   // Near the boat the interactive field carries its waves, farther out the analytic wake:
   // (the wake's weight, the field's), each wave counted once (shaders/iwave.glsl).

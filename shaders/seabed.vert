@@ -1,5 +1,3 @@
-// The sea bed: flat at its depth (the mesh's height), or on a coast (OCEAN_COAST) on the
-// floor itself, −seaDepth(x, z) (shaders/coast.glsl), whatever the mesh's height.
 #ifdef OCEAN_COAST
 #include <oceano_coast>
 #endif

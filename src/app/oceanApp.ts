@@ -26,8 +26,6 @@ import { LessonHost } from './lessons/lessonHost';
 import { FREE_AREA_EVENT } from './layout/freeAreaEvent';
 import type { Rect } from '../sim/layout/rect';
 import type { SeaTools } from './tools/seaTools';
-import { HULL_DRAFT } from '../sim/coast/aground';
-import { seaDepth } from '../sim/coast/bathymetry';
 
 export type { OceanAppOptions } from './boot/appOptions';
 export type { BoatInfo, CameraPose, LoopActivity, OceanStats, SuspendReason };
@@ -118,8 +116,11 @@ export class OceanApp {
     startupTimeline?.mark('oceano:view-built');
     this.orbit = new OrbitCamera(this.view.camera, this.canvas, this.loop.requestRender);
     this.container.addEventListener(FREE_AREA_EVENT, this.onFreeArea);
-    this.boatMotion = new BoatController(new BoatView(this.view.scene), (dx, dz) => this.orbit.translate(dx, dz), state, () =>
-      this.notify(message('boatAground', { draft: HULL_DRAFT })),
+    this.boatMotion = new BoatController(
+      new BoatView(this.view.scene),
+      (dx, dz) => this.orbit.translate(dx, dz),
+      state,
+      () => void import('./boat/agroundNotice').then(({ agroundNotice }) => this.notify(agroundNotice)),
     );
     this.view.ocean.recordStones(state.stones);
     if (state.cullingCamera && this.params.freezeCulling) {
@@ -392,11 +393,14 @@ export class OceanApp {
       z,
     )
   );
-  /** The still water's depth at world (x, z), metres (≤ 0 on land): seaDepth is tiny, so it is computed here, never waiting for the coast's code. */
-  depth = (x: number, z: number): number => (
-    checkSurfacePoint(x, z),
-    seaDepth({ bathymetry: this.params.bathymetry, beachSlope: this.params.beachSlope, deepDepth: this.params.depth }, x, z)
-  );
+  /** The still water's depth at world (x, z), metres (≤ 0 on land); on a coast, once its code has arrived (`ready` waits for it). */
+  depth = (x: number, z: number): number => {
+    checkSurfacePoint(x, z);
+    const coast = this.view.ocean.coast;
+    if (coast) return coast.depth(x, z);
+    if (this.params.bathymetry === 'deep') return this.params.depth;
+    throw new Error("oceano.depth: the coast's code is still on its way; await oceano.ready or oceano.loaded() first.");
+  };
   probeGpu = (points: unknown, time?: number): Promise<ProbeSample[]> =>
     this.view.probeSurface(checkProbe(points, time), time ?? this.clock.time);
   /** The sea tools' code, fetched the first time they are opened, a ?probe= link is followed or oceano.probe() is called. */

@@ -9,6 +9,7 @@ import type { BoatInField, InteractiveWaves } from '../../render/iwave/interacti
 import type { SurfaceSample } from '../../sim/waves/waveModel';
 import { addWake, BoatWake, WAKE_HULL, wakeHeightBound } from '../../sim/wake/boatWake';
 import type { WakeTrack } from '../../sim/wake/wakeTrack';
+import type { SailLimit } from '../../sim/coast/aground';
 
 /** Hull used to float the boat until (or unless) its model gives the real size: the shipped model's. */
 const NOMINAL_HULL: HullSize = { length: 8, beam: 2.6 };
@@ -73,13 +74,17 @@ export class BoatController {
     params: OceanParams,
     waves: LiveWaveModel,
     view: Pick<OceanView, 'setWake'>,
-    ocean?: { setBoat(boat: BoatInField | null): void; readonly interactiveWaves: InteractiveWaves | null },
+    ocean?: {
+      setBoat(boat: BoatInField | null): void;
+      readonly interactiveWaves: InteractiveWaves | null;
+      readonly sailLimit: SailLimit | null;
+    },
   ): void {
     const previous = this.state?.pose;
     const model = (x: number, z: number) => waves.height(x, z, time);
     const field = ocean?.interactiveWaves;
     const wasAground = this.motion.aground;
-    this.motion.floor = { bathymetry: params.bathymetry, beachSlope: params.beachSlope, deepDepth: params.depth };
+    this.motion.limit = ocean?.sailLimit ?? null;
     this.state = this.motion.update(
       time,
       { heading: params.boatHeading * DEG, speed: params.boatSpeed, response: params.boatResponse },

@@ -35,7 +35,7 @@ const unit = (v: MessageValues) => (v.unit ? ` ${v.unit}` : '');
  * Notices that only a part fetched on use can raise: their texts travel in that part and are
  * added here when it loads (registerNoticeTexts), so the page's first script does not carry them.
  */
-export type LateNoticeId = 'boatUnreachable' | 'boatNotFound' | 'boatWebPage' | 'boatNotGltf' | 'boatNoGeometry';
+export type LateNoticeId = 'boatUnreachable' | 'boatNotFound' | 'boatWebPage' | 'boatNotGltf' | 'boatNoGeometry' | 'boatAground';
 
 const MESSAGES: Record<Language, Record<Exclude<MessageId, LateNoticeId>, Render> & Partial<Record<LateNoticeId, Render>>> = {
   en: {
@@ -78,7 +78,6 @@ const MESSAGES: Record<Language, Record<Exclude<MessageId, LateNoticeId>, Render
     disturbRadiusRaised: (v) => `disturb: radius ${v.radius} m is under one texel; raised to ${v.raised} m.`,
     disturbFieldOff: () => 'disturb: the interactive waves are off.',
     stonesInvalid: (v) => `"stones=${v.text}" is not a list of t,x,z,radius,height in range; no stones.`,
-    boatAground: (v) => `The boat stopped: the water ahead is shallower than its draft of ${v.draft} m. Turn it towards deeper water.`,
   },
   es: {
     paramNotBoolean: (v) => `"${v.key}=${v.text}" no es verdadero/falso; se usa ${v.fallback}.`,
@@ -122,7 +121,6 @@ const MESSAGES: Record<Language, Record<Exclude<MessageId, LateNoticeId>, Render
     disturbRadiusRaised: (v) => `disturb: el radio ${v.radius} m es menor que un texel; se sube a ${v.raised} m.`,
     disturbFieldOff: () => 'disturb: las olas interactivas están apagadas.',
     stonesInvalid: (v) => `"stones=${v.text}" no es una lista de t,x,z,radio,altura en rango; sin piedras.`,
-    boatAground: (v) => `El barco se detuvo: el agua de delante es menos profunda que su calado de ${v.draft} m. Gíralo hacia aguas más profundas.`,
   },
 };
 

@@ -245,6 +245,20 @@ export const PRESETS = {
     },
     camera: { position: [26, 16, 18], target: [1, 0, -5] },
   },
+  /**
+   * The beach seen from its sand: a 10 s swell from the open sea shortens and steepens over the
+   * sloping bed (shoreline at x = 400 m), breaks in a line of surf, and the shallows show the
+   * sand through turquoise water; the wind sea's seed waves are low, and calmed in the shallows.
+   */
+  beach: {
+    params: { bathymetry: 'beach', swellAmplitude: 0.3, rippleStrength: 0.3, sunElevation: 35 },
+    camera: { position: [440, 7, 60], target: [280, 0, -10] },
+  },
+  /** The island from above: the swell wraps round it, the surf rings its shore, the shelf shows through the water. */
+  island: {
+    params: { bathymetry: 'island', beachSlope: 0.05, swellAmplitude: 0.3, rippleStrength: 0.3, sunElevation: 50 },
+    camera: { position: [380, 420, 260], target: [700, 0, 0] },
+  },
 } satisfies Record<string, Preset>;
 
 export type PresetName = keyof typeof PRESETS;

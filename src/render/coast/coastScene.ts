@@ -1,17 +1,25 @@
-import { ClampToEdgeWrapping, DataTexture, FloatType, NearestFilter, RGBAFormat, type IUniform, type Object3D } from 'three';
+import { ClampToEdgeWrapping, DataTexture, FloatType, NearestFilter, PlaneGeometry, RGBAFormat, type BufferGeometry } from 'three';
 import type { OceanParams } from '../../sim/params/params';
 import type { LiveWaveModel } from '../../sim/waves/waveModel';
-import type { SeaFloor } from '../../sim/coast/bathymetry';
+import type { Submersion } from '../../sim/underwater/snellWindow';
+import { seaDepth, type SeaFloor } from '../../sim/coast/bathymetry';
 import type { CoastField, CoastSetting } from '../../sim/coast/coastField';
-import { buildCoastField } from '../../sim/coast/buildCoastField';
+import { buildCoastField } from '../../sim/coast/coastSwellField';
 import { CoastSurface } from '../../sim/coast/coastSurface';
 import { BREAKER_INDEX, windSeaHeightOf } from '../../sim/coast/windSeaDamping';
-import type { CoastUniforms } from './coastUniforms';
+import { sailUntilAground, type SailLimit } from '../../sim/coast/aground';
+import { setMaterialDefine } from '../shaders/materialDefines';
+import type { OceanEngine } from '../ocean/oceanEngine';
+import { createCoastUniforms } from './coastUniforms';
 import { CoastLand } from './coastLand';
+import { coastChunk } from './coastChunk';
 
-export { coastChunk } from './coastChunk';
+/** The sea bed on a coast: as wide as the flat one, its vertices 10 m apart so that it follows the floor's bends. */
+const BED_SIZE = 4000;
+const BED_SEGMENTS = 400;
+const BED_STEP = BED_SIZE / BED_SEGMENTS;
 
-/** The coast's setting and whether the wind sea is drawn over its swell, from the parameters. */
+/** The coast's setting from the parameters. */
 export function coastSettingOf(params: OceanParams): CoastSetting {
   return {
     bathymetry: params.bathymetry,
@@ -24,12 +32,17 @@ export function coastSettingOf(params: OceanParams): CoastSetting {
 }
 
 /**
- * Everything the coast adds to an ocean, fetched only when `bathymetry` is not `deep`: the
- * swell's field (built on the CPU, src/sim/coast/) uploaded as a float texture for
- * shaders/coast.glsl, the land, and the CPU twin of the sea it draws (CoastSurface).
+ * Everything the coast adds to an ocean, fetched only when `bathymetry` is not `deep`: its
+ * GLSL (shaders/coast.glsl) compiled into the ocean's and the sea bed's programs, the swell's
+ * field (built on the CPU, src/sim/coast/) uploaded as a float texture, the land, the sea bed
+ * laid on the floor, and the CPU twin of the sea it draws (CoastSurface). Disposed, the ocean
+ * is the open sea's again.
  */
 export class CoastScene {
+  readonly uniforms = createCoastUniforms();
   readonly land: CoastLand;
+  private readonly bed = new PlaneGeometry(BED_SIZE, BED_SIZE, BED_SEGMENTS, BED_SEGMENTS).rotateX(-Math.PI / 2);
+  private readonly flatBed: BufferGeometry;
   private texture: DataTexture | null = null;
   private field: CoastField | null = null;
   private surface: CoastSurface | null = null;
@@ -37,13 +50,22 @@ export class CoastScene {
   private windSea = true;
   private built: string | null = null;
 
-  constructor(
-    private readonly uniforms: CoastUniforms,
-    look: Record<string, IUniform>,
-    parent: Object3D,
-  ) {
-    this.land = new CoastLand(look);
-    parent.add(this.land.mesh);
+  constructor(private readonly ocean: OceanEngine) {
+    ocean.binding.late.provide('oceano_coast', coastChunk);
+    // The ocean's two programs share one uniforms object.
+    Object.assign(ocean.material.uniforms, this.uniforms);
+    Object.assign(ocean.seaBed.material.uniforms, this.uniforms);
+    for (const material of this.materials()) setMaterialDefine(material, 'OCEAN_COAST', true);
+    this.flatBed = ocean.seaBed.mesh.geometry;
+    ocean.seaBed.mesh.geometry = this.bed;
+    // The bed rises through the waves: the caustics' test of which side of the surface a point is on stays in.
+    ocean.seaBed.setDepth(0, Infinity);
+    this.land = new CoastLand(ocean.material.uniforms);
+    ocean.add(this.land.mesh);
+  }
+
+  private materials() {
+    return [this.ocean.material, this.ocean.material.near, this.ocean.seaBed.material];
   }
 
   /** Builds the field again only when the setting changed (a change of the wind sea alone rebuilds nothing). */
@@ -52,16 +74,20 @@ export class CoastScene {
     const key = JSON.stringify(setting);
     this.windSea = params.windSea;
     if (key !== this.built) {
+      const field = buildCoastField(setting);
+      if (!field) throw new Error('CoastScene: a deep sea has no coast.');
       this.built = key;
       const floor: SeaFloor = { bathymetry: setting.bathymetry, beachSlope: setting.beachSlope, deepDepth: setting.deepDepth };
       if (this.floor?.bathymetry !== floor.bathymetry || this.floor.beachSlope !== floor.beachSlope) this.land.setFloor(floor);
       this.floor = floor;
-      this.field = buildCoastField(setting);
-      this.upload(this.field);
+      this.field = field;
+      this.upload(field);
       this.uniforms.uCoastFloor.value.set(floor.bathymetry === 'island' ? 2 : 1, floor.beachSlope);
     }
     this.uniforms.uCoastWind.value.x = this.windSea ? 1 : 0;
     if (this.surface && this.field && this.floor) this.surface.setCoast(this.field, this.floor, this.windSea);
+    this.ocean.seaBed.setDepth(0, Infinity);
+    this.update(this.ocean.time);
   }
 
   private upload(field: CoastField): void {
@@ -75,6 +101,15 @@ export class CoastScene {
     this.uniforms.uCoastGrid.value.set(field.originX, field.originZ, field.spacing, field.resolution);
   }
 
+  /** The still water's depth at world (x, z), metres, ≤ 0 on land. */
+  depth(x: number, z: number): number {
+    return this.floor ? seaDepth(this.floor, x, z) : 0;
+  }
+
+  /** Where a boat may sail over this floor: it stops where the water is shallower than its draft. */
+  readonly sailLimit: SailLimit = (from, to) =>
+    this.floor ? sailUntilAground(this.floor, from, to) : { x: to[0], z: to[1], stopped: false };
+
   /** The CPU twin of the sea drawn over `inner` (the wave model's own twin). */
   surfaceOver(inner: LiveWaveModel): CoastSurface {
     if (!this.field || !this.floor) throw new Error('CoastScene.surfaceOver: setParams first.');
@@ -87,15 +122,29 @@ export class CoastScene {
    * The swell's phase advance at `time`, ω (t mod T), reduced here in double precision, and the
    * wind sea's depth limit γ / H for the model drawn (its largest height H from its bounds).
    */
-  update(time: number, inner: LiveWaveModel): void {
+  update(time: number): void {
     if (!this.field) return;
     const period = (2 * Math.PI) / this.field.angularFrequency;
     this.uniforms.uCoastAdvance.value = this.field.angularFrequency * (time - period * Math.floor(time / period));
-    const height = windSeaHeightOf(inner.bounds().vertical);
+    const height = windSeaHeightOf(this.ocean.waveModelView.model.bounds().vertical);
     this.uniforms.uCoastWind.value.y = height > 0 ? BREAKER_INDEX / height : 1e6;
   }
 
+  /**
+   * The land above the water; from under it the sea bed, on the same floor, takes over. The bed,
+   * which follows the eye, moves in whole cells, so its vertices stay on the same floor points.
+   */
+  shade(submersion: Submersion): void {
+    this.land.mesh.visible = submersion === 'above';
+    const position = this.ocean.seaBed.mesh.position;
+    position.x = Math.round(position.x / BED_STEP) * BED_STEP;
+    position.z = Math.round(position.z / BED_STEP) * BED_STEP;
+  }
+
   dispose(): void {
+    for (const material of this.materials()) setMaterialDefine(material, 'OCEAN_COAST', false);
+    this.ocean.seaBed.mesh.geometry = this.flatBed;
+    this.bed.dispose();
     this.land.mesh.removeFromParent();
     this.land.dispose();
     this.texture?.dispose();

@@ -43,8 +43,8 @@ import { EyeSubmersion, type EyePlace } from './eyeSubmersion';
 import { createFoamUniforms, setFoamWind } from '../foam/foamUniforms';
 import { checkSurfaceBatch, sampleSurfaces, type SurfacePoints, type SurfaceSamples } from '../../sim/waves/surfaceBatch';
 import type { FoamDetail } from '../foam/foamDetail';
-import { createCoastUniforms } from '../coast/coastUniforms';
 import type { CoastScene } from '../coast/coastScene';
+import type { SailLimit } from '../../sim/coast/aground';
 
 /** @internal The parameters an ocean material shows (every model's material of a comparison alike). */
 export const LOOK_KEYS: readonly ParamKey[] = [
@@ -97,8 +97,6 @@ export class OceanEngine extends Object3D {
   readonly interactiveWaveUniforms = createInteractiveWaveUniforms();
   /** @internal The foam material's detail texture and the wind its streaks follow, for every ocean material of the view. */
   readonly foamUniforms = createFoamUniforms();
-  /** @internal The coast's field and floor (shaders/coast.glsl), filled once its code has arrived (bathymetry other than deep). */
-  readonly coastUniforms = createCoastUniforms();
   /** @internal What a compared model's ocean material shares with this one's. */
   readonly materialInputs: OceanMaterialInputs;
   /** @internal */
@@ -131,9 +129,10 @@ export class OceanEngine extends Object3D {
   private foamDetail: FoamDetail | null = null;
   private foamDetailLoad: Promise<void> | null = null;
   private wakeCodeLoad: Promise<void> | null = null;
-  /** The coast, while `bathymetry` is not `deep` and its code has arrived. */
-  private coast: CoastScene | null = null;
-  private coastCode: Promise<typeof import('../coast/coastScene')> | null = null;
+  /** @internal The coast (src/render/coast/coastScene.ts), while `bathymetry` is not `deep` and its code has arrived. */
+  coast: CoastScene | null = null;
+  private coastCode: Promise<void> | null = null;
+  private coastScene: typeof CoastScene | null = null;
 
   /** `params`: validated as the URL and the GUI validate them; `sky`: a cube map to reflect, or null for the sky painted from the sun. */
   constructor(renderer: WebGLRenderer, params: Partial<OceanParams> = {}, sky: CubeTexture | null = null) {
@@ -165,7 +164,6 @@ export class OceanEngine extends Object3D {
         ...this.wakeUniforms,
         ...this.interactiveWaveUniforms,
         ...this.foamUniforms,
-        ...this.coastUniforms,
         uSunColor: this.lightUniforms.uSunColor,
       },
     };
@@ -175,7 +173,7 @@ export class OceanEngine extends Object3D {
     this.add(this.chunks.group);
     this.lod = full;
     this.bounds = this.waveView.model.bounds();
-    this.seaBed = new SeaBed(this.binding, { ...this.waterVolume, ...this.caustics, ...this.lightUniforms, ...this.coastUniforms });
+    this.seaBed = new SeaBed(this.binding, { ...this.waterVolume, ...this.caustics, ...this.lightUniforms });
     this.add(this.seaBed.mesh);
     this.visible = available === first;
     // Until the first model's code arrives, the stand-in's parameters are the ones in force.
@@ -317,26 +315,23 @@ export class OceanEngine extends Object3D {
     if (params.bathymetry === 'deep') {
       this.coast?.dispose();
       this.coast = null;
-      this.showCoast(false);
       return;
     }
-    this.coastCode ??= import('../coast/coastScene');
-    const start = this.coastCode.then(({ CoastScene, coastChunk }) => {
-      if (this.disposed || this.params.bathymetry === 'deep') return;
-      this.binding.late.provide('oceano_coast', coastChunk);
-      this.coast ??= new CoastScene(this.coastUniforms, this.material.uniforms, this);
-      this.coast.setParams(this.params);
-      this.coast.update(this.frameTime, this.waveView.model);
+    if (this.coastScene) {
+      (this.coast ??= new this.coastScene(this)).setParams(params);
+      return;
+    }
+    this.coastCode ??= import('../coast/coastScene').then(({ CoastScene }) => {
+      this.coastScene = CoastScene;
+      if (!this.disposed && this.params.bathymetry !== 'deep') this.setCoast(this.params);
       this.bounds = this.waves.bounds();
-      this.showCoast(true);
     });
-    this.waitFor(start);
+    this.waitFor(this.coastCode);
   }
 
-  private showCoast(on: boolean): void {
-    this.material.setCoast(on);
-    this.seaBed.setCoast(on);
-    this.seaBed.setDepth(on ? 0 : this.params.seaBedDepth, this.underwaterShortcuts && !on ? this.bounds.vertical : Infinity);
+  /** @internal Where a boat may sail: on a coast it stops aground (src/sim/coast/aground.ts); null on the open sea. */
+  get sailLimit(): SailLimit | null {
+    return this.coast?.sailLimit ?? null;
   }
 
   /** Everything a frame needs for `camera` at `time` (seconds): the waves, which side of the water the eye is on, and the chunks in view. */
@@ -348,16 +343,6 @@ export class OceanEngine extends Object3D {
     this.shade(camera);
   }
 
-  /** @internal Whether the coast is drawn (its code has arrived and `bathymetry` is not deep). */
-  get hasCoast(): boolean {
-    return this.coast !== null;
-  }
-
-  /** @internal The coast's swell at `time` (the GPU probe sets it for the time it reads, then back). */
-  advanceCoast(time: number): void {
-    this.coast?.update(time, this.waveView.model);
-  }
-
   /** @internal Centres the interactive waves on where `camera` looks (update does; a view that calls advance itself calls this first). */
   follow(camera: PerspectiveCamera): void {
     if (this.interactive) this.interactive.follow(...focusOf(camera));
@@ -367,7 +352,7 @@ export class OceanEngine extends Object3D {
   advance(time: number): void {
     this.frameTime = time;
     this.waveView.update(time);
-    this.coast?.update(time, this.waveView.model);
+    this.coast?.update(time);
     if (this.interactive) {
       this.interactive.setBoat(this.boat);
       this.interactive.advance(time);
@@ -512,9 +497,8 @@ export class OceanEngine extends Object3D {
     const { submersion, eyeSurface } = this.place;
     this.material.setSeenFromBelow(submersion === 'below' && !this.underwaterShortcuts ? 'straddling' : submersion);
     this.seaBed.mesh.visible = submersion !== 'above';
-    // The land above the water; from under it the sea bed, which follows the same floor, takes over.
-    if (this.coast) this.coast.land.mesh.visible = submersion === 'above';
     this.seaBed.follow(camera.position);
+    this.coast?.shade(submersion);
     // Seen entirely from below, the sky can only show through the surface.
     this.sky.visible = submersion !== 'below';
     setEyeDepth(this.waterVolume, eyeSurface - camera.position.y);
@@ -540,13 +524,7 @@ export class OceanEngine extends Object3D {
    */
   sampleSurfaces(points: SurfacePoints, out?: SurfaceSamples, time = this.frameTime): SurfaceSamples {
     const into = checkSurfaceBatch(points, out);
-    return sampleSurfaces(
-      this.waves,
-      points,
-      time,
-      into,
-      this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null,
-    );
+    return sampleSurfaces(this.waves, points, time, into, this.interactive ? (s, x, z) => this.withInteractiveWaves(s, x, z) : null);
   }
 
   /** @internal The boat's wake for the coming frame (src/sim/wake/boatWake.ts packs it) and how far it can raise the surface, metres. */
@@ -583,9 +561,9 @@ export class OceanEngine extends Object3D {
     this.removeFromParent();
     this.sky.removeFromParent();
     this.chunks.dispose();
+    this.coast?.dispose();
     this.material.dispose();
     this.seaBed.dispose();
-    this.coast?.dispose();
     this.waveView.dispose();
     this.interactive?.dispose();
     this.foamDetail?.dispose();

@@ -310,11 +310,6 @@ export class OceanMaterial extends ShaderMaterial {
     (this.uniforms.uMorphZones.value as Float32Array).set(zones);
   }
 
-  /** The coast's swell, calmed wind sea, shallows' colour and surf (shaders/coast.glsl), compiled in while there is a coast. */
-  setCoast(on: boolean): void {
-    this.setDefine('OCEAN_COAST', on);
-  }
-
   /** The LOD debugger's view: each chunk tinted by its band (compiled in only while shown, see ocean.frag). */
   setLodColors(enabled: boolean): void {
     this.setDefine('OCEAN_LOD_COLORS', enabled);

@@ -308,22 +308,16 @@ export class OceanView {
   async probeSurface(points: readonly (readonly [number, number])[], time: number): Promise<ProbeSample[]> {
     const frameTime = this.ocean.time;
     const { SurfaceProbe } = await import('../teaching/surfaceProbe');
-    this.probe ??= new SurfaceProbe(
-      this.renderer,
-      this.ocean.binding,
-      this.ocean.wakeUniforms,
-      this.ocean.interactiveWaveUniforms,
-      this.ocean.coastUniforms,
-    );
+    this.probe ??= new SurfaceProbe(this.renderer, this.ocean.binding, this.ocean.wakeUniforms, this.ocean.interactiveWaveUniforms);
     this.probe.setInteractiveWavesOn(this.ocean.interactiveWaves !== null);
-    this.probe.setCoastOn(this.ocean.hasCoast);
+    this.probe.setCoast(this.ocean.coast?.uniforms ?? null);
     this.ocean.waveModelView.update(time);
-    this.ocean.advanceCoast(time);
+    this.ocean.coast?.update(time);
     try {
       return this.probe.probe(points);
     } finally {
       this.ocean.waveModelView.update(frameTime);
-      this.ocean.advanceCoast(frameTime);
+      this.ocean.coast?.update(frameTime);
     }
   }
 

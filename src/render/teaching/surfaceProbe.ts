@@ -46,7 +46,6 @@ export class SurfaceProbe {
     private readonly waves: WaveBinding,
     wake: WakeUniforms,
     interactive: InteractiveWaveUniforms,
-    coast: CoastUniforms,
   ) {
     // probe.vert adds the wake wherever it is on: its GLSL comes with this code.
     waves.late.provide('oceano_wake', wakeChunk);
@@ -54,7 +53,7 @@ export class SurfaceProbe {
       new ShaderMaterial({
         vertexShader,
         fragmentShader,
-        uniforms: { uTargetSize: { value: new Vector2() }, ...wake, ...interactive, ...coast },
+        uniforms: { uTargetSize: { value: new Vector2() }, ...wake, ...interactive },
         depthTest: false,
         depthWrite: false,
       }),
@@ -68,9 +67,10 @@ export class SurfaceProbe {
     setMaterialDefine(this.material, 'OCEAN_IWAVE', on);
   }
 
-  /** Whether the coast's swell and calmed wind sea are added (its chunk must have reached the binding first). */
-  setCoastOn(on: boolean): void {
-    setMaterialDefine(this.material, 'OCEAN_COAST', on);
+  /** The coast's uniforms while there is a coast (its chunk has reached the binding): its swell and calmed wind sea are added; null: none. */
+  setCoast(uniforms: CoastUniforms | null): void {
+    if (uniforms) Object.assign(this.material.uniforms, uniforms);
+    setMaterialDefine(this.material, 'OCEAN_COAST', uniforms !== null);
   }
 
   probe(points: readonly (readonly [number, number])[]): ProbeSample[] {

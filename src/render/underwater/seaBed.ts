@@ -9,12 +9,9 @@ import { heightmapTexture } from '../optics/dataTextures';
 import type { WaveBinding } from '../waves/waveBinding';
 import type { WaterVolumeUniforms } from './waterVolumeUniforms';
 import type { CausticsUniforms } from './causticsUniforms';
-import type { CoastUniforms } from '../coast/coastUniforms';
 
 /** Side of the flat bed, metres: far past where the water fog has hidden everything. */
 const BED_SIZE = 4000;
-/** Cells per side of the bed on a coast, where its vertices follow the floor (10 m apart: the floor bends only a few times). */
-const COAST_BED_SEGMENTS = 400;
 const SAND = new Color(0.55, 0.47, 0.33);
 
 /**
@@ -26,13 +23,8 @@ export class SeaBed {
   readonly material: ShaderMaterial;
   private mottleSeed = Number.NaN;
   private mottle: DataTexture | null = null;
-  private readonly flat: PlaneGeometry;
-  private coastGeometry: PlaneGeometry | null = null;
 
-  constructor(
-    waves: WaveBinding,
-    shared: WaterVolumeUniforms & CausticsUniforms & CoastUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>,
-  ) {
+  constructor(waves: WaveBinding, shared: WaterVolumeUniforms & CausticsUniforms & Record<'uRefractedSun' | 'uSunColor', IUniform>) {
     this.material = waves.attach(
       markOceanoMaterial(
         new ShaderMaterial({
@@ -49,9 +41,9 @@ export class SeaBed {
         }),
       ),
     );
-    this.flat = new PlaneGeometry(BED_SIZE, BED_SIZE);
-    this.flat.rotateX(-Math.PI / 2);
-    this.mesh = new Mesh(this.flat, this.material);
+    const geometry = new PlaneGeometry(BED_SIZE, BED_SIZE);
+    geometry.rotateX(-Math.PI / 2);
+    this.mesh = new Mesh(geometry, this.material);
     this.mesh.frustumCulled = false;
     this.mesh.visible = false;
   }
@@ -91,27 +83,13 @@ export class SeaBed {
     this.material.uniforms.uSunTransmission.value = transmission;
   }
 
-  /**
-   * On a coast the bed follows the floor: its vertices are put at −seaDepth by shaders/coast.glsl
-   * (OCEAN_COAST in seabed.vert), so the mesh is finely divided; off, the flat bed again.
-   */
-  setCoast(on: boolean): void {
-    if (on && !this.coastGeometry) {
-      this.coastGeometry = new PlaneGeometry(BED_SIZE, BED_SIZE, COAST_BED_SEGMENTS, COAST_BED_SEGMENTS);
-      this.coastGeometry.rotateX(-Math.PI / 2);
-    }
-    this.mesh.geometry = on && this.coastGeometry ? this.coastGeometry : this.flat;
-    setMaterialDefine(this.material, 'OCEAN_COAST', on);
-  }
-
   follow(eye: Vector3): void {
     this.mesh.position.x = eye.x;
     this.mesh.position.z = eye.z;
   }
 
   dispose(): void {
-    this.flat.dispose();
-    this.coastGeometry?.dispose();
+    this.mesh.geometry.dispose();
     this.material.dispose();
     this.mottle?.dispose();
   }

@@ -1,7 +1,6 @@
 import { followStep, type FollowerState } from './dampedFollower';
 import { forwardOf, targetPose, type BoatPose, type HeightAt, type HullSize } from './boatPose';
-import { sailUntilAground } from '../coast/aground';
-import type { SeaFloor } from '../coast/bathymetry';
+import type { SailLimit } from '../coast/aground';
 
 /** Half side, metres, of the square around the origin the boat may sail in: inside the ocean's extent. */
 export const BOAT_EXTENT = 2000;
@@ -105,8 +104,8 @@ export class BoatMotion {
   /** The last target pose and what it was taken from (only when update was given a SurfaceKey). */
   private targetKey: TargetKey | null = null;
   private lastTarget: BoatPose | null = null;
-  /** The sea floor under the boat: on a coast it stops where the water gets shallower than its draft. */
-  floor: SeaFloor | null = null;
+  /** Where the boat may sail on a coast (sailUntilAground, src/sim/coast/aground.ts); null on the open sea. */
+  limit: SailLimit | null = null;
   /** Whether the last step ran the boat aground (it stopped there). */
   aground = false;
 
@@ -150,7 +149,7 @@ export class BoatMotion {
       this.heading = followStep(this.heading, commanded, dt, 1 / HEADING_RESPONSE, HEADING_BAND);
       const [fx, fz] = forwardOf(this.heading.value);
       const next: [number, number] = [clampToExtent(this.x + fx * controls.speed * dt), clampToExtent(this.z + fz * controls.speed * dt)];
-      const sailed = this.floor && this.floor.bathymetry !== 'deep' ? sailUntilAground(this.floor, [this.x, this.z], next) : null;
+      const sailed = this.limit ? this.limit([this.x, this.z], next) : null;
       this.x = sailed ? sailed.x : next[0];
       this.z = sailed ? sailed.z : next[1];
       this.aground = sailed?.stopped ?? false;

@@ -3,6 +3,9 @@ import { seaDepth, type SeaFloor } from './bathymetry';
 /** How deep the boat's hull reaches under the water line, metres: where the sea is shallower it runs aground. */
 export const HULL_DRAFT = 1;
 
+/** Where a boat moving from `from` to `to` stops, and whether it ran aground (sailUntilAground over one floor). */
+export type SailLimit = (from: readonly [number, number], to: readonly [number, number]) => { x: number; z: number; stopped: boolean };
+
 /** Whether a boat at world (x, z) would touch the bottom: the still water there is shallower than its draft. */
 export function isAground(floor: SeaFloor, x: number, z: number): boolean {
   return seaDepth(floor, x, z) < HULL_DRAFT;

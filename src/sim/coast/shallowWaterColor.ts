@@ -1,19 +1,31 @@
 import { deepWaterReflectance, molecularScattering, PURE_WATER_ABSORPTION, WAVELENGTHS } from '../optics/waterColor';
 
 /**
- * The albedo of wet quartz sand at 650, 510 and 475 nm, a stand-in: beach sands reflect
- * 0.2–0.45 across the visible, a little more in the red than in the blue (a chosen value, not
- * a measurement of one beach).
+ * The albedo of the sand at 650, 510 and 475 nm: the sea bed's colour under the water
+ * (src/render/underwater/seaBed.ts), a chosen value, not a measurement of one beach (sands
+ * reflect 0.2–0.6, more in the red than in the blue).
  */
-export const SAND_ALBEDO: readonly [number, number, number] = [0.42, 0.37, 0.28];
+export const SAND_ALBEDO: readonly [number, number, number] = [0.55, 0.47, 0.33];
 
 /**
- * How fast diffuse light fades in pure water, per metre, at the three wavelengths: K ≈ a + b_b
- * (absorption plus backscattering, the quasi-single-scattering estimate of the diffuse
- * attenuation; Gordon 1989). Red is gone within a few metres, blue reaches the bed of a 60 m shelf.
+ * What coastal water holds beside the water itself (plankton, dissolved matter, fine sediment)
+ * adds to the diffuse attenuation, per metre, alike at every wavelength: a chosen value for a
+ * clean coast (Jerlov's coastal waters attenuate blue-green light 0.05–0.3 m⁻¹ more than the
+ * clearest ocean). Pure water alone would show the bed of a 60 m shelf.
+ */
+export const COASTAL_EXTRA_ATTENUATION = 0.06;
+
+/**
+ * How fast diffuse light fades in the coast's water, per metre, at the three wavelengths:
+ * K ≈ a + b_b (absorption plus backscattering, the quasi-single-scattering estimate of the
+ * diffuse attenuation; Gordon 1989) of pure water, plus COASTAL_EXTRA_ATTENUATION.
  */
 export function diffuseAttenuation(): [number, number, number] {
-  return WAVELENGTHS.map((wavelength, i) => PURE_WATER_ABSORPTION[i] + molecularScattering(wavelength) / 2) as [number, number, number];
+  return WAVELENGTHS.map((wavelength, i) => PURE_WATER_ABSORPTION[i] + molecularScattering(wavelength) / 2 + COASTAL_EXTRA_ATTENUATION) as [
+    number,
+    number,
+    number,
+  ];
 }
 
 /**

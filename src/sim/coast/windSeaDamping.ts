@@ -1,8 +1,7 @@
-/**
- * The breaker index γ: a wave breaks once its height passes γ times the depth (McCowan 1894's
- * solitary wave, 0.78; Battjes & Janssen 1978 observe 0.5–1.0).
- */
-export const BREAKER_INDEX = 0.78;
+import { MCCOWAN_BREAKER_INDEX } from './waveTransformation';
+
+/** The breaker index γ the swell's field breaks with (McCowan's 0.78), for the wind sea too. */
+export const BREAKER_INDEX = MCCOWAN_BREAKER_INDEX;
 
 /**
  * How much of the wind sea the coast keeps at depth `depth` (metres): its waves, up to

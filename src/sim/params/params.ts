@@ -1,7 +1,6 @@
 import { message, type Message } from './message';
 import { COMPARE_OFF, compareOrderings } from '../compare/compareLayout';
 import { FOAM_FADE_SECONDS } from '../waves/fft/whitecaps';
-import { BATHYMETRIES } from '../coast/bathymetry';
 
 /** The wave models, in the order the `waves` parameter lists them (src/render/waves/waveViewRegistry.ts). */
 const WAVE_MODEL_NAMES = ['seed', 'fft', 'gerstner'] as const;
@@ -164,14 +163,15 @@ export const paramDefs = {
   fogDensity: { kind: 'number', default: 0.035, min: 0, max: 0.3, step: 0.001, unit: '1/m', label: 'Water fog density' },
   // The coast (src/sim/coast/): the sea floor's shape, and a long-crested swell from far away that feels it
   // (shoaling, refraction, breaking). 'deep' is today's sea, and none of the coast's code is fetched for it.
-  bathymetry: { kind: 'choice', default: 'deep', options: BATHYMETRIES, label: 'Sea floor (bathymetry)' },
+  // The values of Bathymetry (src/sim/coast/bathymetry.ts), written out so the page's first script does not carry that module.
+  bathymetry: { kind: 'choice', default: 'deep', options: ['deep', 'beach', 'island'], label: 'Sea floor' },
   beachSlope: { kind: 'number', default: 0.02, min: 0.005, max: 0.1, step: 0.005, unit: '', label: 'Beach slope' },
-  swellHeight: { kind: 'number', default: 1.5, min: 0, max: 6, step: 0.1, unit: 'm', label: 'Coastal swell height H' },
-  swellPeriod: { kind: 'number', default: 10, min: 4, max: 20, step: 0.5, unit: 's', label: 'Coastal swell period' },
+  swellHeight: { kind: 'number', default: 1.5, min: 0, max: 6, step: 0.1, unit: 'm', label: 'Swell height H' },
+  swellPeriod: { kind: 'number', default: 10, min: 4, max: 20, step: 0.5, unit: 's', label: 'Swell period' },
   // 0 heads straight for the beach's shore (+x); positive turns it towards +z.
-  swellDirection: { kind: 'number', default: 0, min: -60, max: 60, step: 1, unit: '°', label: 'Coastal swell direction' },
+  swellDirection: { kind: 'number', default: 0, min: -60, max: 60, step: 1, unit: '°', label: 'Swell direction' },
   // The wave model's own waves (the wind sea) on top of the swell, calmed where the water is too shallow to hold them.
-  windSea: { kind: 'boolean', default: true, label: 'Wind sea over the swell' },
+  windSea: { kind: 'boolean', default: true, label: 'Wind sea' },
   seaBedDepth: { kind: 'number', default: 20, min: 2, max: 200, step: 0.5, unit: 'm', label: 'Sea bed depth' },
   caustics: { kind: 'boolean', default: true, label: 'Caustics' },
   causticsIntensity: { kind: 'number', default: 1, min: 0, max: 3, step: 0.05, unit: '', label: 'Caustics intensity' },
