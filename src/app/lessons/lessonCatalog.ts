@@ -106,26 +106,10 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'light-units', preset: 'calm', params: { sunElevation: 10 } },
   { id: 'water-colour', preset: 'fresh-breeze' },
   // The coast (src/sim/coast/): the swell alone where its crests are to be seen, the wind sea on for the surf.
-  {
-    id: 'coast-dispersion',
-    params: { bathymetry: 'beach', windSea: false, sunElevation: 35 },
-    camera: { position: [60, 160, 260], target: [260, 0, 0] },
-  },
-  {
-    id: 'coast-refraction',
-    params: { bathymetry: 'island', beachSlope: 0.05, windSea: false, sunElevation: 50 },
-    camera: { position: [380, 420, 260], target: [700, 0, 0] },
-  },
-  {
-    id: 'coast-shoaling',
-    params: { bathymetry: 'beach', windSea: false, sunElevation: 35 },
-    camera: { position: [440, 7, 60], target: [280, 0, -10] },
-  },
-  {
-    id: 'coast-breaking',
-    params: { bathymetry: 'beach', swellAmplitude: 0.3, rippleStrength: 0.3, sunElevation: 35 },
-    camera: { position: [150, 120, 220], target: [330, 0, 0] },
-  },
+  { id: 'coast-dispersion', preset: 'beach', params: { windSea: false }, camera: { position: [60, 160, 260], target: [260, 0, 0] } },
+  { id: 'coast-refraction', preset: 'island', params: { windSea: false } },
+  { id: 'coast-shoaling', preset: 'beach', params: { windSea: false } },
+  { id: 'coast-breaking', preset: 'beach', camera: { position: [150, 120, 220], target: [330, 0, 0] } },
 ];
 
 export const lessonIds = LESSONS.map((lesson) => lesson.id);
