@@ -17,8 +17,8 @@ export const coastTexts: Record<string, LessonText> = {
       ),
     question: {
       ask: {
-        en: 'Before you touch anything: if you lengthen Swell period from 10 to 15 s, will the crests at 2 m of water stand much further apart, or hardly move?',
-        es: 'Antes de tocar nada: si alargas el periodo del oleaje de 10 a 15 s, ¿las crestas a 2 m de profundidad se separan mucho o casi nada?',
+        en: 'If you lengthen Swell period from 10 to 15 s, will the crests at 2 m of water stand much further apart, or hardly move?',
+        es: 'Si alargas el periodo del oleaje de 10 a 15 s, ¿las crestas a 2 m de profundidad se separan mucho o casi nada?',
       },
       answer: {
         en: 'Much further apart, in proportion to the period: shallow water is hardly dispersive, every period runs at about √(g h), so L ≈ T √(g h), and at 2 m L grows from 44 m to 66 m. Move Swell period and watch the crests near the sand spread out.',
@@ -33,16 +33,13 @@ export const coastTexts: Record<string, LessonText> = {
   },
   'coast-refraction': {
     text: {
-      en: 'Where one end of a crest is in shallower water it moves slower, and the crest turns towards the depth contours: refraction. Over the beach’s straight contours Snell’s law holds: the wavenumber along the shore, k sin θ, does not change, θ being the angle from the contours’ normal; so sin θ / c is constant. A swell at 30° in 60 m of water turns to 17° at 10 m and to 8° at 2 m. Round the island no such law holds: the phase S solves the eikonal equation |∇S| = k(h) on the grid, and rays traced through it give the height.',
-      es: 'Donde un extremo de una cresta está en agua más somera avanza más despacio, y la cresta gira hacia las isóbatas: la refracción. Sobre las isóbatas rectas de la playa rige la ley de Snell: el número de onda a lo largo de la costa, k sen θ, no cambia, con θ el ángulo con la normal a las isóbatas; así sen θ / c es constante. Un oleaje a 30° en 60 m de agua gira a 17° a 10 m y a 8° a 2 m. En torno a la isla no hay tal ley: la fase S resuelve la ecuación eikonal |∇S| = k(h) sobre la malla, y los rayos trazados por ella dan la altura.',
+      en: 'Where one end of a crest is in shallower water it moves slower, and the crest turns towards the depth contours: refraction. Over the beach’s straight contours Snell’s law holds: the wavenumber along the shore, k sin θ, does not change, θ being the angle from the contours’ normal; so sin θ / c, c being the phase speed, is constant. A swell at θ₀ = 30° in 60 m of water turns to 17° at 10 m and to 8° at 2 m. Round the island no such law holds: the phase S solves the eikonal equation |∇S| = k(h) on the grid, and rays traced through it give the height.',
+      es: 'Donde un extremo de una cresta pisa agua más somera avanza más despacio, y la cresta gira hacia las isóbatas: la refracción. Sobre las isóbatas rectas de la playa rige la ley de Snell: el número de onda a lo largo de la costa, k sen θ, no cambia, con θ el ángulo con la normal a las isóbatas; así sen θ / c, con c la velocidad de fase, es constante. Un oleaje a θ₀ = 30° en 60 m gira a 17° a 10 m y a 8° a 2 m. En la isla no hay tal ley: la fase S resuelve la ecuación eikonal |∇S| = k(h) sobre la malla, y los rayos dan la altura.',
     },
     math:
       m(
         '<mi>k</mi><mi>sin</mi><mi>θ</mi><mo>=</mo><msub><mi>k</mi><mn>0</mn></msub><mi>sin</mi><msub><mi>θ</mi><mn>0</mn></msub><mspace width="0.5em"/><mo>⇔</mo><mspace width="0.5em"/><mfrac><mrow><mi>sin</mi><mi>θ</mi></mrow><mi>c</mi></mfrac><mo>=</mo><mfrac><mrow><mi>sin</mi><msub><mi>θ</mi><mn>0</mn></msub></mrow><msub><mi>c</mi><mn>0</mn></msub></mfrac>',
-      ) +
-      m(
-        '<mo>|</mo><mo>∇</mo><mi>S</mi><mo>|</mo><mo>=</mo><mi>k</mi><mo>(</mo><mi>h</mi><mo>)</mo><mo>,</mo><mspace width="0.5em"/><mi>η</mi><mo>=</mo><mi>a</mi><mi>cos</mi><mo>(</mo><mi>S</mi><mo>−</mo><mi>ω</mi><mi>t</mi><mo>)</mo>',
-      ),
+      ) + m('<mo>|</mo><mo>∇</mo><mi>S</mi><mo>|</mo><mo>=</mo><mi>k</mi><mo>(</mo><mi>h</mi><mo>)</mo>'),
     question: {
       ask: {
         en: 'The island hides the open sea from the water behind it. Will that water, in the island’s lee, be calm?',
@@ -61,15 +58,15 @@ export const coastTexts: Record<string, LessonText> = {
   },
   'coast-shoaling': {
     text: {
-      en: 'Each second a wave carries energy E c_g through a plane across its path, E ∝ H² being its energy per square metre and c_g its group velocity. With no loss before the break, H grows where c_g falls: H = H₀ K_s K_r, with the shoaling coefficient K_s = √(c_g0 / c_g) and refraction’s K_r = √(cos θ₀ / cos θ). Here H₀ = 1.5 m is given at 60 m of water. K_s first dips below 1: c_g grows from 8.25 m/s offshore to 9.37 m/s near 25 m, where K_s = 0.94, and is back to 1 near 11 m. Then it climbs: K_s = 1.14 at 5 m, where H = 1.71 m.',
-      es: 'Cada segundo una ola lleva una energía E c_g a través de un plano transversal, con E ∝ H² su energía por metro cuadrado y c_g su velocidad de grupo. Sin pérdidas antes de romper, H crece donde c_g baja: H = H₀ K_s K_r, con el coeficiente de asomeramiento K_s = √(c_g0 / c_g) y el de refracción K_r = √(cos θ₀ / cos θ). Aquí H₀ = 1,5 m a 60 m de profundidad. K_s primero baja de 1: c_g crece de 8,25 m/s mar adentro a 9,37 m/s cerca de 25 m, donde K_s = 0,94, y vuelve a 1 cerca de 11 m. Luego sube: K_s = 1,14 a 5 m, donde H = 1,71 m.',
+      en: 'A wave carries energy E ∝ H² per square metre at its group velocity c_g, c/2 (1 + 2kh / sinh 2kh) for phase speed c, wavenumber k and depth h. With no loss before the break E c_g is kept, and H grows where c_g falls: H = H₀ K_s K_r, with the shoaling coefficient K_s = √(c_g0 / c_g) and K_r = 1 for a swell head-on. H₀ = 1.5 m and c_g0 are taken at 60 m. K_s first dips: c_g grows from 8.25 m/s offshore to 9.37 m/s near 25 m, where K_s = 0.94. Then K_s = 1.14 at 5 m, where H = 1.71 m.',
+      es: 'Una ola lleva una energía E ∝ H² por metro cuadrado a su velocidad de grupo c_g, c/2 (1 + 2kh / senh 2kh) para velocidad de fase c, número de onda k y profundidad h. Sin pérdidas antes de romper, E c_g se conserva y H crece donde c_g baja: H = H₀ K_s K_r, con el coeficiente de asomeramiento K_s = √(c_g0 / c_g) y K_r = 1 para un oleaje de frente. H₀ = 1,5 m y c_g0 se toman a 60 m. K_s primero baja: c_g crece de 8,25 m/s mar adentro a 9,37 m/s cerca de 25 m, donde K_s = 0,94. Luego K_s = 1,14 a 5 m, donde H = 1,71 m.',
     },
     math:
       m(
-        '<mi>H</mi><mo>=</mo><msub><mi>H</mi><mn>0</mn></msub><msub><mi>K</mi><mi>s</mi></msub><msub><mi>K</mi><mi>r</mi></msub><mo>,</mo><mspace width="0.5em"/><msub><mi>K</mi><mi>s</mi></msub><mo>=</mo><msqrt><mfrac><msub><mi>c</mi><mrow><mi>g</mi><mn>0</mn></mrow></msub><msub><mi>c</mi><mi>g</mi></msub></mfrac></msqrt><mo>,</mo><mspace width="0.5em"/><msub><mi>K</mi><mi>r</mi></msub><mo>=</mo><msqrt><mfrac><mrow><mi>cos</mi><msub><mi>θ</mi><mn>0</mn></msub></mrow><mrow><mi>cos</mi><mi>θ</mi></mrow></mfrac></msqrt>',
+        '<mi>H</mi><mo>=</mo><msub><mi>H</mi><mn>0</mn></msub><msub><mi>K</mi><mi>s</mi></msub><msub><mi>K</mi><mi>r</mi></msub><mo>,</mo><mspace width="0.5em"/><msub><mi>K</mi><mi>s</mi></msub><mo>=</mo><msqrt><mfrac><msub><mi>c</mi><mrow><mi>g</mi><mn>0</mn></mrow></msub><msub><mi>c</mi><mi>g</mi></msub></mfrac></msqrt>',
       ) +
       m(
-        '<msub><mi>c</mi><mi>g</mi></msub><mo>=</mo><mfrac><mi>c</mi><mn>2</mn></mfrac><mrow><mo>(</mo><mn>1</mn><mo>+</mo><mfrac><mrow><mn>2</mn><mi>k</mi><mi>h</mi></mrow><mrow><mi>sinh</mi><mn>2</mn><mi>k</mi><mi>h</mi></mrow></mfrac><mo>)</mo></mrow><mo>,</mo><mspace width="0.5em"/><mi>E</mi><msub><mi>c</mi><mi>g</mi></msub><mo>=</mo><mtext>const</mtext><mo>,</mo><mspace width="0.5em"/><mi>E</mi><mo>=</mo><mfrac><mn>1</mn><mn>8</mn></mfrac><mi>ρ</mi><mi>g</mi><msup><mi>H</mi><mn>2</mn></msup>',
+        '<msub><mi>c</mi><mi>g</mi></msub><mo>=</mo><mfrac><mi>c</mi><mn>2</mn></mfrac><mrow><mo>(</mo><mn>1</mn><mo>+</mo><mfrac><mrow><mn>2</mn><mi>k</mi><mi>h</mi></mrow><mrow><mi>sinh</mi><mn>2</mn><mi>k</mi><mi>h</mi></mrow></mfrac><mo>)</mo></mrow><mo>,</mo><mspace width="0.5em"/><mi>E</mi><msub><mi>c</mi><mi>g</mi></msub><mo>=</mo><mtext>const</mtext><mo>,</mo><mspace width="0.5em"/><mi>E</mi><mo>∝</mo><msup><mi>H</mi><mn>2</mn></msup>',
       ),
     question: {
       ask: {
@@ -89,15 +86,15 @@ export const coastTexts: Record<string, LessonText> = {
   },
   'coast-breaking': {
     text: {
-      en: 'Shoaling cannot go on: a wave breaks when its height reaches a fraction γ of the depth, the breaker index. McCowan found γ = 0.78 for a solitary wave, and the code takes it: H_b = γ h_b. The 1.5 m, 10 s swell grows to H = 1.98 m at h = 2.54 m, where H = γ h: the breaking line, not at H₀/γ = 1.92 m, since it has grown first. To the sand the surf zone is saturated, H = γ h, and foam covers each crest’s front. At slope 0.02 the surf zone is h_b / 0.02 ≈ 127 m wide.',
-      es: 'El asomeramiento no sigue sin fin: una ola rompe cuando su altura alcanza una fracción γ de la profundidad, el índice de rotura. McCowan halló γ = 0,78 para una onda solitaria, y el código lo usa: H_b = γ h_b. El oleaje de 1,5 m y 10 s crece hasta H = 1,98 m a h = 2,54 m, donde H = γ h: la línea de rotura, no en H₀/γ = 1,92 m, porque antes ha crecido. Hasta la arena la zona de rompientes está saturada, H = γ h, y la espuma cubre el frente de cada cresta. Con pendiente 0,02, la zona de rompientes mide h_b / 0,02 ≈ 127 m.',
+      en: 'Shoaling cannot go on: a wave breaks when its height reaches a fraction γ of the depth, the breaker index. McCowan found γ = 0.78 for a solitary wave, and the code takes it: H_b = γ h_b. The 1.5 m, 10 s swell grows to H = 1.98 m at h = 2.54 m, where H = γ h: the breaking line, not at H₀/γ = 1.92 m, since it has grown first. To the sand the surf zone is saturated, H = γ h, and foam covers each crest’s front. At slope s = 0.02 the surf zone is x_surf = h_b / s ≈ 127 m wide.',
+      es: 'El asomeramiento no sigue sin fin: una ola rompe cuando su altura alcanza una fracción γ de la profundidad, el índice de rotura. McCowan halló γ = 0,78 para una onda solitaria, y el código lo usa: H_b = γ h_b. El oleaje de 1,5 m y 10 s crece hasta H = 1,98 m a h = 2,54 m, donde H = γ h: la línea de rotura, no en H₀/γ = 1,92 m, porque antes ha crecido. Hasta la arena la zona de rompientes está saturada, H = γ h, y la espuma cubre el frente de cada cresta. Con pendiente s = 0,02, la zona de rompientes mide x_surf = h_b / s ≈ 127 m.',
     },
     math:
       m(
-        '<msub><mi>H</mi><mi>b</mi></msub><mo>=</mo><mi>γ</mi><msub><mi>h</mi><mi>b</mi></msub><mo>,</mo><mspace width="0.5em"/><mi>γ</mi><mo>=</mo><mn>0.78</mn><mo>,</mo><mspace width="0.5em"/><mi>H</mi><mo>=</mo><mi>min</mi><mo>(</mo><msub><mi>H</mi><mn>0</mn></msub><msub><mi>K</mi><mi>s</mi></msub><msub><mi>K</mi><mi>r</mi></msub><mo>,</mo><mi>γ</mi><mi>h</mi><mo>)</mo>',
+        '<msub><mi>H</mi><mi>b</mi></msub><mo>=</mo><mi>γ</mi><msub><mi>h</mi><mi>b</mi></msub><mo>,</mo><mspace width="0.5em"/><mi>γ</mi><mo>=</mo><mn>0.78</mn><mo>,</mo><mspace width="0.5em"/><msub><mi>x</mi><mtext>surf</mtext></msub><mo>=</mo><mfrac><msub><mi>h</mi><mi>b</mi></msub><mi>s</mi></mfrac>',
       ) +
       m(
-        '<msub><mi>x</mi><mtext>surf</mtext></msub><mo>=</mo><mfrac><msub><mi>h</mi><mi>b</mi></msub><mi>s</mi></mfrac><mo>,</mo><mspace width="0.5em"/><mtext>breaking</mtext><mo>=</mo><mtext>smoothstep</mtext><mo>(</mo><mn>0.9</mn><mo>,</mo><mn>1</mn><mo>,</mo><mfrac><mi>H</mi><mrow><mi>γ</mi><mi>h</mi></mrow></mfrac><mo>)</mo>',
+        '<mtext>breaking</mtext><mo>=</mo><mtext>smoothstep</mtext><mo>(</mo><mn>0.9</mn><mo>,</mo><mn>1</mn><mo>,</mo><mfrac><mi>H</mi><mrow><mi>γ</mi><mi>h</mi></mrow></mfrac><mo>)</mo>',
       ),
     question: {
       ask: {
