@@ -14,7 +14,7 @@ import {
 } from '../../../../../src/sim/coast/waveTransformation';
 import { buildCoastField } from '../../../../../src/sim/coast/coastSwellField';
 import { sampleCoastField } from '../../../../../src/sim/coast/coastFieldSampling';
-import { LINEAR_THEORY, type CoastWaveModel } from '../../../../../src/sim/coast/coastWaveModel';
+import { LINEAR_THEORY, SHALLOWEST_DEPTH, type CoastWaveModel } from '../../../../../src/sim/coast/coastWaveModel';
 import { MAX_REFRACTION_COEFFICIENT } from '../../../../../src/sim/coast/islandSwellField';
 import type { CoastSetting } from '../../../../../src/sim/coast/coastField';
 
@@ -124,6 +124,15 @@ describe('coast-dispersion: ω² = g k tanh(k h) shortens and slows the swell', 
       expect(roundsTo(grows[2], wavelength(to, 2)), lang).toBe(true);
     }
     expect(roundsTo('66', wavelength(10, 2) * (15 / 10) ** 2)).toBe(false);
+  });
+
+  // Control: a depth of 0.2 m would not round to the choice line's 0.1.
+  it('the choice line’s depth below which k is frozen is the code’s', () => {
+    for (const lang of LANGS) {
+      const choice = LESSON_TEXTS['coast-dispersion'].choice![lang];
+      expect(roundsTo(quotedAfter(choice, '(?:below|bajo)'), SHALLOWEST_DEPTH), lang).toBe(true);
+    }
+    expect(roundsTo('0.1', 0.2)).toBe(false);
   });
 
   // Control: a field built with deep water's dispersion keeps 154 m crests all the way in.
