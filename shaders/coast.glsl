@@ -40,63 +40,68 @@ vec4 coastTexel(int i, int j) {
   return texelFetch(uCoastField, ivec2(i, j), 0);
 }
 
-// All four channels at texel-index coordinates (u, v) inside [0, N − 1]²: bilinear between texel centres.
-vec4 coastBilinear(vec2 uv) {
+// All four channels at texel-index coordinates (u, v) inside [0, N − 1]²: bilinear between
+// texel centres, with their rates of change along u and v (per texel) within the cell.
+vec4 coastBilinear(vec2 uv, out vec4 alongU, out vec4 alongV) {
   int last = int(uCoastGrid.w + 0.5) - 1;
   int i0 = min(int(floor(uv.x)), last - 1);
   int j0 = min(int(floor(uv.y)), last - 1);
   float fu = uv.x - float(i0);
   float fv = uv.y - float(j0);
-  vec4 bottom = coastTexel(i0, j0) * (1.0 - fu) + coastTexel(i0 + 1, j0) * fu;
-  vec4 top = coastTexel(i0, j0 + 1) * (1.0 - fu) + coastTexel(i0 + 1, j0 + 1) * fu;
+  vec4 t00 = coastTexel(i0, j0);
+  vec4 t10 = coastTexel(i0 + 1, j0);
+  vec4 t01 = coastTexel(i0, j0 + 1);
+  vec4 t11 = coastTexel(i0 + 1, j0 + 1);
+  vec4 bottom = t00 * (1.0 - fu) + t10 * fu;
+  vec4 top = t01 * (1.0 - fu) + t11 * fu;
+  alongU = (t10 - t00) * (1.0 - fv) + (t11 - t01) * fv;
+  alongV = top - bottom;
   return bottom * (1.0 - fv) + top * fv;
 }
 
-// The field at world (x, z): outside the grid, the edge's amplitude, depth and breaking, and a
-// phase that goes on growing at the edge's rate (sampleCoastField, src/sim/coast/coastFieldSampling.ts).
-vec4 coastFieldAt(vec2 xz) {
+// The field at world (x, z) (sampleCoastField, src/sim/coast/coastFieldSampling.ts): outside the
+// grid, the edge's amplitude, depth and breaking, and a phase that goes on growing at the
+// edge's rate. `slope`: ∂S/∂x, ∂S/∂z, ∂a/∂x, ∂a/∂z, per metre (coastSwellSlope.ts on the CPU).
+vec4 coastFieldAt(vec2 xz, out vec4 slope) {
   float last = uCoastGrid.w - 1.0;
   vec2 uv = (xz - uCoastGrid.xy) / uCoastGrid.z;
   vec2 c = clamp(uv, 0.0, last);
-  vec4 s = coastBilinear(c);
+  vec4 alongU;
+  vec4 alongV;
+  vec4 s = coastBilinear(c, alongU, alongV);
+  // Clamped, the field stands still along that axis but for the phase's growth.
+  if (uv.x != c.x) alongU = vec4(0.0);
+  if (uv.y != c.y) alongV = vec4(0.0);
+  vec4 unused;
   float edge = s.x;
   if (uv.x != c.x) {
     float inward = uv.x > c.x ? -1.0 : 1.0;
-    s.x += (edge - coastBilinear(vec2(c.x + inward, c.y)).x) * -inward * (uv.x - c.x);
+    float rate = (edge - coastBilinear(vec2(c.x + inward, c.y), unused, unused).x) * -inward;
+    s.x += rate * (uv.x - c.x);
+    alongU.x = rate;
   }
   if (uv.y != c.y) {
     float inward = uv.y > c.y ? -1.0 : 1.0;
-    s.x += (edge - coastBilinear(vec2(c.x, c.y + inward)).x) * -inward * (uv.y - c.y);
+    float rate = (edge - coastBilinear(vec2(c.x, c.y + inward), unused, unused).x) * -inward;
+    s.x += rate * (uv.y - c.y);
+    alongV.x = rate;
   }
+  slope = vec4(alongU.x, alongV.x, alongU.y, alongV.y) / uCoastGrid.z;
   return s;
 }
 
-// η = a cos(S − ω t) at world (x, z).
-float coastSwellHeight(vec2 xz) {
-  vec4 s = coastFieldAt(xz);
-  return s.y * cos(s.x - uCoastAdvance);
-}
-
-// The swell's height and slope (∂η/∂x, ∂η/∂z) at world (x, z); the slope by central
-// differences of COAST_NORMAL_STEP metres, as coastSwellNormal takes it on the CPU.
-vec3 coastSwell(vec2 xz) {
-  const vec2 dx = vec2(COAST_NORMAL_STEP, 0.0);
-  const vec2 dz = vec2(0.0, COAST_NORMAL_STEP);
-  float slopeX = (coastSwellHeight(xz + dx) - coastSwellHeight(xz - dx)) / (2.0 * COAST_NORMAL_STEP);
-  float slopeZ = (coastSwellHeight(xz + dz) - coastSwellHeight(xz - dz)) / (2.0 * COAST_NORMAL_STEP);
-  return vec3(coastSwellHeight(xz), slopeX, slopeZ);
+// The swell's height η = a cos(S − ω t) and slope (∂η/∂x, ∂η/∂z) from a field sample and its slopes.
+vec3 coastSwellOf(vec4 s, vec4 slope) {
+  float phase = s.x - uCoastAdvance;
+  float c = cos(phase);
+  float n = sin(phase);
+  return vec3(s.y * c, slope.zw * c - s.y * n * slope.xy);
 }
 
 // The wind sea's normal `n` with its slopes scaled by `factor`, tilted by the swell's `slope`.
 vec3 coastTiltNormal(vec3 n, float factor, vec2 slope) {
   vec2 wind = -n.xz / max(n.y, 1e-4) * factor;
   return normalize(vec3(-(wind.x + slope.x), 1.0, -(wind.y + slope.y)));
-}
-
-// What the pixels need, per vertex: the depth, the breaking fraction and the phase S − ω t.
-vec3 coastLook(vec2 xz) {
-  vec4 s = coastFieldAt(xz);
-  return vec3(coastSeaDepth(xz), s.w, s.x - uCoastAdvance);
 }
 
 // From ocean.vert: the depth, breaking and swell phase for the shallows' colour and the surf,
@@ -113,10 +118,13 @@ void coastDisplace(inout vec3 d, inout vec3 normal, vec2 grid, float fade, bool 
   d *= uCoastWind.x;
   vec2 at = grid + d.xz;
   float windFactor = coastWindFactor(at);
-  vec3 swell = coastSwell(at) * fade;
+  vec4 slope;
+  vec4 field = coastFieldAt(at, slope);
+  vec3 swell = coastSwellOf(field, slope) * fade;
   d.y = d.y * windFactor + swell.x;
   if (!flatNormals) normal = coastTiltNormal(normal, windFactor, swell.yz);
-  vCoastLook = coastLook(at);
+  // The depth, the breaking fraction and the phase S − ω t.
+  vCoastLook = vec3(coastSeaDepth(at), field.w, field.x - uCoastAdvance);
   vCoastTilt = vec3(swell.yz, windFactor);
 }
 #endif

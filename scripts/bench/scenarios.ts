@@ -95,6 +95,8 @@ export const SCENARIOS: readonly BenchScenario[] = [
   { name: 'compare-models camera, seed alone', query: 't=10&preset=compare-models&compare=off&waves=seed', stepSeconds: 1 / 60 },
   // The steepest Gerstner lesson (4 trochoids at Q = 1, 1.2 m above the water).
   { name: 'gerstner-steepness', query: 't=10&preset=gerstner-steepness', stepSeconds: 1 / 60 },
+  // The coast: the beach preset from its sand (the swell's field, the land, the surf and the shallows' colour).
+  { name: 'beach view (preset=beach)', query: 't=10&preset=beach' },
 ];
 
 /** The ratios the issue's targets are stated in: [label, numerator scenario, denominator scenario or 'floor', target]. */
@@ -126,6 +128,8 @@ export const COMPARISONS: readonly [string, string, string, number | null][] = [
   // Each wave model at most 2× the seed's frame, at the compare-models camera.
   ['gerstner alone / seed alone (compare-models camera)', 'compare-models camera, gerstner alone', 'compare-models camera, seed alone', 2],
   ['fft alone / seed alone (compare-models camera)', 'compare-models camera, fft alone', 'compare-models camera, seed alone', 2],
+  // The beach view at most 1.5× the default view.
+  ['beach / default', 'beach view (preset=beach)', 'default view', 1.5],
   ['looking up / default', 'looking up', 'default view', null],
   ['looking down / default', 'looking down', 'default view', null],
 ];

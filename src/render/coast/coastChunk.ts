@@ -1,6 +1,5 @@
 import coast from '../../../shaders/coast.glsl?raw';
 import { BEACH_SHORE_X, DUNE_HEIGHT, ISLAND_CENTER, ISLAND_HEIGHT, ISLAND_RADIUS, OFFSHORE_DEPTH } from '../../sim/coast/bathymetry';
-import { NORMAL_STEP } from '../../sim/coast/coastFieldSampling';
 import { diffuseAttenuation, SAND_ALBEDO } from '../../sim/coast/shallowWaterColor';
 import { glslFloat, glslVec3 } from '../shaders/shaderConstants';
 
@@ -16,7 +15,6 @@ export const coastChunk = [
   `#define COAST_ISLAND_CENTER vec2(${ISLAND_CENTER.map(glslFloat).join(', ')})`,
   `#define COAST_ISLAND_RADIUS ${glslFloat(ISLAND_RADIUS)}`,
   `#define COAST_ISLAND_HEIGHT ${glslFloat(ISLAND_HEIGHT)}`,
-  `#define COAST_NORMAL_STEP ${glslFloat(NORMAL_STEP)}`,
   `#define COAST_ATTENUATION ${glslVec3(diffuseAttenuation())}`,
   `#define COAST_BED_ALBEDO ${glslVec3(SAND_ALBEDO)}`,
   coast,

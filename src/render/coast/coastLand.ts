@@ -79,10 +79,15 @@ function islandGeometry(floor: SeaFloor): BufferGeometry {
     .filter((r) => r >= 0);
   // Two more rings on the hill, so its dome is round where it has no bend.
   const rings = [...new Set([0, ...radii, ISLAND_RADIUS / 3, (2 * ISLAND_RADIUS) / 3])].sort((a, b) => a - b);
-  return gridGeometry(ISLAND_SEGMENTS + 1, rings.length, (i, j) => {
-    const angle = (2 * Math.PI * i) / ISLAND_SEGMENTS;
-    return [ISLAND_CENTER[0] + rings[j] * Math.cos(angle), ISLAND_CENTER[1] + rings[j] * Math.sin(angle)];
-  }, floor);
+  return gridGeometry(
+    ISLAND_SEGMENTS + 1,
+    rings.length,
+    (i, j) => {
+      const angle = (2 * Math.PI * i) / ISLAND_SEGMENTS;
+      return [ISLAND_CENTER[0] + rings[j] * Math.cos(angle), ISLAND_CENTER[1] + rings[j] * Math.sin(angle)];
+    },
+    floor,
+  );
 }
 
 /** A columns × rows grid of quads whose vertex (i, j) stands at place(i, j) on the ground. */

@@ -1,4 +1,13 @@
-import { ClampToEdgeWrapping, DataTexture, FloatType, NearestFilter, PlaneGeometry, RGBAFormat, type BufferGeometry } from 'three';
+import {
+  ClampToEdgeWrapping,
+  DataTexture,
+  FloatType,
+  NearestFilter,
+  PlaneGeometry,
+  RGBAFormat,
+  type BufferGeometry,
+  type Object3D,
+} from 'three';
 import type { OceanParams } from '../../sim/params/params';
 import type { LiveWaveModel } from '../../sim/waves/waveModel';
 import type { Submersion } from '../../sim/underwater/snellWindow';
@@ -9,7 +18,10 @@ import { CoastSurface } from '../../sim/coast/coastSurface';
 import { BREAKER_INDEX, windSeaHeightOf } from '../../sim/coast/windSeaDamping';
 import { sailUntilAground, type SailLimit } from '../../sim/coast/aground';
 import { setMaterialDefine } from '../shaders/materialDefines';
-import type { OceanEngine } from '../ocean/oceanEngine';
+import type { OceanMaterial } from '../ocean/oceanMaterial';
+import type { SeaBed } from '../underwater/seaBed';
+import type { WaveBinding } from '../waves/waveBinding';
+import type { WaveModelView } from '../waves/waveModelView';
 import { createCoastUniforms } from './coastUniforms';
 import { CoastLand } from './coastLand';
 import { coastChunk } from './coastChunk';
@@ -18,6 +30,15 @@ import { coastChunk } from './coastChunk';
 const BED_SIZE = 4000;
 const BED_SEGMENTS = 400;
 const BED_STEP = BED_SIZE / BED_SEGMENTS;
+
+/** What the coast needs of the ocean it joins (OceanEngine): its binding, materials, sea bed, model and time. */
+export interface CoastHost extends Object3D {
+  readonly binding: WaveBinding;
+  readonly material: OceanMaterial;
+  readonly seaBed: SeaBed;
+  readonly waveModelView: WaveModelView;
+  readonly time: number;
+}
 
 /** The coast's setting from the parameters. */
 export function coastSettingOf(params: OceanParams): CoastSetting {
@@ -50,7 +71,7 @@ export class CoastScene {
   private windSea = true;
   private built: string | null = null;
 
-  constructor(private readonly ocean: OceanEngine) {
+  constructor(private readonly ocean: CoastHost) {
     ocean.binding.late.provide('oceano_coast', coastChunk);
     // The ocean's two programs share one uniforms object.
     Object.assign(ocean.material.uniforms, this.uniforms);

@@ -2,7 +2,7 @@ import type { DisplacementBounds, LiveWaveModel, SurfaceSample } from '../waves/
 import type { OceanParams } from '../params/params';
 import { seaDepth, type SeaFloor } from './bathymetry';
 import type { CoastField } from './coastField';
-import { coastSwellHeight, coastSwellNormal } from './coastFieldSampling';
+import { coastSwellWithSlope } from './coastSwellSlope';
 import { windSeaFactor, windSeaHeightOf } from './windSeaDamping';
 
 /**
@@ -61,26 +61,26 @@ export class CoastSurface implements LiveWaveModel {
     const d: [number, number, number] = this.windSea ? this.inner.displacement(x, z, time) : [0, 0, 0];
     const wx = x + d[0];
     const wz = z + d[2];
-    return [d[0], this.windFactor(wx, wz) * d[1] + coastSwellHeight(this.field, wx, wz, time), d[2]];
+    return [d[0], this.windFactor(wx, wz) * d[1] + coastSwellWithSlope(this.field, wx, wz, time)[0], d[2]];
   }
 
   sample(x: number, z: number, time: number): SurfaceSample {
     const wind = this.windSea ? this.inner.sample(x, z, time) : { height: 0, normal: [0, 1, 0] as [number, number, number] };
     const factor = this.windFactor(x, z);
-    const swell = coastSwellNormal(this.field, x, z, time);
-    // The swell's slope from its normal (−∂η/∂x, 1, −∂η/∂z)/|…|, and the wind sea's scaled by the factor.
-    const slopeX = -swell[0] / swell[1] - (factor * wind.normal[0]) / Math.max(wind.normal[1], 1e-4);
-    const slopeZ = -swell[2] / swell[1] - (factor * wind.normal[2]) / Math.max(wind.normal[1], 1e-4);
+    const [swell, swellX, swellZ] = coastSwellWithSlope(this.field, x, z, time);
+    // The swell's slope, and the wind sea's (from its normal, −n.xz / n.y) scaled by the factor.
+    const slopeX = swellX - (factor * wind.normal[0]) / Math.max(wind.normal[1], 1e-4);
+    const slopeZ = swellZ - (factor * wind.normal[2]) / Math.max(wind.normal[1], 1e-4);
     const length = Math.hypot(slopeX, 1, slopeZ);
     return {
-      height: factor * wind.height + coastSwellHeight(this.field, x, z, time),
+      height: factor * wind.height + swell,
       normal: [-slopeX / length, 1 / length, -slopeZ / length],
     };
   }
 
   height(x: number, z: number, time: number): number {
     const wind = this.windSea ? this.inner.height(x, z, time) : 0;
-    return this.windFactor(x, z) * wind + coastSwellHeight(this.field, x, z, time);
+    return this.windFactor(x, z) * wind + coastSwellWithSlope(this.field, x, z, time)[0];
   }
 
   /** The model's bounds grown by the swell's largest amplitude, so culling stays safe. */

@@ -4,6 +4,7 @@ import { message, MESSAGE_IDS, type MessageId } from '../../../../src/sim/params
 import { preferredLanguage, Translator } from '../../../../src/app/language/i18n';
 // The boat's loader brings the texts of the notices only it raises.
 import '../../../../src/app/boot/boatLoad';
+import '../../../../src/app/boat/agroundNotice';
 import { paramLabel, SPANISH_PARAM_LABELS } from '../../../../src/app/language/paramLabels';
 import { parseUrlState } from '../../../../src/app/url/urlState';
 
@@ -79,7 +80,7 @@ describe('language', () => {
       ).toEqual(expected);
       if (english) expect(en, id).toContain(english);
     }
-    expect(MESSAGE_IDS.length).toBe(38);
+    expect(MESSAGE_IDS.length).toBe(39);
   });
 
   it("leaves the boat loader's notices to its own chunk: without it their text is missing and says so", async () => {

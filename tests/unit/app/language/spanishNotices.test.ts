@@ -3,6 +3,7 @@ import { message, MESSAGE_IDS, MessageError, messageOf } from '../../../../src/s
 import { Translator } from '../../../../src/app/language/i18n';
 // The boat's loader brings the texts of the notices only it raises.
 import '../../../../src/app/boot/boatLoad';
+import '../../../../src/app/boat/agroundNotice';
 
 /** Values as the app passes them: paths, numbers and an English inner error, which Spanish must not repeat. */
 const VALUES = {

@@ -1,0 +1,67 @@
+import { describe, expect, it } from 'vitest';
+import { CoastSurface, largestAmplitude } from '../../../../src/sim/coast/coastSurface';
+import { buildCoastField } from '../../../../src/sim/coast/coastSwellField';
+import { coastSwellHeight } from '../../../../src/sim/coast/coastFieldSampling';
+import { BEACH_SHORE_X, seaDepth, type SeaFloor } from '../../../../src/sim/coast/bathymetry';
+import { SeedWaveModel } from '../../../../src/sim/waves/seed/seedWaveModel';
+import type { LiveWaveModel } from '../../../../src/sim/waves/waveModel';
+import { defaultParams } from '../../../../src/sim/params/params';
+import { BREAKER_INDEX } from '../../../../src/sim/coast/windSeaDamping';
+
+const floor: SeaFloor = { bathymetry: 'beach', beachSlope: 0.02, deepDepth: 1000 };
+const field = buildCoastField({ ...floor, swellHeight: 1.5, swellPeriod: 10, swellDirection: 10 }, 128)!;
+/** The seed's sea (sines and Perlin ripples) as the wind sea. */
+const wind = (): LiveWaveModel => new SeedWaveModel(defaultParams());
+
+describe('the CPU twin at the coast', () => {
+  it('is the swell alone with the wind sea off', () => {
+    const surface = new CoastSurface(wind(), field, floor, false);
+    for (const [x, z, t] of [
+      [0, 0, 3],
+      [300, -40, 7.5],
+      [380, 12, 100],
+    ])
+      expect(surface.sample(x, z, t).height).toBeCloseTo(coastSwellHeight(field, x, z, t), 12);
+  });
+
+  it('adds the whole wind sea where the water is deep, and none on land', () => {
+    const model = wind();
+    const surface = new CoastSurface(model, field, floor, true);
+    const deep = [-2000, 30, 4] as const;
+    expect(surface.height(...deep)).toBeCloseTo(model.height(...deep) + coastSwellHeight(field, ...deep), 12);
+    const land = [BEACH_SHORE_X + 30, 0, 4] as const;
+    expect(surface.height(...land)).toBeCloseTo(coastSwellHeight(field, ...land), 12);
+  });
+
+  it('limits the wind sea to γ h in the shallows', () => {
+    const model = wind();
+    const surface = new CoastSurface(model, field, floor, true);
+    const height = 2 * model.bounds().vertical;
+    const [x, z, t] = [BEACH_SHORE_X - 100, 0, 4];
+    const factor = (BREAKER_INDEX * seaDepth(floor, x, z)) / height;
+    expect(factor).toBeLessThan(1);
+    expect(surface.height(x, z, t) - coastSwellHeight(field, x, z, t)).toBeCloseTo(factor * model.height(x, z, t), 12);
+  });
+
+  it('gives a unit normal that leans against the swell’s slope', () => {
+    const surface = new CoastSurface(wind(), field, floor, false);
+    const [x, z, t] = [100, 0, 2];
+    const { normal } = surface.sample(x, z, t);
+    expect(Math.hypot(...normal)).toBeCloseTo(1, 12);
+    const slope = (coastSwellHeight(field, x + 0.01, z, t) - coastSwellHeight(field, x - 0.01, z, t)) / 0.02;
+    expect(-normal[0] / normal[1]).toBeCloseTo(slope, 3);
+  });
+
+  it('grows the culling bounds by the swell’s largest amplitude', () => {
+    const model = wind();
+    const surface = new CoastSurface(model, field, floor, true);
+    expect(largestAmplitude(field)).toBeGreaterThan(0.75);
+    expect(surface.bounds().vertical).toBeCloseTo(model.bounds().vertical + largestAmplitude(field), 12);
+  });
+
+  it('negative control: the wind sea on changes the answer where the water is deep', () => {
+    const on = new CoastSurface(wind(), field, floor, true);
+    const off = new CoastSurface(wind(), field, floor, false);
+    expect(Math.abs(on.height(-2000, 30, 4) - off.height(-2000, 30, 4))).toBeGreaterThan(1e-3);
+  });
+});
