@@ -8,6 +8,8 @@ export const MAX_REFRACTION_COEFFICIENT = 2.5;
 /** Rays launched per texel width of the incoming swell, and ray steps per texel: enough that the ray density is smooth. */
 const RAYS_PER_TEXEL = 2;
 const STEPS_PER_TEXEL = 2;
+/** Passes of the 3×3 binomial filter over the ray density: about a 2-texel radius. */
+const SMOOTHING_PASSES = 4;
 /** Fast-sweeping rounds (each four sweeps) at most; the lee needs a few more than open water. */
 const MAX_SWEEP_ROUNDS = 12;
 
@@ -132,37 +134,37 @@ function eikonalPhase(
 
 /** Gives each unreached (land) texel, ring by ring from the water, the mean of its neighbours' phases carried on linearly. */
 function fillLand(n: number, phase: Float64Array): void {
-  let pending = true;
-  while (pending) {
-    pending = false;
-    const next = phase.slice();
-    for (let j = 0; j < n; j++) {
-      for (let i = 0; i < n; i++) {
-        const t = j * n + i;
-        if (phase[t] !== Infinity) continue;
-        let sum = 0;
-        let count = 0;
-        for (const [di, dj] of [
-          [1, 0],
-          [-1, 0],
-          [0, 1],
-          [0, -1],
-        ]) {
-          const i1 = i + di;
-          const j1 = j + dj;
-          if (i1 < 0 || j1 < 0 || i1 >= n || j1 >= n || phase[j1 * n + i1] === Infinity) continue;
-          const near = phase[j1 * n + i1];
-          const i2 = i1 + di;
-          const j2 = j1 + dj;
-          const far = i2 >= 0 && j2 >= 0 && i2 < n && j2 < n ? phase[j2 * n + i2] : Infinity;
-          sum += far === Infinity ? near : 2 * near - far;
-          count++;
-        }
-        if (count > 0) next[t] = sum / count;
-        else pending = true;
+  let pending: number[] = [];
+  for (let t = 0; t < n * n; t++) if (phase[t] === Infinity) pending.push(t);
+  const carried = (i: number, j: number, di: number, dj: number): number => {
+    const i1 = i + di;
+    const j1 = j + dj;
+    if (i1 < 0 || j1 < 0 || i1 >= n || j1 >= n) return Infinity;
+    const near = phase[j1 * n + i1];
+    const i2 = i1 + di;
+    const j2 = j1 + dj;
+    const far = near !== Infinity && i2 >= 0 && j2 >= 0 && i2 < n && j2 < n ? phase[j2 * n + i2] : Infinity;
+    return far === Infinity ? near : 2 * near - far;
+  };
+  while (pending.length > 0) {
+    const ring: [number, number][] = [];
+    const rest: number[] = [];
+    for (const t of pending) {
+      const i = t % n;
+      const j = (t - i) / n;
+      let sum = 0;
+      let count = 0;
+      for (const value of [carried(i, j, 1, 0), carried(i, j, -1, 0), carried(i, j, 0, 1), carried(i, j, 0, -1)]) {
+        if (value === Infinity) continue;
+        sum += value;
+        count++;
       }
+      if (count > 0) ring.push([t, sum / count]);
+      else rest.push(t);
     }
-    phase.set(next);
+    if (ring.length === 0) break;
+    for (const [t, value] of ring) phase[t] = value;
+    pending = rest;
   }
 }
 
@@ -171,7 +173,7 @@ function fillLand(n: number, phase: Float64Array): void {
  * summed path length in a texel over its area is 1 / b, the ray density. Rays follow
  *   dx/ds = (cos θ, sin θ),  dθ/ds = ∇(ln k) · (−sin θ, cos θ),
  * turning towards larger k (shallower water), and stop at the shoreline, where they break.
- * Path length is splatted bilinearly, and the density is smoothed once (a 3×3 binomial filter).
+ * Path length is splatted bilinearly, and the density is smoothed (SMOOTHING_PASSES binomial passes).
  */
 function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64Array, direction: [number, number]): Float64Array {
   // Per texel, interleaved so one bilinear look-up reads all three: depth, and ∇ ln k by central differences.
@@ -223,6 +225,9 @@ function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64A
         entered = true;
         look(u, v);
         if (local[0] < SHALLOWEST_DEPTH) break;
+        // A ray that has turned back (trapped on the shelf, circling the island) runs against the drawn
+        // wave train, whose phase is the first arrival: its energy is not part of that train.
+        if (Math.cos(theta - theta0) < 0) break;
         splat(pathLength, n, u, v, step);
       }
       if (!inside) look(u, v);
@@ -234,10 +239,19 @@ function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64A
       v += stepTexels * Math.sin(thetaMid);
     }
   }
-  const density = new Float64Array(n * n);
-  const area = spacing * spacing;
+  // Path length per area times the rays' spacing is b0 / b. Then smoothing: the rays sample the
+  // tube unevenly (their spacing drifts against the texels'), which a few binomial passes even out.
+  let density: Float64Array = pathLength.map((length) => (length * rayGap) / (spacing * spacing));
+  for (let pass = 0; pass < SMOOTHING_PASSES; pass++) density = smoothOverWater(n, density, depth);
+  return density;
+}
+
+/** One pass of a 3×3 binomial filter over the water's texels (land neither gives nor takes). */
+function smoothOverWater(n: number, values: Float64Array, depth: Float64Array): Float64Array {
+  const out = new Float64Array(n * n);
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
+      if (depth[j * n + i] <= 0) continue;
       let sum = 0;
       let weight = 0;
       for (let dj = -1; dj <= 1; dj++) {
@@ -246,14 +260,14 @@ function rayDensity(n: number, spacing: number, depth: Float64Array, k: Float64A
           const jj = j + dj;
           if (ii < 0 || jj < 0 || ii >= n || jj >= n || depth[jj * n + ii] <= 0) continue;
           const w = (2 - Math.abs(di)) * (2 - Math.abs(dj));
-          sum += w * pathLength[jj * n + ii];
+          sum += w * values[jj * n + ii];
           weight += w;
         }
       }
-      density[j * n + i] = weight > 0 ? ((sum / weight) * rayGap) / area : 0;
+      out[j * n + i] = sum / weight;
     }
   }
-  return density;
+  return out;
 }
 
 /** Adds `length` of ray path at texel coordinates (u, v), shared bilinearly among the four nearest texels inside the grid. */
