@@ -46,8 +46,8 @@ export const coastTexts: Record<string, LessonText> = {
         es: 'La isla tapa el mar abierto al agua que queda detrás. ¿Estará en calma esa agua, a sotavento de la isla?',
       },
       answer: {
-        en: 'No: the crests turn towards the shallows all round the island and wrap round both sides, meeting behind it. The code keeps the earlier of the two trains there, so the crests meet in a kink rather than crossing. Look at the lee from above: the swell is lower there, not gone.',
-        es: 'No: las crestas giran hacia el agua somera alrededor de toda la isla y la rodean por ambos lados, hasta encontrarse detrás. El código se queda allí con el primero de los dos trenes, así que las crestas se juntan en un pico en vez de cruzarse. Mira el sotavento desde arriba: el oleaje es más bajo, no desaparece.',
+        en: 'No: the crests turn towards the shallows all round the island and wrap round both sides, meeting behind it, where the code keeps the earlier of the two trains, so they meet in a kink rather than crossing. Only a strip just behind the island stays nearly calm: 300 m behind its shore the swell is back above 1 m. Look at the lee from above.',
+        es: 'No: las crestas giran hacia el agua somera alrededor de toda la isla y la rodean por ambos lados hasta encontrarse detrás, donde el código se queda con el primero de los dos trenes, así que se juntan en un pico en vez de cruzarse. Solo una franja justo detrás de la isla queda casi en calma: a 300 m de su orilla el oleaje vuelve a superar 1 m. Mira el sotavento desde arriba.',
       },
     },
     choice: {
