@@ -137,7 +137,7 @@ describe('the course page (dist/course/)', () => {
       figureLanguages: new Set(Array.from(document.querySelectorAll('oceano-view'), (v) => v.getAttribute('lang'))).size,
       englishShown: Array.from(document.querySelectorAll('.en')).some((e) => (e as HTMLElement).offsetParent !== null),
     }));
-    expect(outline.figures).toBe(21);
+    expect(outline.figures).toBe(23);
     expect(outline.sections.slice(0, 10)).toEqual([
       'Superficie del agua',
       'Movimiento',
@@ -258,7 +258,7 @@ describe('the course page (dist/course/)', () => {
     expect(text).toMatch(/^La página del curso/);
     expect(href).toBe(`${harness.baseUrl}course/index.html?lang=es`);
     await Promise.all([page.waitForNavigation(), link!.click()]);
-    expect(await page.evaluate(() => document.querySelectorAll('oceano-view').length)).toBe(21);
+    expect(await page.evaluate(() => document.querySelectorAll('oceano-view').length)).toBe(23);
     expect(consoleErrors).toEqual([]);
     await page.close();
   });

@@ -21,11 +21,23 @@ export const firstSurname = (reference: Reference): string =>
 
 export const BIBLIOGRAPHY = {
   airy1845: { authors: 'G. B. Airy', year: 1845, title: 'Tides and waves', where: 'Encyclopaedia Metropolitana, vol. 5, 241–396' },
+  arthurMunkIsaacs1952: {
+    authors: 'R. S. Arthur, W. H. Munk, J. D. Isaacs',
+    year: 1952,
+    title: 'The direct construction of wave rays',
+    where: 'Transactions, American Geophysical Union 33(6), 855–865',
+  },
   assarssonMoller2000: {
     authors: 'U. Assarsson, T. Möller',
     year: 2000,
     title: 'Optimized view frustum culling algorithms for bounding boxes',
     where: 'Journal of Graphics Tools 5(1), 9–22',
+  },
+  battjesJanssen1978: {
+    authors: 'J. A. Battjes, J. P. F. M. Janssen',
+    year: 1978,
+    title: 'Energy loss and set-up due to breaking of random waves',
+    where: 'Proceedings of the 16th International Conference on Coastal Engineering (ASCE), 569–587',
   },
   blinnNewell1976: {
     authors: 'J. F. Blinn, M. E. Newell',
@@ -179,6 +191,12 @@ export const BIBLIOGRAPHY = {
     title: 'Geometry clipmaps: terrain rendering using nested regular grids',
     where: 'ACM Transactions on Graphics 23(3), 769–776 (SIGGRAPH 2004)',
   },
+  mcCowan1894: {
+    authors: 'J. McCowan',
+    year: 1894,
+    title: 'On the highest wave of permanent type',
+    where: 'Philosophical Magazine, series 5, 38(233), 351–358',
+  },
   mitsuyasu1975: {
     authors: 'H. Mitsuyasu et al.',
     year: 1975,
@@ -270,6 +288,12 @@ export const BIBLIOGRAPHY = {
     title: 'Interactive water surfaces',
     where: 'Game Programming Gems 4, ed. A. Kirmse, Charles River Media, 265–274',
   },
+  thorntonGuza1983: {
+    authors: 'E. B. Thornton, R. T. Guza',
+    year: 1983,
+    title: 'Transformation of wave height distribution',
+    where: 'Journal of Geophysical Research 88(C10), 5925–5938',
+  },
   walter2007: {
     authors: 'B. Walter, S. R. Marschner, H. Li, K. E. Torrance',
     year: 2007,
@@ -288,6 +312,12 @@ export const BIBLIOGRAPHY = {
     title:
       'The use of fast Fourier transform for the estimation of power spectra: a method based on time averaging over short, modified periodograms',
     where: 'IEEE Transactions on Audio and Electroacoustics 15(2), 70–73',
+  },
+  zhao2005: {
+    authors: 'H. Zhao',
+    year: 2005,
+    title: 'A fast sweeping method for Eikonal equations',
+    where: 'Mathematics of Computation 74(250), 603–627',
   },
 } satisfies Record<string, Reference>;
 

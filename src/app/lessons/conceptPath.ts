@@ -2,7 +2,7 @@ import type { Language } from '../language/i18n';
 
 /**
  * The course in the ideas' order, beside the report's: linear waves, then dispersion and group
- * velocity, Gerstner's waves, spectra, the FFT, filtering with distance, and light. Each stage
+ * velocity, Gerstner's waves, spectra, the FFT, filtering with distance, light, and the coast. Each stage
  * lists lessons of the catalogue (lessonCatalog.ts) by id; a lesson that teaches none of these
  * ideas (the seed's noise, the boat, culling) is left to the report's order.
  */
@@ -39,6 +39,10 @@ export const CONCEPT_STAGES: readonly ConceptStage[] = [
       'caustics',
       'god-rays',
     ],
+  },
+  {
+    name: { en: 'The coast', es: 'La costa' },
+    lessons: ['coast-dispersion', 'coast-refraction', 'coast-shoaling', 'coast-breaking'],
   },
 ];
 

@@ -367,6 +367,48 @@ export const GLOSSARY = {
       es: 'Un desenfoque que sustituye cada píxel por una media de sus vecinos ponderada por una gaussiana de su distancia.',
     },
   },
+  groupVelocity: {
+    words: { en: ['group velocity'], es: ['velocidad de grupo'] },
+    definition: {
+      en: 'The speed c_g = dω/dk at which a group of waves, and the energy it carries, travels: c/2 in deep water, c in shallow water.',
+      es: 'La velocidad c_g = dω/dk a la que viaja un grupo de olas, y la energía que lleva: c/2 en aguas profundas, c en aguas someras.',
+    },
+  },
+  refraction: {
+    words: { en: ['refraction'], es: ['refracción'] },
+    definition: {
+      en: 'The turning of a wave where its speed changes across its front: light entering water, or sea waves turning towards shallower water.',
+      es: 'El giro de una onda donde su velocidad cambia a lo largo de su frente: la luz que entra en el agua, o las olas que giran hacia el agua más somera.',
+    },
+  },
+  depthContour: {
+    words: { en: ['depth contours', 'depth contour'], es: ['isóbatas', 'isóbata'] },
+    definition: {
+      en: 'A line on the sea floor joining points of equal depth; on the beach they run straight along the shore, round the island they are circles.',
+      es: 'Una línea del fondo que une puntos de igual profundidad; en la playa corren rectas a lo largo de la costa, alrededor de la isla son círculos.',
+    },
+  },
+  shoaling: {
+    words: { en: ['shoaling'], es: ['asomeramiento'] },
+    definition: {
+      en: 'The change of a wave’s height as it runs into shallower water and its group velocity changes, its energy flux kept: H/H₀ = √(c_g0/c_g).',
+      es: 'El cambio de altura de una ola al entrar en agua más somera y cambiar su velocidad de grupo, conservando su flujo de energía: H/H₀ = √(c_g0/c_g).',
+    },
+  },
+  breakerIndex: {
+    words: { en: ['breaker index'], es: ['índice de rotura'] },
+    definition: {
+      en: 'The ratio γ = H/h of a breaking wave’s height to the depth; McCowan’s solitary wave gives 0.78, real beaches 0.5 to 1.',
+      es: 'El cociente γ = H/h entre la altura de una ola que rompe y la profundidad; la onda solitaria de McCowan da 0,78, las playas reales de 0,5 a 1.',
+    },
+  },
+  surfZone: {
+    words: { en: ['surf zone'], es: ['zona de rompientes'] },
+    definition: {
+      en: 'The strip between the breaking line and the shore where the waves are breaking, their height limited by the depth and their crests white with foam.',
+      es: 'La franja entre la línea de rotura y la orilla donde las olas rompen, con su altura limitada por la profundidad y sus crestas blancas de espuma.',
+    },
+  },
 } satisfies Record<string, GlossaryTerm>;
 
 export type GlossaryKey = keyof typeof GLOSSARY;

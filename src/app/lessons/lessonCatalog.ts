@@ -105,6 +105,12 @@ export const LESSONS: readonly Lesson[] = [
   { id: 'slope-filtering', preset: 'fresh-breeze', params: { sunElevation: 5 } },
   { id: 'light-units', preset: 'calm', params: { sunElevation: 10 } },
   { id: 'water-colour', preset: 'fresh-breeze' },
+  // The coast (src/sim/coast/): the swell alone where its crests are to be seen, the wind sea on for the surf;
+  // from the dune looking out to sea, the sun behind, so no glitter hides the crests.
+  { id: 'coast-dispersion', preset: 'beach', params: { windSea: false }, camera: { position: [480, 70, 60], target: [200, 0, -20] } },
+  { id: 'coast-refraction', preset: 'island', params: { windSea: false } },
+  { id: 'coast-shoaling', preset: 'beach', params: { windSea: false } },
+  { id: 'coast-breaking', preset: 'beach', camera: { position: [560, 150, 200], target: [250, 0, -40] } },
 ];
 
 export const lessonIds = LESSONS.map((lesson) => lesson.id);

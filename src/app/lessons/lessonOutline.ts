@@ -25,6 +25,7 @@ export const LESSON_SECTIONS = [
   'spectra',
   'filtering',
   'light',
+  'coast',
 ] as const;
 export type LessonSection = (typeof LESSON_SECTIONS)[number];
 
@@ -54,6 +55,7 @@ export const SECTION_NAMES: Record<LessonSection, Record<Language, string> & { b
   spectra: { en: 'Ideas: spectra and the FFT', es: 'Ideas: espectros y la FFT', beyondSeed: true },
   filtering: { en: 'Ideas: filtering with distance', es: 'Ideas: el filtrado con la distancia', beyondSeed: true },
   light: { en: 'Ideas: light’s units and the water’s colour', es: 'Ideas: las unidades de la luz y el color del agua', beyondSeed: true },
+  coast: { en: 'The coast: waves that feel the bottom', es: 'La costa: olas que sienten el fondo', beyondSeed: true },
 };
 
 /** Where each lesson sits in the course, the one to five parameters its card offers, and its legend. */
@@ -105,6 +107,10 @@ export const LESSON_OUTLINE: Record<string, { section: LessonSection; controls: 
   'slope-filtering': { section: 'filtering', controls: ['seaRoughness', 'skyBlur', 'sunElevation', 'windSpeed'] },
   'light-units': { section: 'light', controls: ['exposure', 'sunElevation'] },
   'water-colour': { section: 'light', controls: ['subsurface', 'sunAzimuth', 'waterColorPicked'] },
+  'coast-dispersion': { section: 'coast', controls: ['swellPeriod', 'beachSlope', 'windSea', 'bathymetry'] },
+  'coast-refraction': { section: 'coast', controls: ['swellDirection', 'swellPeriod', 'beachSlope', 'bathymetry'] },
+  'coast-shoaling': { section: 'coast', controls: ['swellHeight', 'swellPeriod', 'swellDirection', 'windSea'] },
+  'coast-breaking': { section: 'coast', controls: ['swellHeight', 'swellPeriod', 'beachSlope', 'windSea'] },
 };
 
 /** A lesson with where it sits in the course, its controls and its legend. */
@@ -169,6 +175,10 @@ export const LESSON_TITLES: Record<string, Record<Language, string>> = {
     es: 'Las unidades de la luz: radiancia HDR, curva de tono, sRGB',
   },
   'water-colour': { en: 'The water’s colour and the crests’ glow', es: 'El color del agua y el brillo de las crestas' },
+  'coast-dispersion': { en: 'Shallow water: the waves shorten and slow', es: 'Aguas someras: las olas se acortan y frenan' },
+  'coast-refraction': { en: 'Refraction: the crests turn to the shore', es: 'Refracción: las crestas giran hacia la costa' },
+  'coast-shoaling': { en: 'Shoaling: the energy flux kept', es: 'Asomeramiento: el flujo de energía se conserva' },
+  'coast-breaking': { en: 'Breaking: the surf zone', es: 'La rotura: la zona de rompientes' },
 };
 
 /** The lessons whose card has a measurement exercise (src/sim/teaching/measurementExercises.ts; a unit test keeps the two alike). */

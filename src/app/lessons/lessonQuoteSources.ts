@@ -129,4 +129,20 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
     from: '// h₀(k) e^{iφ} + conj(h₀(−k)) e^{−iφ}; ω(−k) = ω(k).',
     to: 'const hi = ar * s',
   },
+  'coast-dispersion': { file: 'src/sim/waves/dispersion.ts', from: 'export function waveNumber(', to: 'return k;' },
+  'coast-refraction': {
+    file: 'src/sim/coast/islandSwellField.ts',
+    from: 'const a = Math.min(i > 0 ? phase[t - 1]',
+    to: 'else next = 0.5 * (a + b + Math.sqrt(',
+  },
+  'coast-shoaling': {
+    file: 'src/sim/coast/beachSwellField.ts',
+    from: 'const k = fieldWaveNumber(model, omega, d);',
+    to: 'amplitude[i] = 0.5 * Math.min(shoaled',
+  },
+  'coast-breaking': {
+    file: 'src/sim/coast/waveTransformation.ts',
+    from: 'export function breakingFraction(',
+    to: 'return t * t * (3 - 2 * t);',
+  },
 };

@@ -4,6 +4,7 @@ import { lightTexts } from './texts/lightTexts';
 import { spectralSeaTexts } from './texts/spectralSeaTexts';
 import { beyondTexts } from './texts/beyondTexts';
 import { ideasTexts } from './texts/ideasTexts';
+import { coastTexts } from './texts/coastTexts';
 
 export type { LessonText };
 
@@ -19,4 +20,5 @@ export const LESSON_TEXTS: Record<string, LessonText> = {
   ...spectralSeaTexts,
   ...beyondTexts,
   ...ideasTexts,
+  ...coastTexts,
 };

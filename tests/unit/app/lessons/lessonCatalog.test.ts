@@ -16,8 +16,8 @@ import { unreadParams } from '../../../../src/app/panel/unreadParams';
 import { formatUrlState, parseUrlState } from '../../../../src/app/url/urlState';
 import { CONCEPT_PATH, CONCEPT_STAGES } from '../../../../src/app/lessons/conceptPath';
 
-/** The concept lessons' sections, after the models' (lessonOutline.ts). */
-const CONCEPT_SECTIONS: LessonSection[] = ['linearWaves', 'spectra', 'filtering', 'light'];
+/** The concept lessons' sections, after the models' (lessonOutline.ts), the coast last. */
+const CONCEPT_SECTIONS: LessonSection[] = ['linearWaves', 'spectra', 'filtering', 'light', 'coast'];
 const words = (text: string) => text.trim().split(/\s+/).length;
 /** The presets no lesson opens. */
 const presetsWithoutLesson = (lessons: readonly { preset?: string }[]) =>
