@@ -64,8 +64,8 @@ export interface OceanoApi {
   lessons(): { id: string; title: string; section: string; question: boolean; exercise: boolean }[];
   /** The open lesson's id, or null. */
   lesson(): string | null;
-  /** Opens a lesson: its view and its card. An unknown id shows a notice, changes nothing and answers false. */
-  setLesson(id: string): boolean;
+  /** Opens a lesson: its view and its card; resolves true. An unknown id shows a notice, changes nothing and resolves false. After `ready` the view has changed when this returns. */
+  setLesson(id: string): Promise<boolean>;
   /** The link that reopens this view exactly (what the share button copies). */
   shareUrl(): string;
   /** Whether the frame loop runs (it stops off screen and in hidden tabs) and frames drawn so far. */
@@ -214,7 +214,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     notices: fail,
     lessons: fail,
     lesson: fail,
-    setLesson: fail,
+    setLesson: failed,
     shareUrl: fail,
     activity: fail,
     physics: () => Promise.reject(reason),
