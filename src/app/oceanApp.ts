@@ -432,7 +432,7 @@ export class OceanApp {
   stats = (): OceanStats => this.frameStats.summary(this.view.stats(), this.view.waves.twinStatus?.() ?? null);
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */
   debugView = (): OceanView => this.view;
-  physicsPanel = () => this.controls?.physics;
+  physicsPanel = () => this.controls?.physics();
 
   /** Frees every GPU resource and gives the WebGL context back to the browser (which allows only a few at once). */
   dispose(): void {

@@ -157,7 +157,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     probe: (...place) => app.loadSeaTools().then((tools) => tools.probeCall(place)),
     boat: () => app.boat(),
     stats: () => app.stats(),
-    physics: async () => started(app.physicsPanel()).measure(),
+    physics: async () => (await started(app.physicsPanel())).measure(),
     notices: () => app.notices.messages(),
     lessons: () => app.lessonList(),
     lesson: () => app.lesson(),
@@ -167,7 +167,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     debug: {
       ...lazyDebugTools(app),
       physicsRuns: async () => {
-        const panel = started(app.physicsPanel());
+        const panel = await started(app.physicsPanel());
         await panel.settled();
         return panel.runs;
       },
