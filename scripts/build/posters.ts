@@ -19,7 +19,7 @@ import { BROWSER_ARGS } from '../../tests/browser/harness';
 import { locateBrowser } from '../../tests/browser/findBrowser.mjs';
 import { serveFolder } from '../../tests/browser/staticServer';
 import { presetNames } from '../../src/app/url/presets';
-import { lessonIds } from '../../src/app/lessons/lessonCatalog';
+import * as lessons from '../../src/app/lessons/lessonCatalog';
 import { parseSettings, type UrlState } from '../../src/app/url/urlState';
 
 export const POSTER_SIZE = { width: 320, height: 180 };
@@ -41,7 +41,7 @@ export interface PosterJob {
 export function posterJobs(): PosterJob[] {
   const byView = new Map<string, PosterJob>();
   const add = (attribute: PosterJob['attribute'], value: string, file: string) => {
-    const { params, camera, cullingCamera } = parseSettings([[attribute, value]]);
+    const { params, camera, cullingCamera } = parseSettings([[attribute, value]], lessons);
     const view = { params, camera, cullingCamera };
     const key = JSON.stringify(view);
     const job = byView.get(key);
@@ -49,7 +49,7 @@ export function posterJobs(): PosterJob[] {
     else byView.set(key, { attribute, value, view, files: [file] });
   };
   for (const name of presetNames) add('preset', name, `posters/presets/${name}.webp`);
-  for (const id of lessonIds) add('lesson', id, `posters/lessons/${id}.webp`);
+  for (const id of lessons.lessonIds) add('lesson', id, `posters/lessons/${id}.webp`);
   return [...byView.values()];
 }
 

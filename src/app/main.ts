@@ -9,12 +9,12 @@ import { createAutomationApi, createFailedApi } from './api/automationApi';
 import { hasWebGL2, prefersReducedMotion, showFatal, startApp, watchActivity } from './boot/bootSupport';
 import { preferredLanguage, Translator } from './language/i18n';
 import { parseUrlState } from './url/urlState';
+import { loadLessonCatalog, type LessonCatalog } from './lessons/lessonCatalogLoader';
 
 /** The page bootstrap: reads the URL and the browser's preferences and hands them to one OceanApp. */
-function boot(): void {
-  performance.mark('oceano:script');
+function boot(lessons: LessonCatalog | null): void {
   const container = document.getElementById('oceano-page') as HTMLElement;
-  const state = parseUrlState(window.location.search);
+  const state = parseUrlState(window.location.search, lessons);
   const language = state.language ?? preferredLanguage(navigator.languages);
   const tr = new Translator(language);
   document.documentElement.lang = language;
@@ -40,10 +40,22 @@ function boot(): void {
   window.oceano = createAutomationApi(app, ready);
 }
 
-try {
-  boot();
-} catch (error) {
-  // Whatever stopped the boot, `oceano.ready` says it rather than never settling.
-  window.oceano = createFailedApi(error instanceof Error ? error : new Error(String(error)));
-  throw error;
+function bootOrFail(lessons: LessonCatalog | null): void {
+  try {
+    boot(lessons);
+  } catch (error) {
+    // Whatever stopped the boot, `oceano.ready` says it rather than never settling.
+    window.oceano = createFailedApi(error instanceof Error ? error : new Error(String(error)));
+    throw error;
+  }
+}
+
+performance.mark('oceano:script');
+// Only a page that names a lesson waits for the lessons' catalog before it reads its URL.
+if (new URLSearchParams(window.location.search).has('lesson')) {
+  loadLessonCatalog().then(bootOrFail, (error: unknown) => {
+    window.oceano = createFailedApi(error instanceof Error ? error : new Error(String(error)));
+  });
+} else {
+  bootOrFail(null);
 }

@@ -21,7 +21,7 @@ import { ContextWatch } from './boot/contextLoss';
 import { AppControls } from './panel/appControls';
 import { loadWaveModels, modelsDrawn, modelsMissing } from '../render/waves/waveViewRegistry';
 import { COMPARE_OFF } from '../sim/compare/compareLayout';
-import { findLesson, lessonIds, lessonView } from './lessons/lessonCatalog';
+import { loadLessonCatalog, loadedLessonCatalog, type LessonCatalog } from './lessons/lessonCatalogLoader';
 import { LessonHost } from './lessons/lessonHost';
 import { FREE_AREA_EVENT } from './layout/freeAreaEvent';
 import type { Rect } from '../sim/layout/rect';
@@ -197,6 +197,7 @@ export class OceanApp {
       this.controls.loadPanel(),
       this.controls.whenPartsLoaded(),
       this.lessons.load(),
+      loadLessonCatalog(),
       this.orbit.loaded,
       state.probe !== null && this.loadSeaTools(),
     ]);
@@ -329,8 +330,16 @@ export class OceanApp {
   /**
    * Opens a lesson: its view as a preset sets it (the defaults, its parameters, its camera;
    * the clock runs on), then its card. An unknown id changes nothing and says so in a notice.
+   * Resolves true once open; the catalog is loaded by `ready`, and from then on the view
+   * changes before this returns, so values set right after it override the lesson's.
    */
-  openLesson(id: string): boolean {
+  openLesson(id: string): Promise<boolean> {
+    const catalog = loadedLessonCatalog();
+    if (catalog) return Promise.resolve(this.openFromCatalog(catalog, id));
+    return loadLessonCatalog().then((loaded) => this.openFromCatalog(loaded, id));
+  }
+
+  private openFromCatalog({ findLesson, lessonIds, lessonView }: LessonCatalog, id: string): boolean {
     const lesson = typeof id === 'string' ? findLesson(id) : null;
     if (!lesson) {
       this.notify(message('lessonUnknown', { name: String(id), known: lessonIds.join(', ') }));
@@ -423,7 +432,7 @@ export class OceanApp {
   stats = (): OceanStats => this.frameStats.summary(this.view.stats(), this.view.waves.twinStatus?.() ?? null);
   /** The renderer side, for the API's debug calls (tables, pass timings, LOD timing, three's objects), and the physics panel. */
   debugView = (): OceanView => this.view;
-  physicsPanel = () => this.controls?.physics;
+  physicsPanel = () => this.controls?.physics();
 
   /** Frees every GPU resource and gives the WebGL context back to the browser (which allows only a few at once). */
   dispose(): void {

@@ -1,3 +1,4 @@
+import * as lessons from '../app/lessons/lessonCatalog';
 import { findLesson, lessonView } from '../app/lessons/lessonCatalog';
 import { parseSettings } from '../app/url/urlState';
 import { paramKeys } from '../sim/params/params';
@@ -63,7 +64,7 @@ export function shownLessonFaults(shown: ShownLesson, card: CardSource): string[
   if (shown.code !== card.code(lesson.id)) faults.push(`${lesson.id}: the quoted code is not the lesson's`);
   if (JSON.stringify(shown.references) !== JSON.stringify(card.references(lesson.id))) faults.push(`${lesson.id}: the caption's references are not the card's`);
   if (shown.attributes) {
-    const state = parseSettings(shown.attributes.map(([name, value]): [string, string] => [PARAM_BY_LOWERCASE.get(name.toLowerCase()) ?? name, value]));
+    const state = parseSettings(shown.attributes.map(([name, value]): [string, string] => [PARAM_BY_LOWERCASE.get(name.toLowerCase()) ?? name, value]), lessons);
     const view = lessonView(lesson);
     if (JSON.stringify(state.params) !== JSON.stringify(view.params)) faults.push(`${lesson.id}: the figure's parameters are not the lesson's`);
     if (JSON.stringify(state.camera) !== JSON.stringify(view.camera)) faults.push(`${lesson.id}: the figure's camera is not the lesson's`);

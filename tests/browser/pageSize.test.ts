@@ -46,11 +46,17 @@ describe('packaging', () => {
       'physicsReport',
       'surfaceProbe',
       'prefilteredSky',
+      'physicsPanel',
     ]) {
       const chunk = scripts.find((file) => file.startsWith(`assets/${lazy}-`));
       expect(chunk, lazy).toBeDefined();
       expect(loaded.has(chunk!), lazy).toBe(false);
     }
+    // The lessons' catalog: fetched by a page when its URL names a lesson, or with the drawer; the element carries it.
+    const catalog = scripts.find((file) => file.startsWith('assets/lessonCatalog-'));
+    expect(catalog).toBeDefined();
+    expect(sizes.pageFiles).not.toContain(catalog);
+    expect(staticImports(dist, 'oceano.js').has(catalog!)).toBe(true);
     // three.js's core alone is 142 KB gzipped; `npm run bench` reports the page's sizes as they are.
     // The bounds keep a first visit fast: 200 KB gzipped before the first frame, and under 20 KB
     // more for a page that embeds <oceano-view>.

@@ -64,8 +64,8 @@ export interface OceanoApi {
   lessons(): { id: string; title: string; section: string; question: boolean; exercise: boolean }[];
   /** The open lesson's id, or null. */
   lesson(): string | null;
-  /** Opens a lesson: its view and its card. An unknown id shows a notice, changes nothing and answers false. */
-  setLesson(id: string): boolean;
+  /** Opens a lesson: its view and its card; resolves true. An unknown id shows a notice, changes nothing and resolves false. After `ready` the view has changed when this returns. */
+  setLesson(id: string): Promise<boolean>;
   /** The link that reopens this view exactly (what the share button copies). */
   shareUrl(): string;
   /** Whether the frame loop runs (it stops off screen and in hidden tabs) and frames drawn so far. */
@@ -157,7 +157,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     probe: (...place) => app.loadSeaTools().then((tools) => tools.probeCall(place)),
     boat: () => app.boat(),
     stats: () => app.stats(),
-    physics: async () => started(app.physicsPanel()).measure(),
+    physics: async () => (await started(app.physicsPanel())).measure(),
     notices: () => app.notices.messages(),
     lessons: () => app.lessonList(),
     lesson: () => app.lesson(),
@@ -167,7 +167,7 @@ export function createAutomationApi(app: OceanApp, ready: Promise<void>): Oceano
     debug: {
       ...lazyDebugTools(app),
       physicsRuns: async () => {
-        const panel = started(app.physicsPanel());
+        const panel = await started(app.physicsPanel());
         await panel.settled();
         return panel.runs;
       },
@@ -214,7 +214,7 @@ export function createFailedApi(reason: Error): OceanoApi {
     notices: fail,
     lessons: fail,
     lesson: fail,
-    setLesson: fail,
+    setLesson: failed,
     shareUrl: fail,
     activity: fail,
     physics: () => Promise.reject(reason),

@@ -6,6 +6,8 @@ import { canvasLabel, preferredLanguage, Translator } from '../language/i18n';
 import { DEFAULT_BOAT_MODEL, OceanApp } from '../oceanApp';
 import { DEFAULT_CAMERA } from '../camera/cameraPose';
 import { PAGE_KEYS, parseSettings, type UrlState } from '../url/urlState';
+// A figure's `lesson` attribute is read as it starts: the element's script carries the catalog.
+import * as lessons from '../lessons/lessonCatalog';
 import { readStartupOptions, STARTUP_ATTRIBUTES, type StartupOptions } from './startupOptions';
 import { FigureCover } from './figureCover';
 import { gateTouchOrbit } from './touchOrbitGate';
@@ -110,7 +112,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
 
   connectedCallback(): void {
     if (this.phase !== 'detached') return;
-    const state = parseSettings(this.settings());
+    const state = parseSettings(this.settings(), lessons);
     const { options, notices } = readStartupOptions(this);
     this.startup = options;
     this.startupNotices = notices;
@@ -206,7 +208,7 @@ export class OceanoViewElement extends HTMLElement implements BudgetedFigure {
 
   private start(): void {
     const saved = this.saved;
-    const state = parseSettings(saved ? [...new URLSearchParams(saved.query), ...this.pendingChanges] : this.settings());
+    const state = parseSettings(saved ? [...new URLSearchParams(saved.query), ...this.pendingChanges] : this.settings(), lessons);
     const firstStart = saved === null;
     this.pendingChanges = [];
     this.phase = 'starting';

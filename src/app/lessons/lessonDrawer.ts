@@ -220,7 +220,9 @@ export class LessonDrawer {
   }
 
   private open(id: string): void {
-    if (this.hooks.openLesson(id)) this.card.querySelector<HTMLElement>('.oceano-lesson-title')?.focus({ preventScroll: true });
+    void this.hooks.openLesson(id).then((opened) => {
+      if (opened) this.card.querySelector<HTMLElement>('.oceano-lesson-title')?.focus({ preventScroll: true });
+    });
   }
 
   /**
@@ -232,7 +234,7 @@ export class LessonDrawer {
     const at = this.current ? ids.indexOf(this.current.id) : -1;
     const index = at >= 0 ? at : direction === 1 ? -1 : ids.length;
     const next = ids[index + direction];
-    if (next) this.hooks.openLesson(next);
+    if (next) void this.hooks.openLesson(next);
   }
 
   private showList(): void {

@@ -5,7 +5,8 @@ import type { BoatInfo } from '../boat/boatController';
 
 /** What the drawer asks of the app: open a lesson, change a parameter, place its labels on the sea. */
 export interface LessonHooks {
-  openLesson(id: string): boolean;
+  /** Resolves false, with a notice, for an unknown id. */
+  openLesson(id: string): Promise<boolean>;
   onParam(key: ParamKey, value: OceanParams[ParamKey]): void;
   /** Opens the control panel's folders that hold `keys` (the lesson's controls) and folds the rest. */
   openFolders(keys: readonly ParamKey[]): void;

@@ -5,7 +5,7 @@ import type { CameraPose } from '../camera/cameraPose';
 import type { ControlPanel, ControlPanelHooks, LiveCounts } from './controlPanel';
 import type { FresnelPlot } from '../physics/fresnelPlot';
 import type { Translator } from '../language/i18n';
-import { PhysicsPanel, type PhysicsSource } from '../physics/physicsPanel';
+import type { PhysicsPanel, PhysicsSource } from '../physics/physicsPanel';
 import type { CompareDividers } from '../compare/compareDividers';
 import { COMPARE_OFF } from '../../sim/compare/compareLayout';
 
@@ -39,7 +39,9 @@ export class AppControls {
   private readonly tr: Translator;
   private fresnelPlot?: FresnelPlot;
   private fresnelPlotLoad?: Promise<void>;
-  readonly physics: PhysicsPanel;
+  /** Fetched the first time physics=1 or a measurement asks for it: physics is off by default. */
+  private physicsPanel?: PhysicsPanel;
+  private physicsLoad?: Promise<PhysicsPanel>;
   private dividers?: CompareDividers;
   private dividersLoad?: Promise<void>;
 
@@ -71,7 +73,6 @@ export class AppControls {
       (pose) => app.setCamera(pose),
     );
     this.tr = state.tr;
-    this.physics = new PhysicsPanel(container, state.physics);
     this.sync(state.params, state.playing);
   }
 
@@ -145,11 +146,23 @@ export class AppControls {
     this.steering.apply(seconds);
   }
 
+  /** The physics panel, its code fetched on the first call; it then follows the last sync's parameters. */
+  physics(): Promise<PhysicsPanel> {
+    this.physicsLoad ??= import('../physics/physicsPanel').then(({ PhysicsPanel }) => {
+      const panel = new PhysicsPanel(this.container, this.state.physics);
+      if (this.disposed) panel.dispose();
+      else panel.sync(this.shown.params);
+      return (this.physicsPanel = panel);
+    });
+    return this.physicsLoad;
+  }
+
   sync(params: OceanParams, playing: boolean): void {
     this.shown = { params, playing };
     if (params.fresnelPlot) void this.loadFresnelPlot();
     this.fresnelPlot?.setVisible(params.fresnelPlot);
-    this.physics.sync(params);
+    if (this.physicsPanel) this.physicsPanel.sync(params);
+    else if (params.physics) void this.physics();
     if (params.compare !== COMPARE_OFF) void this.loadDividers();
     this.dividers?.sync(params);
     this.panel?.sync(params, playing);
@@ -169,7 +182,7 @@ export class AppControls {
     this.cameraKeys.dispose();
     this.panel?.dispose();
     this.fresnelPlot?.dispose();
-    this.physics.dispose();
+    this.physicsPanel?.dispose();
     this.dividers?.dispose();
   }
 }

@@ -5,7 +5,7 @@ import { languageFromTag, type Language } from '../language/i18n';
 import { isValidTime } from '../../sim/params/simulationTime';
 import { BOAT_EXTENT, type BoatSnapshot } from '../../sim/boat/boatMotion';
 import { findPreset, presetNames } from './presets';
-import { findLesson, lessonIds, lessonView } from '../lessons/lessonCatalog';
+import type { LessonCatalog } from '../lessons/lessonCatalogLoader';
 import { WakeTrack } from '../../sim/wake/wakeTrack';
 import { IWAVE_MAX_HEIGHT, IWAVE_MAX_RADIUS } from '../../sim/iwave/fieldSize';
 import type { Stone } from './presets';
@@ -62,15 +62,16 @@ export function isSafeAssetPath(path: string): boolean {
   return /^[A-Za-z0-9._~\-/]+$/.test(path) && !path.startsWith('//') && !path.split('/').includes('..');
 }
 
-export function parseUrlState(search: string): UrlState {
-  return parseSettings(new URLSearchParams(search));
+export function parseUrlState(search: string, lessons: LessonCatalog | null = null): UrlState {
+  return parseSettings(new URLSearchParams(search), lessons);
 }
 
 /**
  * Reads settings from name/value pairs: a URL's query or an element's attributes. A preset,
  * then a lesson, is applied first, whatever its position, so that explicit values override it.
+ * A lesson is read from `lessons`, the catalog its caller has loaded (lessonCatalogLoader.ts).
  */
-export function parseSettings(entries: Iterable<[string, string]>): UrlState {
+export function parseSettings(entries: Iterable<[string, string]>, lessons: LessonCatalog | null = null): UrlState {
   const pairs = Array.from(entries);
   const params = defaultParams();
   const notices: Message[] = [];
@@ -107,16 +108,17 @@ export function parseSettings(entries: Iterable<[string, string]>): UrlState {
 
   for (const [key, text] of pairs) {
     if (key !== 'lesson') continue;
-    const lesson = findLesson(text);
+    if (!lessons) throw new Error("A lesson is named: load the lessons' catalog (loadLessonCatalog) and pass it to parseSettings.");
+    const lesson = lessons.findLesson(text);
     if (lesson) {
-      const view = lessonView(lesson);
+      const view = lessons.lessonView(lesson);
       Object.assign(params, view.params);
       state.camera = view.camera;
       state.stones = view.stones;
       state.cullingCamera = view.cullingCamera;
       state.lesson = lesson.id;
     } else {
-      notices.push(message('lessonUnknown', { name: text, known: lessonIds.join(', ') }));
+      notices.push(message('lessonUnknown', { name: text, known: lessons.lessonIds.join(', ') }));
     }
   }
 

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { LESSONS, lessonIds, lessonView, findLesson } from '../../../../src/app/lessons/lessonCatalog';
+import * as lessons from '../../../../src/app/lessons/lessonCatalog';
 import {
   LESSON_OUTLINE,
   LESSON_SECTIONS,
@@ -97,7 +98,7 @@ describe('the lessons', () => {
   });
 
   it('?lesson= opens a lesson, explicit values override it, a share link carries it, and an unknown one is a notice', () => {
-    const state = parseUrlState('?swellAmplitude=2&lesson=swell-maximum');
+    const state = parseUrlState('?swellAmplitude=2&lesson=swell-maximum', lessons);
     expect(state.lesson).toBe('swell-maximum');
     expect(state.params.swellFrequency).toBe(0.2);
     expect(state.params.swellAmplitude).toBe(2);
@@ -112,11 +113,17 @@ describe('the lessons', () => {
       embed: false,
       lesson: 'swell-maximum',
     });
-    expect(parseUrlState(`?${query}`).lesson).toBe('swell-maximum');
-    const unknown = parseUrlState('?lesson=nope');
+    expect(parseUrlState(`?${query}`, lessons).lesson).toBe('swell-maximum');
+    const unknown = parseUrlState('?lesson=nope', lessons);
     expect(unknown.lesson).toBeNull();
     expect(unknown.params).toEqual(defaultParams());
     expect(unknown.notices.map((n) => n.id)).toEqual(['lessonUnknown']);
+  });
+
+  it('a URL without a lesson is read without the catalog; one that names a lesson needs it, never skips it', () => {
+    expect(parseUrlState('?preset=calm&swellAmplitude=2').params.swellAmplitude).toBe(2);
+    // Control: a lesson read without its catalog would be dropped unseen, so it is an error instead.
+    expect(() => parseUrlState('?lesson=swell-maximum')).toThrow(/catalog/);
   });
 });
 

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import * as lessons from '../../../../src/app/lessons/lessonCatalog';
 import { defaultParams, paramDefs, paramKeys } from '../../../../src/sim/params/params';
 import { seededRandom } from '../../../../src/sim/noise/integerHash';
 import {
@@ -184,8 +185,8 @@ describe('stones for the interactive waves (stones=)', () => {
       lesson: 'iwave-stone',
       stones: [],
     });
-    expect(parseUrlState(`?${overLesson}`).stones).toEqual([]);
-    expect(parseUrlState('?lesson=iwave-stone').stones).toEqual(PRESETS.stone.stones);
+    expect(parseUrlState(`?${overLesson}`, lessons).stones).toEqual([]);
+    expect(parseUrlState('?lesson=iwave-stone', lessons).stones).toEqual(PRESETS.stone.stones);
   });
 
   // Control: a good one passes.
