@@ -4,16 +4,13 @@
 // along a 45° diagonal; the divide by w = 0 then smeared one sky colour over whole triangles.)
 
 uniform mat4 uClipToWorldDirection;
-// The triangles' corners in clip space (src/render/sky/skyBackground.ts): the whole screen, or the part above the horizon.
-uniform vec2 uSkyCorners[9];
 varying vec3 vRay;
 varying vec2 vClip;
 
 void main() {
-  vec2 corner = uSkyCorners[gl_VertexID];
   // At the far plane (depth 1): whatever else is drawn lies in front.
-  gl_Position = vec4(corner, 1.0, 1.0);
-  vec4 far = uClipToWorldDirection * vec4(corner, 1.0, 1.0);
+  gl_Position = vec4(position.xy, 1.0, 1.0);
+  vec4 far = uClipToWorldDirection * vec4(position.xy, 1.0, 1.0);
   vRay = far.xyz;
-  vClip = corner;
+  vClip = position.xy;
 }

@@ -143,8 +143,6 @@ export class OceanEngine extends Object3D {
     this.params = full;
     this.skySource = new SkySource(sky);
     this.sky = this.skySource.background.mesh;
-    // The eye above the water and the sea drawn: every ray that points down meets the sea.
-    this.skySource.background.seaCoversBelowHorizon = () => this.visible && this.place.submersion === 'above';
     this.waitFor(this.skySource.background.ready);
     const first = firstModel(full);
     // A model whose code has not arrived yet: the seed's sea stands in, hidden, until it has.
