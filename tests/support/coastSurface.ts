@@ -1,4 +1,5 @@
-import type { CoastField } from '../../src/sim/coast/coastField';
+import type { CoastField, CoastSetting } from '../../src/sim/coast/coastField';
+import { OFFSHORE_DEPTH } from '../../src/sim/coast/bathymetry';
 import { coastSwellDisplacement, sampleCoastField } from '../../src/sim/coast/coastFieldSampling';
 
 /**
@@ -74,3 +75,13 @@ export function phaseGradient(field: CoastField, x: number, z: number, step: num
 
 /** |a − b| / b. */
 export const relativeError = (measured: number, expected: number): number => Math.abs(measured - expected) / Math.abs(expected);
+
+/** The beach the tests measure: slope 0.02, a 1 m, 10 s swell arriving at 30° in 60 m of water. */
+export const TEST_BEACH: CoastSetting = {
+  bathymetry: 'beach',
+  beachSlope: 0.02,
+  deepDepth: OFFSHORE_DEPTH,
+  swellHeight: 1,
+  swellPeriod: 10,
+  swellDirection: 30,
+};

@@ -11,16 +11,9 @@ import {
   snellAngle,
 } from '../../../../src/sim/coast/waveTransformation';
 import { GRAVITY, waveNumber } from '../../../../src/sim/waves/dispersion';
-import { crestFrontNear, crestsAlongX, heightOverPeriod, relativeError } from '../../../support/coastSurface';
+import { crestFrontNear, crestsAlongX, heightOverPeriod, relativeError, TEST_BEACH } from '../../../support/coastSurface';
 
-const SETTING: CoastSetting = {
-  bathymetry: 'beach',
-  beachSlope: 0.02,
-  deepDepth: OFFSHORE_DEPTH,
-  swellHeight: 1,
-  swellPeriod: 10,
-  swellDirection: 30,
-};
+const SETTING = TEST_BEACH;
 const OMEGA = (2 * Math.PI) / SETTING.swellPeriod;
 const THETA0 = (SETTING.swellDirection * Math.PI) / 180;
 

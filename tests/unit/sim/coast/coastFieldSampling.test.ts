@@ -4,15 +4,9 @@ import type { CoastField, CoastSetting } from '../../../../src/sim/coast/coastFi
 import { coastSwellDisplacement, coastSwellHeight, coastSwellNormal, sampleCoastField } from '../../../../src/sim/coast/coastFieldSampling';
 import { buildCoastField } from '../../../../src/sim/coast/coastSwellField';
 import { waveNumber } from '../../../../src/sim/waves/dispersion';
+import { TEST_BEACH } from '../../../support/coastSurface';
 
-const SETTING: CoastSetting = {
-  bathymetry: 'beach',
-  beachSlope: 0.02,
-  deepDepth: OFFSHORE_DEPTH,
-  swellHeight: 1,
-  swellPeriod: 10,
-  swellDirection: 30,
-};
+const SETTING = TEST_BEACH;
 const OMEGA = (2 * Math.PI) / SETTING.swellPeriod;
 const THETA0 = (SETTING.swellDirection * Math.PI) / 180;
 
