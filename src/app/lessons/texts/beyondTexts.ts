@@ -13,8 +13,8 @@ export const beyondTexts: Record<string, LessonText> = {
     ),
     question: {
       ask: {
-        en: 'Before you touch anything: if you raise Wind speed from 10 to 20 m/s, which strips will change their waves, and which will not?',
-        es: 'Antes de tocar nada: si subes la velocidad del viento de 10 a 20 m/s, ¿qué franjas cambian sus olas y cuáles no?',
+        en: 'If you raise Wind speed from 10 to 20 m/s, which strips will change their waves, and which will not?',
+        es: 'Si subes la velocidad del viento de 10 a 20 m/s, ¿qué franjas cambian sus olas y cuáles no?',
       },
       answer: {
         en: 'The middle and right strips grow taller and longer: both are drawn from the wind’s spectrum, whose Hs grows as U². The left strip keeps its waves, since the seed’s sines and value noise read no wind; only its glint’s roughness, Cox and Munk’s σ² for the wind, changes.',

@@ -16,6 +16,7 @@ import { isParamKey, defaultParams, validateParams } from '../../../../src/sim/p
 import { unreadParams } from '../../../../src/app/panel/unreadParams';
 import { formatUrlState, parseUrlState } from '../../../../src/app/url/urlState';
 import { CONCEPT_PATH, CONCEPT_STAGES } from '../../../../src/app/lessons/conceptPath';
+import { teachingWord } from '../../../../src/app/language/teachingWords';
 
 /** The concept lessons' sections, after the models' (lessonOutline.ts), the coast last. */
 const CONCEPT_SECTIONS: LessonSection[] = ['linearWaves', 'spectra', 'filtering', 'light', 'coast'];
@@ -75,6 +76,21 @@ describe('the lessons', () => {
     // Control: a card without its question would be reported by the same comparison.
     const without = { ...LESSON_TEXTS, swell: { ...LESSON_TEXTS.swell, question: undefined } } as unknown as typeof LESSON_TEXTS;
     expect(listed.map((l) => l.question)).not.toEqual(listed.map((l) => Boolean(without[l.id].question?.ask.en)));
+  });
+
+  it('no question repeats the heading the card puts over it, in either language', () => {
+    const repeats = (texts: typeof LESSON_TEXTS): string[] =>
+      (['en', 'es'] as const).flatMap((language) => {
+        const heading = teachingWord({ language }, 'lessonQuestion').toLowerCase();
+        return lessonIds
+          .filter((id) => texts[id].question?.ask[language].toLowerCase().startsWith(heading))
+          .map((id) => `${id} (${language})`);
+      });
+    expect(repeats(LESSON_TEXTS)).toEqual([]);
+    // Control: a question that opens with the heading's words is reported.
+    const ask = { en: 'Before you touch anything: what changes?', es: 'Antes de tocar nada: ¿qué cambia?' };
+    const planted = { ...LESSON_TEXTS, swell: { ...LESSON_TEXTS.swell, question: { ...LESSON_TEXTS.swell.question!, ask } } };
+    expect(repeats(planted as typeof LESSON_TEXTS)).toEqual(['swell (en)', 'swell (es)']);
   });
 
   it('the word count check fails a 30-word text (control)', () => {
