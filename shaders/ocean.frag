@@ -242,6 +242,10 @@ void main() {
       * (1.0 - smoothstep(LONGEST_FULL, LONGEST_NONE, max(across, along)));
     if (weight > 0.0) {
       vec3 detail = normalize(mix(vec3(0.0, 1.0, 0.0), waveDetailNormal(vGridXZ), vWaveFade));
+#ifdef OCEAN_COAST
+      // The detail is the wind sea's too: calmed by the depth and tilted by the swell, as the vertex's normal is.
+      detail = coastTiltNormal(detail, vCoastTilt.z, vCoastTilt.xy);
+#endif
       n = normalize(mix(n, detail, weight));
     }
   }
