@@ -181,7 +181,14 @@ vec3 shadeFromBelow(vec3 v, vec3 n) {
     vec3 t = normalize(up);
     through = skyCubeColor(t) + sunLobe(dot(t, uSunDirection), 700.0, 30.0);
   }
-  vec3 mirrored = waterVolumeColor(reflect(-v, towardsWater));
+  vec3 down = reflect(-v, towardsWater);
+  vec3 mirrored = waterVolumeColor(down);
+#ifdef OCEAN_COAST
+  // Over a shallow bed the mirror shows the bed, through twice the water of the shallows' colour
+  // from above (which counts h down and h back): h down to it, and back along the mirrored ray.
+  float depth = max(vCoastLook.x, 0.0);
+  mirrored = coastShallowWater(mirrored, depth + depth / max(-down.y, 0.1));
+#endif
   return mix(through, mirrored, reflectance);
 }
 
