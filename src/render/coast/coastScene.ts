@@ -5,6 +5,7 @@ import {
   NearestFilter,
   PlaneGeometry,
   RGBAFormat,
+  Vector2,
   type BufferGeometry,
   type Object3D,
 } from 'three';
@@ -70,6 +71,8 @@ export class CoastScene {
   private floor: SeaFloor | null = null;
   private windSea = true;
   private built: string | null = null;
+  /** The compared models' oceans (compare=…) drawn over this coast, each with its own wind-sea limit. */
+  private readonly sides = new Map<OceanMaterial, { value: Vector2 }>();
 
   constructor(private readonly ocean: CoastHost) {
     ocean.binding.late.provide('oceano_coast', coastChunk);
@@ -147,8 +150,23 @@ export class CoastScene {
     if (!this.field) return;
     const period = (2 * Math.PI) / this.field.angularFrequency;
     this.uniforms.uCoastAdvance.value = this.field.angularFrequency * (time - period * Math.floor(time / period));
-    const height = windSeaHeightOf(this.ocean.waveModelView.model.bounds().vertical);
-    this.uniforms.uCoastWind.value.y = height > 0 ? BREAKER_INDEX / height : 1e6;
+    this.uniforms.uCoastWind.value.y = windSeaLimit(this.ocean.waveModelView.model);
+  }
+
+  /**
+   * A compared model's ocean material (compare=…, src/render/compare/) drawn over this same
+   * coast: the first call compiles the coast into its programs and shares the field's uniforms;
+   * every frame's call sets its own wind-sea limit, from its own model's waves.
+   */
+  dressSide(material: OceanMaterial, model: LiveWaveModel): void {
+    let wind = this.sides.get(material);
+    if (!wind) {
+      wind = { value: new Vector2() };
+      Object.assign(material.uniforms, this.uniforms, { uCoastWind: wind });
+      for (const program of [material, material.near]) setMaterialDefine(program, 'OCEAN_COAST', true);
+      this.sides.set(material, wind);
+    }
+    wind.value.set(this.windSea ? 1 : 0, windSeaLimit(model));
   }
 
   /**
@@ -163,11 +181,20 @@ export class CoastScene {
   }
 
   dispose(): void {
-    for (const material of this.materials()) setMaterialDefine(material, 'OCEAN_COAST', false);
+    for (const material of [...this.materials(), ...[...this.sides.keys()].flatMap((side) => [side, side.near])]) {
+      setMaterialDefine(material, 'OCEAN_COAST', false);
+    }
+    this.sides.clear();
     this.ocean.seaBed.mesh.geometry = this.flatBed;
     this.bed.dispose();
     this.land.mesh.removeFromParent();
     this.land.dispose();
     this.texture?.dispose();
   }
+}
+
+/** γ / H: the breaker index over the largest height of `model`'s waves, the wind sea's depth limit in shaders/coast.glsl. */
+function windSeaLimit(model: LiveWaveModel): number {
+  const height = windSeaHeightOf(model.bounds().vertical);
+  return height > 0 ? BREAKER_INDEX / height : 1e6;
 }

@@ -61,7 +61,11 @@ export class CompareRenderer {
   }
 
   advance(time: number): void {
-    for (const side of this.sides) side.view.update(time);
+    for (const side of this.sides) {
+      side.view.update(time);
+      // On a coast every strip's sea feels the same floor.
+      this.ocean.coast?.dressSide(side.material, side.view.model);
+    }
   }
 
   /** The strips of the frame, or null when there is nothing to compare; the splits are fractions of `[from, to]`, fractions of the width. */
