@@ -17,6 +17,7 @@ import { sampleCoastField } from '../../../../../src/sim/coast/coastFieldSamplin
 import { LINEAR_THEORY, SHALLOWEST_DEPTH, type CoastWaveModel } from '../../../../../src/sim/coast/coastWaveModel';
 import { MAX_REFRACTION_COEFFICIENT } from '../../../../../src/sim/coast/islandSwellField';
 import type { CoastSetting } from '../../../../../src/sim/coast/coastField';
+import { regularSwell } from '../../../../../src/sim/coast/swellSpectrum';
 
 /**
  * Every number on the coast's cards (coast-dispersion, coast-refraction, coast-shoaling,
@@ -51,7 +52,11 @@ const setting = (p: OceanParams): CoastSetting => ({
   swellHeight: p.swellHeight,
   swellPeriod: p.swellPeriod,
   swellDirection: p.swellDirection,
+  seed: p.seed,
 });
+/** The field of one regular wave train of the view's height and period: linear theory's, which the cards' single-wave figures speak of. */
+const regularField = (p: OceanParams, resolution: number, model: CoastWaveModel = LINEAR_THEORY) =>
+  buildCoastField(setting(p), resolution, model, regularSwell(setting(p)))!;
 
 /**
  * The depth where a swell of offshore height H₀ (given at OFFSHORE_DEPTH), period T and
@@ -139,7 +144,7 @@ describe('coast-dispersion: ω² = g k tanh(k h) shortens and slows the swell', 
   it('the field’s own crests across the beach stand 92 m apart at 10 m and 44 m at 2 m (within 3 %)', () => {
     const p = viewParams('coast-dispersion');
     const spacingAt = (depth: number, model: CoastWaveModel = LINEAR_THEORY) => {
-      const field = buildCoastField(setting(p), 512, model)!;
+      const field = regularField(p, 512, model);
       const x = BEACH_SHORE_X - depth / p.beachSlope;
       const dS = sampleCoastField(field, x + 5, 0).phase - sampleCoastField(field, x - 5, 0).phase;
       return (2 * Math.PI * 10) / dS;
@@ -177,7 +182,12 @@ describe('coast-refraction: Snell on the beach, the eikonal round the island', (
   it('the island’s lee is calm only in a strip behind the shore: 300 m behind it the swell is back above 1 m', () => {
     const p = viewParams('coast-refraction');
     const field = buildCoastField(setting(p), 256)!;
-    const behind = (metres: number) => 2 * sampleCoastField(field, ISLAND_CENTER[0] + ISLAND_RADIUS + metres, ISLAND_CENTER[1]).amplitude;
+    // The swell's local significant height, 4 √m0 with m0 = Σ A_m² / 2 over its components.
+    const behind = (metres: number) => {
+      const x = ISLAND_CENTER[0] + ISLAND_RADIUS + metres;
+      const m0 = field.components.reduce((sum, _, m) => sum + sampleCoastField(field, x, ISLAND_CENTER[1], m).amplitude ** 2 / 2, 0);
+      return 4 * Math.sqrt(m0);
+    };
     for (const lang of LANGS) {
       const answer = LESSON_TEXTS['coast-refraction'].question.answer[lang];
       const [, distance, height] = /([0-9]+) m (?:behind its shore|de su orilla)[^0-9]+([0-9]+) m/.exec(answer)!.map(Number);
@@ -228,7 +238,7 @@ describe('coast-shoaling: H = H₀ Ks Kr, the energy flux kept', () => {
   // Control: H₀ / Ks instead of H₀ Ks gives 1.31 m, not 1.71.
   it('Ks = 1.14 at 5 m, where H = 1.71 m, and the beach’s field holds that height', () => {
     const p = viewParams('coast-shoaling');
-    const field = buildCoastField(setting(p), 512)!;
+    const field = regularField(p, 512);
     const x = BEACH_SHORE_X - 5 / p.beachSlope;
     const fieldHeight = 2 * sampleCoastField(field, x, 0).amplitude;
     for (const lang of LANGS) {
@@ -245,7 +255,7 @@ describe('coast-shoaling: H = H₀ Ks Kr, the energy flux kept', () => {
   it('the answer: from 60 to 25 m the swell shrinks by about 6 %, in the field too; Ks is back to 1 near 11 m', () => {
     const p = viewParams('coast-shoaling');
     const at25 = (model: CoastWaveModel = LINEAR_THEORY) =>
-      (2 * sampleCoastField(buildCoastField(setting(p), 256, model)!, BEACH_SHORE_X - 25 / p.beachSlope, 0).amplitude) / p.swellHeight;
+      (2 * sampleCoastField(regularField(p, 256, model), BEACH_SHORE_X - 25 / p.beachSlope, 0).amplitude) / p.swellHeight;
     for (const lang of LANGS) {
       const answer = LESSON_TEXTS['coast-shoaling'].question.answer[lang];
       const shrink = Number(/([0-9]+) %/.exec(answer)![1]) / 100;
@@ -297,9 +307,11 @@ describe('coast-breaking: H_b = γ h, γ = 0.78, the saturated surf zone', () =>
     const { swellHeight, swellPeriod } = p();
     const line = breakingLine(swellHeight, swellPeriod, 0);
     const fullyBroken = (model: CoastWaveModel = LINEAR_THEORY) => {
-      const field = buildCoastField(setting(p()), 512, model)!;
-      const n = field.resolution;
-      for (let i = 0; i < n; i++) if (field.texels[i * 4 + 3] >= 1) return { depth: field.texels[i * 4 + 2], field };
+      const field = regularField(p(), 512, model);
+      for (let i = 0; i < field.resolution; i++) {
+        const at = sampleCoastField(field, field.originX + i * field.spacing, field.originZ);
+        if (at.breaking >= 1) return { depth: at.depth, field };
+      }
       throw new Error('never broken');
     };
     const { depth, field } = fullyBroken();
