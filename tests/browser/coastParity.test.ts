@@ -62,7 +62,7 @@ async function withLateSwell(page: Page): Promise<void> {
   await page.evaluateOnNewDocument(() => {
     const original = WebGL2RenderingContext.prototype.shaderSource;
     WebGL2RenderingContext.prototype.shaderSource = function (shader: WebGLShader, source: string) {
-      original.call(this, shader, source.replace('float phase = s.x - uCoastAdvance;', 'float phase = s.x - uCoastAdvance - 0.01;'));
+      original.call(this, shader, source.replace('float theta = phaseAmplitude.x - advance[m];', 'float theta = phaseAmplitude.x - advance[m] - 0.01;'));
     };
   });
 }
