@@ -110,7 +110,8 @@ vec4 coastLayerAt(vec2 xz, int layer, out vec4 alongX, out vec4 alongZ) {
 // The complex sum Z = Σ A e^{iθ}, θ = S − advance, and its gradient, for the two components of
 // one layer read (`s`, `alongX`, `alongZ`), added into `z` (Re Z, Im Z) and `gradient`
 // (∂Re Z/∂x, ∂Im Z/∂x, ∂Re Z/∂z, ∂Im Z/∂z): ∇(A e^{iθ}) = (∇A + i A ∇S) e^{iθ}.
-void coastComponentSum(vec4 s, vec4 alongX, vec4 alongZ, vec2 advance, inout vec2 z, inout vec4 gradient) {
+// `phases` gathers Σ A θ, Σ A and Σ θ for the carrier's mean phase.
+void coastComponentSum(vec4 s, vec4 alongX, vec4 alongZ, vec2 advance, inout vec2 z, inout vec4 gradient, inout vec3 phases) {
   for (int m = 0; m < 2; m++) {
     vec2 phaseAmplitude = m == 0 ? s.xy : s.zw;
     vec2 rateX = m == 0 ? alongX.xy : alongX.zw;
@@ -122,20 +123,26 @@ void coastComponentSum(vec4 s, vec4 alongX, vec4 alongZ, vec2 advance, inout vec
     z += a * vec2(c, n);
     gradient.xy += vec2(rateX.y * c - a * rateX.x * n, rateX.y * n + a * rateX.x * c);
     gradient.zw += vec2(rateZ.y * c - a * rateZ.x * n, rateZ.y * n + a * rateZ.x * c);
+    phases += vec3(a * theta, a, theta);
   }
 }
 
-// The swell at a point: its height, slope, breaking fraction now, and carrier phase Z/|Z|.
+// The swell at a point: its height, slope, breaking fraction now, and the carrier's phase
+// arg Z = meanPhase + arg(relative) in two parts (see coastEnvelopeLimit).
 struct CoastSwell {
   float height;
   vec2 slope;
   float breaking;
-  vec2 carrier;
+  float meanPhase;
+  vec2 relative;
 };
 
 // The envelope limit: a narrow-band sea's wave height is H = 2|Z|; where H > γ h the sum is
 // scaled by s = γ h / H, and ∇η = s ∇Re Z + Re Z ∇s, ∇s = s (∇h / h − ∇|Z| / |Z|).
-CoastSwell coastEnvelopeLimit(vec2 xz, vec2 z, vec4 gradient) {
+// The carrier's phase arg Z is kept in two parts that interpolate between vertices without
+// wrapping: the components' amplitude-weighted mean phase θ̄ (unwrapped, smooth as the phases S
+// are) and the unit vector Z e^{−iθ̄} / |Z|, which turns only on the scale of a group.
+CoastSwell coastEnvelopeLimit(vec2 xz, vec2 z, vec4 gradient, vec3 phases) {
   float depth = coastSeaDepth(xz);
   float modulus = length(z);
   float height = 2.0 * modulus;
@@ -154,7 +161,10 @@ CoastSwell coastEnvelopeLimit(vec2 xz, vec2 z, vec4 gradient) {
   swell.slope = scale * gradient.xz + z.x * scaleSlope;
   // breakingFraction (src/sim/coast/waveTransformation.ts): smoothstep of H / (γ h) from 0.9 to 1; on land, 1 where any wave is left.
   swell.breaking = depth <= 0.0 ? (height > 0.0 ? 1.0 : 0.0) : smoothstep(0.9, 1.0, height / limit);
-  swell.carrier = modulus > 0.0 ? z / modulus : vec2(1.0, 0.0);
+  float mean = phases.y > 0.0 ? phases.x / phases.y : phases.z / 4.0;
+  vec2 relative = vec2(z.x * cos(mean) + z.y * sin(mean), z.y * cos(mean) - z.x * sin(mean));
+  swell.meanPhase = mean;
+  swell.relative = modulus > 0.0 ? relative / modulus : vec2(1.0, 0.0);
   return swell;
 }
 
@@ -162,13 +172,14 @@ CoastSwell coastEnvelopeLimit(vec2 xz, vec2 z, vec4 gradient) {
 CoastSwell coastSwellAt(vec2 xz) {
   vec2 z = vec2(0.0);
   vec4 gradient = vec4(0.0);
+  vec3 phases = vec3(0.0);
   for (int layer = 0; layer < 2; layer++) {
     vec4 alongX;
     vec4 alongZ;
     vec4 s = coastLayerAt(xz, layer, alongX, alongZ);
-    coastComponentSum(s, alongX, alongZ, layer == 0 ? uCoastAdvance.xy : uCoastAdvance.zw, z, gradient);
+    coastComponentSum(s, alongX, alongZ, layer == 0 ? uCoastAdvance.xy : uCoastAdvance.zw, z, gradient, phases);
   }
-  return coastEnvelopeLimit(xz, z, gradient);
+  return coastEnvelopeLimit(xz, z, gradient, phases);
 }
 
 // The wind sea's normal `n` with its slopes scaled by `factor`, tilted by the swell's `slope`.
@@ -177,10 +188,11 @@ vec3 coastTiltNormal(vec3 n, float factor, vec2 slope) {
   return normalize(vec3(-(wind.x + slope.x), 1.0, -(wind.y + slope.y)));
 }
 
-// From ocean.vert: the depth, breaking fraction and carrier phase (cos, sin of arg Z, a unit
-// vector, so interpolation between vertices never wraps) for the shallows' colour and the
-// surf, and the swell's slope with the wind sea's factor, for a model whose normals are per pixel.
-varying vec4 vCoastLook;
+// From ocean.vert: the depth, breaking fraction and the carrier's mean phase for the shallows'
+// colour and the surf, the carrier's relative turn (Z e^{−iθ̄} / |Z|), and the swell's slope
+// with the wind sea's factor, for a model whose normals are per pixel.
+varying vec3 vCoastLook;
+varying vec2 vCoastCarrier;
 varying vec3 vCoastTilt;
 
 #ifdef WAVE_VERTEX_STAGE
@@ -196,7 +208,8 @@ void coastDisplace(inout vec3 d, inout vec3 normal, vec2 grid, float fade, bool 
   d.y = d.y * windFactor + swell.height * fade;
   vec2 slope = swell.slope * fade;
   if (!flatNormals) normal = coastTiltNormal(normal, windFactor, slope);
-  vCoastLook = vec4(coastSeaDepth(at), swell.breaking, swell.carrier);
+  vCoastLook = vec3(coastSeaDepth(at), swell.breaking, swell.meanPhase);
+  vCoastCarrier = swell.relative;
   vCoastTilt = vec3(slope, windFactor);
 }
 #endif
@@ -213,11 +226,11 @@ vec3 coastShallowWater(vec3 deep, float depth) {
 // The surf's foam: where the swell breaks now, on the front of each crest (the bore that runs
 // ahead of it) fading behind it, and a thin sheet of what earlier crests left.
 // An artistic shape over a physical place: the breaking fraction decides where, the carrier's phase when.
-float coastSurfFoam(vec4 look) {
+float coastSurfFoam(vec3 look, vec2 carrier) {
   float breaking = clamp(look.y, 0.0, 1.0);
   if (breaking <= 0.0) return 0.0;
-  // cos(arg Z − 0.6) from the interpolated carrier: 1 just ahead of the crest, falling off over half a wavelength.
-  vec2 carrier = look.zw / max(length(look.zw), 1e-4);
-  float front = pow(0.5 + 0.5 * dot(carrier, vec2(cos(0.6), sin(0.6))), 10.0);
+  // 1 just ahead of the crest (the carrier's phase arg Z slightly past 0), falling off over half a wavelength.
+  float phase = look.z + atan(carrier.y, carrier.x);
+  float front = pow(0.5 + 0.5 * cos(phase - 0.6), 10.0);
   return breaking * clamp(0.08 + 0.9 * front, 0.0, 1.0);
 }

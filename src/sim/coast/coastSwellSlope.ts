@@ -25,8 +25,14 @@ export interface CoastSwell {
   slopeZ: number;
   /** How much the wave here breaks now: smoothstep of H / (γ h) from 0.9 to 1 (breakingFraction). */
   breaking: number;
-  /** Z / |Z|: the carrier's phase as a unit vector, (cos arg Z, sin arg Z); (1, 0) where Z = 0. */
-  carrier: [number, number];
+  /**
+   * The carrier's phase arg Z in two parts that interpolate between vertices without wrapping:
+   * the components' amplitude-weighted mean phase θ̄ (radians, unwrapped, smooth as the S_m are)
+   * and the unit vector Z e^{−iθ̄} / |Z| ((1, 0) where Z = 0), which turns only over a group.
+   * arg Z = meanPhase + atan2(relative). The surf's foam sits on it.
+   */
+  meanPhase: number;
+  relative: [number, number];
   /** The still water's depth, metres. */
   depth: number;
 }
@@ -97,6 +103,9 @@ export function coastSwellAt(field: CoastField, x: number, z: number, time: numb
   let imX = 0;
   let reZ = 0;
   let imZ = 0;
+  let weightedPhase = 0;
+  let weight = 0;
+  let phaseSum = 0;
   for (let m = 0; m < field.components.length; m++) {
     const c = componentAt(field, m, x, z);
     const theta = c.phase - componentAdvance(field.components[m], time);
@@ -108,6 +117,9 @@ export function coastSwellAt(field: CoastField, x: number, z: number, time: numb
     imX += c.amplitudeX * sin + c.amplitude * c.phaseX * cos;
     reZ += c.amplitudeZ * cos - c.amplitude * c.phaseZ * sin;
     imZ += c.amplitudeZ * sin + c.amplitude * c.phaseZ * cos;
+    weightedPhase += c.amplitude * theta;
+    weight += c.amplitude;
+    phaseSum += theta;
   }
   // The envelope limit: H = 2|Z| at most γ h.
   const depth = seaDepth(field.floor, x, z);
@@ -127,12 +139,16 @@ export function coastSwellAt(field: CoastField, x: number, z: number, time: numb
       scaleZ = scale * (depthZ / depth - modulusZ / modulus);
     }
   }
+  const mean = weight > 0 ? weightedPhase / weight : phaseSum / field.components.length;
+  const relativeRe = re * Math.cos(mean) + im * Math.sin(mean);
+  const relativeIm = im * Math.cos(mean) - re * Math.sin(mean);
   return {
     height: scale * re,
     slopeX: scale * reX + re * scaleX,
     slopeZ: scale * reZ + re * scaleZ,
     breaking: breakingFraction(height, depth, field.breakerIndex),
-    carrier: modulus > 0 ? [re / modulus, im / modulus] : [1, 0],
+    meanPhase: mean,
+    relative: modulus > 0 ? [relativeRe / modulus, relativeIm / modulus] : [1, 0],
     depth,
   };
 }
