@@ -16,6 +16,7 @@ import type { CoastField, CoastSetting } from '../../sim/coast/coastField';
 import { buildCoastField } from '../../sim/coast/coastSwellField';
 import { CoastSurface } from '../../sim/coast/coastSurface';
 import { componentAdvance } from '../../sim/coast/coastSwellSlope';
+import { swellComponents, type SwellComponentSpec } from '../../sim/coast/swellSpectrum';
 import { BREAKER_INDEX, windSeaHeightOf } from '../../sim/coast/windSeaDamping';
 import { sailUntilAground, type SailLimit } from '../../sim/coast/aground';
 import { setMaterialDefine } from '../shaders/materialDefines';
@@ -54,6 +55,11 @@ export function packLayers(field: CoastField): Float32Array {
     }
   });
   return image;
+}
+
+/** The field with each component's phase offset from `components` (the same frequencies, another seed); the texels are shared. */
+function withPhaseOffsets(field: CoastField, components: readonly SwellComponentSpec[]): CoastField {
+  return { ...field, components: field.components.map((component, m) => ({ ...component, phaseOffset: components[m].phaseOffset })) };
 }
 
 /** What the coast needs of the ocean it joins (OceanEngine): its binding, materials, sea bed, model and time. */
@@ -115,11 +121,13 @@ export class CoastScene {
     return [this.ocean.material, this.ocean.material.near, this.ocean.seaBed.material];
   }
 
-  /** Builds the field again only when the setting changed (a change of the wind sea alone rebuilds nothing). */
+  /** Builds the field again only when the setting changed (a change of the wind sea or the seed alone rebuilds nothing). */
   setParams(params: OceanParams): void {
     const setting = coastSettingOf(params);
-    const key = JSON.stringify(setting);
+    // The seed moves only the components' phase offsets: a new seed re-phases the field built, not rebuilds it.
+    const key = JSON.stringify({ ...setting, seed: undefined });
     this.windSea = params.windSea;
+    if (key === this.built && this.field) this.field = withPhaseOffsets(this.field, swellComponents(setting));
     if (key !== this.built) {
       const field = buildCoastField(setting);
       if (!field) throw new Error('CoastScene: a deep sea has no coast.');
