@@ -116,9 +116,9 @@ export function swellBound(field: CoastField): number {
   let largest = 0;
   for (let j = 0; j < n - 1; j++) {
     for (let i = 0; i < n - 1; i++) {
-      const corners = [j * n + i, j * n + i + 1, (j + 1) * n + i, (j + 1) * n + i + 1];
-      const amplitude = Math.max(...corners.map((t) => sum[t]));
-      const deepest = Math.max(...corners.map((t) => depth[t]));
+      const t = j * n + i;
+      const amplitude = Math.max(sum[t], sum[t + 1], sum[t + n], sum[t + n + 1]);
+      const deepest = Math.max(depth[t], depth[t + 1], depth[t + n], depth[t + n + 1]);
       largest = Math.max(largest, Math.min(amplitude, (field.breakerIndex * Math.max(0, deepest)) / 2));
     }
   }
