@@ -340,7 +340,7 @@ void main() {
   foam = max(foam, iwaveFoam(vIWaveSlope));
 #endif
 #ifdef OCEAN_COAST
-  foam = max(foam, coastSurfFoam(vCoastLook));
+  foam = max(foam, coastSurfFoam(vCoastLook, vCoastCarrier));
 #endif
   if (foam > 0.0) {
 #ifdef OCEAN_FOAM_TEXTURE

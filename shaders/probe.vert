@@ -29,11 +29,9 @@ void main() {
   // The coast as ocean.vert adds it: the wind sea (off: none) calmed by depth, plus the swell, at the displaced point.
   d *= uCoastWind.x;
   float windFactor = coastWindFactor(aSample + d.xz);
-  vec4 slope;
-  vec4 field = coastFieldAt(aSample + d.xz, slope);
-  vec3 swell = coastSwellOf(field, slope);
-  d.y = d.y * windFactor + swell.x;
-  n = coastTiltNormal(n, windFactor, swell.yz);
+  CoastSwell swell = coastSwellAt(aSample + d.xz);
+  d.y = d.y * windFactor + swell.height;
+  n = coastTiltNormal(n, windFactor, swell.slope);
 #endif
   vec2 at = aSample + d.xz;
 #ifdef OCEAN_IWAVE

@@ -54,9 +54,9 @@ export function crestFrontNear(field: CoastField, x0: number, z: number, halfWid
   return crests.reduce((best, x) => (Math.abs(x - x0) < Math.abs(best - x0) ? x : best), Number.POSITIVE_INFINITY);
 }
 
-/** The wave height at (x, z): the highest minus the lowest η over one period, from `samples` instants. */
+/** The wave height at (x, z) of a one-component field: the highest minus the lowest η over its period, from `samples` instants. */
 export function heightOverPeriod(field: CoastField, x: number, z: number, samples = 96): number {
-  const period = (2 * Math.PI) / field.angularFrequency;
+  const period = (2 * Math.PI) / field.components[0].angularFrequency;
   let high = Number.NEGATIVE_INFINITY;
   let low = Number.POSITIVE_INFINITY;
   for (let s = 0; s < samples; s++) {
@@ -76,7 +76,7 @@ export function phaseGradient(field: CoastField, x: number, z: number, step: num
 /** |a − b| / b. */
 export const relativeError = (measured: number, expected: number): number => Math.abs(measured - expected) / Math.abs(expected);
 
-/** The beach the tests measure: slope 0.02, a 1 m, 10 s swell arriving at 30° in 60 m of water. */
+/** The beach the tests measure: slope 0.02, a 1 m, 10 s swell arriving at 30° in 60 m of water (seed 1 for its spectrum's phases). */
 export const TEST_BEACH: CoastSetting = {
   bathymetry: 'beach',
   beachSlope: 0.02,
@@ -84,4 +84,5 @@ export const TEST_BEACH: CoastSetting = {
   swellHeight: 1,
   swellPeriod: 10,
   swellDirection: 30,
+  seed: 1,
 };

@@ -72,7 +72,7 @@ export const SPANISH_PARAM_LABELS: Record<ParamKey, string> = {
   fogDensity: 'Densidad de la niebla del agua',
   bathymetry: 'Fondo marino (batimetría)',
   beachSlope: 'Pendiente de la playa',
-  swellHeight: 'Altura del oleaje costero H',
+  swellHeight: 'Altura del oleaje costero Hs',
   swellPeriod: 'Período del oleaje costero',
   swellDirection: 'Dirección del oleaje costero',
   windSea: 'Mar de viento sobre el oleaje',

@@ -138,7 +138,7 @@ export const LESSON_QUOTE_SOURCES: Record<string, QuoteSource> = {
   'coast-shoaling': {
     file: 'src/sim/coast/beachSwellField.ts',
     from: 'const k = fieldWaveNumber(model, omega, d);',
-    to: 'amplitude[i] = 0.5 * Math.min(shoaled',
+    to: 'amplitude[i] = amplitude0 * shoaling * refraction;',
   },
   'coast-breaking': {
     file: 'src/sim/coast/waveTransformation.ts',

@@ -1,6 +1,7 @@
 import coast from '../../../shaders/coast.glsl?raw';
 import { BEACH_SHORE_X, DUNE_HEIGHT, ISLAND_CENTER, ISLAND_HEIGHT, ISLAND_RADIUS, OFFSHORE_DEPTH } from '../../sim/coast/bathymetry';
 import { diffuseAttenuation, SAND_ALBEDO } from '../../sim/coast/shallowWaterColor';
+import { BREAKER_INDEX } from '../../sim/coast/windSeaDamping';
 import { glslFloat, glslVec3 } from '../shaders/shaderConstants';
 
 /**
@@ -17,5 +18,6 @@ export const coastChunk = [
   `#define COAST_ISLAND_HEIGHT ${glslFloat(ISLAND_HEIGHT)}`,
   `#define COAST_ATTENUATION ${glslVec3(diffuseAttenuation())}`,
   `#define COAST_BED_ALBEDO ${glslVec3(SAND_ALBEDO)}`,
+  `#define COAST_BREAKER_INDEX ${glslFloat(BREAKER_INDEX)}`,
   coast,
 ].join('\n');

@@ -16,6 +16,8 @@ import { seaDepth, type SeaFloor } from '../../sim/coast/bathymetry';
 import type { CoastField, CoastSetting } from '../../sim/coast/coastField';
 import { buildCoastField } from '../../sim/coast/coastSwellField';
 import { CoastSurface } from '../../sim/coast/coastSurface';
+import { componentAdvance } from '../../sim/coast/coastSwellSlope';
+import { swellComponents, type SwellComponentSpec } from '../../sim/coast/swellSpectrum';
 import { BREAKER_INDEX, windSeaHeightOf } from '../../sim/coast/windSeaDamping';
 import { sailUntilAground, type SailLimit } from '../../sim/coast/aground';
 import { setMaterialDefine } from '../shaders/materialDefines';
@@ -31,6 +33,35 @@ import { coastChunk } from './coastChunk';
 const BED_SIZE = 4000;
 const BED_SEGMENTS = 400;
 const BED_STEP = BED_SIZE / BED_SEGMENTS;
+
+/** The components shaders/coast.glsl sums: two layers of two. */
+const SHADER_COMPONENTS = 4;
+
+/**
+ * The field's components as the shader reads them: an N × 2N RGBA float image, two layers
+ * stacked in v, texel (i, j) of layer L = (S, A) of component 2L then of component 2L + 1
+ * (amplitude 0 for a component the field lacks).
+ */
+export function packLayers(field: CoastField): Float32Array {
+  if (field.components.length > SHADER_COMPONENTS) throw new Error(`CoastScene: the shader sums ${SHADER_COMPONENTS} components at most.`);
+  const n = field.resolution;
+  const image = new Float32Array(n * n * 2 * 4);
+  field.components.forEach((component, m) => {
+    const layer = m >> 1;
+    const slot = (m & 1) * 2;
+    for (let t = 0; t < n * n; t++) {
+      const to = (layer * n * n + t) * 4 + slot;
+      image[to] = component.texels[t * 2];
+      image[to + 1] = component.texels[t * 2 + 1];
+    }
+  });
+  return image;
+}
+
+/** The field with each component's phase offset from `components` (the same frequencies, another seed); the texels are shared. */
+function withPhaseOffsets(field: CoastField, components: readonly SwellComponentSpec[]): CoastField {
+  return { ...field, components: field.components.map((component, m) => ({ ...component, phaseOffset: components[m].phaseOffset })) };
+}
 
 /** What the coast needs of the ocean it joins (OceanEngine): its binding, materials, sea bed, model and time. */
 export interface CoastHost extends Object3D {
@@ -50,6 +81,7 @@ export function coastSettingOf(params: OceanParams): CoastSetting {
     swellHeight: params.swellHeight,
     swellPeriod: params.swellPeriod,
     swellDirection: params.swellDirection,
+    seed: params.seed,
   };
 }
 
@@ -92,11 +124,13 @@ export class CoastScene {
     return [this.ocean.material, this.ocean.material.near, this.ocean.seaBed.material];
   }
 
-  /** Builds the field again only when the setting changed (a change of the wind sea alone rebuilds nothing). */
+  /** Builds the field again only when the setting changed (a change of the wind sea or the seed alone rebuilds nothing). */
   setParams(params: OceanParams): void {
     const setting = coastSettingOf(params);
-    const key = JSON.stringify(setting);
+    // The seed moves only the components' phase offsets: a new seed re-phases the field built, not rebuilds it.
+    const key = JSON.stringify({ ...setting, seed: undefined });
     this.windSea = params.windSea;
+    if (key === this.built && this.field) this.field = withPhaseOffsets(this.field, swellComponents(setting));
     if (key !== this.built) {
       const field = buildCoastField(setting);
       if (!field) throw new Error('CoastScene: a deep sea has no coast.');
@@ -116,13 +150,14 @@ export class CoastScene {
 
   private upload(field: CoastField): void {
     this.texture?.dispose();
-    const texture = new DataTexture(field.texels, field.resolution, field.resolution, RGBAFormat, FloatType);
+    const n = field.resolution;
+    const texture = new DataTexture(packLayers(field), n, 2 * n, RGBAFormat, FloatType);
     texture.minFilter = texture.magFilter = NearestFilter;
     texture.wrapS = texture.wrapT = ClampToEdgeWrapping;
     texture.needsUpdate = true;
     this.texture = texture;
     this.uniforms.uCoastField.value = texture;
-    this.uniforms.uCoastGrid.value.set(field.originX, field.originZ, field.spacing, field.resolution);
+    this.uniforms.uCoastGrid.value.set(field.originX, field.originZ, field.spacing, n);
   }
 
   /** The still water's depth at world (x, z), metres, ≤ 0 on land. */
@@ -143,13 +178,15 @@ export class CoastScene {
   }
 
   /**
-   * The swell's phase advance at `time`, ω (t mod T), reduced here in double precision, and the
-   * wind sea's depth limit γ / H for the model drawn (its largest height H from its bounds).
+   * Each component's phase advance at `time`, ω_m (t mod T_m) − φ_m, reduced here in double
+   * precision, and the wind sea's depth limit γ / H for the model drawn (its largest height H
+   * from its bounds).
    */
   update(time: number): void {
     if (!this.field) return;
-    const period = (2 * Math.PI) / this.field.angularFrequency;
-    this.uniforms.uCoastAdvance.value = this.field.angularFrequency * (time - period * Math.floor(time / period));
+    const advance = [0, 0, 0, 0];
+    this.field.components.slice(0, SHADER_COMPONENTS).forEach((component, m) => (advance[m] = componentAdvance(component, time)));
+    this.uniforms.uCoastAdvance.value.fromArray(advance);
     this.uniforms.uCoastWind.value.y = windSeaLimit(this.ocean.waveModelView.model);
   }
 

@@ -11,7 +11,7 @@ export function createCoastUniforms(): CoastUniforms {
   return {
     uCoastField: { value: null },
     uCoastGrid: { value: new Vector4(0, 0, 1, 2) },
-    uCoastAdvance: { value: 0 },
+    uCoastAdvance: { value: new Vector4(0, 0, 0, 0) },
     uCoastWind: { value: new Vector2(1, 0) },
     uCoastFloor: { value: new Vector2(1, 0.02) },
   };

@@ -274,7 +274,9 @@ export class OceanEngine extends Object3D {
       previous.dispose();
     }
     this.waveView.setParams(params);
-    if (changed('bathymetry', 'beachSlope', 'depth', 'swellHeight', 'swellPeriod', 'swellDirection', 'windSea')) this.setCoast(params);
+    // The seed too: it draws the phases of the coast's swell components.
+    if (changed('bathymetry', 'beachSlope', 'depth', 'swellHeight', 'swellPeriod', 'swellDirection', 'windSea', 'seed'))
+      this.setCoast(params);
     // Chunk boxes reach as far as any wave can move a vertex (the coast's swell included), so a crest rising into view is never culled.
     this.bounds = this.waves.bounds();
     if (changed('seed')) this.seaBed.setNoiseSeed(params.seed);

@@ -58,3 +58,28 @@ function slopedDepth(seaward: number, slope: number, landHeight: number): number
 export function shelfWidth(slope: number): number {
   return OFFSHORE_DEPTH / slope;
 }
+
+/** ∇h at world (x, z), per metre: the slope of seaDepth where it is a plane (0 on the flat sea, the dune's top and the hill's). */
+export function seaDepthGradient(floor: SeaFloor, x: number, z: number): [number, number] {
+  switch (floor.bathymetry) {
+    case 'deep':
+      return [0, 0];
+    case 'beach': {
+      const seaward = BEACH_SHORE_X - x;
+      return onSlope(seaward, floor.beachSlope, DUNE_HEIGHT) ? [-floor.beachSlope, 0] : [0, 0];
+    }
+    case 'island': {
+      const dx = x - ISLAND_CENTER[0];
+      const dz = z - ISLAND_CENTER[1];
+      const r = Math.hypot(dx, dz);
+      if (r === 0 || !onSlope(r - ISLAND_RADIUS, floor.beachSlope, ISLAND_HEIGHT)) return [0, 0];
+      return [(floor.beachSlope * dx) / r, (floor.beachSlope * dz) / r];
+    }
+  }
+}
+
+/** Whether a point `seaward` metres from the shoreline lies on the sloping plane, between the land's top and OFFSHORE_DEPTH. */
+function onSlope(seaward: number, slope: number, landHeight: number): boolean {
+  const depth = seaward * slope;
+  return depth > -landHeight && depth < OFFSHORE_DEPTH;
+}

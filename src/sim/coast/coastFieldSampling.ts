@@ -1,71 +1,54 @@
+import { seaDepth } from './bathymetry';
 import type { CoastField } from './coastField';
+import { coastSwellAt, componentAt } from './coastSwellSlope';
+import { breakingFraction } from './waveTransformation';
 
 /**
  * Reading the coast's swell field at a world point, the way the GPU reads it: bilinear
  * interpolation between texel centres, as a LINEAR-filtered float texture with CLAMP_TO_EDGE
- * does, so the CPU twin and the picture agree. The GLSL port is the same few lines.
+ * does, so the CPU twin and the picture agree (coastSwellSlope.ts, shaders/coast.glsl).
  */
 export interface CoastSample {
-  /** Unwrapped phase S, radians. */
+  /** Component m's unwrapped phase S, radians. */
   phase: number;
-  /** Amplitude a, metres. */
+  /** Component m's amplitude A (before breaking), metres. */
   amplitude: number;
-  /** Water depth h, metres (≤ 0 on land). */
+  /** Water depth h, metres (≤ 0 on land), analytic. */
   depth: number;
-  /** Breaking fraction, 0–1. */
+  /**
+   * The breaking fraction of the highest wave the point sees, 0–1: of the envelope's largest
+   * value 2 Σ A_m, when every component is at its crest together (the set's biggest waves).
+   * For one component, the breaking fraction of its wave.
+   */
   breaking: number;
 }
 
-/** One channel (0 phase, 1 amplitude, 2 depth, 3 breaking) at texel-index coordinates (u, v), inside [0, N − 1]². */
-function bilinear(field: CoastField, u: number, v: number, channel: number): number {
-  const last = field.resolution - 1;
-  const i0 = Math.min(Math.floor(u), last - 1);
-  const j0 = Math.min(Math.floor(v), last - 1);
-  const fu = u - i0;
-  const fv = v - j0;
-  const at = (i: number, j: number): number => field.texels[(j * field.resolution + i) * 4 + channel];
-  const bottom = at(i0, j0) * (1 - fu) + at(i0 + 1, j0) * fu;
-  const top = at(i0, j0 + 1) * (1 - fu) + at(i0 + 1, j0 + 1) * fu;
-  return bottom * (1 - fv) + top * fv;
+/**
+ * Component `component`'s field at world (x, z). Texel (i, j)'s centre is at
+ * (originX + i·spacing, originZ + j·spacing). Outside the grid the point is clamped to the
+ * grid's edge (as CLAMP_TO_EDGE does) for the amplitude, and the phase goes on growing at the
+ * edge's rate, measured between the edge texel and its inward neighbour: the offshore plane
+ * wave continues the edge.
+ */
+export function sampleCoastField(field: CoastField, x: number, z: number, component = 0): CoastSample {
+  const { phase, amplitude } = componentAt(field, component, x, z);
+  const depth = seaDepth(field.floor, x, z);
+  return { phase, amplitude, depth, breaking: breakingFraction(2 * largestEnvelope(field, x, z), depth, field.breakerIndex) };
+}
+
+/** Σ A_m at world (x, z): the swell's largest possible |Z| there, when every component is at its crest at once. */
+export function largestEnvelope(field: CoastField, x: number, z: number): number {
+  let sum = 0;
+  for (let m = 0; m < field.components.length; m++) sum += componentAt(field, m, x, z).amplitude;
+  return sum;
 }
 
 /**
- * The field at world (x, z). Texel (i, j)'s centre is at (originX + i·spacing, originZ + j·spacing).
- * Outside the grid the point is clamped to the grid's edge (as CLAMP_TO_EDGE does) for the
- * amplitude, depth and breaking, and the phase goes on growing at the edge's rate, measured
- * between the edge texel and its inward neighbour: the offshore plane wave continues the edge.
+ * The swell's height at world (x, z) and time t: the components summed and limited to γ h
+ * (coastSwellAt). `limited` false leaves out the limit, for the tests' negative controls.
  */
-export function sampleCoastField(field: CoastField, x: number, z: number): CoastSample {
-  const last = field.resolution - 1;
-  const u = (x - field.originX) / field.spacing;
-  const v = (z - field.originZ) / field.spacing;
-  const cu = Math.min(last, Math.max(0, u));
-  const cv = Math.min(last, Math.max(0, v));
-  let phase = bilinear(field, cu, cv, 0);
-  const edgePhase = phase;
-  if (u !== cu) {
-    const inward = u > cu ? -1 : 1;
-    phase += (edgePhase - bilinear(field, cu + inward, cv, 0)) * -inward * (u - cu);
-  }
-  if (v !== cv) {
-    const inward = v > cv ? -1 : 1;
-    phase += (edgePhase - bilinear(field, cu, cv + inward, 0)) * -inward * (v - cv);
-  }
-  return {
-    phase,
-    amplitude: bilinear(field, cu, cv, 1),
-    depth: bilinear(field, cu, cv, 2),
-    breaking: bilinear(field, cu, cv, 3),
-  };
-}
-
-/**
- * The swell's height at world (x, z) and time t: η = a cos(S − ω t).
- * On the GPU, t is taken modulo the swell's period T (ω T = 2π) so a float32 time stays exact.
- */
-export function coastSwellHeight(field: CoastField, x: number, z: number, time: number): number {
-  const { phase, amplitude } = sampleCoastField(field, x, z);
-  return amplitude * Math.cos(phase - field.angularFrequency * time);
+export function coastSwellHeight(field: CoastField, x: number, z: number, time: number, limited = true): number {
+  return coastSwellAt(field, x, z, time, limited).height;
 }
 
 /**

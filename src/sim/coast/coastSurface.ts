@@ -9,7 +9,8 @@ import { windSeaFactor, windSeaHeightOf } from './windSeaDamping';
  * The sea at the coast, the CPU twin of ocean.vert with OCEAN_COAST: the swell of the coast's
  * field plus the wave model's own waves (the wind sea), calmed where the water is shallow,
  * both taken at the world point as the vertex shader takes them at the displaced vertex
- *   η(x, z, t) = f(h) η_wind(x, z, t) + a cos(S − ω t),  f = min(1, γ h / H_wind)
+ *   η(x, z, t) = f(h) η_wind(x, z, t) + s Re Σ A_m e^{i(S_m − ω_m t + φ_m)},  f = min(1, γ h / H_wind)
+ * (s: the swell's envelope limit, coastSwellSlope.ts)
  * and the normal tilted likewise. The boat, the underwater switch and the API read it as they
  * read any wave model. With the wind sea off only the swell is left.
  */
@@ -23,7 +24,7 @@ export class CoastSurface implements LiveWaveModel {
     private floor: SeaFloor,
     private windSea: boolean,
   ) {
-    this.swellBound = largestAmplitude(field);
+    this.swellBound = swellBound(field);
   }
 
   /** A new field, floor or wind-sea switch: every answer may change. */
@@ -31,7 +32,7 @@ export class CoastSurface implements LiveWaveModel {
     this.field = field;
     this.floor = floor;
     this.windSea = windSea;
-    this.swellBound = largestAmplitude(field);
+    this.swellBound = swellBound(field);
     this.revision++;
   }
 
@@ -83,7 +84,7 @@ export class CoastSurface implements LiveWaveModel {
     return this.windFactor(x, z) * wind + coastSwellWithSlope(this.field, x, z, time)[0];
   }
 
-  /** The model's bounds grown by the swell's largest amplitude, so culling stays safe. */
+  /** The model's bounds grown by the swell's largest height (swellBound), so culling stays safe. */
   bounds(): DisplacementBounds {
     const inner = this.inner.bounds();
     return { vertical: (this.windSea ? inner.vertical : 0) + this.swellBound, horizontal: this.windSea ? inner.horizontal : 0 };
@@ -98,9 +99,28 @@ export class CoastSurface implements LiveWaveModel {
   }
 }
 
-/** The largest amplitude anywhere in the field, metres: the swell's bound. */
-export function largestAmplitude(field: CoastField): number {
+/**
+ * The largest |η| the swell can reach anywhere, metres: |η| ≤ min(|Z|, γ h / 2) and |Z| ≤ Σ A_m,
+ * so per cell of the grid the least of Σ A_m and γ h / 2 at their corners' largest values (A is
+ * bilinear between the corners; h is largest at a corner, a plane or a cone's clamped slope),
+ * and the largest over the cells. Beyond the grid the field and the depth are the edge's.
+ */
+export function swellBound(field: CoastField): number {
+  const n = field.resolution;
+  const sum = new Float64Array(n * n);
+  for (const component of field.components) for (let t = 0; t < n * n; t++) sum[t] += Math.abs(component.texels[t * 2 + 1]);
+  const depth = new Float64Array(n * n);
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++)
+      depth[j * n + i] = seaDepth(field.floor, field.originX + i * field.spacing, field.originZ + j * field.spacing);
   let largest = 0;
-  for (let i = 1; i < field.texels.length; i += 4) largest = Math.max(largest, Math.abs(field.texels[i]));
+  for (let j = 0; j < n - 1; j++) {
+    for (let i = 0; i < n - 1; i++) {
+      const t = j * n + i;
+      const amplitude = Math.max(sum[t], sum[t + 1], sum[t + n], sum[t + n + 1]);
+      const deepest = Math.max(depth[t], depth[t + 1], depth[t + n], depth[t + n + 1]);
+      largest = Math.max(largest, Math.min(amplitude, (field.breakerIndex * Math.max(0, deepest)) / 2));
+    }
+  }
   return largest;
 }

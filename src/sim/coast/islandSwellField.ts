@@ -1,7 +1,7 @@
 import { ISLAND_CENTER, ISLAND_RADIUS, OFFSHORE_DEPTH, seaDepth, shelfWidth } from './bathymetry';
-import type { CoastField, CoastSetting } from './coastField';
+import type { CoastField, CoastSetting, SwellComponentField } from './coastField';
 import { type CoastWaveModel, fieldWaveNumber, SHALLOWEST_DEPTH } from './coastWaveModel';
-import { breakingFraction, breakingHeight } from './waveTransformation';
+import type { SwellComponentSpec } from './swellSpectrum';
 
 /** Refraction may focus rays into a caustic, where ray theory's amplitude is infinite; it is capped here (a sane Kr). */
 export const MAX_REFRACTION_COEFFICIENT = 2.5;
@@ -14,21 +14,28 @@ const SMOOTHING_PASSES = 4;
 const MAX_SWEEP_ROUNDS = 12;
 
 /**
- * The swell around the island. Its phase solves the eikonal equation |∇S| = k(h) (geometric
- * optics) for a plane wave arriving from upstream, by fast sweeping (Zhao 2005) on the grid with
- * the island as an obstacle: S is the first arrival, so behind the island, where the waves that
- * wrap round either side meet, S takes the earlier of the two (a kink, not a crossing sea).
- * Its amplitude comes from ray theory: rays are traced from the offshore boundary and their
- * density gives the ray tube's width b, so Kr = √(b0 / b); crossing rays add their energies.
- * Then a = a0 Ks Kr, with Kr capped at MAX_REFRACTION_COEFFICIENT and H capped at γ h.
+ * The swell around the island, component by component. Each phase solves the eikonal equation
+ * |∇S| = k(h) (geometric optics) for a plane wave arriving from upstream, by fast sweeping
+ * (Zhao 2005) on the grid with the island as an obstacle: S is the first arrival, so behind the
+ * island, where the waves that wrap round either side meet, S takes the earlier of the two (a
+ * kink, not a crossing sea). Its amplitude comes from ray theory: rays are traced from the
+ * offshore boundary and their density gives the ray tube's width b, so Kr = √(b0 / b); crossing
+ * rays add their energies. Then A = a0 Ks Kr, with Kr capped at MAX_REFRACTION_COEFFICIENT;
+ * breaking is left to the sum of the components (coastSwellSlope.ts).
  */
-export function buildIslandField(setting: CoastSetting, resolution: number, model: CoastWaveModel): CoastField {
-  const omega = (2 * Math.PI) / setting.swellPeriod;
+export function buildIslandField(
+  setting: CoastSetting,
+  resolution: number,
+  model: CoastWaveModel,
+  components: readonly SwellComponentSpec[],
+): CoastField {
   const slope = setting.beachSlope;
-  const k0 = model.waveNumber(omega, OFFSHORE_DEPTH);
+  // The grid is shared by every component: its margin is one wavelength of the longest of them.
+  const longest = Math.min(...components.map((c) => c.angularFrequency));
+  const kLongest = model.waveNumber(longest, OFFSHORE_DEPTH);
   // A square around the island out to where h = OFFSHORE_DEPTH, with a margin of a tenth or one offshore wavelength.
   const reach = ISLAND_RADIUS + shelfWidth(slope);
-  const half = reach + Math.max(0.1 * reach, (2 * Math.PI) / k0);
+  const half = reach + Math.max(0.1 * reach, (2 * Math.PI) / kLongest);
   const spacing = (2 * half) / (resolution - 1);
   const originX = ISLAND_CENTER[0] - half;
   const originZ = ISLAND_CENTER[1] - half;
@@ -36,36 +43,34 @@ export function buildIslandField(setting: CoastSetting, resolution: number, mode
   const floor = { bathymetry: 'island' as const, beachSlope: slope, deepDepth: OFFSHORE_DEPTH };
 
   const depth = new Float64Array(n * n);
-  const k = new Float64Array(n * n);
   for (let j = 0; j < n; j++) {
-    for (let i = 0; i < n; i++) {
-      const d = seaDepth(floor, originX + i * spacing, originZ + j * spacing);
-      depth[j * n + i] = d;
-      // Beyond the shelf the depth is OFFSHORE_DEPTH and k is k0: no need to solve the dispersion relation again.
-      k[j * n + i] = d >= OFFSHORE_DEPTH ? k0 : fieldWaveNumber(model, omega, d);
-    }
+    for (let i = 0; i < n; i++) depth[j * n + i] = seaDepth(floor, originX + i * spacing, originZ + j * spacing);
   }
   const theta0 = (setting.swellDirection * Math.PI) / 180;
   const direction: [number, number] = [Math.cos(theta0), Math.sin(theta0)];
 
-  const phase = eikonalPhase(n, spacing, depth, k, k0, direction, originX, originZ);
-  const density = rayDensity(n, spacing, depth, k, direction);
+  const islandComponent = (component: SwellComponentSpec): SwellComponentField => {
+    const omega = component.angularFrequency;
+    const k0 = model.waveNumber(omega, OFFSHORE_DEPTH);
+    const k = new Float64Array(n * n);
+    // Beyond the shelf the depth is OFFSHORE_DEPTH and k is k0: no need to solve the dispersion relation again.
+    for (let t = 0; t < n * n; t++) k[t] = depth[t] >= OFFSHORE_DEPTH ? k0 : fieldWaveNumber(model, omega, depth[t]);
+    const phase = eikonalPhase(n, spacing, depth, k, k0, direction, originX, originZ);
+    const density = rayDensity(n, spacing, depth, k, direction);
+    const cg0 = model.groupVelocity(k0, OFFSHORE_DEPTH);
+    const texels = new Float32Array(n * n * 2);
+    for (let t = 0; t < n * n; t++) {
+      const d = depth[t];
+      texels[t * 2] = phase[t];
+      if (d <= 0) continue;
+      const kr = Math.min(MAX_REFRACTION_COEFFICIENT, Math.sqrt(density[t]));
+      const cg = d >= OFFSHORE_DEPTH ? cg0 : model.groupVelocity(k[t], d);
+      texels[t * 2 + 1] = component.amplitude * Math.sqrt(cg0 / cg) * kr;
+    }
+    return { angularFrequency: omega, phaseOffset: component.phaseOffset, texels };
+  };
 
-  const cg0 = model.groupVelocity(k0, OFFSHORE_DEPTH);
-  const gamma = model.breakerIndex;
-  const texels = new Float32Array(n * n * 4);
-  for (let t = 0; t < n * n; t++) {
-    const d = depth[t];
-    texels[t * 4] = phase[t];
-    texels[t * 4 + 2] = d;
-    if (d <= 0) continue;
-    const kr = Math.min(MAX_REFRACTION_COEFFICIENT, Math.sqrt(density[t]));
-    const cg = d >= OFFSHORE_DEPTH ? cg0 : model.groupVelocity(k[t], d);
-    const shoaled = setting.swellHeight * Math.sqrt(cg0 / cg) * kr;
-    texels[t * 4 + 1] = 0.5 * Math.min(shoaled, breakingHeight(d, gamma));
-    texels[t * 4 + 3] = breakingFraction(shoaled, d, gamma);
-  }
-  return { originX, originZ, spacing, resolution, angularFrequency: omega, texels };
+  return { originX, originZ, spacing, resolution, floor, breakerIndex: model.breakerIndex, components: components.map(islandComponent) };
 }
 
 /**

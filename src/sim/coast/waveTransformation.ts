@@ -62,8 +62,9 @@ export function breakingDepth(height: number, breakerIndex: number = MCCOWAN_BRE
 
 /**
  * How much a wave of shoaled height H breaks over `depth`: 0 below 0.9 γ h, 1 from γ h on, a
- * smoothstep between so the surf's foam has a soft seaward edge. A stand-in for the fraction
- * of broken waves in a random sea (Battjes & Janssen 1978), which a single regular swell lacks.
+ * smoothstep between so the surf's foam has a soft seaward edge. The swell takes it at each
+ * instant of its envelope H = 2|Z| (coastSwellSlope.ts): a stand-in for the fraction of broken
+ * waves in a random sea (Battjes & Janssen 1978), which four components do not give.
  */
 export function breakingFraction(height: number, depth: number, breakerIndex: number = MCCOWAN_BREAKER_INDEX): number {
   if (depth <= 0) return height > 0 ? 1 : 0;

@@ -69,7 +69,7 @@ export const ENGLISH_PARAM_LABELS: Record<ParamKey, string> = {
   fogDensity: 'Water fog density',
   bathymetry: 'Sea floor',
   beachSlope: 'Beach slope',
-  swellHeight: 'Swell height H',
+  swellHeight: 'Swell height Hs',
   swellPeriod: 'Swell period',
   swellDirection: 'Swell direction',
   windSea: 'Wind sea',

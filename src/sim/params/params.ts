@@ -159,6 +159,7 @@ export const paramDefs = {
   // The values of Bathymetry (src/sim/coast/bathymetry.ts), written out so the page's first script does not carry that module.
   bathymetry: { kind: 'choice', default: 'deep', options: ['deep', 'beach', 'island'] },
   beachSlope: { kind: 'number', default: 0.02, min: 0.005, max: 0.1, step: 0.005, unit: '' },
+  // The swell's significant height Hs = 4 √m0 and peak period Tp: a JONSWAP spectrum sampled at four frequencies (src/sim/coast/swellSpectrum.ts).
   swellHeight: { kind: 'number', default: 1.5, min: 0, max: 6, step: 0.1, unit: 'm' },
   swellPeriod: { kind: 'number', default: 10, min: 4, max: 20, step: 0.5, unit: 's' },
   // 0 heads straight for the beach's shore (+x); positive turns it towards +z.

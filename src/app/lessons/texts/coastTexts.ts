@@ -5,8 +5,8 @@ import { m } from './mathml';
 export const coastTexts: Record<string, LessonText> = {
   'coast-dispersion': {
     text: {
-      en: 'On the beach a 10 s swell runs in from 60 m of water, where it is L = 154 m long. Its period T stays the same all the way in: as many crests arrive each second as leave. So ω = 2π/T is fixed, and the depth h picks the wavenumber k through ω² = g k tanh(k h), g being gravity. As h falls, k grows: the crests stand 92 m apart at 10 m of water and 44 m apart at 2 m. Their phase speed c = ω/k falls with them towards √(g h): at 2 m, c = 4.37 m/s and √(g h) = 4.43 m/s.',
-      es: 'En la playa un oleaje de 10 s llega desde 60 m de agua, donde mide L = 154 m. Su periodo T no cambia en el camino: cada segundo llegan tantas crestas como salen. Así ω = 2π/T queda fija, y la profundidad h elige el número de onda k mediante ω² = g k tanh(k h), con g la gravedad. Al bajar h, k crece: las crestas distan 92 m a 10 m de profundidad y 44 m a 2 m. Su velocidad de fase c = ω/k baja con ellas hacia √(g h): a 2 m, c = 4,37 m/s y √(g h) = 4,43 m/s.',
+      en: 'On the beach a swell of peak period 10 s runs in from 60 m of water, where a 10 s wave is L = 154 m long. Its period T stays the same all the way in: as many crests arrive each second as leave. So ω = 2π/T is fixed, and the depth h picks the wavenumber k through ω² = g k tanh(k h), g being gravity. As h falls, k grows: the crests stand 92 m apart at 10 m of water and 44 m apart at 2 m. Their phase speed c = ω/k falls with them towards √(g h): at 2 m, c = 4.37 m/s and √(g h) = 4.43 m/s.',
+      es: 'En la playa un oleaje de periodo de pico 10 s llega desde 60 m de agua, donde una ola de 10 s mide L = 154 m. Su periodo T no cambia en el camino: cada segundo llegan tantas crestas como salen. Así ω = 2π/T queda fija, y la profundidad h elige el número de onda k mediante ω² = g k tanh(k h), con g la gravedad. Al bajar h, k crece: las crestas distan 92 m a 10 m de profundidad y 44 m a 2 m. Su velocidad de fase c = ω/k baja con ellas hacia √(g h): a 2 m, c = 4,37 m/s y √(g h) = 4,43 m/s.',
     },
     math:
       m(
@@ -26,15 +26,15 @@ export const coastTexts: Record<string, LessonText> = {
       },
     },
     choice: {
-      en: 'A monochromatic swell: one period and one direction, a regular train, where a real swell spreads over both; below 0.1 m of water k is frozen, where the waves have long broken.',
-      es: 'Un oleaje monocromático: un periodo y una dirección, un tren regular, donde un oleaje real se reparte entre ambos; bajo 0,1 m de agua k se congela, donde las olas ya rompieron.',
+      en: 'A long-crested swell: one direction, and its JONSWAP spectrum sampled at four periods, 11.2, 9.9, 8.8 and 6.1 s, each shortened by the depth on its own; below 0.1 m of water k is frozen, where the waves have long broken.',
+      es: 'Un oleaje de crestas largas: una sola dirección, y su espectro JONSWAP muestreado en cuatro periodos, 11,2; 9,9; 8,8 y 6,1 s, que el fondo acorta cada uno por su lado; bajo 0,1 m de agua k se congela, donde las olas ya rompieron.',
     },
-    references: ['airy1845', 'deanDalrymple1991', 'holthuijsen2007'],
+    references: ['airy1845', 'deanDalrymple1991', 'holthuijsen2007', 'hasselmann1973'],
   },
   'coast-refraction': {
     text: {
-      en: 'Where one end of a crest is in shallower water it moves slower, and the crest turns towards the depth contours: refraction. Over the beach’s straight contours Snell’s law holds: the wavenumber along the shore, k sin θ, does not change, θ being the angle from the contours’ normal; so sin θ / c, c being the phase speed, is constant. A swell at θ₀ = 30° in 60 m of water turns to 17° at 10 m and to 8° at 2 m. Round the island the code solves instead the eikonal equation |∇S| = k(h) for the phase S on a grid, and rays traced across it give the height.',
-      es: 'Donde un extremo de una cresta pisa agua más somera avanza más despacio, y la cresta gira hacia las isóbatas: la refracción. Sobre las isóbatas rectas de la playa rige la ley de Snell: el número de onda a lo largo de la costa, k sen θ, no cambia, con θ el ángulo con la normal a las isóbatas; así sen θ / c, con c la velocidad de fase, es constante. Un oleaje a θ₀ = 30° en 60 m gira a 17° a 10 m y a 8° a 2 m. En la isla el código resuelve en cambio la ecuación eikonal |∇S| = k(h) para la fase S sobre una malla, y los rayos dan la altura.',
+      en: 'Where one end of a crest is in shallower water it moves slower, and the crest turns towards the depth contours: refraction. Over the beach’s straight contours Snell’s law holds: the wavenumber along the shore, k sin θ, does not change, θ being the angle from the contours’ normal; so sin θ / c, c being the phase speed, is constant. A 10 s wave at θ₀ = 30° in 60 m of water turns to 17° at 10 m and to 8° at 2 m. Round the island the code solves instead the eikonal equation |∇S| = k(h) for the phase S on a grid, and rays traced across it give the height.',
+      es: 'Donde un extremo de una cresta pisa aguas someras avanza más despacio, y la cresta gira hacia las isóbatas: la refracción. Sobre las isóbatas rectas de la playa rige la ley de Snell: el número de onda a lo largo de la costa, k sen θ, no cambia, con θ el ángulo con la normal a las isóbatas; así sen θ / c, con c la velocidad de fase, es constante. Una ola de 10 s a θ₀ = 30° en 60 m gira a 17° a 10 m y a 8° a 2 m. En la isla el código resuelve la ecuación eikonal |∇S| = k(h) para la fase S sobre una malla, y los rayos dan la altura.',
     },
     math:
       m(
@@ -46,8 +46,8 @@ export const coastTexts: Record<string, LessonText> = {
         es: 'La isla tapa el mar abierto al agua que queda detrás. ¿Estará en calma esa agua, a sotavento de la isla?',
       },
       answer: {
-        en: 'No: the crests turn towards the shallows all round the island and wrap round both sides, meeting behind it, where the code keeps the earlier of the two trains, so they meet in a kink rather than crossing. Only a strip just behind the island stays nearly calm: 300 m behind its shore the swell is back above 1 m. Look at the lee from above.',
-        es: 'No: las crestas giran hacia el agua somera alrededor de toda la isla y la rodean por ambos lados hasta encontrarse detrás, donde el código se queda con el primero de los dos trenes, así que se juntan en un pico en vez de cruzarse. Solo una franja justo detrás de la isla queda casi en calma: a 300 m de su orilla el oleaje vuelve a superar 1 m. Mira el sotavento desde arriba.',
+        en: 'No: the crests turn towards the shallows all round the island and wrap round both sides, meeting behind it, where the code keeps the earlier of the two trains, so they meet in a kink rather than crossing. Only a strip just behind the island stays nearly calm: 300 m behind its shore the swell’s significant height is back above 1 m. Look at the lee from above.',
+        es: 'No: las crestas giran hacia el agua somera alrededor de toda la isla y la rodean por ambos lados hasta encontrarse detrás, donde el código se queda con el primero de los dos trenes, así que se juntan en un pico en vez de cruzarse. Solo una franja justo detrás de la isla queda casi en calma: a 300 m de su orilla la altura significativa del oleaje vuelve a superar 1 m. Mira el sotavento desde arriba.',
       },
     },
     choice: {
@@ -58,8 +58,8 @@ export const coastTexts: Record<string, LessonText> = {
   },
   'coast-shoaling': {
     text: {
-      en: 'A wave carries energy E ∝ H² per square metre at its group velocity c_g, c/2 (1 + 2kh / sinh 2kh) for phase speed c, wavenumber k and depth h. With no loss before the break E c_g is kept, and H grows where c_g falls: H = H₀ K_s K_r, with the shoaling coefficient K_s = √(c_g0 / c_g) and K_r = 1 for a swell head-on. H₀ = 1.5 m and c_g0 are taken at 60 m. K_s first dips: c_g grows from 8.25 m/s offshore to 9.37 m/s near 25 m, where K_s = 0.94. Then K_s = 1.14 at 5 m, where H = 1.71 m.',
-      es: 'Una ola lleva una energía E ∝ H² por metro cuadrado a su velocidad de grupo c_g, c/2 (1 + 2kh / senh 2kh) para velocidad de fase c, número de onda k y profundidad h. Sin pérdidas antes de romper, E c_g se conserva y H crece donde c_g baja: H = H₀ K_s K_r, con el coeficiente de asomeramiento K_s = √(c_g0 / c_g) y K_r = 1 para un oleaje de frente. H₀ = 1,5 m y c_g0 se toman a 60 m. K_s primero baja: c_g crece de 8,25 m/s mar adentro a 9,37 m/s cerca de 25 m, donde K_s = 0,94. Luego K_s = 1,14 a 5 m, donde H = 1,71 m.',
+      en: 'A wave carries energy E ∝ H² per square metre at its group velocity c_g, c/2 (1 + 2kh / sinh 2kh) for phase speed c, wavenumber k and depth h. With no loss before the break E c_g is kept, and H grows where c_g falls: H = H₀ K_s K_r, with the shoaling coefficient K_s = √(c_g0 / c_g) and K_r = 1 for a swell head-on. Each swell component shoals so: a 10 s wave of H₀ = 1.5 m, c_g0 at 60 m. K_s first dips: c_g grows from 8.25 m/s offshore to 9.37 m/s near 25 m, where K_s = 0.94. Then K_s = 1.14 at 5 m, where H = 1.71 m.',
+      es: 'Una ola lleva una energía E ∝ H² por m² a su velocidad de grupo c_g = c/2 (1 + 2kh / senh 2kh), con c la velocidad de fase, k el número de onda y h la profundidad. Sin pérdidas, E c_g se conserva y H crece donde c_g baja: H = H₀ K_s K_r, con K_s = √(c_g0 / c_g), el coeficiente de asomeramiento, y K_r = 1 de frente. Cada componente del oleaje se asomera así; aquí, 10 s, H₀ = 1,5 m y c_g0 a 60 m. c_g crece de 8,25 m/s a 9,37 m/s cerca de 25 m, donde K_s = 0,94. Luego K_s = 1,14 a 5 m, donde H = 1,71 m.',
     },
     math:
       m(
@@ -70,8 +70,8 @@ export const coastTexts: Record<string, LessonText> = {
       ),
     question: {
       ask: {
-        en: 'As the swell leaves 60 m of water for 25 m, will it grow, shrink or keep its height?',
-        es: 'Cuando el oleaje pasa de 60 m de profundidad a 25 m, ¿crece, mengua o conserva su altura?',
+        en: 'As a 10 s wave of the swell leaves 60 m of water for 25 m, will it grow, shrink or keep its height?',
+        es: 'Cuando una ola de 10 s del oleaje pasa de 60 m de profundidad a 25 m, ¿crece, mengua o conserva su altura?',
       },
       answer: {
         en: 'It shrinks, by about 6 %: at 25 m the wave is in intermediate water, where c_g, between half of c and all of it, is larger than offshore, so the same energy flux needs less height. It grows only inside about 11 m of water.',
@@ -86,8 +86,8 @@ export const coastTexts: Record<string, LessonText> = {
   },
   'coast-breaking': {
     text: {
-      en: 'Shoaling cannot go on: a wave breaks when its height reaches a fraction γ of the depth, the breaker index. McCowan found γ = 0.78 for a solitary wave, and the code takes it: H_b = γ h_b. The 1.5 m, 10 s swell grows to H = 1.98 m at h = 2.54 m, where H = γ h: the breaking line, not at H₀/γ = 1.92 m, since it has grown first. To the sand the surf zone is saturated, H = γ h, and foam covers each crest’s front. At slope s = 0.02 the surf zone is x_surf = h_b / s ≈ 127 m wide.',
-      es: 'El asomeramiento no sigue sin fin: una ola rompe cuando su altura alcanza una fracción γ de la profundidad, el índice de rotura. McCowan halló γ = 0,78 para una onda solitaria, y el código lo usa: H_b = γ h_b. El oleaje de 1,5 m y 10 s crece hasta H = 1,98 m a h = 2,54 m, donde H = γ h: la línea de rotura, no en H₀/γ = 1,92 m, porque antes ha crecido. Hasta la arena la zona de rompientes está saturada, H = γ h, y la espuma cubre el frente de cada cresta. Con pendiente s = 0,02, la zona de rompientes mide x_surf = h_b / s ≈ 127 m.',
+      en: 'A wave breaks when its height reaches a fraction γ of the depth, the breaker index: H_b = γ h_b, with McCowan’s γ = 0.78. One 1.5 m, 10 s wave would grow to H = 1.98 m and break at h = 2.54 m, not at H₀/γ = 1.92 m, since it grows first. But the swell comes in sets: its four components add up to crests of 2 Σ A, so a set’s biggest waves break first, further out, at 3.24 m. Inside, H = γ h, and foam covers each breaking crest. At slope s = 0.02 the surf zone is x_surf = h_b / s ≈ 162 m wide.',
+      es: 'Una ola rompe cuando su altura alcanza una fracción γ de la profundidad, el índice de rotura: H_b = γ h_b, con el γ = 0,78 de McCowan. Una ola de 1,5 m y 10 s crecería a H = 1,98 m y rompería a h = 2,54 m, no en H₀/γ = 1,92 m, porque antes crece. El oleaje llega en series: sus cuatro componentes suman crestas de 2 Σ A, así que las olas mayores de cada serie rompen primero, más afuera, a 3,24 m. Dentro, H = γ h, y la espuma cubre cada cresta que rompe. Con pendiente s = 0,02, la zona de rompientes mide x_surf = h_b / s ≈ 162 m.',
     },
     math:
       m(
@@ -102,14 +102,14 @@ export const coastTexts: Record<string, LessonText> = {
         es: 'Si duplicas la altura del oleaje de 1,5 a 3 m, ¿la zona de rompientes se hace el doble de ancha?',
       },
       answer: {
-        en: 'Not quite: the 3 m swell breaks at h ≈ 4.49 m with H ≈ 3.50 m, so the surf zone is about 224 m wide, 1.77 times as wide: in deeper water a wave has shoaled less when it breaks. Move Swell height and watch the foam’s seaward edge.',
-        es: 'No del todo: el oleaje de 3 m rompe a h ≈ 4,49 m con H ≈ 3,50 m, así que la zona de rompientes mide unos 224 m, 1,77 veces más: en agua más profunda una ola se ha asomerado menos al romper. Mueve la altura del oleaje y mira el borde de la espuma hacia el mar.',
+        en: 'Not quite: with 3 m the set’s biggest waves break at h ≈ 5.80 m, so the surf zone is about 290 m wide, 1.79 times as wide: in deeper water a wave has shoaled less when it breaks. Move Swell height and watch the foam’s seaward edge.',
+        es: 'No del todo: con 3 m las olas mayores de cada serie rompen a h ≈ 5,80 m, así que la zona de rompientes mide unos 290 m, 1,79 veces más: en agua más profunda una ola se ha asomerado menos al romper. Mueve la altura del oleaje y mira el borde de la espuma hacia el mar.',
       },
     },
     choice: {
-      en: 'The surf is saturated, H = γ h to the shore, as Thornton and Guza found on average, not a random sea’s share of broken waves; the foam fades in from 0.9 γ h, and its shape on the crest is artistic.',
-      es: 'La rompiente está saturada, H = γ h hasta la orilla, como hallaron en promedio Thornton y Guza, no la fracción de olas rotas de un mar aleatorio; la espuma aparece desde 0,9 γ h, y su forma sobre la cresta es artística.',
+      en: 'The limit acts on the envelope 2|Z| of the four components’ sum, a narrow-band sea’s wave height, saturating the surf as Thornton and Guza found on average; the foam fades in from 0.9 γ h, and its shape on the crest is artistic.',
+      es: 'El límite actúa sobre la envolvente 2|Z| de la suma de las cuatro componentes, la altura de ola de un mar de banda estrecha, y satura la rompiente como hallaron en promedio Thornton y Guza; la espuma aparece desde 0,9 γ h, y su forma sobre la cresta es artística.',
     },
-    references: ['mcCowan1894', 'thorntonGuza1983', 'battjesJanssen1978', 'holthuijsen2007'],
+    references: ['mcCowan1894', 'thorntonGuza1983', 'battjesJanssen1978', 'hasselmann1973', 'holthuijsen2007'],
   },
 };

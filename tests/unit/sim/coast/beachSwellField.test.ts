@@ -11,6 +11,7 @@ import {
   snellAngle,
 } from '../../../../src/sim/coast/waveTransformation';
 import { GRAVITY, waveNumber } from '../../../../src/sim/waves/dispersion';
+import { regularSwell } from '../../../../src/sim/coast/swellSpectrum';
 import { crestFrontNear, crestsAlongX, heightOverPeriod, relativeError, TEST_BEACH } from '../../../support/coastSurface';
 
 const SETTING = TEST_BEACH;
@@ -24,8 +25,10 @@ const DEEP_WATER_ONLY: CoastWaveModel = {
   breakerIndex: MCCOWAN_BREAKER_INDEX,
 };
 
+/** The field of one regular wave train of the setting's height and period: linear theory's own, which these tests measure. */
 const build = (setting: Partial<CoastSetting> = {}, model: CoastWaveModel = LINEAR_THEORY, resolution = 256): CoastField => {
-  const field = buildCoastField({ ...SETTING, ...setting }, resolution, model);
+  const full = { ...SETTING, ...setting };
+  const field = buildCoastField(full, resolution, model, regularSwell(full));
   if (!field) throw new Error('a beach has a field');
   return field;
 };

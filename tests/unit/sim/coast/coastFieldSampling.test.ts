@@ -4,19 +4,23 @@ import type { CoastField, CoastSetting } from '../../../../src/sim/coast/coastFi
 import { coastSwellDisplacement, coastSwellHeight, coastSwellNormal, sampleCoastField } from '../../../../src/sim/coast/coastFieldSampling';
 import { buildCoastField } from '../../../../src/sim/coast/coastSwellField';
 import { waveNumber } from '../../../../src/sim/waves/dispersion';
+import { regularSwell } from '../../../../src/sim/coast/swellSpectrum';
 import { TEST_BEACH } from '../../../support/coastSurface';
 
 const SETTING = TEST_BEACH;
 const OMEGA = (2 * Math.PI) / SETTING.swellPeriod;
 const THETA0 = (SETTING.swellDirection * Math.PI) / 180;
 
+/** One regular wave train, whose phase and amplitude these tests read. */
 const build = (setting: Partial<CoastSetting> = {}, resolution = 256): CoastField => {
-  const field = buildCoastField({ ...SETTING, ...setting }, resolution);
+  const full = { ...SETTING, ...setting };
+  const field = buildCoastField(full, resolution, undefined, regularSwell(full));
   if (!field) throw new Error('a beach has a field');
   return field;
 };
 const FIELD = build();
-const texel = (field: CoastField, i: number, j: number, channel: number): number => field.texels[(j * field.resolution + i) * 4 + channel];
+const texel = (field: CoastField, i: number, j: number, channel: number): number =>
+  field.components[0].texels[(j * field.resolution + i) * 2 + channel];
 const centre = (field: CoastField, i: number, j: number): [number, number] => [
   field.originX + i * field.spacing,
   field.originZ + j * field.spacing,
@@ -112,7 +116,7 @@ describe("the bilinear error of the phase (S's curvature times spacing² / 8)", 
   });
 });
 
-describe('the surface: a vertical swell η = a cos(S − ω t)', () => {
+describe('the surface of one component: a vertical swell η = a cos(S − ω t)', () => {
   const x = BEACH_SHORE_X - 300;
 
   it('the displacement is vertical, equals the height, and repeats after one period', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { CoastSurface, largestAmplitude } from '../../../../src/sim/coast/coastSurface';
+import { CoastSurface, swellBound } from '../../../../src/sim/coast/coastSurface';
 import { buildCoastField } from '../../../../src/sim/coast/coastSwellField';
 import { coastSwellHeight } from '../../../../src/sim/coast/coastFieldSampling';
 import { BEACH_SHORE_X, seaDepth, type SeaFloor } from '../../../../src/sim/coast/bathymetry';
@@ -7,9 +7,10 @@ import { SeedWaveModel } from '../../../../src/sim/waves/seed/seedWaveModel';
 import type { LiveWaveModel } from '../../../../src/sim/waves/waveModel';
 import { defaultParams } from '../../../../src/sim/params/params';
 import { BREAKER_INDEX } from '../../../../src/sim/coast/windSeaDamping';
+import { seededRandom } from '../../../../src/sim/noise/integerHash';
 
 const floor: SeaFloor = { bathymetry: 'beach', beachSlope: 0.02, deepDepth: 1000 };
-const field = buildCoastField({ ...floor, swellHeight: 1.5, swellPeriod: 10, swellDirection: 10 }, 128)!;
+const field = buildCoastField({ ...floor, swellHeight: 1.5, swellPeriod: 10, swellDirection: 10, seed: 1 }, 128)!;
 /** The seed's sea (sines and Perlin ripples) as the wind sea. */
 const wind = (): LiveWaveModel => new SeedWaveModel(defaultParams());
 
@@ -52,11 +53,28 @@ describe('the CPU twin at the coast', () => {
     expect(-normal[0] / normal[1]).toBeCloseTo(slope, 3);
   });
 
-  it('grows the culling bounds by the swell’s largest amplitude', () => {
+  it('grows the culling bounds by the swell’s largest height', () => {
     const model = wind();
     const surface = new CoastSurface(model, field, floor, true);
-    expect(largestAmplitude(field)).toBeGreaterThan(0.75);
-    expect(surface.bounds().vertical).toBeCloseTo(model.bounds().vertical + largestAmplitude(field), 12);
+    expect(swellBound(field)).toBeGreaterThan(0.75);
+    expect(surface.bounds().vertical).toBeCloseTo(model.bounds().vertical + swellBound(field), 12);
+  });
+
+  it('the swell’s bound holds: no |η| at 4000 seeded points and times over the beach exceeds it', () => {
+    const random = seededRandom(4902);
+    const span = field.spacing * (field.resolution - 1);
+    let largest = 0;
+    for (let s = 0; s < 4000; s++) {
+      const x = field.originX - 0.1 * span + random() * 1.2 * span;
+      const z = field.originZ + random() * span;
+      largest = Math.max(largest, Math.abs(coastSwellHeight(field, x, z, random() * 1000)));
+    }
+    expect(largest).toBeLessThanOrEqual(swellBound(field));
+    // Control: one component's largest amplitude, a regular train's bound, is no bound for their sum.
+    let oneComponent = 0;
+    for (const component of field.components)
+      for (let t = 1; t < component.texels.length; t += 2) oneComponent = Math.max(oneComponent, component.texels[t]);
+    expect(largest).toBeGreaterThan(oneComponent);
   });
 
   it('negative control: the wind sea on changes the answer where the water is deep', () => {

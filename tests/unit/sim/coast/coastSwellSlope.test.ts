@@ -5,11 +5,11 @@ import { buildCoastField } from '../../../../src/sim/coast/coastSwellField';
 import { seededRandom } from '../../../../src/sim/noise/integerHash';
 
 const beach = buildCoastField(
-  { bathymetry: 'beach', beachSlope: 0.02, deepDepth: 1000, swellHeight: 1.5, swellPeriod: 10, swellDirection: 15 },
+  { bathymetry: 'beach', beachSlope: 0.02, deepDepth: 1000, swellHeight: 1.5, swellPeriod: 10, swellDirection: 15, seed: 1 },
   128,
 )!;
 const island = buildCoastField(
-  { bathymetry: 'island', beachSlope: 0.05, deepDepth: 1000, swellHeight: 2, swellPeriod: 8, swellDirection: 0 },
+  { bathymetry: 'island', beachSlope: 0.05, deepDepth: 1000, swellHeight: 2, swellPeriod: 8, swellDirection: 0, seed: 1 },
   128,
 )!;
 

@@ -17,6 +17,7 @@ import { sampleCoastField } from '../../../../../src/sim/coast/coastFieldSamplin
 import { LINEAR_THEORY, SHALLOWEST_DEPTH, type CoastWaveModel } from '../../../../../src/sim/coast/coastWaveModel';
 import { MAX_REFRACTION_COEFFICIENT } from '../../../../../src/sim/coast/islandSwellField';
 import type { CoastSetting } from '../../../../../src/sim/coast/coastField';
+import { regularSwell, swellComponents } from '../../../../../src/sim/coast/swellSpectrum';
 
 /**
  * Every number on the coast's cards (coast-dispersion, coast-refraction, coast-shoaling,
@@ -51,7 +52,11 @@ const setting = (p: OceanParams): CoastSetting => ({
   swellHeight: p.swellHeight,
   swellPeriod: p.swellPeriod,
   swellDirection: p.swellDirection,
+  seed: p.seed,
 });
+/** The field of one regular wave train of the view's height and period: linear theory's, which the cards' single-wave figures speak of. */
+const regularField = (p: OceanParams, resolution: number, model: CoastWaveModel = LINEAR_THEORY) =>
+  buildCoastField(setting(p), resolution, model, regularSwell(setting(p)))!;
 
 /**
  * The depth where a swell of offshore height H₀ (given at OFFSHORE_DEPTH), period T and
@@ -70,6 +75,29 @@ function breakingLine(height0: number, period: number, theta0: number, gamma = M
     else deep = mid;
   }
   return { depth: shallow, height: shoaled(shallow) };
+}
+
+/**
+ * The depth where a set's biggest wave, 2 Σ A_m (every component of the swell's spectrum at its
+ * crest at once, each shoaled and refracted on its own), first reaches γ h, by bisection.
+ */
+function setBreakingLine(p: OceanParams, swellHeight = p.swellHeight, gamma = MCCOWAN_BREAKER_INDEX): { depth: number; height: number } {
+  const theta0 = (p.swellDirection * Math.PI) / 180;
+  const envelope = (h: number) =>
+    2 *
+    swellComponents({ ...setting(p), swellHeight }).reduce((sum, c) => {
+      const omega = c.angularFrequency;
+      const kr = refractionCoefficient(theta0, snellAngle(omega, theta0, h, OFFSHORE_DEPTH));
+      return sum + c.amplitude * shoalingCoefficient(omega, h, OFFSHORE_DEPTH) * kr;
+    }, 0);
+  let shallow = 0.05;
+  let deep = OFFSHORE_DEPTH;
+  for (let i = 0; i < 80; i++) {
+    const mid = 0.5 * (shallow + deep);
+    if (envelope(mid) >= gamma * mid) shallow = mid;
+    else deep = mid;
+  }
+  return { depth: shallow, height: envelope(shallow) };
 }
 
 describe('the coast’s views', () => {
@@ -135,11 +163,26 @@ describe('coast-dispersion: ω² = g k tanh(k h) shortens and slows the swell', 
     expect(roundsTo('0.1', 0.2)).toBe(false);
   });
 
+  // Control: the periods of four evenly spaced frequencies across the band are not the card's.
+  it('the choice line’s four periods are the swell spectrum’s components for the view’s 10 s peak', () => {
+    const periods = swellComponents(setting(viewParams('coast-dispersion'))).map((c) => (2 * Math.PI) / c.angularFrequency);
+    for (const lang of LANGS) {
+      const choice = LESSON_TEXTS['coast-dispersion'].choice![lang];
+      const quoted = /(?:periods|periodos),? ([0-9]+[.,][0-9])[,;] ([0-9]+[.,][0-9])[,;] ([0-9]+[.,][0-9]) (?:and|y) ([0-9]+[.,][0-9]) s/
+        .exec(choice)!
+        .slice(1)
+        .map((q) => q.replace(',', '.'));
+      quoted.forEach((q, m) => expect(roundsTo(q, periods[m]), `${lang} ${q}`).toBe(true));
+    }
+    const evenly = [0.8125, 1.4375, 2.0625, 2.6875].map((f) => 10 / f);
+    expect(roundsTo('9.9', evenly[1])).toBe(false);
+  });
+
   // Control: a field built with deep water's dispersion keeps 154 m crests all the way in.
   it('the field’s own crests across the beach stand 92 m apart at 10 m and 44 m at 2 m (within 3 %)', () => {
     const p = viewParams('coast-dispersion');
     const spacingAt = (depth: number, model: CoastWaveModel = LINEAR_THEORY) => {
-      const field = buildCoastField(setting(p), 512, model)!;
+      const field = regularField(p, 512, model);
       const x = BEACH_SHORE_X - depth / p.beachSlope;
       const dS = sampleCoastField(field, x + 5, 0).phase - sampleCoastField(field, x - 5, 0).phase;
       return (2 * Math.PI * 10) / dS;
@@ -177,7 +220,12 @@ describe('coast-refraction: Snell on the beach, the eikonal round the island', (
   it('the island’s lee is calm only in a strip behind the shore: 300 m behind it the swell is back above 1 m', () => {
     const p = viewParams('coast-refraction');
     const field = buildCoastField(setting(p), 256)!;
-    const behind = (metres: number) => 2 * sampleCoastField(field, ISLAND_CENTER[0] + ISLAND_RADIUS + metres, ISLAND_CENTER[1]).amplitude;
+    // The swell's local significant height, 4 √m0 with m0 = Σ A_m² / 2 over its components.
+    const behind = (metres: number) => {
+      const x = ISLAND_CENTER[0] + ISLAND_RADIUS + metres;
+      const m0 = field.components.reduce((sum, _, m) => sum + sampleCoastField(field, x, ISLAND_CENTER[1], m).amplitude ** 2 / 2, 0);
+      return 4 * Math.sqrt(m0);
+    };
     for (const lang of LANGS) {
       const answer = LESSON_TEXTS['coast-refraction'].question.answer[lang];
       const [, distance, height] = /([0-9]+) m (?:behind its shore|de su orilla)[^0-9]+([0-9]+) m/.exec(answer)!.map(Number);
@@ -228,7 +276,7 @@ describe('coast-shoaling: H = H₀ Ks Kr, the energy flux kept', () => {
   // Control: H₀ / Ks instead of H₀ Ks gives 1.31 m, not 1.71.
   it('Ks = 1.14 at 5 m, where H = 1.71 m, and the beach’s field holds that height', () => {
     const p = viewParams('coast-shoaling');
-    const field = buildCoastField(setting(p), 512)!;
+    const field = regularField(p, 512);
     const x = BEACH_SHORE_X - 5 / p.beachSlope;
     const fieldHeight = 2 * sampleCoastField(field, x, 0).amplitude;
     for (const lang of LANGS) {
@@ -245,7 +293,7 @@ describe('coast-shoaling: H = H₀ Ks Kr, the energy flux kept', () => {
   it('the answer: from 60 to 25 m the swell shrinks by about 6 %, in the field too; Ks is back to 1 near 11 m', () => {
     const p = viewParams('coast-shoaling');
     const at25 = (model: CoastWaveModel = LINEAR_THEORY) =>
-      (2 * sampleCoastField(buildCoastField(setting(p), 256, model)!, BEACH_SHORE_X - 25 / p.beachSlope, 0).amplitude) / p.swellHeight;
+      (2 * sampleCoastField(regularField(p, 256, model), BEACH_SHORE_X - 25 / p.beachSlope, 0).amplitude) / p.swellHeight;
     for (const lang of LANGS) {
       const answer = LESSON_TEXTS['coast-shoaling'].question.answer[lang];
       const shrink = Number(/([0-9]+) %/.exec(answer)![1]) / 100;
@@ -263,7 +311,7 @@ describe('coast-shoaling: H = H₀ Ks Kr, the energy flux kept', () => {
   });
 });
 
-describe('coast-breaking: H_b = γ h, γ = 0.78, the saturated surf zone', () => {
+describe('coast-breaking: H_b = γ h, γ = 0.78, a set’s biggest waves first', () => {
   const p = () => viewParams('coast-breaking');
 
   // Control: another index does not round to the card's.
@@ -278,18 +326,32 @@ describe('coast-breaking: H_b = γ h, γ = 0.78, the saturated surf zone', () =>
   });
 
   // Control: H₀/γ, the depth a wave that had not shoaled would break at, is 1.92 m, not 2.54.
-  it('the 1.5 m, 10 s swell breaks at h = 2.54 m with H = 1.98 m, not at H₀/γ = 1.92 m; the surf zone is 127 m wide', () => {
-    const { swellHeight, swellPeriod, beachSlope } = p();
+  it('one 1.5 m, 10 s wave breaks at h = 2.54 m with H = 1.98 m, not at H₀/γ = 1.92 m', () => {
+    const { swellHeight, swellPeriod } = p();
     const line = breakingLine(swellHeight, swellPeriod, 0);
     for (const lang of LANGS) {
       const t = LESSON_TEXTS['coast-breaking'].text[lang];
       expect(roundsTo(quotedAfter(t, 'H ='), line.height), lang).toBe(true);
       expect(roundsTo(quotedAfter(t, 'h ='), line.depth), lang).toBe(true);
       expect(roundsTo(quotedAfter(t, 'H₀/γ ='), breakingDepth(swellHeight)), lang).toBe(true);
-      expect(roundsTo(quotedAfter(t, '≈'), line.depth / beachSlope), lang).toBe(true);
     }
     expect(line.height).toBeCloseTo(MCCOWAN_BREAKER_INDEX * line.depth, 6);
     expect(roundsTo('2.54', breakingDepth(swellHeight))).toBe(false);
+  });
+
+  // Control: the single wave's 2.54 m and 127 m are not the set's.
+  it('a set’s biggest waves, 2 Σ A of the four components, break first at 3.24 m; the surf zone is 162 m wide', () => {
+    const set = setBreakingLine(p());
+    for (const lang of LANGS) {
+      const t = LESSON_TEXTS['coast-breaking'].text[lang];
+      const first = /(?:break first, further out, at|rompen primero, más afuera, a) ([0-9]+[.,][0-9]+) m/.exec(t)![1].replace(',', '.');
+      expect(roundsTo(first, set.depth), lang).toBe(true);
+      expect(roundsTo(quotedAfter(t, '≈'), set.depth / p().beachSlope), lang).toBe(true);
+    }
+    expect(set.height).toBeCloseTo(MCCOWAN_BREAKER_INDEX * set.depth, 6);
+    const single = breakingLine(p().swellHeight, p().swellPeriod, 0);
+    expect(roundsTo('3.24', single.depth)).toBe(false);
+    expect(roundsTo('162', single.depth / p().beachSlope)).toBe(false);
   });
 
   // Control: the field built with γ = 0.6 breaks further out, beyond the tolerance.
@@ -297,9 +359,11 @@ describe('coast-breaking: H_b = γ h, γ = 0.78, the saturated surf zone', () =>
     const { swellHeight, swellPeriod } = p();
     const line = breakingLine(swellHeight, swellPeriod, 0);
     const fullyBroken = (model: CoastWaveModel = LINEAR_THEORY) => {
-      const field = buildCoastField(setting(p()), 512, model)!;
-      const n = field.resolution;
-      for (let i = 0; i < n; i++) if (field.texels[i * 4 + 3] >= 1) return { depth: field.texels[i * 4 + 2], field };
+      const field = regularField(p(), 512, model);
+      for (let i = 0; i < field.resolution; i++) {
+        const at = sampleCoastField(field, field.originX + i * field.spacing, field.originZ);
+        if (at.breaking >= 1) return { depth: at.depth, field };
+      }
       throw new Error('never broken');
     };
     const { depth, field } = fullyBroken();
@@ -312,21 +376,20 @@ describe('coast-breaking: H_b = γ h, γ = 0.78, the saturated surf zone', () =>
     expect(Math.abs(early.depth - line.depth)).toBeGreaterThan(texelDepth);
   });
 
-  // Control: a surf zone that doubled with the height would be 254 m, not 224.
-  it('the answer: a 3 m swell breaks at 4.49 m with H = 3.50 m, a surf zone 224 m wide, 1.77 times as wide', () => {
-    const { swellHeight, swellPeriod, beachSlope } = p();
-    const small = breakingLine(swellHeight, swellPeriod, 0);
+  // Control: a surf zone that doubled with the height would be 324 m, not 290.
+  it('the answer: with Hs = 3 m a set’s biggest waves break at 5.80 m, a surf zone 290 m wide, 1.79 times as wide', () => {
+    const { swellHeight, beachSlope } = p();
+    const small = setBreakingLine(p());
     for (const lang of LANGS) {
       const card = LESSON_TEXTS['coast-breaking'].question;
       const [, from, to] = /(?:from|de) ([0-9]+[.,][0-9]+) (?:to|a) ([0-9]+) m/.exec(card.ask[lang])!;
       expect(Number(from.replace(',', '.'))).toBe(swellHeight);
-      const big = breakingLine(Number(to), swellPeriod, 0);
+      const big = setBreakingLine(p(), Number(to));
       const answer = card.answer[lang];
       expect(roundsTo(quotedAfter(answer, 'h ≈'), big.depth), lang).toBe(true);
-      expect(roundsTo(quotedAfter(answer, 'H ≈'), big.height), lang).toBe(true);
       expect(roundsTo(quotedAfter(answer, '(?:about|unos)'), big.depth / beachSlope), lang).toBe(true);
       expect(roundsTo(/([0-9]+[.,][0-9]+) (?:times|veces)/.exec(answer)![1].replace(',', '.'), big.depth / small.depth), lang).toBe(true);
     }
-    expect(roundsTo('224', (2 * small.depth) / beachSlope)).toBe(false);
+    expect(roundsTo('290', (2 * small.depth) / beachSlope)).toBe(false);
   });
 });
