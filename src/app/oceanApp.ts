@@ -406,7 +406,7 @@ export class OceanApp {
   depth = (x: number, z: number): number => {
     checkSurfacePoint(x, z);
     const coast = this.view.ocean.coast;
-    if (coast) return coast.depth(x, z);
+    if (coast?.active) return coast.depth(x, z);
     if (this.params.bathymetry === 'deep') return this.params.depth;
     throw new Error("oceano.depth: the coast's code is still on its way; await oceano.ready or oceano.loaded() first.");
   };

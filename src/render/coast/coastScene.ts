@@ -14,7 +14,6 @@ import type { LiveWaveModel } from '../../sim/waves/waveModel';
 import type { Submersion } from '../../sim/underwater/snellWindow';
 import { seaDepth, type SeaFloor } from '../../sim/coast/bathymetry';
 import type { CoastField, CoastSetting } from '../../sim/coast/coastField';
-import { buildCoastField } from '../../sim/coast/coastSwellField';
 import { CoastSurface } from '../../sim/coast/coastSurface';
 import { componentAdvance } from '../../sim/coast/coastSwellSlope';
 import { swellComponents, type SwellComponentSpec } from '../../sim/coast/swellSpectrum';
@@ -28,6 +27,7 @@ import type { WaveModelView } from '../waves/waveModelView';
 import { createCoastUniforms } from './coastUniforms';
 import { CoastLand } from './coastLand';
 import { coastChunk } from './coastChunk';
+import { CoastFieldBuilder } from './coastFieldBuilder';
 
 /** The sea bed on a coast: as wide as the flat one, its vertices 10 m apart so that it follows the floor's bends. */
 const BED_SIZE = 4000;
@@ -102,7 +102,12 @@ export class CoastScene {
   private surface: CoastSurface | null = null;
   private floor: SeaFloor | null = null;
   private windSea = true;
-  private built: string | null = null;
+  /** The setting last asked for, and its key without the seed (what a field is built for). */
+  private setting: CoastSetting | null = null;
+  private requested: string | null = null;
+  private arrival: Promise<void> = Promise.resolve();
+  private readonly builder = new CoastFieldBuilder();
+  private disposed = false;
   /** The compared models' oceans (compare=…) drawn over this coast, each with its own wind-sea limit. */
   private readonly sides = new Map<OceanMaterial, { value: Vector2 }>();
 
@@ -111,39 +116,68 @@ export class CoastScene {
     // The ocean's two programs share one uniforms object.
     Object.assign(ocean.material.uniforms, this.uniforms);
     Object.assign(ocean.seaBed.material.uniforms, this.uniforms);
-    for (const material of this.materials()) setMaterialDefine(material, 'OCEAN_COAST', true);
     this.flatBed = ocean.seaBed.mesh.geometry;
-    ocean.seaBed.mesh.geometry = this.bed;
-    // The bed rises through the waves: the caustics' test of which side of the surface a point is on stays in.
-    ocean.seaBed.setDepth(0, Infinity);
     this.land = new CoastLand(ocean.material.uniforms);
-    ocean.add(this.land.mesh);
+  }
+
+  /** Whether the first field has arrived and the coast is drawn; until then the ocean is the open sea's. */
+  get active(): boolean {
+    return this.field !== null;
+  }
+
+  /** The coast takes over the ocean's programs, its sea bed and the land once it has a field to draw. */
+  private activate(): void {
+    for (const material of this.materials()) setMaterialDefine(material, 'OCEAN_COAST', true);
+    this.ocean.seaBed.mesh.geometry = this.bed;
+    this.ocean.add(this.land.mesh);
   }
 
   private materials() {
     return [this.ocean.material, this.ocean.material.near, this.ocean.seaBed.material];
   }
 
-  /** Builds the field again only when the setting changed (a change of the wind sea or the seed alone rebuilds nothing). */
-  setParams(params: OceanParams): void {
+  /**
+   * Builds the field again, in a Worker (coastFieldBuilder.ts), only when the setting changed (a
+   * change of the wind sea or the seed alone rebuilds nothing). Settles once the field of this
+   * setting is drawn; until then the previous one stays (or, the first time, the open sea).
+   */
+  setParams(params: OceanParams): Promise<void> {
     const setting = coastSettingOf(params);
+    this.setting = setting;
     // The seed moves only the components' phase offsets: a new seed re-phases the field built, not rebuilds it.
     const key = JSON.stringify({ ...setting, seed: undefined });
     this.windSea = params.windSea;
-    if (key === this.built && this.field) this.field = withPhaseOffsets(this.field, swellComponents(setting));
-    if (key !== this.built) {
-      const field = buildCoastField(setting);
-      if (!field) throw new Error('CoastScene: a deep sea has no coast.');
-      this.built = key;
-      const floor: SeaFloor = { bathymetry: setting.bathymetry, beachSlope: setting.beachSlope, deepDepth: setting.deepDepth };
-      if (this.floor?.bathymetry !== floor.bathymetry || this.floor.beachSlope !== floor.beachSlope) this.land.setFloor(floor);
-      this.floor = floor;
-      this.field = field;
-      this.upload(field);
-      this.uniforms.uCoastFloor.value.set(floor.bathymetry === 'island' ? 2 : 1, floor.beachSlope);
-    }
     this.uniforms.uCoastWind.value.x = this.windSea ? 1 : 0;
-    if (this.surface && this.field && this.floor) this.surface.setCoast(this.field, this.floor, this.windSea);
+    if (key !== this.requested) {
+      this.requested = key;
+      this.arrival = this.builder.build(setting).then((field) => this.adopt(key, field));
+      return this.arrival;
+    }
+    if (this.field && this.floor) {
+      this.field = withPhaseOffsets(this.field, swellComponents(setting));
+      this.surface?.setCoast(this.field, this.floor, this.windSea);
+      this.update(this.ocean.time);
+    }
+    return this.arrival;
+  }
+
+  /** The field of request `key` has arrived: drawn, unless a newer request has replaced it or the coast is gone. */
+  private adopt(key: string, built: CoastField | null): void {
+    if (this.disposed || key !== this.requested) return;
+    if (!built) throw new Error('CoastScene: a deep sea has no coast.');
+    const setting = this.setting!;
+    // The newest seed's phases, should the seed have changed while the field was being built.
+    const field = withPhaseOffsets(built, swellComponents(setting));
+    const floor: SeaFloor = { bathymetry: setting.bathymetry, beachSlope: setting.beachSlope, deepDepth: setting.deepDepth };
+    if (this.floor?.bathymetry !== floor.bathymetry || this.floor.beachSlope !== floor.beachSlope) this.land.setFloor(floor);
+    const first = !this.field;
+    this.floor = floor;
+    this.field = field;
+    this.upload(field);
+    this.uniforms.uCoastFloor.value.set(floor.bathymetry === 'island' ? 2 : 1, floor.beachSlope);
+    if (first) this.activate();
+    this.surface?.setCoast(field, floor, this.windSea);
+    // The bed rises through the waves: the caustics' test of which side of the surface a point is on stays in.
     this.ocean.seaBed.setDepth(0, Infinity);
     this.update(this.ocean.time);
   }
@@ -169,9 +203,9 @@ export class CoastScene {
   readonly sailLimit: SailLimit = (from, to) =>
     this.floor ? sailUntilAground(this.floor, from, to) : { x: to[0], z: to[1], stopped: false };
 
-  /** The CPU twin of the sea drawn over `inner` (the wave model's own twin). */
-  surfaceOver(inner: LiveWaveModel): CoastSurface {
-    if (!this.field || !this.floor) throw new Error('CoastScene.surfaceOver: setParams first.');
+  /** The CPU twin of the sea drawn over `inner` (the wave model's own twin); null until the first field has arrived. */
+  surfaceOver(inner: LiveWaveModel): CoastSurface | null {
+    if (!this.field || !this.floor) return null;
     this.surface ??= new CoastSurface(inner, this.field, this.floor, this.windSea);
     this.surface.inner = inner;
     return this.surface;
@@ -196,6 +230,7 @@ export class CoastScene {
    * every frame's call sets its own wind-sea limit, from its own model's waves.
    */
   dressSide(material: OceanMaterial, model: LiveWaveModel): void {
+    if (!this.field) return;
     let wind = this.sides.get(material);
     if (!wind) {
       wind = { value: new Vector2() };
@@ -218,6 +253,8 @@ export class CoastScene {
   }
 
   dispose(): void {
+    this.disposed = true;
+    this.builder.dispose();
     for (const material of [...this.materials(), ...[...this.sides.keys()].flatMap((side) => [side, side.near])]) {
       setMaterialDefine(material, 'OCEAN_COAST', false);
     }

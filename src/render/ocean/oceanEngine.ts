@@ -196,7 +196,7 @@ export class OceanEngine extends Object3D {
 
   /** @internal The CPU twin of the waves drawn: sample it for heights and normals at any time. */
   get waves(): LiveWaveModel {
-    return this.coast ? this.coast.surfaceOver(this.waveView.model) : this.waveView.model;
+    return this.coast?.surfaceOver(this.waveView.model) ?? this.waveView.model;
   }
 
   /** The time of the last update, seconds. */
@@ -306,7 +306,8 @@ export class OceanEngine extends Object3D {
     }
     // The wave bound too: a bed below every trough skips the caustics' above-the-surface test.
     // On a coast the bed follows the floor (shaders/coast.glsl) and rises through the waves.
-    this.seaBed.setDepth(this.coast ? 0 : params.seaBedDepth, this.underwaterShortcuts && !this.coast ? this.bounds.vertical : Infinity);
+    const coast = this.coast?.active ?? false;
+    this.seaBed.setDepth(coast ? 0 : params.seaBedDepth, this.underwaterShortcuts && !coast ? this.bounds.vertical : Infinity);
   }
 
   /**
@@ -320,15 +321,22 @@ export class OceanEngine extends Object3D {
       return;
     }
     if (this.coastScene) {
-      (this.coast ??= new this.coastScene(this)).setParams(params);
+      this.waitFor(this.buildCoast(params));
       return;
     }
     this.coastCode ??= import('../coast/coastScene').then(({ CoastScene }) => {
       this.coastScene = CoastScene;
-      if (!this.disposed && this.params.bathymetry !== 'deep') this.setCoast(this.params);
-      this.bounds = this.waves.bounds();
+      if (!this.disposed && this.params.bathymetry !== 'deep') return this.buildCoast(this.params);
     });
     this.waitFor(this.coastCode);
+  }
+
+  /** The coast of `params`, its field built in a Worker: settles when it is drawn, the culling bound grown by its swell. */
+  private buildCoast(params: OceanParams): Promise<void> {
+    const coast = (this.coast ??= new this.coastScene!(this));
+    return coast.setParams(params).then(() => {
+      if (this.coast === coast) this.bounds = this.waves.bounds();
+    });
   }
 
   /** @internal Where a boat may sail: on a coast it stops aground (src/sim/coast/aground.ts); null on the open sea. */

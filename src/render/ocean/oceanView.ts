@@ -310,7 +310,7 @@ export class OceanView {
     const { SurfaceProbe } = await import('../teaching/surfaceProbe');
     this.probe ??= new SurfaceProbe(this.renderer, this.ocean.binding, this.ocean.wakeUniforms, this.ocean.interactiveWaveUniforms);
     this.probe.setInteractiveWavesOn(this.ocean.interactiveWaves !== null);
-    this.probe.setCoast(this.ocean.coast?.uniforms ?? null);
+    this.probe.setCoast(this.ocean.coast?.active ? this.ocean.coast.uniforms : null);
     this.ocean.waveModelView.update(time);
     this.ocean.coast?.update(time);
     try {
