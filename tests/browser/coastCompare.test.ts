@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
-import { canvasPng, openOcean } from './harness';
+import { oceanPicture } from './harness';
 import { useHarness } from './useHarness';
 
 /**
@@ -12,13 +12,7 @@ const VIEW = 'preset=beach&t=10';
 const MODELS = ['seed', 'fft', 'gerstner'];
 const harness = useHarness();
 
-async function picture(query: string): Promise<PNG> {
-  const { page, consoleErrors } = await openOcean(harness, `${VIEW}&${query}`, 960, 540);
-  expect(consoleErrors).toEqual([]);
-  const png = PNG.sync.read(await canvasPng(page));
-  await page.close();
-  return png;
-}
+const picture = (query: string): Promise<PNG> => oceanPicture(harness, `${VIEW}&${query}`, 960, 540);
 
 /** The mean difference, in levels per channel, over the middle half of third `strip` (clear of the dividers). */
 function stripDifference(a: PNG, b: PNG, strip: number): number {

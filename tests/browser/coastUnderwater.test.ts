@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { PNG } from 'pngjs';
-import { canvasPng, openOcean } from './harness';
+import { oceanPicture } from './harness';
 import { useHarness } from './useHarness';
 
 /**
@@ -14,10 +13,7 @@ const harness = useHarness();
 
 /** The mean green level of the picture's top fifth (the underside, above the bed's far edge). */
 async function undersideGreen(query: string): Promise<number> {
-  const { page, consoleErrors } = await openOcean(harness, `${query}&${VIEW}`, 640, 360);
-  expect(consoleErrors).toEqual([]);
-  const png = PNG.sync.read(await canvasPng(page));
-  await page.close();
+  const png = await oceanPicture(harness, `${query}&${VIEW}`, 640, 360);
   let sum = 0;
   const rows = Math.floor(png.height / 5);
   for (let i = 0; i < rows * png.width * 4; i += 4) sum += png.data[i + 1];

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
-import { canvasPng, openOcean } from './harness';
+import { oceanPicture } from './harness';
 import { useHarness } from './useHarness';
 
 /**
@@ -14,13 +14,7 @@ const VIEW = 'preset=beach&t=10&cam=150,300,250,400,0,0';
 const NO_WIND_WAVES = 'swellAmplitude=0&rippleStrength=0';
 const harness = useHarness();
 
-async function picture(query: string): Promise<PNG> {
-  const { page, consoleErrors } = await openOcean(harness, `${VIEW}&${query}`, 1280, 720);
-  expect(consoleErrors).toEqual([]);
-  const png = PNG.sync.read(await canvasPng(page));
-  await page.close();
-  return png;
-}
+const picture = (query: string): Promise<PNG> => oceanPicture(harness, `${VIEW}&${query}`, 1280, 720);
 
 /** The mean difference of two pictures, in levels (0–255) per channel. */
 function meanDifference(a: PNG, b: PNG): number {

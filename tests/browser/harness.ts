@@ -1,4 +1,5 @@
 import puppeteer, { type Browser, type Page } from 'puppeteer';
+import { PNG } from 'pngjs';
 import { preview, type PreviewServer } from 'vite';
 import { locateBrowser, NO_BROWSER_MESSAGE } from './findBrowser.mjs';
 
@@ -118,6 +119,17 @@ export async function screenshotCanvas(page: Page, selector = 'canvas'): Promise
 export async function canvasPng(page: Page): Promise<Buffer> {
   await page.evaluate(() => window.oceano.renderFrame());
   return screenshotCanvas(page);
+}
+
+/** The view of `query` opened, drawn and read as a decoded picture, the page closed; a console error throws. */
+export async function oceanPicture(harness: Harness, query: string, width?: number, height?: number): Promise<PNG> {
+  const { page, consoleErrors } = await openOcean(harness, query, width, height);
+  try {
+    if (consoleErrors.length) throw new Error(`${query}: ${consoleErrors.join(' / ')}`);
+    return PNG.sync.read(await canvasPng(page));
+  } finally {
+    await page.close();
+  }
 }
 
 /** The browser the tests drive; findBrowser.mjs says where it is looked for. */
