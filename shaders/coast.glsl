@@ -197,15 +197,16 @@ varying vec3 vCoastTilt;
 
 #ifdef WAVE_VERTEX_STAGE
 // The ocean's vertex: the model's displacement `d` of grid point `grid` (none with the wind sea
-// off) becomes, at the displaced point as the wake takes it and as the CPU twin adds them
-// (src/sim/coast/coastSurface.ts), the wind sea scaled by the depth's limit plus the swell;
-// `normal` is tilted alike. `fade`: the far rings' fade of the waves.
+// off) is scaled by the depth's limit at that grid point, sideways too, so the calmed water
+// neither rises nor swims; the swell is added at the point it lands on, as the wake takes it
+// and as the CPU twin adds them (src/sim/coast/coastSurface.ts); `normal` is tilted alike.
+// `fade`: the far rings' fade of the waves.
 void coastDisplace(inout vec3 d, inout vec3 normal, vec2 grid, float fade, bool flatNormals) {
-  d *= uCoastWind.x;
+  float windFactor = coastWindFactor(grid);
+  d *= windFactor;
   vec2 at = grid + d.xz;
-  float windFactor = coastWindFactor(at);
   CoastSwell swell = coastSwellAt(at);
-  d.y = d.y * windFactor + swell.height * fade;
+  d.y += swell.height * fade;
   vec2 slope = swell.slope * fade;
   if (!flatNormals) normal = coastTiltNormal(normal, windFactor, slope);
   vCoastLook = vec3(coastSeaDepth(at), swell.breaking, swell.meanPhase);

@@ -26,11 +26,11 @@ void main() {
   vec3 d = waveDisplacement(aSample);
   vec3 n = waveNormal(aSample);
 #ifdef OCEAN_COAST
-  // The coast as ocean.vert adds it: the wind sea (off: none) calmed by depth, plus the swell, at the displaced point.
-  d *= uCoastWind.x;
-  float windFactor = coastWindFactor(aSample + d.xz);
+  // The coast as ocean.vert adds it: the wind sea (off: none) calmed by the depth at its grid point, plus the swell where it lands.
+  float windFactor = coastWindFactor(aSample);
+  d *= windFactor;
   CoastSwell swell = coastSwellAt(aSample + d.xz);
-  d.y = d.y * windFactor + swell.height;
+  d.y += swell.height;
   n = coastTiltNormal(n, windFactor, swell.slope);
 #endif
   vec2 at = aSample + d.xz;

@@ -29,6 +29,8 @@ const CASES = [
   { query: 'preset=island&windSea=0&t=0', x: [-800, 2200], z: [-1500, 1500] },
   // The beach re-phased by a new seed after it was built: the components' offsets change on both sides, nothing is rebuilt.
   { query: 'preset=beach&windSea=0&t=0', x: [-3500, 700], z: [-2500, 2500], seed: 5 },
+  // Gerstner's trochoids as the wind sea over the shallows and the sand: their sideways motion calmed with their height.
+  { query: 'preset=beach&waves=gerstner&t=0', x: [-600, 500], z: [-500, 500] },
 ];
 
 type Case = { t: number; points: [number, number][] };

@@ -1,4 +1,4 @@
-import type { DisplacementBounds, LiveWaveModel, SurfaceSample } from '../waves/waveModel';
+import { undoHorizontalDisplacement, type DisplacementBounds, type LiveWaveModel, type SurfaceSample } from '../waves/waveModel';
 import type { OceanParams } from '../params/params';
 import { seaDepth, type SeaFloor } from './bathymetry';
 import type { CoastField } from './coastField';
@@ -7,11 +7,11 @@ import { windSeaFactor, windSeaHeightOf } from './windSeaDamping';
 
 /**
  * The sea at the coast, the CPU twin of ocean.vert with OCEAN_COAST: the swell of the coast's
- * field plus the wave model's own waves (the wind sea), calmed where the water is shallow,
- * both taken at the world point as the vertex shader takes them at the displaced vertex
- *   η(x, z, t) = f(h) η_wind(x, z, t) + s Re Σ A_m e^{i(S_m − ω_m t + φ_m)},  f = min(1, γ h / H_wind)
- * (s: the swell's envelope limit, coastSwellSlope.ts)
- * and the normal tilted likewise. The boat, the underwater switch and the API read it as they
+ * field plus the wave model's own waves (the wind sea), calmed where the water is shallow.
+ * A grid point p of the wind sea moves by f D(p), its whole displacement (sideways too) scaled
+ * by f = min(1, γ h(p) / H_wind), and the swell is added at the point it lands on:
+ *   η(p + f D_xz(p), t) = f D_y(p, t) + s Re Σ A_m e^{i(S_m − ω_m t + φ_m)}
+ * (s: the swell's envelope limit, coastSwellSlope.ts), the normal tilted likewise. The boat, the underwater switch and the API read it as they
  * read any wave model. With the wind sea off only the swell is left.
  */
 export class CoastSurface implements LiveWaveModel {
@@ -59,29 +59,52 @@ export class CoastSurface implements LiveWaveModel {
   }
 
   displacement(x: number, z: number, time: number): [number, number, number] {
-    const d: [number, number, number] = this.windSea ? this.inner.displacement(x, z, time) : [0, 0, 0];
-    const wx = x + d[0];
-    const wz = z + d[2];
-    return [d[0], this.windFactor(wx, wz) * d[1] + coastSwellWithSlope(this.field, wx, wz, time)[0], d[2]];
+    if (!this.windSea) return [0, coastSwellWithSlope(this.field, x, z, time)[0], 0];
+    const f = this.windFactor(x, z);
+    const d = this.inner.displacement(x, z, time);
+    const [swell] = coastSwellWithSlope(this.field, x + f * d[0], z + f * d[2], time);
+    return [f * d[0], f * d[1] + swell, f * d[2]];
   }
 
   sample(x: number, z: number, time: number): SurfaceSample {
-    const wind = this.windSea ? this.inner.sample(x, z, time) : { height: 0, normal: [0, 1, 0] as [number, number, number] };
-    const factor = this.windFactor(x, z);
+    const wind = this.windAt(x, z, time);
     const [swell, swellX, swellZ] = coastSwellWithSlope(this.field, x, z, time);
     // The swell's slope, and the wind sea's (from its normal, −n.xz / n.y) scaled by the factor.
-    const slopeX = swellX - (factor * wind.normal[0]) / Math.max(wind.normal[1], 1e-4);
-    const slopeZ = swellZ - (factor * wind.normal[2]) / Math.max(wind.normal[1], 1e-4);
+    const slopeX = swellX - (wind.factor * wind.normal[0]) / Math.max(wind.normal[1], 1e-4);
+    const slopeZ = swellZ - (wind.factor * wind.normal[2]) / Math.max(wind.normal[1], 1e-4);
     const length = Math.hypot(slopeX, 1, slopeZ);
     return {
-      height: factor * wind.height + swell,
+      height: wind.factor * wind.height + swell,
       normal: [-slopeX / length, 1 / length, -slopeZ / length],
     };
   }
 
   height(x: number, z: number, time: number): number {
-    const wind = this.windSea ? this.inner.height(x, z, time) : 0;
-    return this.windFactor(x, z) * wind + coastSwellWithSlope(this.field, x, z, time)[0];
+    const wind = this.windAt(x, z, time);
+    return wind.factor * wind.height + coastSwellWithSlope(this.field, x, z, time)[0];
+  }
+
+  /**
+   * The wind sea above the world point (x, z): the height and normal of its grid point p, the
+   * one whose calmed displacement lands there (p + f(p) D_xz(p) = (x, z)), and that point's f.
+   * Where every grid point that could land there has f = 1 (deep enough within the wind sea's
+   * sideways reach), that is the wave model's own answer at (x, z).
+   */
+  private windAt(x: number, z: number, time: number): { height: number; normal: [number, number, number]; factor: number } {
+    if (!this.windSea) return { height: 0, normal: [0, 1, 0], factor: 0 };
+    const { vertical, horizontal } = this.inner.bounds();
+    const depthAcrossReach = seaDepth(this.floor, x, z) - this.floor.beachSlope * horizontal;
+    if (windSeaFactor(depthAcrossReach, windSeaHeightOf(vertical)) >= 1) return { ...this.inner.sample(x, z, time), factor: 1 };
+    const calmed = (px: number, pz: number): [number, number, number] => {
+      const f = this.windFactor(px, pz);
+      const d = this.inner.displacement(px, pz, time);
+      return [f * d[0], f * d[1], f * d[2]];
+    };
+    const p = undoHorizontalDisplacement(calmed, x, z);
+    const d = this.inner.displacement(p.x, p.z, time);
+    // The model's normal at p, read where the model alone puts p.
+    const { normal } = this.inner.sample(p.x + d[0], p.z + d[2], time);
+    return { height: d[1], normal, factor: this.windFactor(p.x, p.z) };
   }
 
   /** The model's bounds grown by the swell's largest height (swellBound), so culling stays safe. */

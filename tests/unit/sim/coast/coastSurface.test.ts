@@ -4,6 +4,7 @@ import { buildCoastField } from '../../../../src/sim/coast/coastSwellField';
 import { coastSwellHeight } from '../../../../src/sim/coast/coastFieldSampling';
 import { BEACH_SHORE_X, seaDepth, type SeaFloor } from '../../../../src/sim/coast/bathymetry';
 import { SeedWaveModel } from '../../../../src/sim/waves/seed/seedWaveModel';
+import { GerstnerLiveModel } from '../../../../src/sim/waves/gerstner/gerstnerLiveModel';
 import type { LiveWaveModel } from '../../../../src/sim/waves/waveModel';
 import { defaultParams } from '../../../../src/sim/params/params';
 import { BREAKER_INDEX } from '../../../../src/sim/coast/windSeaDamping';
@@ -81,5 +82,40 @@ describe('the CPU twin at the coast', () => {
     const on = new CoastSurface(wind(), field, floor, true);
     const off = new CoastSurface(wind(), field, floor, false);
     expect(Math.abs(on.height(-2000, 30, 4) - off.height(-2000, 30, 4))).toBeGreaterThan(1e-3);
+  });
+});
+
+describe('the wind sea’s sideways motion at the coast', () => {
+  /** Gerstner's trochoids, whose points move sideways as much as up, as the wind sea. */
+  const gerstner = (): LiveWaveModel => new GerstnerLiveModel({ ...defaultParams(), windSpeed: 14 });
+
+  it('is calmed with its height: none on land, f D in the shallows (control: the model alone moves the sand)', () => {
+    const model = gerstner();
+    const surface = new CoastSurface(model, field, floor, true);
+    const land = [BEACH_SHORE_X + 30, 5, 4] as const;
+    expect(Math.hypot(model.displacement(...land)[0], model.displacement(...land)[2])).toBeGreaterThan(0.1);
+    const [dx, , dz] = surface.displacement(...land);
+    expect(Math.hypot(dx, dz)).toBe(0);
+    const shallow = [BEACH_SHORE_X - 60, 5, 4] as const;
+    const f = surface.windFactor(...shallow);
+    expect(f).toBeGreaterThan(0);
+    expect(f).toBeLessThan(1);
+    expect(surface.displacement(...shallow)[0]).toBeCloseTo(f * model.displacement(...shallow)[0], 12);
+  });
+
+  it('the height above where a calmed grid point lands is that point’s height, in the shallows and offshore', () => {
+    const surface = new CoastSurface(gerstner(), field, floor, true);
+    const random = seededRandom(77);
+    let worst = 0;
+    for (let s = 0; s < 200; s++) {
+      const [x, z, t] = [BEACH_SHORE_X - 5 - random() * 400, random() * 200, random() * 50];
+      const [dx, dy, dz] = surface.displacement(x, z, t);
+      worst = Math.max(worst, Math.abs(surface.height(x + dx, z + dz, t) - dy));
+    }
+    expect(worst).toBeLessThan(1e-3);
+    // Control: the same question asked of the uncalmed landing point misses in the shallows.
+    const [x, z, t] = [BEACH_SHORE_X - 40, 3, 6];
+    const raw = gerstner().displacement(x, z, t);
+    expect(Math.abs(surface.height(x + raw[0], z + raw[2], t) - surface.displacement(x, z, t)[1])).toBeGreaterThan(1e-3);
   });
 });
