@@ -76,7 +76,8 @@ vec4 coastBilinear(vec2 uv, int layer, out vec4 alongU, out vec4 alongV) {
 // The layer read: two components' (S, A, S, A) at world (x, z) (componentAt,
 // src/sim/coast/coastSwellSlope.ts), with their rates per metre along x (`alongX`) and z
 // (`alongZ`). Outside the grid, the edge's amplitudes, and phases that go on growing at the
-// edge's rate.
+// edge cell's rate: the bilinear field is linear across a cell, so that rate is the difference
+// between the edge texel and its inward neighbour, and no second read is needed.
 vec4 coastLayerAt(vec2 xz, int layer, out vec4 alongX, out vec4 alongZ) {
   const vec4 PHASES = vec4(1.0, 0.0, 1.0, 0.0);
   float last = uCoastGrid.w - 1.0;
@@ -86,21 +87,13 @@ vec4 coastLayerAt(vec2 xz, int layer, out vec4 alongX, out vec4 alongZ) {
   vec4 alongV;
   vec4 s = coastBilinear(c, layer, alongU, alongV);
   // Clamped, the field stands still along that axis but for the phases' growth.
-  if (uv.x != c.x) alongU = vec4(0.0);
-  if (uv.y != c.y) alongV = vec4(0.0);
-  vec4 unused;
-  vec4 edge = s;
   if (uv.x != c.x) {
-    float inward = uv.x > c.x ? -1.0 : 1.0;
-    vec4 rate = (edge - coastBilinear(vec2(c.x + inward, c.y), layer, unused, unused)) * -inward * PHASES;
-    s += rate * (uv.x - c.x);
-    alongU = rate;
+    alongU *= PHASES;
+    s += alongU * (uv.x - c.x);
   }
   if (uv.y != c.y) {
-    float inward = uv.y > c.y ? -1.0 : 1.0;
-    vec4 rate = (edge - coastBilinear(vec2(c.x, c.y + inward), layer, unused, unused)) * -inward * PHASES;
-    s += rate * (uv.y - c.y);
-    alongV = rate;
+    alongV *= PHASES;
+    s += alongV * (uv.y - c.y);
   }
   alongX = alongU / uCoastGrid.z;
   alongZ = alongV / uCoastGrid.z;

@@ -65,24 +65,13 @@ export function componentAt(field: CoastField, m: number, x: number, z: number):
   const cu = Math.min(last, Math.max(0, u));
   const cv = Math.min(last, Math.max(0, v));
   const here = cell(texels, field.resolution, cu, cv);
-  let phase = here.value[0];
-  let phaseU = u !== cu ? 0 : here.alongU[0];
-  let phaseV = v !== cv ? 0 : here.alongV[0];
+  // Clamped, the field stands still along that axis but for the phase, which goes on growing at
+  // the edge cell's rate (the field is linear across a cell: the edge texel less its inward neighbour).
+  const phaseU = here.alongU[0];
+  const phaseV = here.alongV[0];
   const amplitudeU = u !== cu ? 0 : here.alongU[1];
   const amplitudeV = v !== cv ? 0 : here.alongV[1];
-  const edge = phase;
-  if (u !== cu) {
-    const inward = u > cu ? -1 : 1;
-    const rate = (edge - cell(texels, field.resolution, cu + inward, cv).value[0]) * -inward;
-    phase += rate * (u - cu);
-    phaseU = rate;
-  }
-  if (v !== cv) {
-    const inward = v > cv ? -1 : 1;
-    const rate = (edge - cell(texels, field.resolution, cu, cv + inward).value[0]) * -inward;
-    phase += rate * (v - cv);
-    phaseV = rate;
-  }
+  const phase = here.value[0] + (u !== cu ? phaseU * (u - cu) : 0) + (v !== cv ? phaseV * (v - cv) : 0);
   const perMetre = 1 / field.spacing;
   return {
     phase,
